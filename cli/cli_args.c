@@ -1,0 +1,81 @@
+#define _GNU_SOURCE
+#include "cli/cli.h"
+
+#include <errno.h>
+#include <getopt.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+int cli_fail(const gt_error *e)
+{
+    fprintf(stderr, "gtlab: %s\n", e->message);
+    return EXIT_USER_ERROR;
+}
+
+int cli_failf(const char *subject, const char *fmt, ...)
+{
+    fprintf(stderr, "gtlab: %s: ", subject);
+    va_list ap;
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+    return EXIT_USER_ERROR;
+}
+
+int cli_usage_error(const char *verb)
+{
+    fprintf(stderr, "gtlab: %s: invalid usage (see 'gtlab %s --help')\n", verb, verb);
+    return EXIT_USER_ERROR;
+}
+
+int cli_parse_int(const char *option, const char *text, long lo, long hi, long *out)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(text, &end, 10);
+    if (errno || end == text || *end != '\0') {
+        cli_failf(option, "'%s' is not a whole number", text);
+        return -1;
+    }
+    if (v < lo || v > hi) {
+        cli_failf(option, "%ld is out of range [%ld, %ld]", v, lo, hi);
+        return -1;
+    }
+    *out = v;
+    return 0;
+}
+
+int cli_parse_u32(const char *option, const char *text, uint32_t *out)
+{
+    long v;
+    if (cli_parse_int(option, text, 0, 4294967295L, &v) != 0)
+        return -1;
+    *out = (uint32_t)v;
+    return 0;
+}
+
+int cli_parse_double(const char *option, const char *text, double lo, double hi, double *out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(text, &end);
+    if (errno || end == text || *end != '\0' || !isfinite(v)) {
+        cli_failf(option, "'%s' is not a number", text);
+        return -1;
+    }
+    if (v < lo || v > hi) {
+        cli_failf(option, "%g is out of range [%g, %g]", v, lo, hi);
+        return -1;
+    }
+    *out = v;
+    return 0;
+}
+
+void cli_reset_getopt(void)
+{
+    optind = 0; /* glibc: 0 also re-initialises its internal state */
+    opterr = 0; /* we print our own one-line errors */
+}

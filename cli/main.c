@@ -1,0 +1,53 @@
+/* gtlab: Monte Carlo ground truth and fitting for real-time rendering. */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli/cli.h"
+
+typedef struct {
+    const char *name;
+    int (*run)(int argc, char **argv);
+    const char *summary;
+} verb;
+
+static const verb verbs[] = {
+    {"scene", verb_scene, "list the built-in scenes, or write one as .glb"},
+    {"render", verb_render, "render a reference quantity (gbuffer, ao) with Embree"},
+    {"merge", verb_merge, "combine partial renders of disjoint sample blocks exactly"},
+    {"compare", verb_compare, "SSIM/DSSIM, RMSE and absolute errors between two EXRs"},
+    {"bench", verb_bench, "throughput figures (rays/s) and their ratios, from one run"},
+    {"all", verb_all, "the main job: every reference and the accuracy report"},
+};
+
+static void print_help(FILE *out)
+{
+    fprintf(out, "gtlab %s — Monte Carlo ground truth and fitting for real-time rendering\n\n", GTLAB_VERSION);
+    fprintf(out, "usage: gtlab <verb> [options]     (gtlab <verb> --help for each)\n\nverbs:\n");
+    for (size_t i = 0; i < sizeof verbs / sizeof verbs[0]; ++i)
+        fprintf(out, "  %-9s %s\n", verbs[i].name, verbs[i].summary);
+    fprintf(out, "\nErrors are one line on stderr; exit status 0 success, 1 bad input, 2 internal error.\n");
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        print_help(stderr);
+        return EXIT_USER_ERROR;
+    }
+    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "help") == 0) {
+        print_help(stdout);
+        return EXIT_OK;
+    }
+    if (strcmp(argv[1], "--version") == 0) {
+        printf("gtlab %s\n", GTLAB_VERSION);
+        return EXIT_OK;
+    }
+    for (size_t i = 0; i < sizeof verbs / sizeof verbs[0]; ++i) {
+        if (strcmp(argv[1], verbs[i].name) == 0) {
+            cli_reset_getopt();
+            return verbs[i].run(argc - 1, argv + 1);
+        }
+    }
+    fprintf(stderr, "gtlab: %s: unknown verb (see 'gtlab --help')\n", argv[1]);
+    return EXIT_USER_ERROR;
+}

@@ -1,0 +1,72 @@
+#define _POSIX_C_SOURCE 200809L
+#include "core/atomic_file.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+int atomic_file_begin(atomic_file *f, const char *path, gt_error *e)
+{
+    if (!path || !*path)
+        return gt_error_set(e, "gtlab", "no output path given");
+    if (strlen(path) + 32 >= ATOMIC_PATH_MAX)
+        return gt_error_set(e, path, "path too long");
+    strcpy(f->final_path, path);
+    const char *slash = strrchr(path, '/');
+    int dir_len = slash ? (int)(slash - path + 1) : 0;
+    snprintf(f->temp_path, sizeof f->temp_path, "%.*s.%s.tmp-%ld", dir_len, path, path + dir_len, (long)getpid());
+    int fd = open(f->temp_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd < 0)
+        return gt_error_set(e, path, "cannot write: %s", strerror(errno));
+    close(fd);
+    return 0;
+}
+
+int atomic_file_commit(atomic_file *f, gt_error *e)
+{
+    if (rename(f->temp_path, f->final_path) != 0) {
+        int err = errno;
+        unlink(f->temp_path);
+        return gt_error_set(e, f->final_path, "cannot write: %s", strerror(err));
+    }
+    f->temp_path[0] = '\0';
+    return 0;
+}
+
+void atomic_file_abort(atomic_file *f)
+{
+    if (f->temp_path[0])
+        unlink(f->temp_path);
+    f->temp_path[0] = '\0';
+}
+
+int atomic_file_check_writable(const char *path, gt_error *e)
+{
+    atomic_file f;
+    if (atomic_file_begin(&f, path, e) != 0)
+        return -1;
+    atomic_file_abort(&f);
+    return 0;
+}
+
+int atomic_write_text(const char *path, const char *text, gt_error *e)
+{
+    atomic_file f;
+    if (atomic_file_begin(&f, path, e) != 0)
+        return -1;
+    FILE *out = fopen(f.temp_path, "w");
+    if (!out) {
+        atomic_file_abort(&f);
+        return gt_error_set(e, path, "cannot write: %s", strerror(errno));
+    }
+    size_t n = strlen(text);
+    int ok = fwrite(text, 1, n, out) == n;
+    ok = (fclose(out) == 0) && ok;
+    if (!ok) {
+        atomic_file_abort(&f);
+        return gt_error_set(e, path, "write failed (disk full?)");
+    }
+    return atomic_file_commit(&f, e);
+}

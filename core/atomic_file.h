@@ -1,0 +1,32 @@
+/* Outputs appear whole or not at all: every writer writes to a temporary file
+ * beside the destination and renames it into place when complete (rename is
+ * atomic within a folder on POSIX). The temporary name is
+ * "<dir>/.<name>.tmp-<pid>" so a crash leaves only a hidden file. */
+#ifndef GTLAB_CORE_ATOMIC_FILE_H
+#define GTLAB_CORE_ATOMIC_FILE_H
+
+#include "core/error.h"
+
+#define ATOMIC_PATH_MAX 4096
+
+typedef struct {
+    char final_path[ATOMIC_PATH_MAX];
+    char temp_path[ATOMIC_PATH_MAX];
+} atomic_file;
+
+/* Chooses the temporary name and checks that it can be created (so an
+ * unwritable destination fails before any long computation). Returns 0 or -1
+ * with e = "<path>: <problem>". */
+int atomic_file_begin(atomic_file *f, const char *path, gt_error *e);
+/* Renames the finished temporary file onto the destination. */
+int atomic_file_commit(atomic_file *f, gt_error *e);
+/* Removes the temporary file (after a failure). Safe to call twice. */
+void atomic_file_abort(atomic_file *f);
+
+/* Checks, without leaving anything behind, that `path` could be written. */
+int atomic_file_check_writable(const char *path, gt_error *e);
+
+/* Writes a whole text file atomically. */
+int atomic_write_text(const char *path, const char *text, gt_error *e);
+
+#endif

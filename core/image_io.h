@@ -1,0 +1,22 @@
+/* 8-bit previews and error heatmaps through OpenImageIO (a C++ adapter behind
+ * this C header). Any format OIIO writes is accepted; the path's extension
+ * chooses it (.png is what gtlab itself writes). Written atomically. */
+#ifndef GTLAB_CORE_IMAGE_IO_H
+#define GTLAB_CORE_IMAGE_IO_H
+
+#include "core/error.h"
+
+/* A preview of 1 (grey) or 3 (RGB) planar float channels holding linear values:
+ * each value is multiplied by `exposure`, clamped to [0, 1] and encoded as sRGB.
+ * planes[c] points at width*height floats. Returns 0 or -1 with e. */
+int image_write_preview(const char *path, const float *const *planes, int channel_count, int width, int height,
+                        float exposure, gt_error *e);
+
+/* A heatmap of `values` through OIIO's colour map `map_name` ("inferno",
+ * "viridis", "magma", "plasma", "turbo"), with values mapped linearly from
+ * [0, vmax] to [0, 1] and clamped. Pixels where mask is non-NULL and mask[i]
+ * is 0 are written black. Returns 0 or -1 with e. */
+int image_write_heatmap(const char *path, const float *values, const float *mask, int width, int height,
+                        float vmax, const char *map_name, gt_error *e);
+
+#endif

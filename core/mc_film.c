@@ -1,0 +1,293 @@
+#include "core/mc_film.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static size_t pixel_count(const mc_film *film) { return (size_t)film->width * (size_t)film->height; }
+
+int mc_film_init(mc_film *film, int width, int height, const mc_quantity *quantities, int quantity_count)
+{
+    memset(film, 0, sizeof *film);
+    film->width = width;
+    film->height = height;
+    film->quantity_count = quantity_count;
+    size_t n = pixel_count(film) * (size_t)quantity_count;
+    film->quantities = malloc(sizeof *quantities * (size_t)quantity_count);
+    film->sum = calloc(n, sizeof(double));
+    film->sum_sq = calloc(n, sizeof(double));
+    film->sum_even = calloc(n, sizeof(double));
+    film->count = calloc(pixel_count(film), sizeof(uint32_t));
+    film->count_even = calloc(pixel_count(film), sizeof(uint32_t));
+    if (!film->quantities || !film->sum || !film->sum_sq || !film->sum_even || !film->count || !film->count_even) {
+        mc_film_free(film);
+        return -1;
+    }
+    memcpy(film->quantities, quantities, sizeof *quantities * (size_t)quantity_count);
+    return 0;
+}
+
+void mc_film_free(mc_film *film)
+{
+    free(film->quantities);
+    free(film->sum);
+    free(film->sum_sq);
+    free(film->sum_even);
+    free(film->count);
+    free(film->count_even);
+    memset(film, 0, sizeof *film);
+}
+
+int mc_film_normalize_layer(mc_film *film, const char *layer)
+{
+    if (film->normalized_count >= MC_FILM_MAX_NORMALIZED || strlen(layer) >= IMAGE_NAME_MAX)
+        return -1;
+    strcpy(film->normalized[film->normalized_count++], layer);
+    return 0;
+}
+
+/* v rounded to the nearest multiple of 2^(exponent - 24). */
+static double round_to_grid(double v, int exponent)
+{
+    return ldexp(rint(ldexp(v, 24 - exponent)), exponent - 24);
+}
+
+void mc_film_add_sample(mc_film *film, int pixel, uint32_t sample_index, const float *values)
+{
+    size_t np = pixel_count(film);
+    int even = (sample_index & 1u) == 0;
+    for (int q = 0; q < film->quantity_count; ++q) {
+        int exponent = film->quantities[q].scale_exponent;
+        double v = round_to_grid(values[q], exponent);
+        size_t i = (size_t)q * np + (size_t)pixel;
+        film->sum[i] += v;
+        film->sum_sq[i] += round_to_grid(v * v, 2 * exponent);
+        if (even)
+            film->sum_even[i] += v;
+    }
+    film->count[pixel] += 1;
+    film->count_even[pixel] += (uint32_t)even;
+}
+
+double mc_film_mean(const mc_film *film, int quantity, int pixel)
+{
+    uint32_t n = film->count[pixel];
+    return n ? film->sum[(size_t)quantity * pixel_count(film) + (size_t)pixel] / n : 0.0;
+}
+
+double mc_film_stderr(const mc_film *film, int quantity, int pixel)
+{
+    double n = film->count[pixel];
+    if (n < 2)
+        return INFINITY;
+    size_t i = (size_t)quantity * pixel_count(film) + (size_t)pixel;
+    double variance = (film->sum_sq[i] - film->sum[i] * film->sum[i] / n) / (n - 1);
+    return sqrt(fmax(variance, 0.0) / n);
+}
+
+/* Index of quantity "layer.axis", or -1. */
+static int find_quantity(const mc_film *film, const char *layer, const char *axis)
+{
+    char name[2 * IMAGE_NAME_MAX];
+    snprintf(name, sizeof name, "%.63s.%.63s", layer, axis);
+    for (int q = 0; q < film->quantity_count; ++q)
+        if (strcmp(film->quantities[q].name, name) == 0)
+            return q;
+    return -1;
+}
+
+/* Channel "<quantity>.<suffix>" of img, created. */
+static float *add_suffixed(image *img, const char *quantity, const char *suffix)
+{
+    char name[2 * IMAGE_NAME_MAX];
+    snprintf(name, sizeof name, "%.63s.%.63s", quantity, suffix);
+    return image_add_channel(img, name);
+}
+
+/* Normalises the named vector layers in place: a mean vector m becomes
+ * m / |m|, and its per-axis standard errors are divided by |m| (first-order
+ * propagation, ignoring the projection onto the tangent plane). */
+static void normalize_layers(const mc_film *film, image *img, int with_stderr)
+{
+    static const char *const axes[3] = {"X", "Y", "Z"};
+    for (int l = 0; l < film->normalized_count; ++l) {
+        float *mean[3] = {0}, *err[3] = {0};
+        for (int a = 0; a < 3; ++a) {
+            int q = find_quantity(film, film->normalized[l], axes[a]);
+            if (q < 0)
+                return;
+            mean[a] = image_channel_data(img, film->quantities[q].name);
+            if (with_stderr)
+                err[a] = add_suffixed(img, film->quantities[q].name, "stderr");
+        }
+        for (size_t p = 0; p < pixel_count(film); ++p) {
+            double len = sqrt((double)mean[0][p] * mean[0][p] + (double)mean[1][p] * mean[1][p] +
+                              (double)mean[2][p] * mean[2][p]);
+            if (len <= 0.0)
+                continue;
+            for (int a = 0; a < 3; ++a) {
+                mean[a][p] = (float)(mean[a][p] / len);
+                if (err[a] && isfinite(err[a][p]))
+                    err[a][p] = (float)(err[a][p] / len);
+            }
+        }
+    }
+}
+
+static void split_hi_lo(double v, float *hi, float *lo)
+{
+    *hi = (float)v;
+    *lo = (float)(v - (double)*hi);
+}
+
+int mc_film_write_channels(const mc_film *film, const float *mask, image *img)
+{
+    size_t np = pixel_count(film);
+    for (int q = 0; q < film->quantity_count; ++q) {
+        const char *name = film->quantities[q].name;
+        float *mean = image_add_channel(img, name);
+        float *err = add_suffixed(img, name, "stderr");
+        float *s = add_suffixed(img, name, "sum"), *s_lo = add_suffixed(img, name, "sum_lo");
+        float *ss = add_suffixed(img, name, "sumsq"), *ss_lo = add_suffixed(img, name, "sumsq_lo");
+        float *se = add_suffixed(img, name, "sumeven"), *se_lo = add_suffixed(img, name, "sumeven_lo");
+        if (!mean || !err || !s || !s_lo || !ss || !ss_lo || !se || !se_lo)
+            return -1;
+        for (size_t p = 0; p < np; ++p) {
+            size_t i = (size_t)q * np + p;
+            int background = mask && mask[p] == 0.0f;
+            mean[p] = background ? 0.0f : (float)mc_film_mean(film, q, (int)p);
+            err[p] = background ? 0.0f : (float)mc_film_stderr(film, q, (int)p);
+            split_hi_lo(film->sum[i], &s[p], &s_lo[p]);
+            split_hi_lo(film->sum_sq[i], &ss[p], &ss_lo[p]);
+            split_hi_lo(film->sum_even[i], &se[p], &se_lo[p]);
+        }
+    }
+    float *n = image_add_channel(img, "spp.N"), *n_even = image_add_channel(img, "spp.Neven");
+    if (!n || !n_even)
+        return -1;
+    for (size_t p = 0; p < np; ++p) {
+        n[p] = (float)film->count[p];
+        n_even[p] = (float)film->count_even[p];
+    }
+    normalize_layers(film, img, 1);
+    char layers[MC_FILM_MAX_NORMALIZED * IMAGE_NAME_MAX] = "";
+    for (int l = 0; l < film->normalized_count; ++l) {
+        if (l)
+            strcat(layers, " ");
+        strcat(layers, film->normalized[l]);
+    }
+    return image_set_attribute(img, "gtlab.normalized", layers);
+}
+
+int mc_film_write_half_means(const mc_film *film, int half, image *img)
+{
+    size_t np = pixel_count(film);
+    for (int q = 0; q < film->quantity_count; ++q) {
+        float *mean = image_add_channel(img, film->quantities[q].name);
+        if (!mean)
+            return -1;
+        for (size_t p = 0; p < np; ++p) {
+            size_t i = (size_t)q * np + p;
+            double n_even = film->count_even[p], n_odd = (double)film->count[p] - n_even;
+            double sum_odd = film->sum[i] - film->sum_even[i];
+            double n = half == 0 ? n_even : n_odd;
+            mean[p] = n > 0 ? (float)((half == 0 ? film->sum_even[i] : sum_odd) / n) : 0.0f;
+        }
+    }
+    normalize_layers(film, img, 0);
+    return 0;
+}
+
+static const float *required_channel(const image *img, const char *quantity, const char *suffix, const char *what,
+                                     gt_error *e)
+{
+    char name[2 * IMAGE_NAME_MAX];
+    snprintf(name, sizeof name, "%.63s.%.63s", quantity, suffix);
+    const float *data = image_channel_data(img, name);
+    if (!data)
+        gt_error_set(e, what, "channel %s is missing (not a gtlab reference render?)", name);
+    return data;
+}
+
+int mc_film_read_channels(const image *img, const char *what, mc_film *film, gt_error *e)
+{
+    /* The quantities are the channels that have a ".sum" accumulator. */
+    mc_quantity quantities[64];
+    int count = 0;
+    for (int c = 0; c < img->channel_count && count < 64; ++c) {
+        const char *name = img->channels[c].name;
+        size_t len = strlen(name);
+        if (len > 4 && strcmp(name + len - 4, ".sum") == 0) {
+            memset(&quantities[count], 0, sizeof quantities[count]);
+            memcpy(quantities[count].name, name, len - 4);
+            count++;
+        }
+    }
+    if (count == 0)
+        return gt_error_set(e, what, "no Monte Carlo accumulator channels (*.sum): not a gtlab reference render");
+    const float *n = image_channel_data(img, "spp.N"), *n_even = image_channel_data(img, "spp.Neven");
+    if (!n || !n_even)
+        return gt_error_set(e, what, "channels spp.N and spp.Neven are missing");
+    if (mc_film_init(film, img->width, img->height, quantities, count) != 0)
+        return gt_error_set(e, what, "out of memory");
+    size_t np = pixel_count(film);
+    for (int q = 0; q < count; ++q) {
+        const char *qn = quantities[q].name;
+        const float *s = required_channel(img, qn, "sum", what, e), *s_lo = required_channel(img, qn, "sum_lo", what, e);
+        const float *ss = required_channel(img, qn, "sumsq", what, e);
+        const float *ss_lo = required_channel(img, qn, "sumsq_lo", what, e);
+        const float *se = required_channel(img, qn, "sumeven", what, e);
+        const float *se_lo = required_channel(img, qn, "sumeven_lo", what, e);
+        if (!s || !s_lo || !ss || !ss_lo || !se || !se_lo) {
+            mc_film_free(film);
+            return -1;
+        }
+        for (size_t p = 0; p < np; ++p) {
+            size_t i = (size_t)q * np + p;
+            film->sum[i] = (double)s[p] + (double)s_lo[p];
+            film->sum_sq[i] = (double)ss[p] + (double)ss_lo[p];
+            film->sum_even[i] = (double)se[p] + (double)se_lo[p];
+        }
+    }
+    for (size_t p = 0; p < np; ++p) {
+        if (!(n[p] >= 0.0f) || !(n_even[p] >= 0.0f) || n_even[p] > n[p]) {
+            mc_film_free(film);
+            return gt_error_set(e, what, "invalid sample counts in spp.N / spp.Neven");
+        }
+        film->count[p] = (uint32_t)n[p];
+        film->count_even[p] = (uint32_t)n_even[p];
+    }
+    const char *layers = image_get_attribute(img, "gtlab.normalized");
+    if (layers) {
+        char copy[MC_FILM_MAX_NORMALIZED * IMAGE_NAME_MAX];
+        snprintf(copy, sizeof copy, "%s", layers);
+        for (char *tok = strtok(copy, " "); tok; tok = strtok(NULL, " "))
+            mc_film_normalize_layer(film, tok);
+    }
+    return 0;
+}
+
+int mc_film_merge(mc_film *dst, const mc_film *src, const char *what, gt_error *e)
+{
+    if (dst->width != src->width || dst->height != src->height)
+        return gt_error_set(e, what, "size %dx%d differs from %dx%d", src->width, src->height, dst->width,
+                            dst->height);
+    if (dst->quantity_count != src->quantity_count)
+        return gt_error_set(e, what, "holds different quantities");
+    for (int q = 0; q < dst->quantity_count; ++q)
+        if (strcmp(dst->quantities[q].name, src->quantities[q].name) != 0)
+            return gt_error_set(e, what, "holds different quantities (%s vs %s)", src->quantities[q].name,
+                                dst->quantities[q].name);
+    size_t n = pixel_count(dst) * (size_t)dst->quantity_count;
+    for (size_t i = 0; i < n; ++i) {
+        dst->sum[i] += src->sum[i];
+        dst->sum_sq[i] += src->sum_sq[i];
+        dst->sum_even[i] += src->sum_even[i];
+    }
+    for (size_t p = 0; p < pixel_count(dst); ++p) {
+        dst->count[p] += src->count[p];
+        dst->count_even[p] += src->count_even[p];
+    }
+    return 0;
+}

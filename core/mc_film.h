@@ -1,0 +1,70 @@
+/* Per-pixel Monte Carlo accumulation with exact, order-independent sums.
+ *
+ * Every sample value v of a quantity is rounded onto a fixed grid of spacing
+ * 2^(E-24) (E = the quantity's scale exponent, |v| <= 2^E expected), and its
+ * square onto 2^(2E-24). Sums of grid values are integers in grid units, which
+ * a double holds exactly below 2^53: the sums do not depend on the order of
+ * addition. So a render split into blocks of samples (--sample-offset) and
+ * merged gives the same bits as the whole render, and a long render can be
+ * resumed. The rounding (2^-25 relative at most) is far below Monte Carlo
+ * noise. Exactness holds for up to 2^29 samples per pixel in memory, and up to
+ * 2^24 in the EXR file, where each sum is kept as two floats (hi + lo).
+ *
+ * Samples are also summed separately over even sample indices, so the two
+ * halves of a render (even and odd samples) give the reference's noise floor.
+ */
+#ifndef GTLAB_CORE_MC_FILM_H
+#define GTLAB_CORE_MC_FILM_H
+
+#include <stdint.h>
+
+#include "core/error.h"
+#include "core/image.h"
+
+typedef struct {
+    char name[IMAGE_NAME_MAX]; /* channel name of the mean, e.g. "ao.V" */
+    int scale_exponent;        /* E: samples expected within [-2^E, 2^E] */
+} mc_quantity;
+
+#define MC_FILM_MAX_NORMALIZED 4
+
+typedef struct {
+    int width, height;
+    int quantity_count;
+    mc_quantity *quantities;
+    double *sum, *sum_sq, *sum_even; /* [quantity * pixels + pixel] */
+    uint32_t *count, *count_even;    /* [pixel] */
+    /* Layers whose .X .Y .Z means are written normalised (bent normals). */
+    int normalized_count;
+    char normalized[MC_FILM_MAX_NORMALIZED][IMAGE_NAME_MAX];
+} mc_film;
+
+int mc_film_init(mc_film *film, int width, int height, const mc_quantity *quantities, int quantity_count);
+void mc_film_free(mc_film *film);
+/* Declares that layer.X/.Y/.Z are a vector written normalised. */
+int mc_film_normalize_layer(mc_film *film, const char *layer);
+
+/* Adds one sample (values[q] for every quantity) with its sequence index. */
+void mc_film_add_sample(mc_film *film, int pixel, uint32_t sample_index, const float *values);
+
+double mc_film_mean(const mc_film *film, int quantity, int pixel);
+/* Standard error of the mean, sqrt(s^2 / n) with the unbiased sample
+ * variance s^2; +infinity with fewer than 2 samples. */
+double mc_film_stderr(const mc_film *film, int quantity, int pixel);
+
+/* Adds the channels "Q", "Q.stderr", the accumulators "Q.sum", "Q.sum_lo",
+ * "Q.sumsq", "Q.sumsq_lo", "Q.sumeven", "Q.sumeven_lo" of every quantity,
+ * and "spp.N", "spp.Neven"; and the attribute "gtlab.normalized". Pixels with
+ * mask[pixel] == 0 (background; mask may be NULL) get 0 in Q and Q.stderr. */
+int mc_film_write_channels(const mc_film *film, const float *mask, image *img);
+/* Means of one half of the samples only (half 0: even indices, 1: odd) into
+ * channels named as the quantities. */
+int mc_film_write_half_means(const mc_film *film, int half, image *img);
+
+/* Rebuilds a film from the accumulator channels of an image written by
+ * mc_film_write_channels. `what` names the file for errors. */
+int mc_film_read_channels(const image *img, const char *what, mc_film *film, gt_error *e);
+/* dst += src (same size and quantities). Exact. */
+int mc_film_merge(mc_film *dst, const mc_film *src, const char *what, gt_error *e);
+
+#endif
