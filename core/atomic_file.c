@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 int atomic_file_begin(atomic_file *f, const char *path, gt_error *e)
@@ -13,6 +14,9 @@ int atomic_file_begin(atomic_file *f, const char *path, gt_error *e)
         return gt_error_set(e, "gtlab", "no output path given");
     if (strlen(path) + 32 >= ATOMIC_PATH_MAX)
         return gt_error_set(e, path, "path too long");
+    struct stat st;
+    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
+        return gt_error_set(e, path, "cannot write: is a folder");
     strcpy(f->final_path, path);
     const char *slash = strrchr(path, '/');
     int dir_len = slash ? (int)(slash - path + 1) : 0;

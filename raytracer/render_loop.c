@@ -1,1 +1,58 @@
-/* placeholder: being written */
+#include "raytracer/render_loop.h"
+
+#include "core/progress.h"
+
+enum { MAX_QUANTITIES = 32, MIN_ADAPTIVE_SPP = 16 };
+
+static int reached_target(const mc_film *film, int pixel, int taken, const sampling_settings *ss)
+{
+    if (ss->target_stderr <= 0.0 || taken < MIN_ADAPTIVE_SPP || (taken & (taken - 1)) != 0)
+        return 0;
+    return mc_film_stderr(film, 0, pixel) <= ss->target_stderr;
+}
+
+/* Samples one pixel to completion; returns the rays traced. */
+static uint64_t render_pixel(const gbuffer *gb, const integrator *it, const sampling_settings *ss, mc_film *film,
+                             int x, int y, uint64_t *samples)
+{
+    int pixel = y * gb->width + x;
+    sample_point sp = {&gb->hits[pixel], pixel_seed(ss->seed, (uint32_t)x, (uint32_t)y), 0};
+    float values[MAX_QUANTITIES];
+    uint64_t rays = 0;
+    int taken = 0;
+    while (taken < ss->spp && !reached_target(film, pixel, taken, ss)) {
+        sp.index = ss->sample_offset + (uint32_t)taken;
+        rays += (uint64_t)it->sample(it, &sp, values);
+        mc_film_add_sample(film, pixel, sp.index, values);
+        ++taken;
+    }
+    *samples += (uint64_t)taken;
+    return rays;
+}
+
+int render_estimates(const gbuffer *gb, const integrator *it, const sampling_settings *ss, mc_film *film,
+                     render_stats *stats, gt_error *e)
+{
+    if (it->quantity_count > MAX_QUANTITIES)
+        return gt_error_set(e, it->label, "too many quantities");
+    if (mc_film_init(film, gb->width, gb->height, it->quantities, it->quantity_count) != 0)
+        return gt_error_set(e, it->label, "out of memory for the film");
+    if (it->normalized_layer)
+        mc_film_normalize_layer(film, it->normalized_layer);
+    progress bar;
+    progress_begin(&bar, it->label, gb->height);
+    double start = seconds_now();
+    uint64_t rays = 0, samples = 0;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(ss->threads) reduction(+ : rays, samples)
+    for (int y = 0; y < gb->height; ++y) {
+        for (int x = 0; x < gb->width; ++x)
+            if (gb->mask[y * gb->width + x])
+                rays += render_pixel(gb, it, ss, film, x, y, &samples);
+        progress_advance(&bar, 1);
+    }
+    progress_end(&bar);
+    stats->seconds = seconds_now() - start;
+    stats->rays = rays;
+    stats->samples = samples;
+    return 0;
+}

@@ -136,6 +136,31 @@ void scene_free(scene *s)
     memset(s, 0, sizeof *s);
 }
 
+int scene_choose_camera(const scene *s, const char *camera_json_path, int width, int height, camera *cam,
+                        gt_error *e)
+{
+    if (camera_json_path) {
+        if (camera_read_json(camera_json_path, cam, e) != 0)
+            return -1;
+    } else if (s->has_camera) {
+        *cam = s->camera;
+    } else {
+        vec3 lo, hi;
+        scene_bounds(s, &lo, &hi);
+        *cam = camera_auto_framing(lo, hi, 512, 512);
+    }
+    double aspect = (double)cam->width / (double)cam->height;
+    if (width > 0 && height <= 0)
+        height = (int)fmax(1.0, round(width / aspect));
+    if (height > 0 && width <= 0)
+        width = (int)fmax(1.0, round(height * aspect));
+    if (width > 0) {
+        cam->width = width;
+        cam->height = height;
+    }
+    return camera_validate(cam, camera_json_path ? camera_json_path : s->name, e);
+}
+
 int scene_load(const char *spec, scene *s, gt_error *e)
 {
     memset(s, 0, sizeof *s);

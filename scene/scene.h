@@ -62,6 +62,13 @@ void scene_mesh_compute_normals(scene_mesh *m);
 int scene_validate(const scene *s, const char *what, gt_error *e);
 void scene_free(scene *s);
 
+/* The camera a render uses (DESIGN.md): the camera JSON file if given, else
+ * the scene's own camera, else the automatic framing of its bounds. A width
+ * or height > 0 overrides the size; given only one, the other follows the
+ * camera's aspect ratio. */
+int scene_choose_camera(const scene *s, const char *camera_json_path, int width, int height, camera *cam,
+                        gt_error *e);
+
 /* Loads "builtin:NAME" (see builtin_scenes.h) or a .gltf/.glb file. */
 int scene_load(const char *spec, scene *s, gt_error *e);
 

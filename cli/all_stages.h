@@ -1,0 +1,31 @@
+/* The stages of `gtlab all`: each renders, fits or measures what it owns,
+ * writes its files under the output folder, adds its section to the report
+ * and its figures to summary.json. Later work adds stages to the table in
+ * verb_all.c. */
+#ifndef GTLAB_CLI_ALL_STAGES_H
+#define GTLAB_CLI_ALL_STAGES_H
+
+#include <cjson/cJSON.h>
+
+#include "cli/report_writer.h"
+#include "core/error.h"
+
+typedef enum { QUALITY_PREVIEW, QUALITY_PRODUCTION } all_quality;
+
+typedef struct {
+    const char *output_dir;
+    all_quality quality;
+    int threads;
+    report *doc;
+    cJSON *summary; /* summary.json: one member per stage */
+} all_context;
+
+/* AO and bent-normal references of every built-in scene. */
+int all_stage_ao_references(all_context *ctx, gt_error *e);
+/* Ray throughput: raw Embree against the AO reference loop. */
+int all_stage_ray_throughput(all_context *ctx, gt_error *e);
+
+/* "<output_dir>/<sub>" with the folder created. */
+int all_make_dir(const all_context *ctx, const char *sub, char *path, size_t size, gt_error *e);
+
+#endif

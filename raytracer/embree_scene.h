@@ -1,0 +1,47 @@
+/* The scene as Embree sees it: one triangle geometry per scene mesh in one
+ * RTCScene (robust build, so rays cannot slip through shared edges), plus the
+ * ray queries every integrator shares: closest hit with its surface frame,
+ * and occlusion along a ray leaving a surface without self-intersection. */
+#ifndef GTLAB_RAYTRACER_EMBREE_SCENE_H
+#define GTLAB_RAYTRACER_EMBREE_SCENE_H
+
+#include <embree3/rtcore.h>
+
+#include "core/error.h"
+#include "core/vec3.h"
+#include "scene/scene.h"
+
+typedef struct {
+    RTCDevice device;
+    RTCScene rtc;
+    const scene *source;
+} embree_scene;
+
+/* A surface point seen along a ray. Both normals face the side the ray came
+ * from (surfaces are two-sided, DESIGN.md); the shading normal is flipped to
+ * the geometric normal's side. */
+typedef struct {
+    vec3 p;         /* interpolated from the triangle's vertices (not o + t d) */
+    vec3 ng;        /* geometric normal, unit */
+    vec3 ns;        /* shading normal, unit */
+    float t;        /* ray distance */
+    float uv[2];    /* TEXCOORD_0, or 0 */
+    int mesh, triangle;
+} surface_hit;
+
+int embree_scene_build(const scene *s, embree_scene *es, gt_error *e);
+void embree_scene_release(embree_scene *es);
+
+/* Closest hit along o + t d, t in (0, t_max]. Returns 1 and fills hit, or 0. */
+int embree_closest_hit(const embree_scene *es, vec3 o, vec3 d, float t_max, surface_hit *hit);
+
+/* The origin for rays leaving surface point p on the side of ng (unit, facing
+ * the outgoing side): p pushed along ng by a distance proportional to p's
+ * magnitude, above the rounding error of p, so no ray restarts below the
+ * surface it leaves. */
+vec3 offset_ray_origin(vec3 p, vec3 ng);
+
+/* Visibility V(o, d): 1 if nothing is hit within (0, t_max], else 0. */
+int embree_unoccluded(const embree_scene *es, vec3 o, vec3 d, float t_max);
+
+#endif

@@ -1,0 +1,161 @@
+#include "raytracer/reference_merge.h"
+
+#include <inttypes.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/mc_film.h"
+#include "raytracer/reference_render.h"
+
+typedef struct {
+    uint32_t seed;
+    uint64_t begin, end;
+} sample_block;
+
+enum { MAX_BLOCKS = 1024 };
+
+/* Parses "seed:offset+count ..." into blocks; returns their number or -1. */
+static int parse_blocks(const char *text, sample_block *blocks, int capacity)
+{
+    int n = 0;
+    while (text && *text) {
+        unsigned long seed;
+        unsigned long long offset, count;
+        int used;
+        if (sscanf(text, " %lu:%llu+%llu%n", &seed, &offset, &count, &used) != 3 || n >= capacity)
+            return -1;
+        blocks[n].seed = (uint32_t)seed;
+        blocks[n].begin = offset;
+        blocks[n].end = offset + count;
+        ++n;
+        text += used;
+        while (*text == ' ')
+            ++text;
+    }
+    return n;
+}
+
+static int blocks_overlap(const sample_block *a, const sample_block *b)
+{
+    return a->seed == b->seed && a->begin < b->end && b->begin < a->end;
+}
+
+/* The attributes that must agree for a merge to make sense. */
+static int check_compatible(const image *first, const image *other, const char *name, gt_error *e)
+{
+    static const char *const keys[] = {REF_ATTR_QUANTITY, REF_ATTR_SCENE, REF_ATTR_CAMERA, REF_ATTR_SETTINGS,
+                                       "gtlab.normal"};
+    if (first->width != other->width || first->height != other->height)
+        return gt_error_set(e, name, "size %dx%d differs from the first input's %dx%d", other->width, other->height,
+                            first->width, first->height);
+    for (size_t k = 0; k < sizeof keys / sizeof keys[0]; ++k) {
+        const char *a = image_get_attribute(first, keys[k]), *b = image_get_attribute(other, keys[k]);
+        if (!a || !b || strcmp(a, b) != 0)
+            return gt_error_set(e, name, "its %s differs from the first input's: not parts of one render", keys[k]);
+    }
+    return 0;
+}
+
+/* Adds the input's blocks to the list, refusing any that overlaps: those
+ * samples would be counted twice. */
+static int add_blocks(const image *img, const char *name, sample_block *all, int *count, gt_error *e)
+{
+    sample_block mine[MAX_BLOCKS];
+    int n = parse_blocks(image_get_attribute(img, REF_ATTR_BLOCKS), mine, MAX_BLOCKS);
+    if (n <= 0)
+        return gt_error_set(e, name, "header attribute %s is missing or malformed", REF_ATTR_BLOCKS);
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < *count; ++j)
+            if (blocks_overlap(&mine[i], &all[j]))
+                return gt_error_set(e, name,
+                                    "samples %" PRIu64 "..%" PRIu64 " of seed %" PRIu32
+                                    " are already in an earlier input: they would be counted twice",
+                                    mine[i].begin, mine[i].end - 1, mine[i].seed);
+        if (*count >= MAX_BLOCKS)
+            return gt_error_set(e, name, "too many sample blocks");
+        all[(*count)++] = mine[i];
+    }
+    return 0;
+}
+
+/* Channels that the film writes and so must not be copied from the input. */
+static int is_film_channel(const mc_film *film, const char *name)
+{
+    if (strncmp(name, "spp.", 4) == 0)
+        return 1;
+    for (int q = 0; q < film->quantity_count; ++q) {
+        size_t n = strlen(film->quantities[q].name);
+        if (strncmp(name, film->quantities[q].name, n) == 0 && (name[n] == '\0' || name[n] == '.'))
+            return 1;
+    }
+    return 0;
+}
+
+static int write_merged(const image *first, const mc_film *film, const sample_block *blocks, int block_count,
+                        image *out)
+{
+    if (image_init(out, first->width, first->height) != 0)
+        return -1;
+    for (int c = 0; c < first->channel_count; ++c) {
+        const image_channel *ch = &first->channels[c];
+        if (is_film_channel(film, ch->name))
+            continue;
+        float *dst = image_add_channel(out, ch->name);
+        if (!dst)
+            return -1;
+        memcpy(dst, ch->data, sizeof(float) * image_pixel_count(first));
+    }
+    if (mc_film_write_channels(film, image_channel_data(out, "mask.A"), out) != 0)
+        return -1;
+    for (int a = 0; a < first->attribute_count; ++a)
+        if (image_set_attribute(out, first->attributes[a].key, first->attributes[a].value) != 0)
+            return -1;
+    char text[MAX_BLOCKS * 40] = "";
+    uint64_t spp = 0;
+    size_t len = 0;
+    for (int i = 0; i < block_count; ++i) {
+        len += (size_t)snprintf(text + len, sizeof text - len, "%s%" PRIu32 ":%" PRIu64 "+%" PRIu64, i ? " " : "",
+                                blocks[i].seed, blocks[i].begin, blocks[i].end - blocks[i].begin);
+        spp += blocks[i].end - blocks[i].begin;
+    }
+    char spp_text[32];
+    snprintf(spp_text, sizeof spp_text, "%" PRIu64, spp);
+    return image_set_attribute(out, REF_ATTR_BLOCKS, text) | image_set_attribute(out, REF_ATTR_SPP, spp_text);
+}
+
+int reference_merge(const image *inputs, const char *const *names, int count, image *out, gt_error *e)
+{
+    memset(out, 0, sizeof *out);
+    if (count < 1)
+        return gt_error_set(e, "merge", "no inputs");
+    sample_block *blocks = malloc(sizeof *blocks * MAX_BLOCKS);
+    mc_film total;
+    if (!blocks)
+        return gt_error_set(e, "merge", "out of memory");
+    int block_count = 0;
+    int rc = add_blocks(&inputs[0], names[0], blocks, &block_count, e);
+    if (rc == 0)
+        rc = mc_film_read_channels(&inputs[0], names[0], &total, e);
+    if (rc != 0) {
+        free(blocks);
+        return -1;
+    }
+    for (int i = 1; i < count && rc == 0; ++i) {
+        mc_film part;
+        rc = check_compatible(&inputs[0], &inputs[i], names[i], e);
+        if (rc == 0)
+            rc = add_blocks(&inputs[i], names[i], blocks, &block_count, e);
+        if (rc == 0 && (rc = mc_film_read_channels(&inputs[i], names[i], &part, e)) == 0) {
+            rc = mc_film_merge(&total, &part, names[i], e);
+            mc_film_free(&part);
+        }
+    }
+    if (rc == 0 && write_merged(&inputs[0], &total, blocks, block_count, out) != 0)
+        rc = gt_error_set(e, "merge", "out of memory");
+    if (rc != 0)
+        image_free(out);
+    mc_film_free(&total);
+    free(blocks);
+    return rc;
+}

@@ -1,0 +1,40 @@
+/* One reference render from start to finish: Embree scene, G-buffer, the
+ * quantity's integrator, and the output image with the DESIGN.md channels and
+ * header (quantity, scene, camera, spp, seed, sample block, version).
+ * `gtlab render`, `gtlab all`, `gtlab bench` and the tests all come here. */
+#ifndef GTLAB_RAYTRACER_REFERENCE_RENDER_H
+#define GTLAB_RAYTRACER_REFERENCE_RENDER_H
+
+#include "core/image.h"
+#include "raytracer/gbuffer.h"
+#include "raytracer/render_loop.h"
+#include "scene/scene.h"
+
+typedef enum { QUANTITY_GBUFFER, QUANTITY_AO } reference_quantity;
+
+typedef struct {
+    reference_quantity quantity;
+    sampling_settings sampling;
+    normal_mode normals;
+    float max_distance; /* INFINITY: none */
+} reference_request;
+
+/* "gbuffer" / "ao" -> quantity; -1 if unknown. */
+int reference_quantity_parse(const char *name, reference_quantity *q);
+const char *reference_quantity_name(reference_quantity q);
+
+/* Renders into `out` (initialised here). scene_spec is recorded in the header. */
+int reference_render(const scene *s, const char *scene_spec, const camera *cam, const reference_request *req,
+                     image *out, render_stats *stats, gt_error *e);
+
+/* Header keys shared by render and merge. */
+#define REF_ATTR_VERSION "gtlab.version"
+#define REF_ATTR_QUANTITY "gtlab.quantity"
+#define REF_ATTR_SCENE "gtlab.scene"
+#define REF_ATTR_CAMERA "gtlab.camera"
+#define REF_ATTR_SPP "gtlab.spp"
+#define REF_ATTR_SEED "gtlab.seed"
+#define REF_ATTR_BLOCKS "gtlab.sample_blocks" /* "seed:offset+count ..." */
+#define REF_ATTR_SETTINGS "gtlab.settings"    /* the integrator's options, as text */
+
+#endif
