@@ -168,7 +168,7 @@ int all_stage_ao_references(all_context *ctx, gt_error *e)
     int size = preview ? 256 : 512;
     reference_request req = {QUANTITY_AO, {preview ? 256 : 4096, 0, 1, preview ? 0.0 : 0.002, ctx->threads},
                              NORMAL_SHADING, INFINITY};
-    char refs[4096], figures[4096];
+    char refs[2048], figures[2048];
     if (all_make_dir(ctx, "ao", refs, sizeof refs, e) != 0 || all_make_dir(ctx, "figures", figures, sizeof figures, e))
         return -1;
     report_heading(ctx->doc, 2, "Ambient occlusion and bent-normal references");

@@ -1,1 +1,290 @@
-/* placeholder: being written */
+/* gtlab compare: SSIM/DSSIM, RMSE and absolute errors between one channel of
+ * two EXR images, with the references' noise floors and an error heatmap.
+ * The metrics themselves live in metrics/ (ssim.h, image_error.h). */
+#define _GNU_SOURCE
+#include <cjson/cJSON.h>
+#include <getopt.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "core/atomic_file.h"
+#include "core/exr_io.h"
+#include "core/image_io.h"
+#include "metrics/image_error.h"
+#include "metrics/ssim.h"
+
+#define HEATMAP_PERCENTILE 99.0 /* the heatmap's full scale */
+#define HEATMAP_PERCENTILE_TEXT "99th"
+#define HEATMAP_COLOUR_MAP "inferno"
+
+static void print_help(void)
+{
+    printf("usage: gtlab compare A.exr B.exr [options]\n"
+           "\n"
+           "Compares one channel of two EXR images of the same size over the pixels where\n"
+           "both images' mask.A is 1 (an image without mask.A counts as all 1):\n"
+           "  SSIM      Wang, Bovik, Sheikh, Simoncelli 2004: 11x11 Gaussian window\n"
+           "            (sigma 1.5), K1 = 0.01, K2 = 0.03, L = 1, population variances;\n"
+           "            the mean over the window centres inside the mask whose window\n"
+           "            lies inside the image (so 5-pixel borders are never centres)\n"
+           "  DSSIM     (1 - SSIM) / 2\n"
+           "  RMSE, mean |A-B|, max |A-B| (and where), means of A and B\n"
+           "\n"
+           "options:\n"
+           "  --channel C           channel to compare (default: the first of ao.V,\n"
+           "                        multibounce.V, specocc.V, ao.Vuniform in both files)\n"
+           "  --noise-floor         also report the noise floor: the DSSIM between the\n"
+           "                        means of the even- and odd-index samples of A (A must\n"
+           "                        be a gtlab reference render), and of B if B is one\n"
+           "  --heatmap F.png       write an error heatmap (OIIO colour map '%s', black\n"
+           "                        outside the mask); full scale is the %s percentile of\n"
+           "                        the error inside the mask, and is printed\n"
+           "  --heatmap-metric M    abs: |A-B| per pixel (default); dssim: (1 - SSIM) / 2\n"
+           "                        of the window centred on each pixel\n"
+           "  --json                print one JSON object instead of the table\n"
+           "  -h, --help\n"
+           "\n"
+           "example: gtlab compare ao_ref.exr ao_gtao.exr --noise-floor --heatmap err.png\n"
+           "exit status: 0 success, 1 bad input (missing file or channel, sizes differ),\n"
+           "2 internal error\n",
+           HEATMAP_COLOUR_MAP, HEATMAP_PERCENTILE_TEXT);
+}
+
+typedef struct {
+    const char *a, *b, *channel, *heatmap;
+    int heatmap_dssim; /* else |A-B| */
+    int json, noise_floor;
+} compare_options;
+
+/* Returns 0 to go on, 1 after --help, -1 after an error (already printed). */
+static int parse_options(int argc, char **argv, compare_options *o)
+{
+    enum { OPT_CHANNEL = 256, OPT_HEATMAP, OPT_HEATMAP_METRIC, OPT_JSON, OPT_NOISE_FLOOR };
+    static const struct option longs[] = {{"channel", required_argument, 0, OPT_CHANNEL},
+                                          {"heatmap", required_argument, 0, OPT_HEATMAP},
+                                          {"heatmap-metric", required_argument, 0, OPT_HEATMAP_METRIC},
+                                          {"json", no_argument, 0, OPT_JSON},
+                                          {"noise-floor", no_argument, 0, OPT_NOISE_FLOOR},
+                                          {"help", no_argument, 0, 'h'},
+                                          {0, 0, 0, 0}};
+    const char *metric = NULL;
+    int c;
+    while ((c = getopt_long(argc, argv, "h", longs, NULL)) != -1) {
+        switch (c) {
+        case OPT_CHANNEL: o->channel = optarg; break;
+        case OPT_HEATMAP: o->heatmap = optarg; break;
+        case OPT_HEATMAP_METRIC: metric = optarg; break;
+        case OPT_JSON: o->json = 1; break;
+        case OPT_NOISE_FLOOR: o->noise_floor = 1; break;
+        case 'h': print_help(); return 1;
+        default: return cli_usage_error("compare"), -1;
+        }
+    }
+    if (metric) {
+        if (strcmp(metric, "dssim") == 0)
+            o->heatmap_dssim = 1;
+        else if (strcmp(metric, "abs") != 0)
+            return cli_failf("--heatmap-metric", "'%s' is neither abs nor dssim", metric), -1;
+        if (!o->heatmap)
+            gt_warn("--heatmap-metric", "ignored without --heatmap");
+    }
+    if (argc - optind != 2)
+        return cli_failf("compare", "give exactly two EXR files, A and B (see 'gtlab compare --help')"), -1;
+    o->a = argv[optind];
+    o->b = argv[optind + 1];
+    return 0;
+}
+
+typedef struct {
+    image_error_stats error;
+    ssim_result ssim;
+    int has_floor_a, has_floor_b;
+    ssim_result floor_a, floor_b;
+    float heatmap_vmax;
+    const char *heatmap_vmax_rule; /* how heatmap_vmax was chosen, for the reader */
+} compare_results;
+
+/* Whether img is a reference render holding the accumulators of `channel`. */
+static int is_reference_of(const image *img, const char *channel)
+{
+    char name[2 * IMAGE_NAME_MAX];
+    snprintf(name, sizeof name, "%s.sum", channel);
+    return image_find_channel(img, name) != NULL;
+}
+
+/* The heatmap's values and mask: |A-B| inside the pair's mask, or the
+ * per-window DSSIM at the valid centres inside it. Full scale: the chosen
+ * percentile, or the maximum if that is 0, or 1 if every value is 0. */
+static int write_heatmap(const compare_options *o, const metrics_pair *pair, const float *ssim_map, float *vmax,
+                         const char **vmax_rule, gt_error *e)
+{
+    size_t n = (size_t)pair->width * (size_t)pair->height;
+    float *values = malloc(sizeof *values * n), *mask = malloc(sizeof *mask * n);
+    int status = -1;
+    if (!values || !mask) {
+        gt_error_set(e, o->heatmap, "out of memory");
+        goto done;
+    }
+    for (size_t i = 0; i < n; ++i) {
+        int inside = pair->mask[i] != 0.0f && (!o->heatmap_dssim || !isnan(ssim_map[i]));
+        double v = o->heatmap_dssim ? (1.0 - ssim_map[i]) / 2.0 : fabs((double)pair->a[i] - (double)pair->b[i]);
+        values[i] = inside ? (float)v : 0.0f;
+        mask[i] = inside ? 1.0f : 0.0f;
+    }
+    *vmax_rule = "the " HEATMAP_PERCENTILE_TEXT " percentile";
+    if (metrics_percentile(values, mask, n, HEATMAP_PERCENTILE, o->heatmap, vmax, e) != 0)
+        goto done;
+    if (!(*vmax > 0.0f)) {
+        *vmax_rule = "the maximum, as the " HEATMAP_PERCENTILE_TEXT " percentile is 0";
+        if (metrics_percentile(values, mask, n, 100.0, o->heatmap, vmax, e) != 0)
+            goto done;
+    }
+    if (!(*vmax > 0.0f)) {
+        *vmax_rule = "arbitrary: the error is 0 everywhere";
+        *vmax = 1.0f;
+    }
+    status = image_write_heatmap(o->heatmap, values, mask, pair->width, pair->height, *vmax, HEATMAP_COLOUR_MAP, e);
+done:
+    free(values);
+    free(mask);
+    return status;
+}
+
+/* Every figure the options ask for. */
+static int measure(const compare_options *o, const image *a, const image *b, const metrics_pair *pair,
+                   compare_results *r, gt_error *e)
+{
+    float *ssim_map = NULL;
+    if (o->heatmap && o->heatmap_dssim && !(ssim_map = malloc(sizeof *ssim_map * image_pixel_count(a))))
+        return gt_error_set(e, o->a, "out of memory");
+    int status = -1;
+    if (image_error_compute(pair->a, pair->b, pair->mask, pair->width, pair->height, o->a, &r->error, e) != 0 ||
+        ssim_compute(pair->a, pair->b, pair->mask, pair->width, pair->height, o->a, ssim_map, &r->ssim, e) != 0)
+        goto done;
+    if (o->noise_floor) {
+        if (ssim_noise_floor(a, o->a, pair->channel, pair->mask, &r->floor_a, e) != 0)
+            goto done;
+        r->has_floor_a = 1;
+        if (is_reference_of(b, pair->channel)) {
+            if (ssim_noise_floor(b, o->b, pair->channel, pair->mask, &r->floor_b, e) != 0)
+                goto done;
+            r->has_floor_b = 1;
+        }
+    }
+    if (o->heatmap && write_heatmap(o, pair, ssim_map, &r->heatmap_vmax, &r->heatmap_vmax_rule, e) != 0)
+        goto done;
+    status = 0;
+done:
+    free(ssim_map);
+    return status;
+}
+
+static const char *heatmap_metric_name(const compare_options *o)
+{
+    return o->heatmap_dssim ? "per-window DSSIM" : "|A-B|";
+}
+
+static void print_table(const compare_options *o, const metrics_pair *pair, const compare_results *r)
+{
+    printf("A  %s\nB  %s\n", o->a, o->b);
+    printf("channel %s, %dx%d: %zu pixels inside both masks, %zu SSIM window centres\n\n", pair->channel,
+           pair->width, pair->height, r->error.pixels, r->ssim.centres);
+    printf("  SSIM          %.6f\n", r->ssim.ssim);
+    printf("  DSSIM         %.6g\n", r->ssim.dssim);
+    printf("  RMSE          %.6g\n", r->error.rmse);
+    printf("  mean |A-B|    %.6g\n", r->error.mean_abs);
+    printf("  max |A-B|     %.6g at pixel (%d, %d)\n", r->error.max_abs, r->error.max_x, r->error.max_y);
+    printf("  mean A        %.6g\n", r->error.mean_a);
+    printf("  mean B        %.6g\n", r->error.mean_b);
+    if (r->has_floor_a)
+        printf("  noise floor   DSSIM %.6g between the even and odd samples of A\n", r->floor_a.dssim);
+    if (r->has_floor_b)
+        printf("                DSSIM %.6g between the even and odd samples of B\n", r->floor_b.dssim);
+    if (o->heatmap)
+        printf("\nheatmap %s: %s, colour map %s, full scale %.6g (%s); black outside the mask\n", o->heatmap,
+               heatmap_metric_name(o), HEATMAP_COLOUR_MAP, r->heatmap_vmax, r->heatmap_vmax_rule);
+}
+
+/* The JSON object, or NULL when out of memory. */
+static char *results_json(const compare_options *o, const metrics_pair *pair, const compare_results *r)
+{
+    cJSON *root = cJSON_CreateObject();
+    if (!root)
+        return NULL;
+    cJSON_AddStringToObject(root, "a", o->a);
+    cJSON_AddStringToObject(root, "b", o->b);
+    cJSON_AddStringToObject(root, "channel", pair->channel);
+    cJSON_AddNumberToObject(root, "width", pair->width);
+    cJSON_AddNumberToObject(root, "height", pair->height);
+    cJSON_AddNumberToObject(root, "pixels", (double)r->error.pixels);
+    cJSON_AddNumberToObject(root, "ssim_window_centres", (double)r->ssim.centres);
+    cJSON_AddNumberToObject(root, "ssim", r->ssim.ssim);
+    cJSON_AddNumberToObject(root, "dssim", r->ssim.dssim);
+    cJSON_AddNumberToObject(root, "rmse", r->error.rmse);
+    cJSON_AddNumberToObject(root, "mean_abs", r->error.mean_abs);
+    cJSON_AddNumberToObject(root, "max_abs", r->error.max_abs);
+    const int at[2] = {r->error.max_x, r->error.max_y};
+    cJSON_AddItemToObject(root, "max_abs_pixel", cJSON_CreateIntArray(at, 2));
+    cJSON_AddNumberToObject(root, "mean_a", r->error.mean_a);
+    cJSON_AddNumberToObject(root, "mean_b", r->error.mean_b);
+    if (r->has_floor_a)
+        cJSON_AddNumberToObject(root, "noise_floor_dssim", r->floor_a.dssim);
+    if (r->has_floor_b)
+        cJSON_AddNumberToObject(root, "noise_floor_dssim_b", r->floor_b.dssim);
+    if (o->heatmap) {
+        cJSON *h = cJSON_AddObjectToObject(root, "heatmap");
+        cJSON_AddStringToObject(h, "path", o->heatmap);
+        cJSON_AddStringToObject(h, "metric", o->heatmap_dssim ? "dssim" : "abs");
+        cJSON_AddStringToObject(h, "colour_map", HEATMAP_COLOUR_MAP);
+        cJSON_AddNumberToObject(h, "vmax", r->heatmap_vmax);
+        cJSON_AddStringToObject(h, "vmax_is", r->heatmap_vmax_rule);
+    }
+    char *text = cJSON_Print(root);
+    cJSON_Delete(root);
+    return text;
+}
+
+int verb_compare(int argc, char **argv)
+{
+    compare_options o = {0};
+    int parsed = parse_options(argc, argv, &o);
+    if (parsed != 0)
+        return parsed > 0 ? EXIT_OK : EXIT_USER_ERROR;
+
+    gt_error e;
+    if (o.heatmap && atomic_file_check_writable(o.heatmap, &e) != 0)
+        return cli_fail(&e);
+    image a, b;
+    if (exr_read(o.a, &a, &e) != 0)
+        return cli_fail(&e);
+    if (exr_read(o.b, &b, &e) != 0) {
+        image_free(&a);
+        return cli_fail(&e);
+    }
+    int status = EXIT_OK;
+    metrics_pair pair;
+    compare_results r = {0};
+    if (metrics_pair_init(&pair, &a, o.a, &b, o.b, o.channel, &e) != 0) {
+        status = cli_fail(&e);
+    } else {
+        if (measure(&o, &a, &b, &pair, &r, &e) != 0) {
+            status = cli_fail(&e);
+        } else if (!o.json) {
+            print_table(&o, &pair, &r);
+        } else {
+            char *text = results_json(&o, &pair, &r);
+            if (text)
+                printf("%s\n", text);
+            else
+                status = (fprintf(stderr, "gtlab: compare: out of memory\n"), EXIT_INTERNAL_ERROR);
+            cJSON_free(text);
+        }
+        metrics_pair_free(&pair);
+    }
+    image_free(&a);
+    image_free(&b);
+    return status;
+}

@@ -1,1 +1,129 @@
-/* placeholder: being written */
+// 8-bit previews and error heatmaps through OpenImageIO: the thin C++ adapter
+// behind core/image_io.h. OIIO does the colour work (the sRGB encoding, the
+// named colour maps, the 8-bit quantisation) and picks the file format from
+// the destination's extension; the file is written to a temporary name and
+// renamed into place (core/atomic_file.h).
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+extern "C" {
+#include "core/atomic_file.h"
+#include "core/image_io.h"
+}
+
+namespace {
+
+using OIIO::ImageBuf;
+using OIIO::ImageSpec;
+using OIIO::TypeDesc;
+
+// OIIO's messages may span lines; ours are one line.
+std::string one_line(std::string s)
+{
+    for (char &c : s)
+        if (c == '\n' || c == '\r')
+            c = ' ';
+    while (!s.empty() && s.back() == ' ')
+        s.pop_back();
+    return s;
+}
+
+// The extension of path without its dot ("png"), which tells OIIO the format:
+// the temporary file's own name ends in ".tmp-<pid>" and cannot.
+std::string format_of(const char *path)
+{
+    std::string p(path);
+    size_t slash = p.rfind('/');
+    size_t dot = p.rfind('.');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+        return std::string();
+    return p.substr(dot + 1);
+}
+
+// Writes buf as 8 bits per channel to path, atomically.
+int write_8bit(const char *path, const ImageBuf &buf, gt_error *e)
+{
+    std::string format = format_of(path);
+    if (format.empty())
+        return gt_error_set(e, path, "cannot tell the image format: the file name has no extension");
+    atomic_file out;
+    if (atomic_file_begin(&out, path, e) != 0)
+        return -1;
+    if (!buf.write(out.temp_path, TypeDesc::UINT8, format)) {
+        std::string why = one_line(buf.geterror());
+        if (why.empty())
+            why = one_line(OIIO::geterror());
+        atomic_file_abort(&out);
+        return gt_error_set(e, path, "cannot write image: %s", why.c_str());
+    }
+    return atomic_file_commit(&out, e);
+}
+
+// OIIO's linear -> sRGB transfer function (IEC 61966-2-1).
+bool encode_srgb(ImageBuf &dst, const ImageBuf &linear, const char *path, gt_error *e)
+{
+    if (OIIO::ImageBufAlgo::colorconvert(dst, linear, "linear", "sRGB", false))
+        return true;
+    gt_error_set(e, path, "sRGB encoding failed: %s", one_line(dst.geterror()).c_str());
+    return false;
+}
+
+bool valid_size(int width, int height) { return width > 0 && height > 0; }
+
+// v clamped to [0, 1]; NaN, which fails every comparison, becomes 0.
+float clamp01(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }
+
+} // namespace
+
+extern "C" int image_write_preview(const char *path, const float *const *planes, int channel_count, int width,
+                                   int height, float exposure, gt_error *e)
+{
+    if (channel_count != 1 && channel_count != 3)
+        return gt_error_set(e, path, "a preview needs 1 or 3 channels, not %d", channel_count);
+    if (!valid_size(width, height))
+        return gt_error_set(e, path, "cannot write a %d x %d preview", width, height);
+    size_t n = (size_t)width * (size_t)height;
+    std::vector<float> pixels(n * (size_t)channel_count);
+    for (size_t i = 0; i < n; ++i)
+        for (int c = 0; c < channel_count; ++c)
+            pixels[i * (size_t)channel_count + (size_t)c] = clamp01(planes[c][i] * exposure);
+    ImageBuf linear(ImageSpec(width, height, channel_count, TypeDesc::FLOAT), pixels.data());
+    ImageBuf encoded;
+    if (!encode_srgb(encoded, linear, path, e))
+        return -1;
+    return write_8bit(path, encoded, e);
+}
+
+extern "C" int image_write_heatmap(const char *path, const float *values, const float *mask, int width, int height,
+                                   float vmax, const char *map_name, gt_error *e)
+{
+    if (!valid_size(width, height))
+        return gt_error_set(e, path, "cannot write a %d x %d heatmap", width, height);
+    if (!(vmax > 0.0f) || !std::isfinite(vmax))
+        return gt_error_set(e, path, "heatmap range must be a positive finite number, not %g", (double)vmax);
+    size_t n = (size_t)width * (size_t)height;
+    std::vector<float> scaled(n);
+    for (size_t i = 0; i < n; ++i)
+        scaled[i] = clamp01(values[i] / vmax);
+    ImageBuf map_input(ImageSpec(width, height, 1, TypeDesc::FLOAT), scaled.data());
+    // OIIO stores its maps linear (the perceptual ones are matplotlib's,
+    // linearised), so the result is sRGB-encoded like a preview.
+    ImageBuf colours;
+    if (!OIIO::ImageBufAlgo::color_map(colours, map_input, 0, map_name))
+        return gt_error_set(e, path, "colour map \"%s\": %s", map_name, one_line(colours.geterror()).c_str());
+    if (mask) {
+        const float black[3] = {0.0f, 0.0f, 0.0f};
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x)
+                if (mask[(size_t)y * (size_t)width + (size_t)x] == 0.0f)
+                    colours.setpixel(x, y, black, 3);
+    }
+    ImageBuf encoded;
+    if (!encode_srgb(encoded, colours, path, e))
+        return -1;
+    return write_8bit(path, encoded, e);
+}

@@ -177,7 +177,13 @@ int mc_film_write_channels(const mc_film *film, const float *mask, image *img)
             strcat(layers, " ");
         strcat(layers, film->normalized[l]);
     }
-    return image_set_attribute(img, "gtlab.normalized", layers);
+    char exponents[MC_FILM_MAX_QUANTITIES * (IMAGE_NAME_MAX + 8)] = "";
+    size_t len = 0;
+    for (int q = 0; q < film->quantity_count; ++q)
+        len += (size_t)snprintf(exponents + len, sizeof exponents - len, "%s%s:%d", q ? " " : "",
+                                film->quantities[q].name, film->quantities[q].scale_exponent);
+    return image_set_attribute(img, MC_FILM_ATTR_NORMALIZED, layers) |
+           image_set_attribute(img, MC_FILM_ATTR_EXPONENTS, exponents);
 }
 
 int mc_film_write_half_means(const mc_film *film, int half, image *img)
@@ -210,15 +216,45 @@ static const float *required_channel(const image *img, const char *quantity, con
     return data;
 }
 
+/* A count the file can hold exactly: a whole number in [0, 2^24]. */
+static int valid_count(float n) { return n >= 0.0f && n <= 16777216.0f && n == floorf(n); }
+
+/* Restores each quantity's scale exponent from the header ("name:E ..."). */
+static int read_exponents(const image *img, const char *what, mc_quantity *quantities, int count, gt_error *e)
+{
+    const char *text = image_get_attribute(img, MC_FILM_ATTR_EXPONENTS);
+    if (!text)
+        return gt_error_set(e, what, "header attribute %s is missing", MC_FILM_ATTR_EXPONENTS);
+    for (int q = 0; q < count; ++q) {
+        size_t len = strlen(quantities[q].name);
+        const char *at = text;
+        int found = 0;
+        while ((at = strstr(at, quantities[q].name)) != NULL) {
+            int starts_token = at == text || at[-1] == ' ';
+            if (starts_token && at[len] == ':' && sscanf(at + len + 1, "%d", &quantities[q].scale_exponent) == 1) {
+                found = 1;
+                break;
+            }
+            at += len;
+        }
+        if (!found || quantities[q].scale_exponent < -64 || quantities[q].scale_exponent > 64)
+            return gt_error_set(e, what, "no valid scale exponent for %s in %s", quantities[q].name,
+                                MC_FILM_ATTR_EXPONENTS);
+    }
+    return 0;
+}
+
 int mc_film_read_channels(const image *img, const char *what, mc_film *film, gt_error *e)
 {
     /* The quantities are the channels that have a ".sum" accumulator. */
-    mc_quantity quantities[64];
+    mc_quantity quantities[MC_FILM_MAX_QUANTITIES];
     int count = 0;
-    for (int c = 0; c < img->channel_count && count < 64; ++c) {
+    for (int c = 0; c < img->channel_count; ++c) {
         const char *name = img->channels[c].name;
         size_t len = strlen(name);
         if (len > 4 && strcmp(name + len - 4, ".sum") == 0) {
+            if (count == MC_FILM_MAX_QUANTITIES)
+                return gt_error_set(e, what, "more than %d Monte Carlo quantities", MC_FILM_MAX_QUANTITIES);
             memset(&quantities[count], 0, sizeof quantities[count]);
             memcpy(quantities[count].name, name, len - 4);
             count++;
@@ -226,6 +262,8 @@ int mc_film_read_channels(const image *img, const char *what, mc_film *film, gt_
     }
     if (count == 0)
         return gt_error_set(e, what, "no Monte Carlo accumulator channels (*.sum): not a gtlab reference render");
+    if (read_exponents(img, what, quantities, count, e) != 0)
+        return -1;
     const float *n = image_channel_data(img, "spp.N"), *n_even = image_channel_data(img, "spp.Neven");
     if (!n || !n_even)
         return gt_error_set(e, what, "channels spp.N and spp.Neven are missing");
@@ -251,14 +289,14 @@ int mc_film_read_channels(const image *img, const char *what, mc_film *film, gt_
         }
     }
     for (size_t p = 0; p < np; ++p) {
-        if (!(n[p] >= 0.0f) || !(n_even[p] >= 0.0f) || n_even[p] > n[p]) {
+        if (!valid_count(n[p]) || !valid_count(n_even[p]) || n_even[p] > n[p]) {
             mc_film_free(film);
-            return gt_error_set(e, what, "invalid sample counts in spp.N / spp.Neven");
+            return gt_error_set(e, what, "invalid sample counts in spp.N / spp.Neven at pixel %zu", p);
         }
         film->count[p] = (uint32_t)n[p];
         film->count_even[p] = (uint32_t)n_even[p];
     }
-    const char *layers = image_get_attribute(img, "gtlab.normalized");
+    const char *layers = image_get_attribute(img, MC_FILM_ATTR_NORMALIZED);
     if (layers) {
         char copy[MC_FILM_MAX_NORMALIZED * IMAGE_NAME_MAX];
         snprintf(copy, sizeof copy, "%s", layers);
@@ -275,10 +313,16 @@ int mc_film_merge(mc_film *dst, const mc_film *src, const char *what, gt_error *
                             dst->height);
     if (dst->quantity_count != src->quantity_count)
         return gt_error_set(e, what, "holds different quantities");
-    for (int q = 0; q < dst->quantity_count; ++q)
+    for (int q = 0; q < dst->quantity_count; ++q) {
         if (strcmp(dst->quantities[q].name, src->quantities[q].name) != 0)
             return gt_error_set(e, what, "holds different quantities (%s vs %s)", src->quantities[q].name,
                                 dst->quantities[q].name);
+        /* Sums on different grids would no longer be exact. */
+        if (dst->quantities[q].scale_exponent != src->quantities[q].scale_exponent)
+            return gt_error_set(e, what, "%s was accumulated on another grid (scale exponent %d vs %d)",
+                                src->quantities[q].name, src->quantities[q].scale_exponent,
+                                dst->quantities[q].scale_exponent);
+    }
     size_t n = pixel_count(dst) * (size_t)dst->quantity_count;
     for (size_t i = 0; i < n; ++i) {
         dst->sum[i] += src->sum[i];

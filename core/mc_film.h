@@ -27,6 +27,9 @@ typedef struct {
 } mc_quantity;
 
 #define MC_FILM_MAX_NORMALIZED 4
+#define MC_FILM_MAX_QUANTITIES 64
+#define MC_FILM_ATTR_NORMALIZED "gtlab.normalized" /* "layer layer ..." */
+#define MC_FILM_ATTR_EXPONENTS "gtlab.scale_exponents" /* "name:E name:E ..." */
 
 typedef struct {
     int width, height;
@@ -54,7 +57,8 @@ double mc_film_stderr(const mc_film *film, int quantity, int pixel);
 
 /* Adds the channels "Q", "Q.stderr", the accumulators "Q.sum", "Q.sum_lo",
  * "Q.sumsq", "Q.sumsq_lo", "Q.sumeven", "Q.sumeven_lo" of every quantity,
- * and "spp.N", "spp.Neven"; and the attribute "gtlab.normalized". Pixels with
+ * and "spp.N", "spp.Neven"; and the attributes MC_FILM_ATTR_NORMALIZED and
+ * MC_FILM_ATTR_EXPONENTS, so a film read back accumulates on the same grid. Pixels with
  * mask[pixel] == 0 (background; mask may be NULL) get 0 in Q and Q.stderr. */
 int mc_film_write_channels(const mc_film *film, const float *mask, image *img);
 /* Means of one half of the samples only (half 0: even indices, 1: odd) into

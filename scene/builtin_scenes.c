@@ -1,1 +1,560 @@
-/* placeholder: being written */
+/* Built-in procedural scenes (builtin_scenes.h): a table of names, exact
+ * descriptions and builders. Flat surfaces are lists of quads, each quad with
+ * its own four vertices and its exact flat normal, so no normal is ever
+ * averaged across a hard edge; corners shared by neighbouring quads are
+ * computed once (or from the same integers), so shared edges are bit-identical
+ * and rays cannot leak through cracks. The sphere is an icosphere whose
+ * vertices lie on the sphere and carry the exact sphere normals. */
+#include "scene/builtin_scenes.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const double pi = 3.14159265358979323846;
+
+/* ---- Materials and cameras ------------------------------------------------ */
+
+static scene_material matte_material(float r, float g, float b)
+{
+    scene_material m = {{r, g, b, 1.0f}, -1, 0.0f, 0.5f, -1}; /* metallic 0, roughness 0.5 */
+    return m;
+}
+
+/* The generic white of every scene but the Cornell box: albedo 0.8, the usual
+ * "white" of production scenes (a physical albedo, unlike 1.0). */
+static int add_white_material(scene *s) { return scene_add_material(s, matte_material(0.8f, 0.8f, 0.8f)); }
+
+static void set_camera(scene *s, vec3 position, vec3 target, float yfov_deg)
+{
+    s->has_camera = 1;
+    s->camera.position = position;
+    s->camera.target = target;
+    s->camera.up = v3(0.0f, 1.0f, 0.0f);
+    s->camera.yfov = (float)(yfov_deg * pi / 180.0);
+    s->camera.width = 512;
+    s->camera.height = 512;
+}
+
+/* ---- Quads ------------------------------------------------------------------ */
+
+/* Four corners, counter-clockwise seen from the side the normal points to. */
+typedef struct {
+    vec3 p[4];
+} quad;
+
+typedef struct {
+    quad *items;
+    uint32_t count, capacity;
+} quad_list;
+
+static int quad_list_push(quad_list *l, quad q)
+{
+    if (l->count == l->capacity) {
+        uint32_t capacity = l->capacity ? 2 * l->capacity : 64;
+        quad *grown = realloc(l->items, sizeof *grown * capacity);
+        if (!grown)
+            return -1;
+        l->items = grown;
+        l->capacity = capacity;
+    }
+    l->items[l->count++] = q;
+    return 0;
+}
+
+static void quad_list_free(quad_list *l)
+{
+    free(l->items);
+    memset(l, 0, sizeof *l);
+}
+
+/* One mesh of the quads: 4 vertices and 2 triangles (0 1 2, 0 2 3) per quad,
+ * the normal of each quad's vertices its own plane's (computed in double). */
+static int add_quad_mesh(scene *s, const quad_list *l, int material)
+{
+    scene_mesh *m = scene_add_mesh(s, 4 * l->count, 2 * l->count, 0);
+    if (!m)
+        return -1;
+    m->material = material;
+    for (uint32_t q = 0; q < l->count; ++q) {
+        const vec3 *p = l->items[q].p;
+        double u[3] = {p[1].x - p[0].x, p[1].y - p[0].y, p[1].z - p[0].z};
+        double v[3] = {p[2].x - p[0].x, p[2].y - p[0].y, p[2].z - p[0].z};
+        double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        vec3 normal = v3((float)(n[0] / len), (float)(n[1] / len), (float)(n[2] / len));
+        for (int k = 0; k < 4; ++k) {
+            v3_store(&m->positions[3 * (4 * q + k)], p[k]);
+            v3_store(&m->normals[3 * (4 * q + k)], normal);
+        }
+        const uint32_t base = 4 * q, tri[6] = {0, 1, 2, 0, 2, 3};
+        for (int k = 0; k < 6; ++k)
+            m->indices[6 * q + k] = base + tri[k];
+    }
+    return 0;
+}
+
+/* ---- Boxes ------------------------------------------------------------------ */
+
+/* A box's corner c has bit 0 set on its +x side, bit 1 on +y, bit 2 on +z (in
+ * the box's own axes). Each face lists its corners counter-clockwise seen from
+ * outside. */
+enum { FACE_POS_X, FACE_NEG_X, FACE_POS_Y, FACE_NEG_Y, FACE_POS_Z, FACE_NEG_Z };
+static const unsigned char box_face_corners[6][4] = {
+    {1, 3, 7, 5}, {0, 4, 6, 2}, {2, 6, 7, 3}, {0, 1, 5, 4}, {4, 5, 7, 6}, {0, 2, 3, 1},
+};
+#define FACE_BIT(f) (1u << (f))
+#define ALL_FACES 0x3fu
+
+static void aligned_box_corners(vec3 lo, vec3 hi, vec3 corners[8])
+{
+    for (int c = 0; c < 8; ++c)
+        corners[c] = v3(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z);
+}
+
+/* A block of size (x, height, z) standing on y = 0 with its base centred at
+ * base_centre, turned by angle (radians, counter-clockwise seen from above,
+ * i.e. a right-handed rotation about +Y). */
+static void turned_block_corners(vec3 base_centre, vec3 size, double angle, vec3 corners[8])
+{
+    const double c = cos(angle), s = sin(angle);
+    for (int k = 0; k < 8; ++k) {
+        double x = (k & 1 ? 0.5 : -0.5) * size.x, z = (k & 4 ? 0.5 : -0.5) * size.z;
+        corners[k] = v3((float)(base_centre.x + c * x + s * z), k & 2 ? size.y : 0.0f,
+                        (float)(base_centre.z - s * x + c * z));
+    }
+}
+
+/* Pushes the faces in face_mask; inward reverses them so that their normals
+ * face into the box (room walls). */
+static int push_box_faces(quad_list *l, const vec3 corners[8], unsigned face_mask, int inward)
+{
+    for (int f = 0; f < 6; ++f) {
+        if (!(face_mask & FACE_BIT(f)))
+            continue;
+        quad q;
+        for (int k = 0; k < 4; ++k)
+            q.p[k] = corners[box_face_corners[f][inward ? (4 - k) % 4 : k]];
+        if (quad_list_push(l, q) != 0)
+            return -1;
+    }
+    return 0;
+}
+
+/* ---- The floor shared by most scenes ---------------------------------------- */
+
+static int add_floor(scene *s, int material)
+{
+    quad_list l = {0};
+    quad q = {{v3(-50.0f, 0.0f, -50.0f), v3(-50.0f, 0.0f, 50.0f), v3(50.0f, 0.0f, 50.0f), v3(50.0f, 0.0f, -50.0f)}};
+    int rc = quad_list_push(&l, q) == 0 ? add_quad_mesh(s, &l, material) : -1;
+    quad_list_free(&l);
+    return rc;
+}
+
+/* ---- Icosphere ---------------------------------------------------------------- */
+
+/* Unit vectors in double until the mesh is written, so every vertex is on the
+ * sphere to double precision before the single rounding to float. */
+typedef struct {
+    double (*vertices)[3];
+    uint32_t (*faces)[3];
+    uint32_t vertex_count, face_count;
+} icosphere;
+
+/* Open-addressing map from an undirected edge to the vertex at its midpoint. */
+typedef struct {
+    uint64_t *keys; /* (lo << 32 | hi) + 1; 0 = empty slot */
+    uint32_t *values;
+    size_t mask;
+} edge_map;
+
+static uint32_t edge_midpoint(edge_map *map, icosphere *ico, uint32_t a, uint32_t b)
+{
+    uint64_t key = (a < b ? (uint64_t)a << 32 | b : (uint64_t)b << 32 | a) + 1;
+    size_t slot = (size_t)((key * 0x9E3779B97F4A7C15ull) >> 32) & map->mask; /* Fibonacci hashing */
+    for (; map->keys[slot]; slot = (slot + 1) & map->mask)
+        if (map->keys[slot] == key)
+            return map->values[slot];
+    const double *p = ico->vertices[a], *q = ico->vertices[b];
+    double m[3] = {p[0] + q[0], p[1] + q[1], p[2] + q[2]};
+    double len = sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+    uint32_t v = ico->vertex_count++;
+    for (int k = 0; k < 3; ++k)
+        ico->vertices[v][k] = m[k] / len;
+    map->keys[slot] = key;
+    map->values[slot] = v;
+    return v;
+}
+
+/* The icosahedron with vertices at the poles (0, +-1, 0) and two rings of
+ * five at latitude +-atan(1/2), the lower ring turned by 36 degrees; faces
+ * counter-clockwise seen from outside. */
+static void icosahedron(icosphere *ico)
+{
+    const double ring_y = 1.0 / sqrt(5.0), ring_r = 2.0 / sqrt(5.0);
+    double(*v)[3] = ico->vertices;
+    v[0][0] = 0.0, v[0][1] = 1.0, v[0][2] = 0.0;
+    v[11][0] = 0.0, v[11][1] = -1.0, v[11][2] = 0.0;
+    for (int k = 0; k < 5; ++k) {
+        double upper = 2.0 * pi * k / 5.0, lower = upper + pi / 5.0;
+        v[1 + k][0] = ring_r * cos(upper), v[1 + k][1] = ring_y, v[1 + k][2] = ring_r * sin(upper);
+        v[6 + k][0] = ring_r * cos(lower), v[6 + k][1] = -ring_y, v[6 + k][2] = ring_r * sin(lower);
+    }
+    ico->vertex_count = 12;
+    uint32_t(*f)[3] = ico->faces;
+    for (uint32_t k = 0; k < 5; ++k) {
+        uint32_t u0 = 1 + k, u1 = 1 + (k + 1) % 5, l0 = 6 + k, l1 = 6 + (k + 1) % 5;
+        const uint32_t tris[4][3] = {{0, u1, u0}, {u0, u1, l0}, {u1, l1, l0}, {11, l0, l1}};
+        memcpy(f[4 * k], tris, sizeof tris);
+    }
+    ico->face_count = 20;
+}
+
+/* Splits every face into four at its edge midpoints, projected onto the sphere. */
+static void subdivide(icosphere *ico, uint32_t (*out)[3], edge_map *map)
+{
+    memset(map->keys, 0, sizeof *map->keys * (map->mask + 1));
+    for (uint32_t t = 0; t < ico->face_count; ++t) {
+        uint32_t a = ico->faces[t][0], b = ico->faces[t][1], c = ico->faces[t][2];
+        uint32_t ab = edge_midpoint(map, ico, a, b), bc = edge_midpoint(map, ico, b, c),
+                 ca = edge_midpoint(map, ico, c, a);
+        const uint32_t children[4][3] = {{a, ab, ca}, {b, bc, ab}, {c, ca, bc}, {ab, bc, ca}};
+        memcpy(out[4 * t], children, sizeof children);
+    }
+    memcpy(ico->faces, out, sizeof *out * 4 * ico->face_count);
+    ico->face_count *= 4;
+}
+
+/* Level L has 20 4^L faces and 10 4^L + 2 vertices. */
+static int icosphere_build(icosphere *ico, int levels)
+{
+    uint32_t faces = 20u << (2 * levels), vertices = 10u * (1u << (2 * levels)) + 2u;
+    size_t edges_split_last = (30u << (2 * levels)) / 4, slots = 1; /* the map stays at most half full */
+    while (slots < 2 * edges_split_last)
+        slots *= 2;
+    edge_map map = {malloc(slots * sizeof(uint64_t)), malloc(slots * sizeof(uint32_t)), slots - 1};
+    uint32_t(*scratch)[3] = malloc(sizeof *scratch * faces);
+    ico->vertices = malloc(sizeof *ico->vertices * vertices);
+    ico->faces = malloc(sizeof *ico->faces * faces);
+    int ok = map.keys && map.values && scratch && ico->vertices && ico->faces;
+    if (ok) {
+        icosahedron(ico);
+        for (int level = 0; level < levels; ++level)
+            subdivide(ico, scratch, &map);
+    }
+    free(map.keys);
+    free(map.values);
+    free(scratch);
+    if (!ok) {
+        free(ico->vertices);
+        free(ico->faces);
+        return -1;
+    }
+    return 0;
+}
+
+/* Why 7 levels: the icosphere is convex and lies between the unit sphere and
+ * the ball of radius r_in, its smallest centre-to-face-plane distance. The
+ * solid angle of a ball of radius r seen from distance d,
+ *   Omega(r) = 2 pi (1 - sqrt(1 - (r/d)^2)),
+ * grows with r with slope dOmega/dr = 2 pi r / (d sqrt(d^2 - r^2)), steepest
+ * at the nearest floor point (d = 1.5, straight below): 3.75 sr per unit of
+ * radius. So the solid-angle error anywhere on the floor is at most
+ * Omega(1) - Omega(r_in) at d = 1.5. Level 6 has 1 - r_in = 7.1e-5 (bound
+ * 2.7e-4 sr: not enough); level 7 has 1 - r_in = 1.8e-5, bound 6.7e-5 sr
+ * < 1e-4. (The test recomputes r_in and the bound from the mesh.) */
+enum { SPHERE_LEVELS = 7 };
+
+static int add_sphere(scene *s, vec3 centre, float radius, int material)
+{
+    icosphere ico;
+    if (icosphere_build(&ico, SPHERE_LEVELS) != 0)
+        return -1;
+    scene_mesh *m = scene_add_mesh(s, ico.vertex_count, ico.face_count, 0);
+    if (m) {
+        m->material = material;
+        for (uint32_t v = 0; v < ico.vertex_count; ++v) {
+            const double *n = ico.vertices[v];
+            v3_store(&m->normals[3 * v], v3((float)n[0], (float)n[1], (float)n[2]));
+            v3_store(&m->positions[3 * v], v3((float)(centre.x + radius * n[0]), (float)(centre.y + radius * n[1]),
+                                              (float)(centre.z + radius * n[2])));
+        }
+        memcpy(m->indices, ico.faces, sizeof *ico.faces * ico.face_count);
+    }
+    free(ico.vertices);
+    free(ico.faces);
+    return m ? 0 : -1;
+}
+
+/* ---- Menger sponge ------------------------------------------------------------- */
+
+enum { MENGER_LEVELS = 3, MENGER_CELLS = 27 /* 3^MENGER_LEVELS */ };
+
+/* Cell (i, j, k) of the 27^3 grid is removed if, at any level, at least two
+ * of its base-3 digits are 1 (Menger 1926). Cells outside the grid are empty. */
+static int menger_solid(int i, int j, int k)
+{
+    if (i < 0 || j < 0 || k < 0 || i >= MENGER_CELLS || j >= MENGER_CELLS || k >= MENGER_CELLS)
+        return 0;
+    for (int level = 0; level < MENGER_LEVELS; ++level, i /= 3, j /= 3, k /= 3)
+        if ((i % 3 == 1) + (j % 3 == 1) + (k % 3 == 1) >= 2)
+            return 0;
+    return 1;
+}
+
+/* Grid line n in world units: side 2, x and z centred, bottom on y = 0. The
+ * same n always gives the same float, so neighbouring faces share edges exactly. */
+static float menger_x(int n) { return (float)(n * 2.0 / MENGER_CELLS - 1.0); }
+static float menger_y(int n) { return (float)(n * 2.0 / MENGER_CELLS); }
+
+static int push_menger_faces(quad_list *l)
+{
+    static const int step[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (int i = 0; i < MENGER_CELLS; ++i)
+        for (int j = 0; j < MENGER_CELLS; ++j)
+            for (int k = 0; k < MENGER_CELLS; ++k) {
+                if (!menger_solid(i, j, k))
+                    continue;
+                unsigned faces = 0;
+                for (int f = 0; f < 6; ++f)
+                    if (!menger_solid(i + step[f][0], j + step[f][1], k + step[f][2]))
+                        faces |= FACE_BIT(f);
+                if (j == 0)
+                    faces &= ~FACE_BIT(FACE_NEG_Y); /* lies on the floor, never visible */
+                vec3 corners[8];
+                aligned_box_corners(v3(menger_x(i), menger_y(j), menger_x(k)),
+                                    v3(menger_x(i + 1), menger_y(j + 1), menger_x(k + 1)), corners);
+                if (push_box_faces(l, corners, faces, 0) != 0)
+                    return -1;
+            }
+    return 0;
+}
+
+/* ---- Box field ------------------------------------------------------------------ */
+
+/* PCG hash: Jarzynski and Olano 2020, "Hash Functions for GPU Rendering"
+ * (JCGT 9(3)), a good one-round 32-bit hash; deterministic everywhere. */
+static uint32_t pcg_hash(uint32_t v)
+{
+    uint32_t state = v * 747796405u + 2891336453u;
+    uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+static float unit_hash(uint32_t n) { return (float)(pcg_hash(n) >> 8) * (1.0f / 16777216.0f); }
+
+enum { BOX_GRID = 8 };
+
+static int push_box_field(quad_list *l)
+{
+    for (int r = 0; r < BOX_GRID; ++r)
+        for (int c = 0; c < BOX_GRID; ++c) {
+            float u[5];
+            for (uint32_t k = 0; k < 5; ++k)
+                u[k] = unit_hash(5u * (uint32_t)(BOX_GRID * r + c) + k);
+            float width = 0.5f + 2.0f * u[0], depth = 0.5f + 2.0f * u[1], height = 0.5f + 3.5f * u[2];
+            float x = 3.0f * c - 10.5f + 1.5f * (u[3] - 0.5f), z = 3.0f * r - 10.5f + 1.5f * (u[4] - 0.5f);
+            vec3 corners[8];
+            aligned_box_corners(v3(x - 0.5f * width, 0.0f, z - 0.5f * depth),
+                                v3(x + 0.5f * width, height, z + 0.5f * depth), corners);
+            if (push_box_faces(l, corners, ALL_FACES & ~FACE_BIT(FACE_NEG_Y), 0) != 0)
+                return -1;
+        }
+    return 0;
+}
+
+/* ---- Scenes ----------------------------------------------------------------------- */
+
+static int build_plane(scene *s)
+{
+    int white = add_white_material(s);
+    if (white < 0 || add_floor(s, white) != 0)
+        return -1;
+    set_camera(s, v3(12.0f, 9.0f, 15.0f), v3(0.0f, 0.0f, 0.0f), 45.0f);
+    return 0;
+}
+
+static int build_sphere_on_plane(scene *s)
+{
+    int white = add_white_material(s);
+    if (white < 0 || add_floor(s, white) != 0 || add_sphere(s, v3(0.0f, 1.5f, 0.0f), 1.0f, white) != 0)
+        return -1;
+    set_camera(s, v3(4.5f, 4.0f, 6.0f), v3(0.0f, 1.0f, 0.0f), 45.0f);
+    return 0;
+}
+
+static int build_corner(scene *s)
+{
+    int white = add_white_material(s);
+    if (white < 0)
+        return -1;
+    vec3 corners[8];
+    aligned_box_corners(v3(0.0f, 0.0f, 0.0f), v3(10.0f, 10.0f, 10.0f), corners);
+    quad_list l = {0};
+    int rc = push_box_faces(&l, corners, FACE_BIT(FACE_NEG_Y) | FACE_BIT(FACE_NEG_X) | FACE_BIT(FACE_NEG_Z), 1);
+    if (rc == 0)
+        rc = add_quad_mesh(s, &l, white);
+    quad_list_free(&l);
+    set_camera(s, v3(11.0f, 9.0f, 13.0f), v3(2.0f, 2.0f, 2.0f), 45.0f);
+    return rc;
+}
+
+static int build_menger(scene *s)
+{
+    int white = add_white_material(s);
+    if (white < 0 || add_floor(s, white) != 0)
+        return -1;
+    quad_list l = {0};
+    int rc = push_menger_faces(&l);
+    if (rc == 0)
+        rc = add_quad_mesh(s, &l, white);
+    quad_list_free(&l);
+    set_camera(s, v3(2.7f, 2.6f, 3.6f), v3(0.0f, 0.9f, 0.0f), 45.0f);
+    return rc;
+}
+
+static int build_boxes(scene *s)
+{
+    int white = add_white_material(s);
+    if (white < 0 || add_floor(s, white) != 0)
+        return -1;
+    quad_list l = {0};
+    int rc = push_box_field(&l);
+    if (rc == 0)
+        rc = add_quad_mesh(s, &l, white);
+    quad_list_free(&l);
+    set_camera(s, v3(27.0f, 22.0f, 35.0f), v3(0.0f, 0.0f, 0.0f), 45.0f);
+    return rc;
+}
+
+/* The classic Cornell box colours (base colours of the white, red and green
+ * walls as commonly tabulated from the Cornell measurements). */
+static int build_cornell(scene *s)
+{
+    int white = scene_add_material(s, matte_material(0.73f, 0.73f, 0.73f));
+    int red = scene_add_material(s, matte_material(0.63f, 0.065f, 0.05f));
+    int green = scene_add_material(s, matte_material(0.14f, 0.45f, 0.091f));
+    if (white < 0 || red < 0 || green < 0)
+        return -1;
+    vec3 room[8], short_block[8], tall_block[8];
+    aligned_box_corners(v3(-2.75f, 0.0f, -2.75f), v3(2.75f, 5.5f, 2.75f), room);
+    turned_block_corners(v3(0.9f, 0.0f, 1.1f), v3(1.65f, 1.65f, 1.65f), -17.0 * pi / 180.0, short_block);
+    turned_block_corners(v3(-0.9f, 0.0f, -0.7f), v3(1.65f, 3.3f, 1.65f), 17.0 * pi / 180.0, tall_block);
+    const unsigned block_faces = ALL_FACES & ~FACE_BIT(FACE_NEG_Y);
+    quad_list whites = {0}, reds = {0}, greens = {0};
+    int rc = push_box_faces(&whites, room, FACE_BIT(FACE_NEG_Y) | FACE_BIT(FACE_POS_Y) | FACE_BIT(FACE_NEG_Z), 1);
+    if (rc == 0)
+        rc = push_box_faces(&whites, short_block, block_faces, 0);
+    if (rc == 0)
+        rc = push_box_faces(&whites, tall_block, block_faces, 0);
+    if (rc == 0)
+        rc = push_box_faces(&reds, room, FACE_BIT(FACE_NEG_X), 1);
+    if (rc == 0)
+        rc = push_box_faces(&greens, room, FACE_BIT(FACE_POS_X), 1);
+    if (rc == 0)
+        rc = add_quad_mesh(s, &whites, white);
+    if (rc == 0)
+        rc = add_quad_mesh(s, &reds, red);
+    if (rc == 0)
+        rc = add_quad_mesh(s, &greens, green);
+    quad_list_free(&whites);
+    quad_list_free(&reds);
+    quad_list_free(&greens);
+    set_camera(s, v3(0.0f, 2.75f, 10.7f), v3(0.0f, 2.75f, 0.0f), 39.3f);
+    return rc;
+}
+
+/* ---- The table ---------------------------------------------------------------------- */
+
+#define WHITE_MATERIAL "Material: base colour 0.8 grey (linear), roughness 0.5, metallic 0.\n"
+#define FLOOR "The floor of 'plane' (mesh 0): x, z in [-50, 50] at y = 0, normal +Y.\n"
+
+static const builtin_scene scenes[] = {
+    {"plane",
+     "A square of side 100 at y = 0 centred at the origin: x, z in [-50, 50].\n"
+     "One mesh: 2 triangles over 4 vertices, normal +Y everywhere.\n" WHITE_MATERIAL
+     "Bounds: [-50, 50] x [0, 0] x [-50, 50].\n"
+     "Camera: position (12, 9, 15), target (0, 0, 0), up +Y, yfov 45 deg, 512 x 512.",
+     build_plane},
+    {"sphere-on-plane",
+     FLOOR "A sphere (mesh 1) of radius 1 centred at (0, 1.5, 0), 0.5 above the floor: an icosphere\n"
+     "(icosahedron with vertices at the poles, faces split in 4 seven times, new vertices projected\n"
+     "onto the sphere): 327680 triangles, 163842 vertices all on the sphere, normals the exact\n"
+     "sphere normals. Its solid angle from any floor point is within 6.7e-5 sr of a true sphere's.\n" WHITE_MATERIAL
+     "Bounds: [-50, 50] x [0, 2.5] x [-50, 50].\n"
+     "Camera: position (4.5, 4, 6), target (0, 1, 0), up +Y, yfov 45 deg, 512 x 512.",
+     build_sphere_on_plane},
+    {"corner",
+     "Three perpendicular 10 x 10 squares meeting at the origin, one mesh, each square 2 triangles\n"
+     "with its own 4 vertices; all normals face into the octant x, y, z >= 0:\n"
+     "  floor y = 0 (x, z in [0, 10]) normal +Y; wall x = 0 (y, z in [0, 10]) normal +X;\n"
+     "  wall z = 0 (x, y in [0, 10]) normal +Z.\n" WHITE_MATERIAL "Bounds: [0, 10] x [0, 10] x [0, 10].\n"
+     "Camera: position (11, 9, 13), target (2, 2, 2), up +Y, yfov 45 deg, 512 x 512.",
+     build_corner},
+    {"menger",
+     FLOOR "A level-3 Menger sponge of side 2 (mesh 1) standing on it: x, z in [-1, 1], y in [0, 2].\n"
+     "The cube is cut into 27^3 cells of side 2/27; cell (i, j, k) is solid unless at some level two\n"
+     "or more of the base-3 digits of i, j, k are 1 (8000 solid cells). The mesh holds only cell faces\n"
+     "between a solid cell and an empty one or the outside, except the bottom faces lying on the floor:\n"
+     "17536 squares, each 2 triangles with its own 4 vertices and its axis-aligned outward normal.\n" WHITE_MATERIAL
+     "Bounds: [-50, 50] x [0, 2] x [-50, 50].\n"
+     "Camera: position (2.7, 2.6, 3.6), target (0, 0.9, 0), up +Y, yfov 45 deg, 512 x 512.",
+     build_menger},
+    {"boxes",
+     FLOOR "64 axis-aligned boxes on it (mesh 1) in an 8 x 8 grid, row r and column c in 0..7. With\n"
+     "u_k = (pcg_hash(5 (8 r + c) + k) >> 8) / 2^24 (pcg_hash of Jarzynski and Olano 2020), box (r, c) is\n"
+     "  width (x) 0.5 + 2 u_0, depth (z) 0.5 + 2 u_1, height 0.5 + 3.5 u_2, bottom at y = 0,\n"
+     "  centred at x = 3 c - 10.5 + 1.5 (u_3 - 0.5), z = 3 r - 10.5 + 1.5 (u_4 - 0.5).\n"
+     "Boxes may overlap. Each has 5 faces (no bottom), each 2 triangles with its own 4 vertices and\n"
+     "its outward normal.\n" WHITE_MATERIAL "Bounds: [-50, 50] x [0, 3.8948] x [-50, 50] (the tallest box: 3.894838).\n"
+     "Camera: position (27, 22, 35), target (0, 0, 0), up +Y, yfov 45 deg, 512 x 512.",
+     build_boxes},
+    {"cornell",
+     "A Cornell-box-like room, x in [-2.75, 2.75], y in [0, 5.5], z in [-2.75, 2.75], open at the\n"
+     "front (z = 2.75), all wall normals facing into the room, one mesh per material:\n"
+     "  mesh 0, white (base colour 0.73): floor y = 0 (+Y), ceiling y = 5.5 (-Y), back z = -2.75 (+Z),\n"
+     "    and two blocks standing on the floor, 5 faces each (no bottom), outward normals, turned\n"
+     "    about +Y (positive = counter-clockwise seen from above):\n"
+     "    short 1.65 x 1.65 x 1.65 (x, y, z), base centred at (0.9, 0, 1.1), turned -17 deg;\n"
+     "    tall 1.65 x 3.3 x 1.65, base centred at (-0.9, 0, -0.7), turned +17 deg;\n"
+     "  mesh 1, red (0.63, 0.065, 0.05): left wall x = -2.75 (+X);\n"
+     "  mesh 2, green (0.14, 0.45, 0.091): right wall x = 2.75 (-X).\n"
+     "All roughness 0.5, metallic 0. No light source (the references light by a uniform dome).\n"
+     "Bounds: [-2.75, 2.75] x [0, 5.5] x [-2.75, 2.75].\n"
+     "Camera (the classic view in through the open front): position (0, 2.75, 10.7),\n"
+     "target (0, 2.75, 0), up +Y, yfov 39.3 deg, 512 x 512.",
+     build_cornell},
+};
+
+int builtin_scene_count(void) { return (int)(sizeof scenes / sizeof scenes[0]); }
+
+const builtin_scene *builtin_scene_at(int index)
+{
+    return index >= 0 && index < builtin_scene_count() ? &scenes[index] : NULL;
+}
+
+const builtin_scene *builtin_scene_find(const char *name)
+{
+    for (int i = 0; i < builtin_scene_count(); ++i)
+        if (strcmp(scenes[i].name, name) == 0)
+            return &scenes[i];
+    return NULL;
+}
+
+int builtin_scene_build(const char *name, scene *s, gt_error *e)
+{
+    memset(s, 0, sizeof *s);
+    char subject[sizeof s->name];
+    snprintf(subject, sizeof subject, "builtin:%s", name);
+    const builtin_scene *b = builtin_scene_find(name);
+    if (!b)
+        return gt_error_set(e, subject, "unknown built-in scene (try 'gtlab scene list')");
+    if (b->build(s) != 0) {
+        scene_free(s);
+        return gt_error_set(e, subject, "out of memory");
+    }
+    memcpy(s->name, subject, sizeof subject);
+    return 0;
+}

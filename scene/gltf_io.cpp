@@ -1,1 +1,1164 @@
-/* placeholder: being written */
+/* glTF 2.0 in and out through tinygltf: the thin C++ adapter behind
+ * scene/gltf_io.h.
+ *
+ * tinygltf parses the JSON, the buffers (external, data: URI, GLB chunk) and
+ * decodes images with stb_image, but it validates little of what the indices
+ * and byte ranges in the file point at (node children, mesh and accessor
+ * indices, accessor and bufferView extents). Everything taken from the model
+ * is therefore checked here before it is used, so that a broken file gives one
+ * error naming the file and the problem instead of undefined behaviour.
+ * Reference: the glTF 2.0 specification (Khronos, version 2.0.1), sections
+ * "Nodes and Hierarchy", "Transformations", "Accessors", "Meshes",
+ * "Materials", "Cameras" and "GLB File Format Specification". */
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdarg>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <new>
+#include <sstream>
+#include <string>
+#include <vector>
+
+extern "C" {
+#include "core/atomic_file.h"
+#include "scene/gltf_io.h"
+}
+
+namespace {
+
+/* ---------------------------------------------------------------- matrices */
+
+/* 4x4 affine transform, column-major as glTF stores it: m[4 * column + row]. */
+struct Mat4 {
+    double m[16];
+};
+
+Mat4 mat4_identity()
+{
+    Mat4 r = {{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}};
+    return r;
+}
+
+Mat4 mat4_mul(const Mat4 &a, const Mat4 &b)
+{
+    Mat4 r;
+    for (int c = 0; c < 4; ++c)
+        for (int row = 0; row < 4; ++row) {
+            double sum = 0.0;
+            for (int k = 0; k < 4; ++k)
+                sum += a.m[4 * k + row] * b.m[4 * c + k];
+            r.m[4 * c + row] = sum;
+        }
+    return r;
+}
+
+/* T * R * S (glTF 2.0 "Transformations"), R from the unit quaternion (x, y, z, w). */
+Mat4 mat4_trs(const double t[3], const double q[4], const double s[3])
+{
+    const double x = q[0], y = q[1], z = q[2], w = q[3];
+    const double rot[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
+                              {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
+                              {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}};
+    Mat4 r = mat4_identity();
+    for (int c = 0; c < 3; ++c)
+        for (int row = 0; row < 3; ++row)
+            r.m[4 * c + row] = rot[row][c] * s[c];
+    for (int row = 0; row < 3; ++row)
+        r.m[12 + row] = t[row];
+    return r;
+}
+
+vec3 mat4_point(const Mat4 &a, const float p[3])
+{
+    double r[3];
+    for (int row = 0; row < 3; ++row)
+        r[row] = a.m[row] * p[0] + a.m[4 + row] * p[1] + a.m[8 + row] * p[2] + a.m[12 + row];
+    return v3((float)r[0], (float)r[1], (float)r[2]);
+}
+
+vec3 mat4_direction(const Mat4 &a, double x, double y, double z)
+{
+    double r[3];
+    for (int row = 0; row < 3; ++row)
+        r[row] = a.m[row] * x + a.m[4 + row] * y + a.m[8 + row] * z;
+    return v3((float)r[0], (float)r[1], (float)r[2]);
+}
+
+double mat4_det3(const Mat4 &a)
+{
+    const double *m = a.m;
+    return m[0] * (m[5] * m[10] - m[9] * m[6]) - m[4] * (m[1] * m[10] - m[9] * m[2]) +
+           m[8] * (m[1] * m[6] - m[5] * m[2]);
+}
+
+/* The cofactor matrix of the upper 3x3 part, cof(A) = det(A) A^-T: normals
+ * transform by the inverse transpose, and the cofactor form needs no division
+ * (the length is renormalised anyway; the sign of det is applied by the caller).
+ * Returned as a 3x3 column-major array. */
+void mat4_cofactor3(const Mat4 &a, double cof[9])
+{
+    auto e = [&a](int row, int col) { return a.m[4 * col + row]; };
+    for (int row = 0; row < 3; ++row)
+        for (int col = 0; col < 3; ++col) {
+            const int r0 = (row + 1) % 3, r1 = (row + 2) % 3, c0 = (col + 1) % 3, c1 = (col + 2) % 3;
+            cof[3 * col + row] = e(r0, c0) * e(r1, c1) - e(r0, c1) * e(r1, c0);
+        }
+}
+
+bool mat4_is_finite(const Mat4 &a)
+{
+    for (double v : a.m)
+        if (!std::isfinite(v))
+            return false;
+    return true;
+}
+
+/* ------------------------------------------------------------ small helpers */
+
+/* tinygltf's messages are multi-line and may quote a whole data: URI; the
+ * CLI prints errors as one short line. */
+std::string one_line(const std::string &text)
+{
+    std::string out, line;
+    std::istringstream lines(text);
+    while (std::getline(lines, line)) {
+        while (!line.empty() && std::isspace((unsigned char)line.back()))
+            line.pop_back();
+        if (line.empty())
+            continue;
+        out += (out.empty() ? "" : "; ") + line;
+    }
+    for (size_t at = out.find("base64,"); at != std::string::npos; at = out.find("base64,", at + 1)) {
+        const size_t begin = at + 7, keep = 16;
+        size_t end = begin;
+        while (end < out.size() && (std::isalnum((unsigned char)out[end]) || out[end] == '+' || out[end] == '/' ||
+                                    out[end] == '='))
+            ++end;
+        if (end - begin > keep)
+            out.replace(begin + keep, end - begin - keep, "...");
+    }
+    return out;
+}
+
+/* A name from the file, fit for a one-line message: control characters
+ * replaced, long names cut. */
+std::string printable(const std::string &name, size_t max_length = 100)
+{
+    std::string out = name.substr(0, max_length);
+    for (char &c : out)
+        if (std::iscntrl((unsigned char)c))
+            c = '?';
+    return name.size() > max_length ? out + "..." : out;
+}
+
+/* [offset, offset + length) lies inside [0, size), without overflow. */
+bool range_inside(uint64_t offset, uint64_t length, uint64_t size)
+{
+    return offset <= size && length <= size - offset;
+}
+
+std::string directory_of(const char *path)
+{
+    const char *slash = std::strrchr(path, '/');
+    if (!slash)
+        return "";
+    if (slash == path)
+        return "/";
+    return std::string(path, (size_t)(slash - path));
+}
+
+bool has_extension(const char *path, const char *ext)
+{
+    size_t n = std::strlen(path), k = std::strlen(ext);
+    if (n < k)
+        return false;
+    for (size_t i = 0; i < k; ++i)
+        if (std::tolower((unsigned char)path[n - k + i]) != ext[i])
+            return false;
+    return true;
+}
+
+const char *mode_name(int mode)
+{
+    switch (mode) {
+    case TINYGLTF_MODE_POINTS: return "points";
+    case TINYGLTF_MODE_LINE: return "lines";
+    case TINYGLTF_MODE_LINE_LOOP: return "line loop";
+    case TINYGLTF_MODE_LINE_STRIP: return "line strip";
+    case TINYGLTF_MODE_TRIANGLE_STRIP: return "triangle strip";
+    case TINYGLTF_MODE_TRIANGLE_FAN: return "triangle fan";
+    default: return "unknown";
+    }
+}
+
+const char *component_type_name(int type)
+{
+    switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE: return "byte";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return "unsigned byte";
+    case TINYGLTF_COMPONENT_TYPE_SHORT: return "short";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return "unsigned short";
+    case TINYGLTF_COMPONENT_TYPE_INT: return "int";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return "unsigned int";
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return "float";
+    case TINYGLTF_COMPONENT_TYPE_DOUBLE: return "double";
+    default: return "unknown";
+    }
+}
+
+const char *type_name(int type)
+{
+    switch (type) {
+    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
+    case TINYGLTF_TYPE_VEC2: return "VEC2";
+    case TINYGLTF_TYPE_VEC3: return "VEC3";
+    case TINYGLTF_TYPE_VEC4: return "VEC4";
+    case TINYGLTF_TYPE_MAT2: return "MAT2";
+    case TINYGLTF_TYPE_MAT3: return "MAT3";
+    case TINYGLTF_TYPE_MAT4: return "MAT4";
+    default: return "unknown";
+    }
+}
+
+/* ======================================================================
+ * Loading
+ * ====================================================================== */
+
+struct Loader {
+    const char *path;
+    gt_error *e;
+    scene *s;
+    tinygltf::Model model;
+    std::vector<int> parent;          /* per node, -1 for a root */
+    std::map<int, std::string> image_problem; /* why an image has no pixels */
+    std::vector<int> image_texture;   /* glTF image -> scene texture, -1 = not yet */
+    std::vector<bool> warned_mode;    /* per mesh: non-triangle primitive reported */
+    bool warned_orthographic = false;
+
+    int fail(const char *fmt, ...) __attribute__((format(printf, 2, 3)))
+    {
+        char problem[768];
+        va_list ap;
+        va_start(ap, fmt);
+        std::vsnprintf(problem, sizeof problem, fmt, ap);
+        va_end(ap);
+        return gt_error_set(e, path, "%s", problem);
+    }
+};
+
+int read_whole_file(const char *path, std::vector<unsigned char> &bytes, gt_error *e)
+{
+    FILE *f = std::fopen(path, "rb");
+    if (!f)
+        return gt_error_set(e, path, "cannot open: %s", std::strerror(errno));
+    unsigned char chunk[1 << 16];
+    size_t n;
+    while ((n = std::fread(chunk, 1, sizeof chunk, f)) > 0)
+        bytes.insert(bytes.end(), chunk, chunk + n);
+    int failed = std::ferror(f);
+    int err = errno;
+    std::fclose(f);
+    if (failed)
+        return gt_error_set(e, path, "cannot read: %s", std::strerror(err));
+    return 0;
+}
+
+/* tinygltf's image callback. It runs while the model is parsed, after the
+ * buffers and bufferViews: an image stored in a bufferView is checked to lie
+ * inside its buffer (tinygltf does not check the extent), then decoded to
+ * 8- or 16-bit RGBA by tinygltf's own stb_image decoder. An image that does
+ * not decode is not fatal: the reason is kept and the material falls back to
+ * its factor (with a warning, if the image is used). */
+bool load_image(tinygltf::Image *image, const int index, std::string *err, std::string *warn, int req_width,
+                int req_height, const unsigned char *bytes, int size, void *user_data)
+{
+    Loader *L = static_cast<Loader *>(user_data);
+    if (image->bufferView >= 0) {
+        const tinygltf::BufferView &view = L->model.bufferViews[(size_t)image->bufferView];
+        const tinygltf::Buffer &buffer = L->model.buffers[(size_t)view.buffer];
+        if (!range_inside(view.byteOffset, view.byteLength, buffer.data.size())) {
+            *err += "image " + std::to_string(index) + ": bufferView " + std::to_string(image->bufferView) +
+                    " lies outside its buffer";
+            return false;
+        }
+    }
+    std::string why;
+    if (!tinygltf::LoadImageData(image, index, &why, warn, req_width, req_height, bytes, size, nullptr))
+        L->image_problem[index] = "cannot be decoded (" + one_line(why) + ")";
+    return true;
+}
+
+int parse_file(Loader &L)
+{
+    std::vector<unsigned char> bytes;
+    if (read_whole_file(L.path, bytes, L.e) != 0)
+        return -1;
+    const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    if (!binary && has_extension(L.path, ".glb"))
+        return L.fail("not a binary glTF file (no \"glTF\" magic; empty or truncated?)");
+    if (bytes.size() > UINT32_MAX)
+        return L.fail("file too large for glTF (4 GiB or more)");
+
+    tinygltf::TinyGLTF gltf;
+    gltf.SetImageLoader(load_image, &L);
+    std::string err, warn;
+    const std::string base_dir = directory_of(L.path);
+    const unsigned int size = (unsigned int)bytes.size();
+    bool ok = binary ? gltf.LoadBinaryFromMemory(&L.model, &err, &warn, bytes.data(), size, base_dir)
+                     : gltf.LoadASCIIFromString(&L.model, &err, &warn, reinterpret_cast<const char *>(bytes.data()),
+                                                size, base_dir);
+    if (!ok)
+        return L.fail("%s: %s", binary ? "cannot load binary glTF" : "cannot load glTF",
+                      err.empty() ? "no reason given" : one_line(err).c_str());
+    /* tinygltf's warnings are about images it could not read; those that
+     * matter (images a material uses) are reported by convert_texture. */
+    if (!L.model.extensionsRequired.empty())
+        return L.fail("requires the glTF extension %s, which is not supported",
+                      printable(L.model.extensionsRequired[0]).c_str());
+    return 0;
+}
+
+/* The node graph must be a forest (glTF 2.0 "Nodes and Hierarchy": "the node hierarchy
+ * MUST be a set of disjoint strict trees"). tinygltf does not check child
+ * indices or cycles; a cycle would make the traversal endless. With at most one
+ * parent per node, every node that no root reaches lies on or below a cycle. */
+int check_node_graph(Loader &L)
+{
+    const int n = (int)L.model.nodes.size();
+    L.parent.assign((size_t)n, -1);
+    for (int i = 0; i < n; ++i)
+        for (int child : L.model.nodes[(size_t)i].children) {
+            if (child < 0 || child >= n)
+                return L.fail("node %d: child %d does not exist (%d nodes)", i, child, n);
+            int &p = L.parent[(size_t)child];
+            if (p == i)
+                return L.fail("node %d lists child %d twice", i, child);
+            if (p >= 0)
+                return L.fail("node %d has two parents (nodes %d and %d); glTF node hierarchies must be trees",
+                              child, p, i);
+            p = i;
+        }
+    std::vector<char> reached((size_t)n, 0);
+    std::vector<int> stack;
+    for (int i = 0; i < n; ++i)
+        if (L.parent[(size_t)i] < 0)
+            stack.push_back(i);
+    while (!stack.empty()) {
+        int node = stack.back();
+        stack.pop_back();
+        reached[(size_t)node] = 1;
+        for (int child : L.model.nodes[(size_t)node].children)
+            stack.push_back(child);
+    }
+    for (int i = 0; i < n; ++i)
+        if (!reached[(size_t)i]) {
+            int on_cycle = i; /* n steps up from any unreached node land on the cycle */
+            for (int k = 0; k < n; ++k)
+                on_cycle = L.parent[(size_t)on_cycle];
+            return L.fail("node graph has a cycle (node %d is its own ancestor)", on_cycle);
+        }
+    return 0;
+}
+
+int node_local_matrix(Loader &L, int index, Mat4 *out)
+{
+    const tinygltf::Node &node = L.model.nodes[(size_t)index];
+    if (!node.matrix.empty()) {
+        if (node.matrix.size() != 16)
+            return L.fail("node %d: matrix has %zu numbers, expected 16", index, node.matrix.size());
+        std::copy(node.matrix.begin(), node.matrix.end(), out->m);
+    } else {
+        double t[3] = {0, 0, 0}, q[4] = {0, 0, 0, 1}, s[3] = {1, 1, 1};
+        if (!node.translation.empty() && node.translation.size() != 3)
+            return L.fail("node %d: translation has %zu numbers, expected 3", index, node.translation.size());
+        if (!node.rotation.empty() && node.rotation.size() != 4)
+            return L.fail("node %d: rotation has %zu numbers, expected 4", index, node.rotation.size());
+        if (!node.scale.empty() && node.scale.size() != 3)
+            return L.fail("node %d: scale has %zu numbers, expected 3", index, node.scale.size());
+        std::copy(node.translation.begin(), node.translation.end(), t);
+        std::copy(node.rotation.begin(), node.rotation.end(), q);
+        std::copy(node.scale.begin(), node.scale.end(), s);
+        /* The spec requires a unit quaternion; exporters round, so normalise. */
+        const double len = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+        if (!(len > 0.0) || !std::isfinite(len))
+            return L.fail("node %d: rotation quaternion has zero or non-finite length", index);
+        for (double &c : q)
+            c /= len;
+        *out = mat4_trs(t, q, s);
+    }
+    if (!mat4_is_finite(*out))
+        return L.fail("node %d: transform has non-finite values", index);
+    return 0;
+}
+
+/* ------------------------------------------------------------- accessors */
+
+/* A checked window onto an accessor's elements: element i starts at
+ * base + i * stride and all count elements lie inside the buffer. */
+struct AccessorView {
+    const unsigned char *base;
+    size_t stride, count;
+    int component_type;
+};
+
+int view_accessor(Loader &L, const std::string &what, const char *role, int index, AccessorView *v)
+{
+    const tinygltf::Model &m = L.model;
+    if (index < 0 || (size_t)index >= m.accessors.size())
+        return L.fail("%s: %s accessor %d does not exist", what.c_str(), role, index);
+    const tinygltf::Accessor &a = m.accessors[(size_t)index];
+    if (a.sparse.isSparse)
+        return L.fail("%s: %s accessor %d is sparse, which is not supported", what.c_str(), role, index);
+    const int components = tinygltf::GetNumComponentsInType((uint32_t)a.type);
+    const int component_size = tinygltf::GetComponentSizeInBytes((uint32_t)a.componentType);
+    if (components <= 0 || component_size <= 0)
+        return L.fail("%s: %s accessor %d has an unknown type", what.c_str(), role, index);
+    const size_t element_size = (size_t)components * (size_t)component_size;
+
+    v->count = a.count;
+    v->component_type = a.componentType;
+    v->stride = element_size;
+    /* Without a bufferView an accessor is all zeros, meaningful only with
+     * sparse data or an extension (Draco), neither of which is supported. */
+    if (a.bufferView < 0)
+        return L.fail("%s: %s accessor %d has no bufferView", what.c_str(), role, index);
+    if ((size_t)a.bufferView >= m.bufferViews.size())
+        return L.fail("%s: %s accessor %d: bufferView %d does not exist", what.c_str(), role, index, a.bufferView);
+    const tinygltf::BufferView &view = m.bufferViews[(size_t)a.bufferView];
+    if (view.buffer < 0 || (size_t)view.buffer >= m.buffers.size())
+        return L.fail("%s: %s accessor %d: bufferView %d: buffer %d does not exist", what.c_str(), role, index,
+                      a.bufferView, view.buffer);
+    const tinygltf::Buffer &buffer = m.buffers[(size_t)view.buffer];
+    if (!range_inside(view.byteOffset, view.byteLength, buffer.data.size()))
+        return L.fail("%s: bufferView %d (bytes %zu + %zu) exceeds buffer %d (%zu bytes)", what.c_str(),
+                      a.bufferView, view.byteOffset, view.byteLength, view.buffer, buffer.data.size());
+    if (view.byteStride != 0) {
+        if (view.byteStride < element_size)
+            return L.fail("%s: bufferView %d: byteStride %zu is smaller than a %s element (%zu bytes)", what.c_str(),
+                          a.bufferView, view.byteStride, role, element_size);
+        v->stride = view.byteStride;
+    }
+    /* The last element ends at byteOffset + (count - 1) * stride + element_size. */
+    const bool fits = a.count == 0 ||
+                      (range_inside(a.byteOffset, element_size, view.byteLength) &&
+                       (a.count - 1) <= (view.byteLength - a.byteOffset - element_size) / v->stride);
+    if (!fits)
+        return L.fail("%s: %s accessor %d (%zu elements from byte %zu, stride %zu) exceeds bufferView %d (%zu bytes)",
+                      what.c_str(), role, index, a.count, a.byteOffset, v->stride, a.bufferView, view.byteLength);
+    v->base = buffer.data.data() + view.byteOffset + a.byteOffset;
+    return 0;
+}
+
+/* Checks the accessor's type and component type against what the role allows. */
+int expect_type(Loader &L, const std::string &what, const char *role, int index, int type, bool float_only)
+{
+    const tinygltf::Accessor &a = L.model.accessors[(size_t)index];
+    const bool ok_component = a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
+                              (!float_only && a.normalized &&
+                               (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT));
+    if (a.type != type || !ok_component)
+        return L.fail("%s: %s accessor %d is %s %s; expected %s %s", what.c_str(), role, index,
+                      component_type_name(a.componentType), type_name(a.type),
+                      float_only ? "float" : "float or normalized unsigned byte/short", type_name(type));
+    return 0;
+}
+
+/* Component k of element i as float; normalized integers map to [0, 1]. */
+float read_component(const AccessorView &v, size_t i, int k)
+{
+    const unsigned char *p = v.base + i * v.stride;
+    switch (v.component_type) {
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return p[k] / 255.0f;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        uint16_t u;
+        std::memcpy(&u, p + 2 * k, 2);
+        return u / 65535.0f;
+    }
+    default: {
+        float f;
+        std::memcpy(&f, p + 4 * k, 4);
+        return f;
+    }
+    }
+}
+
+uint32_t read_index(const AccessorView &v, size_t i)
+{
+    const unsigned char *p = v.base + i * v.stride;
+    switch (v.component_type) {
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return p[0];
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        uint16_t u;
+        std::memcpy(&u, p, 2);
+        return u;
+    }
+    default: {
+        uint32_t u;
+        std::memcpy(&u, p, 4);
+        return u;
+    }
+    }
+}
+
+/* One triangle primitive in its mesh's local space. */
+struct Primitive {
+    std::vector<float> positions, normals, texcoords;
+    std::vector<uint32_t> indices;
+};
+
+int read_float_attribute(Loader &L, const std::string &what, const char *role, int index, int type,
+                         bool float_only, size_t expected_count, std::vector<float> &out)
+{
+    AccessorView v;
+    if (view_accessor(L, what, role, index, &v) != 0 || expect_type(L, what, role, index, type, float_only) != 0)
+        return -1;
+    if (v.count != expected_count)
+        return L.fail("%s: %s has %zu elements but POSITION has %zu", what.c_str(), role, v.count, expected_count);
+    const int n = tinygltf::GetNumComponentsInType((uint32_t)type);
+    out.resize(v.count * (size_t)n);
+    for (size_t i = 0; i < v.count; ++i)
+        for (int k = 0; k < n; ++k) {
+            const float value = read_component(v, i, k);
+            if (!std::isfinite(value))
+                return L.fail("%s: %s %zu is not finite", what.c_str(), role, i);
+            out[i * (size_t)n + (size_t)k] = value;
+        }
+    return 0;
+}
+
+int read_indices(Loader &L, const std::string &what, const tinygltf::Primitive &prim, size_t vertex_count,
+                 std::vector<uint32_t> &out)
+{
+    if (prim.indices < 0) { /* non-indexed: vertices 0, 1, 2, ... */
+        if (vertex_count % 3 != 0)
+            return L.fail("%s: %zu vertices without indices is not a whole number of triangles", what.c_str(),
+                          vertex_count);
+        out.resize(vertex_count);
+        for (size_t i = 0; i < vertex_count; ++i)
+            out[i] = (uint32_t)i;
+        return 0;
+    }
+    AccessorView v;
+    if (view_accessor(L, what, "indices", prim.indices, &v) != 0)
+        return -1;
+    const tinygltf::Accessor &a = L.model.accessors[(size_t)prim.indices];
+    if (a.type != TINYGLTF_TYPE_SCALAR || (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+                                           a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+                                           a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+        return L.fail("%s: indices accessor %d is %s %s; expected unsigned byte/short/int SCALAR", what.c_str(),
+                      prim.indices, component_type_name(a.componentType), type_name(a.type));
+    if (v.count % 3 != 0)
+        return L.fail("%s: %zu indices is not a whole number of triangles", what.c_str(), v.count);
+    out.resize(v.count);
+    for (size_t i = 0; i < v.count; ++i) {
+        out[i] = read_index(v, i);
+        if (out[i] >= vertex_count)
+            return L.fail("%s: index %u (entry %zu) is out of range (%zu vertices)", what.c_str(), out[i], i,
+                          vertex_count);
+    }
+    return 0;
+}
+
+int attribute(const tinygltf::Primitive &prim, const char *name)
+{
+    auto it = prim.attributes.find(name);
+    return it == prim.attributes.end() ? -1 : it->second;
+}
+
+int read_primitive(Loader &L, const std::string &what, const tinygltf::Primitive &prim, Primitive &out)
+{
+    const int position = attribute(prim, "POSITION");
+    if (position < 0)
+        return L.fail("%s: no POSITION attribute", what.c_str());
+    AccessorView v;
+    if (view_accessor(L, what, "POSITION", position, &v) != 0)
+        return -1;
+    const size_t vertex_count = v.count;
+    if (vertex_count > UINT32_MAX / 3)
+        return L.fail("%s: too many vertices (%zu)", what.c_str(), vertex_count);
+    if (read_float_attribute(L, what, "POSITION", position, TINYGLTF_TYPE_VEC3, true, vertex_count, out.positions))
+        return -1;
+    const int normal = attribute(prim, "NORMAL");
+    if (normal >= 0 &&
+        read_float_attribute(L, what, "NORMAL", normal, TINYGLTF_TYPE_VEC3, true, vertex_count, out.normals))
+        return -1;
+    const int texcoord = attribute(prim, "TEXCOORD_0");
+    if (texcoord >= 0 &&
+        read_float_attribute(L, what, "TEXCOORD_0", texcoord, TINYGLTF_TYPE_VEC2, false, vertex_count, out.texcoords))
+        return -1;
+    return read_indices(L, what, prim, vertex_count, out.indices);
+}
+
+/* Counts normals that cannot be used at all (zero or degenerate after the
+ * transform); those make the whole primitive's normals be recomputed. */
+size_t transform_normals(const Mat4 &world, const std::vector<float> &in, scene_mesh *m)
+{
+    double cof[9];
+    mat4_cofactor3(world, cof);
+    const double sign = mat4_det3(world) < 0.0 ? -1.0 : 1.0;
+    size_t bad = 0;
+    for (uint32_t i = 0; i < m->vertex_count; ++i) {
+        const float *n = &in[3 * (size_t)i];
+        double r[3];
+        for (int row = 0; row < 3; ++row)
+            r[row] = sign * (cof[row] * n[0] + cof[3 + row] * n[1] + cof[6 + row] * n[2]);
+        const double len = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+        if (!(len > 0.0) || !std::isfinite(len)) {
+            ++bad;
+            continue;
+        }
+        v3_store(&m->normals[3 * (size_t)i], v3((float)(r[0] / len), (float)(r[1] / len), (float)(r[2] / len)));
+    }
+    return bad;
+}
+
+int add_world_mesh(Loader &L, const std::string &what, const Primitive &p, const Mat4 &world, int material)
+{
+    const uint32_t vertex_count = (uint32_t)(p.positions.size() / 3);
+    const uint32_t triangle_count = (uint32_t)(p.indices.size() / 3);
+    scene_mesh *m = scene_add_mesh(L.s, vertex_count, triangle_count, !p.texcoords.empty());
+    if (!m)
+        return L.fail("out of memory");
+    m->material = material;
+    for (uint32_t i = 0; i < vertex_count; ++i)
+        v3_store(&m->positions[3 * (size_t)i], mat4_point(world, &p.positions[3 * (size_t)i]));
+    if (!p.texcoords.empty())
+        std::copy(p.texcoords.begin(), p.texcoords.end(), m->texcoords);
+    /* A mirroring transform (det < 0) turns counter-clockwise triangles
+     * clockwise; swapping two corners keeps the geometric normal on the side
+     * of the transformed shading normals. */
+    const bool mirrored = mat4_det3(world) < 0.0;
+    for (uint32_t t = 0; t < triangle_count; ++t) {
+        const uint32_t *src = &p.indices[3 * (size_t)t];
+        uint32_t *dst = &m->indices[3 * (size_t)t];
+        dst[0] = src[0];
+        dst[1] = mirrored ? src[2] : src[1];
+        dst[2] = mirrored ? src[1] : src[2];
+    }
+    if (p.normals.empty()) {
+        scene_mesh_compute_normals(m);
+    } else if (mat4_det3(world) == 0.0) {
+        gt_warn(L.path, "%s: its node transform is singular (flattens the mesh); normals recomputed", what.c_str());
+        scene_mesh_compute_normals(m);
+    } else {
+        const size_t bad = transform_normals(world, p.normals, m);
+        if (bad > 0) {
+            gt_warn(L.path, "%s: %zu of %u normals are zero or not finite; normals recomputed from the triangles",
+                    what.c_str(), bad, vertex_count);
+            scene_mesh_compute_normals(m);
+        }
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------- materials/images */
+
+int add_texture_from_image(Loader &L, const tinygltf::Image &image, int *out)
+{
+    const size_t texels = (size_t)image.width * (size_t)image.height;
+    const size_t bytes_per_channel = image.bits == 16 ? 2 : 1;
+    if (image.component != 4 || image.image.size() != texels * 4 * bytes_per_channel)
+        return L.fail("image decoded to an unexpected layout (%d channels, %d bits)", image.component, image.bits);
+    unsigned char *rgba = (unsigned char *)std::malloc(texels * 4 + 1);
+    if (!rgba)
+        return L.fail("out of memory");
+    scene_texture *grown =
+        (scene_texture *)std::realloc(L.s->textures, sizeof *grown * (size_t)(L.s->texture_count + 1));
+    if (!grown) {
+        std::free(rgba);
+        return L.fail("out of memory");
+    }
+    L.s->textures = grown;
+    for (size_t i = 0; i < texels * 4; ++i) {
+        if (bytes_per_channel == 2) { /* 16-bit PNG: round to the nearest 8-bit level */
+            uint16_t u;
+            std::memcpy(&u, &image.image[2 * i], 2);
+            rgba[i] = (unsigned char)((u + 128u) / 257u);
+        } else {
+            rgba[i] = image.image[i];
+        }
+    }
+    scene_texture *t = &L.s->textures[L.s->texture_count];
+    t->width = image.width;
+    t->height = image.height;
+    t->rgba = rgba;
+    *out = L.s->texture_count++;
+    return 0;
+}
+
+/* Resolves a material's texture reference to a scene texture, or -1 when the
+ * material must render with its factor alone (warned). Broken indices are
+ * errors. */
+int convert_texture(Loader &L, int material, const char *slot, const tinygltf::TextureInfo &info, int *out)
+{
+    *out = -1;
+    if (info.index < 0)
+        return 0;
+    const tinygltf::Model &m = L.model;
+    if ((size_t)info.index >= m.textures.size())
+        return L.fail("material %d: %s: texture %d does not exist", material, slot, info.index);
+    const int source = m.textures[(size_t)info.index].source;
+    if (source < 0) {
+        gt_warn(L.path, "material %d: %s: texture %d has no image gtlab can read; using the factor alone", material,
+                slot, info.index);
+        return 0;
+    }
+    if ((size_t)source >= m.images.size())
+        return L.fail("material %d: %s: texture %d: image %d does not exist", material, slot, info.index, source);
+    if (info.texCoord != 0) {
+        gt_warn(L.path, "material %d: %s uses TEXCOORD_%d (only TEXCOORD_0 is supported); using the factor alone",
+                material, slot, info.texCoord);
+        return 0;
+    }
+    const tinygltf::Image &image = m.images[(size_t)source];
+    if (image.image.empty()) {
+        auto why = L.image_problem.find(source);
+        const std::string name =
+            printable(!image.uri.empty() ? image.uri : !image.name.empty() ? image.name : "embedded");
+        gt_warn(L.path, "material %d: %s: image %d (%s) %s; using the factor alone", material, slot, source,
+                name.c_str(), why != L.image_problem.end() ? why->second.c_str() : "could not be read");
+        return 0;
+    }
+    int &cached = L.image_texture[(size_t)source];
+    if (cached < 0 && add_texture_from_image(L, image, &cached) != 0)
+        return -1;
+    *out = cached;
+    return 0;
+}
+
+/* glTF materials become scene materials with the same indices. */
+int convert_materials(Loader &L)
+{
+    L.image_texture.assign(L.model.images.size(), -1);
+    for (size_t i = 0; i < L.model.materials.size(); ++i) {
+        const tinygltf::PbrMetallicRoughness &pbr = L.model.materials[i].pbrMetallicRoughness;
+        scene_material sm = scene_default_material();
+        bool finite = std::isfinite(pbr.metallicFactor) && std::isfinite(pbr.roughnessFactor);
+        for (int k = 0; k < 4; ++k) {
+            sm.base_color[k] = (float)pbr.baseColorFactor[(size_t)k];
+            finite = finite && std::isfinite(pbr.baseColorFactor[(size_t)k]);
+        }
+        if (!finite)
+            return L.fail("material %zu has non-finite factors", i);
+        sm.metallic = (float)pbr.metallicFactor;
+        sm.roughness = (float)pbr.roughnessFactor;
+        if (convert_texture(L, (int)i, "baseColorTexture", pbr.baseColorTexture, &sm.base_color_texture) != 0 ||
+            convert_texture(L, (int)i, "metallicRoughnessTexture", pbr.metallicRoughnessTexture,
+                            &sm.metallic_roughness_texture) != 0)
+            return -1;
+        if (scene_add_material(L.s, sm) < 0)
+            return L.fail("out of memory");
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------- traversal */
+
+int add_node_meshes(Loader &L, int node_index, const Mat4 &world)
+{
+    const tinygltf::Node &node = L.model.nodes[(size_t)node_index];
+    if (node.mesh < 0)
+        return 0;
+    if ((size_t)node.mesh >= L.model.meshes.size())
+        return L.fail("node %d: mesh %d does not exist", node_index, node.mesh);
+    const tinygltf::Mesh &mesh = L.model.meshes[(size_t)node.mesh];
+    for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+        const tinygltf::Primitive &prim = mesh.primitives[p];
+        const std::string what = "mesh " + std::to_string(node.mesh) +
+                                 (mesh.name.empty() ? "" : " (" + printable(mesh.name) + ")") + " primitive " +
+                                 std::to_string(p);
+        if (prim.mode != TINYGLTF_MODE_TRIANGLES) {
+            if (!L.warned_mode[(size_t)node.mesh])
+                gt_warn(L.path, "%s: mode %d (%s) is not triangles; skipped", what.c_str(), prim.mode,
+                        mode_name(prim.mode));
+            L.warned_mode[(size_t)node.mesh] = true;
+            continue;
+        }
+        if (prim.material < -1 || prim.material >= (int)L.model.materials.size())
+            return L.fail("%s: material %d does not exist", what.c_str(), prim.material);
+        Primitive data;
+        if (read_primitive(L, what, prim, data) != 0 || add_world_mesh(L, what, data, world, prim.material) != 0)
+            return -1;
+    }
+    return 0;
+}
+
+/* The camera at a node looks down the node's local -Z with local +Y up
+ * (glTF 2.0 "Cameras"). */
+int set_camera(Loader &L, int node_index, const Mat4 &world)
+{
+    const int index = L.model.nodes[(size_t)node_index].camera;
+    if ((size_t)index >= L.model.cameras.size())
+        return L.fail("node %d: camera %d does not exist", node_index, index);
+    const tinygltf::Camera &c = L.model.cameras[(size_t)index];
+    if (c.type != "perspective") {
+        if (!L.warned_orthographic)
+            gt_warn(L.path, "camera %d is %s; only perspective cameras are used", index, printable(c.type).c_str());
+        L.warned_orthographic = true;
+        return 0;
+    }
+    const double yfov = c.perspective.yfov, aspect = c.perspective.aspectRatio;
+    if (!((float)yfov > 0.0f && yfov < M_PI))
+        return L.fail("camera %d: yfov %g is not in (0, pi)", index, yfov);
+    if (aspect != 0.0 && !(aspect > 0.0 && std::isfinite(aspect)))
+        return L.fail("camera %d: aspectRatio %g is not positive", index, aspect);
+    const float origin[3] = {0, 0, 0};
+    vec3 position = mat4_point(world, origin);
+    vec3 forward = mat4_direction(world, 0, 0, -1), up = mat4_direction(world, 0, 1, 0);
+    if (!(v3_length(forward) > 0.0f) || !(v3_length(up) > 0.0f) || !v3_is_finite(position))
+        return L.fail("node %d: camera transform is degenerate", node_index);
+    camera *cam = &L.s->camera;
+    cam->position = position;
+    cam->target = v3_add(position, v3_normalize(forward));
+    cam->up = v3_normalize(up);
+    cam->yfov = (float)yfov;
+    cam->width = 512;
+    cam->height = aspect > 0.0 ? (int)std::min(65536.0, std::max(1.0, std::round(512.0 / aspect))) : 512;
+    L.s->has_camera = 1;
+    return 0;
+}
+
+int scene_roots(Loader &L, std::vector<int> &roots)
+{
+    const tinygltf::Model &m = L.model;
+    if (m.scenes.empty()) { /* no scenes: every root node */
+        for (size_t i = 0; i < m.nodes.size(); ++i)
+            if (L.parent[i] < 0)
+                roots.push_back((int)i);
+        return 0;
+    }
+    const int chosen = m.defaultScene >= 0 ? m.defaultScene : 0;
+    if (m.defaultScene < -1 || (size_t)chosen >= m.scenes.size())
+        return L.fail("default scene %d does not exist (%zu scenes)", m.defaultScene, m.scenes.size());
+    std::vector<char> listed(m.nodes.size(), 0);
+    for (int node : m.scenes[(size_t)chosen].nodes) {
+        if (node < 0 || (size_t)node >= m.nodes.size())
+            return L.fail("scene %d: node %d does not exist", chosen, node);
+        if (L.parent[(size_t)node] >= 0)
+            return L.fail("scene %d lists node %d as a root, but it is a child of node %d", chosen, node,
+                          L.parent[(size_t)node]);
+        if (listed[(size_t)node])
+            return L.fail("scene %d lists node %d twice", chosen, node);
+        listed[(size_t)node] = 1;
+        roots.push_back(node);
+    }
+    return 0;
+}
+
+/* Depth-first, parents before children, in file order: the first perspective
+ * camera met is the scene camera. Iterative, so that a deep hierarchy cannot
+ * overflow the stack; check_node_graph guarantees termination. */
+int flatten(Loader &L)
+{
+    std::vector<int> roots;
+    if (scene_roots(L, roots) != 0)
+        return -1;
+    L.warned_mode.assign(L.model.meshes.size(), false);
+    std::vector<Mat4> world(L.model.nodes.size());
+    std::vector<int> stack(roots.rbegin(), roots.rend());
+    while (!stack.empty()) {
+        const int index = stack.back();
+        stack.pop_back();
+        Mat4 local;
+        if (node_local_matrix(L, index, &local) != 0)
+            return -1;
+        const int parent = L.parent[(size_t)index];
+        world[(size_t)index] = parent >= 0 ? mat4_mul(world[(size_t)parent], local) : local;
+        if (!mat4_is_finite(world[(size_t)index]))
+            return L.fail("node %d: world transform overflows", index);
+        const tinygltf::Node &node = L.model.nodes[(size_t)index];
+        if (add_node_meshes(L, index, world[(size_t)index]) != 0)
+            return -1;
+        if (node.camera >= 0 && !L.s->has_camera && set_camera(L, index, world[(size_t)index]) != 0)
+            return -1;
+        stack.insert(stack.end(), node.children.rbegin(), node.children.rend());
+    }
+    return 0;
+}
+
+int load(Loader &L)
+{
+    if (parse_file(L) != 0 || check_node_graph(L) != 0 || convert_materials(L) != 0 || flatten(L) != 0)
+        return -1;
+    return scene_validate(L.s, L.path, L.e);
+}
+
+/* ======================================================================
+ * Writing
+ * ====================================================================== */
+
+/* Appends raw bytes as a new bufferView of the single buffer, 4-byte aligned
+ * (glTF 2.0 "Data Alignment": accessor data aligned to its component size). */
+int add_buffer_view(tinygltf::Model &model, const void *data, size_t size, int target)
+{
+    std::vector<unsigned char> &buffer = model.buffers[0].data;
+    buffer.resize((buffer.size() + 3) & ~(size_t)3, 0);
+    tinygltf::BufferView view;
+    view.buffer = 0;
+    view.byteOffset = buffer.size();
+    view.byteLength = size;
+    view.target = target;
+    const unsigned char *bytes = static_cast<const unsigned char *>(data);
+    buffer.insert(buffer.end(), bytes, bytes + size);
+    model.bufferViews.push_back(view);
+    return (int)model.bufferViews.size() - 1;
+}
+
+int add_accessor(tinygltf::Model &model, const void *data, size_t count, int type, int component_type, int target)
+{
+    const size_t size = count * (size_t)tinygltf::GetNumComponentsInType((uint32_t)type) *
+                        (size_t)tinygltf::GetComponentSizeInBytes((uint32_t)component_type);
+    tinygltf::Accessor a;
+    a.bufferView = add_buffer_view(model, data, size, target);
+    a.byteOffset = 0;
+    a.componentType = component_type;
+    a.count = count;
+    a.type = type;
+    model.accessors.push_back(a);
+    return (int)model.accessors.size() - 1;
+}
+
+void write_mesh(tinygltf::Model &model, const scene_mesh *m)
+{
+    tinygltf::Primitive prim;
+    prim.mode = TINYGLTF_MODE_TRIANGLES;
+    prim.material = m->material;
+    const int position = add_accessor(model, m->positions, m->vertex_count, TINYGLTF_TYPE_VEC3,
+                                      TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TARGET_ARRAY_BUFFER);
+    /* POSITION must carry its bounds (glTF 2.0 "Meshes"). */
+    tinygltf::Accessor &pa = model.accessors[(size_t)position];
+    pa.minValues.assign(3, INFINITY);
+    pa.maxValues.assign(3, -INFINITY);
+    for (uint32_t v = 0; v < m->vertex_count; ++v)
+        for (int k = 0; k < 3; ++k) {
+            pa.minValues[(size_t)k] = std::min(pa.minValues[(size_t)k], (double)m->positions[3 * v + (uint32_t)k]);
+            pa.maxValues[(size_t)k] = std::max(pa.maxValues[(size_t)k], (double)m->positions[3 * v + (uint32_t)k]);
+        }
+    prim.attributes["POSITION"] = position;
+    prim.attributes["NORMAL"] = add_accessor(model, m->normals, m->vertex_count, TINYGLTF_TYPE_VEC3,
+                                             TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TARGET_ARRAY_BUFFER);
+    if (m->texcoords)
+        prim.attributes["TEXCOORD_0"] = add_accessor(model, m->texcoords, m->vertex_count, TINYGLTF_TYPE_VEC2,
+                                                     TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TARGET_ARRAY_BUFFER);
+    prim.indices = add_accessor(model, m->indices, 3 * (size_t)m->triangle_count, TINYGLTF_TYPE_SCALAR,
+                                TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+    tinygltf::Mesh mesh;
+    mesh.primitives.push_back(prim);
+    model.meshes.push_back(mesh);
+}
+
+void write_material(tinygltf::Model &model, const scene_material &sm)
+{
+    tinygltf::Material mat;
+    tinygltf::PbrMetallicRoughness &pbr = mat.pbrMetallicRoughness;
+    pbr.baseColorFactor.assign(sm.base_color, sm.base_color + 4);
+    pbr.metallicFactor = sm.metallic;
+    pbr.roughnessFactor = sm.roughness;
+    pbr.baseColorTexture.index = sm.base_color_texture;
+    pbr.metallicRoughnessTexture.index = sm.metallic_roughness_texture;
+    mat.doubleSided = true; /* gtlab's surfaces are two-sided (DESIGN.md) */
+    model.materials.push_back(mat);
+}
+
+/* Texture i becomes image i, raw RGBA that tinygltf's writer encodes to PNG
+ * (stb_image_write) and embeds as a data: URI because of the mime type. */
+void write_texture(tinygltf::Model &model, const scene_texture &t)
+{
+    tinygltf::Image image;
+    image.width = t.width;
+    image.height = t.height;
+    image.component = 4;
+    image.bits = 8;
+    image.pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    image.mimeType = "image/png";
+    image.image.assign(t.rgba, t.rgba + 4 * (size_t)t.width * (size_t)t.height);
+    model.images.push_back(image);
+    tinygltf::Texture texture;
+    texture.source = (int)model.images.size() - 1;
+    model.textures.push_back(texture);
+}
+
+/* Rotation quaternion (x, y, z, w) of the orthonormal basis with columns
+ * (right, up, back): Shepperd's method, choosing the largest diagonal term
+ * for accuracy (Shepperd 1978, J. Guidance and Control 1(3)). */
+void quaternion_from_basis(vec3 x_axis, vec3 y_axis, vec3 z_axis, double q[4])
+{
+    const double m00 = x_axis.x, m10 = x_axis.y, m20 = x_axis.z;
+    const double m01 = y_axis.x, m11 = y_axis.y, m21 = y_axis.z;
+    const double m02 = z_axis.x, m12 = z_axis.y, m22 = z_axis.z;
+    const double trace = m00 + m11 + m22;
+    if (trace > 0.0) {
+        const double s = 2.0 * std::sqrt(trace + 1.0);
+        q[0] = (m21 - m12) / s, q[1] = (m02 - m20) / s, q[2] = (m10 - m01) / s, q[3] = 0.25 * s;
+    } else if (m00 > m11 && m00 > m22) {
+        const double s = 2.0 * std::sqrt(1.0 + m00 - m11 - m22);
+        q[0] = 0.25 * s, q[1] = (m01 + m10) / s, q[2] = (m02 + m20) / s, q[3] = (m21 - m12) / s;
+    } else if (m11 > m22) {
+        const double s = 2.0 * std::sqrt(1.0 + m11 - m00 - m22);
+        q[0] = (m01 + m10) / s, q[1] = 0.25 * s, q[2] = (m12 + m21) / s, q[3] = (m02 - m20) / s;
+    } else {
+        const double s = 2.0 * std::sqrt(1.0 + m22 - m00 - m11);
+        q[0] = (m02 + m20) / s, q[1] = (m12 + m21) / s, q[2] = 0.25 * s, q[3] = (m10 - m01) / s;
+    }
+}
+
+/* The camera node: translation = position, rotation taking local -Z to the
+ * view direction and local +Y to the (orthogonalised) up vector. */
+int write_camera(tinygltf::Model &model, const scene *s, const char *path, gt_error *e, int *node_out)
+{
+    const camera &c = s->camera;
+    const vec3 view = v3_sub(c.target, c.position);
+    const vec3 side = v3_cross(view, c.up);
+    if (!v3_is_finite(c.position) || !v3_is_finite(c.target) || !(v3_length(view) > 0.0f) ||
+        !(v3_length(side) > 0.0f) || !(c.yfov > 0.0f && c.yfov < (float)M_PI) || c.width <= 0 || c.height <= 0)
+        return gt_error_set(e, path, "the scene camera is degenerate; cannot write it");
+    const vec3 forward = v3_normalize(view), right = v3_normalize(side);
+    const vec3 up = v3_cross(right, forward);
+    double q[4];
+    quaternion_from_basis(right, up, v3_neg(forward), q);
+
+    /* Near and far planes are required by glTF but unused by a path tracer:
+     * place them relative to the scene's extent around the camera. */
+    vec3 lo, hi;
+    scene_bounds(s, &lo, &hi);
+    const vec3 centre = v3_scale(v3_add(lo, hi), 0.5f);
+    const double extent = std::max(1e-6, (double)v3_length(v3_sub(hi, lo)) + v3_length(v3_sub(centre, c.position)));
+
+    tinygltf::Camera cam;
+    cam.type = "perspective";
+    cam.perspective.yfov = c.yfov;
+    cam.perspective.aspectRatio = (double)c.width / (double)c.height;
+    cam.perspective.znear = 1e-4 * extent;
+    cam.perspective.zfar = 1e3 * extent;
+    model.cameras.push_back(cam);
+
+    tinygltf::Node node;
+    node.name = "camera";
+    node.camera = (int)model.cameras.size() - 1;
+    node.translation = {c.position.x, c.position.y, c.position.z};
+    node.rotation.assign(q, q + 4);
+    model.nodes.push_back(node);
+    *node_out = (int)model.nodes.size() - 1;
+    return 0;
+}
+
+int check_writable_scene(const scene *s, const char *path, gt_error *e)
+{
+    for (int i = 0; i < s->mesh_count; ++i)
+        if (s->meshes[i].material < -1 || s->meshes[i].material >= s->material_count)
+            return gt_error_set(e, path, "mesh %d: material %d does not exist", i, s->meshes[i].material);
+    for (int i = 0; i < s->material_count; ++i) {
+        const scene_material &m = s->materials[i];
+        if (m.base_color_texture < -1 || m.base_color_texture >= s->texture_count ||
+            m.metallic_roughness_texture < -1 || m.metallic_roughness_texture >= s->texture_count)
+            return gt_error_set(e, path, "material %d refers to a texture that does not exist", i);
+    }
+    for (int i = 0; i < s->texture_count; ++i)
+        if (s->textures[i].width <= 0 || s->textures[i].height <= 0 || !s->textures[i].rgba)
+            return gt_error_set(e, path, "texture %d is empty", i);
+    return 0;
+}
+
+int build_model(const scene *s, const char *path, gt_error *e, tinygltf::Model &model)
+{
+    if (check_writable_scene(s, path, e) != 0)
+        return -1;
+    model.asset.version = "2.0";
+    model.asset.generator = "gtlab";
+    model.buffers.resize(1);
+    tinygltf::Scene root;
+    for (int i = 0; i < s->mesh_count; ++i) {
+        const scene_mesh *m = &s->meshes[i];
+        if (m->vertex_count == 0 || m->triangle_count == 0) /* glTF accessors must not be empty */
+            continue;
+        write_mesh(model, m);
+        tinygltf::Node node;
+        node.mesh = (int)model.meshes.size() - 1;
+        model.nodes.push_back(node);
+        root.nodes.push_back((int)model.nodes.size() - 1);
+    }
+    for (int i = 0; i < s->material_count; ++i)
+        write_material(model, s->materials[i]);
+    for (int i = 0; i < s->texture_count; ++i)
+        write_texture(model, s->textures[i]);
+    if (s->has_camera) {
+        int node;
+        if (write_camera(model, s, path, e, &node) != 0)
+            return -1;
+        root.nodes.push_back(node);
+    }
+    model.scenes.push_back(root);
+    model.defaultScene = 0;
+    if (model.buffers[0].data.size() > UINT32_MAX - 1024)
+        return gt_error_set(e, path, "scene too large for a .glb (4 GiB limit)");
+    return 0;
+}
+
+int write_atomically(const char *path, const std::string &bytes, gt_error *e)
+{
+    atomic_file f;
+    if (atomic_file_begin(&f, path, e) != 0)
+        return -1;
+    FILE *out = std::fopen(f.temp_path, "wb");
+    if (!out) {
+        atomic_file_abort(&f);
+        return gt_error_set(e, path, "cannot write: %s", std::strerror(errno));
+    }
+    bool ok = std::fwrite(bytes.data(), 1, bytes.size(), out) == bytes.size();
+    ok = std::fclose(out) == 0 && ok;
+    if (!ok) {
+        atomic_file_abort(&f);
+        return gt_error_set(e, path, "write failed (disk full?)");
+    }
+    return atomic_file_commit(&f, e);
+}
+
+} // namespace
+
+extern "C" int gltf_load(const char *path, scene *s, gt_error *e)
+{
+    std::memset(s, 0, sizeof *s);
+    int rc;
+    try {
+        Loader L;
+        L.path = path;
+        L.e = e;
+        L.s = s;
+        const char *slash = std::strrchr(path, '/');
+        std::snprintf(s->name, sizeof s->name, "%s", slash ? slash + 1 : path);
+        rc = load(L);
+    } catch (const std::bad_alloc &) {
+        rc = gt_error_set(e, path, "out of memory");
+    } catch (const std::exception &x) { /* tinygltf throws on some malformed input */
+        rc = gt_error_set(e, path, "cannot load glTF: malformed data (%s)", x.what());
+    }
+    if (rc != 0)
+        scene_free(s);
+    return rc;
+}
+
+extern "C" int gltf_write_glb(const char *path, const scene *s, gt_error *e)
+{
+    try {
+        tinygltf::Model model;
+        if (build_model(s, path, e, model) != 0)
+            return -1;
+        std::ostringstream out;
+        tinygltf::TinyGLTF gltf;
+        if (!gltf.WriteGltfSceneToStream(&model, out, false, true))
+            return gt_error_set(e, path, "tinygltf could not serialise the scene");
+        return write_atomically(path, out.str(), e);
+    } catch (const std::bad_alloc &) {
+        return gt_error_set(e, path, "out of memory");
+    } catch (const std::exception &x) {
+        return gt_error_set(e, path, "cannot write glTF: %s", x.what());
+    }
+}

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "raytracer/reference_render.h"
+#include "core/hemisphere_sampling.h"
 #include "tests/check.h"
 
 static image render(const char *spec, const camera *cam_override, int size, int spp, float max_distance,
@@ -83,23 +84,36 @@ static void test_plane(void)
     image_free(&img);
 }
 
-/* Counts pixels whose estimate is more than 4 standard errors from `expected`. */
+/* Counts pixels whose estimate is more than 4 standard errors from `expected`.
+ * The estimators here average 0/1 visibilities, so under the hypothesis that
+ * the mean is p their standard error is sqrt(p (1 - p) / n); a pixel whose n
+ * samples happen to agree has a sample standard error of 0 but not an exact
+ * mean, so the larger of the two is used. */
 typedef struct {
     int compared, outliers;
     double worst_z;
+    double sum_error, sum_variance; /* for the aggregate test below */
 } z_summary;
 
-static void z_add(z_summary *z, double estimate, double stderr_, double expected)
+static void z_add(z_summary *z, double estimate, double stderr_, double expected, double n)
 {
-    double dz = fabs(estimate - expected) / fmax(stderr_, 1e-7);
+    double null_stderr = sqrt(fmax(expected * (1.0 - expected), 0.0) / n);
+    double dz = fabs(estimate - expected) / fmax(fmax(stderr_, null_stderr), 1e-12);
     z->compared++;
     z->outliers += dz > 4.0;
     z->worst_z = fmax(z->worst_z, dz);
+    z->sum_error += estimate - expected;
+    z->sum_variance += fmax(stderr_ * stderr_, null_stderr * null_stderr);
 }
+
+/* Pixels have independent seeds, so their errors add in quadrature: the mean
+ * error over all pixels must be within 4 of its standard errors. This sees a
+ * bias far below what one pixel can. */
+static double aggregate_z(const z_summary *z) { return fabs(z->sum_error) / sqrt(fmax(z->sum_variance, 1e-300)); }
 
 static void test_sphere_on_plane(void)
 {
-    image img = render("builtin:sphere-on-plane", NULL, 48, 256, INFINITY, NULL);
+    image img = render("builtin:sphere-on-plane", NULL, 48, 1024, INFINITY, NULL);
     const float *mask = image_channel_data(&img, "mask.A");
     const float *px = image_channel_data(&img, "P.X"), *py = image_channel_data(&img, "P.Y");
     const float *pz = image_channel_data(&img, "P.Z");
@@ -113,14 +127,18 @@ static void test_sphere_on_plane(void)
         double dx = 0.0 - px[i], dy = 1.5 - py[i], dz = 0.0 - pz[i];
         double d2 = dx * dx + dy * dy + dz * dz, d = sqrt(d2);
         double cos_theta = dy / d;
-        z_add(&cosine, v[i], ve[i], 1.0 - cos_theta / d2);
-        z_add(&uniform, vu[i], vue[i], sqrt(1.0 - 1.0 / d2));
+        z_add(&cosine, v[i], ve[i], 1.0 - cos_theta / d2, 1024);
+        z_add(&uniform, vu[i], vue[i], sqrt(1.0 - 1.0 / d2), 1024);
         min_v = fmin(min_v, v[i]);
     }
     CHECK_MSG(cosine.compared > 500, "only %d floor pixels", cosine.compared);
     CHECK_MSG(min_v < 0.7, "the view does not include strongly occluded floor (min AO %g)", min_v);
     CHECK_MSG(cosine.outliers == 0, "cosine AO: %d of %d floor pixels beyond 4 stderr (worst %.2f)", cosine.outliers,
               cosine.compared, cosine.worst_z);
+    CHECK_MSG(aggregate_z(&cosine) < 4.0, "cosine AO: mean error %.2e is %.2f standard errors",
+              cosine.sum_error / cosine.compared, aggregate_z(&cosine));
+    CHECK_MSG(aggregate_z(&uniform) < 4.0, "uniform AO: mean error %.2e is %.2f standard errors",
+              uniform.sum_error / uniform.compared, aggregate_z(&uniform));
     CHECK_MSG(uniform.outliers == 0, "uniform AO: %d of %d floor pixels beyond 4 stderr (worst %.2f)",
               uniform.outliers, uniform.compared, uniform.worst_z);
     image_free(&img);
@@ -173,7 +191,7 @@ static void test_corner(void)
         {{0, 0, 0}, {0, 10, 0}, {0, 10, 10}, {0, 0, 10}},   /* wall x = 0 */
         {{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0}}};  /* wall z = 0 */
     static const double normals[3][3] = {{0, 1, 0}, {1, 0, 0}, {0, 0, 1}};
-    image img = render("builtin:corner", NULL, 48, 256, INFINITY, NULL);
+    image img = render("builtin:corner", NULL, 48, 1024, INFINITY, NULL);
     const float *mask = image_channel_data(&img, "mask.A");
     const char *pn[3] = {"P.X", "P.Y", "P.Z"};
     const float *P[3];
@@ -201,11 +219,13 @@ static void test_corner(void)
         for (int f = 0; f < 3; ++f)
             if (f != face)
                 expected -= polygon_view_factor(p, normals[face], faces[f]);
-        z_add(&z, v[i], ve[i], expected);
+        z_add(&z, v[i], ve[i], expected, 1024);
         per_face[face]++;
     }
     CHECK_MSG(per_face[0] > 100 && per_face[1] > 100 && per_face[2] > 100, "face pixels %d %d %d", per_face[0],
               per_face[1], per_face[2]);
+    CHECK_MSG(aggregate_z(&z) < 4.0, "corner: mean error %.2e is %.2f standard errors", z.sum_error / z.compared,
+              aggregate_z(&z));
     CHECK_MSG(z.outliers == 0, "corner: %d of %d pixels beyond 4 stderr (worst %.2f)", z.outliers, z.compared,
               z.worst_z);
     image_free(&img);

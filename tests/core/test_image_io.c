@@ -1,0 +1,207 @@
+/* Previews and heatmaps (core/image_io.cpp), read back by OpenImageIO:
+ * 8-bit sRGB values against the IEC 61966-2-1 formula and known values,
+ * heatmap colours against OIIO's colour map evaluated on its own and
+ * against matplotlib's published end colours, masked pixels black, errors
+ * naming the file and leaving nothing behind. */
+#define _POSIX_C_SOURCE 200809L
+#include <dirent.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "core/image_io.h"
+#include "tests/check.h"
+#include "tests/core/oiio_test_helpers.h"
+
+static char test_dir[1024];
+
+static const char *in_test_dir(const char *name)
+{
+    static char path[1200];
+    snprintf(path, sizeof path, "%s/%s", test_dir, name);
+    return path;
+}
+
+static int file_exists(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0;
+}
+
+static int leftover_temp_files(void)
+{
+    DIR *dir = opendir(test_dir);
+    if (!dir)
+        return -1;
+    int count = 0;
+    for (struct dirent *d; (d = readdir(dir));)
+        if (strstr(d->d_name, ".tmp-"))
+            ++count;
+    closedir(dir);
+    return count;
+}
+
+/* The sRGB encoding (IEC 61966-2-1) of a linear value in [0, 1], as 8 bits. */
+static int srgb8(double linear)
+{
+    double v = linear <= 0.0031308 ? 12.92 * linear : 1.055 * pow(linear, 1.0 / 2.4) - 0.055;
+    return (int)floor(v * 255.0 + 0.5);
+}
+
+/* Pixel (x, y) channel c of an 8-bit file read as float, back in 0..255. */
+static int byte_at(const oiio_test_image *img, int x, int y, int c)
+{
+    return (int)lrintf(img->pixels[((size_t)y * (size_t)img->width + (size_t)x) * (size_t)img->channels + (size_t)c] *
+                       255.0f);
+}
+
+static void check_error(int rc, const gt_error *e, const char *path, const char *what)
+{
+    CHECK_MSG(rc == -1, "%s: expected failure", what);
+    CHECK_MSG(strstr(e->message, path) == e->message, "%s: message does not start with the path: %s", what,
+              e->message);
+    CHECK_MSG(strchr(e->message, '\n') == NULL, "%s: message is not one line", what);
+    CHECK_MSG(!file_exists(path), "%s: %s was written", what, path);
+    printf("  %s -> %s\n", what, e->message);
+}
+
+static void test_grey_preview(void)
+{
+    /* 0 -> 0, 0.5 -> 188 and 1 -> 255 are the known sRGB values; above 1 and
+     * below 0 clamp, NaN shows as black. */
+    const float values[] = {0.0f, 0.5f, 1.0f, 4.0f, -1.0f, NAN, 0.001f, 0.01f, 0.2f, 0.8f};
+    const int n = (int)(sizeof values / sizeof values[0]);
+    const float *planes[1] = {values};
+    const char *path = in_test_dir("grey.png");
+    gt_error e;
+    CHECK_MSG(image_write_preview(path, planes, 1, n, 1, 1.0f, &e) == 0, "%s", e.message);
+    oiio_test_image img;
+    if (oiio_test_read(path, &img) != 0) {
+        CHECK_MSG(0, "cannot read %s", path);
+        return;
+    }
+    CHECK(img.width == n && img.height == 1 && img.channels == 1);
+    CHECK_MSG(strcmp(img.format, "uint8") == 0, "format %s", img.format);
+    CHECK(byte_at(&img, 0, 0, 0) == 0);
+    CHECK(byte_at(&img, 1, 0, 0) == 188);
+    CHECK(byte_at(&img, 2, 0, 0) == 255);
+    CHECK(byte_at(&img, 3, 0, 0) == 255);
+    CHECK(byte_at(&img, 4, 0, 0) == 0);
+    CHECK(byte_at(&img, 5, 0, 0) == 0);
+    for (int i = 6; i < n; ++i)
+        CHECK_MSG(abs(byte_at(&img, i, 0, 0) - srgb8(values[i])) <= 1, "%g -> %d, expected %d", (double)values[i],
+                  byte_at(&img, i, 0, 0), srgb8(values[i]));
+    oiio_test_image_free(&img);
+}
+
+static void test_rgb_preview(void)
+{
+    /* 3x2, distinct per channel and pixel, exposure 2: checks the channel
+     * order, the row order and the exposure. */
+    float r[6], g[6], b[6];
+    for (int i = 0; i < 6; ++i) {
+        r[i] = 0.25f;          /* x2 = 0.5 -> 188 */
+        g[i] = 0.05f * (float)i; /* x2 = 0 .. 0.5 */
+        b[i] = i == 4 ? 0.5f : 0.0f;
+    }
+    const float *planes[3] = {r, g, b};
+    const char *path = in_test_dir("rgb.png");
+    gt_error e;
+    CHECK_MSG(image_write_preview(path, planes, 3, 3, 2, 2.0f, &e) == 0, "%s", e.message);
+    oiio_test_image img;
+    if (oiio_test_read(path, &img) != 0) {
+        CHECK_MSG(0, "cannot read %s", path);
+        return;
+    }
+    CHECK(img.width == 3 && img.height == 2 && img.channels == 3);
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 3; ++x) {
+            int i = y * 3 + x;
+            CHECK(byte_at(&img, x, y, 0) == 188);
+            CHECK_MSG(abs(byte_at(&img, x, y, 1) - srgb8(2.0 * g[i])) <= 1, "G at %d,%d", x, y);
+            CHECK(byte_at(&img, x, y, 2) == (i == 4 ? 255 : 0));
+        }
+    oiio_test_image_free(&img);
+}
+
+/* Heatmap of 0, vmax/2, vmax, 3 vmax (clamps), a masked pixel holding vmax,
+ * and NaN. */
+static void test_heatmap(const char *map, const int first[3], const int last[3])
+{
+    const float vmax = 0.25f;
+    const float values[] = {0.0f, 0.125f, 0.25f, 0.75f, 0.25f, NAN};
+    const float mask[] = {1, 1, 1, 1, 0, 1};
+    const int n = 6;
+    char name[64];
+    snprintf(name, sizeof name, "heat_%s.png", map);
+    const char *path = in_test_dir(name);
+    gt_error e;
+    CHECK_MSG(image_write_heatmap(path, values, mask, n, 1, vmax, map, &e) == 0, "%s", e.message);
+    oiio_test_image img;
+    if (oiio_test_read(path, &img) != 0) {
+        CHECK_MSG(0, "cannot read %s", path);
+        return;
+    }
+    CHECK(img.width == n && img.height == 1 && img.channels == 3);
+    const float at[] = {0.0f, 0.5f, 1.0f, 1.0f, -1.0f, 0.0f}; /* where each pixel should sit on the map */
+    for (int i = 0; i < n; ++i) {
+        float linear[3] = {0, 0, 0};
+        if (at[i] >= 0.0f)
+            CHECK(oiio_test_color_map(map, at[i], linear) == 0);
+        for (int c = 0; c < 3; ++c) {
+            int got = byte_at(&img, i, 0, c), expected = srgb8(linear[c]);
+            CHECK_MSG(abs(got - expected) <= 1, "%s pixel %d channel %d: %d, expected %d", map, i, c, got, expected);
+        }
+    }
+    /* matplotlib's own 8-bit end colours (OIIO stores its maps linearised
+     * and decimated, so within 1 level). */
+    for (int c = 0; c < 3; ++c) {
+        CHECK_MSG(abs(byte_at(&img, 0, 0, c) - first[c]) <= 1, "%s(0) channel %d: %d vs %d", map, c,
+                  byte_at(&img, 0, 0, c), first[c]);
+        CHECK_MSG(abs(byte_at(&img, 2, 0, c) - last[c]) <= 1, "%s(1) channel %d: %d vs %d", map, c,
+                  byte_at(&img, 2, 0, c), last[c]);
+        CHECK(byte_at(&img, 4, 0, c) == 0); /* masked */
+    }
+    oiio_test_image_free(&img);
+}
+
+static void test_errors(void)
+{
+    printf("errors\n");
+    const float v[4] = {0.1f, 0.2f, 0.3f, 0.4f};
+    const float *planes[3] = {v, v, v};
+    gt_error e;
+    const char *p;
+    p = in_test_dir("no-such-folder/out.png");
+    check_error(image_write_preview(p, planes, 1, 2, 2, 1.0f, &e), &e, p, "missing folder");
+    p = in_test_dir("unknown.notaformat");
+    check_error(image_write_preview(p, planes, 1, 2, 2, 1.0f, &e), &e, p, "unknown extension");
+    p = in_test_dir("noextension");
+    check_error(image_write_preview(p, planes, 1, 2, 2, 1.0f, &e), &e, p, "no extension");
+    p = in_test_dir("two.png");
+    check_error(image_write_preview(p, planes, 2, 2, 2, 1.0f, &e), &e, p, "two channels");
+    p = in_test_dir("empty.png");
+    check_error(image_write_preview(p, planes, 3, 0, 2, 1.0f, &e), &e, p, "zero width");
+    p = in_test_dir("badmap.png");
+    check_error(image_write_heatmap(p, v, NULL, 2, 2, 1.0f, "no-such-map", &e), &e, p, "unknown colour map");
+    p = in_test_dir("badrange.png");
+    check_error(image_write_heatmap(p, v, NULL, 2, 2, 0.0f, "inferno", &e), &e, p, "vmax 0");
+    check_error(image_write_heatmap(p, v, NULL, 2, 2, NAN, "inferno", &e), &e, p, "vmax NaN");
+}
+
+int main(void)
+{
+    snprintf(test_dir, sizeof test_dir, "%s/image_io", check_tmp_dir());
+    mkdir(test_dir, 0755);
+
+    test_grey_preview();
+    test_rgb_preview();
+    /* matplotlib's _cm_listed.py: inferno 0 = (0.001462, 0.000466, 0.013866),
+     * 1 = (0.988362, 0.998364, 0.644924); viridis 0 = (0.267004, 0.004874,
+     * 0.329415), 1 = (0.993248, 0.906157, 0.143936); times 255. */
+    test_heatmap("inferno", (const int[3]){0, 0, 4}, (const int[3]){252, 255, 164});
+    test_heatmap("viridis", (const int[3]){68, 1, 84}, (const int[3]){253, 231, 37});
+    test_errors();
+
+    CHECK_MSG(leftover_temp_files() == 0, "temporary files left in %s", test_dir);
+    return check_report("test_image_io");
+}

@@ -1,0 +1,403 @@
+/* Monte Carlo film (core/mc_film.c) against a direct long-double computation
+ * over the same samples: order- and split-independent exact sums, means and
+ * standard errors, the even/odd half means, normalised vector layers, and an
+ * exact round trip through an EXR file. Sample values are random floats, not
+ * on the film's grid. */
+#include <stdint.h>
+#include <string.h>
+
+#include "core/exr_io.h"
+#include "core/mc_film.h"
+#include "tests/check.h"
+
+#define W 5
+#define H 3
+#define PIXELS (W * H)
+#define QUANTITIES 5
+#define MAX_SAMPLES 80
+
+static const mc_quantity quantities[QUANTITIES] = {
+    {"ao.V", 0}, {"bent.X", 0}, {"bent.Y", 0}, {"bent.Z", 0}, {"big.V", 4}};
+
+/* samples[p][i][q]: sample i (its sequence index) of pixel p. */
+static float samples[PIXELS][MAX_SAMPLES][QUANTITIES];
+static int sample_count[PIXELS];
+
+static uint32_t rng_state = 0x2545f491u;
+static uint32_t xorshift(void)
+{
+    rng_state ^= rng_state << 13;
+    rng_state ^= rng_state >> 17;
+    rng_state ^= rng_state << 5;
+    return rng_state;
+}
+static float uniform01(void) { return (float)(xorshift() >> 8) * 0x1p-24f; }
+
+static void make_samples(void)
+{
+    for (int p = 0; p < PIXELS; ++p) {
+        /* Counts differ per pixel, odd and even, one pixel with a single sample. */
+        sample_count[p] = p == 7 ? 1 : 20 + 4 * p + p % 3;
+        for (int i = 0; i < sample_count[p]; ++i) {
+            /* Products of two random floats: full 24-bit mantissas, off the grid. */
+            samples[p][i][0] = uniform01() * uniform01();
+            samples[p][i][1] = 1.7f * uniform01() - 0.7f;
+            samples[p][i][2] = (2.0f * uniform01() - 1.0f) * uniform01();
+            samples[p][i][3] = uniform01() * 0.9f + 0.1f;
+            samples[p][i][4] = 16.0f * uniform01() * uniform01();
+        }
+    }
+}
+
+static void init_film(mc_film *film)
+{
+    mc_film_init(film, W, H, quantities, QUANTITIES);
+    mc_film_normalize_layer(film, "bent");
+}
+
+/* Adds the samples of each pixel whose index satisfies keep(i). */
+static void add_in_order(mc_film *film, int reversed, int (*keep)(int))
+{
+    for (int p = 0; p < PIXELS; ++p)
+        for (int k = 0; k < sample_count[p]; ++k) {
+            int i = reversed ? sample_count[p] - 1 - k : k;
+            if (!keep || keep(i))
+                mc_film_add_sample(film, p, (uint32_t)i, samples[p][i]);
+        }
+}
+
+static int first_part(int i) { return i % 3 == 0 || i < 5; }
+static int second_part(int i) { return !first_part(i); }
+
+static int same_accumulators(const mc_film *a, const mc_film *b)
+{
+    size_t n = (size_t)PIXELS * QUANTITIES;
+    return memcmp(a->sum, b->sum, n * sizeof(double)) == 0 && memcmp(a->sum_sq, b->sum_sq, n * sizeof(double)) == 0 &&
+           memcmp(a->sum_even, b->sum_even, n * sizeof(double)) == 0 &&
+           memcmp(a->count, b->count, PIXELS * sizeof(uint32_t)) == 0 &&
+           memcmp(a->count_even, b->count_even, PIXELS * sizeof(uint32_t)) == 0;
+}
+
+/* Direct statistics of pixel p, quantity q over the samples with
+ * half < 0: all, 0: even indices, 1: odd indices. */
+typedef struct {
+    long double mean, stderr_;
+    int n;
+} direct_stats;
+
+static direct_stats direct(int p, int q, int half)
+{
+    long double sum = 0;
+    int n = 0;
+    for (int i = 0; i < sample_count[p]; ++i)
+        if (half < 0 || i % 2 == half) {
+            sum += samples[p][i][q];
+            ++n;
+        }
+    direct_stats s = {n ? sum / n : 0, 0, n};
+    long double ss = 0;
+    for (int i = 0; i < sample_count[p]; ++i)
+        if (half < 0 || i % 2 == half)
+            ss += (samples[p][i][q] - s.mean) * (samples[p][i][q] - s.mean);
+    s.stderr_ = n > 1 ? sqrtl(ss / (n - 1) / n) : INFINITY;
+    return s;
+}
+
+/* (a) Different orders and a split-and-merge give the same bits. */
+static void test_order_independence(void)
+{
+    mc_film forward, backward, part1, part2;
+    init_film(&forward);
+    init_film(&backward);
+    init_film(&part1);
+    init_film(&part2);
+    add_in_order(&forward, 0, NULL);
+    add_in_order(&backward, 1, NULL);
+    add_in_order(&part1, 1, first_part);
+    add_in_order(&part2, 0, second_part);
+    gt_error e;
+    CHECK(mc_film_merge(&part1, &part2, "part2", &e) == 0);
+    CHECK_MSG(same_accumulators(&forward, &backward), "adding in reverse order changed the sums");
+    CHECK_MSG(same_accumulators(&forward, &part1), "split and merge changed the sums");
+    /* Merging the other way round too. */
+    mc_film_free(&part2);
+    init_film(&part2);
+    add_in_order(&part2, 0, second_part);
+    mc_film other;
+    init_film(&other);
+    add_in_order(&other, 0, first_part);
+    CHECK(mc_film_merge(&part2, &other, "part1", &e) == 0);
+    CHECK_MSG(same_accumulators(&forward, &part2), "merge in the other order changed the sums");
+
+    /* Merging films of different shapes is refused. */
+    mc_film small;
+    mc_film_init(&small, 2, 2, quantities, QUANTITIES);
+    CHECK(mc_film_merge(&forward, &small, "small.exr", &e) == -1 && strstr(e.message, "small.exr"));
+    mc_film_free(&small);
+    mc_film_init(&small, W, H, quantities, 2);
+    CHECK(mc_film_merge(&forward, &small, "fewer.exr", &e) == -1 && strstr(e.message, "fewer.exr"));
+    mc_film_free(&small);
+    mc_film_free(&forward);
+    mc_film_free(&backward);
+    mc_film_free(&part1);
+    mc_film_free(&part2);
+    mc_film_free(&other);
+}
+
+/* (b) Mean and standard error against the direct computation, to 1e-6 of
+ * the pixel's statistical scale (the film rounds samples onto a grid of
+ * 2^(E-24), far below the noise but not below every mean, which may be near 0). */
+static void test_mean_and_stderr(void)
+{
+    mc_film film;
+    init_film(&film);
+    add_in_order(&film, 0, NULL);
+    int bad_mean = 0, bad_err = 0;
+    for (int p = 0; p < PIXELS; ++p)
+        for (int q = 0; q < QUANTITIES; ++q) {
+            direct_stats s = direct(p, q, -1);
+            double mean = mc_film_mean(&film, q, p), err = mc_film_stderr(&film, q, p);
+            if (sample_count[p] < 2) {
+                CHECK(isinf(err));
+                CHECK(mean == (double)samples[p][0][q] ||
+                      fabs(mean - samples[p][0][q]) <= ldexp(1.0, quantities[q].scale_exponent - 25));
+                continue;
+            }
+            double scale = fmax(fabs((double)s.mean), (double)s.stderr_);
+            if (fabs(mean - (double)s.mean) > 1e-6 * scale && bad_mean++ < 5)
+                fprintf(stderr, "pixel %d %s: mean %.12g, direct %.12Lg\n", p, quantities[q].name, mean, s.mean);
+            if (fabs(err - (double)s.stderr_) > 1e-6 * (double)s.stderr_ && bad_err++ < 5)
+                fprintf(stderr, "pixel %d %s: stderr %.12g, direct %.12Lg\n", p, quantities[q].name, err,
+                        s.stderr_);
+        }
+    CHECK_MSG(bad_mean == 0, "%d means off", bad_mean);
+    CHECK_MSG(bad_err == 0, "%d standard errors off", bad_err);
+    CHECK(film.count[3] == (uint32_t)sample_count[3]);
+    CHECK(film.count_even[3] == (uint32_t)(sample_count[3] + 1) / 2);
+    mc_film_free(&film);
+}
+
+/* (c) Film -> channels -> EXR -> channels -> film is exact. */
+static void test_exr_round_trip(void)
+{
+    mc_film film;
+    init_film(&film);
+    add_in_order(&film, 0, NULL);
+    image written;
+    image_init(&written, W, H);
+    CHECK(mc_film_write_channels(&film, NULL, &written) == 0);
+    char path[1200];
+    snprintf(path, sizeof path, "%s/mc_film_round_trip.exr", check_tmp_dir());
+    gt_error e;
+    CHECK_MSG(exr_write(path, &written, &e) == 0, "%s", e.message);
+    image read;
+    if (exr_read(path, &read, &e) != 0) {
+        CHECK_MSG(0, "%s", e.message);
+        image_free(&written);
+        mc_film_free(&film);
+        return;
+    }
+    mc_film back;
+    CHECK_MSG(mc_film_read_channels(&read, path, &back, &e) == 0, "%s", e.message);
+    CHECK(back.width == W && back.height == H && back.quantity_count == QUANTITIES);
+    size_t np = PIXELS;
+    for (int q = 0; q < film.quantity_count; ++q) {
+        int r = -1;
+        for (int k = 0; k < back.quantity_count; ++k)
+            if (strcmp(back.quantities[k].name, film.quantities[q].name) == 0)
+                r = k;
+        CHECK_MSG(r >= 0, "quantity %s lost", film.quantities[q].name);
+        if (r < 0)
+            continue;
+        CHECK_MSG(memcmp(&film.sum[q * np], &back.sum[r * np], np * sizeof(double)) == 0, "%s sums",
+                  film.quantities[q].name);
+        CHECK_MSG(memcmp(&film.sum_sq[q * np], &back.sum_sq[r * np], np * sizeof(double)) == 0, "%s squared sums",
+                  film.quantities[q].name);
+        CHECK_MSG(memcmp(&film.sum_even[q * np], &back.sum_even[r * np], np * sizeof(double)) == 0, "%s even sums",
+                  film.quantities[q].name);
+    }
+    CHECK(memcmp(film.count, back.count, np * sizeof(uint32_t)) == 0);
+    CHECK(memcmp(film.count_even, back.count_even, np * sizeof(uint32_t)) == 0);
+    CHECK(back.normalized_count == 1 && strcmp(back.normalized[0], "bent") == 0);
+
+    /* Every channel the read-back film writes (means, normalised means,
+     * standard errors, accumulators) has the bits of the original's. */
+    image again;
+    image_init(&again, W, H);
+    CHECK(mc_film_write_channels(&back, NULL, &again) == 0);
+    CHECK(again.channel_count == written.channel_count);
+    for (int c = 0; c < written.channel_count; ++c) {
+        const float *a = written.channels[c].data;
+        const float *b = image_channel_data(&again, written.channels[c].name);
+        const float *f = image_channel_data(&read, written.channels[c].name);
+        CHECK_MSG(b && memcmp(a, b, np * sizeof(float)) == 0, "channel %s rewritten differs",
+                  written.channels[c].name);
+        CHECK_MSG(f && memcmp(a, f, np * sizeof(float)) == 0, "channel %s read from the EXR differs",
+                  written.channels[c].name);
+    }
+    image_free(&again);
+    mc_film_free(&back);
+    image_free(&read);
+    image_free(&written);
+    mc_film_free(&film);
+}
+
+/* A render resumed from its file: read the film written after the first
+ * samples, add the rest, and get the bits of the uninterrupted render. */
+static int early(int i) { return i < 10; }
+static int late(int i) { return i >= 10; }
+
+static void test_resume_from_file(void)
+{
+    mc_film whole, first;
+    init_film(&whole);
+    add_in_order(&whole, 0, NULL);
+    init_film(&first);
+    add_in_order(&first, 0, early);
+    image img;
+    image_init(&img, W, H);
+    mc_film_write_channels(&first, NULL, &img);
+    mc_film resumed;
+    gt_error e;
+    if (mc_film_read_channels(&img, "partial.exr", &resumed, &e) != 0) {
+        CHECK_MSG(0, "%s", e.message);
+    } else {
+        add_in_order(&resumed, 0, late);
+        for (int q = 0; q < QUANTITIES; ++q)
+            CHECK_MSG(resumed.quantities[q].scale_exponent == quantities[q].scale_exponent,
+                      "quantity %s read back with scale exponent %d, written with %d", resumed.quantities[q].name,
+                      resumed.quantities[q].scale_exponent, quantities[q].scale_exponent);
+        CHECK_MSG(same_accumulators(&whole, &resumed), "resumed render differs from the uninterrupted one");
+        mc_film_free(&resumed);
+    }
+    image_free(&img);
+    mc_film_free(&first);
+    mc_film_free(&whole);
+}
+
+/* (d) Half means against the direct even / odd means; (e) the normalised
+ * layer has unit vectors along the direct mean vector. */
+static void test_half_means_and_normalised_layer(void)
+{
+    mc_film film;
+    init_film(&film);
+    add_in_order(&film, 0, NULL);
+    for (int half = 0; half < 2; ++half) {
+        image img;
+        image_init(&img, W, H);
+        CHECK(mc_film_write_half_means(&film, half, &img) == 0);
+        const float *ao = image_channel_data(&img, "ao.V"), *big = image_channel_data(&img, "big.V");
+        const float *b[3] = {image_channel_data(&img, "bent.X"), image_channel_data(&img, "bent.Y"),
+                             image_channel_data(&img, "bent.Z")};
+        for (int p = 0; p < PIXELS; ++p) {
+            direct_stats s = direct(p, 0, half), t = direct(p, 4, half);
+            if (s.n == 0) {
+                CHECK(ao[p] == 0.0f && big[p] == 0.0f);
+                continue;
+            }
+            CHECK_NEAR(ao[p], (double)s.mean, 1e-6 * fabs((double)s.mean) + 1e-7);
+            CHECK_NEAR(big[p], (double)t.mean, 1e-6 * fabs((double)t.mean) + 16e-7);
+            long double m[3], len = 0;
+            for (int a = 0; a < 3; ++a) {
+                m[a] = direct(p, 1 + a, half).mean;
+                len += m[a] * m[a];
+            }
+            len = sqrtl(len);
+            for (int a = 0; a < 3; ++a)
+                CHECK_NEAR(b[a][p], (double)(m[a] / len), 1e-5);
+        }
+        image_free(&img);
+    }
+
+    image img;
+    image_init(&img, W, H);
+    CHECK(mc_film_write_channels(&film, NULL, &img) == 0);
+    const char *layers = image_get_attribute(&img, "gtlab.normalized");
+    CHECK(layers && strcmp(layers, "bent") == 0);
+    const float *b[3] = {image_channel_data(&img, "bent.X"), image_channel_data(&img, "bent.Y"),
+                         image_channel_data(&img, "bent.Z")};
+    const float *ao = image_channel_data(&img, "ao.V");
+    for (int p = 0; p < PIXELS; ++p) {
+        double len = sqrt((double)b[0][p] * b[0][p] + (double)b[1][p] * b[1][p] + (double)b[2][p] * b[2][p]);
+        CHECK_NEAR(len, 1.0, 1e-6);
+        long double m[3], mlen = 0;
+        for (int a = 0; a < 3; ++a) {
+            m[a] = direct(p, 1 + a, -1).mean;
+            mlen += m[a] * m[a];
+        }
+        mlen = sqrtl(mlen);
+        for (int a = 0; a < 3; ++a)
+            CHECK_NEAR(b[a][p], (double)(m[a] / mlen), 1e-5);
+        /* Not a normalised layer: the plain mean. */
+        CHECK_NEAR(ao[p], (double)direct(p, 0, -1).mean, 1e-6);
+    }
+
+    /* Background pixels (mask 0) hold 0 in the means and standard errors. */
+    float mask[PIXELS];
+    for (int p = 0; p < PIXELS; ++p)
+        mask[p] = p % 2 ? 0.0f : 1.0f;
+    image masked;
+    image_init(&masked, W, H);
+    CHECK(mc_film_write_channels(&film, mask, &masked) == 0);
+    const float *mv = image_channel_data(&masked, "ao.V"), *ms = image_channel_data(&masked, "ao.V.stderr");
+    for (int p = 1; p < PIXELS; p += 2)
+        CHECK(mv[p] == 0.0f && ms[p] == 0.0f);
+    image_free(&masked);
+    image_free(&img);
+    mc_film_free(&film);
+}
+
+/* (f) Images that are not reference renders are refused, naming the file. */
+static void test_bad_images(void)
+{
+    gt_error e;
+    mc_film film;
+    image img;
+    image_init(&img, W, H);
+    image_add_channel(&img, "ao.V");
+    image_add_channel(&img, "ao.V.stderr");
+    CHECK(mc_film_read_channels(&img, "plain.exr", &film, &e) == -1);
+    CHECK_MSG(strstr(e.message, "plain.exr") == e.message, "%s", e.message);
+
+    image_add_channel(&img, "ao.V.sum"); /* an accumulator, but not all of them */
+    image_add_channel(&img, "spp.N");
+    image_add_channel(&img, "spp.Neven");
+    CHECK(mc_film_read_channels(&img, "partial.exr", &film, &e) == -1);
+    CHECK_MSG(strstr(e.message, "partial.exr") == e.message, "%s", e.message);
+    image_free(&img);
+
+    mc_film good;
+    init_film(&good);
+    add_in_order(&good, 0, NULL);
+    image_init(&img, W, H);
+    mc_film_write_channels(&good, NULL, &img);
+    image_channel_data(&img, "spp.Neven")[4] = image_channel_data(&img, "spp.N")[4] + 1.0f;
+    CHECK(mc_film_read_channels(&img, "counts.exr", &film, &e) == -1);
+    CHECK_MSG(strstr(e.message, "counts.exr") == e.message, "%s", e.message);
+
+    /* Sample counts a film cannot hold (not whole numbers, beyond 2^32,
+     * infinite) are corrupt files too. */
+    const float bad_counts[] = {2.5f, 1e10f, INFINITY};
+    for (int k = 0; k < 3; ++k) {
+        image_channel_data(&img, "spp.Neven")[4] = 0.0f;
+        image_channel_data(&img, "spp.N")[4] = bad_counts[k];
+        int rc = mc_film_read_channels(&img, "counts.exr", &film, &e);
+        CHECK_MSG(rc == -1, "spp.N = %g accepted", (double)bad_counts[k]);
+        if (rc == 0)
+            mc_film_free(&film);
+    }
+    image_free(&img);
+    mc_film_free(&good);
+}
+
+int main(void)
+{
+    make_samples();
+    test_order_independence();
+    test_mean_and_stderr();
+    test_exr_round_trip();
+    test_resume_from_file();
+    test_half_means_and_normalised_layer();
+    test_bad_images();
+    return check_report("test_mc_film");
+}
