@@ -24,13 +24,13 @@ vec3 sample_cosine_hemisphere(const float u[2])
     float x, y;
     sample_concentric_disc(u, &x, &y);
     float z2 = 1.0f - x * x - y * y;
-    return v3(x, y, sqrtf(fmaxf(z2, 0.0f)));
+    return v3(x, y, sqrtf(z2 > 0.0f ? z2 : 0.0f));
 }
 
 vec3 sample_uniform_hemisphere(const float u[2])
 {
     float z = u[0];
-    float r = sqrtf(fmaxf(0.0f, 1.0f - z * z));
+    float r = sqrtf(1.0f - z * z); /* z < 1 */
     float phi = 2.0f * (float)M_PI * u[1];
     return v3(r * cosf(phi), r * sinf(phi), z);
 }

@@ -10,6 +10,8 @@ static size_t pixel_count(const mc_film *film) { return (size_t)film->width * (s
 int mc_film_init(mc_film *film, int width, int height, const mc_quantity *quantities, int quantity_count)
 {
     memset(film, 0, sizeof *film);
+    if (quantity_count < 1 || quantity_count > MC_FILM_MAX_QUANTITIES)
+        return -1;
     film->width = width;
     film->height = height;
     film->quantity_count = quantity_count;
@@ -25,6 +27,13 @@ int mc_film_init(mc_film *film, int width, int height, const mc_quantity *quanti
         return -1;
     }
     memcpy(film->quantities, quantities, sizeof *quantities * (size_t)quantity_count);
+    for (int q = 0; q < quantity_count; ++q) {
+        int exponent = quantities[q].scale_exponent;
+        film->grids[q].step = ldexp(1.0, exponent - 24);
+        film->grids[q].inverse_step = ldexp(1.0, 24 - exponent);
+        film->grids[q].square_step = ldexp(1.0, 2 * exponent - 24);
+        film->grids[q].inverse_square_step = ldexp(1.0, 24 - 2 * exponent);
+    }
     return 0;
 }
 
@@ -47,27 +56,74 @@ int mc_film_normalize_layer(mc_film *film, const char *layer)
     return 0;
 }
 
-/* v rounded to the nearest multiple of 2^(exponent - 24). */
-static double round_to_grid(double v, int exponent)
+/* v rounded to the nearest multiple of the grid spacing `step` = 2^k, given
+ * inverse_step = 2^-k. Multiplying by powers of two is exact; adding and
+ * subtracting 1.5 * 2^52 rounds to the nearest integer (ties to even) in
+ * round-to-nearest arithmetic, for |v / step| < 2^51. */
+static double round_to_grid(double v, double step, double inverse_step)
 {
-    return ldexp(rint(ldexp(v, 24 - exponent)), exponent - 24);
+    double units = v * inverse_step;
+    const double magic = 0x1.8p52;
+    double rounded = fabs(units) < 0x1p51 ? (units + magic) - magic : rint(units);
+    return rounded * step;
+}
+
+void mc_pixel_clear(mc_pixel *acc, const mc_film *film)
+{
+    size_t n = sizeof(double) * (size_t)film->quantity_count;
+    memset(acc->sum, 0, n);
+    memset(acc->sum_sq, 0, n);
+    memset(acc->sum_even, 0, n);
+    acc->count = acc->count_even = 0;
+}
+
+void mc_pixel_add_sample(mc_pixel *acc, const mc_film *film, uint32_t sample_index, const float *values)
+{
+    int even = (sample_index & 1u) == 0;
+    for (int q = 0; q < film->quantity_count; ++q) {
+        const mc_grid *g = &film->grids[q];
+        double v = round_to_grid(values[q], g->step, g->inverse_step);
+        acc->sum[q] += v;
+        acc->sum_sq[q] += round_to_grid(v * v, g->square_step, g->inverse_square_step);
+        acc->sum_even[q] += even ? v : 0.0;
+    }
+    acc->count += 1;
+    acc->count_even += (uint32_t)even;
+}
+
+/* sqrt(s^2 / n) with the unbiased sample variance s^2 from the sums. */
+static double standard_error(double sum, double sum_sq, double n)
+{
+    if (n < 2)
+        return INFINITY;
+    double variance = (sum_sq - sum * sum / n) / (n - 1);
+    return sqrt(fmax(variance, 0.0) / n);
+}
+
+double mc_pixel_stderr(const mc_pixel *acc, int quantity)
+{
+    return standard_error(acc->sum[quantity], acc->sum_sq[quantity], acc->count);
+}
+
+void mc_film_add_pixel(mc_film *film, int pixel, const mc_pixel *acc)
+{
+    size_t np = pixel_count(film);
+    for (int q = 0; q < film->quantity_count; ++q) {
+        size_t i = (size_t)q * np + (size_t)pixel;
+        film->sum[i] += acc->sum[q];
+        film->sum_sq[i] += acc->sum_sq[q];
+        film->sum_even[i] += acc->sum_even[q];
+    }
+    film->count[pixel] += acc->count;
+    film->count_even[pixel] += acc->count_even;
 }
 
 void mc_film_add_sample(mc_film *film, int pixel, uint32_t sample_index, const float *values)
 {
-    size_t np = pixel_count(film);
-    int even = (sample_index & 1u) == 0;
-    for (int q = 0; q < film->quantity_count; ++q) {
-        int exponent = film->quantities[q].scale_exponent;
-        double v = round_to_grid(values[q], exponent);
-        size_t i = (size_t)q * np + (size_t)pixel;
-        film->sum[i] += v;
-        film->sum_sq[i] += round_to_grid(v * v, 2 * exponent);
-        if (even)
-            film->sum_even[i] += v;
-    }
-    film->count[pixel] += 1;
-    film->count_even[pixel] += (uint32_t)even;
+    mc_pixel one;
+    mc_pixel_clear(&one, film);
+    mc_pixel_add_sample(&one, film, sample_index, values);
+    mc_film_add_pixel(film, pixel, &one);
 }
 
 double mc_film_mean(const mc_film *film, int quantity, int pixel)
@@ -78,12 +134,8 @@ double mc_film_mean(const mc_film *film, int quantity, int pixel)
 
 double mc_film_stderr(const mc_film *film, int quantity, int pixel)
 {
-    double n = film->count[pixel];
-    if (n < 2)
-        return INFINITY;
     size_t i = (size_t)quantity * pixel_count(film) + (size_t)pixel;
-    double variance = (film->sum_sq[i] - film->sum[i] * film->sum[i] / n) / (n - 1);
-    return sqrt(fmax(variance, 0.0) / n);
+    return standard_error(film->sum[i], film->sum_sq[i], film->count[pixel]);
 }
 
 /* Index of quantity "layer.axis", or -1. */

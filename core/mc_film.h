@@ -21,20 +21,27 @@
 #include "core/error.h"
 #include "core/image.h"
 
+#define MC_FILM_MAX_QUANTITIES 64
+
 typedef struct {
     char name[IMAGE_NAME_MAX]; /* channel name of the mean, e.g. "ao.V" */
     int scale_exponent;        /* E: samples expected within [-2^E, 2^E] */
 } mc_quantity;
 
 #define MC_FILM_MAX_NORMALIZED 4
-#define MC_FILM_MAX_QUANTITIES 64
 #define MC_FILM_ATTR_NORMALIZED "gtlab.normalized" /* "layer layer ..." */
 #define MC_FILM_ATTR_EXPONENTS "gtlab.scale_exponents" /* "name:E name:E ..." */
+
+/* A quantity's rounding grids: 2^(E-24) for samples, 2^(2E-24) for squares. */
+typedef struct {
+    double step, inverse_step, square_step, inverse_square_step;
+} mc_grid;
 
 typedef struct {
     int width, height;
     int quantity_count;
     mc_quantity *quantities;
+    mc_grid grids[MC_FILM_MAX_QUANTITIES];
     double *sum, *sum_sq, *sum_even; /* [quantity * pixels + pixel] */
     uint32_t *count, *count_even;    /* [pixel] */
     /* Layers whose .X .Y .Z means are written normalised (bent normals). */
@@ -47,7 +54,22 @@ void mc_film_free(mc_film *film);
 /* Declares that layer.X/.Y/.Z are a vector written normalised. */
 int mc_film_normalize_layer(mc_film *film, const char *layer);
 
+/* One pixel's sums while it is being sampled, kept together (and on the
+ * stack) rather than scattered over the film's planes. */
+typedef struct {
+    double sum[MC_FILM_MAX_QUANTITIES], sum_sq[MC_FILM_MAX_QUANTITIES], sum_even[MC_FILM_MAX_QUANTITIES];
+    uint32_t count, count_even;
+} mc_pixel;
+
+void mc_pixel_clear(mc_pixel *acc, const mc_film *film);
 /* Adds one sample (values[q] for every quantity) with its sequence index. */
+void mc_pixel_add_sample(mc_pixel *acc, const mc_film *film, uint32_t sample_index, const float *values);
+/* Standard error of quantity q's mean so far (as mc_film_stderr). */
+double mc_pixel_stderr(const mc_pixel *acc, int quantity);
+/* Adds a pixel's sums into the film. Exact, like every sum here. */
+void mc_film_add_pixel(mc_film *film, int pixel, const mc_pixel *acc);
+
+/* Adds one sample straight into the film (mc_pixel_add_sample + mc_film_add_pixel). */
 void mc_film_add_sample(mc_film *film, int pixel, uint32_t sample_index, const float *values);
 
 double mc_film_mean(const mc_film *film, int quantity, int pixel);

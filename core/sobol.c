@@ -20,26 +20,34 @@ uint32_t pixel_seed(uint32_t seed, uint32_t x, uint32_t y)
 
 static uint32_t reverse_bits(uint32_t x)
 {
-    x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
-    x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+    x = __builtin_bswap32(x);
     x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
-    x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
-    return (x >> 16) | (x << 16);
+    x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+    return ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
 }
 
 /* Sobol' dimension 0 is the van der Corput sequence: the index bit-reversed. */
 uint32_t sobol_dimension0(uint32_t index) { return reverse_bits(index); }
 
-/* Sobol' dimension 1 (primitive polynomial x + 1): its generator matrix is
- * Pascal's triangle mod 2, so direction number v_{k+1} = v_k ^ (v_k >> 1). */
-uint32_t sobol_dimension1(uint32_t index)
+/* Sobol' dimension 1 (primitive polynomial x + 1) has Pascal's triangle mod 2
+ * as generator matrix: index bit k contributes C(k, j) mod 2 to output digit
+ * j (counted from the most significant). By Lucas' theorem C(k, j) is odd iff
+ * the bits of j are a subset of those of k, so output digit j is the XOR of
+ * the index bits k that are supersets of j: a superset transform over the five
+ * bits of the position, done in five shifts. Returned in reversed bit order
+ * (digit j at bit j), the form the scrambler works in. */
+static uint32_t sobol_dimension1_reversed(uint32_t index)
 {
-    uint32_t result = 0;
-    for (uint32_t v = 1u << 31; index; index >>= 1, v ^= v >> 1)
-        if (index & 1u)
-            result ^= v;
-    return result;
+    uint32_t y = index;
+    y ^= (y >> 1) & 0x55555555u;
+    y ^= (y >> 2) & 0x33333333u;
+    y ^= (y >> 4) & 0x0f0f0f0fu;
+    y ^= (y >> 8) & 0x00ff00ffu;
+    y ^= (y >> 16) & 0x0000ffffu;
+    return y;
 }
+
+uint32_t sobol_dimension1(uint32_t index) { return reverse_bits(sobol_dimension1_reversed(index)); }
 
 /* A Laine-Karras permutation: each output bit depends only on the input bits
  * below it, which is what makes it an Owen scramble of the reversed bits. */
@@ -64,10 +72,32 @@ static float unit_float(uint32_t bits)
     return (float)(bits >> 8) * 0x1p-24f;
 }
 
+sobol_pair_seeds sobol_owen_pair_seeds(uint32_t seed, uint32_t pair)
+{
+    sobol_pair_seeds s;
+    s.shuffle = hash_combine(seed, pair);
+    s.x = hash_combine(s.shuffle, 0xa511e9b3u);
+    s.y = hash_combine(s.shuffle, 0x63d83595u);
+    return s;
+}
+
+/* Burley 2020, section 4, with the bit reversals that cancel removed:
+ * owen_scramble(x) = reverse(LK(reverse(x))), and dimension 0 is
+ * reverse(index), so both coordinates are scrambled in reversed-bit form. */
+void sobol_owen_point(const sobol_pair_seeds *seeds, uint32_t index, float out[2])
+{
+    /* The shuffled index, reversed: it is also Sobol' dimension 0 of the
+     * shuffled index. */
+    uint32_t shuffled_reversed = laine_karras_permutation(reverse_bits(index), seeds->shuffle);
+    uint32_t shuffled = reverse_bits(shuffled_reversed);
+    uint32_t x = reverse_bits(laine_karras_permutation(shuffled, seeds->x));
+    uint32_t y = reverse_bits(laine_karras_permutation(sobol_dimension1_reversed(shuffled), seeds->y));
+    out[0] = unit_float(x);
+    out[1] = unit_float(y);
+}
+
 void sobol_owen_2d(uint32_t seed, uint32_t index, uint32_t pair, float out[2])
 {
-    uint32_t pair_seed = hash_combine(seed, pair);
-    uint32_t shuffled = owen_scramble(index, pair_seed);
-    out[0] = unit_float(owen_scramble(sobol_dimension0(shuffled), hash_combine(pair_seed, 0xa511e9b3u)));
-    out[1] = unit_float(owen_scramble(sobol_dimension1(shuffled), hash_combine(pair_seed, 0x63d83595u)));
+    sobol_pair_seeds seeds = sobol_owen_pair_seeds(seed, pair);
+    sobol_owen_point(&seeds, index, out);
 }

@@ -21,7 +21,16 @@ uint32_t hash_combine(uint32_t a, uint32_t b);
 /* Seed of pixel (x, y) for a render with global seed `seed`. */
 uint32_t pixel_seed(uint32_t seed, uint32_t x, uint32_t y);
 
-/* The 2-D point `index` of dimension pair `pair` for a pixel seed, in [0,1)^2. */
+/* The scramble seeds of one dimension pair of one pixel: derived once, then
+ * used for every sample of the pair. */
+typedef struct {
+    uint32_t shuffle, x, y;
+} sobol_pair_seeds;
+
+sobol_pair_seeds sobol_owen_pair_seeds(uint32_t seed, uint32_t pair);
+/* The 2-D point `index` of a dimension pair, in [0,1)^2. */
+void sobol_owen_point(const sobol_pair_seeds *seeds, uint32_t index, float out[2]);
+/* The same in one call: point `index` of pair `pair` for a pixel seed. */
 void sobol_owen_2d(uint32_t seed, uint32_t index, uint32_t pair, float out[2]);
 
 /* The raw, unscrambled first two Sobol' dimensions as 32-bit fixed point

@@ -1,6 +1,5 @@
 #include "raytracer/ao_integrator.h"
 
-#include "core/frame.h"
 #include "core/hemisphere_sampling.h"
 
 enum { AO_V, AO_VUNIFORM, BENT_X, BENT_Y, BENT_Z, AO_QUANTITY_COUNT };
@@ -9,40 +8,61 @@ enum { AO_V, AO_VUNIFORM, BENT_X, BENT_Y, BENT_Z, AO_QUANTITY_COUNT };
 static const mc_quantity ao_quantities[AO_QUANTITY_COUNT] = {
     {"ao.V", 0}, {"ao.Vuniform", 0}, {"bent.X", 0}, {"bent.Y", 0}, {"bent.Z", 0}};
 
-/* V(w) seen from the surface: 0 below the geometric surface, else the ray. */
-static int visible(const embree_scene *es, const surface_hit *s, vec3 origin, vec3 w, float max_distance)
+/* An occlusion ray from the pixel's origin along w. */
+static void set_ray(struct RTCRay *r, vec3 o, vec3 w, float t_max)
 {
-    if (v3_dot(w, s->ng) <= 0.0f)
-        return 0;
-    return embree_unoccluded(es, origin, w, max_distance);
+    r->org_x = o.x, r->org_y = o.y, r->org_z = o.z;
+    r->dir_x = w.x, r->dir_y = w.y, r->dir_z = w.z;
+    r->tnear = 0.0f;
+    r->tfar = t_max;
+    r->time = 0.0f;
+    r->mask = 0xffffffffu;
+    r->id = 0;
+    r->flags = 0;
 }
 
-static int ao_sample(const integrator *self, const sample_point *sp, float *values)
+/* Per sample: ray 2k is cosine-distributed (pair 0), ray 2k+1 uniform
+ * (pair 1). A direction below the geometric surface is not traced: V = 0. */
+static int ao_sample_batch(const integrator *self, const pixel_context *px, uint32_t first_index, int count,
+                           float *values)
 {
     const ao_settings *settings = self->settings;
-    const surface_hit *s = sp->surface;
-    frame f = frame_from_normal(s->ns);
-    vec3 origin = offset_ray_origin(s->p, s->ng);
-    float u[2];
-
-    sample_point_2d(sp, 0, u);
-    vec3 w_cos = frame_to_world(&f, sample_cosine_hemisphere(u));
-    float v_cos = (float)visible(self->scene, s, origin, w_cos, settings->max_distance);
-
-    sample_point_2d(sp, 1, u);
-    vec3 w_uni = frame_to_world(&f, sample_uniform_hemisphere(u));
-    float v_uni = (float)visible(self->scene, s, origin, w_uni, settings->max_distance);
-
-    values[AO_V] = v_cos;
-    values[AO_VUNIFORM] = v_uni;
-    values[BENT_X] = v_cos * w_cos.x;
-    values[BENT_Y] = v_cos * w_cos.y;
-    values[BENT_Z] = v_cos * w_cos.z;
-    return 2;
+    const sobol_pair_seeds cosine_pair = sobol_owen_pair_seeds(px->seed, 0);
+    const sobol_pair_seeds uniform_pair = sobol_owen_pair_seeds(px->seed, 1);
+    vec3 directions[2 * SAMPLE_BATCH];
+    int traced_as[2 * SAMPLE_BATCH]; /* index into rays, or -1: under the surface */
+    _Alignas(16) struct RTCRay rays[2 * SAMPLE_BATCH];
+    unsigned ray_count = 0;
+    for (int r = 0; r < 2 * count; ++r) {
+        float u[2];
+        uint32_t index = first_index + (uint32_t)(r / 2);
+        sobol_owen_point(r % 2 == 0 ? &cosine_pair : &uniform_pair, index, u);
+        vec3 local = r % 2 == 0 ? sample_cosine_hemisphere(u) : sample_uniform_hemisphere(u);
+        directions[r] = frame_to_world(&px->shading, local);
+        traced_as[r] = -1;
+        if (v3_dot(directions[r], px->surface->ng) > 0.0f) {
+            traced_as[r] = (int)ray_count;
+            set_ray(&rays[ray_count++], px->ray_origin, directions[r], settings->max_distance);
+        }
+    }
+    embree_unoccluded_stream(self->scene, rays, ray_count);
+    for (int k = 0; k < count; ++k) {
+        int c = traced_as[2 * k], u = traced_as[2 * k + 1];
+        float v_cos = c >= 0 && rays[c].tfar >= 0.0f ? 1.0f : 0.0f;
+        float v_uni = u >= 0 && rays[u].tfar >= 0.0f ? 1.0f : 0.0f;
+        float *out = &values[k * AO_QUANTITY_COUNT];
+        vec3 w = directions[2 * k];
+        out[AO_V] = v_cos;
+        out[AO_VUNIFORM] = v_uni;
+        out[BENT_X] = v_cos * w.x;
+        out[BENT_Y] = v_cos * w.y;
+        out[BENT_Z] = v_cos * w.z;
+    }
+    return (int)ray_count;
 }
 
 integrator ao_integrator(const embree_scene *es, const ao_settings *settings)
 {
-    integrator it = {"ao", AO_QUANTITY_COUNT, ao_quantities, "bent", ao_sample, es, settings};
+    integrator it = {"ao", AO_QUANTITY_COUNT, ao_quantities, "bent", ao_sample_batch, es, settings};
     return it;
 }

@@ -135,24 +135,12 @@ vec3 offset_ray_origin(vec3 p, vec3 ng)
     return v3_add(p, v3_scale(ng, offset));
 }
 
-int embree_unoccluded(const embree_scene *es, vec3 o, vec3 d, float t_max)
+void embree_unoccluded_stream(const embree_scene *es, struct RTCRay *rays, unsigned count)
 {
+    if (count == 0)
+        return;
     struct RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
-    struct RTCRay ray;
-    ray.org_x = o.x;
-    ray.org_y = o.y;
-    ray.org_z = o.z;
-    ray.dir_x = d.x;
-    ray.dir_y = d.y;
-    ray.dir_z = d.z;
-    ray.tnear = 0.0f;
-    ray.tfar = t_max;
-    ray.time = 0.0f;
-    ray.mask = 0xffffffffu;
-    ray.id = 0;
-    ray.flags = 0;
-    rtcOccluded1(es->rtc, &context, &ray);
-    return ray.tfar >= 0.0f; /* Embree sets tfar = -inf on a hit */
+    rtcOccluded1M(es->rtc, &context, rays, count, sizeof(struct RTCRay));
 }

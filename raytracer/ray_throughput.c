@@ -11,13 +11,18 @@
 #include "raytracer/ao_integrator.h"
 #include "raytracer/gbuffer.h"
 
-enum { RAYS_PER_PIXEL = 16, STREAM = 64 };
+/* The raw ray set holds RAYS_PER_PIXEL rays per covered pixel; gtlab renders
+ * GTLAB_SPP samples (2 rays each) per pixel, a short but realistic render. */
+enum { RAYS_PER_PIXEL = 16, STREAM = 64, GTLAB_SPP = 64 };
 
 const char *const raw_call_names[RAW_CALL_COUNT] = {"Embree rtcOccluded1", "Embree rtcOccluded1M (stream 64)",
                                                      "Embree rtcOccluded8", "Embree rtcOccluded16"};
 
-/* The same rays the AO integrator traces: cosine about the shading normal,
- * from the offset surface point. */
+/* The same rays the AO integrator traces for its first RAYS_PER_PIXEL / 2
+ * samples: per sample one cosine-distributed and one uniform direction about
+ * the shading normal, from the offset surface point, from the same Sobol'
+ * points. Directions under the geometric surface are traced too (the
+ * integrator skips them: that only favours the raw figure). */
 static struct RTCRay *make_rays(const gbuffer *gb, long *count)
 {
     long covered = 0;
@@ -33,10 +38,12 @@ static struct RTCRay *make_rays(const gbuffer *gb, long *count)
         const surface_hit *s = &gb->hits[i];
         frame f = frame_from_normal(s->ns);
         vec3 o = offset_ray_origin(s->p, s->ng);
+        uint32_t seed = pixel_seed(1, (uint32_t)(i % gb->width), (uint32_t)(i / gb->width));
         for (uint32_t k = 0; k < RAYS_PER_PIXEL; ++k) {
             float u[2];
-            sobol_owen_2d((uint32_t)i, k, 0, u);
-            vec3 d = frame_to_world(&f, sample_cosine_hemisphere(u));
+            sobol_owen_2d(seed, k / 2, k % 2, u);
+            vec3 local = k % 2 == 0 ? sample_cosine_hemisphere(u) : sample_uniform_hemisphere(u);
+            vec3 d = frame_to_world(&f, local);
             struct RTCRay *r = &rays[n++];
             memset(r, 0, sizeof *r);
             r->org_x = o.x, r->org_y = o.y, r->org_z = o.z;
@@ -143,7 +150,7 @@ static int measure_gtlab(const embree_scene *es, const gbuffer *gb, int threads,
 {
     ao_settings settings = {INFINITY};
     integrator it = ao_integrator(es, &settings);
-    sampling_settings ss = {RAYS_PER_PIXEL / 2, 0, 1, 0.0, threads}; /* 2 rays per AO sample */
+    sampling_settings ss = {GTLAB_SPP, 0, 1, 0.0, threads};
     *rays_per_s = 0.0;
     for (int k = 0; k < repeats; ++k) {
         mc_film film;

@@ -134,13 +134,11 @@ int reference_merge(const image *inputs, const char *const *names, int count, im
     if (!blocks)
         return gt_error_set(e, "merge", "out of memory");
     int block_count = 0;
-    int rc = add_blocks(&inputs[0], names[0], blocks, &block_count, e);
-    if (rc == 0)
-        rc = mc_film_read_channels(&inputs[0], names[0], &total, e);
-    if (rc != 0) {
+    if (mc_film_read_channels(&inputs[0], names[0], &total, e) != 0) {
         free(blocks);
         return -1;
     }
+    int rc = add_blocks(&inputs[0], names[0], blocks, &block_count, e);
     for (int i = 1; i < count && rc == 0; ++i) {
         mc_film part;
         rc = check_compatible(&inputs[0], &inputs[i], names[i], e);

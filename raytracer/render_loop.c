@@ -2,13 +2,19 @@
 
 #include "core/progress.h"
 
-enum { MAX_QUANTITIES = 32, MIN_ADAPTIVE_SPP = 16 };
+enum { MAX_QUANTITIES = MC_FILM_MAX_QUANTITIES, MIN_ADAPTIVE_SPP = 16 };
 
-static int reached_target(const mc_film *film, int pixel, int taken, const sampling_settings *ss)
+static int reached_target(const mc_pixel *acc, int taken, const sampling_settings *ss)
 {
     if (ss->target_stderr <= 0.0 || taken < MIN_ADAPTIVE_SPP || (taken & (taken - 1)) != 0)
         return 0;
-    return mc_film_stderr(film, 0, pixel) <= ss->target_stderr;
+    return mc_pixel_stderr(acc, 0) <= ss->target_stderr;
+}
+
+static pixel_context prepare_pixel(const surface_hit *surface, uint32_t seed)
+{
+    pixel_context px = {surface, frame_from_normal(surface->ns), offset_ray_origin(surface->p, surface->ng), seed};
+    return px;
 }
 
 /* Samples one pixel to completion; returns the rays traced. */
@@ -16,16 +22,21 @@ static uint64_t render_pixel(const gbuffer *gb, const integrator *it, const samp
                              int x, int y, uint64_t *samples)
 {
     int pixel = y * gb->width + x;
-    sample_point sp = {&gb->hits[pixel], pixel_seed(ss->seed, (uint32_t)x, (uint32_t)y), 0};
-    float values[MAX_QUANTITIES];
+    pixel_context px = prepare_pixel(&gb->hits[pixel], pixel_seed(ss->seed, (uint32_t)x, (uint32_t)y));
+    float values[SAMPLE_BATCH * MAX_QUANTITIES];
+    mc_pixel acc;
+    mc_pixel_clear(&acc, film);
     uint64_t rays = 0;
     int taken = 0;
-    while (taken < ss->spp && !reached_target(film, pixel, taken, ss)) {
-        sp.index = ss->sample_offset + (uint32_t)taken;
-        rays += (uint64_t)it->sample(it, &sp, values);
-        mc_film_add_sample(film, pixel, sp.index, values);
-        ++taken;
+    while (taken < ss->spp && !reached_target(&acc, taken, ss)) {
+        int count = ss->spp - taken < SAMPLE_BATCH ? ss->spp - taken : SAMPLE_BATCH;
+        uint32_t first = ss->sample_offset + (uint32_t)taken;
+        rays += (uint64_t)it->sample_batch(it, &px, first, count, values);
+        for (int k = 0; k < count; ++k)
+            mc_pixel_add_sample(&acc, film, first + (uint32_t)k, &values[k * it->quantity_count]);
+        taken += count;
     }
+    mc_film_add_pixel(film, pixel, &acc);
     *samples += (uint64_t)taken;
     return rays;
 }

@@ -16,32 +16,35 @@
 
 #include <stdint.h>
 
+#include "core/frame.h"
 #include "core/mc_film.h"
 #include "core/sobol.h"
 #include "raytracer/embree_scene.h"
 #include "raytracer/gbuffer.h"
 
-/* Where one sample is drawn: the pixel's surface and its sample stream. */
+/* What every sample of a pixel shares, prepared once per pixel. */
 typedef struct {
     const surface_hit *surface;
-    uint32_t seed;  /* the pixel's seed */
-    uint32_t index; /* the sample's index in the pixel's sequence */
-} sample_point;
+    frame shading;   /* orthonormal frame about the shading normal */
+    vec3 ray_origin; /* the surface point lifted off the surface (offset_ray_origin) */
+    uint32_t seed;   /* the pixel's sequence seed */
+} pixel_context;
 
-/* The next 2-D point of the sample's stream: pair 0, 1, 2, ... in order. */
-static inline void sample_point_2d(const sample_point *sp, uint32_t pair, float u[2])
-{
-    sobol_owen_2d(sp->seed, sp->index, pair, u);
-}
+/* Samples are drawn in batches so an integrator can trace them together (one
+ * Embree stream call) and derive its per-pair scramble seeds once. 16 divides
+ * every power-of-two checkpoint of the stop rule. */
+enum { SAMPLE_BATCH = 16 };
 
 typedef struct integrator {
     const char *label; /* for the progress bar */
     int quantity_count;
     const mc_quantity *quantities;
     const char *normalized_layer; /* a vector layer written normalised, or NULL */
-    /* Fills values[quantity_count] with one sample's estimates; returns the
-     * number of rays it traced. */
-    int (*sample)(const struct integrator *self, const sample_point *sp, float *values);
+    /* Estimates samples first_index .. first_index + count - 1 (count <=
+     * SAMPLE_BATCH) into values[k * quantity_count + q]; returns the number
+     * of rays traced. */
+    int (*sample_batch)(const struct integrator *self, const pixel_context *px, uint32_t first_index, int count,
+                        float *values);
     const embree_scene *scene;
     const void *settings; /* the integrator's own parameters */
 } integrator;

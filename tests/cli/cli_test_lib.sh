@@ -1,0 +1,67 @@
+# Shared by the CLI tests: run gtlab, check what a user sees.
+# Usage: source it with $gtlab and $work set.
+passed=0
+failed=0
+
+fail() { echo "FAIL: $*" >&2; failed=$((failed + 1)); }
+pass() { passed=$((passed + 1)); }
+
+# run ARGS...: runs gtlab, keeping exit status, stdout and stderr.
+run() {
+  "$gtlab" "$@" >"$work/stdout" 2>"$work/stderr"
+  status=$?
+}
+
+# no_leftovers DIR: no temporary file was left behind.
+no_leftovers() {
+  if ls -a "$1" 2>/dev/null | grep -q '\.tmp-'; then
+    fail "temporary files left in $1: $(ls -a "$1" | grep '\.tmp-')"
+  fi
+}
+
+# expect_error NAME PATTERN OUTPUT -- ARGS...: gtlab must exit 1, print exactly
+# one error line "gtlab: <...PATTERN...>" on stderr (warnings about the same
+# input may come before it), and leave no OUTPUT behind.
+expect_error() {
+  local name=$1 pattern=$2 output=$3
+  shift 4
+  rm -f "$output"
+  run "$@"
+  local lines
+  lines=$(grep -vc '^gtlab: warning: ' "$work/stderr")
+  if [ "$status" -ne 1 ]; then
+    fail "$name: exit status $status, expected 1 (stderr: $(head -c 300 "$work/stderr"))"
+  elif [ "$lines" -ne 1 ]; then
+    fail "$name: $lines lines on stderr, expected 1: $(head -c 500 "$work/stderr")"
+  elif ! grep -q "^gtlab: .*$pattern" "$work/stderr"; then
+    fail "$name: stderr does not match 'gtlab: ...$pattern': $(cat "$work/stderr")"
+  elif [ -n "$output" ] && [ -e "$output" ]; then
+    fail "$name: $output was written"
+  else
+    pass
+  fi
+  no_leftovers "$(dirname "${output:-$work/x}")"
+}
+
+# expect_ok NAME ARGS...: gtlab must exit 0.
+expect_ok() {
+  local name=$1
+  shift
+  run "$@"
+  if [ "$status" -ne 0 ]; then
+    fail "$name: exit status $status: $(head -c 500 "$work/stderr")"
+  else
+    pass
+  fi
+}
+
+# json_is KEY OP VALUE FILE: compares a number of gtlab compare --json output
+# (OP is a Python comparison: ==, >, <=, ...).
+json_is() {
+  python3 -c "import json,sys; v=json.load(open(sys.argv[4]))[sys.argv[1]]; sys.exit(0 if eval(f'{v!r} {sys.argv[2]} {sys.argv[3]}') else 1)" "$1" "$2" "$3" "$4"
+}
+
+finish() {
+  echo "$passed passed, $failed failed"
+  [ "$failed" -eq 0 ]
+}

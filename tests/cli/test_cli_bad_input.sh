@@ -1,0 +1,107 @@
+#!/usr/bin/env bash
+# Every bad input gives one line "gtlab: <file>: <problem>", exit status 1, and
+# no output file — or, where the input is usable, a warning and a good render.
+gtlab=$1
+work=$2
+rm -rf "$work" && mkdir -p "$work"
+source "$(dirname "$0")/cli_test_lib.sh"
+out=$work/out.exr
+assimp=/usr/share/assimp/models/glTF2
+
+render_gbuffer() { echo render gbuffer --scene "$1" --width 32 --height 32 -o "$out"; }
+
+# The deliberately broken files of Debian's assimp-testmodels.
+expect_error infinites "BoxWithInfinites.glb: .*not finite" "$out" -- $(render_gbuffer $assimp/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb)
+expect_error index-out-of-range "IndexOutOfRange.gltf: .*out of range" "$out" -- $(render_gbuffer $assimp/IndexOutOfRange/IndexOutOfRange.gltf)
+expect_error missing-bin "BoxTextured.gltf: .*BoxTextured0.bin" "$out" -- $(render_gbuffer $assimp/MissingBin/BoxTextured.gltf)
+expect_error recursive-nodes "RecursiveNodes.gltf: .*cycle" "$out" -- $(render_gbuffer $assimp/RecursiveNodes/RecursiveNodes.gltf)
+expect_error incorrect-vertex-arrays "Cube.gltf: " "$out" -- $(render_gbuffer $assimp/IncorrectVertexArrays/Cube.gltf)
+
+# BoxBadNormals is usable: a warning, then a render with recomputed normals.
+run render gbuffer --scene $assimp/BoxBadNormals-glTF-Binary/BoxBadNormals.glb --width 32 --height 32 -o "$out"
+if [ "$status" -eq 0 ] && grep -q "^gtlab: warning: .*BoxBadNormals.glb: .*normals" "$work/stderr" && [ -s "$out" ]; then
+  pass
+else
+  fail "BoxBadNormals: expected a warning and a render (status $status): $(cat "$work/stderr")"
+fi
+
+# Our own broken files.
+"$gtlab" scene write plane -o "$work/plane.glb" || fail "scene write"
+head -c 300 "$work/plane.glb" >"$work/truncated.glb"
+expect_error truncated-glb "truncated.glb: " "$out" -- $(render_gbuffer "$work/truncated.glb")
+printf '{"asset":{"version":"2.0"},"scenes":[{"nodes":[]}],"scene":0}' >"$work/empty.gltf"
+expect_error empty-scene "empty.gltf: .*no triangles" "$out" -- $(render_gbuffer "$work/empty.gltf")
+printf '{"asset":{"version":"2.0"},"scenes":[{"nodes":[0' >"$work/broken-json.gltf"
+expect_error invalid-json "broken-json.gltf: " "$out" -- $(render_gbuffer "$work/broken-json.gltf")
+expect_error missing-file "nowhere.glb: " "$out" -- $(render_gbuffer "$work/nowhere.glb")
+
+# A triangle given as three floats each, base64: vertex 1 holds a NaN.
+triangle_gltf() { # $1 = base64 of 36 bytes of positions, $2 = mode
+  cat <<JSON
+{"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
+ "meshes":[{"primitives":[{"attributes":{"POSITION":0},"mode":$2}]}],
+ "buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,$1"}],
+ "bufferViews":[{"buffer":0,"byteLength":36}],
+ "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}]}
+JSON
+}
+good=$(printf '\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x80\x3f\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x80\x3f\x00\x00\x00\x00' | base64 -w0)
+nan=$(printf '\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\xc0\x7f\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x80\x3f\x00\x00\x00\x00' | base64 -w0)
+triangle_gltf "$nan" 4 >"$work/nan.gltf"
+expect_error nan-position "nan.gltf: .*not finite" "$out" -- $(render_gbuffer "$work/nan.gltf")
+triangle_gltf "$good" 0 >"$work/points.gltf"
+expect_error points-only "points.gltf: .*no triangles" "$out" -- $(render_gbuffer "$work/points.gltf")
+
+# A texture that is not there: a warning, and the base-colour factor is used.
+cat >"$work/missing-texture.gltf" <<JSON
+{"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
+ "meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],
+ "materials":[{"pbrMetallicRoughness":{"baseColorFactor":[0.5,0.5,0.5,1],"baseColorTexture":{"index":0}}}],
+ "textures":[{"source":0}],"images":[{"uri":"no-such-image.png"}],
+ "buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,$good"}],
+ "bufferViews":[{"buffer":0,"byteLength":36}],
+ "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}]}
+JSON
+run render gbuffer --scene "$work/missing-texture.gltf" --width 32 --height 32 -o "$out"
+if [ "$status" -eq 0 ] && grep -q "^gtlab: warning: .*missing-texture.gltf: .*no-such-image.png" "$work/stderr" && [ -s "$out" ]; then
+  pass
+else
+  fail "missing texture: expected a warning and a render (status $status): $(cat "$work/stderr")"
+fi
+
+# Options and paths.
+expect_error spp-zero "--spp: 0 is out of range" "$out" -- render ao --scene builtin:plane --spp 0 -o "$out"
+expect_error spp-text "--spp: 'many' is not a whole number" "$out" -- render ao --scene builtin:plane --spp many -o "$out"
+expect_error unwritable "/nonexistent/folder/out.exr: cannot write" "" -- render ao --scene builtin:plane -o /nonexistent/folder/out.exr
+mkdir -p "$work/a-folder"
+expect_error output-is-folder "a-folder: cannot write: is a folder" "" -- render ao --scene builtin:plane -o "$work/a-folder"
+expect_error unknown-builtin "builtin:teapot: unknown built-in scene" "$out" -- render ao --scene builtin:teapot -o "$out"
+expect_error unknown-quantity "unknown quantity 'fog'" "$out" -- render fog --scene builtin:plane -o "$out"
+expect_error unknown-verb "frobnicate: unknown verb" "" -- frobnicate
+expect_error unknown-option "render: invalid usage" "$out" -- render ao --scene builtin:plane --colour red -o "$out"
+expect_error normal-mode "--normal: 'bumpy'" "$out" -- render ao --scene builtin:plane --normal bumpy -o "$out"
+
+# Camera JSON.
+printf '{"position":[0,1,5],"target":[0,0' >"$work/cam-malformed.json"
+expect_error camera-malformed "cam-malformed.json: not a JSON object" "$out" -- render ao --scene builtin:plane --camera "$work/cam-malformed.json" -o "$out"
+printf '{"position":[0,1,5],"target":[0,0,0],"yfov_deg":45,"width":64}' >"$work/cam-no-height.json"
+expect_error camera-missing-key 'cam-no-height.json: camera JSON lacks "height"' "$out" -- render ao --scene builtin:plane --camera "$work/cam-no-height.json" -o "$out"
+printf '{"position":[0,1,5],"target":[0,1,5],"yfov_deg":45,"width":64,"height":64}' >"$work/cam-degenerate.json"
+expect_error camera-degenerate "cam-degenerate.json: camera position and target coincide" "$out" -- render ao --scene builtin:plane --camera "$work/cam-degenerate.json" -o "$out"
+printf '{"position":[0,1,5],"target":[0,0,0],"yfov_deg":190,"width":64,"height":64}' >"$work/cam-fov.json"
+expect_error camera-fov "cam-fov.json: yfov_deg must be in" "$out" -- render ao --scene builtin:plane --camera "$work/cam-fov.json" -o "$out"
+expect_error camera-missing "no-camera.json: cannot open" "$out" -- render ao --scene builtin:plane --camera "$work/no-camera.json" -o "$out"
+
+# compare and merge.
+expect_ok small-render render ao --scene builtin:plane --width 16 --height 16 --spp 4 -o "$work/small.exr"
+expect_ok other-render render ao --scene builtin:plane --width 24 --height 24 --spp 4 -o "$work/other.exr"
+expect_error compare-size "other.exr: size 24x24 differs" "" -- compare "$work/small.exr" "$work/other.exr"
+expect_error compare-channel "fog.V" "" -- compare "$work/small.exr" "$work/small.exr" --channel fog.V
+expect_error compare-missing "absent.exr: " "" -- compare "$work/small.exr" "$work/absent.exr"
+echo "not an exr" >"$work/fake.exr"
+expect_error compare-not-exr "fake.exr: " "" -- compare "$work/small.exr" "$work/fake.exr"
+expect_error merge-overlap "small.exr: .*counted twice" "$work/merged.exr" -- merge "$work/small.exr" "$work/small.exr" -o "$work/merged.exr"
+expect_error merge-different "other.exr: size 24x24 differs" "$work/merged.exr" -- merge "$work/small.exr" "$work/other.exr" -o "$work/merged.exr"
+expect_ok gbuffer-render render gbuffer --scene builtin:plane --width 16 --height 16 -o "$work/g.exr"
+expect_error merge-gbuffer "g.exr: no Monte Carlo accumulator" "$work/merged.exr" -- merge "$work/g.exr" "$work/small.exr" -o "$work/merged.exr"
+finish

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# What a user does with gtlab, end to end: help, scenes, renders, the camera
+# written beside them, merge, compare; and the promises: same bits for any
+# thread count, merge of halves = the whole, a written .glb renders like the
+# built-in scene it came from.
+gtlab=$1
+work=$2
+rm -rf "$work" && mkdir -p "$work"
+source "$(dirname "$0")/cli_test_lib.sh"
+
+for verb in scene render merge compare bench all; do
+  run "$verb" --help
+  if [ "$status" -eq 0 ] && grep -q "usage: gtlab $verb" "$work/stdout"; then pass; else fail "$verb --help"; fi
+done
+expect_ok help --help
+
+run scene list
+for name in plane sphere-on-plane corner menger boxes cornell; do
+  if grep -q "^$name" "$work/stdout"; then pass; else fail "scene list lacks $name"; fi
+done
+
+# Same inputs and seed: the same file, byte for byte, with 1 and 2 threads.
+common=(--scene builtin:cornell --width 40 --height 30 --spp 32 --seed 5)
+expect_ok render-1-thread render ao "${common[@]}" --threads 1 -o "$work/t1.exr"
+expect_ok render-2-threads render ao "${common[@]}" --threads 2 -o "$work/t2.exr"
+if cmp -s "$work/t1.exr" "$work/t2.exr"; then pass; else fail "1 and 2 threads give different files"; fi
+
+# The camera used is written beside the output, and reproduces the render.
+if [ -s "$work/t1.camera.json" ]; then pass; else fail "no t1.camera.json"; fi
+expect_ok render-with-camera render ao --scene builtin:cornell --camera "$work/t1.camera.json" --spp 32 --seed 5 -o "$work/t3.exr"
+run compare "$work/t1.exr" "$work/t3.exr" --json
+json_is max_abs == 0 "$work/stdout" && pass || fail "render from the written camera differs: $(cat "$work/stdout")"
+
+# Two halves merged = the whole render.
+expect_ok half-1 render ao "${common[@]}" --spp 16 -o "$work/h1.exr"
+expect_ok half-2 render ao "${common[@]}" --spp 16 --sample-offset 16 -o "$work/h2.exr"
+expect_ok merge merge "$work/h1.exr" "$work/h2.exr" -o "$work/merged.exr"
+for channel in ao.V ao.V.stderr ao.Vuniform bent.X; do
+  run compare "$work/t1.exr" "$work/merged.exr" --channel $channel --json
+  json_is max_abs == 0 "$work/stdout" && pass || fail "merged $channel differs from the whole: $(cat "$work/stdout" "$work/stderr")"
+done
+
+# A built-in scene written as .glb renders as the built-in does.
+expect_ok scene-write scene write sphere-on-plane -o "$work/sop.glb"
+expect_ok render-builtin render ao --scene builtin:sphere-on-plane --width 48 --height 48 --spp 16 -o "$work/b.exr"
+expect_ok render-glb render ao --scene "$work/sop.glb" --width 48 --height 48 --spp 16 -o "$work/g.exr"
+run compare "$work/b.exr" "$work/g.exr" --json
+json_is max_abs == 0 "$work/stdout" && pass || fail "glb render differs from built-in: $(cat "$work/stdout")"
+
+# compare: identical files, heatmap, noise floor.
+run compare "$work/t1.exr" "$work/t1.exr" --json --noise-floor --heatmap "$work/heat.png"
+json_is ssim == 1 "$work/stdout" && pass || fail "self-compare SSIM is not 1: $(cat "$work/stdout")"
+json_is noise_floor_dssim '>' 0 "$work/stdout" && pass || fail "noise floor is not positive"
+[ -s "$work/heat.png" ] && pass || fail "no heatmap written"
+no_leftovers "$work"
+finish
