@@ -8,27 +8,14 @@ enum { AO_V, AO_VUNIFORM, BENT_X, BENT_Y, BENT_Z, AO_QUANTITY_COUNT };
 static const mc_quantity ao_quantities[AO_QUANTITY_COUNT] = {
     {"ao.V", 0}, {"ao.Vuniform", 0}, {"bent.X", 0}, {"bent.Y", 0}, {"bent.Z", 0}};
 
-/* An occlusion ray from the pixel's origin along w. */
-static void set_ray(struct RTCRay *r, vec3 o, vec3 w, float t_max)
-{
-    r->org_x = o.x, r->org_y = o.y, r->org_z = o.z;
-    r->dir_x = w.x, r->dir_y = w.y, r->dir_z = w.z;
-    r->tnear = 0.0f;
-    r->tfar = t_max;
-    r->time = 0.0f;
-    r->mask = 0xffffffffu;
-    r->id = 0;
-    r->flags = 0;
-}
-
 /* Per sample: ray 2k is cosine-distributed (pair 0), ray 2k+1 uniform
  * (pair 1). A direction below the geometric surface is not traced: V = 0. */
 static int ao_sample_batch(const integrator *self, const pixel_context *px, uint32_t first_index, int count,
                            float *values)
 {
     const ao_settings *settings = self->settings;
-    const sobol_pair_seeds cosine_pair = sobol_owen_pair_seeds(px->seed, 0);
-    const sobol_pair_seeds uniform_pair = sobol_owen_pair_seeds(px->seed, 1);
+    const sample_pair_seeds cosine_pair = sample_pair_seeds_for(px, 0);
+    const sample_pair_seeds uniform_pair = sample_pair_seeds_for(px, 1);
     vec3 directions[2 * SAMPLE_BATCH];
     int traced_as[2 * SAMPLE_BATCH]; /* index into rays, or -1: under the surface */
     _Alignas(16) struct RTCRay rays[2 * SAMPLE_BATCH];
@@ -36,13 +23,13 @@ static int ao_sample_batch(const integrator *self, const pixel_context *px, uint
     for (int r = 0; r < 2 * count; ++r) {
         float u[2];
         uint32_t index = first_index + (uint32_t)(r / 2);
-        sobol_owen_point(r % 2 == 0 ? &cosine_pair : &uniform_pair, index, u);
+        sample_pair_point(r % 2 == 0 ? &cosine_pair : &uniform_pair, index, u);
         vec3 local = r % 2 == 0 ? sample_cosine_hemisphere(u) : sample_uniform_hemisphere(u);
         directions[r] = frame_to_world(&px->shading, local);
         traced_as[r] = -1;
         if (v3_dot(directions[r], px->surface->ng) > 0.0f) {
             traced_as[r] = (int)ray_count;
-            set_ray(&rays[ray_count++], px->ray_origin, directions[r], settings->max_distance);
+            embree_ray_init(&rays[ray_count++], px->ray_origin, directions[r], settings->max_distance);
         }
     }
     embree_unoccluded_stream(self->scene, rays, ray_count);

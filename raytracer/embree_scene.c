@@ -105,18 +105,7 @@ int embree_closest_hit(const embree_scene *es, vec3 o, vec3 d, float t_max, surf
     struct RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     struct RTCRayHit rh;
-    rh.ray.org_x = o.x;
-    rh.ray.org_y = o.y;
-    rh.ray.org_z = o.z;
-    rh.ray.dir_x = d.x;
-    rh.ray.dir_y = d.y;
-    rh.ray.dir_z = d.z;
-    rh.ray.tnear = 0.0f;
-    rh.ray.tfar = t_max;
-    rh.ray.time = 0.0f;
-    rh.ray.mask = 0xffffffffu;
-    rh.ray.id = 0;
-    rh.ray.flags = 0;
+    embree_ray_init(&rh.ray, o, d, t_max);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(es->rtc, &context, &rh);
@@ -133,6 +122,18 @@ vec3 offset_ray_origin(vec3 p, vec3 ng)
      * safely above it and still sub-micron for scenes of metre scale. */
     float offset = 32.0f * FLT_EPSILON * (1.0f + v3_max_abs_component(p));
     return v3_add(p, v3_scale(ng, offset));
+}
+
+void embree_ray_init(struct RTCRay *r, vec3 o, vec3 d, float t_max)
+{
+    r->org_x = o.x, r->org_y = o.y, r->org_z = o.z;
+    r->dir_x = d.x, r->dir_y = d.y, r->dir_z = d.z;
+    r->tnear = 0.0f;
+    r->tfar = t_max;
+    r->time = 0.0f;
+    r->mask = 0xffffffffu;
+    r->id = 0;
+    r->flags = 0;
 }
 
 void embree_unoccluded_stream(const embree_scene *es, struct RTCRay *rays, unsigned count)

@@ -41,6 +41,9 @@ int embree_closest_hit(const embree_scene *es, vec3 o, vec3 d, float t_max, surf
  * surface it leaves. */
 vec3 offset_ray_origin(vec3 p, vec3 ng);
 
+/* A ray o + t d, t in [0, t_max], in Embree's layout. */
+void embree_ray_init(struct RTCRay *r, vec3 o, vec3 d, float t_max);
+
 /* Visibility of a stream of incoherent rays, in one Embree call
  * (rtcOccluded1M): afterwards rays[i].tfar < 0 where ray i was blocked,
  * i.e. something lies within (tnear, tfar]. */

@@ -35,21 +35,14 @@ static struct RTCRay *make_rays(const gbuffer *gb, long *count)
     for (int i = 0; i < gb->width * gb->height; ++i) {
         if (!gb->mask[i])
             continue;
-        const surface_hit *s = &gb->hits[i];
-        frame f = frame_from_normal(s->ns);
-        vec3 o = offset_ray_origin(s->p, s->ng);
-        uint32_t seed = pixel_seed(1, (uint32_t)(i % gb->width), (uint32_t)(i / gb->width));
+        pixel_context px = pixel_context_prepare(&gb->hits[i], pixel_seed(1, (uint32_t)(i % gb->width),
+                                                                          (uint32_t)(i / gb->width)));
+        const sample_pair_seeds pairs[2] = {sample_pair_seeds_for(&px, 0), sample_pair_seeds_for(&px, 1)};
         for (uint32_t k = 0; k < RAYS_PER_PIXEL; ++k) {
             float u[2];
-            sobol_owen_2d(seed, k / 2, k % 2, u);
+            sample_pair_point(&pairs[k % 2], k / 2, u);
             vec3 local = k % 2 == 0 ? sample_cosine_hemisphere(u) : sample_uniform_hemisphere(u);
-            vec3 d = frame_to_world(&f, local);
-            struct RTCRay *r = &rays[n++];
-            memset(r, 0, sizeof *r);
-            r->org_x = o.x, r->org_y = o.y, r->org_z = o.z;
-            r->dir_x = d.x, r->dir_y = d.y, r->dir_z = d.z;
-            r->tfar = INFINITY;
-            r->mask = 0xffffffffu;
+            embree_ray_init(&rays[n++], px.ray_origin, frame_to_world(&px.shading, local), INFINITY);
         }
     }
     *count = n;

@@ -11,9 +11,12 @@ static int reached_target(const mc_pixel *acc, int taken, const sampling_setting
     return mc_pixel_stderr(acc, 0) <= ss->target_stderr;
 }
 
-static pixel_context prepare_pixel(const surface_hit *surface, uint32_t seed)
+pixel_context pixel_context_prepare(const surface_hit *surface, uint32_t seed)
 {
-    pixel_context px = {surface, frame_from_normal(surface->ns), offset_ray_origin(surface->p, surface->ng), seed};
+    pixel_context px = {surface,
+                        frame_from_normal(surface->ns),
+                        offset_ray_origin(surface->p, surface->ng),
+                        {hash_combine(seed, 0u), hash_combine(seed, 1u)}};
     return px;
 }
 
@@ -22,7 +25,7 @@ static uint64_t render_pixel(const gbuffer *gb, const integrator *it, const samp
                              int x, int y, uint64_t *samples)
 {
     int pixel = y * gb->width + x;
-    pixel_context px = prepare_pixel(&gb->hits[pixel], pixel_seed(ss->seed, (uint32_t)x, (uint32_t)y));
+    pixel_context px = pixel_context_prepare(&gb->hits[pixel], pixel_seed(ss->seed, (uint32_t)x, (uint32_t)y));
     float values[SAMPLE_BATCH * MAX_QUANTITIES];
     mc_pixel acc;
     mc_pixel_clear(&acc, film);

@@ -27,8 +27,33 @@ typedef struct {
     const surface_hit *surface;
     frame shading;   /* orthonormal frame about the shading normal */
     vec3 ray_origin; /* the surface point lifted off the surface (offset_ray_origin) */
-    uint32_t seed;   /* the pixel's sequence seed */
+    uint32_t half_seed[2]; /* seeds of the even- and odd-sample sequences */
 } pixel_context;
+
+/* The context of a pixel whose sequence seed is pixel_seed(seed, x, y). */
+pixel_context pixel_context_prepare(const surface_hit *surface, uint32_t seed);
+
+/* The two halves of a pixel's samples come from two independently scrambled
+ * Sobol' sequences: sample i is point i / 2 of sequence i mod 2. Within one
+ * sequence consecutive points are anti-correlated (each fills the strata the
+ * others left), so halves taken from a single sequence would not be
+ * independent estimates, and the noise floor (DSSIM between the halves)
+ * would be wrong. Each half stays a well-stratified sequence of its own. */
+typedef struct {
+    sobol_pair_seeds half[2];
+} sample_pair_seeds;
+
+static inline sample_pair_seeds sample_pair_seeds_for(const pixel_context *px, uint32_t pair)
+{
+    sample_pair_seeds s = {{sobol_owen_pair_seeds(px->half_seed[0], pair), sobol_owen_pair_seeds(px->half_seed[1], pair)}};
+    return s;
+}
+
+/* The 2-D point of sample `index` in a dimension pair, in [0,1)^2. */
+static inline void sample_pair_point(const sample_pair_seeds *s, uint32_t index, float u[2])
+{
+    sobol_owen_point(&s->half[index & 1u], index >> 1, u);
+}
 
 /* Samples are drawn in batches so an integrator can trace them together (one
  * Embree stream call) and derive its per-pair scramble seeds once. 16 divides

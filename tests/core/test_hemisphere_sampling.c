@@ -129,8 +129,32 @@ static void test_concentric_disc(void)
     }
 }
 
+/* The extreme inputs a 24-bit sample can take: no direction may fall on the
+ * horizon (z = 0), where it would graze the surface it leaves and a renderer
+ * could not tell whether it is above or below it. */
+static void test_never_on_horizon(void)
+{
+    const float edges[] = {0.0f, 0x1p-24f, 0.5f, 1.0f - 0x1p-24f};
+    int bad = 0;
+    for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < 4; ++j) {
+            const float u[2] = {edges[i], edges[j]};
+            vec3 c = sample_cosine_hemisphere(u), w = sample_uniform_hemisphere(u);
+            bad += !(c.z > 0.0f) + !(w.z > 0.0f);
+            bad += fabsf(v3_length(c) - 1.0f) > 1e-6f || fabsf(v3_length(w) - 1.0f) > 1e-6f;
+        }
+    }
+    /* And the whole rim of the concentric map, where rounding bites. */
+    for (uint32_t k = 0; k < (1u << 16); ++k) {
+        const float u[2] = {1.0f - 0x1p-24f, (float)k / 65536.0f};
+        bad += !(sample_cosine_hemisphere(u).z > 0.0f);
+    }
+    CHECK_MSG(bad == 0, "%d edge inputs on the horizon or not unit length", bad);
+}
+
 int main(void)
 {
+    test_never_on_horizon();
     check_hemisphere("cosine", sample_cosine_hemisphere, 2.0 / 3.0, 0.5, cosine_cdf);
     check_hemisphere("uniform", sample_uniform_hemisphere, 0.5, 1.0 / 3.0, uniform_cdf);
     test_concentric_disc();
