@@ -21,9 +21,10 @@ int all_stage_ray_throughput(all_context *ctx, gt_error *e)
         return -1;
     report_heading(ctx->doc, 2, "Ray throughput");
     report_paragraph(ctx->doc,
-                     "Occlusion rays per second on %s (%ld incoherent cosine-distributed rays per pass, the best "
-                     "of several passes), for raw Embree calls on a prepared ray array and for gtlab's AO "
-                     "reference loop end to end (sampling, ray set-up, Embree, exact accumulation). Same run, "
+                     "Occlusion rays per second on %s, the best of several passes: raw Embree calls on a prepared "
+                     "array of %ld rays — the very rays the AO reference traces, incoherent, per sample one "
+                     "cosine- and one uniform-distributed direction — and gtlab's AO reference loop end to end "
+                     "at 64 samples per pixel (sampling, ray set-up, Embree, exact accumulation). Same run, "
                      "same machine: 'gtlab bench rays' measures the same.",
                      spec, b.rays_per_pass);
     static const char *const headers[3] = {"rays/s", "1 thread", "threads"};

@@ -14,6 +14,7 @@
 #include "core/exr_io.h"
 #include "core/image_io.h"
 #include "metrics/image_error.h"
+#include "metrics/image_pair.h"
 #include "metrics/ssim.h"
 
 #define HEATMAP_PERCENTILE 99.0 /* the heatmap's full scale */

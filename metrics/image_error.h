@@ -1,7 +1,5 @@
 /* Pixelwise error statistics between two images of one quantity (RMSE, mean
- * and maximum absolute error), and what every comparison of two gtlab EXR
- * images sets up first: the channel compared, the mask both images agree on,
- * and the checks that make the pair comparable (same size, finite values).
+ * and maximum absolute error).
  *
  * Masks: a pixel is inside a mask when mask[i] >= 0.5 (gtlab masks hold
  * exactly 0 or 1; the threshold gives other coverage masks the majority
@@ -39,31 +37,5 @@ int image_error_compute(const float *a, const float *b, const float *mask, int w
  * e = "<what>: ..." (no value inside the mask, out of memory). */
 int metrics_percentile(const float *values, const float *mask, size_t count, double p, const char *what,
                        float *out, gt_error *e);
-
-/* The mask channel of gtlab images (DESIGN.md: 1 where a surface was hit). */
-#define METRICS_MASK_CHANNEL "mask.A"
-
-/* Channels compared when none is named, in order of preference; NULL-terminated. */
-extern const char *const metrics_default_channels[];
-
-/* One channel of two images, ready to compare. */
-typedef struct {
-    char channel[IMAGE_NAME_MAX];
-    int width, height;
-    const float *a, *b; /* the channel's planes, owned by the images */
-    float *mask;        /* owned: 1 where both images' mask.A is inside (an image
-                           without mask.A counts as all inside), else 0 */
-} metrics_pair;
-
-/* Sets up the comparison of image a (named what_a in errors, usually its
- * path) with image b. `channel` NULL chooses the first of
- * metrics_default_channels present in both. Returns 0, or -1 with e naming
- * the file at fault: sizes differ; the channel is missing (the message lists
- * the file's channels); a value of the channel is NaN or infinite (every
- * pixel is checked, since SSIM windows reach outside the mask); out of memory.
- * On failure nothing needs freeing. */
-int metrics_pair_init(metrics_pair *pair, const image *a, const char *what_a, const image *b, const char *what_b,
-                      const char *channel, gt_error *e);
-void metrics_pair_free(metrics_pair *pair);
 
 #endif

@@ -8,24 +8,27 @@ enum { AO_V, AO_VUNIFORM, BENT_X, BENT_Y, BENT_Z, AO_QUANTITY_COUNT };
 static const mc_quantity ao_quantities[AO_QUANTITY_COUNT] = {
     {"ao.V", 0}, {"ao.Vuniform", 0}, {"bent.X", 0}, {"bent.Y", 0}, {"bent.Z", 0}};
 
-/* Per sample: ray 2k is cosine-distributed (pair 0), ray 2k+1 uniform
- * (pair 1). A direction below the geometric surface is not traced: V = 0. */
+/* Per sample: ray 2k is cosine-distributed, ray 2k+1 uniform, both mapped
+ * from the sample's one 2-D point (pair 0). Each estimator on its own is a
+ * scrambled-Sobol' estimator of its integral; that the two are correlated
+ * with each other matters to neither. A direction below the geometric
+ * surface is not traced: V = 0. */
 static int ao_sample_batch(const integrator *self, const pixel_context *px, uint32_t first_index, int count,
                            float *values)
 {
     const ao_settings *settings = self->settings;
-    const sample_pair_seeds cosine_pair = sample_pair_seeds_for(px, 0);
-    const sample_pair_seeds uniform_pair = sample_pair_seeds_for(px, 1);
+    const sample_pair_seeds pair = sample_pair_seeds_for(px, 0);
     vec3 directions[2 * SAMPLE_BATCH];
     int traced_as[2 * SAMPLE_BATCH]; /* index into rays, or -1: under the surface */
     _Alignas(16) struct RTCRay rays[2 * SAMPLE_BATCH];
     unsigned ray_count = 0;
-    for (int r = 0; r < 2 * count; ++r) {
+    for (int k = 0; k < count; ++k) {
         float u[2];
-        uint32_t index = first_index + (uint32_t)(r / 2);
-        sample_pair_point(r % 2 == 0 ? &cosine_pair : &uniform_pair, index, u);
-        vec3 local = r % 2 == 0 ? sample_cosine_hemisphere(u) : sample_uniform_hemisphere(u);
-        directions[r] = frame_to_world(&px->shading, local);
+        sample_pair_point(&pair, first_index + (uint32_t)k, u);
+        directions[2 * k] = frame_to_world(&px->shading, sample_cosine_hemisphere(u));
+        directions[2 * k + 1] = frame_to_world(&px->shading, sample_uniform_hemisphere(u));
+    }
+    for (int r = 0; r < 2 * count; ++r) {
         traced_as[r] = -1;
         if (v3_dot(directions[r], px->surface->ng) > 0.0f) {
             traced_as[r] = (int)ray_count;

@@ -37,10 +37,10 @@ static struct RTCRay *make_rays(const gbuffer *gb, long *count)
             continue;
         pixel_context px = pixel_context_prepare(&gb->hits[i], pixel_seed(1, (uint32_t)(i % gb->width),
                                                                           (uint32_t)(i / gb->width)));
-        const sample_pair_seeds pairs[2] = {sample_pair_seeds_for(&px, 0), sample_pair_seeds_for(&px, 1)};
+        const sample_pair_seeds pair = sample_pair_seeds_for(&px, 0);
         for (uint32_t k = 0; k < RAYS_PER_PIXEL; ++k) {
             float u[2];
-            sample_pair_point(&pairs[k % 2], k / 2, u);
+            sample_pair_point(&pair, k / 2, u);
             vec3 local = k % 2 == 0 ? sample_cosine_hemisphere(u) : sample_uniform_hemisphere(u);
             embree_ray_init(&rays[n++], px.ray_origin, frame_to_world(&px.shading, local), INFINITY);
         }

@@ -1,7 +1,8 @@
 /* Throughput measurements for `gtlab bench rays`: raw Embree occlusion rays
- * (single, stream and packet calls) on a fixed set of incoherent
- * cosine-distributed rays leaving the visible surfaces, against gtlab's own AO
- * reference loop on the same scene and camera, each with 1 and N threads. */
+ * (single, stream and packet calls) on a prepared array of the rays the AO
+ * reference traces (incoherent, cosine- and uniform-distributed, leaving the
+ * visible surfaces), against gtlab's own AO reference loop on the same scene
+ * and camera, each with 1 and N threads. */
 #ifndef GTLAB_RAYTRACER_RAY_THROUGHPUT_H
 #define GTLAB_RAYTRACER_RAY_THROUGHPUT_H
 

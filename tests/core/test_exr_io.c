@@ -4,15 +4,14 @@
  * display windows) made by OpenImageIO and read back; bad files and failed
  * writes give one-line errors naming the file and leave nothing behind. */
 #define _POSIX_C_SOURCE 200809L
-#include <dirent.h>
 #include <float.h>
 #include <stdint.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include "core/exr_io.h"
 #include "tests/check.h"
+#include "tests/test_files.h"
 #include "tests/core/oiio_test_helpers.h"
 
 static char test_dir[1024];
@@ -24,27 +23,6 @@ static const char *in_test_dir(const char *name)
     char *p = paths[next++ % 8];
     snprintf(p, sizeof paths[0], "%s/%s", test_dir, name);
     return p;
-}
-
-static int file_exists(const char *path)
-{
-    struct stat st;
-    return stat(path, &st) == 0;
-}
-
-/* Files in the test folder that look like leftovers of a write: ours
- * (".name.tmp-<pid>") or OpenEXR's own ("tmp.<pid>name"). */
-static int leftover_temp_files(void)
-{
-    DIR *dir = opendir(test_dir);
-    if (!dir)
-        return -1;
-    int count = 0;
-    for (struct dirent *d; (d = readdir(dir));)
-        if (strstr(d->d_name, ".tmp-") || strncmp(d->d_name, "tmp.", 4) == 0)
-            ++count;
-    closedir(dir);
-    return count;
 }
 
 static size_t read_bytes(const char *path, unsigned char **data)
@@ -360,6 +338,6 @@ int main(void)
     test_bad_files();
     test_failed_writes();
 
-    CHECK_MSG(leftover_temp_files() == 0, "temporary files left in %s", test_dir);
+    CHECK_MSG(leftover_temp_files_in(test_dir) == 0, "temporary files left in %s", test_dir);
     return check_report("test_exr_io");
 }

@@ -4,12 +4,11 @@
  * against matplotlib's published end colours, masked pixels black, errors
  * naming the file and leaving nothing behind. */
 #define _POSIX_C_SOURCE 200809L
-#include <dirent.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "core/image_io.h"
 #include "tests/check.h"
+#include "tests/test_files.h"
 #include "tests/core/oiio_test_helpers.h"
 
 static char test_dir[1024];
@@ -19,25 +18,6 @@ static const char *in_test_dir(const char *name)
     static char path[1200];
     snprintf(path, sizeof path, "%s/%s", test_dir, name);
     return path;
-}
-
-static int file_exists(const char *path)
-{
-    struct stat st;
-    return stat(path, &st) == 0;
-}
-
-static int leftover_temp_files(void)
-{
-    DIR *dir = opendir(test_dir);
-    if (!dir)
-        return -1;
-    int count = 0;
-    for (struct dirent *d; (d = readdir(dir));)
-        if (strstr(d->d_name, ".tmp-"))
-            ++count;
-    closedir(dir);
-    return count;
 }
 
 /* The sRGB encoding (IEC 61966-2-1) of a linear value in [0, 1], as 8 bits. */
@@ -202,6 +182,6 @@ int main(void)
     test_heatmap("viridis", (const int[3]){68, 1, 84}, (const int[3]){253, 231, 37});
     test_errors();
 
-    CHECK_MSG(leftover_temp_files() == 0, "temporary files left in %s", test_dir);
+    CHECK_MSG(leftover_temp_files_in(test_dir) == 0, "temporary files left in %s", test_dir);
     return check_report("test_image_io");
 }

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "metrics/image_error.h"
+#include "metrics/image_pair.h"
 #include "tests/check.h"
 
 /* Differences a - b over 6 pixels: 3, -4, 0, 1, -1, 0 (a 3x2 image). */
