@@ -60,14 +60,19 @@ int mc_film_normalize_layer(mc_film *film, const char *layer)
  * inverse_step = 2^-k. Multiplying by powers of two is exact; adding and
  * subtracting 1.5 * 2^52 rounds to the nearest integer (ties to even) in
  * round-to-nearest arithmetic, for |v / step| < 2^51. */
-static double round_to_grid(double v, double step, double inverse_step)
-{
-    double units = v * inverse_step;
-    const double magic = 0x1.8p52;
-    double rounded = fabs(units) < 0x1p51 ? (units + magic) - magic : rint(units);
-    return rounded * step;
-}
+/* v rounded to the nearest multiple of the grid spacing `step` = 2^k, given
+ * inverse_step = 2^-k. Multiplying by powers of two is exact, and rint rounds
+ * to the nearest integer (ties to even). */
+static double round_to_grid(double v, double step, double inverse_step) { return rint(v * inverse_step) * step; }
 
+/* The same, faster, for |v / step| < 2^51: adding and subtracting 1.5 * 2^52
+ * rounds to the nearest integer in round-to-nearest arithmetic, and the
+ * compiler can vectorise it. */
+static double round_to_grid_fast(double v, double step, double inverse_step)
+{
+    const double magic = 0x1.8p52;
+    return ((v * inverse_step + magic) - magic) * step;
+}
 void mc_pixel_clear(mc_pixel *acc, const mc_film *film)
 {
     size_t n = sizeof(double) * (size_t)film->quantity_count;
@@ -79,16 +84,72 @@ void mc_pixel_clear(mc_pixel *acc, const mc_film *film)
 
 void mc_pixel_add_sample(mc_pixel *acc, const mc_film *film, uint32_t sample_index, const float *values)
 {
-    int even = (sample_index & 1u) == 0;
-    for (int q = 0; q < film->quantity_count; ++q) {
-        const mc_grid *g = &film->grids[q];
-        double v = round_to_grid(values[q], g->step, g->inverse_step);
-        acc->sum[q] += v;
-        acc->sum_sq[q] += round_to_grid(v * v, g->square_step, g->inverse_square_step);
-        acc->sum_even[q] += even ? v : 0.0;
+    mc_pixel_add_samples(acc, film, sample_index, 1, values);
+}
+
+/* The sums of one quantity over a run of samples: vectorised with AVX2 where
+ * the CPU has it. Rounding onto the grid is exact IEEE arithmetic and the
+ * sums are exact, so every clone and every order gives the same bits. */
+#if defined(__x86_64__) && defined(__GNUC__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+static void sum_run(const float *restrict column, const double *restrict even, int count, const mc_grid *g,
+                    double sums[3])
+{
+    /* Independent lanes the compiler keeps in vector registers; regrouping
+     * the sums is allowed because every partial sum is exact. */
+    enum { LANES = 4 };
+    double sum[LANES] = {0}, sum_sq[LANES] = {0}, sum_even[LANES] = {0};
+    float largest = 0.0f;
+    for (int k = 0; k < count; ++k)
+        largest = fabsf(column[k]) > largest ? fabsf(column[k]) : largest;
+    int k = 0;
+    if ((double)largest * g->inverse_step < 0x1p25) { /* squares stay below 2^51 grid units too */
+        for (; k + LANES <= count; k += LANES) {
+            for (int l = 0; l < LANES; ++l) {
+                double v = round_to_grid_fast(column[k + l], g->step, g->inverse_step);
+                sum[l] += v;
+                sum_sq[l] += round_to_grid_fast(v * v, g->square_step, g->inverse_square_step);
+                sum_even[l] += even[k + l] * v;
+            }
+        }
     }
-    acc->count += 1;
-    acc->count_even += (uint32_t)even;
+    for (; k < count; ++k) {
+        double v = round_to_grid(column[k], g->step, g->inverse_step);
+        sum[0] += v;
+        sum_sq[0] += round_to_grid(v * v, g->square_step, g->inverse_square_step);
+        sum_even[0] += even[k] * v;
+    }
+    sums[0] = (sum[0] + sum[1]) + (sum[2] + sum[3]);
+    sums[1] = (sum_sq[0] + sum_sq[1]) + (sum_sq[2] + sum_sq[3]);
+    sums[2] = (sum_even[0] + sum_even[1]) + (sum_even[2] + sum_even[3]);
+}
+
+void mc_pixel_add_samples(mc_pixel *acc, const mc_film *film, uint32_t first_index, int count, const float *values)
+{
+    enum { RUN = 64 };
+    float column[RUN];
+    double even[RUN];
+    for (int start = 0; start < count; start += RUN) {
+        int n = count - start < RUN ? count - start : RUN;
+        uint32_t evens = 0;
+        for (int k = 0; k < n; ++k) {
+            int is_even = ((first_index + (uint32_t)(start + k)) & 1u) == 0;
+            even[k] = is_even;
+            evens += (uint32_t)is_even;
+        }
+        for (int q = 0; q < film->quantity_count; ++q) {
+            for (int k = 0; k < n; ++k)
+                column[k] = values[(start + k) * film->quantity_count + q];
+            double sums[3];
+            sum_run(column, even, n, &film->grids[q], sums);
+            acc->sum[q] += sums[0];
+            acc->sum_sq[q] += sums[1];
+            acc->sum_even[q] += sums[2];
+        }
+        acc->count += (uint32_t)n;
+        acc->count_even += evens;
+    }
 }
 
 /* sqrt(s^2 / n) with the unbiased sample variance s^2 from the sums. */

@@ -96,6 +96,21 @@ void sobol_owen_point(const sobol_pair_seeds *seeds, uint32_t index, float out[2
     out[1] = unit_float(y);
 }
 
+/* Vectorised with AVX2 where the CPU has it (the clone is chosen at load
+ * time); the arithmetic is integer, so both clones give identical results. */
+#if defined(__x86_64__) && defined(__GNUC__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+void sobol_owen_points(const sobol_pair_seeds *seeds, uint32_t first, int count, float *u0, float *u1)
+{
+    const uint32_t shuffle_seed = seeds->shuffle, x_seed = seeds->x, y_seed = seeds->y;
+    for (int k = 0; k < count; ++k) {
+        uint32_t shuffled = reverse_bits(laine_karras_permutation(reverse_bits(first + (uint32_t)k), shuffle_seed));
+        u0[k] = unit_float(reverse_bits(laine_karras_permutation(shuffled, x_seed)));
+        u1[k] = unit_float(reverse_bits(laine_karras_permutation(sobol_dimension1_reversed(shuffled), y_seed)));
+    }
+}
+
 void sobol_owen_2d(uint32_t seed, uint32_t index, uint32_t pair, float out[2])
 {
     sobol_pair_seeds seeds = sobol_owen_pair_seeds(seed, pair);

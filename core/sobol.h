@@ -30,6 +30,10 @@ typedef struct {
 sobol_pair_seeds sobol_owen_pair_seeds(uint32_t seed, uint32_t pair);
 /* The 2-D point `index` of a dimension pair, in [0,1)^2. */
 void sobol_owen_point(const sobol_pair_seeds *seeds, uint32_t index, float out[2]);
+/* Points first .. first + count - 1 of a dimension pair, as two arrays of
+ * coordinates: the same values as sobol_owen_point, computed several at a
+ * time (integer arithmetic only, so every CPU gives the same bits). */
+void sobol_owen_points(const sobol_pair_seeds *seeds, uint32_t first, int count, float *u0, float *u1);
 /* The same in one call: point `index` of pair `pair` for a pixel seed. */
 void sobol_owen_2d(uint32_t seed, uint32_t index, uint32_t pair, float out[2]);
 

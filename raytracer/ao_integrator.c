@@ -22,11 +22,13 @@ static int ao_sample_batch(const integrator *self, const pixel_context *px, uint
     int traced_as[2 * SAMPLE_BATCH]; /* index into rays, or -1: under the surface */
     _Alignas(16) struct RTCRay rays[2 * SAMPLE_BATCH];
     unsigned ray_count = 0;
+    float u0[SAMPLE_BATCH], u1[SAMPLE_BATCH];
+    vec3 cosine[SAMPLE_BATCH], uniform[SAMPLE_BATCH];
+    sample_pair_points(&pair, first_index, count, u0, u1);
+    sample_hemisphere_batch(u0, u1, count, cosine, uniform);
     for (int k = 0; k < count; ++k) {
-        float u[2];
-        sample_pair_point(&pair, first_index + (uint32_t)k, u);
-        directions[2 * k] = frame_to_world(&px->shading, sample_cosine_hemisphere(u));
-        directions[2 * k + 1] = frame_to_world(&px->shading, sample_uniform_hemisphere(u));
+        directions[2 * k] = frame_to_world(&px->shading, cosine[k]);
+        directions[2 * k + 1] = frame_to_world(&px->shading, uniform[k]);
     }
     for (int r = 0; r < 2 * count; ++r) {
         traced_as[r] = -1;

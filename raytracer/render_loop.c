@@ -20,6 +20,22 @@ pixel_context pixel_context_prepare(const surface_hit *surface, uint32_t seed)
     return px;
 }
 
+void sample_pair_points(const sample_pair_seeds *s, uint32_t first, int count, float *u0, float *u1)
+{
+    /* Even samples are points of sequence 0, odd ones of sequence 1. */
+    float even[2][SAMPLE_BATCH / 2 + 1], odd[2][SAMPLE_BATCH / 2 + 1];
+    uint32_t first_even = (first + 1) >> 1, first_odd = first >> 1;
+    int n_even = (count + (int)(~first & 1u)) / 2, n_odd = count - n_even;
+    sobol_owen_points(&s->half[0], first_even, n_even, even[0], even[1]);
+    sobol_owen_points(&s->half[1], first_odd, n_odd, odd[0], odd[1]);
+    for (int k = 0; k < count; ++k) {
+        uint32_t index = first + (uint32_t)k;
+        int j = (int)((index >> 1) - ((index & 1u) ? first_odd : first_even));
+        u0[k] = (index & 1u) ? odd[0][j] : even[0][j];
+        u1[k] = (index & 1u) ? odd[1][j] : even[1][j];
+    }
+}
+
 /* Samples one pixel to completion; returns the rays traced. */
 static uint64_t render_pixel(const gbuffer *gb, const integrator *it, const sampling_settings *ss, mc_film *film,
                              int x, int y, uint64_t *samples)
@@ -35,8 +51,7 @@ static uint64_t render_pixel(const gbuffer *gb, const integrator *it, const samp
         int count = ss->spp - taken < SAMPLE_BATCH ? ss->spp - taken : SAMPLE_BATCH;
         uint32_t first = ss->sample_offset + (uint32_t)taken;
         rays += (uint64_t)it->sample_batch(it, &px, first, count, values);
-        for (int k = 0; k < count; ++k)
-            mc_pixel_add_sample(&acc, film, first + (uint32_t)k, &values[k * it->quantity_count]);
+        mc_pixel_add_samples(&acc, film, first, count, values);
         taken += count;
     }
     mc_film_add_pixel(film, pixel, &acc);

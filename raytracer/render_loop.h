@@ -55,6 +55,10 @@ static inline void sample_pair_point(const sample_pair_seeds *s, uint32_t index,
     sobol_owen_point(&s->half[index & 1u], index >> 1, u);
 }
 
+/* The points of samples first .. first + count - 1 (count <= SAMPLE_BATCH),
+ * as two coordinate arrays; the same values as sample_pair_point. */
+void sample_pair_points(const sample_pair_seeds *s, uint32_t first, int count, float *u0, float *u1);
+
 /* Samples are drawn in batches so an integrator can trace them together (one
  * Embree stream call) and derive its per-pair scramble seeds once. 16 divides
  * every power-of-two checkpoint of the stop rule. */

@@ -3,6 +3,7 @@
 
 #include <cjson/cJSON.h>
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -83,10 +84,11 @@ static int read_number(const cJSON *root, const char *key, double *out, const ch
 
 static int read_size(const cJSON *root, const char *key, int *out, const char *what, gt_error *e)
 {
-    double v;
+    double v = 0.0;
     if (read_number(root, key, &v, what, e) != 0)
         return -1;
-    if (v != (double)(int)v || v < 1 || v > 65536)
+    /* Range first: converting an out-of-range double to int is undefined. */
+    if (!(v >= 1 && v <= 65536) || v != floor(v))
         return gt_error_set(e, what, "\"%s\" must be a whole number in [1, 65536]", key);
     *out = (int)v;
     return 0;

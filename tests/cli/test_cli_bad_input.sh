@@ -90,6 +90,8 @@ printf '{"position":[0,1,5],"target":[0,1,5],"yfov_deg":45,"width":64,"height":6
 expect_error camera-degenerate "cam-degenerate.json: camera position and target coincide" "$out" -- render ao --scene builtin:plane --camera "$work/cam-degenerate.json" -o "$out"
 printf '{"position":[0,1,5],"target":[0,0,0],"yfov_deg":190,"width":64,"height":64}' >"$work/cam-fov.json"
 expect_error camera-fov "cam-fov.json: yfov_deg must be in" "$out" -- render ao --scene builtin:plane --camera "$work/cam-fov.json" -o "$out"
+printf '{"position":[0,1,5],"target":[0,0,0],"yfov_deg":45,"width":1e20,"height":64}' >"$work/cam-huge.json"
+expect_error camera-huge 'cam-huge.json: "width" must be a whole number' "$out" -- render ao --scene builtin:plane --camera "$work/cam-huge.json" -o "$out"
 expect_error camera-missing "no-camera.json: cannot open" "$out" -- render ao --scene builtin:plane --camera "$work/no-camera.json" -o "$out"
 
 # compare and merge.
