@@ -166,8 +166,10 @@ int all_stage_ao_references(all_context *ctx, gt_error *e)
 {
     int preview = ctx->quality == QUALITY_PREVIEW;
     int size = preview ? 256 : 512;
-    reference_request req = {QUANTITY_AO, {preview ? 256 : 4096, 0, 1, preview ? 0.0 : 0.002, ctx->threads},
-                             NORMAL_SHADING, INFINITY};
+    reference_request req = {.quantity = QUANTITY_AO,
+                             .sampling = {.spp = preview ? 256 : 4096, .seed = 1,
+                                          .target_stderr = preview ? 0.0 : 0.002, .threads = ctx->threads},
+                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
     char refs[2048], figures[2048];
     if (all_make_dir(ctx, "ao", refs, sizeof refs, e) != 0 || all_make_dir(ctx, "figures", figures, sizeof figures, e))
         return -1;

@@ -22,6 +22,12 @@ static void print_help(void)
         "  ao        the G-buffer plus ao.V (cosine AO), ao.Vuniform (uniform AO),\n"
         "            bent.X/Y/Z (bent normal), each with .stderr and the exact\n"
         "            accumulators (.sum, .sumsq, .sumeven) that 'gtlab merge' combines\n"
+        "  multibounce  the G-buffer plus V'_d = L / albedo: the radiance of Lambertian\n"
+        "            surfaces of that albedo under a uniform white dome of radiance 1,\n"
+        "            divided by the albedo (GTAO's multi-bounce AO), and ao.V (V_d) of the\n"
+        "            same pixels. Channels: multibounce.V (one albedo), multibounce_<a>.V\n"
+        "            for each of several (e.g. multibounce_0.3.V), or multibounce.R/G/B with\n"
+        "            --albedo scene; the header holds gtlab.albedos and gtlab.bounces\n"
         "\n"
         "options:\n"
         "  --scene S             a .gltf/.glb file or builtin:NAME ('gtlab scene list')\n"
@@ -31,9 +37,16 @@ static void print_help(void)
         "  --seed S              sequence seed (default 1)\n"
         "  --sample-offset K     first sample index: renders the block [K, K+N) so blocks\n"
         "                        of one seed can be rendered apart and merged\n"
-        "  --target-stderr E     stop a pixel once the standard error of ao.V is <= E\n"
+        "  --target-stderr E     stop a pixel once the standard error of its first channel\n"
+        "                        (ao.V; multibounce: the first multibounce channel) is <= E\n"
         "                        (checked at 16, 32, 64, ... samples)\n"
-        "  --max-distance D      rays farther than D count as unoccluded (default: none)\n"
+        "  --max-distance D      ao: rays farther than D count as unoccluded (default: none)\n"
+        "  --albedo A,B,...|scene  multibounce (required): grey albedos in [0, 1], all\n"
+        "                        rendered from the same paths in one pass, or 'scene': the\n"
+        "                        glTF base colours (textures included), coloured R, G, B\n"
+        "  --bounces N|inf       multibounce: inter-reflections after the first hit\n"
+        "                        (0 gives V_d; default 4, as the GTAO talk); 'inf' ends paths\n"
+        "                        by Russian roulette instead (unbiased)\n"
         "  --normal shading|geometric   normal the hemisphere is built on (default shading)\n"
         "  --threads T           worker threads (default: all cores); the output does not\n"
         "                        depend on it\n"
@@ -45,7 +58,27 @@ typedef struct {
     const char *scene, *camera, *output;
     long width, height;
     reference_request request;
+    const char *albedo, *bounces, *max_distance; /* as given, or NULL */
 } render_options;
+
+/* The options that belong to one quantity only are refused with the others. */
+static int check_quantity_options(render_options *o)
+{
+    gt_error e;
+    int multibounce = o->request.quantity == QUANTITY_MULTIBOUNCE;
+    if (o->max_distance && o->request.quantity != QUANTITY_AO)
+        return cli_failf("--max-distance", "applies to ao only"), -1;
+    if (!multibounce && (o->albedo || o->bounces))
+        return cli_failf(o->albedo ? "--albedo" : "--bounces", "applies to multibounce only"), -1;
+    if (!multibounce)
+        return 0;
+    if (!o->albedo)
+        return cli_failf("render", "multibounce needs --albedo (grey albedos such as 0.1,0.5,0.9, or 'scene')"), -1;
+    if (multibounce_parse_albedos(o->albedo, &o->request.multibounce, &e) != 0 ||
+        (o->bounces && multibounce_parse_bounces(o->bounces, &o->request.multibounce, &e) != 0))
+        return cli_fail(&e), -1;
+    return 0;
+}
 
 static int parse_options(int argc, char **argv, render_options *o)
 {
@@ -56,6 +89,7 @@ static int parse_options(int argc, char **argv, render_options *o)
         {"sample-offset", required_argument, 0, 'k'}, {"target-stderr", required_argument, 0, 'e'},
         {"max-distance", required_argument, 0, 'd'}, {"normal", required_argument, 0, 'N'},
         {"threads", required_argument, 0, 't'},    {"output", required_argument, 0, 'o'},
+        {"albedo", required_argument, 0, 'a'},     {"bounces", required_argument, 0, 'b'},
         {"help", no_argument, 0, 'h'},             {0, 0, 0, 0}};
     long value;
     double real;
@@ -79,7 +113,10 @@ static int parse_options(int argc, char **argv, render_options *o)
         case 'd':
             if (cli_parse_double("--max-distance", optarg, 1e-30, 1e30, &real)) return -1;
             o->request.max_distance = (float)real;
+            o->max_distance = optarg;
             break;
+        case 'a': o->albedo = optarg; break;
+        case 'b': o->bounces = optarg; break;
         case 't':
             if (cli_parse_int("--threads", optarg, 1, 1024, &value)) return -1;
             o->request.sampling.threads = (int)value;
@@ -97,11 +134,13 @@ static int parse_options(int argc, char **argv, render_options *o)
         }
     }
     if (optind >= argc)
-        return cli_failf("render", "no QUANTITY given (gbuffer or ao; see 'gtlab render --help')"), -1;
+        return cli_failf("render", "no QUANTITY given (gbuffer, ao or multibounce; see 'gtlab render --help')"), -1;
     if (reference_quantity_parse(argv[optind], &o->request.quantity) != 0)
-        return cli_failf("render", "unknown quantity '%s' (gbuffer or ao)", argv[optind]), -1;
+        return cli_failf("render", "unknown quantity '%s' (gbuffer, ao or multibounce)", argv[optind]), -1;
     if (optind + 1 < argc)
         return cli_failf("render", "unexpected argument '%s'", argv[optind + 1]), -1;
+    if (check_quantity_options(o) != 0)
+        return -1;
     if (!o->scene)
         return cli_failf("render", "--scene is required"), -1;
     if (!o->output)
@@ -118,6 +157,7 @@ int verb_render(int argc, char **argv)
     o.request.sampling.seed = 1;
     o.request.sampling.threads = omp_get_num_procs();
     o.request.max_distance = INFINITY;
+    o.request.multibounce.bounces = 4; /* the GTAO talk's */
     int parsed = parse_options(argc, argv, &o);
     if (parsed != 0)
         return parsed > 0 ? EXIT_OK : EXIT_USER_ERROR;

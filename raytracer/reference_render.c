@@ -9,23 +9,28 @@
 
 #include "raytracer/ao_integrator.h"
 
+static const char *const quantity_names[] = {"gbuffer", "ao", "multibounce"};
+enum { QUANTITY_COUNT = sizeof quantity_names / sizeof quantity_names[0] };
+
 int reference_quantity_parse(const char *name, reference_quantity *q)
 {
-    if (strcmp(name, "gbuffer") == 0)
-        *q = QUANTITY_GBUFFER;
-    else if (strcmp(name, "ao") == 0)
-        *q = QUANTITY_AO;
-    else
-        return -1;
-    return 0;
+    for (int i = 0; i < QUANTITY_COUNT; ++i)
+        if (strcmp(name, quantity_names[i]) == 0) {
+            *q = (reference_quantity)i;
+            return 0;
+        }
+    return -1;
 }
 
-const char *reference_quantity_name(reference_quantity q) { return q == QUANTITY_AO ? "ao" : "gbuffer"; }
+const char *reference_quantity_name(reference_quantity q)
+{
+    return (int)q >= 0 && (int)q < QUANTITY_COUNT ? quantity_names[q] : "unknown";
+}
 
 static int set_attributef(image *img, const char *key, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 static int set_attributef(image *img, const char *key, const char *fmt, ...)
 {
-    char text[512];
+    char text[1024];
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(text, sizeof text, fmt, ap);
@@ -50,8 +55,35 @@ static int write_header(const char *scene_spec, const camera *cam, const referen
     rc |= set_attributef(img, REF_ATTR_SPP, "%d", ss->spp);
     rc |= set_attributef(img, REF_ATTR_SEED, "%" PRIu32, ss->seed);
     rc |= set_attributef(img, REF_ATTR_BLOCKS, "%" PRIu32 ":%" PRIu32 "+%d", ss->seed, ss->sample_offset, ss->spp);
-    rc |= set_attributef(img, REF_ATTR_SETTINGS, "max_distance=%.9g target_stderr=%.9g", req->max_distance,
-                         ss->target_stderr);
+    if (req->quantity == QUANTITY_MULTIBOUNCE) {
+        char albedos[512], bounces[16];
+        multibounce_albedos_text(&req->multibounce, albedos, sizeof albedos);
+        multibounce_bounces_text(&req->multibounce, bounces, sizeof bounces);
+        rc |= image_set_attribute(img, MULTIBOUNCE_ATTR_ALBEDOS, albedos);
+        rc |= image_set_attribute(img, MULTIBOUNCE_ATTR_BOUNCES, bounces);
+        rc |= set_attributef(img, REF_ATTR_SETTINGS, "albedos=%s bounces=%s target_stderr=%.9g", albedos, bounces,
+                             ss->target_stderr);
+    } else {
+        rc |= set_attributef(img, REF_ATTR_SETTINGS, "max_distance=%.9g target_stderr=%.9g", req->max_distance,
+                             ss->target_stderr);
+    }
+    return rc;
+}
+
+/* Samples the request's quantity at the G-buffer's surfaces into `out`. */
+static int render_quantity(const embree_scene *es, const gbuffer *gb, const reference_request *req,
+                           const multibounce_plan *plan, const char *scene_spec, image *out, render_stats *stats,
+                           gt_error *e)
+{
+    ao_settings ao = {req->max_distance};
+    integrator it = req->quantity == QUANTITY_AO ? ao_integrator(es, &ao) : multibounce_integrator(es, plan);
+    mc_film film;
+    if (render_estimates(gb, &it, &req->sampling, &film, stats, e) != 0)
+        return -1;
+    int rc = 0;
+    if (mc_film_write_channels(&film, image_channel_data(out, "mask.A"), out) != 0)
+        rc = gt_error_set(e, scene_spec, "out of memory for the output image");
+    mc_film_free(&film);
     return rc;
 }
 
@@ -61,6 +93,13 @@ int reference_render(const scene *s, const char *scene_spec, const camera *cam, 
     memset(stats, 0, sizeof *stats);
     if (camera_validate(cam, scene_spec, e) != 0)
         return -1;
+    multibounce_plan plan;
+    if (req->quantity == QUANTITY_MULTIBOUNCE) {
+        if (multibounce_plan_init(&plan, &req->multibounce, req->normals, e) != 0)
+            return -1;
+        if (req->multibounce.scene_albedo)
+            multibounce_warn_albedo_range(s);
+    }
     if (image_init(out, cam->width, cam->height) != 0)
         return gt_error_set(e, scene_spec, "invalid image size");
     embree_scene es;
@@ -70,17 +109,8 @@ int reference_render(const scene *s, const char *scene_spec, const camera *cam, 
     int rc = gbuffer_render(&es, cam, req->normals, req->sampling.threads, &gb, e);
     if (rc == 0 && gbuffer_write_channels(&gb, s, out) != 0)
         rc = gt_error_set(e, scene_spec, "out of memory for the G-buffer image");
-    if (rc == 0 && req->quantity == QUANTITY_AO) {
-        ao_settings settings = {req->max_distance};
-        integrator it = ao_integrator(&es, &settings);
-        mc_film film;
-        rc = render_estimates(&gb, &it, &req->sampling, &film, stats, e);
-        if (rc == 0) {
-            if (mc_film_write_channels(&film, image_channel_data(out, "mask.A"), out) != 0)
-                rc = gt_error_set(e, scene_spec, "out of memory for the output image");
-            mc_film_free(&film);
-        }
-    }
+    if (rc == 0 && req->quantity != QUANTITY_GBUFFER)
+        rc = render_quantity(&es, &gb, req, &plan, scene_spec, out, stats, e);
     if (rc == 0 && write_header(scene_spec, cam, req, out) != 0)
         rc = gt_error_set(e, scene_spec, "out of memory for the header");
     gbuffer_free(&gb);

@@ -31,7 +31,8 @@ static image render(const char *spec, const camera *cam_override, int size, int 
         cam = *cam_override;
     else
         CHECK(scene_choose_camera(&s, NULL, size, size, &cam, &e) == 0);
-    reference_request req = {QUANTITY_AO, {spp, 0, 7, 0.0, 2}, NORMAL_SHADING, max_distance};
+    reference_request req = {.quantity = QUANTITY_AO, .sampling = {.spp = spp, .seed = 7, .threads = 2},
+                             .normals = NORMAL_SHADING, .max_distance = max_distance};
     render_stats stats;
     CHECK(reference_render(&s, spec, &cam, &req, &img, &stats, &e) == 0);
     if (s_out)
