@@ -57,22 +57,10 @@ int mc_film_normalize_layer(mc_film *film, const char *layer)
 }
 
 /* v rounded to the nearest multiple of the grid spacing `step` = 2^k, given
- * inverse_step = 2^-k. Multiplying by powers of two is exact; adding and
- * subtracting 1.5 * 2^52 rounds to the nearest integer (ties to even) in
- * round-to-nearest arithmetic, for |v / step| < 2^51. */
-/* v rounded to the nearest multiple of the grid spacing `step` = 2^k, given
  * inverse_step = 2^-k. Multiplying by powers of two is exact, and rint rounds
  * to the nearest integer (ties to even). */
 static double round_to_grid(double v, double step, double inverse_step) { return rint(v * inverse_step) * step; }
 
-/* The same, faster, for |v / step| < 2^51: adding and subtracting 1.5 * 2^52
- * rounds to the nearest integer in round-to-nearest arithmetic, and the
- * compiler can vectorise it. */
-static double round_to_grid_fast(double v, double step, double inverse_step)
-{
-    const double magic = 0x1.8p52;
-    return ((v * inverse_step + magic) - magic) * step;
-}
 void mc_pixel_clear(mc_pixel *acc, const mc_film *film)
 {
     size_t n = sizeof(double) * (size_t)film->quantity_count;
@@ -84,72 +72,79 @@ void mc_pixel_clear(mc_pixel *acc, const mc_film *film)
 
 void mc_pixel_add_sample(mc_pixel *acc, const mc_film *film, uint32_t sample_index, const float *values)
 {
-    mc_pixel_add_samples(acc, film, sample_index, 1, values);
+    mc_pixel_add_samples(acc, film, sample_index, 1, values, 1);
 }
 
-/* The sums of one quantity over a run of samples: vectorised with AVX2 where
- * the CPU has it. Rounding onto the grid is exact IEEE arithmetic and the
- * sums are exact, so every clone and every order gives the same bits. */
+/* The largest |v| of a run, as the largest magnitude bit pattern: integer
+ * comparisons vectorise, and a NaN compares above infinity, so it sends the
+ * run to the slow path. */
+static float largest_magnitude(const float *restrict column, int count)
+{
+    uint32_t largest = 0;
+    for (int k = 0; k < count; ++k) {
+        uint32_t bits;
+        memcpy(&bits, &column[k], sizeof bits);
+        bits &= 0x7fffffffu;
+        largest = bits > largest ? bits : largest;
+    }
+    float value;
+    memcpy(&value, &largest, sizeof value);
+    return value;
+}
+
+/* The sums of one quantity over a run of samples (sum, sum of squares, sum
+ * of the even-indexed samples; the run's first sample is even iff
+ * first_even). Every value is rounded onto the grid (exact IEEE arithmetic),
+ * so the sums are exact whatever the order or the split into runs. In the
+ * usual case (|v| < 2^25 grid steps) they are kept as integers in grid
+ * units, which lets the compiler vectorise them (AVX2 where the CPU has
+ * it); otherwise as doubles, scalar. Both give the same bits. */
 #if defined(__x86_64__) && defined(__GNUC__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-static void sum_run(const float *restrict column, const double *restrict even, int count, const mc_grid *g,
-                    double sums[3])
+static void sum_run(const float *restrict column, int count, int first_even, const mc_grid *g, double sums[3])
 {
-    /* Independent lanes the compiler keeps in vector registers; regrouping
-     * the sums is allowed because every partial sum is exact. */
-    enum { LANES = 4 };
-    double sum[LANES] = {0}, sum_sq[LANES] = {0}, sum_even[LANES] = {0};
-    float largest = 0.0f;
-    for (int k = 0; k < count; ++k)
-        largest = fabsf(column[k]) > largest ? fabsf(column[k]) : largest;
-    int k = 0;
-    if ((double)largest * g->inverse_step < 0x1p25) { /* squares stay below 2^51 grid units too */
-        for (; k + LANES <= count; k += LANES) {
-            for (int l = 0; l < LANES; ++l) {
-                double v = round_to_grid_fast(column[k + l], g->step, g->inverse_step);
-                sum[l] += v;
-                sum_sq[l] += round_to_grid_fast(v * v, g->square_step, g->inverse_square_step);
-                sum_even[l] += even[k + l] * v;
-            }
+    const int odd_parity = first_even ? 1 : 0; /* k & 1 of the odd-indexed samples */
+    if ((double)largest_magnitude(column, count) * g->inverse_step < 0x1p25) {
+        /* (x + magic) - magic rounds x to an integer, ties to even, as rint,
+         * for |x| < 2^51. n < 2^25 grid steps, so n^2 < 2^50 is exact, and
+         * the square in square-grid units is n^2 * 2^-24 rounded, < 2^26. */
+        const double magic = 0x1.8p52;
+        int64_t sum = 0, sum_sq = 0, sum_even = 0;
+        for (int k = 0; k < count; ++k) {
+            double n = ((double)column[k] * g->inverse_step + magic) - magic;
+            int32_t square = (int32_t)((n * n * 0x1p-24 + magic) - magic);
+            sum += (int32_t)n;
+            sum_sq += square;
+            sum_even += (k & 1) == odd_parity ? 0 : (int32_t)n;
         }
+        sums[0] = (double)sum * g->step;
+        sums[1] = (double)sum_sq * g->square_step;
+        sums[2] = (double)sum_even * g->step;
+        return;
     }
-    for (; k < count; ++k) {
+    sums[0] = sums[1] = sums[2] = 0.0;
+    for (int k = 0; k < count; ++k) {
         double v = round_to_grid(column[k], g->step, g->inverse_step);
-        sum[0] += v;
-        sum_sq[0] += round_to_grid(v * v, g->square_step, g->inverse_square_step);
-        sum_even[0] += even[k] * v;
+        sums[0] += v;
+        sums[1] += round_to_grid(v * v, g->square_step, g->inverse_square_step);
+        sums[2] += (k & 1) == odd_parity ? 0.0 : v;
     }
-    sums[0] = (sum[0] + sum[1]) + (sum[2] + sum[3]);
-    sums[1] = (sum_sq[0] + sum_sq[1]) + (sum_sq[2] + sum_sq[3]);
-    sums[2] = (sum_even[0] + sum_even[1]) + (sum_even[2] + sum_even[3]);
 }
 
-void mc_pixel_add_samples(mc_pixel *acc, const mc_film *film, uint32_t first_index, int count, const float *values)
+void mc_pixel_add_samples(mc_pixel *acc, const mc_film *film, uint32_t first_index, int count, const float *values,
+                          int stride)
 {
-    enum { RUN = 64 };
-    float column[RUN];
-    double even[RUN];
-    for (int start = 0; start < count; start += RUN) {
-        int n = count - start < RUN ? count - start : RUN;
-        uint32_t evens = 0;
-        for (int k = 0; k < n; ++k) {
-            int is_even = ((first_index + (uint32_t)(start + k)) & 1u) == 0;
-            even[k] = is_even;
-            evens += (uint32_t)is_even;
-        }
-        for (int q = 0; q < film->quantity_count; ++q) {
-            for (int k = 0; k < n; ++k)
-                column[k] = values[(start + k) * film->quantity_count + q];
-            double sums[3];
-            sum_run(column, even, n, &film->grids[q], sums);
-            acc->sum[q] += sums[0];
-            acc->sum_sq[q] += sums[1];
-            acc->sum_even[q] += sums[2];
-        }
-        acc->count += (uint32_t)n;
-        acc->count_even += evens;
+    int first_even = (first_index & 1u) == 0;
+    for (int q = 0; q < film->quantity_count; ++q) {
+        double sums[3];
+        sum_run(&values[q * stride], count, first_even, &film->grids[q], sums);
+        acc->sum[q] += sums[0];
+        acc->sum_sq[q] += sums[1];
+        acc->sum_even[q] += sums[2];
     }
+    acc->count += (uint32_t)count;
+    acc->count_even += (uint32_t)(first_even ? count + 1 : count) / 2;
 }
 
 /* sqrt(s^2 / n) with the unbiased sample variance s^2 from the sums. */

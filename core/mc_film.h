@@ -64,10 +64,12 @@ typedef struct {
 void mc_pixel_clear(mc_pixel *acc, const mc_film *film);
 /* Adds one sample (values[q] for every quantity) with its sequence index. */
 void mc_pixel_add_sample(mc_pixel *acc, const mc_film *film, uint32_t sample_index, const float *values);
-/* Adds samples first_index .. first_index + count - 1 at once, their values
- * at values[k * quantity_count + q]. The same sums as adding them one by one
+/* Adds samples first_index .. first_index + count - 1 at once, quantity q
+ * of sample k at values[q * stride + k] (quantity-major, so each
+ * quantity's run is contiguous). The same sums as adding them one by one
  * (sums of grid values are exact in any order). */
-void mc_pixel_add_samples(mc_pixel *acc, const mc_film *film, uint32_t first_index, int count, const float *values);
+void mc_pixel_add_samples(mc_pixel *acc, const mc_film *film, uint32_t first_index, int count, const float *values,
+                          int stride);
 /* Standard error of quantity q's mean so far (as mc_film_stderr). */
 double mc_pixel_stderr(const mc_pixel *acc, int quantity);
 /* Adds a pixel's sums into the film. Exact, like every sum here. */

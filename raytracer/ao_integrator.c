@@ -12,45 +12,37 @@ static const mc_quantity ao_quantities[AO_QUANTITY_COUNT] = {
  * from the sample's one 2-D point (pair 0). Each estimator on its own is a
  * scrambled-Sobol' estimator of its integral; that the two are correlated
  * with each other matters to neither. A direction below the geometric
- * surface is not traced: V = 0. */
+ * surface counts as blocked (V = 0): its ray is left in the stream but
+ * inactive (tfar < tnear, which Embree skips and leaves untouched), so the
+ * loop has no unpredictable branch. */
 static int ao_sample_batch(const integrator *self, const pixel_context *px, uint32_t first_index, int count,
                            float *values)
 {
     const ao_settings *settings = self->settings;
     const sample_pair_seeds pair = sample_pair_seeds_for(px, 0);
-    vec3 directions[2 * SAMPLE_BATCH];
-    int traced_as[2 * SAMPLE_BATCH]; /* index into rays, or -1: under the surface */
     _Alignas(16) struct RTCRay rays[2 * SAMPLE_BATCH];
-    unsigned ray_count = 0;
     float u0[SAMPLE_BATCH], u1[SAMPLE_BATCH];
-    vec3 cosine[SAMPLE_BATCH], uniform[SAMPLE_BATCH];
+    vec3 local[2][SAMPLE_BATCH]; /* [0]: cosine, [1]: uniform */
     sample_pair_points(&pair, first_index, count, u0, u1);
-    sample_hemisphere_batch(u0, u1, count, cosine, uniform);
-    for (int k = 0; k < count; ++k) {
-        directions[2 * k] = frame_to_world(&px->shading, cosine[k]);
-        directions[2 * k + 1] = frame_to_world(&px->shading, uniform[k]);
-    }
+    sample_hemisphere_batch(u0, u1, count, local[0], local[1]);
+    int traced = 0;
     for (int r = 0; r < 2 * count; ++r) {
-        traced_as[r] = -1;
-        if (v3_dot(directions[r], px->surface->ng) > 0.0f) {
-            traced_as[r] = (int)ray_count;
-            embree_ray_init(&rays[ray_count++], px->ray_origin, directions[r], settings->max_distance);
-        }
+        vec3 d = frame_to_world(&px->shading, local[r & 1][r >> 1]);
+        int above = v3_dot(d, px->surface->ng) > 0.0f;
+        embree_ray_init(&rays[r], px->ray_origin, d, above ? settings->max_distance : -1.0f);
+        traced += above;
     }
-    embree_unoccluded_stream(self->scene, rays, ray_count);
+    embree_unoccluded_stream(self->scene, rays, (unsigned)(2 * count));
     for (int k = 0; k < count; ++k) {
-        int c = traced_as[2 * k], u = traced_as[2 * k + 1];
-        float v_cos = c >= 0 && rays[c].tfar >= 0.0f ? 1.0f : 0.0f;
-        float v_uni = u >= 0 && rays[u].tfar >= 0.0f ? 1.0f : 0.0f;
-        float *out = &values[k * AO_QUANTITY_COUNT];
-        vec3 w = directions[2 * k];
-        out[AO_V] = v_cos;
-        out[AO_VUNIFORM] = v_uni;
-        out[BENT_X] = v_cos * w.x;
-        out[BENT_Y] = v_cos * w.y;
-        out[BENT_Z] = v_cos * w.z;
+        const struct RTCRay *cosine = &rays[2 * k], *uniform = &rays[2 * k + 1];
+        float v_cos = cosine->tfar >= 0.0f ? 1.0f : 0.0f;
+        values[AO_V * SAMPLE_BATCH + k] = v_cos;
+        values[AO_VUNIFORM * SAMPLE_BATCH + k] = uniform->tfar >= 0.0f ? 1.0f : 0.0f;
+        values[BENT_X * SAMPLE_BATCH + k] = v_cos * cosine->dir_x;
+        values[BENT_Y * SAMPLE_BATCH + k] = v_cos * cosine->dir_y;
+        values[BENT_Z * SAMPLE_BATCH + k] = v_cos * cosine->dir_z;
     }
-    return (int)ray_count;
+    return traced;
 }
 
 integrator ao_integrator(const embree_scene *es, const ao_settings *settings)

@@ -124,18 +124,6 @@ vec3 offset_ray_origin(vec3 p, vec3 ng)
     return v3_add(p, v3_scale(ng, offset));
 }
 
-void embree_ray_init(struct RTCRay *r, vec3 o, vec3 d, float t_max)
-{
-    r->org_x = o.x, r->org_y = o.y, r->org_z = o.z;
-    r->dir_x = d.x, r->dir_y = d.y, r->dir_z = d.z;
-    r->tnear = 0.0f;
-    r->tfar = t_max;
-    r->time = 0.0f;
-    r->mask = 0xffffffffu;
-    r->id = 0;
-    r->flags = 0;
-}
-
 void embree_unoccluded_stream(const embree_scene *es, struct RTCRay *rays, unsigned count)
 {
     if (count == 0)

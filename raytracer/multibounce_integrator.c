@@ -252,11 +252,11 @@ static int multibounce_sample_batch(const integrator *self, const pixel_context 
                                     int count, float *values)
 {
     const multibounce_plan *plan = self->settings;
-    const int weights = weight_count(plan), stride = plan->quantity_count, ao = weights;
+    const int weights = weight_count(plan), ao = weights;
     const int unlimited = plan->settings.bounces == MULTIBOUNCE_UNLIMITED;
     const int max_bounces = unlimited ? MULTIBOUNCE_PATH_LIMIT : plan->settings.bounces;
     path_vertex paths[SAMPLE_BATCH];
-    memset(values, 0, sizeof(float) * (size_t)count * (size_t)stride);
+    memset(values, 0, sizeof(float) * (size_t)plan->quantity_count * SAMPLE_BATCH);
     for (int k = 0; k < count; ++k)
         paths[k] = path_start(px, k, weights);
     int live = count, rays = 0;
@@ -275,9 +275,9 @@ static int multibounce_sample_batch(const integrator *self, const pixel_context 
             surface_hit hit;
             ++rays;
             if (!embree_closest_hit(self->scene, p->origin, d, INFINITY, &hit)) {
-                float *out = &values[p->sample * stride];
-                memcpy(out, p->throughput, sizeof(float) * (size_t)weights);
-                out[ao] = depth == 0 ? 1.0f : 0.0f;
+                for (int w = 0; w < weights; ++w)
+                    values[w * SAMPLE_BATCH + p->sample] = p->throughput[w];
+                values[ao * SAMPLE_BATCH + p->sample] = depth == 0 ? 1.0f : 0.0f;
                 continue;
             }
             if (depth == max_bounces)

@@ -11,24 +11,26 @@
 #include "raytracer/ao_integrator.h"
 #include "raytracer/gbuffer.h"
 
-/* The raw ray set holds RAYS_PER_PIXEL rays per covered pixel; gtlab renders
- * GTLAB_SPP samples (2 rays each) per pixel, a short but realistic render. */
-enum { RAYS_PER_PIXEL = 16, STREAM = 64, GTLAB_SPP = 64 };
+/* gtlab renders GTLAB_SPP samples (2 rays each) per pixel, a short but
+ * realistic render; the raw ray set holds the very same rays, in the same
+ * pixel-by-pixel order. */
+enum { GTLAB_SPP = 64, RAYS_PER_PIXEL = 2 * GTLAB_SPP, LONGEST_STREAM = 128 };
 
 const char *const raw_call_names[RAW_CALL_COUNT] = {"Embree rtcOccluded1", "Embree rtcOccluded1M (stream 64)",
-                                                     "Embree rtcOccluded8", "Embree rtcOccluded16"};
+                                                     "Embree rtcOccluded1M (stream 128)", "Embree rtcOccluded8",
+                                                     "Embree rtcOccluded16"};
 
-/* The same rays the AO integrator traces for its first RAYS_PER_PIXEL / 2
- * samples: per sample one cosine-distributed and one uniform direction about
- * the shading normal, from the offset surface point, from the same Sobol'
- * points. Directions under the geometric surface are traced too (the
- * integrator skips them: that only favours the raw figure). */
+/* The rays the AO integrator traces: per sample one cosine-distributed and
+ * one uniform direction about the shading normal, from the offset surface
+ * point, from the same Sobol' points. Directions under the geometric surface
+ * are traced too (the integrator skips them: that only favours the raw
+ * figure). */
 static struct RTCRay *make_rays(const gbuffer *gb, long *count)
 {
     long covered = 0;
     for (int i = 0; i < gb->width * gb->height; ++i)
         covered += gb->mask[i];
-    struct RTCRay *rays = aligned_alloc(64, sizeof *rays * (size_t)(covered * RAYS_PER_PIXEL + STREAM));
+    struct RTCRay *rays = aligned_alloc(64, sizeof *rays * (size_t)(covered * RAYS_PER_PIXEL + LONGEST_STREAM));
     if (!rays)
         return NULL;
     long n = 0;
@@ -75,7 +77,7 @@ static double pass_occluded1(RTCScene sc, struct RTCRay *rays, long n, int threa
     return (double)n / (seconds_now() - t0);
 }
 
-static double pass_occluded1m(RTCScene sc, struct RTCRay *rays, long n, int threads)
+static double pass_occluded1m(RTCScene sc, struct RTCRay *rays, long n, int threads, long stream)
 {
     double t0 = seconds_now();
 #pragma omp parallel num_threads(threads)
@@ -83,8 +85,8 @@ static double pass_occluded1m(RTCScene sc, struct RTCRay *rays, long n, int thre
         struct RTCIntersectContext c;
         init_context(&c);
 #pragma omp for schedule(static, 64)
-        for (long i = 0; i < n; i += STREAM)
-            rtcOccluded1M(sc, &c, &rays[i], (unsigned)(n - i < STREAM ? n - i : STREAM), sizeof(struct RTCRay));
+        for (long i = 0; i < n; i += stream)
+            rtcOccluded1M(sc, &c, &rays[i], (unsigned)(n - i < stream ? n - i : stream), sizeof(struct RTCRay));
     }
     return (double)n / (seconds_now() - t0);
 }
@@ -126,7 +128,9 @@ static void measure_raw(RTCScene sc, struct RTCRay *rays, long n, int threads, i
         double pass[RAW_CALL_COUNT];
         pass[RAW_OCCLUDED1] = pass_occluded1(sc, rays, n, threads);
         reset_tfar(rays, n);
-        pass[RAW_OCCLUDED1M] = pass_occluded1m(sc, rays, n, threads);
+        pass[RAW_OCCLUDED1M_64] = pass_occluded1m(sc, rays, n, threads, 64);
+        reset_tfar(rays, n);
+        pass[RAW_OCCLUDED1M_128] = pass_occluded1m(sc, rays, n, threads, LONGEST_STREAM);
         pass[RAW_OCCLUDED8] = pass_occluded8(sc, rays, n, threads);
         pass[RAW_OCCLUDED16] = pass_occluded16(sc, rays, n, threads);
         for (int call = 0; call < RAW_CALL_COUNT; ++call) {

@@ -9,7 +9,7 @@
 #include "core/error.h"
 #include "scene/scene.h"
 
-enum { RAW_OCCLUDED1, RAW_OCCLUDED1M, RAW_OCCLUDED8, RAW_OCCLUDED16, RAW_CALL_COUNT };
+enum { RAW_OCCLUDED1, RAW_OCCLUDED1M_64, RAW_OCCLUDED1M_128, RAW_OCCLUDED8, RAW_OCCLUDED16, RAW_CALL_COUNT };
 extern const char *const raw_call_names[RAW_CALL_COUNT];
 
 typedef struct {

@@ -11,6 +11,18 @@ static int reached_target(const mc_pixel *acc, int taken, const sampling_setting
     return mc_pixel_stderr(acc, 0) <= ss->target_stderr;
 }
 
+/* The next batch: up to SAMPLE_BATCH samples, ending at the next checkpoint
+ * of the stop rule (taken is 0 or a power of two >= MIN_ADAPTIVE_SPP there). */
+static int batch_size(int taken, const sampling_settings *ss)
+{
+    int count = ss->spp - taken < SAMPLE_BATCH ? ss->spp - taken : SAMPLE_BATCH;
+    if (ss->target_stderr > 0.0) {
+        int to_checkpoint = taken < MIN_ADAPTIVE_SPP ? MIN_ADAPTIVE_SPP - taken : taken;
+        count = count < to_checkpoint ? count : to_checkpoint;
+    }
+    return count;
+}
+
 pixel_context pixel_context_prepare(const surface_hit *surface, uint32_t seed)
 {
     pixel_context px = {surface,
@@ -48,10 +60,10 @@ static uint64_t render_pixel(const gbuffer *gb, const integrator *it, const samp
     uint64_t rays = 0;
     int taken = 0;
     while (taken < ss->spp && !reached_target(&acc, taken, ss)) {
-        int count = ss->spp - taken < SAMPLE_BATCH ? ss->spp - taken : SAMPLE_BATCH;
         uint32_t first = ss->sample_offset + (uint32_t)taken;
+        int count = batch_size(taken, ss);
         rays += (uint64_t)it->sample_batch(it, &px, first, count, values);
-        mc_pixel_add_samples(&acc, film, first, count, values);
+        mc_pixel_add_samples(&acc, film, first, count, values, SAMPLE_BATCH);
         taken += count;
     }
     mc_film_add_pixel(film, pixel, &acc);

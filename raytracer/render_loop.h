@@ -60,9 +60,10 @@ static inline void sample_pair_point(const sample_pair_seeds *s, uint32_t index,
 void sample_pair_points(const sample_pair_seeds *s, uint32_t first, int count, float *u0, float *u1);
 
 /* Samples are drawn in batches so an integrator can trace them together (one
- * Embree stream call) and derive its per-pair scramble seeds once. 16 divides
- * every power-of-two checkpoint of the stop rule. */
-enum { SAMPLE_BATCH = 16 };
+ * Embree stream call) and derive its per-pair scramble seeds once. With a
+ * target standard error, batches are cut to end on the stop rule's
+ * checkpoints (powers of two from 16). */
+enum { SAMPLE_BATCH = 64 };
 
 typedef struct integrator {
     const char *label; /* for the progress bar */
@@ -70,8 +71,8 @@ typedef struct integrator {
     const mc_quantity *quantities;
     const char *normalized_layer; /* a vector layer written normalised, or NULL */
     /* Estimates samples first_index .. first_index + count - 1 (count <=
-     * SAMPLE_BATCH) into values[k * quantity_count + q]; returns the number
-     * of rays traced. */
+     * SAMPLE_BATCH) into values[q * SAMPLE_BATCH + k] (quantity-major);
+     * returns the number of rays traced. */
     int (*sample_batch)(const struct integrator *self, const pixel_context *px, uint32_t first_index, int count,
                         float *values);
     const embree_scene *scene;
