@@ -7,9 +7,6 @@
 
 #include "core/vec3.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 /* Cosine-weighted: pdf = cos(theta) / pi. Malley's method through Shirley and
  * Chiu's concentric disc mapping, which keeps the Sobol' stratification. The

@@ -5,6 +5,11 @@
 
 #include <math.h>
 
+/* Strict C11 <math.h> does not define it. */
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
 typedef struct { float x, y, z; } vec3;
 
 static inline vec3 v3(float x, float y, float z) { vec3 r = {x, y, z}; return r; }
