@@ -41,10 +41,19 @@ static void moments_result(const moments *m, double *mean, double *stderr_out)
     *mean = m->mean, *stderr_out = sqrt(m->m2 / (m->n - 1.0) / m->n);
 }
 
-/* The cap's contribution of direction l under the balance heuristic: f cos / (p_cap + p_brdf). */
-static double mis_term(double f_cos, double pdf_cap, double pdf_other)
+/* The contribution of a direction drawn by the technique of density
+ * pdf_self, the other having pdf_other there, under the power heuristic
+ * (beta = 2): f cos w / pdf_self with w = pdf_self^2 / (pdf_self^2 + pdf_other^2).
+ * Not the balance heuristic: with a sun-sized light the BRDF sampler lands
+ * in the cap about once in 10^5 samples and under the balance heuristic
+ * carries ~1e-5 of the result, missed (and absent from the standard
+ * error) in most runs; the power heuristic leaves it ~1e-10. */
+static double mis_term(double f_cos, double pdf_self, double pdf_other)
 {
-    return f_cos > 0.0 ? f_cos / (pdf_cap + pdf_other) : 0.0;
+    if (!(f_cos > 0.0))
+        return 0.0;
+    double r = pdf_other / pdf_self;
+    return f_cos / (pdf_self * (1.0 + r * r));
 }
 
 void sphere_light_reference(const sphere_light_config *c, uint32_t samples, uint32_t seed,
@@ -67,10 +76,10 @@ void sphere_light_reference(const sphere_light_config *c, uint32_t samples, uint
         vec3 m = ggx_sample_visible_normal(c->v, c->alpha, u_brdf);
         vec3 ls = ggx_reflect(c->v, m);
         if (ls.z > 0.0f && cone_contains(c->lc, c->sin_sigma, ls))
-            s += mis_term(ggx_brdf(c->v, ls, c->alpha) * ls.z, pdf_cap, ggx_reflection_pdf(c->v, ls, c->alpha));
+            s += mis_term(ggx_brdf(c->v, ls, c->alpha) * ls.z, ggx_reflection_pdf(c->v, ls, c->alpha), pdf_cap);
         vec3 ld = sample_cosine_hemisphere(u_brdf);
         if (cone_contains(c->lc, c->sin_sigma, ld))
-            d += mis_term(ld.z / M_PI, pdf_cap, ld.z / M_PI);
+            d += mis_term(ld.z / M_PI, ld.z / M_PI, pdf_cap);
         moments_add(&spec, s);
         moments_add(&diff, d);
     }

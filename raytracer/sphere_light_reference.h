@@ -11,7 +11,7 @@
  * for emitted radiance 1; directions below the surface contribute 0
  * (horizon clipping). Monte Carlo with two techniques, each sample drawing
  * one of each, combined by multiple importance sampling (Veach 1997,
- * balance heuristic): l uniform in the cap (density 1 / solid angle), and
+ * power heuristic, beta = 2): l uniform in the cap (density 1 / solid angle), and
  * l = reflect(v, m) with m from GGX's visible normals (Heitz 2018) for the
  * specular part, resp. a cosine-distributed l for the diffuse part. Points
  * are Owen-scrambled Sobol' (one dimension pair per technique); the
