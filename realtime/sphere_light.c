@@ -33,9 +33,18 @@
 #include "core/fresnel.h"
 #include "core/ggx.h"
 
-static float saturate(float x) { return fminf(fmaxf(x, 0.0f), 1.0f); }
+/* A shader's max and saturate are one instruction each; C's fmaxf/fminf
+ * are library calls (their NaN rules), which would distort the cost
+ * measured by `gtlab bench sphere-light`. */
+static inline float max_float(float a, float b) { return a > b ? a : b; }
+static inline float saturate(float x) { return x < 0.0f ? 0.0f : x > 1.0f ? 1.0f : x; }
 
-int sphere_rim_setup(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l, sphere_rim *rim)
+/* The steps are always inlined into the two forms a shader would write
+ * (sphere_noh_squared_karis, _decima), so each is one straight function
+ * whose instructions can be counted, as in the talk's comparison. */
+#define RIM_INLINE static inline __attribute__((always_inline))
+
+RIM_INLINE int rim_setup(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l, sphere_rim *rim)
 {
     float radius_cos = 1.0f / sqrtf(1.0f + radius_tan * radius_tan);
     /* R = 2 (N.V) N - V, so R.lc = 2 (N.lc)(N.V) - V.lc. */
@@ -45,7 +54,7 @@ int sphere_rim_setup(float radius_tan, float n_dot_l, float n_dot_v, float v_dot
     /* s / |R - (R.lc) lc| scales R - (R.lc) lc to s T. The clamp only keeps
      * R = -lc (T undefined: the light's centre is then below the horizon)
      * from giving NaN. */
-    float s_over_len_t = radius_cos * radius_tan / sqrtf(fmaxf(1.0f - r_dot_l * r_dot_l, FLT_MIN));
+    float s_over_len_t = radius_cos * radius_tan / sqrtf(max_float(1.0f - r_dot_l * r_dot_l, FLT_MIN));
     rim->no_t = s_over_len_t * (n_dot_v - r_dot_l * n_dot_l);                  /* N.R = N.V */
     rim->vo_t = s_over_len_t * (2.0f * n_dot_v * n_dot_v - 1.0f - r_dot_l * v_dot_l); /* V.R = 2 (N.V)^2 - 1 */
     /* |det(N, lc, V)| = sqrt of the Gram determinant; B = T x lc up to sign
@@ -59,7 +68,7 @@ int sphere_rim_setup(float radius_tan, float n_dot_l, float n_dot_v, float v_dot
     return 0;
 }
 
-void sphere_rim_newton_step(const sphere_rim *rim, float *num, float *den)
+RIM_INLINE void rim_newton_step(const sphere_rim *rim, float *num, float *den)
 {
     float n0 = rim->no_c + rim->no_t, d0 = rim->vo_c + rim->vo_t;
     float p = rim->no_b * d0, q = n0 * d0, s = rim->vo_b * n0;
@@ -67,7 +76,7 @@ void sphere_rim_newton_step(const sphere_rim *rim, float *num, float *den)
     *den = p * p + s * (s - 2.0f * p) + n0 * (rim->no_c * d0 * d0 + q * (-0.5f * (d0 + rim->vo_c)));
 }
 
-void sphere_rim_rotate(sphere_rim *rim, float num, float den)
+RIM_INLINE void rim_rotate(sphere_rim *rim, float num, float den)
 {
     /* cos(phi) = (1 - x^2)/(1 + x^2), sin(phi) = 2x/(1 + x^2), x = num/den,
      * without dividing by den (which may be 0). */
@@ -83,24 +92,54 @@ void sphere_rim_rotate(sphere_rim *rim, float num, float den)
     rim->vo_b = cos_phi * rim->vo_b - sin_phi * vo_t;
 }
 
-float sphere_rim_noh_squared(const sphere_rim *rim)
+RIM_INLINE float rim_noh_squared(const sphere_rim *rim)
 {
-    float no_h = rim->no_c + rim->no_t;          /* N.(L + V) */
+    float no_h = rim->no_c + rim->no_t;             /* N.(L + V) */
     float h_dot_h = 2.0f * (rim->vo_c + rim->vo_t); /* |L + V|^2 */
-    return fmaxf(0.0f, no_h * no_h / h_dot_h);
+    return max_float(0.0f, no_h * no_h / h_dot_h);
 }
+
+int sphere_rim_setup(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l, sphere_rim *rim)
+{
+    return rim_setup(radius_tan, n_dot_l, n_dot_v, v_dot_l, rim);
+}
+
+void sphere_rim_newton_step(const sphere_rim *rim, float *num, float *den) { rim_newton_step(rim, num, den); }
+
+void sphere_rim_rotate(sphere_rim *rim, float num, float den) { rim_rotate(rim, num, den); }
+
+float sphere_rim_noh_squared(const sphere_rim *rim) { return rim_noh_squared(rim); }
 
 float sphere_noh_squared(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l, int newton_steps)
 {
     sphere_rim rim;
-    if (sphere_rim_setup(radius_tan, n_dot_l, n_dot_v, v_dot_l, &rim))
+    if (rim_setup(radius_tan, n_dot_l, n_dot_v, v_dot_l, &rim))
         return 1.0f;
     for (int i = 0; i < newton_steps; ++i) {
         float num, den;
-        sphere_rim_newton_step(&rim, &num, &den);
-        sphere_rim_rotate(&rim, num, den);
+        rim_newton_step(&rim, &num, &den);
+        rim_rotate(&rim, num, den);
     }
-    return sphere_rim_noh_squared(&rim);
+    return rim_noh_squared(&rim);
+}
+
+float sphere_noh_squared_karis(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l)
+{
+    sphere_rim rim;
+    if (rim_setup(radius_tan, n_dot_l, n_dot_v, v_dot_l, &rim))
+        return 1.0f;
+    return rim_noh_squared(&rim);
+}
+
+float sphere_noh_squared_decima(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l)
+{
+    sphere_rim rim;
+    if (rim_setup(radius_tan, n_dot_l, n_dot_v, v_dot_l, &rim))
+        return 1.0f;
+    float num, den;
+    rim_newton_step(&rim, &num, &den);
+    rim_rotate(&rim, num, den);
+    return rim_noh_squared(&rim);
 }
 
 vec3 karis_sphere_point(vec3 r, vec3 lc, float sin_sigma)

@@ -47,6 +47,11 @@ float sphere_rim_noh_squared(const sphere_rim *rim);
  * talk, 2 = one more step from the first), 1 if R is inside the light. */
 float sphere_noh_squared(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l, int newton_steps);
 
+/* The two forms a shader would hard-code (0 and 1 step), as separate
+ * functions so their cost can be measured (`gtlab bench sphere-light`). */
+float sphere_noh_squared_karis(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l);
+float sphere_noh_squared_decima(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l);
+
 /* ---- Karis 2013: representative point and normalisation ---- */
 
 /* The direction to the point of the sphere closest to the reflection ray r:
