@@ -39,24 +39,13 @@ static sphere_light_config realistic_config(uint32_t seed, uint32_t i)
     double roughness = 0.05 + 0.95 * uniform01(seed, i, 0);
     double sin_sigma = SUN_SIN_SIGMA * pow(MAX_SIN_SIGMA / SUN_SIN_SIGMA, uniform01(seed, i, 1));
     double n_dot_v = 0.05 + 0.95 * uniform01(seed, i, 2);
-    sphere_light_config c = sphere_light_config_make(n_dot_v, 0.0, 0.0, sin_sigma, roughness);
     double u4 = uniform01(seed, i, 4), u5 = uniform01(seed, i, 5);
-    double theta, phi;
     if (uniform01(seed, i, 3) < 0.7) {
-        /* A point at angle delta from R = (-sin theta_v, 0, cos theta_v). */
-        double theta_v = acos(n_dot_v), delta = 2.0 * (c.alpha + asin(sin_sigma)) * sqrt(u4), psi = 2.0 * M_PI * u5;
-        double r[3] = {-sin(theta_v), 0.0, n_dot_v}, t[3] = {n_dot_v, 0.0, sin(theta_v)}, b[3] = {0.0, 1.0, 0.0};
-        double d[3];
-        for (int k = 0; k < 3; ++k)
-            d[k] = cos(delta) * r[k] + sin(delta) * (cos(psi) * t[k] + sin(psi) * b[k]);
-        theta = acos(fmin(1.0, fmax(-1.0, d[2]))), phi = atan2(d[1], d[0]);
-    } else {
-        theta = acos(sqrt(u4)), phi = 2.0 * M_PI * u5;
+        double delta = 2.0 * (roughness * roughness + asin(sin_sigma)) * sqrt(u4);
+        return sphere_light_config_near_mirror(n_dot_v, delta, 2.0 * M_PI * u5, sin_sigma, roughness);
     }
-    const double lowest = 0.5 * M_PI - M_PI / 180.0;
-    c.lc = v3((float)(sin(fmin(theta, lowest)) * cos(phi)), (float)(sin(fmin(theta, lowest)) * sin(phi)),
-              (float)cos(fmin(theta, lowest)));
-    return c;
+    double theta = fmin(acos(sqrt(u4)), 0.5 * M_PI - M_PI / 180.0);
+    return sphere_light_config_make(n_dot_v, theta, 2.0 * M_PI * u5, sin_sigma, roughness);
 }
 
 /* count configurations from index first, with their references. */

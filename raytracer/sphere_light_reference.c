@@ -19,6 +19,19 @@ sphere_light_config sphere_light_config_make(double n_dot_v, double theta_l, dou
     return c;
 }
 
+sphere_light_config sphere_light_config_near_mirror(double n_dot_v, double delta, double psi, double sin_sigma,
+                                                    double roughness)
+{
+    double sin_v = sqrt(fmax(0.0, 1.0 - n_dot_v * n_dot_v));
+    /* R = (-sin theta_v, 0, cos theta_v); (t, b) completes a frame, t towards n. */
+    const double r[3] = {-sin_v, 0.0, n_dot_v}, t[3] = {n_dot_v, 0.0, sin_v}, b[3] = {0.0, 1.0, 0.0};
+    double d[3];
+    for (int k = 0; k < 3; ++k)
+        d[k] = cos(delta) * r[k] + sin(delta) * (cos(psi) * t[k] + sin(psi) * b[k]);
+    double theta = fmin(acos(fmin(1.0, fmax(-1.0, d[2]))), 0.5 * M_PI - M_PI / 180.0), phi = atan2(d[1], d[0]);
+    return sphere_light_config_make(n_dot_v, theta, phi, sin_sigma, roughness);
+}
+
 double sphere_light_normal_illuminance(double sin_sigma) { return M_PI * sin_sigma * sin_sigma; }
 
 /* Mean and sum of squared deviations of one estimator (Welford's update:

@@ -36,6 +36,12 @@ typedef struct {
 sphere_light_config sphere_light_config_make(double n_dot_v, double theta_l, double phi_l, double sin_sigma,
                                              double roughness);
 
+/* v as above; the light's centre at angle delta from the mirror direction
+ * R of v, turned by psi about R (psi = 0 towards n), but never lower than
+ * 1 degree above the horizon (the approximations give 0 below). */
+sphere_light_config sphere_light_config_near_mirror(double n_dot_v, double delta, double psi, double sin_sigma,
+                                                    double roughness);
+
 typedef struct {
     double spec, spec_stderr; /* L_spec and its standard error */
     double diff, diff_stderr; /* L_diff and its standard error */
