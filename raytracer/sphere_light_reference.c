@@ -69,10 +69,31 @@ static double mis_term(double f_cos, double pdf_self, double pdf_other)
     return f_cos / (pdf_self * (1.0 + r * r));
 }
 
+void sphere_light_mis_sample(const sphere_light_config *c, const float u_cap[2], const float u_brdf[2],
+                             sphere_light_mis_terms *t)
+{
+    const double pdf_cap = 1.0 / cone_solid_angle(c->sin_sigma);
+    /* Technique 1: uniform in the cap, shared by both integrals. */
+    vec3 l = cone_sample_uniform(c->lc, c->sin_sigma, u_cap);
+    double cos_l = fmax(0.0, (double)l.z);
+    t->l_cap = l;
+    t->spec_cap = mis_term(ggx_brdf(c->v, l, c->alpha) * cos_l, pdf_cap, ggx_reflection_pdf(c->v, l, c->alpha));
+    t->diff = mis_term(cos_l / M_PI, pdf_cap, cos_l / M_PI);
+    /* Technique 2: GGX visible normals (specular), cosine (diffuse). */
+    vec3 m = ggx_sample_visible_normal(c->v, c->alpha, u_brdf);
+    vec3 ls = ggx_reflect(c->v, m);
+    t->l_brdf = ls;
+    t->spec_brdf = 0.0;
+    if (ls.z > 0.0f && cone_contains(c->lc, c->sin_sigma, ls))
+        t->spec_brdf = mis_term(ggx_brdf(c->v, ls, c->alpha) * ls.z, ggx_reflection_pdf(c->v, ls, c->alpha), pdf_cap);
+    vec3 ld = sample_cosine_hemisphere(u_brdf);
+    if (cone_contains(c->lc, c->sin_sigma, ld))
+        t->diff += mis_term(ld.z / M_PI, ld.z / M_PI, pdf_cap);
+}
+
 void sphere_light_reference(const sphere_light_config *c, uint32_t samples, uint32_t seed,
                             sphere_light_estimate *out)
 {
-    const double pdf_cap = 1.0 / cone_solid_angle(c->sin_sigma);
     sobol_pair_seeds cap_seeds = sobol_owen_pair_seeds(seed, 0);
     sobol_pair_seeds brdf_seeds = sobol_owen_pair_seeds(seed, 1);
     moments spec = {0, 0, 0}, diff = {0, 0, 0};
@@ -80,21 +101,10 @@ void sphere_light_reference(const sphere_light_config *c, uint32_t samples, uint
         float u_cap[2], u_brdf[2];
         sobol_owen_point(&cap_seeds, i, u_cap);
         sobol_owen_point(&brdf_seeds, i, u_brdf);
-        /* Technique 1: uniform in the cap, shared by both integrals. */
-        vec3 l = cone_sample_uniform(c->lc, c->sin_sigma, u_cap);
-        double cos_l = fmax(0.0, (double)l.z);
-        double s = mis_term(ggx_brdf(c->v, l, c->alpha) * cos_l, pdf_cap, ggx_reflection_pdf(c->v, l, c->alpha));
-        double d = mis_term(cos_l / M_PI, pdf_cap, cos_l / M_PI);
-        /* Technique 2: GGX visible normals (specular), cosine (diffuse). */
-        vec3 m = ggx_sample_visible_normal(c->v, c->alpha, u_brdf);
-        vec3 ls = ggx_reflect(c->v, m);
-        if (ls.z > 0.0f && cone_contains(c->lc, c->sin_sigma, ls))
-            s += mis_term(ggx_brdf(c->v, ls, c->alpha) * ls.z, ggx_reflection_pdf(c->v, ls, c->alpha), pdf_cap);
-        vec3 ld = sample_cosine_hemisphere(u_brdf);
-        if (cone_contains(c->lc, c->sin_sigma, ld))
-            d += mis_term(ld.z / M_PI, ld.z / M_PI, pdf_cap);
-        moments_add(&spec, s);
-        moments_add(&diff, d);
+        sphere_light_mis_terms t;
+        sphere_light_mis_sample(c, u_cap, u_brdf, &t);
+        moments_add(&spec, t.spec_cap + t.spec_brdf);
+        moments_add(&diff, t.diff);
     }
     moments_result(&spec, &out->spec, &out->spec_stderr);
     moments_result(&diff, &out->diff, &out->diff_stderr);

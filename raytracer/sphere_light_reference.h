@@ -47,6 +47,18 @@ typedef struct {
     double diff, diff_stderr; /* L_diff and its standard error */
 } sphere_light_estimate;
 
+/* One MIS sample from two points of [0, 1)^2 (cap technique, BRDF
+ * technique): the specular contributions of the cap direction and of the
+ * BRDF direction (0 when it misses the light) with their directions, so a
+ * caller can weight each by a Fresnel term, and the diffuse contribution. */
+typedef struct {
+    vec3 l_cap, l_brdf;
+    double spec_cap, spec_brdf, diff;
+} sphere_light_mis_terms;
+
+void sphere_light_mis_sample(const sphere_light_config *c, const float u_cap[2], const float u_brdf[2],
+                             sphere_light_mis_terms *t);
+
 /* Estimates both integrals with `samples` MIS samples (>= 2) from seed. */
 void sphere_light_reference(const sphere_light_config *c, uint32_t samples, uint32_t seed,
                             sphere_light_estimate *out);
