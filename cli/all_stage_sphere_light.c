@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/all_stages.h"
+#include "cli/all_stage_sphere_light.h"
 #include "cli/bench_sphere_light.h"
 #include "cli/check_sphere_noh.h"
 #include "cli/fit_sphere_light.h"
@@ -303,6 +303,9 @@ int all_stage_sphere_light(all_context *ctx, gt_error *e)
     }
     report_table_end(ctx->doc);
     report_figures(ctx->doc, 4, figs, caps);
+
+    if (all_stage_sphere_light_scenes(ctx, dir, &fo.fit.constants, json, e) != 0)
+        return -1;
 
     sphere_cost cost;
     sphere_cost_measure(preview ? 1L << 20 : 1L << 22, 3, &cost);

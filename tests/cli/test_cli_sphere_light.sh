@@ -15,7 +15,14 @@ expect_error fit-train "--train: 'many' is not a whole number" "$fit" -- fit sph
 expect_error fit-unwritable "nowhere/fit.json: cannot write" "" -- fit sphere-light --train 100 -o "$work/nowhere/fit.json"
 expect_error bench-count "--count: 5 is out of range" "" -- bench sphere-light --count 5
 
-for verb in "check sphere-noh" "fit sphere-light" "bench sphere-light"; do
+exr=$work/sphere.exr
+expect_error render-no-radius "sphere-light needs --light-position and --light-radius" "$exr" -- render sphere-light --scene builtin:plane --light-position 0,2,0 -o "$exr"
+expect_error render-bad-position "--light-position: '0,2' is not three numbers" "$exr" -- render sphere-light --scene builtin:plane --light-position 0,2 --light-radius 1 -o "$exr"
+expect_error render-radius-ao "--light-radius: applies to sphere-light only" "$exr" -- render ao --scene builtin:plane --light-radius 1 -o "$exr"
+expect_ok render-small render sphere-light --scene builtin:plane --light-position 0,2,-3 --light-radius 0.5 --width 16 --height 16 --spp 16 -o "$exr"
+[ -s "$exr" ] && pass || fail "render sphere-light wrote nothing"
+
+for verb in "check sphere-noh" "fit sphere-light"; do
   expect_ok "help-$verb" $verb --help
 done
 
