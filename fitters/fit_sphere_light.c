@@ -2,6 +2,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "fitters/ceres_bridge.h"
 
@@ -80,10 +81,12 @@ static int block_residuals(void *user, const double *params, double *residuals, 
     return 0;
 }
 
-int sphere_light_fit(const sphere_light_sample *samples, size_t count, const decima_sphere_constants *start,
-                     int threads, sphere_light_fit_result *out, gt_error *e)
+/* One Levenberg-Marquardt solve from p (overwritten with the solution);
+ * with out != NULL also the covariance and the result's figures. */
+static int solve_from(const sphere_light_sample *samples, size_t count, const decima_sphere_constants *base,
+                      int threads, int hold_reduction, double p[SPHERE_FIT_PARAMS], double *cost,
+                      sphere_light_fit_result *out, gt_error *e)
 {
-    double p[SPHERE_FIT_PARAMS] = {start->radius_reduction, start->norm_scale, start->norm_alpha};
     size_t block_count = (count + FIT_BLOCK - 1) / FIT_BLOCK;
     fit_block *blocks = calloc(block_count, sizeof *blocks);
     gt_fit *fit = blocks ? gt_fit_create(SPHERE_FIT_PARAMS, p, e) : NULL;
@@ -104,26 +107,111 @@ int sphere_light_fit(const sphere_light_sample *samples, size_t count, const dec
     for (size_t b = 0; b < block_count; ++b) {
         blocks[b].samples = samples + b * FIT_BLOCK;
         blocks[b].count = (int)(count - b * FIT_BLOCK < FIT_BLOCK ? count - b * FIT_BLOCK : FIT_BLOCK);
-        blocks[b].base = *start;
+        blocks[b].base = *base;
         if (gt_fit_add_block(fit, blocks[b].count, block_residuals, &blocks[b], &own_differences, e) != 0)
             goto done;
     }
+    if (hold_reduction && gt_fit_hold(fit, 0, 1, e) != 0)
+        goto done;
     gt_fit_options options = gt_fit_default_options();
     options.threads = threads;
     gt_fit_result result;
-    if (gt_fit_solve(fit, &options, &result, e) != 0 ||
-        gt_fit_covariance(fit, out->covariance, out->stderr_, NULL, e) != 0)
+    if (gt_fit_solve(fit, &options, &result, e) != 0)
         goto done;
-    for (int j = 0; j < SPHERE_FIT_PARAMS; ++j)
-        out->value[j] = p[j];
-    out->constants = with_params(start, p);
-    out->iterations = result.iterations;
-    out->converged = result.success;
-    out->rmse = result.rmse;
+    *cost = result.final_cost;
+    if (out) {
+        if (gt_fit_covariance(fit, out->covariance, out->stderr_, NULL, e) != 0)
+            goto done;
+        for (int j = 0; j < SPHERE_FIT_PARAMS; ++j)
+            out->value[j] = p[j];
+        out->constants = with_params(base, p);
+        out->iterations = result.iterations;
+        out->converged = result.success;
+        out->rmse = result.rmse;
+    }
     rc = 0;
 done:
     if (fit)
         gt_fit_destroy(fit);
     free(blocks);
     return rc;
+}
+
+/* Least-squares parabola cost = a + b r + c r^2 through n profile points:
+ * returns its vertex and curvature 2c (0 if not convex). */
+static double parabola_vertex(const double *r, const double *cost, int n, double *curvature)
+{
+    /* Normal equations in centred r for conditioning. */
+    double mean = 0.0;
+    for (int i = 0; i < n; ++i)
+        mean += r[i] / n;
+    double s[5] = {0, 0, 0, 0, 0}, t[3] = {0, 0, 0};
+    for (int i = 0; i < n; ++i) {
+        double x = r[i] - mean, p = 1.0;
+        for (int k = 0; k < 5; ++k) {
+            if (k < 3)
+                t[k] += p * cost[i];
+            s[k] += p, p *= x;
+        }
+    }
+    /* [s0 s1 s2; s1 s2 s3; s2 s3 s4] (a b c)' = t, by Cramer's rule. */
+    double det = s[0] * (s[2] * s[4] - s[3] * s[3]) - s[1] * (s[1] * s[4] - s[3] * s[2]) +
+                 s[2] * (s[1] * s[3] - s[2] * s[2]);
+    double b = (s[0] * (t[1] * s[4] - s[3] * t[2]) - t[0] * (s[1] * s[4] - s[3] * s[2]) +
+                s[2] * (s[1] * t[2] - t[1] * s[2])) / det;
+    double c = (s[0] * (s[2] * t[2] - t[1] * s[3]) - s[1] * (s[1] * t[2] - t[1] * s[2]) +
+                t[0] * (s[1] * s[3] - s[2] * s[2])) / det;
+    *curvature = c > 0.0 ? 2.0 * c : 0.0;
+    return c > 0.0 ? mean - b / (2.0 * c) : NAN;
+}
+
+/* Fills points first .. first + n - 1 of the profile: the radius reduction
+ * held at r0 + k step, the normalisation fitted. Returns the best index. */
+static int profile_points(const sphere_light_sample *samples, size_t count, const decima_sphere_constants *start,
+                          int threads, double r0, double step, int n, double *r, double *cost, gt_error *e)
+{
+    int best = -1;
+    for (int k = 0; k < n; ++k) {
+        double p[SPHERE_FIT_PARAMS] = {fmax(0.0, r0 + step * k), start->norm_scale, start->norm_alpha};
+        if (solve_from(samples, count, start, threads, 1, p, &cost[k], NULL, e) != 0)
+            return -1;
+        r[k] = p[0];
+        if (best < 0 || cost[k] < cost[best])
+            best = k;
+    }
+    return best;
+}
+
+int sphere_light_fit(const sphere_light_sample *samples, size_t count, const decima_sphere_constants *start,
+                     int threads, sphere_light_fit_result *out, gt_error *e)
+{
+    /* The cost is rugged in the radius reduction: the Newton step of
+     * GetNoHSquared jumps where f''(0) changes sign, and max() clamps the
+     * radius, so Levenberg-Marquardt stops in whichever small local minimum
+     * lies near its start (from the published 0.25 it "converged" to 0.24 on
+     * one data set and 0.09 on another), and cannot polish it either. So the
+     * radius reduction is profiled (held on a grid while the normalisation
+     * is fitted): coarsely over [0, 0.5], then finely around the best coarse
+     * point, where a least-squares parabola gives its value (the vertex) and
+     * standard error (the curvature). The normalisation is then fitted with
+     * the radius reduction held at the vertex. */
+    const int n = SPHERE_FIT_PROFILE / 2;
+    double *r = out->profile_reduction, *cost = out->profile_cost;
+    int coarse = profile_points(samples, count, start, threads, 0.0, 0.05, n, r, cost, e);
+    if (coarse < 0)
+        return -1;
+    int fine = profile_points(samples, count, start, threads, r[coarse] - 0.05, 0.01, SPHERE_FIT_PROFILE - n, r + n,
+                              cost + n, e);
+    if (fine < 0)
+        return -1;
+    double curvature, vertex = parabola_vertex(r + n, cost + n, SPHERE_FIT_PROFILE - n, &curvature);
+    if (!(vertex >= r[n] && vertex <= r[SPHERE_FIT_PROFILE - 1]))
+        vertex = r[n + fine]; /* not convex there: the best fine point */
+    double p[SPHERE_FIT_PARAMS] = {vertex, start->norm_scale, start->norm_alpha}, final_cost;
+    if (solve_from(samples, count, start, threads, 1, p, &final_cost, out, e) != 0)
+        return -1;
+    double sigma2 = 2.0 * final_cost / ((double)count - SPHERE_FIT_PARAMS);
+    out->stderr_[0] = curvature > 0.0 ? sqrt(sigma2 / curvature) : NAN;
+    out->covariance[0] = out->stderr_[0] * out->stderr_[0]; /* its covariances with the others: not estimated */
+    return 0;
 }

@@ -47,6 +47,9 @@ void sphere_light_measure(sphere_light_model model, const decima_sphere_constant
 
 /* Parameters, in order: radius_reduction, norm_scale, norm_alpha. */
 #define SPHERE_FIT_PARAMS 3
+/* The profile over the radius reduction: 10 coarse points 0, 0.05, ...,
+ * 0.45, then 11 fine ones at 0.01 spacing around the best coarse point. */
+#define SPHERE_FIT_PROFILE 21
 
 typedef struct {
     decima_sphere_constants constants;    /* the fitted constants (others as in start) */
@@ -55,10 +58,20 @@ typedef struct {
     double covariance[SPHERE_FIT_PARAMS * SPHERE_FIT_PARAMS];
     int iterations, converged;
     double rmse;
+    /* The cost (1/2 sum of squared residuals) with the radius reduction
+     * held at each profile point and the normalisation fitted. */
+    double profile_reduction[SPHERE_FIT_PROFILE], profile_cost[SPHERE_FIT_PROFILE];
+    /* value[0] is the vertex of the least-squares parabola through the fine
+     * profile points and stderr_[0] = sqrt(sigma^2 / k), k its curvature
+     * (cost ~ 1/2 k d^2), sigma^2 = 2 cost / (m - 3) (NaN if not convex);
+     * value[1..2], stderr_[1..2] and the covariance are Ceres' with the
+     * radius reduction held (conditional on it). */
 } sphere_light_fit_result;
 
-/* Least squares from `start` over the training samples (central
- * differences of step 1e-3: the model is float). threads > 1 evaluates
+/* Least squares over the training samples (central differences of step
+ * 1e-3: the model is float): the profile over the radius reduction, then
+ * the normalisation with it held at the profile's vertex; start supplies the normalisation's
+ * starting values and the constants not fitted. threads > 1 evaluates
  * blocks in parallel (the result does not depend on it). */
 int sphere_light_fit(const sphere_light_sample *samples, size_t count, const decima_sphere_constants *start,
                      int threads, sphere_light_fit_result *out, gt_error *e);
