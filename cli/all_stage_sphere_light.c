@@ -212,7 +212,10 @@ static void report_fit(all_context *ctx, const sphere_fit_settings *fs, const sp
                      "radius): Levenberg-Marquardt from the published 0.25 stops in small local minima. So it is "
                      "profiled (held on a grid, the normalisation refitted at each point: coarse by 0.05, then "
                      "by 0.01 around the best); its value and standard error are the vertex and curvature of a "
-                     "parabola through the fine points, and the normalisation is fitted with it held there.");
+                     "parabola through the fine points, and the normalisation is fitted with it held there. "
+                     "With few configurations (the preview's) the radius reduction comes out low: rare "
+                     "configurations with large errors pull it up, and the standard errors, which assume "
+                     "independent residuals of one variance, do not show it (docs/decisions.md).");
     const char *pf[1] = {"sphere_light/fit_profile.png"}, *pc[1] = {"Cost against the radius reduction (profile)"};
     report_figures(doc, 1, pf, pc);
     const char *h2[3] = {"held-out", "mean abs error", "RMS error"};
