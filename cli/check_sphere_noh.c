@@ -18,6 +18,13 @@
 #include "raytracer/sphere_light_reference.h"
 #include "realtime/sphere_light.h"
 
+const char *const sphere_noh_method_names[NOH_METHODS] = {"Karis (0 steps)", "1 Newton step", "2 Newton steps",
+                                                          "1 step, guarded"};
+const int sphere_noh_baseline[NOH_METHODS] = {-1, NOH_KARIS, NOH_STEP1, NOH_KARIS};
+
+/* Shortfall of method m for configuration i. */
+#define SHORT(best, got, i, m) ((double)(best)[i] - (got)[NOH_METHODS * (i) + (m)])
+
 #define TAN_MIN 1e-3
 #define TAN_MAX 1.0
 
@@ -66,13 +73,14 @@ static int write_csv(const char *path, const sphere_noh_sweep *s, long count, co
         atomic_file_abort(&f);
         return gt_error_set(e, path, "cannot write: %s", strerror(errno));
     }
-    fprintf(out, "n_dot_v,light_theta_deg,light_phi_deg,radius_tan,max_noh2,karis_noh2,newton1_noh2,newton2_noh2\n");
+    fprintf(out, "n_dot_v,light_theta_deg,light_phi_deg,radius_tan,max_noh2,karis_noh2,newton1_noh2,newton2_noh2,"
+                 "guarded_noh2\n");
     for (long i = 0; i < count; ++i) {
         int idx[4];
         sphere_noh_config c = grid_config(s, i, idx);
-        fprintf(out, "%.6g,%.6g,%.6g,%.6g,%.9g,%.9g,%.9g,%.9g\n", c.v[2], acos(c.lc[2]) * 180.0 / M_PI,
-                atan2(c.lc[1], c.lc[0]) * 180.0 / M_PI, c.radius_tan, best[i], got[3 * i], got[3 * i + 1],
-                got[3 * i + 2]);
+        const float *g = got + NOH_METHODS * i;
+        fprintf(out, "%.6g,%.6g,%.6g,%.6g,%.9g,%.9g,%.9g,%.9g,%.9g\n", c.v[2], acos(c.lc[2]) * 180.0 / M_PI,
+                atan2(c.lc[1], c.lc[0]) * 180.0 / M_PI, c.radius_tan, best[i], g[0], g[1], g[2], g[3]);
     }
     if (fclose(out) != 0) {
         atomic_file_abort(&f);
@@ -81,24 +89,28 @@ static int write_csv(const char *path, const sphere_noh_sweep *s, long count, co
     return atomic_file_commit(&f, e);
 }
 
-/* Mean shortfalls per n.v over every other dimension, from the map's sums. */
-static int write_by_nv(const char *dir, const sphere_noh_sweep *s, const double *err0, const double *err1,
-                       const double *err2, const double *n, gt_error *e)
+/* Mean shortfalls per n.v over every other dimension, from the map's sums
+ * (err: cell-major, NOH_METHODS per cell). */
+static int write_by_nv(const char *dir, const sphere_noh_sweep *s, const double *err, const double *n, gt_error *e)
 {
     char *text = NULL, path[4096];
     size_t len = 0;
     FILE *mem = open_memstream(&text, &len);
     if (!mem)
         return gt_error_set(e, dir, "out of memory");
-    fprintf(mem, "n_dot_v,mean_err_karis,mean_err_newton1,mean_err_newton2\n");
+    fprintf(mem, "n_dot_v,mean_err_karis,mean_err_newton1,mean_err_newton2,mean_err_guarded\n");
     for (int a = 0; a < s->nv_steps; ++a) {
-        double sum[3] = {0, 0, 0}, count = 0;
+        double sum[NOH_METHODS] = {0}, count = 0;
         for (int b = 0; b < s->theta_steps; ++b) {
             int cell = a * s->theta_steps + b;
-            sum[0] += err0[cell], sum[1] += err1[cell], sum[2] += err2[cell], count += n[cell];
+            for (int m = 0; m < NOH_METHODS; ++m)
+                sum[m] += err[NOH_METHODS * cell + m];
+            count += n[cell];
         }
-        fprintf(mem, "%.6g,%.6g,%.6g,%.6g\n", (a + 0.5) / s->nv_steps, sum[0] / count, sum[1] / count,
-                sum[2] / count);
+        fprintf(mem, "%.6g", (a + 0.5) / s->nv_steps);
+        for (int m = 0; m < NOH_METHODS; ++m)
+            fprintf(mem, ",%.6g", sum[m] / count);
+        fprintf(mem, "\n");
     }
     fclose(mem);
     snprintf(path, sizeof path, "%s/sphere_noh_by_nv.csv", dir);
@@ -114,13 +126,12 @@ static int write_map(const char *dir, const sphere_noh_sweep *s, long count, con
 {
     int cells = s->nv_steps * s->theta_steps;
     double *gain = calloc((size_t)cells, sizeof *gain), *worse = calloc((size_t)cells, sizeof *worse);
-    double *n = calloc((size_t)cells, sizeof *n), *err0 = calloc((size_t)cells, sizeof *err0);
-    double *err1 = calloc((size_t)cells, sizeof *err1), *err2 = calloc((size_t)cells, sizeof *err2);
+    double *n = calloc((size_t)cells, sizeof *n), *err = calloc((size_t)cells * NOH_METHODS, sizeof *err);
     char path[4096], *text = NULL;
     size_t text_len = 0;
     int rc = -1;
     FILE *mem = NULL;
-    if (!gain || !worse || !n || !err0 || !err1 || !err2) {
+    if (!gain || !worse || !n || !err) {
         gt_error_set(e, dir, "out of memory");
         goto done;
     }
@@ -128,24 +139,23 @@ static int write_map(const char *dir, const sphere_noh_sweep *s, long count, con
         int idx[4];
         grid_config(s, i, idx);
         int cell = idx[0] * s->theta_steps + idx[1];
-        double e0 = best[i] - got[3 * i], e1 = best[i] - got[3 * i + 1], e2 = best[i] - got[3 * i + 2];
+        double e0 = SHORT(best, got, i, NOH_KARIS), e1 = SHORT(best, got, i, NOH_STEP1);
         gain[cell] += e0 - e1, worse[cell] += e1 > e0 + 1e-6, n[cell] += 1.0;
-        err0[cell] += e0, err1[cell] += e1, err2[cell] += e2;
+        for (int m = 0; m < NOH_METHODS; ++m)
+            err[NOH_METHODS * cell + m] += SHORT(best, got, i, m);
     }
     if (!(mem = open_memstream(&text, &text_len))) {
         gt_error_set(e, dir, "out of memory");
         goto done;
     }
-    fprintf(mem, "n_dot_v,light_theta_deg,mean_gain_newton1,share_newton1_worse,mean_err_karis,mean_err_newton1,"
-                 "mean_err_newton2\n");
+    fprintf(mem, "n_dot_v,light_theta_deg,mean_gain_newton1,share_newton1_worse\n");
     for (int a = 0; a < s->nv_steps; ++a) {
         for (int b = 0; b < s->theta_steps; ++b) {
             int cell = a * s->theta_steps + b;
-            fprintf(mem, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", (a + 0.5) / s->nv_steps,
-                    90.0 * (b + 0.5) / s->theta_steps, gain[cell] / n[cell], worse[cell] / n[cell],
-                    err0[cell] / n[cell], err1[cell] / n[cell], err2[cell] / n[cell]);
+            fprintf(mem, "%.6g,%.6g,%.6g,%.6g\n", (a + 0.5) / s->nv_steps, 90.0 * (b + 0.5) / s->theta_steps,
+                    gain[cell] / n[cell], worse[cell] / n[cell]);
         }
-        fprintf(mem, "\n"); /* gnuplot's blank line between scan rows */
+    fprintf(mem, "\n"); /* gnuplot's blank line between scan rows */
     }
     fclose(mem);
     mem = NULL;
@@ -169,7 +179,7 @@ static int write_map(const char *dir, const sphere_noh_sweep *s, long count, con
              "unset multiplot\n",
              dir, dir, dir);
     snprintf(path, sizeof path, "%s/sphere_noh_map.png", dir);
-    if (gnuplot_png(path, 1200, 500, commands, e) != 0 || write_by_nv(dir, s, err0, err1, err2, n, e) != 0)
+    if (gnuplot_png(path, 1200, 500, commands, e) != 0 || write_by_nv(dir, s, err, n, e) != 0)
         goto done;
     /* Mean shortfall against n.v, averaged over the elevations too. */
     snprintf(commands, sizeof commands,
@@ -178,14 +188,15 @@ static int write_map(const char *dir, const sphere_noh_sweep *s, long count, con
              "set title 'GetNoHSquared against the brute-force maximum'\n"
              "plot '%s/sphere_noh_by_nv.csv' using 1:2 with linespoints title 'Karis (0 steps)', "
              "'' using 1:3 with linespoints title '1 Newton step (Decima)', "
-             "'' using 1:4 with linespoints title '2 Newton steps'\n",
+             "'' using 1:4 with linespoints title '2 Newton steps', "
+             "'' using 1:5 with linespoints title \"1 step, guarded (f''(0) < 0)\"\n",
              dir);
     snprintf(path, sizeof path, "%s/sphere_noh_error.png", dir);
     rc = gnuplot_png(path, 800, 500, commands, e);
 done:
     if (mem)
         fclose(mem);
-    free(text), free(gain), free(worse), free(n), free(err0), free(err1), free(err2);
+    free(text), free(gain), free(worse), free(n), free(err);
     return rc;
 }
 
@@ -195,20 +206,20 @@ static void summarise(long count, const float *best, const float *got, sphere_no
     st->configurations = count;
     long outside = 0;
     for (long i = 0; i < count; ++i)
-        st->r_inside += got[3 * i] == 1.0f;
-    for (int m = 0; m < 3; ++m) {
+        st->r_inside += got[NOH_METHODS * i] == 1.0f;
+    for (int m = 0; m < NOH_METHODS; ++m) {
         outside = 0;
         for (long i = 0; i < count; ++i) {
-            if (got[3 * i] == 1.0f)
+            if (got[NOH_METHODS * i] == 1.0f)
                 continue;
-            double err = best[i] - got[3 * i + m];
+            double err = SHORT(best, got, i, m);
             scratch[outside++] = (float)err;
             st->mean[m] += err;
             st->worst[m] = fmax(st->worst[m], err);
-            if (m > 0) {
-                double prev = best[i] - got[3 * i + m - 1];
-                st->share_worse[m] += err > prev + 1e-6;
-                st->share_better[m] += err < prev - 1e-6;
+            if (sphere_noh_baseline[m] >= 0) {
+                double base = SHORT(best, got, i, sphere_noh_baseline[m]);
+                st->share_worse[m] += err > base + 1e-6;
+                st->share_better[m] += err < base - 1e-6;
             }
         }
         if (outside > 0) {
@@ -221,7 +232,7 @@ static void summarise(long count, const float *best, const float *got, sphere_no
 int sphere_noh_sweep_run(const sphere_noh_sweep *s, const char *dir, sphere_noh_stats *stats, gt_error *e)
 {
     long count = (long)s->nv_steps * s->theta_steps * s->phi_steps * s->size_steps;
-    float *best = malloc((size_t)count * sizeof *best), *got = malloc((size_t)count * 3 * sizeof *got);
+    float *best = malloc((size_t)count * sizeof *best), *got = malloc((size_t)count * NOH_METHODS * sizeof *got);
     float *scratch = malloc((size_t)count * sizeof *scratch);
     int rc = -1;
     if (!best || !got || !scratch) {
@@ -236,8 +247,10 @@ int sphere_noh_sweep_run(const sphere_noh_sweep *s, const char *dir, sphere_noh_
         sphere_noh_config_dots(&c, &nl, &nv, &vl);
         /* R inside: the maximum is 1 (the disc search only approaches it). */
         best[i] = sphere_noh_r_inside(&c) ? 1.0f : (float)sphere_noh_squared_max(&c, s->rim_steps, 0, NULL);
-        for (int m = 0; m < 3; ++m)
-            got[3 * i + m] = sphere_noh_squared((float)c.radius_tan, nl, nv, vl, m);
+        float *g = got + NOH_METHODS * i;
+        for (int m = NOH_KARIS; m <= NOH_STEP2; ++m)
+            g[m] = sphere_noh_squared((float)c.radius_tan, nl, nv, vl, m);
+        g[NOH_GUARDED] = sphere_noh_squared_guarded((float)c.radius_tan, nl, nv, vl);
     }
     char path[4096];
     snprintf(path, sizeof path, "%s/sphere_noh.csv", dir);
@@ -258,7 +271,8 @@ static void print_help(void)
            "spherical light: for every configuration of a grid over n.v, the light's elevation\n"
            "and azimuth and its angular size (tan(sigma) from 0.001 to 1), the shortfall below\n"
            "the brute-force maximum over the rim of Karis's point (0 Newton steps), the talk's\n"
-           "one Newton step and two steps. Prints the mean, 99th percentile and worst case, and\n"
+           "one Newton step, two steps, and one step guarded (taken only where f''(0) < 0, i.e.\n"
+           "where it heads for a maximum; not in the talk). Prints the mean, 99th percentile and worst case, and\n"
            "the share of configurations where a step makes things worse; writes\n"
            "  DIR/sphere_noh.csv        every configuration\n"
            "  DIR/sphere_noh_map.csv    means over (n.v, light elevation)\n"
@@ -301,11 +315,11 @@ int check_sphere_noh(int argc, char **argv)
         return cli_fail(&e);
     printf("%ld configurations, R inside the light (exact, 1) in %ld\n", st.configurations, st.r_inside);
     printf("shortfall of (N.H)^2 below the brute-force maximum, R outside:\n");
-    printf("%-22s %12s %12s %12s %14s %14s\n", "", "mean", "99th pct", "worst", "worse than prev", "better");
-    const char *names[3] = {"Karis (0 steps)", "1 Newton step", "2 Newton steps"};
-    for (int m = 0; m < 3; ++m)
-        printf("%-22s %12.4g %12.4g %12.4g %13.2f%% %13.2f%%\n", names[m], st.mean[m], st.p99[m], st.worst[m],
-               100.0 * st.share_worse[m], 100.0 * st.share_better[m]);
+    printf("%-22s %12s %12s %12s %14s %14s  (than)\n", "", "mean", "99th pct", "worst", "worse", "better");
+    for (int m = 0; m < NOH_METHODS; ++m)
+        printf("%-22s %12.4g %12.4g %12.4g %13.2f%% %13.2f%%  %s\n", sphere_noh_method_names[m], st.mean[m], st.p99[m],
+               st.worst[m], 100.0 * st.share_worse[m], 100.0 * st.share_better[m],
+               sphere_noh_baseline[m] >= 0 ? sphere_noh_method_names[sphere_noh_baseline[m]] : "");
     printf("written: %s/sphere_noh.csv, sphere_noh_map.csv, sphere_noh_map.png, sphere_noh_error.png\n", dir);
     return EXIT_OK;
 }

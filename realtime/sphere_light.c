@@ -142,6 +142,18 @@ float sphere_noh_squared_decima(float radius_tan, float n_dot_l, float n_dot_v, 
     return rim_noh_squared(&rim);
 }
 
+float sphere_noh_squared_guarded(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l)
+{
+    sphere_rim rim;
+    if (rim_setup(radius_tan, n_dot_l, n_dot_v, v_dot_l, &rim))
+        return 1.0f;
+    float num, den;
+    rim_newton_step(&rim, &num, &den);
+    if (den < 0.0f) /* den = (q^2/8) f''(0)/f(0) */
+        rim_rotate(&rim, num, den);
+    return rim_noh_squared(&rim);
+}
+
 vec3 karis_sphere_point(vec3 r, vec3 lc, float sin_sigma)
 {
     vec3 centre_to_ray = v3_sub(v3_scale(r, v3_dot(lc, r)), lc);

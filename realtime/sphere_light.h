@@ -52,6 +52,12 @@ float sphere_noh_squared(float radius_tan, float n_dot_l, float n_dot_v, float v
 float sphere_noh_squared_karis(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l);
 float sphere_noh_squared_decima(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l);
 
+/* Not in the talk: the step taken only where it heads for a maximum,
+ * f''(0) < 0 (xDenom < 0: it has the sign of f''(0)). Where f''(0) >= 0
+ * (grazing views) Newton's step heads for a minimum of (N.H)^2 and
+ * Karis's point is kept instead. */
+float sphere_noh_squared_guarded(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l);
+
 /* ---- Karis 2013: representative point and normalisation ---- */
 
 /* The direction to the point of the sphere closest to the reflection ray r:
