@@ -25,6 +25,9 @@ int all_stage_ao_references(all_context *ctx, gt_error *e);
 /* Ray throughput: raw Embree against the AO reference loop. */
 int all_stage_ray_throughput(all_context *ctx, gt_error *e);
 
+/* GGX sphere lights: GetNoHSquared accuracy, Decima refit, error maps, cost. */
+int all_stage_sphere_light(all_context *ctx, gt_error *e);
+
 /* "<output_dir>/<sub>" with the folder created. */
 int all_make_dir(const all_context *ctx, const char *sub, char *path, size_t size, gt_error *e);
 

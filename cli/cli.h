@@ -17,6 +17,14 @@ int verb_merge(int argc, char **argv);
 int verb_compare(int argc, char **argv);
 int verb_bench(int argc, char **argv);
 int verb_all(int argc, char **argv);
+int verb_check(int argc, char **argv);
+int verb_fit(int argc, char **argv);
+
+/* `gtlab check NAME` and `gtlab fit PROBLEM` entries (cli/check_*.c, cli/fit_*.c). */
+int check_sphere_noh(int argc, char **argv);
+int fit_sphere_light(int argc, char **argv);
+/* `gtlab bench sphere-light` (cli/bench_sphere_light.c). */
+int bench_sphere_light(int argc, char **argv);
 
 /* Prints "gtlab: <message>" on stderr and returns EXIT_USER_ERROR. */
 int cli_fail(const gt_error *e);

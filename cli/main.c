@@ -16,6 +16,8 @@ static const verb verbs[] = {
     {"merge", verb_merge, "combine partial renders of disjoint sample blocks exactly"},
     {"compare", verb_compare, "SSIM/DSSIM, RMSE and absolute errors between two EXRs"},
     {"bench", verb_bench, "throughput figures (rays/s) and their ratios, from one run"},
+    {"check", verb_check, "accuracy checks against brute force (sphere-noh, ...)"},
+    {"fit", verb_fit, "Ceres fits of real-time constants to references (sphere-light, ...)"},
     {"all", verb_all, "the main job: every reference and the accuracy report"},
 };
 

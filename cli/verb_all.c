@@ -22,6 +22,7 @@ typedef struct {
 static const all_stage stages[] = {
     {"AO references", all_stage_ao_references},
     {"ray throughput", all_stage_ray_throughput},
+    {"GGX sphere lights", all_stage_sphere_light},
 };
 
 static void print_help(void)

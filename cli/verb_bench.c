@@ -26,7 +26,9 @@ static void print_help(void)
            "  --scene S      builtin:NAME or a glTF file (default builtin:menger)\n"
            "  --width W --height H   image size (default 256x256)\n"
            "  --threads T    threads for the parallel figures (default: all cores)\n"
-           "  --repeats R    passes per figure (default 3)\n");
+           "  --repeats R    passes per figure (default 3)\n"
+           "\n"
+           "Other benchmarks: gtlab bench sphere-light --help\n");
 }
 
 static void print_report(const char *scene_spec, const ray_benchmark *b)
@@ -50,6 +52,8 @@ int verb_bench(int argc, char **argv)
         {"height", required_argument, 0, 'H'},  {"threads", required_argument, 0, 't'},
         {"repeats", required_argument, 0, 'r'}, {"help", no_argument, 0, 'h'},
         {0, 0, 0, 0}};
+    if (argc >= 2 && strcmp(argv[1], "sphere-light") == 0)
+        return bench_sphere_light(argc - 1, argv + 1);
     const char *scene_spec = "builtin:menger";
     long width = 256, height = 256, threads = omp_get_num_procs(), repeats = 3;
     int c;

@@ -28,6 +28,9 @@ static void print_help(void)
         "            same pixels. Channels: multibounce.V (one albedo), multibounce_<a>.V\n"
         "            for each of several (e.g. multibounce_0.3.V), or multibounce.R/G/B with\n"
         "            --albedo scene; the header holds gtlab.albedos and gtlab.bounces\n"
+        "  sphere-light  the G-buffer plus sphere.R/G/B: radiance towards the camera from a\n"
+        "            uniform spherical light over the glTF materials (Lambert + GGX with\n"
+        "            Schlick Fresnel), integrated exactly over the light (MIS), unshadowed\n"
         "\n"
         "options:\n"
         "  --scene S             a .gltf/.glb file or builtin:NAME ('gtlab scene list')\n"
@@ -47,6 +50,9 @@ static void print_help(void)
         "  --bounces N|inf       multibounce: inter-reflections after the first hit\n"
         "                        (0 gives V_d; default 4, as the GTAO talk); 'inf' ends paths\n"
         "                        by Russian roulette instead (unbiased)\n"
+        "  --light-position X,Y,Z  sphere-light (required): the light's centre\n"
+        "  --light-radius R      sphere-light (required): its radius, > 0\n"
+        "  --light-radiance L    sphere-light: its emitted radiance (default 1)\n"
         "  --normal shading|geometric   normal the hemisphere is built on (default shading)\n"
         "  --threads T           worker threads (default: all cores); the output does not\n"
         "                        depend on it\n"
@@ -59,7 +65,39 @@ typedef struct {
     long width, height;
     reference_request request;
     const char *albedo, *bounces, *max_distance; /* as given, or NULL */
+    const char *light_position, *light_radius, *light_radiance; /* as given, or NULL */
 } render_options;
+
+/* "X,Y,Z": three finite numbers. */
+static int parse_position(const char *option, const char *text, vec3 *out)
+{
+    double v[3];
+    char extra;
+    if (sscanf(text, "%lf,%lf,%lf%c", &v[0], &v[1], &v[2], &extra) != 3 || !isfinite(v[0]) || !isfinite(v[1]) ||
+        !isfinite(v[2]))
+        return cli_failf(option, "'%s' is not three numbers X,Y,Z", text), -1;
+    *out = v3((float)v[0], (float)v[1], (float)v[2]);
+    return 0;
+}
+
+/* The sphere-light options: refused with other quantities, required with it. */
+static int check_light_options(render_options *o)
+{
+    const char *given = o->light_position ? "--light-position" : o->light_radius ? "--light-radius"
+                        : o->light_radiance                   ? "--light-radiance" : NULL;
+    if (o->request.quantity != QUANTITY_SPHERE_LIGHT)
+        return given ? (cli_failf(given, "applies to sphere-light only"), -1) : 0;
+    if (!o->light_position || !o->light_radius)
+        return cli_failf("render", "sphere-light needs --light-position and --light-radius"), -1;
+    double radius, radiance = 1.0;
+    sphere_light_settings *l = &o->request.sphere_light;
+    if (parse_position("--light-position", o->light_position, &l->position) != 0 ||
+        cli_parse_double("--light-radius", o->light_radius, 1e-30, 1e30, &radius) != 0 ||
+        (o->light_radiance && cli_parse_double("--light-radiance", o->light_radiance, 1e-30, 1e30, &radiance) != 0))
+        return -1;
+    l->radius = (float)radius, l->radiance = (float)radiance;
+    return 0;
+}
 
 /* The options that belong to one quantity only are refused with the others. */
 static int check_quantity_options(render_options *o)
@@ -90,6 +128,8 @@ static int parse_options(int argc, char **argv, render_options *o)
         {"max-distance", required_argument, 0, 'd'}, {"normal", required_argument, 0, 'N'},
         {"threads", required_argument, 0, 't'},    {"output", required_argument, 0, 'o'},
         {"albedo", required_argument, 0, 'a'},     {"bounces", required_argument, 0, 'b'},
+        {"light-position", required_argument, 0, 'P'}, {"light-radius", required_argument, 0, 'R'},
+        {"light-radiance", required_argument, 0, 'L'},
         {"help", no_argument, 0, 'h'},             {0, 0, 0, 0}};
     long value;
     double real;
@@ -117,6 +157,9 @@ static int parse_options(int argc, char **argv, render_options *o)
             break;
         case 'a': o->albedo = optarg; break;
         case 'b': o->bounces = optarg; break;
+        case 'P': o->light_position = optarg; break;
+        case 'R': o->light_radius = optarg; break;
+        case 'L': o->light_radiance = optarg; break;
         case 't':
             if (cli_parse_int("--threads", optarg, 1, 1024, &value)) return -1;
             o->request.sampling.threads = (int)value;
@@ -134,12 +177,12 @@ static int parse_options(int argc, char **argv, render_options *o)
         }
     }
     if (optind >= argc)
-        return cli_failf("render", "no QUANTITY given (gbuffer, ao or multibounce; see 'gtlab render --help')"), -1;
+        return cli_failf("render", "no QUANTITY given (gbuffer, ao, multibounce or sphere-light; see 'gtlab render --help')"), -1;
     if (reference_quantity_parse(argv[optind], &o->request.quantity) != 0)
-        return cli_failf("render", "unknown quantity '%s' (gbuffer, ao or multibounce)", argv[optind]), -1;
+        return cli_failf("render", "unknown quantity '%s' (gbuffer, ao, multibounce or sphere-light)", argv[optind]), -1;
     if (optind + 1 < argc)
         return cli_failf("render", "unexpected argument '%s'", argv[optind + 1]), -1;
-    if (check_quantity_options(o) != 0)
+    if (check_quantity_options(o) != 0 || check_light_options(o) != 0)
         return -1;
     if (!o->scene)
         return cli_failf("render", "--scene is required"), -1;

@@ -9,7 +9,7 @@
 
 #include "raytracer/ao_integrator.h"
 
-static const char *const quantity_names[] = {"gbuffer", "ao", "multibounce"};
+static const char *const quantity_names[] = {"gbuffer", "ao", "multibounce", "sphere-light"};
 enum { QUANTITY_COUNT = sizeof quantity_names / sizeof quantity_names[0] };
 
 int reference_quantity_parse(const char *name, reference_quantity *q)
@@ -63,6 +63,10 @@ static int write_header(const char *scene_spec, const camera *cam, const referen
         rc |= image_set_attribute(img, MULTIBOUNCE_ATTR_BOUNCES, bounces);
         rc |= set_attributef(img, REF_ATTR_SETTINGS, "albedos=%s bounces=%s target_stderr=%.9g", albedos, bounces,
                              ss->target_stderr);
+    } else if (req->quantity == QUANTITY_SPHERE_LIGHT) {
+        char light[512];
+        sphere_light_settings_text(&req->sphere_light, light, sizeof light);
+        rc |= set_attributef(img, REF_ATTR_SETTINGS, "%s target_stderr=%.9g", light, ss->target_stderr);
     } else {
         rc |= set_attributef(img, REF_ATTR_SETTINGS, "max_distance=%.9g target_stderr=%.9g", req->max_distance,
                              ss->target_stderr);
@@ -72,11 +76,13 @@ static int write_header(const char *scene_spec, const camera *cam, const referen
 
 /* Samples the request's quantity at the G-buffer's surfaces into `out`. */
 static int render_quantity(const embree_scene *es, const gbuffer *gb, const reference_request *req,
-                           const multibounce_plan *plan, const char *scene_spec, image *out, render_stats *stats,
-                           gt_error *e)
+                           const multibounce_plan *plan, const sphere_light_plan *light, const char *scene_spec,
+                           image *out, render_stats *stats, gt_error *e)
 {
     ao_settings ao = {req->max_distance};
-    integrator it = req->quantity == QUANTITY_AO ? ao_integrator(es, &ao) : multibounce_integrator(es, plan);
+    integrator it = req->quantity == QUANTITY_AO            ? ao_integrator(es, &ao)
+                    : req->quantity == QUANTITY_SPHERE_LIGHT ? sphere_light_integrator(es, light)
+                                                             : multibounce_integrator(es, plan);
     mc_film film;
     if (render_estimates(gb, &it, &req->sampling, &film, stats, e) != 0)
         return -1;
@@ -100,6 +106,10 @@ int reference_render(const scene *s, const char *scene_spec, const camera *cam, 
         if (req->multibounce.scene_albedo)
             multibounce_warn_albedo_range(s);
     }
+    sphere_light_plan light;
+    if (req->quantity == QUANTITY_SPHERE_LIGHT &&
+        sphere_light_plan_init(&light, &req->sphere_light, s, cam->position, e) != 0)
+        return -1;
     if (image_init(out, cam->width, cam->height) != 0)
         return gt_error_set(e, scene_spec, "invalid image size");
     embree_scene es;
@@ -110,7 +120,7 @@ int reference_render(const scene *s, const char *scene_spec, const camera *cam, 
     if (rc == 0 && gbuffer_write_channels(&gb, s, out) != 0)
         rc = gt_error_set(e, scene_spec, "out of memory for the G-buffer image");
     if (rc == 0 && req->quantity != QUANTITY_GBUFFER)
-        rc = render_quantity(&es, &gb, req, &plan, scene_spec, out, stats, e);
+        rc = render_quantity(&es, &gb, req, &plan, &light, scene_spec, out, stats, e);
     if (rc == 0 && write_header(scene_spec, cam, req, out) != 0)
         rc = gt_error_set(e, scene_spec, "out of memory for the header");
     gbuffer_free(&gb);

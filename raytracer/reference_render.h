@@ -9,9 +9,10 @@
 #include "raytracer/gbuffer.h"
 #include "raytracer/multibounce_integrator.h"
 #include "raytracer/render_loop.h"
+#include "raytracer/sphere_light_integrator.h"
 #include "scene/scene.h"
 
-typedef enum { QUANTITY_GBUFFER, QUANTITY_AO, QUANTITY_MULTIBOUNCE } reference_quantity;
+typedef enum { QUANTITY_GBUFFER, QUANTITY_AO, QUANTITY_MULTIBOUNCE, QUANTITY_SPHERE_LIGHT } reference_quantity;
 
 typedef struct {
     reference_quantity quantity;
@@ -19,6 +20,7 @@ typedef struct {
     normal_mode normals;
     float max_distance;               /* ao only; INFINITY: none */
     multibounce_settings multibounce; /* multibounce only: albedos, bounces */
+    sphere_light_settings sphere_light; /* sphere-light only: the light */
 } reference_request;
 
 /* "gbuffer" / "ao" / "multibounce" -> quantity; -1 if unknown. */
