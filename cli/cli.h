@@ -17,6 +17,10 @@ int verb_merge(int argc, char **argv);
 int verb_compare(int argc, char **argv);
 int verb_bench(int argc, char **argv);
 int verb_all(int argc, char **argv);
+int verb_fit(int argc, char **argv);
+
+/* gtlab fit problems (cli/fit_<problem>.c), dispatched by verb_fit.c. */
+int fit_multibounce(int argc, char **argv);
 
 /* Prints "gtlab: <message>" on stderr and returns EXIT_USER_ERROR. */
 int cli_fail(const gt_error *e);

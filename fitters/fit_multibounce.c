@@ -1,0 +1,421 @@
+/* The GTAO multi-bounce refit (Jimenez et al. 2016, "Fitting for a Fixed
+ * Albedo" to "Finding a Symbolic Expression"); see fit_multibounce.h. The
+ * talk fitted its joint model by lines through the per-albedo coefficients;
+ * here the joint model is fitted to all samples at once (issue 3). */
+#define _POSIX_C_SOURCE 200809L
+#include "fitters/fit_multibounce.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- Data ----------------------------------------------------------------------------- */
+
+void multibounce_data_init(multibounce_data *d) { memset(d, 0, sizeof *d); }
+
+void multibounce_data_free(multibounce_data *d)
+{
+    free(d->samples);
+    for (int i = 0; i < d->file_count; ++i)
+        free(d->files[i]);
+    free(d->files);
+    memset(d, 0, sizeof *d);
+}
+
+int multibounce_data_scene(multibounce_data *d, const char *name, gt_error *e)
+{
+    for (int i = 0; i < d->scene_count; ++i)
+        if (strcmp(d->scenes[i], name) == 0)
+            return i;
+    if (d->scene_count == MBFIT_MAX_SCENES)
+        return gt_error_set(e, name, "more than %d scenes", MBFIT_MAX_SCENES);
+    snprintf(d->scenes[d->scene_count], MBFIT_NAME_MAX, "%s", name);
+    return d->scene_count++;
+}
+
+int multibounce_data_albedo(multibounce_data *d, float albedo, gt_error *e)
+{
+    for (int i = 0; i < d->albedo_count; ++i)
+        if (d->albedos[i] == albedo)
+            return i;
+    if (d->albedo_count == MBFIT_MAX_ALBEDOS)
+        return gt_error_set(e, "albedos", "more than %d distinct albedos", MBFIT_MAX_ALBEDOS);
+    d->albedos[d->albedo_count] = albedo;
+    return d->albedo_count++;
+}
+
+int multibounce_data_push(multibounce_data *d, int scene, int albedo_index, float visibility, float multibounce,
+                          gt_error *e)
+{
+    if (d->count == d->capacity) {
+        size_t capacity = d->capacity ? 2 * d->capacity : 4096;
+        multibounce_sample *grown = realloc(d->samples, capacity * sizeof *grown);
+        if (!grown)
+            return gt_error_set(e, "multibounce fit", "out of memory for %zu samples", capacity);
+        d->samples = grown;
+        d->capacity = capacity;
+    }
+    multibounce_sample s = {visibility, multibounce, d->albedos[albedo_index], 1.0f, (short)scene,
+                            (short)albedo_index};
+    d->samples[d->count++] = s;
+    d->group_count[scene][albedo_index]++;
+    return 0;
+}
+
+void multibounce_data_weigh(multibounce_data *d)
+{
+    int groups = 0;
+    for (int s = 0; s < d->scene_count; ++s)
+        for (int a = 0; a < d->albedo_count; ++a)
+            groups += d->group_count[s][a] > 0;
+    for (size_t i = 0; i < d->count; ++i) {
+        multibounce_sample *p = &d->samples[i];
+        p->weight = (float)((double)d->count / ((double)groups * (double)d->group_count[p->scene][p->albedo_index]));
+    }
+}
+
+static int add_file_name(multibounce_data *d, const char *path, gt_error *e)
+{
+    char **grown = realloc(d->files, (size_t)(d->file_count + 1) * sizeof *grown);
+    if (!grown || !(grown[d->file_count] = strdup(path))) {
+        if (grown)
+            d->files = grown;
+        return gt_error_set(e, path, "out of memory");
+    }
+    d->files = grown;
+    d->file_count++;
+    return 0;
+}
+
+int multibounce_data_select(const multibounce_data *d, int scene, int exclude, int albedo_index,
+                            multibounce_data *out, gt_error *e)
+{
+    multibounce_data_init(out);
+    out->scene_count = d->scene_count;
+    out->albedo_count = d->albedo_count;
+    memcpy(out->scenes, d->scenes, sizeof d->scenes);
+    memcpy(out->albedos, d->albedos, sizeof d->albedos);
+    memcpy(out->bounces, d->bounces, sizeof d->bounces);
+    for (size_t i = 0; i < d->count; ++i) {
+        const multibounce_sample *p = &d->samples[i];
+        int scene_kept = scene < 0 || (exclude ? p->scene != scene : p->scene == scene);
+        if (!scene_kept || (albedo_index >= 0 && p->albedo_index != albedo_index))
+            continue;
+        if (multibounce_data_push(out, p->scene, p->albedo_index, p->visibility, p->multibounce, e) != 0) {
+            multibounce_data_free(out);
+            return -1;
+        }
+    }
+    multibounce_data_weigh(out);
+    return 0;
+}
+
+/* The channel of albedo token `token` ("0.3") in a file of `count` albedos. */
+static void albedo_channel(const char *token, int count, char *name, size_t size)
+{
+    if (count == 1)
+        snprintf(name, size, "multibounce.V");
+    else
+        snprintf(name, size, "multibounce_%.31s.V", token);
+}
+
+/* Splits the gtlab.albedos attribute ("0.1 0.3 0.5") into albedos. */
+static int parse_albedo_list(const char *text, const char *path, char tokens[][32], float *albedos, int *count,
+                             gt_error *e)
+{
+    *count = 0;
+    for (const char *p = text; *p;) {
+        while (*p == ' ')
+            ++p;
+        if (!*p)
+            break;
+        size_t n = strcspn(p, " ");
+        char *end;
+        if (*count == MBFIT_MAX_ALBEDOS || n >= 32)
+            return gt_error_set(e, path, "gtlab.albedos '%s' is not a list of albedos", text);
+        memcpy(tokens[*count], p, n);
+        tokens[*count][n] = '\0';
+        albedos[*count] = strtof(tokens[*count], &end);
+        if (*end != '\0' || !(albedos[*count] >= 0.0f && albedos[*count] <= 1.0f))
+            return gt_error_set(e, path, "gtlab.albedos '%s' is not a list of albedos in [0, 1]", text);
+        ++*count;
+        p += n;
+    }
+    return *count ? 0 : gt_error_set(e, path, "gtlab.albedos is empty");
+}
+
+static int check_header(multibounce_data *d, const image *img, const char *path, gt_error *e)
+{
+    const char *quantity = image_get_attribute(img, "gtlab.quantity");
+    const char *albedos = image_get_attribute(img, "gtlab.albedos");
+    const char *bounces = image_get_attribute(img, "gtlab.bounces");
+    if (!quantity || strcmp(quantity, "multibounce") != 0 || !albedos || !bounces)
+        return gt_error_set(e, path, "no multibounce channels (not made by 'gtlab render multibounce'%s%s)",
+                            quantity ? "; it holds " : "", quantity ? quantity : "");
+    if (strcmp(albedos, "scene") == 0)
+        return gt_error_set(e, path, "coloured render (--albedo scene); the fit needs grey albedos "
+                                     "(--albedo 0.1,0.2,...)");
+    if (d->bounces[0] && strcmp(d->bounces, bounces) != 0)
+        return gt_error_set(e, path, "rendered with --bounces %s, but %s with --bounces %s", bounces, d->files[0],
+                            d->bounces);
+    snprintf(d->bounces, sizeof d->bounces, "%s", bounces);
+    return 0;
+}
+
+static const float *require_channel(const image *img, const char *name, const char *path, gt_error *e)
+{
+    const float *p = image_channel_data(img, name);
+    if (!p)
+        gt_error_set(e, path, "channel %s is missing", name);
+    return p;
+}
+
+int multibounce_data_add_image(multibounce_data *d, const image *img, const char *path, gt_error *e)
+{
+    if (check_header(d, img, path, e) != 0)
+        return -1;
+    char tokens[MBFIT_MAX_ALBEDOS][32];
+    float albedos[MBFIT_MAX_ALBEDOS];
+    int count, index[MBFIT_MAX_ALBEDOS];
+    const float *planes[MBFIT_MAX_ALBEDOS];
+    if (parse_albedo_list(image_get_attribute(img, "gtlab.albedos"), path, tokens, albedos, &count, e) != 0)
+        return -1;
+    const float *mask = require_channel(img, "mask.A", path, e), *vd = mask ? require_channel(img, "ao.V", path, e) : NULL;
+    if (!vd)
+        return -1;
+    for (int k = 0; k < count; ++k) {
+        char name[64];
+        albedo_channel(tokens[k], count, name, sizeof name);
+        if (!(planes[k] = require_channel(img, name, path, e)))
+            return -1;
+    }
+    const char *scene_name = image_get_attribute(img, "gtlab.scene");
+    int scene = multibounce_data_scene(d, scene_name ? scene_name : path, e);
+    if (scene < 0)
+        return -1;
+    for (int k = 0; k < count; ++k)
+        if ((index[k] = multibounce_data_albedo(d, albedos[k], e)) < 0)
+            return -1;
+    size_t covered = 0;
+    for (size_t i = 0; i < image_pixel_count(img); ++i) {
+        if (mask[i] == 0.0f)
+            continue;
+        ++covered;
+        for (int k = 0; k < count; ++k) {
+            float v = vd[i], m = planes[k][i];
+            if (!(v >= 0.0f && v <= 1.0f && m >= 0.0f && m <= 1.0f))
+                return gt_error_set(e, path, "pixel (%zu, %zu): V_d = %g, V'_d = %g outside [0, 1]",
+                                    i % (size_t)img->width, i / (size_t)img->width, (double)v, (double)m);
+            if (multibounce_data_push(d, scene, index[k], v, m, e) != 0)
+                return -1;
+        }
+    }
+    if (covered == 0)
+        return gt_error_set(e, path, "no surface pixel (mask.A is 0 everywhere)");
+    return add_file_name(d, path, e);
+}
+
+/* ---- Fitting -------------------------------------------------------------------------- */
+
+typedef struct {
+    const multibounce_sample *samples;
+    int count, degree;
+} sample_block;
+
+static int block_residuals(void *user, const double *params, double *residuals, double *jacobian)
+{
+    const sample_block *b = user;
+    const int n = multibounce_model_parameter_count(b->degree);
+    const multibounce_model m = multibounce_model_from_vector(b->degree, params);
+    for (int i = 0; i < b->count; ++i) {
+        const multibounce_sample *s = &b->samples[i];
+        const double root_w = sqrt((double)s->weight);
+        const multibounce_cubic c = multibounce_cubic_at(&m, s->albedo);
+        residuals[i] = root_w * (multibounce_cubic_eval(&c, s->visibility) - s->multibounce);
+        if (jacobian) {
+            multibounce_model_gradient(b->degree, s->visibility, s->albedo, jacobian + (size_t)i * n);
+            for (int j = 0; j < n; ++j)
+                jacobian[(size_t)i * n + j] *= root_w;
+        }
+    }
+    return 0;
+}
+
+static int distinct_albedos(const multibounce_data *d)
+{
+    int n = 0;
+    for (int a = 0; a < d->albedo_count; ++a)
+        for (int s = 0; s < d->scene_count; ++s)
+            if (d->group_count[s][a]) {
+                ++n;
+                break;
+            }
+    return n;
+}
+
+int multibounce_fit_model(const multibounce_data *d, int degree, int block_size, multibounce_fit *out, gt_error *e)
+{
+    memset(out, 0, sizeof *out);
+    const int n = multibounce_model_parameter_count(degree);
+    if (degree < 0 || degree > MULTIBOUNCE_MAX_DEGREE)
+        return gt_error_set(e, "multibounce fit", "degree %d outside [0, %d]", degree, MULTIBOUNCE_MAX_DEGREE);
+    if (distinct_albedos(d) < degree + 1)
+        return gt_error_set(e, "multibounce fit", "a, b, c of degree %d in the albedo need %d albedos, the data "
+                            "have %d", degree, degree + 1, distinct_albedos(d));
+    if (d->count <= (size_t)n)
+        return gt_error_set(e, "multibounce fit", "%zu samples cannot determine %d coefficients", d->count, n);
+    if (block_size <= 0)
+        block_size = MBFIT_DEFAULT_BLOCK;
+    size_t block_count = (d->count + (size_t)block_size - 1) / (size_t)block_size;
+    sample_block *blocks = malloc(block_count * sizeof *blocks);
+    if (!blocks)
+        return gt_error_set(e, "multibounce fit", "out of memory");
+    /* Start at V'_d = V_d (c = 1): the model is linear in its coefficients,
+     * so Levenberg-Marquardt lands on the optimum from anywhere. */
+    double params[MULTIBOUNCE_MAX_PARAMETERS] = {0};
+    params[2 * (degree + 1)] = 1.0;
+    gt_fit *fit = gt_fit_create(n, params, e);
+    int rc = fit ? 0 : -1;
+    for (size_t k = 0; k < block_count && rc == 0; ++k) {
+        size_t first = k * (size_t)block_size;
+        size_t count = d->count - first < (size_t)block_size ? d->count - first : (size_t)block_size;
+        blocks[k] = (sample_block){d->samples + first, (int)count, degree};
+        rc = gt_fit_add_block(fit, (int)count, block_residuals, &blocks[k], NULL, e);
+    }
+    if (rc == 0)
+        rc = gt_fit_solve(fit, NULL, &out->solver, e);
+    if (rc == 0)
+        rc = gt_fit_covariance(fit, out->covariance, out->standard_errors, &out->residual_variance, e);
+    if (rc == 0) {
+        out->model = multibounce_model_from_vector(degree, params);
+        out->parameter_count = n;
+    }
+    gt_fit_destroy(fit);
+    free(blocks);
+    return rc;
+}
+
+void multibounce_measure(const multibounce_data *d, const multibounce_model *m, int with_max, multibounce_errors *out)
+{
+    double sum_w = 0.0, sum_wr2 = 0.0, max_abs = 0.0, below = 0.0;
+    for (size_t i = 0; i < d->count; ++i) {
+        const multibounce_sample *s = &d->samples[i];
+        const multibounce_cubic c = multibounce_cubic_at(m, s->albedo);
+        double cubic = multibounce_cubic_eval(&c, s->visibility);
+        double model = with_max ? gtao_multibounce(m, s->visibility, s->albedo) : cubic;
+        double r = model - s->multibounce;
+        sum_w += s->weight;
+        sum_wr2 += s->weight * r * r;
+        max_abs = fmax(max_abs, fabs(r));
+        below += cubic < s->visibility ? s->weight : 0.0;
+    }
+    out->samples = d->count;
+    out->rmse = sum_w > 0 ? sqrt(sum_wr2 / sum_w) : 0.0;
+    out->max_abs = max_abs;
+    out->below = sum_w > 0 ? below / sum_w : 0.0;
+}
+
+/* ---- The analysis ---------------------------------------------------------------------- */
+
+static int analyse_albedo(const multibounce_data *d, int albedo_index, const multibounce_analysis *a,
+                          multibounce_albedo_result *r, gt_error *e)
+{
+    multibounce_data one;
+    if (multibounce_data_select(d, -1, 0, albedo_index, &one, e) != 0)
+        return -1;
+    r->albedo = d->albedos[albedo_index];
+    const multibounce_model talk = multibounce_model_jimenez2016();
+    int rc = multibounce_fit_model(&one, 0, 0, &r->fit, e);
+    if (rc == 0) {
+        multibounce_measure(&one, &r->fit.model, 1, &r->own);
+        multibounce_measure(&one, &a->linear.model, 1, &r->linear);
+        multibounce_measure(&one, &talk, 1, &r->talk);
+    }
+    multibounce_data_free(&one);
+    return rc;
+}
+
+/* Fits on every scene but `scene`, measures on `scene`. */
+static int hold_out(const multibounce_data *d, int scene, int with_quadratic, multibounce_heldout *h, gt_error *e)
+{
+    multibounce_data train, test;
+    if (multibounce_data_select(d, scene, 1, -1, &train, e) != 0)
+        return -1;
+    if (multibounce_data_select(d, scene, 0, -1, &test, e) != 0) {
+        multibounce_data_free(&train);
+        return -1;
+    }
+    h->scene = scene;
+    h->has_quadratic = with_quadratic;
+    const multibounce_model talk = multibounce_model_jimenez2016();
+    multibounce_fit fit;
+    int rc = multibounce_fit_model(&train, 1, 0, &fit, e);
+    if (rc == 0) {
+        h->linear = fit.model;
+        multibounce_measure(&test, &h->linear, 1, &h->linear_err);
+        multibounce_measure(&test, &talk, 1, &h->talk_err);
+    }
+    if (rc == 0 && with_quadratic && (rc = multibounce_fit_model(&train, 2, 0, &fit, e)) == 0) {
+        h->quadratic = fit.model;
+        multibounce_measure(&test, &h->quadratic, 1, &h->quadratic_err);
+    }
+    multibounce_data_free(&train);
+    multibounce_data_free(&test);
+    if (rc != 0) {
+        char why[sizeof e->message];
+        snprintf(why, sizeof why, "%s", e->message);
+        return gt_error_set(e, d->scenes[scene], "leave-one-scene-out fit without it: %s", why);
+    }
+    return 0;
+}
+
+static int leave_one_scene_out(const multibounce_data *d, multibounce_analysis *a, gt_error *e)
+{
+    a->heldout_count = 0;
+    double sums[3] = {0, 0, 0};
+    for (int s = 0; s < d->scene_count; ++s) {
+        multibounce_heldout *h = &a->heldout[a->heldout_count];
+        if (hold_out(d, s, a->has_quadratic, h, e) != 0)
+            return -1;
+        sums[0] += h->linear_err.rmse;
+        sums[1] += h->quadratic_err.rmse;
+        sums[2] += h->talk_err.rmse;
+        a->heldout_count++;
+    }
+    a->heldout_mean_linear = sums[0] / a->heldout_count;
+    a->heldout_mean_quadratic = sums[1] / a->heldout_count;
+    a->heldout_mean_talk = sums[2] / a->heldout_count;
+    return 0;
+}
+
+int multibounce_analyse(const multibounce_data *d, multibounce_analysis *a, gt_error *e)
+{
+    memset(a, 0, sizeof *a);
+    if (distinct_albedos(d) < 2)
+        return gt_error_set(e, "--data", "the joint model needs samples at 2 or more albedos (render with "
+                                         "--albedo 0.1,0.2,...)");
+    const multibounce_model talk = multibounce_model_jimenez2016();
+    if (multibounce_fit_model(d, 1, 0, &a->linear, e) != 0)
+        return -1;
+    a->has_quadratic = distinct_albedos(d) >= 3;
+    if (a->has_quadratic && multibounce_fit_model(d, 2, 0, &a->quadratic, e) != 0)
+        return -1;
+    for (int with_max = 0; with_max < 2; ++with_max) {
+        multibounce_measure(d, &a->linear.model, with_max, &a->linear_err[with_max]);
+        multibounce_measure(d, &talk, with_max, &a->talk_err[with_max]);
+        if (a->has_quadratic)
+            multibounce_measure(d, &a->quadratic.model, with_max, &a->quadratic_err[with_max]);
+    }
+    for (int k = 0; k < d->albedo_count; ++k)
+        if (analyse_albedo(d, k, a, &a->per_albedo[k], e) != 0)
+            return -1;
+    a->chosen_degree = 1;
+    if (d->scene_count >= 2) {
+        if (leave_one_scene_out(d, a, e) != 0)
+            return -1;
+        if (a->has_quadratic && a->heldout_mean_quadratic < a->heldout_mean_linear)
+            a->chosen_degree = 2;
+    }
+    return 0;
+}

@@ -1,0 +1,137 @@
+/* The GTAO multi-bounce refit (Jimenez et al. 2016, "Fitting for a Fixed
+ * Albedo" to "Finding a Symbolic Expression"; issue 3): samples (V_d, V'_d,
+ * rho) from multi-bounce references, fitted through the Ceres bridge with
+ * the model of realtime/multibounce.h (the formula lives there only):
+ *   - per albedo, the cubic V'_d = ((a V_d + b) V_d + c) V_d (degree 0);
+ *   - jointly over all albedos, a, b, c linear in rho (degree 1, the talk's);
+ *   - the alternative with a, b, c quadratic in rho (degree 2), kept beside
+ *     the linear model and chosen only if its leave-one-scene-out error is
+ *     lower.
+ * Weighting: each (scene, albedo) group of samples carries the same total
+ * weight, so every scene and every albedo counts equally whatever its pixel
+ * count; weights are scaled to mean 1. A sample's residual is
+ * sqrt(w) (cubic(V_d) - V'_d). Fits use the cubic without the max(x, .) of
+ * the shader (it is not differentiable and the fit should not depend on
+ * it); the errors are reported with and without it. */
+#ifndef GTLAB_FITTERS_FIT_MULTIBOUNCE_H
+#define GTLAB_FITTERS_FIT_MULTIBOUNCE_H
+
+#include <stddef.h>
+
+#include "core/error.h"
+#include "core/image.h"
+#include "fitters/ceres_bridge.h"
+#include "realtime/multibounce.h"
+
+enum { MBFIT_MAX_SCENES = 64, MBFIT_MAX_ALBEDOS = 32, MBFIT_NAME_MAX = 256, MBFIT_DEFAULT_BLOCK = 1024 };
+
+typedef struct {
+    float visibility;   /* V_d (ao.V) */
+    float multibounce;  /* V'_d */
+    float albedo;
+    float weight;       /* from multibounce_data_weigh */
+    short scene, albedo_index;
+} multibounce_sample;
+
+typedef struct {
+    multibounce_sample *samples;
+    size_t count, capacity;
+    int scene_count, albedo_count, file_count;
+    char scenes[MBFIT_MAX_SCENES][MBFIT_NAME_MAX];
+    float albedos[MBFIT_MAX_ALBEDOS];
+    char **files;
+    char bounces[16];   /* the references' --bounces, "" before the first file */
+    size_t group_count[MBFIT_MAX_SCENES][MBFIT_MAX_ALBEDOS];
+} multibounce_data;
+
+void multibounce_data_init(multibounce_data *d);
+void multibounce_data_free(multibounce_data *d);
+
+/* Index of a scene / albedo, added if new; -1 with e when the lists are full. */
+int multibounce_data_scene(multibounce_data *d, const char *name, gt_error *e);
+int multibounce_data_albedo(multibounce_data *d, float albedo, gt_error *e);
+/* Appends one sample (weights are set by multibounce_data_weigh). */
+int multibounce_data_push(multibounce_data *d, int scene, int albedo_index, float visibility, float multibounce,
+                          gt_error *e);
+
+/* The samples of a reference made by `gtlab render multibounce --albedo ...`
+ * (grey albedos): every pixel with mask.A != 0 gives one sample per albedo
+ * (ao.V, multibounce[_<rho>].V). The scene is the file's gtlab.scene. Errors
+ * name `path`: not a multibounce render, coloured (--albedo scene), missing
+ * channels, values outside [0, 1], no surface pixel, a --bounces setting
+ * different from earlier files. Then call multibounce_data_weigh. */
+int multibounce_data_add_image(multibounce_data *d, const image *img, const char *path, gt_error *e);
+
+/* Sets every weight: each non-empty (scene, albedo) group gets equal total
+ * weight, scaled so that the mean weight is 1. */
+void multibounce_data_weigh(multibounce_data *d);
+
+/* A copy of the samples of scene `scene` (or of all scenes but it, when
+ * exclude; every scene when scene < 0) and of albedo `albedo_index` (every
+ * albedo when < 0), reweighed. Scene and albedo indices are kept. */
+int multibounce_data_select(const multibounce_data *d, int scene, int exclude, int albedo_index,
+                            multibounce_data *out, gt_error *e);
+
+typedef struct {
+    multibounce_model model;
+    int parameter_count;
+    double standard_errors[MULTIBOUNCE_MAX_PARAMETERS];
+    double covariance[MULTIBOUNCE_MAX_PARAMETERS * MULTIBOUNCE_MAX_PARAMETERS];
+    double residual_variance;
+    gt_fit_result solver;
+} multibounce_fit;
+
+/* Least-squares fit of the model of `degree` (0: one cubic, whatever the
+ * albedos) to the weighted samples, in blocks of block_size residuals
+ * (0: MBFIT_DEFAULT_BLOCK). Returns 0 or -1 with e (too few samples or
+ * albedos to determine the model, solver failure). */
+int multibounce_fit_model(const multibounce_data *d, int degree, int block_size, multibounce_fit *out, gt_error *e);
+
+typedef struct {
+    size_t samples;
+    double rmse;          /* sqrt(sum w r^2 / sum w): scenes and albedos equal */
+    double max_abs;       /* max |r| over the samples */
+    double below;         /* weighted fraction of samples where the cubic < V_d (the max acts) */
+} multibounce_errors;
+
+/* Errors of the model on the samples, r = model(V_d, rho) - V'_d, with the
+ * shader's max(V_d, .) (with_max) or the bare cubic. */
+void multibounce_measure(const multibounce_data *d, const multibounce_model *m, int with_max, multibounce_errors *out);
+
+/* ---- The whole analysis of `gtlab fit multibounce` ---------------------------------- */
+
+typedef struct {
+    float albedo;
+    multibounce_fit fit;                    /* degree 0 */
+    multibounce_errors own, linear, talk;   /* with max, on this albedo's samples */
+} multibounce_albedo_result;
+
+typedef struct {
+    int scene;
+    multibounce_model linear, quadratic;   /* fitted without the scene */
+    multibounce_errors linear_err, quadratic_err, talk_err; /* on the held-out scene, with max */
+    int has_quadratic;
+} multibounce_heldout;
+
+typedef struct {
+    multibounce_albedo_result per_albedo[MBFIT_MAX_ALBEDOS];
+    multibounce_fit linear, quadratic;
+    int has_quadratic;                      /* needs 3+ albedos */
+    multibounce_errors linear_err[2], quadratic_err[2], talk_err[2]; /* [0] bare cubic, [1] with max */
+    int heldout_count;                      /* scenes when 2+, else 0 */
+    multibounce_heldout heldout[MBFIT_MAX_SCENES];
+    double heldout_mean_linear, heldout_mean_quadratic, heldout_mean_talk;
+    int chosen_degree;                      /* 1 or 2 */
+} multibounce_analysis;
+
+/* Every fit: per albedo, joint linear and quadratic, the talk's errors, and
+ * leave-one-scene-out. Needs samples at 2+ albedos. */
+int multibounce_analyse(const multibounce_data *d, multibounce_analysis *out, gt_error *e);
+
+/* Writes the JSON (coefficients, standard errors, covariance, errors, the
+ * talk's errors, data used), a C header and an HLSL function, each
+ * atomically; header_path / hlsl_path may be NULL. `command` is recorded. */
+int multibounce_write_outputs(const multibounce_data *d, const multibounce_analysis *a, const char *command,
+                              const char *json_path, const char *header_path, const char *hlsl_path, gt_error *e);
+
+#endif

@@ -1,0 +1,294 @@
+/* The outputs of the GTAO multi-bounce refit (fit_multibounce.h): the JSON a
+ * person or a script reads, and the C header and HLSL function an engine
+ * takes, all generated from the fitted numbers and written atomically. */
+#include "fitters/fit_multibounce.h"
+
+#include <cjson/cJSON.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/atomic_file.h"
+
+static const char *const kWeighting =
+    "each (scene, albedo) group of pixels carries the same total weight, so every scene and every albedo "
+    "counts equally whatever its pixel count; weights scaled to mean 1; residual sqrt(w) (cubic(V_d) - V'_d)";
+
+/* "a0", "a1", ... in the order of multibounce_model_to_vector ("a", "b", "c" at degree 0). */
+static void parameter_name(int degree, int index, char *name, size_t size)
+{
+    int n = degree + 1;
+    if (degree == 0)
+        snprintf(name, size, "%c", "abc"[index]);
+    else
+        snprintf(name, size, "%c%d", "abc"[index / n], index % n);
+}
+
+static void add_errors(cJSON *o, const char *prefix, const multibounce_errors *err)
+{
+    char key[64];
+    snprintf(key, sizeof key, "%srmse", prefix);
+    cJSON_AddNumberToObject(o, key, err->rmse);
+    snprintf(key, sizeof key, "%smax_abs_error", prefix);
+    cJSON_AddNumberToObject(o, key, err->max_abs);
+}
+
+static cJSON *coefficients_json(const multibounce_model *m)
+{
+    double p[MULTIBOUNCE_MAX_PARAMETERS];
+    multibounce_model_to_vector(m, p);
+    cJSON *o = cJSON_CreateObject();
+    for (int i = 0; i < multibounce_model_parameter_count(m->degree); ++i) {
+        char name[8];
+        parameter_name(m->degree, i, name, sizeof name);
+        cJSON_AddNumberToObject(o, name, p[i]);
+    }
+    return o;
+}
+
+static cJSON *fit_json(const multibounce_fit *f)
+{
+    cJSON *o = cJSON_CreateObject();
+    int n = f->parameter_count;
+    cJSON_AddItemToObject(o, "coefficients", coefficients_json(&f->model));
+    cJSON *se = cJSON_AddObjectToObject(o, "standard_errors"), *order = cJSON_AddArrayToObject(o, "parameter_order");
+    cJSON *cov = cJSON_AddArrayToObject(o, "covariance");
+    for (int i = 0; i < n; ++i) {
+        char name[8];
+        parameter_name(f->model.degree, i, name, sizeof name);
+        cJSON_AddNumberToObject(se, name, f->standard_errors[i]);
+        cJSON_AddItemToArray(order, cJSON_CreateString(name));
+        cJSON_AddItemToArray(cov, cJSON_CreateDoubleArray(f->covariance + i * n, n));
+    }
+    cJSON_AddNumberToObject(o, "residual_variance", f->residual_variance);
+    cJSON *s = cJSON_AddObjectToObject(o, "solver");
+    cJSON_AddBoolToObject(s, "converged", f->solver.success);
+    cJSON_AddNumberToObject(s, "iterations", f->solver.iterations);
+    cJSON_AddNumberToObject(s, "residuals", (double)f->solver.residual_count);
+    cJSON_AddNumberToObject(s, "seconds", f->solver.seconds);
+    return o;
+}
+
+/* Errors on all the data: with the shader's max (the function shipped) and the bare cubic. */
+static void add_data_errors(cJSON *o, const multibounce_errors err[2])
+{
+    add_errors(o, "", &err[1]);
+    add_errors(o, "without_max_", &err[0]);
+    cJSON_AddNumberToObject(o, "fraction_cubic_below_v_d", err[0].below);
+}
+
+static cJSON *data_json(const multibounce_data *d)
+{
+    cJSON *o = cJSON_CreateObject();
+    cJSON *files = cJSON_AddArrayToObject(o, "files");
+    for (int i = 0; i < d->file_count; ++i)
+        cJSON_AddItemToArray(files, cJSON_CreateString(d->files[i]));
+    cJSON_AddStringToObject(o, "bounces", d->bounces);
+    cJSON_AddNumberToObject(o, "samples", (double)d->count);
+    cJSON *albedos = cJSON_AddArrayToObject(o, "albedos");
+    for (int a = 0; a < d->albedo_count; ++a)
+        cJSON_AddItemToArray(albedos, cJSON_CreateNumber(d->albedos[a]));
+    cJSON_AddStringToObject(o, "weighting", kWeighting);
+    cJSON *scenes = cJSON_AddArrayToObject(o, "scenes");
+    for (int s = 0; s < d->scene_count; ++s) {
+        cJSON *sc = cJSON_CreateObject(), *groups = NULL;
+        cJSON_AddStringToObject(sc, "scene", d->scenes[s]);
+        groups = cJSON_AddArrayToObject(sc, "groups");
+        for (int a = 0; a < d->albedo_count; ++a) {
+            if (!d->group_count[s][a])
+                continue;
+            cJSON *g = cJSON_CreateObject();
+            cJSON_AddNumberToObject(g, "albedo", d->albedos[a]);
+            cJSON_AddNumberToObject(g, "samples", (double)d->group_count[s][a]);
+            for (size_t i = 0; i < d->count; ++i)
+                if (d->samples[i].scene == s && d->samples[i].albedo_index == a) {
+                    cJSON_AddNumberToObject(g, "weight_per_sample", d->samples[i].weight);
+                    break;
+                }
+            cJSON_AddItemToArray(groups, g);
+        }
+        cJSON_AddItemToArray(scenes, sc);
+    }
+    return o;
+}
+
+static cJSON *per_albedo_json(const multibounce_data *d, const multibounce_analysis *a)
+{
+    cJSON *list = cJSON_CreateArray();
+    const multibounce_model talk = multibounce_model_jimenez2016();
+    for (int k = 0; k < d->albedo_count; ++k) {
+        const multibounce_albedo_result *r = &a->per_albedo[k];
+        cJSON *o = fit_json(&r->fit);
+        cJSON_AddNumberToObject(o, "albedo", r->albedo);
+        cJSON_AddNumberToObject(o, "samples", (double)r->own.samples);
+        add_errors(o, "", &r->own);
+        add_errors(o, "joint_linear_", &r->linear);
+        add_errors(o, "talk_", &r->talk);
+        multibounce_cubic t = multibounce_cubic_at(&talk, r->albedo);
+        cJSON *tc = cJSON_AddObjectToObject(o, "talk_coefficients");
+        cJSON_AddNumberToObject(tc, "a", t.a);
+        cJSON_AddNumberToObject(tc, "b", t.b);
+        cJSON_AddNumberToObject(tc, "c", t.c);
+        cJSON_AddItemToArray(list, o);
+    }
+    return list;
+}
+
+static cJSON *heldout_json(const multibounce_data *d, const multibounce_analysis *a)
+{
+    if (a->heldout_count == 0)
+        return cJSON_CreateNull();
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddNumberToObject(o, "mean_rmse_linear", a->heldout_mean_linear);
+    if (a->has_quadratic)
+        cJSON_AddNumberToObject(o, "mean_rmse_quadratic", a->heldout_mean_quadratic);
+    cJSON_AddNumberToObject(o, "mean_rmse_talk", a->heldout_mean_talk);
+    cJSON *list = cJSON_AddArrayToObject(o, "scenes");
+    for (int i = 0; i < a->heldout_count; ++i) {
+        const multibounce_heldout *h = &a->heldout[i];
+        cJSON *s = cJSON_CreateObject();
+        cJSON_AddStringToObject(s, "held_out", d->scenes[h->scene]);
+        cJSON_AddNumberToObject(s, "samples", (double)h->linear_err.samples);
+        add_errors(s, "linear_", &h->linear_err);
+        if (h->has_quadratic)
+            add_errors(s, "quadratic_", &h->quadratic_err);
+        add_errors(s, "talk_", &h->talk_err);
+        cJSON_AddItemToObject(s, "linear_coefficients", coefficients_json(&h->linear));
+        cJSON_AddItemToArray(list, s);
+    }
+    return o;
+}
+
+static char *analysis_json(const multibounce_data *d, const multibounce_analysis *a, const char *command)
+{
+    cJSON *root = cJSON_CreateObject();
+    cJSON_AddStringToObject(root, "gtlab_version", GTLAB_VERSION);
+    cJSON_AddStringToObject(root, "command", command);
+    cJSON_AddStringToObject(root, "model", "V'_d = max(V_d, ((a V_d + b) V_d + c) V_d), a = a0 + a1 rho (+ a2 rho^2), "
+                                           "likewise b and c (Jimenez et al. 2016, GTAOMultiBounce)");
+    cJSON_AddStringToObject(root, "errors", "rmse weighted as the fit (scenes and albedos equal), max_abs_error over "
+                                            "all samples; with the max(V_d, .) unless prefixed without_max_");
+    cJSON_AddItemToObject(root, "data", data_json(d));
+    cJSON *linear = fit_json(&a->linear);
+    add_data_errors(linear, a->linear_err);
+    cJSON_AddItemToObject(root, "joint_linear", linear);
+    if (a->has_quadratic) {
+        cJSON *q = fit_json(&a->quadratic);
+        add_data_errors(q, a->quadratic_err);
+        cJSON_AddItemToObject(root, "joint_quadratic", q);
+    } else {
+        cJSON_AddNullToObject(root, "joint_quadratic");
+    }
+    const multibounce_model talk = multibounce_model_jimenez2016();
+    cJSON *t = cJSON_CreateObject();
+    cJSON_AddItemToObject(t, "coefficients", coefficients_json(&talk));
+    add_data_errors(t, a->talk_err);
+    cJSON_AddItemToObject(root, "talk_jimenez2016", t);
+    cJSON_AddItemToObject(root, "per_albedo", per_albedo_json(d, a));
+    cJSON_AddItemToObject(root, "leave_one_scene_out", heldout_json(d, a));
+    cJSON *sel = cJSON_AddObjectToObject(root, "selection");
+    cJSON_AddStringToObject(sel, "chosen", a->chosen_degree == 2 ? "joint_quadratic" : "joint_linear");
+    cJSON_AddStringToObject(sel, "rule", a->heldout_count ? "lower mean leave-one-scene-out RMSE"
+                                                          : "linear: held-out selection needs 2 or more scenes");
+    char *text = cJSON_Print(root);
+    cJSON_Delete(root);
+    return text;
+}
+
+/* Polynomial in rho of one coefficient, as C/HLSL source: "(c0 + rho * (c1 + rho * c2))". */
+static void rho_polynomial(const double *coef, int degree, char *out, size_t size)
+{
+    size_t used = (size_t)snprintf(out, size, "%.9gf", coef[degree]);
+    for (int k = degree - 1; k >= 0 && used < size; --k) {
+        char inner[256];
+        snprintf(inner, sizeof inner, "%s", out);
+        used = (size_t)snprintf(out, size, "%.9gf + albedo * (%s)", coef[k], inner);
+    }
+}
+
+/* The three coefficient lines of a shader function, `type` float or float3. */
+static void coefficient_lines(const multibounce_model *m, const char *type, char *out, size_t size)
+{
+    char a[256], b[256], c[256];
+    rho_polynomial(m->a, m->degree, a, sizeof a);
+    rho_polynomial(m->b, m->degree, b, sizeof b);
+    rho_polynomial(m->c, m->degree, c, sizeof c);
+    snprintf(out, size, "    %s a = %s;\n    %s b = %s;\n    %s c = %s;\n", type, a, type, b, type, c);
+}
+
+static char *header_text(const multibounce_analysis *a, const char *command)
+{
+    char linear[1024], quadratic[1024] = "";
+    coefficient_lines(&a->linear.model, "float", linear, sizeof linear);
+    if (a->has_quadratic)
+        coefficient_lines(&a->quadratic.model, "float", quadratic, sizeof quadratic);
+    size_t size = 8192;
+    char *text = malloc(size);
+    if (!text)
+        return NULL;
+    int n = snprintf(text, size,
+                     "/* GTAO multi-bounce, refitted by gtlab %s:\n *   %s\n"
+                     " * V'_d = max(V_d, ((a V_d + b) V_d + c) V_d) with a, b, c polynomials in the albedo\n"
+                     " * (Jimenez et al. 2016). Generated file: edit the data, not the numbers. */\n"
+                     "#ifndef GTLAB_MULTIBOUNCE_FIT_H\n#define GTLAB_MULTIBOUNCE_FIT_H\n\n"
+                     "/* a, b, c linear in the albedo (the talk's form); weighted RMSE %.3g on the data. */\n"
+                     "static inline float gtlab_multibounce_linear(float visibility, float albedo)\n{\n%s"
+                     "    float x = visibility, y = ((a * x + b) * x + c) * x;\n    return y > x ? y : x;\n}\n",
+                     GTLAB_VERSION, command, a->linear_err[1].rmse, linear);
+    if (a->has_quadratic)
+        n += snprintf(text + n, size - (size_t)n,
+                      "\n/* a, b, c quadratic in the albedo; weighted RMSE %.3g on the data%s. */\n"
+                      "static inline float gtlab_multibounce_quadratic(float visibility, float albedo)\n{\n%s"
+                      "    float x = visibility, y = ((a * x + b) * x + c) * x;\n    return y > x ? y : x;\n}\n",
+                      a->quadratic_err[1].rmse,
+                      a->chosen_degree == 2 ? "; preferred by the leave-one-scene-out test" : "", quadratic);
+    snprintf(text + n, size - (size_t)n, "\n#endif\n");
+    return text;
+}
+
+static char *hlsl_text(const multibounce_analysis *a, const char *command)
+{
+    char linear[1024], quadratic[1024] = "";
+    coefficient_lines(&a->linear.model, "float3", linear, sizeof linear);
+    if (a->has_quadratic)
+        coefficient_lines(&a->quadratic.model, "float3", quadratic, sizeof quadratic);
+    size_t size = 8192;
+    char *text = malloc(size);
+    if (!text)
+        return NULL;
+    int n = snprintf(text, size,
+                     "// GTAO multi-bounce, refitted by gtlab %s:\n//   %s\n"
+                     "// Same form as GTAOMultiBounce (Jimenez et al. 2016), new coefficients. Generated file.\n"
+                     "float3 GTAOMultiBounce(float visibility, float3 albedo)\n{\n%s"
+                     "    float x = visibility;\n    return max(x, ((x * a + b) * x + c) * x);\n}\n",
+                     GTLAB_VERSION, command, linear);
+    if (a->has_quadratic)
+        n += snprintf(text + n, size - (size_t)n,
+                      "\n// a, b, c quadratic in the albedo%s.\n"
+                      "float3 GTAOMultiBounceQuadratic(float visibility, float3 albedo)\n{\n%s"
+                      "    float x = visibility;\n    return max(x, ((x * a + b) * x + c) * x);\n}\n",
+                      a->chosen_degree == 2 ? " (preferred by the leave-one-scene-out test)" : "", quadratic);
+    (void)n;
+    return text;
+}
+
+static int write_owned_text(const char *path, char *text, gt_error *e)
+{
+    if (!text)
+        return gt_error_set(e, path, "out of memory");
+    int rc = atomic_write_text(path, text, e);
+    free(text);
+    return rc;
+}
+
+int multibounce_write_outputs(const multibounce_data *d, const multibounce_analysis *a, const char *command,
+                              const char *json_path, const char *header_path, const char *hlsl_path, gt_error *e)
+{
+    if (write_owned_text(json_path, analysis_json(d, a, command), e) != 0)
+        return -1;
+    if (header_path && write_owned_text(header_path, header_text(a, command), e) != 0)
+        return -1;
+    if (hlsl_path && write_owned_text(hlsl_path, hlsl_text(a, command), e) != 0)
+        return -1;
+    return 0;
+}
