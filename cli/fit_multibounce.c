@@ -118,6 +118,8 @@ int fit_multibounce(int argc, char **argv)
                                           {0, 0, 0, 0}};
     const char *files[MAX_FILES], *output = NULL, *header = NULL, *hlsl = NULL;
     int file_count = 0, data_given = 0, c;
+    char command[4096];
+    command_text(argc, argv, command, sizeof command); /* before getopt permutes argv */
     while ((c = getopt_long(argc, argv, "o:h", longs, NULL)) != -1) {
         switch (c) {
         case OPT_DATA:
@@ -144,7 +146,7 @@ int fit_multibounce(int argc, char **argv)
         return cli_failf("--data", "no reference files given (see 'gtlab fit multibounce --help')");
     if (!output)
         return cli_failf("-o", "an output file is required (fit.json)");
-    char header_path[4096], hlsl_path[4096], command[4096];
+    char header_path[4096], hlsl_path[4096];
     sibling_path(output, ".h", header_path, sizeof header_path);
     sibling_path(output, ".hlsl", hlsl_path, sizeof hlsl_path);
     if (!header)
@@ -155,7 +157,6 @@ int fit_multibounce(int argc, char **argv)
     if (atomic_file_check_writable(output, &e) != 0 || atomic_file_check_writable(header, &e) != 0 ||
         atomic_file_check_writable(hlsl, &e) != 0)
         return cli_fail(&e);
-    command_text(argc, argv, command, sizeof command);
     multibounce_data d;
     multibounce_data_init(&d);
     multibounce_analysis *a = malloc(sizeof *a);

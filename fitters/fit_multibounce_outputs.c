@@ -14,6 +14,14 @@ static const char *const kWeighting =
     "each (scene, albedo) group of pixels carries the same total weight, so every scene and every albedo "
     "counts equally whatever its pixel count; weights scaled to mean 1; residual sqrt(w) (cubic(V_d) - V'_d)";
 
+/* An albedo as the short decimal it was given as (0.1, not 0.10000000149). */
+static double albedo_value(float albedo)
+{
+    char text[32];
+    snprintf(text, sizeof text, "%.7g", (double)albedo);
+    return strtod(text, NULL);
+}
+
 /* "a0", "a1", ... in the order of multibounce_model_to_vector ("a", "b", "c" at degree 0). */
 static void parameter_name(int degree, int index, char *name, size_t size)
 {
@@ -87,7 +95,7 @@ static cJSON *data_json(const multibounce_data *d)
     cJSON_AddNumberToObject(o, "samples", (double)d->count);
     cJSON *albedos = cJSON_AddArrayToObject(o, "albedos");
     for (int a = 0; a < d->albedo_count; ++a)
-        cJSON_AddItemToArray(albedos, cJSON_CreateNumber(d->albedos[a]));
+        cJSON_AddItemToArray(albedos, cJSON_CreateNumber(albedo_value(d->albedos[a])));
     cJSON_AddStringToObject(o, "weighting", kWeighting);
     cJSON *scenes = cJSON_AddArrayToObject(o, "scenes");
     for (int s = 0; s < d->scene_count; ++s) {
@@ -98,7 +106,7 @@ static cJSON *data_json(const multibounce_data *d)
             if (!d->group_count[s][a])
                 continue;
             cJSON *g = cJSON_CreateObject();
-            cJSON_AddNumberToObject(g, "albedo", d->albedos[a]);
+            cJSON_AddNumberToObject(g, "albedo", albedo_value(d->albedos[a]));
             cJSON_AddNumberToObject(g, "samples", (double)d->group_count[s][a]);
             for (size_t i = 0; i < d->count; ++i)
                 if (d->samples[i].scene == s && d->samples[i].albedo_index == a) {
@@ -119,7 +127,7 @@ static cJSON *per_albedo_json(const multibounce_data *d, const multibounce_analy
     for (int k = 0; k < d->albedo_count; ++k) {
         const multibounce_albedo_result *r = &a->per_albedo[k];
         cJSON *o = fit_json(&r->fit);
-        cJSON_AddNumberToObject(o, "albedo", r->albedo);
+        cJSON_AddNumberToObject(o, "albedo", albedo_value(r->albedo));
         cJSON_AddNumberToObject(o, "samples", (double)r->own.samples);
         add_errors(o, "", &r->own);
         add_errors(o, "joint_linear_", &r->linear);
