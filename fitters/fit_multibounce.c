@@ -254,8 +254,10 @@ static int distinct_albedos(const multibounce_data *d)
     return n;
 }
 
-int multibounce_fit_model(const multibounce_data *d, int degree, int block_size, multibounce_fit *out, gt_error *e)
+int multibounce_fit_model(const multibounce_data *d, int degree, const multibounce_fit_options *options,
+                          multibounce_fit *out, gt_error *e)
 {
+    int block_size = options && options->block_size > 0 ? options->block_size : MBFIT_DEFAULT_BLOCK;
     memset(out, 0, sizeof *out);
     const int n = multibounce_model_parameter_count(degree);
     if (degree < 0 || degree > MULTIBOUNCE_MAX_DEGREE)
@@ -265,8 +267,6 @@ int multibounce_fit_model(const multibounce_data *d, int degree, int block_size,
                             "have %d", degree, degree + 1, distinct_albedos(d));
     if (d->count <= (size_t)n)
         return gt_error_set(e, "multibounce fit", "%zu samples cannot determine %d coefficients", d->count, n);
-    if (block_size <= 0)
-        block_size = MBFIT_DEFAULT_BLOCK;
     size_t block_count = (d->count + (size_t)block_size - 1) / (size_t)block_size;
     sample_block *blocks = malloc(block_count * sizeof *blocks);
     if (!blocks)
@@ -275,6 +275,8 @@ int multibounce_fit_model(const multibounce_data *d, int degree, int block_size,
      * so Levenberg-Marquardt lands on the optimum from anywhere. */
     double params[MULTIBOUNCE_MAX_PARAMETERS] = {0};
     params[2 * (degree + 1)] = 1.0;
+    gt_fit_options so = gt_fit_default_options();
+    so.linear_solver = GT_FIT_DENSE_NORMAL_CHOLESKY;
     gt_fit *fit = gt_fit_create(n, params, e);
     int rc = fit ? 0 : -1;
     for (size_t k = 0; k < block_count && rc == 0; ++k) {
@@ -284,8 +286,8 @@ int multibounce_fit_model(const multibounce_data *d, int degree, int block_size,
         rc = gt_fit_add_block(fit, (int)count, block_residuals, &blocks[k], NULL, e);
     }
     if (rc == 0)
-        rc = gt_fit_solve(fit, NULL, &out->solver, e);
-    if (rc == 0)
+        rc = gt_fit_solve(fit, &so, &out->solver, e);
+    if (rc == 0 && !(options && options->skip_covariance))
         rc = gt_fit_covariance(fit, out->covariance, out->standard_errors, &out->residual_variance, e);
     if (rc == 0) {
         out->model = multibounce_model_from_vector(degree, params);
@@ -308,12 +310,23 @@ void multibounce_measure(const multibounce_data *d, const multibounce_model *m, 
         sum_w += s->weight;
         sum_wr2 += s->weight * r * r;
         max_abs = fmax(max_abs, fabs(r));
-        below += cubic < s->visibility ? s->weight : 0.0;
+        below += cubic < s->visibility - MBFIT_BELOW_MARGIN ? s->weight : 0.0;
     }
     out->samples = d->count;
     out->rmse = sum_w > 0 ? sqrt(sum_wr2 / sum_w) : 0.0;
     out->max_abs = max_abs;
     out->below = sum_w > 0 ? below / sum_w : 0.0;
+}
+
+double multibounce_max_shortfall(const multibounce_model *m, double albedo)
+{
+    const multibounce_cubic c = multibounce_cubic_at(m, albedo);
+    double worst = -INFINITY;
+    for (int i = 0; i <= 1000; ++i) {
+        double x = i / 1000.0;
+        worst = fmax(worst, x - multibounce_cubic_eval(&c, x));
+    }
+    return worst;
 }
 
 /* ---- The analysis ---------------------------------------------------------------------- */
@@ -326,7 +339,7 @@ static int analyse_albedo(const multibounce_data *d, int albedo_index, const mul
         return -1;
     r->albedo = d->albedos[albedo_index];
     const multibounce_model talk = multibounce_model_jimenez2016();
-    int rc = multibounce_fit_model(&one, 0, 0, &r->fit, e);
+    int rc = multibounce_fit_model(&one, 0, NULL, &r->fit, e);
     if (rc == 0) {
         multibounce_measure(&one, &r->fit.model, 1, &r->own);
         multibounce_measure(&one, &a->linear.model, 1, &r->linear);
@@ -349,14 +362,15 @@ static int hold_out(const multibounce_data *d, int scene, int with_quadratic, mu
     h->scene = scene;
     h->has_quadratic = with_quadratic;
     const multibounce_model talk = multibounce_model_jimenez2016();
+    const multibounce_fit_options model_only = {0, 1};
     multibounce_fit fit;
-    int rc = multibounce_fit_model(&train, 1, 0, &fit, e);
+    int rc = multibounce_fit_model(&train, 1, &model_only, &fit, e);
     if (rc == 0) {
         h->linear = fit.model;
         multibounce_measure(&test, &h->linear, 1, &h->linear_err);
         multibounce_measure(&test, &talk, 1, &h->talk_err);
     }
-    if (rc == 0 && with_quadratic && (rc = multibounce_fit_model(&train, 2, 0, &fit, e)) == 0) {
+    if (rc == 0 && with_quadratic && (rc = multibounce_fit_model(&train, 2, &model_only, &fit, e)) == 0) {
         h->quadratic = fit.model;
         multibounce_measure(&test, &h->quadratic, 1, &h->quadratic_err);
     }
@@ -396,10 +410,10 @@ int multibounce_analyse(const multibounce_data *d, multibounce_analysis *a, gt_e
         return gt_error_set(e, "--data", "the joint model needs samples at 2 or more albedos (render with "
                                          "--albedo 0.1,0.2,...)");
     const multibounce_model talk = multibounce_model_jimenez2016();
-    if (multibounce_fit_model(d, 1, 0, &a->linear, e) != 0)
+    if (multibounce_fit_model(d, 1, NULL, &a->linear, e) != 0)
         return -1;
     a->has_quadratic = distinct_albedos(d) >= 3;
-    if (a->has_quadratic && multibounce_fit_model(d, 2, 0, &a->quadratic, e) != 0)
+    if (a->has_quadratic && multibounce_fit_model(d, 2, NULL, &a->quadratic, e) != 0)
         return -1;
     for (int with_max = 0; with_max < 2; ++with_max) {
         multibounce_measure(d, &a->linear.model, with_max, &a->linear_err[with_max]);

@@ -23,6 +23,11 @@
 #include "fitters/ceres_bridge.h"
 #include "realtime/multibounce.h"
 
+/* "The cubic lies below V_d" counts only shortfalls beyond this: the
+ * talk's coefficients, rounded to 4 decimals, give V'_d(1) = 0.9996 to
+ * 1.0001, a rounding shortfall at every unoccluded pixel. */
+#define MBFIT_BELOW_MARGIN 1e-3
+
 enum { MBFIT_MAX_SCENES = 64, MBFIT_MAX_ALBEDOS = 32, MBFIT_NAME_MAX = 256, MBFIT_DEFAULT_BLOCK = 1024 };
 
 typedef struct {
@@ -81,22 +86,36 @@ typedef struct {
     gt_fit_result solver;
 } multibounce_fit;
 
+typedef struct {
+    int block_size;        /* residuals per Ceres block; 0: MBFIT_DEFAULT_BLOCK */
+    int skip_covariance;   /* 1: the model only (held-out fits); standard errors stay 0 */
+} multibounce_fit_options;
+
 /* Least-squares fit of the model of `degree` (0: one cubic, whatever the
- * albedos) to the weighted samples, in blocks of block_size residuals
- * (0: MBFIT_DEFAULT_BLOCK). Returns 0 or -1 with e (too few samples or
- * albedos to determine the model, solver failure). */
-int multibounce_fit_model(const multibounce_data *d, int degree, int block_size, multibounce_fit *out, gt_error *e);
+ * albedos) to the weighted samples; options may be NULL (blocks of 1024,
+ * with covariance). The normal equations (DENSE_NORMAL_CHOLESKY) solve it:
+ * with 3 to 9 parameters and hundreds of thousands of residuals they are
+ * several times faster than QR, and the basis (x^3, x^2, x) x rho^k is
+ * conditioned well enough for them. Returns 0 or -1 with e (too few samples
+ * or albedos to determine the model, solver failure). */
+int multibounce_fit_model(const multibounce_data *d, int degree, const multibounce_fit_options *options,
+                          multibounce_fit *out, gt_error *e);
 
 typedef struct {
     size_t samples;
     double rmse;          /* sqrt(sum w r^2 / sum w): scenes and albedos equal */
     double max_abs;       /* max |r| over the samples */
-    double below;         /* weighted fraction of samples where the cubic < V_d (the max acts) */
+    double below;         /* weighted fraction of samples where the cubic < V_d - MBFIT_BELOW_MARGIN */
 } multibounce_errors;
 
 /* Errors of the model on the samples, r = model(V_d, rho) - V'_d, with the
  * shader's max(V_d, .) (with_max) or the bare cubic. */
 void multibounce_measure(const multibounce_data *d, const multibounce_model *m, int with_max, multibounce_errors *out);
+
+/* max over V_d in [0, 1] of V_d - cubic(V_d) at this albedo (on a grid of
+ * 1001 points; <= 0 when the cubic never falls below V_d): how much the
+ * shader's max(V_d, .) can change. */
+double multibounce_max_shortfall(const multibounce_model *m, double albedo);
 
 /* ---- The whole analysis of `gtlab fit multibounce` ---------------------------------- */
 

@@ -77,12 +77,23 @@ static cJSON *fit_json(const multibounce_fit *f)
     return o;
 }
 
-/* Errors on all the data: with the shader's max (the function shipped) and the bare cubic. */
-static void add_data_errors(cJSON *o, const multibounce_errors err[2])
+/* Errors on all the data: with the shader's max (the function shipped) and
+ * the bare cubic; and how far the cubic falls below V_d (what the max
+ * changes) at albedo 0, 0.05 and the data's albedos. */
+static void add_data_errors(cJSON *o, const multibounce_data *d, const multibounce_model *m,
+                            const multibounce_errors err[2])
 {
     add_errors(o, "", &err[1]);
     add_errors(o, "without_max_", &err[0]);
-    cJSON_AddNumberToObject(o, "fraction_cubic_below_v_d", err[0].below);
+    cJSON_AddNumberToObject(o, "fraction_cubic_below_v_d_by_0.001", err[0].below);
+    cJSON *list = cJSON_AddArrayToObject(o, "max_shortfall_below_v_d");
+    for (int k = -2; k < d->albedo_count; ++k) {
+        double rho = k == -2 ? 0.0 : k == -1 ? 0.05 : albedo_value(d->albedos[k]);
+        cJSON *item = cJSON_CreateObject();
+        cJSON_AddNumberToObject(item, "albedo", rho);
+        cJSON_AddNumberToObject(item, "max_v_d_minus_cubic", multibounce_max_shortfall(m, rho));
+        cJSON_AddItemToArray(list, item);
+    }
 }
 
 static cJSON *data_json(const multibounce_data *d)
@@ -178,11 +189,11 @@ static char *analysis_json(const multibounce_data *d, const multibounce_analysis
                                             "all samples; with the max(V_d, .) unless prefixed without_max_");
     cJSON_AddItemToObject(root, "data", data_json(d));
     cJSON *linear = fit_json(&a->linear);
-    add_data_errors(linear, a->linear_err);
+    add_data_errors(linear, d, &a->linear.model, a->linear_err);
     cJSON_AddItemToObject(root, "joint_linear", linear);
     if (a->has_quadratic) {
         cJSON *q = fit_json(&a->quadratic);
-        add_data_errors(q, a->quadratic_err);
+        add_data_errors(q, d, &a->quadratic.model, a->quadratic_err);
         cJSON_AddItemToObject(root, "joint_quadratic", q);
     } else {
         cJSON_AddNullToObject(root, "joint_quadratic");
@@ -190,7 +201,7 @@ static char *analysis_json(const multibounce_data *d, const multibounce_analysis
     const multibounce_model talk = multibounce_model_jimenez2016();
     cJSON *t = cJSON_CreateObject();
     cJSON_AddItemToObject(t, "coefficients", coefficients_json(&talk));
-    add_data_errors(t, a->talk_err);
+    add_data_errors(t, d, &talk, a->talk_err);
     cJSON_AddItemToObject(root, "talk_jimenez2016", t);
     cJSON_AddItemToObject(root, "per_albedo", per_albedo_json(d, a));
     cJSON_AddItemToObject(root, "leave_one_scene_out", heldout_json(d, a));

@@ -68,7 +68,7 @@ static void test_recovery(void)
         synthesise(&d, &t, 3, 400, 100 + (uint64_t)r);
         multibounce_fit f;
         gt_error e;
-        int rc = multibounce_fit_model(&d, 1, 0, &f, &e);
+        int rc = multibounce_fit_model(&d, 1, NULL, &f, &e);
         CHECK_MSG(rc == 0, "%s", e.message);
         double p[6];
         multibounce_model_to_vector(&f.model, p);
@@ -94,7 +94,7 @@ static void test_standard_error_scaling(void)
         multibounce_data_init(&d);
         synthesise(&d, &t, 2, k == 0 ? 500 : 2000, 7);
         gt_error e;
-        CHECK(multibounce_fit_model(&d, 1, 0, &f[k], &e) == 0);
+        CHECK(multibounce_fit_model(&d, 1, NULL, &f[k], &e) == 0);
         multibounce_data_free(&d);
     }
     for (int j = 0; j < 6; ++j)
@@ -105,7 +105,7 @@ static void test_standard_error_scaling(void)
     synthesise(&d, &t, 2, 500, 8);
     multibounce_fit q;
     gt_error e;
-    CHECK(multibounce_fit_model(&d, 2, 0, &q, &e) == 0);
+    CHECK(multibounce_fit_model(&d, 2, NULL, &q, &e) == 0);
     /* The truth is linear: the quadratic terms a2, b2, c2 are 0 within 4 se. */
     CHECK(fabs(q.model.a[2]) < 4 * q.standard_errors[2] && fabs(q.model.b[2]) < 4 * q.standard_errors[5] &&
           fabs(q.model.c[2]) < 4 * q.standard_errors[8]);
@@ -142,8 +142,8 @@ static void test_weighting(void)
         multibounce_data_weigh(d);
     }
     multibounce_fit fb, fh, fu;
-    CHECK(multibounce_fit_model(&base, 1, 0, &fb, &e) == 0);
-    CHECK(multibounce_fit_model(&heavy, 1, 0, &fh, &e) == 0);
+    CHECK(multibounce_fit_model(&base, 1, NULL, &fb, &e) == 0);
+    CHECK(multibounce_fit_model(&heavy, 1, NULL, &fh, &e) == 0);
     double pb[6], ph[6], pu[6];
     multibounce_model_to_vector(&fb.model, pb);
     multibounce_model_to_vector(&fh.model, ph);
@@ -151,7 +151,7 @@ static void test_weighting(void)
         CHECK_NEAR(ph[k], pb[k], 1e-7);
     for (size_t i = 0; i < heavy.count; ++i)
         heavy.samples[i].weight = 1.0f;
-    CHECK(multibounce_fit_model(&heavy, 1, 0, &fu, &e) == 0);
+    CHECK(multibounce_fit_model(&heavy, 1, NULL, &fu, &e) == 0);
     multibounce_model_to_vector(&fu.model, pu);
     /* Unweighted, c0 moves most of the way to scene A's 0.7 from the
      * balanced fit's ~0.8: the test above would have failed. */
@@ -200,7 +200,7 @@ static void test_leave_one_scene_out(void)
         multibounce_data_select(&d, s, 0, -1, &test, &e);
         CHECK(train.count == 2 * 7 * 300 && test.count == 7 * 300);
         multibounce_fit f;
-        CHECK(multibounce_fit_model(&train, 1, 0, &f, &e) == 0);
+        CHECK(multibounce_fit_model(&train, 1, NULL, &f, &e) == 0);
         for (int k = 0; k < 2; ++k)
             CHECK_NEAR(h->linear.a[k] + h->linear.b[k] + h->linear.c[k], f.model.a[k] + f.model.b[k] + f.model.c[k], 1e-9);
         multibounce_errors err;
