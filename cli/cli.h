@@ -19,6 +19,10 @@ int verb_bench(int argc, char **argv);
 int verb_all(int argc, char **argv);
 int verb_fit(int argc, char **argv);
 
+/* gtlab bench sub-benchmarks in their own files (dispatched by verb_bench.c). */
+int bench_multibounce(int argc, char **argv);
+int bench_fit(int argc, char **argv);
+
 /* gtlab fit problems (cli/fit_<problem>.c), dispatched by verb_fit.c. */
 int fit_multibounce(int argc, char **argv);
 
