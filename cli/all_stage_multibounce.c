@@ -165,7 +165,7 @@ static int validate(const stage *st, int k, int a, validation *v, gt_error *e)
     if (score(image_channel_data(even, channel), target, mask, img, what, &v->noise_floor, &v->rmse_floor, e) != 0)
         return -1;
     const multibounce_model talk = multibounce_model_jimenez2016();
-    const multibounce_model *models[3] = {&talk, &st->analysis->linear.model, &st->analysis->heldout[k].linear};
+    const multibounce_model *models[3] = {&talk, &st->analysis->joint[MB_JOINT_LINEAR].model, &st->analysis->heldout[k].model[MB_JOINT_LINEAR]};
     float *approx = malloc(n * sizeof *approx);
     if (!approx)
         return gt_error_set(e, what, "out of memory");
@@ -247,7 +247,7 @@ static void coefficient_table(all_context *ctx, const multibounce_analysis *a)
 {
     const multibounce_model talk = multibounce_model_jimenez2016();
     double ours[6], theirs[6];
-    multibounce_model_to_vector(&a->linear.model, ours);
+    multibounce_model_to_vector(&a->joint[MB_JOINT_LINEAR].model, ours);
     multibounce_model_to_vector(&talk, theirs);
     static const char *const names[6] = {"a0", "a1 (x rho)", "b0", "b1 (x rho)", "c0", "c1 (x rho)"};
     static const char *const headers[4] = {"coefficient", "gtlab joint fit (± standard error)", "talk",
@@ -256,9 +256,9 @@ static void coefficient_table(all_context *ctx, const multibounce_analysis *a)
     for (int i = 0; i < 6; ++i) {
         char cells[4][48];
         snprintf(cells[0], 48, "%s", names[i]);
-        snprintf(cells[1], 48, "%.4f ± %.4f", ours[i], a->linear.standard_errors[i]);
+        snprintf(cells[1], 48, "%.4f ± %.4f", ours[i], a->joint[MB_JOINT_LINEAR].standard_errors[i]);
         snprintf(cells[2], 48, "%.4f", theirs[i]);
-        snprintf(cells[3], 48, "%.0f", (theirs[i] - ours[i]) / a->linear.standard_errors[i]);
+        snprintf(cells[3], 48, "%.0f", (theirs[i] - ours[i]) / a->joint[MB_JOINT_LINEAR].standard_errors[i]);
         row_of(ctx->doc, 4, cells);
     }
     report_table_end(ctx->doc);
@@ -291,26 +291,20 @@ static void per_albedo_table(all_context *ctx, const multibounce_data *d, const 
 
 static void heldout_table(all_context *ctx, const multibounce_data *d, const multibounce_analysis *a)
 {
-    static const char *const headers[5] = {"held-out scene", "RMSE joint linear", "RMSE joint quadratic",
-                                           "RMSE talk", "samples"};
-    report_table_begin(ctx->doc, 5, headers);
-    for (int i = 0; i < a->heldout_count; ++i) {
-        const multibounce_heldout *h = &a->heldout[i];
-        char cells[5][48];
-        snprintf(cells[0], 48, "%s", d->scenes[h->scene]);
-        snprintf(cells[1], 48, "%.4f", h->linear_err.rmse);
-        snprintf(cells[2], 48, "%.4f", h->quadratic_err.rmse);
-        snprintf(cells[3], 48, "%.4f", h->talk_err.rmse);
-        snprintf(cells[4], 48, "%zu", h->linear_err.samples);
-        row_of(ctx->doc, 5, cells);
+    static const char *const headers[6] = {"held-out scene", "RMSE joint linear", "RMSE joint quadratic",
+                                           "RMSE joint anchored", "RMSE talk", "samples"};
+    report_table_begin(ctx->doc, 6, headers);
+    char cells[6][48];
+    for (int i = 0; i <= a->heldout_count; ++i) {
+        const int mean = i == a->heldout_count;
+        const multibounce_heldout *h = &a->heldout[mean ? 0 : i];
+        snprintf(cells[0], 48, "%s", mean ? "mean" : d->scenes[h->scene]);
+        for (int j = 0; j < MB_JOINT_COUNT; ++j)
+            snprintf(cells[1 + j], 48, a->has[j] ? "%.4f" : "n/a", mean ? a->heldout_mean[j] : h->err[j].rmse);
+        snprintf(cells[4], 48, "%.4f", mean ? a->heldout_mean_talk : h->talk.rmse);
+        snprintf(cells[5], 48, "%zu", mean ? d->count : h->talk.samples);
+        row_of(ctx->doc, 6, cells);
     }
-    char cells[5][48];
-    snprintf(cells[0], 48, "mean");
-    snprintf(cells[1], 48, "%.4f", a->heldout_mean_linear);
-    snprintf(cells[2], 48, "%.4f", a->heldout_mean_quadratic);
-    snprintf(cells[3], 48, "%.4f", a->heldout_mean_talk);
-    snprintf(cells[4], 48, "%zu", d->count);
-    row_of(ctx->doc, 5, cells);
     report_table_end(ctx->doc);
 }
 
@@ -360,7 +354,7 @@ static int write_curve_data(const multibounce_data *d, const multibounce_analysi
         for (int i = 0; i <= CURVE_STEPS; ++i) {
             double x = (double)i / CURVE_STEPS;
             used += (size_t)snprintf(text + used, size - used, "%.4f %.6f %.6f %.6f\n", x,
-                                     gtao_multibounce(&talk, x, rho), gtao_multibounce(&a->linear.model, x, rho),
+                                     gtao_multibounce(&talk, x, rho), gtao_multibounce(&a->joint[MB_JOINT_LINEAR].model, x, rho),
                                      gtao_multibounce(&a->per_albedo[k].fit.model, x, rho));
         }
         used += (size_t)snprintf(text + used, size - used, "\n\n");
@@ -371,11 +365,12 @@ static int write_curve_data(const multibounce_data *d, const multibounce_analysi
 }
 
 /* Block 0: per-albedo a, b, c with standard errors; block 1: the joint
- * models' a, b, c over rho in [0, 1] (ours linear, talk, ours quadratic). */
+ * models' a, b, c over rho in [0, 1] (ours linear, talk, ours quadratic,
+ * ours anchored; a model the data cannot determine repeats the linear). */
 static int write_coefficient_data(const multibounce_data *d, const multibounce_analysis *a, const char *path,
                                   gt_error *e)
 {
-    size_t size = (size_t)(d->albedo_count + CURVE_STEPS + 8) * 160, used = 0;
+    size_t size = (size_t)(d->albedo_count + CURVE_STEPS + 8) * 200, used = 0;
     char *text = malloc(size);
     if (!text)
         return gt_error_set(e, path, "out of memory");
@@ -386,15 +381,20 @@ static int write_coefficient_data(const multibounce_data *d, const multibounce_a
                                  (double)d->albedos[k], f->model.a[0], f->standard_errors[0], f->model.b[0],
                                  f->standard_errors[1], f->model.c[0], f->standard_errors[2]);
     }
-    used += (size_t)snprintf(text + used, size - used, "\n\n# rho a b c (ours linear) a b c (talk) a b c (ours quadratic)\n");
+    used += (size_t)snprintf(text + used, size - used,
+                             "\n\n# rho a b c (ours linear) a b c (talk) a b c (ours quadratic) a b c (ours anchored)\n");
     const multibounce_model talk = multibounce_model_jimenez2016();
-    const multibounce_model *quad = a->has_quadratic ? &a->quadratic.model : &a->linear.model;
+    const multibounce_model *models[4] = {&a->joint[MB_JOINT_LINEAR].model, &talk,
+                                          &a->joint[a->has[MB_JOINT_QUADRATIC] ? MB_JOINT_QUADRATIC : 0].model,
+                                          &a->joint[MB_JOINT_ANCHORED].model};
     for (int i = 0; i <= CURVE_STEPS; ++i) {
         double rho = (double)i / CURVE_STEPS;
-        multibounce_cubic o = multibounce_cubic_at(&a->linear.model, rho), t = multibounce_cubic_at(&talk, rho),
-                          q = multibounce_cubic_at(quad, rho);
-        used += (size_t)snprintf(text + used, size - used, "%.3f %.6f %.6f %.6f %.6f %.6f %.6f %.6f %.6f %.6f\n", rho,
-                                 o.a, o.b, o.c, t.a, t.b, t.c, q.a, q.b, q.c);
+        used += (size_t)snprintf(text + used, size - used, "%.3f", rho);
+        for (int m = 0; m < 4; ++m) {
+            multibounce_cubic c = multibounce_cubic_at(models[m], rho);
+            used += (size_t)snprintf(text + used, size - used, " %.6f %.6f %.6f", c.a, c.b, c.c);
+        }
+        used += (size_t)snprintf(text + used, size - used, "\n");
     }
     int rc = atomic_write_text(path, text, e);
     free(text);
@@ -444,8 +444,9 @@ static int plot_coefficients(const stage *st, gt_error *e)
                                  "'per-albedo fit (± s.e.)', '' index 1 using 1:%d with lines lw 2 lc rgb "
                                  "'#1f77b4' title 'gtlab joint linear', '' index 1 using 1:%d with lines lw 2 "
                                  "lc rgb '#d62728' title 'talk', '' index 1 using 1:%d with lines dt 2 lc rgb "
-                                 "'#2ca02c' title 'gtlab joint quadratic'\n",
-                                 "abc"[c], data, 2 + 2 * c, 3 + 2 * c, 2 + c, 5 + c, 8 + c);
+                                 "'#2ca02c' title 'gtlab joint quadratic', '' index 1 using 1:%d with lines dt 4 "
+                                 "lc rgb '#9467bd' title 'gtlab joint anchored'\n",
+                                 "abc"[c], data, 2 + 2 * c, 3 + 2 * c, 2 + c, 5 + c, 8 + c, 11 + c);
     snprintf(script + used, sizeof script - used, "unset multiplot\n");
     return gnuplot_render(script, png, 1500, 500, e);
 }
@@ -478,12 +479,12 @@ static int farthest_coefficient(const multibounce_analysis *a, double *sigmas)
 {
     const multibounce_model talk = multibounce_model_jimenez2016();
     double ours[6], theirs[6];
-    multibounce_model_to_vector(&a->linear.model, ours);
+    multibounce_model_to_vector(&a->joint[MB_JOINT_LINEAR].model, ours);
     multibounce_model_to_vector(&talk, theirs);
     int worst = 0;
     *sigmas = 0.0;
     for (int i = 0; i < 6; ++i) {
-        double z = fabs(theirs[i] - ours[i]) / a->linear.standard_errors[i];
+        double z = fabs(theirs[i] - ours[i]) / a->joint[MB_JOINT_LINEAR].standard_errors[i];
         if (z > *sigmas) {
             *sigmas = z;
             worst = i;
@@ -501,13 +502,13 @@ static void findings(all_context *ctx, const stage *st)
     int worst = farthest_coefficient(a, &sigmas);
     int talk_wins = 0;
     for (int i = 0; i < a->heldout_count; ++i)
-        talk_wins += a->heldout[i].talk_err.rmse < a->heldout[i].linear_err.rmse;
+        talk_wins += a->heldout[i].talk.rmse < a->heldout[i].err[MB_JOINT_LINEAR].rmse;
     const multibounce_model talk = multibounce_model_jimenez2016();
     float low = d->albedos[0];
     double ours_worst = -INFINITY, ours_worst_rho = 0.0;
     for (int k = 0; k < d->albedo_count; ++k)
-        if (multibounce_max_shortfall(&a->linear.model, d->albedos[k]) > ours_worst) {
-            ours_worst = multibounce_max_shortfall(&a->linear.model, d->albedos[k]);
+        if (multibounce_max_shortfall(&a->joint[MB_JOINT_LINEAR].model, d->albedos[k]) > ours_worst) {
+            ours_worst = multibounce_max_shortfall(&a->joint[MB_JOINT_LINEAR].model, d->albedos[k]);
             ours_worst_rho = d->albedos[k];
         }
     report_paragraph(
@@ -522,20 +523,21 @@ static void findings(all_context *ctx, const stage *st)
         "fitted without a scene and scored on it, our linear model's RMSE averages %.4f over the %d scenes "
         "against %.4f for the talk's (the talk's is better on %d of them): one curve does not serve all "
         "content to better than a few hundredths, and the scene-to-scene spread is larger than the difference "
-        "between the two coefficient sets. The quadratic-in-albedo model %s (held-out mean %.4f). The max(V_d, "
+        "between the two coefficient sets. Alternatives, held out the same way: a, b, c quadratic in the albedo "
+        "%.4f, the anchored form (exact at albedo 0 and V_d = 0, 1, 4 parameters) %.4f; chosen: %s. The max(V_d, "
         ".): the talk's cubic falls below V_d by up to %.4f at albedo %.1f and by up to %.3f at albedo 0; on "
         "the data it is lower than V_d by more than 0.001 for %.1f%% of the weighted samples, and the max "
         "changes its RMSE from %.5f to %.5f. So the max is a guard for albedos below about 0.1, where the "
         "talk's linear coefficients fall short of V'_d >= V_d; at the talk's albedos it changes little. Our "
         "refit's cubic falls below V_d by up to %.4f (albedo %.1f) and %.3f at albedo 0.",
-        d->count, d->scene_count, d->albedo_count, a->talk_err[1].rmse, a->talk_err[1].max_abs, a->linear_err[1].rmse,
-        a->linear_err[1].max_abs, a->per_albedo[0].own.rmse, (double)low, a->per_albedo[d->albedo_count - 1].own.rmse,
-        (double)d->albedos[d->albedo_count - 1], sigmas, names[worst], a->heldout_mean_linear, a->heldout_count,
+        d->count, d->scene_count, d->albedo_count, a->talk_err[1].rmse, a->talk_err[1].max_abs, a->joint_err[MB_JOINT_LINEAR][1].rmse,
+        a->joint_err[MB_JOINT_LINEAR][1].max_abs, a->per_albedo[0].own.rmse, (double)low, a->per_albedo[d->albedo_count - 1].own.rmse,
+        (double)d->albedos[d->albedo_count - 1], sigmas, names[worst], a->heldout_mean[MB_JOINT_LINEAR], a->heldout_count,
         a->heldout_mean_talk, talk_wins,
-        a->chosen_degree == 2 ? "generalises better and is chosen" : "does not generalise better and is not chosen",
-        a->heldout_mean_quadratic, multibounce_max_shortfall(&talk, low), (double)low,
+        a->heldout_mean[MB_JOINT_QUADRATIC], a->heldout_mean[MB_JOINT_ANCHORED], multibounce_joint_names[a->chosen],
+        multibounce_max_shortfall(&talk, low), (double)low,
         multibounce_max_shortfall(&talk, 0.0), 100.0 * a->talk_err[0].below, a->talk_err[0].rmse, a->talk_err[1].rmse,
-        ours_worst, ours_worst_rho, multibounce_max_shortfall(&a->linear.model, 0.0));
+        ours_worst, ours_worst_rho, multibounce_max_shortfall(&a->joint[MB_JOINT_LINEAR].model, 0.0));
 }
 
 static void add_summary(all_context *ctx, const stage *st, cJSON *validation)
@@ -545,17 +547,18 @@ static void add_summary(all_context *ctx, const stage *st, cJSON *validation)
     cJSON_AddStringToObject(o, "fit", "fits/multibounce.json");
     cJSON_AddNumberToObject(o, "samples", (double)st->data.count);
     double p[6];
-    multibounce_model_to_vector(&a->linear.model, p);
+    multibounce_model_to_vector(&a->joint[MB_JOINT_LINEAR].model, p);
     cJSON_AddItemToObject(o, "joint_linear", cJSON_CreateDoubleArray(p, 6));
-    cJSON_AddItemToObject(o, "joint_linear_standard_errors", cJSON_CreateDoubleArray(a->linear.standard_errors, 6));
-    cJSON_AddNumberToObject(o, "rmse_ours", a->linear_err[1].rmse);
+    cJSON_AddItemToObject(o, "joint_linear_standard_errors", cJSON_CreateDoubleArray(a->joint[MB_JOINT_LINEAR].standard_errors, 6));
+    cJSON_AddNumberToObject(o, "rmse_ours", a->joint_err[MB_JOINT_LINEAR][1].rmse);
     cJSON_AddNumberToObject(o, "rmse_talk", a->talk_err[1].rmse);
     cJSON_AddNumberToObject(o, "rmse_talk_without_max", a->talk_err[0].rmse);
     cJSON_AddNumberToObject(o, "fraction_talk_cubic_below_v_d", a->talk_err[0].below);
-    cJSON_AddNumberToObject(o, "heldout_mean_rmse_linear", a->heldout_mean_linear);
-    cJSON_AddNumberToObject(o, "heldout_mean_rmse_quadratic", a->heldout_mean_quadratic);
+    cJSON_AddNumberToObject(o, "heldout_mean_rmse_linear", a->heldout_mean[MB_JOINT_LINEAR]);
+    cJSON_AddNumberToObject(o, "heldout_mean_rmse_quadratic", a->heldout_mean[MB_JOINT_QUADRATIC]);
     cJSON_AddNumberToObject(o, "heldout_mean_rmse_talk", a->heldout_mean_talk);
-    cJSON_AddStringToObject(o, "chosen", a->chosen_degree == 2 ? "joint_quadratic" : "joint_linear");
+    cJSON_AddNumberToObject(o, "heldout_mean_rmse_anchored", a->heldout_mean[MB_JOINT_ANCHORED]);
+    cJSON_AddStringToObject(o, "chosen", multibounce_joint_names[a->chosen]);
     cJSON *renders = cJSON_AddArrayToObject(o, "renders");
     for (int k = 0; k < SCENES; ++k) {
         cJSON *r = cJSON_CreateObject();

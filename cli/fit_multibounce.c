@@ -56,32 +56,31 @@ static void sibling_path(const char *json, const char *extension, char *out, siz
 
 static void print_fit(const char *title, const multibounce_fit *f, const multibounce_errors *err)
 {
-    double p[MULTIBOUNCE_MAX_PARAMETERS];
-    multibounce_model_to_vector(&f->model, p);
-    int n = f->model.degree + 1;
-    printf("%s (RMSE %.4g, max |error| %.4g):\n", title, err->rmse, err->max_abs);
-    for (int t = 0; t < 3; ++t) {
-        printf("  %c =", "abc"[t]);
-        for (int k = 0; k < n; ++k)
-            printf(" %s%.5f (±%.5f)%s", k ? "+ " : "", p[t * n + k], f->standard_errors[t * n + k],
-                   k == 0 ? "" : k == 1 ? " rho" : " rho^2");
-        printf("\n");
+    printf("%s (RMSE %.4g, max |error| %.4g):\n ", title, err->rmse, err->max_abs);
+    for (int i = 0; i < f->parameter_count; ++i) {
+        char name[8];
+        multibounce_fit_parameter_name(f, i, name, sizeof name);
+        printf(" %s = %.5f (±%.5f)", name, f->params[i], f->standard_errors[i]);
     }
+    printf("\n");
 }
 
 static void print_summary(const multibounce_data *d, const multibounce_analysis *a)
 {
     printf("%zu samples: %d scenes, %d albedos, --bounces %s\n", d->count, d->scene_count, d->albedo_count,
            d->bounces);
-    print_fit("joint linear", &a->linear, &a->linear_err[1]);
-    if (a->has_quadratic)
-        print_fit("joint quadratic", &a->quadratic, &a->quadratic_err[1]);
+    for (int j = 0; j < MB_JOINT_COUNT; ++j)
+        if (a->has[j])
+            print_fit(multibounce_joint_names[j], &a->joint[j], &a->joint_err[j][1]);
     printf("talk's coefficients on the same data: RMSE %.4g, max |error| %.4g\n", a->talk_err[1].rmse,
            a->talk_err[1].max_abs);
-    if (a->heldout_count)
-        printf("leave-one-scene-out mean RMSE: linear %.4g, quadratic %s%.4g, talk %.4g; chosen: %s\n",
-               a->heldout_mean_linear, a->has_quadratic ? "" : "n/a ", a->heldout_mean_quadratic,
-               a->heldout_mean_talk, a->chosen_degree == 2 ? "quadratic" : "linear");
+    if (a->heldout_count) {
+        printf("leave-one-scene-out mean RMSE:");
+        for (int j = 0; j < MB_JOINT_COUNT; ++j)
+            if (a->has[j])
+                printf(" %s %.4g,", multibounce_joint_names[j], a->heldout_mean[j]);
+        printf(" talk %.4g; chosen: %s\n", a->heldout_mean_talk, multibounce_joint_names[a->chosen]);
+    }
 }
 
 static int load_files(const char *const *files, int count, multibounce_data *d, gt_error *e)

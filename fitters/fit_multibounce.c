@@ -218,25 +218,74 @@ int multibounce_data_add_image(multibounce_data *d, const image *img, const char
 
 /* ---- Fitting -------------------------------------------------------------------------- */
 
+/* Every fitted form is affine in its parameters p: the model's coefficient
+ * vector (degree-2 layout, a[0..2], b[0..2], c[0..2]) is offset + map p.
+ * The map is read off the form's own function (realtime/multibounce.c) at
+ * p = 0 and at the unit vectors, exactly, so no formula is written twice. */
+typedef struct {
+    int count, degree; /* parameters; the form's degree in rho (names) */
+    int anchored;
+    double offset[MULTIBOUNCE_MAX_PARAMETERS];
+    double map[MULTIBOUNCE_MAX_PARAMETERS][MULTIBOUNCE_MAX_PARAMETERS]; /* [coefficient][parameter] */
+} model_form;
+
+/* The model of the form at parameters p, as a degree-2 model. */
+static multibounce_model form_model(const model_form *f, const double *p)
+{
+    multibounce_model m;
+    if (f->anchored) {
+        m = multibounce_model_anchored(p);
+    } else {
+        m = multibounce_model_from_vector(f->degree, p);
+        m.degree = MULTIBOUNCE_MAX_DEGREE; /* higher coefficients are 0 */
+    }
+    return m;
+}
+
+static model_form make_form(int degree, int anchored)
+{
+    model_form f = {.count = anchored ? MULTIBOUNCE_ANCHORED_PARAMETERS : multibounce_model_parameter_count(degree),
+                    .degree = anchored ? MULTIBOUNCE_MAX_DEGREE : degree,
+                    .anchored = anchored};
+    double p[MULTIBOUNCE_MAX_PARAMETERS] = {0}, at[MULTIBOUNCE_MAX_PARAMETERS];
+    multibounce_model m0 = form_model(&f, p);
+    multibounce_model_to_vector(&m0, f.offset);
+    for (int j = 0; j < f.count; ++j) {
+        p[j] = 1.0;
+        multibounce_model mj = form_model(&f, p);
+        multibounce_model_to_vector(&mj, at);
+        for (int k = 0; k < MULTIBOUNCE_MAX_PARAMETERS; ++k)
+            f.map[k][j] = at[k] - f.offset[k];
+        p[j] = 0.0;
+    }
+    return f;
+}
+
 typedef struct {
     const multibounce_sample *samples;
-    int count, degree;
+    int count;
+    const model_form *form;
 } sample_block;
 
 static int block_residuals(void *user, const double *params, double *residuals, double *jacobian)
 {
     const sample_block *b = user;
-    const int n = multibounce_model_parameter_count(b->degree);
-    const multibounce_model m = multibounce_model_from_vector(b->degree, params);
+    const model_form *f = b->form;
+    const multibounce_model m = form_model(f, params);
     for (int i = 0; i < b->count; ++i) {
         const multibounce_sample *s = &b->samples[i];
         const double root_w = sqrt((double)s->weight);
         const multibounce_cubic c = multibounce_cubic_at(&m, s->albedo);
         residuals[i] = root_w * (multibounce_cubic_eval(&c, s->visibility) - s->multibounce);
         if (jacobian) {
-            multibounce_model_gradient(b->degree, s->visibility, s->albedo, jacobian + (size_t)i * n);
-            for (int j = 0; j < n; ++j)
-                jacobian[(size_t)i * n + j] *= root_w;
+            double g[MULTIBOUNCE_MAX_PARAMETERS];
+            multibounce_model_gradient(MULTIBOUNCE_MAX_DEGREE, s->visibility, s->albedo, g);
+            for (int j = 0; j < f->count; ++j) {
+                double sum = 0.0;
+                for (int k = 0; k < MULTIBOUNCE_MAX_PARAMETERS; ++k)
+                    sum += g[k] * f->map[k][j];
+                jacobian[(size_t)i * (size_t)f->count + (size_t)j] = root_w * sum;
+            }
         }
     }
     return 0;
@@ -254,27 +303,23 @@ static int distinct_albedos(const multibounce_data *d)
     return n;
 }
 
-int multibounce_fit_model(const multibounce_data *d, int degree, const multibounce_fit_options *options,
-                          multibounce_fit *out, gt_error *e)
+static int fit_form(const multibounce_data *d, const model_form *form, const multibounce_fit_options *options,
+                    multibounce_fit *out, gt_error *e)
 {
-    int block_size = options && options->block_size > 0 ? options->block_size : MBFIT_DEFAULT_BLOCK;
-    memset(out, 0, sizeof *out);
-    const int n = multibounce_model_parameter_count(degree);
-    if (degree < 0 || degree > MULTIBOUNCE_MAX_DEGREE)
-        return gt_error_set(e, "multibounce fit", "degree %d outside [0, %d]", degree, MULTIBOUNCE_MAX_DEGREE);
-    if (distinct_albedos(d) < degree + 1)
-        return gt_error_set(e, "multibounce fit", "a, b, c of degree %d in the albedo need %d albedos, the data "
-                            "have %d", degree, degree + 1, distinct_albedos(d));
+    const int block_size = options && options->block_size > 0 ? options->block_size : MBFIT_DEFAULT_BLOCK;
+    const int n = form->count;
     if (d->count <= (size_t)n)
         return gt_error_set(e, "multibounce fit", "%zu samples cannot determine %d coefficients", d->count, n);
     size_t block_count = (d->count + (size_t)block_size - 1) / (size_t)block_size;
     sample_block *blocks = malloc(block_count * sizeof *blocks);
     if (!blocks)
         return gt_error_set(e, "multibounce fit", "out of memory");
-    /* Start at V'_d = V_d (c = 1): the model is linear in its coefficients,
-     * so Levenberg-Marquardt lands on the optimum from anywhere. */
+    /* Start at V'_d = V_d where the form allows (c = 1; the anchored form
+     * is there at p = 0): every form is linear in its parameters, so
+     * Levenberg-Marquardt lands on the optimum from anywhere. */
     double params[MULTIBOUNCE_MAX_PARAMETERS] = {0};
-    params[2 * (degree + 1)] = 1.0;
+    if (!form->anchored)
+        params[2 * (form->degree + 1)] = 1.0;
     gt_fit_options so = gt_fit_default_options();
     so.linear_solver = GT_FIT_DENSE_NORMAL_CHOLESKY;
     gt_fit *fit = gt_fit_create(n, params, e);
@@ -282,7 +327,7 @@ int multibounce_fit_model(const multibounce_data *d, int degree, const multiboun
     for (size_t k = 0; k < block_count && rc == 0; ++k) {
         size_t first = k * (size_t)block_size;
         size_t count = d->count - first < (size_t)block_size ? d->count - first : (size_t)block_size;
-        blocks[k] = (sample_block){d->samples + first, (int)count, degree};
+        blocks[k] = (sample_block){d->samples + first, (int)count, form};
         rc = gt_fit_add_block(fit, (int)count, block_residuals, &blocks[k], NULL, e);
     }
     if (rc == 0)
@@ -290,12 +335,50 @@ int multibounce_fit_model(const multibounce_data *d, int degree, const multiboun
     if (rc == 0 && !(options && options->skip_covariance))
         rc = gt_fit_covariance(fit, out->covariance, out->standard_errors, &out->residual_variance, e);
     if (rc == 0) {
-        out->model = multibounce_model_from_vector(degree, params);
+        out->anchored = form->anchored;
+        out->model = form->anchored ? multibounce_model_anchored(params)
+                                    : multibounce_model_from_vector(form->degree, params);
         out->parameter_count = n;
+        memcpy(out->params, params, sizeof params);
     }
     gt_fit_destroy(fit);
     free(blocks);
     return rc;
+}
+
+int multibounce_fit_model(const multibounce_data *d, int degree, const multibounce_fit_options *options,
+                          multibounce_fit *out, gt_error *e)
+{
+    memset(out, 0, sizeof *out);
+    if (degree < 0 || degree > MULTIBOUNCE_MAX_DEGREE)
+        return gt_error_set(e, "multibounce fit", "degree %d outside [0, %d]", degree, MULTIBOUNCE_MAX_DEGREE);
+    if (distinct_albedos(d) < degree + 1)
+        return gt_error_set(e, "multibounce fit", "a, b, c of degree %d in the albedo need %d albedos, the data "
+                            "have %d", degree, degree + 1, distinct_albedos(d));
+    const model_form form = make_form(degree, 0);
+    return fit_form(d, &form, options, out, e);
+}
+
+int multibounce_fit_anchored(const multibounce_data *d, const multibounce_fit_options *options,
+                             multibounce_fit *out, gt_error *e)
+{
+    memset(out, 0, sizeof *out);
+    if (distinct_albedos(d) < 2)
+        return gt_error_set(e, "multibounce fit", "the anchored form needs 2 albedos, the data have %d",
+                            distinct_albedos(d));
+    const model_form form = make_form(MULTIBOUNCE_MAX_DEGREE, 1);
+    return fit_form(d, &form, options, out, e);
+}
+
+void multibounce_fit_parameter_name(const multibounce_fit *f, int index, char *name, size_t size)
+{
+    int n = f->model.degree + 1;
+    if (f->anchored)
+        snprintf(name, size, "%c%d", "pq"[index % 2], index / 2 + 1);
+    else if (f->model.degree == 0)
+        snprintf(name, size, "%c", "abc"[index]);
+    else
+        snprintf(name, size, "%c%d", "abc"[index / n], index % n);
 }
 
 void multibounce_measure(const multibounce_data *d, const multibounce_model *m, int with_max, multibounce_errors *out)
@@ -331,6 +414,18 @@ double multibounce_max_shortfall(const multibounce_model *m, double albedo)
 
 /* ---- The analysis ---------------------------------------------------------------------- */
 
+const char *const multibounce_joint_names[MB_JOINT_COUNT] = {"joint_linear", "joint_quadratic", "joint_anchored"};
+
+static int fit_joint(const multibounce_data *d, multibounce_joint j, const multibounce_fit_options *o,
+                     multibounce_fit *out, gt_error *e)
+{
+    switch (j) {
+    case MB_JOINT_LINEAR: return multibounce_fit_model(d, 1, o, out, e);
+    case MB_JOINT_QUADRATIC: return multibounce_fit_model(d, 2, o, out, e);
+    default: return multibounce_fit_anchored(d, o, out, e);
+    }
+}
+
 static int analyse_albedo(const multibounce_data *d, int albedo_index, const multibounce_analysis *a,
                           multibounce_albedo_result *r, gt_error *e)
 {
@@ -342,15 +437,15 @@ static int analyse_albedo(const multibounce_data *d, int albedo_index, const mul
     int rc = multibounce_fit_model(&one, 0, NULL, &r->fit, e);
     if (rc == 0) {
         multibounce_measure(&one, &r->fit.model, 1, &r->own);
-        multibounce_measure(&one, &a->linear.model, 1, &r->linear);
+        multibounce_measure(&one, &a->joint[MB_JOINT_LINEAR].model, 1, &r->linear);
         multibounce_measure(&one, &talk, 1, &r->talk);
     }
     multibounce_data_free(&one);
     return rc;
 }
 
-/* Fits on every scene but `scene`, measures on `scene`. */
-static int hold_out(const multibounce_data *d, int scene, int with_quadratic, multibounce_heldout *h, gt_error *e)
+/* Fits every joint model on every scene but `scene`, measures on `scene`. */
+static int hold_out(const multibounce_data *d, int scene, const int *has, multibounce_heldout *h, gt_error *e)
 {
     multibounce_data train, test;
     if (multibounce_data_select(d, scene, 1, -1, &train, e) != 0)
@@ -360,19 +455,16 @@ static int hold_out(const multibounce_data *d, int scene, int with_quadratic, mu
         return -1;
     }
     h->scene = scene;
-    h->has_quadratic = with_quadratic;
     const multibounce_model talk = multibounce_model_jimenez2016();
+    multibounce_measure(&test, &talk, 1, &h->talk);
     const multibounce_fit_options model_only = {0, 1};
-    multibounce_fit fit;
-    int rc = multibounce_fit_model(&train, 1, &model_only, &fit, e);
-    if (rc == 0) {
-        h->linear = fit.model;
-        multibounce_measure(&test, &h->linear, 1, &h->linear_err);
-        multibounce_measure(&test, &talk, 1, &h->talk_err);
-    }
-    if (rc == 0 && with_quadratic && (rc = multibounce_fit_model(&train, 2, &model_only, &fit, e)) == 0) {
-        h->quadratic = fit.model;
-        multibounce_measure(&test, &h->quadratic, 1, &h->quadratic_err);
+    int rc = 0;
+    for (int j = 0; j < MB_JOINT_COUNT && rc == 0; ++j) {
+        multibounce_fit fit;
+        if (!has[j] || (rc = fit_joint(&train, (multibounce_joint)j, &model_only, &fit, e)) != 0)
+            continue;
+        h->model[j] = fit.model;
+        multibounce_measure(&test, &h->model[j], 1, &h->err[j]);
     }
     multibounce_data_free(&train);
     multibounce_data_free(&test);
@@ -387,19 +479,15 @@ static int hold_out(const multibounce_data *d, int scene, int with_quadratic, mu
 static int leave_one_scene_out(const multibounce_data *d, multibounce_analysis *a, gt_error *e)
 {
     a->heldout_count = 0;
-    double sums[3] = {0, 0, 0};
     for (int s = 0; s < d->scene_count; ++s) {
         multibounce_heldout *h = &a->heldout[a->heldout_count];
-        if (hold_out(d, s, a->has_quadratic, h, e) != 0)
+        if (hold_out(d, s, a->has, h, e) != 0)
             return -1;
-        sums[0] += h->linear_err.rmse;
-        sums[1] += h->quadratic_err.rmse;
-        sums[2] += h->talk_err.rmse;
+        for (int j = 0; j < MB_JOINT_COUNT; ++j)
+            a->heldout_mean[j] += h->err[j].rmse / d->scene_count;
+        a->heldout_mean_talk += h->talk.rmse / d->scene_count;
         a->heldout_count++;
     }
-    a->heldout_mean_linear = sums[0] / a->heldout_count;
-    a->heldout_mean_quadratic = sums[1] / a->heldout_count;
-    a->heldout_mean_talk = sums[2] / a->heldout_count;
     return 0;
 }
 
@@ -410,26 +498,28 @@ int multibounce_analyse(const multibounce_data *d, multibounce_analysis *a, gt_e
         return gt_error_set(e, "--data", "the joint model needs samples at 2 or more albedos (render with "
                                          "--albedo 0.1,0.2,...)");
     const multibounce_model talk = multibounce_model_jimenez2016();
-    if (multibounce_fit_model(d, 1, NULL, &a->linear, e) != 0)
-        return -1;
-    a->has_quadratic = distinct_albedos(d) >= 3;
-    if (a->has_quadratic && multibounce_fit_model(d, 2, NULL, &a->quadratic, e) != 0)
-        return -1;
-    for (int with_max = 0; with_max < 2; ++with_max) {
-        multibounce_measure(d, &a->linear.model, with_max, &a->linear_err[with_max]);
-        multibounce_measure(d, &talk, with_max, &a->talk_err[with_max]);
-        if (a->has_quadratic)
-            multibounce_measure(d, &a->quadratic.model, with_max, &a->quadratic_err[with_max]);
+    a->has[MB_JOINT_LINEAR] = a->has[MB_JOINT_ANCHORED] = 1;
+    a->has[MB_JOINT_QUADRATIC] = distinct_albedos(d) >= 3;
+    for (int j = 0; j < MB_JOINT_COUNT; ++j) {
+        if (!a->has[j])
+            continue;
+        if (fit_joint(d, (multibounce_joint)j, NULL, &a->joint[j], e) != 0)
+            return -1;
+        for (int with_max = 0; with_max < 2; ++with_max)
+            multibounce_measure(d, &a->joint[j].model, with_max, &a->joint_err[j][with_max]);
     }
+    for (int with_max = 0; with_max < 2; ++with_max)
+        multibounce_measure(d, &talk, with_max, &a->talk_err[with_max]);
     for (int k = 0; k < d->albedo_count; ++k)
         if (analyse_albedo(d, k, a, &a->per_albedo[k], e) != 0)
             return -1;
-    a->chosen_degree = 1;
+    a->chosen = MB_JOINT_LINEAR;
     if (d->scene_count >= 2) {
         if (leave_one_scene_out(d, a, e) != 0)
             return -1;
-        if (a->has_quadratic && a->heldout_mean_quadratic < a->heldout_mean_linear)
-            a->chosen_degree = 2;
+        for (int j = 0; j < MB_JOINT_COUNT; ++j)
+            if (a->has[j] && a->heldout_mean[j] < a->heldout_mean[a->chosen])
+                a->chosen = (multibounce_joint)j;
     }
     return 0;
 }

@@ -4,9 +4,10 @@
  * the model of realtime/multibounce.h (the formula lives there only):
  *   - per albedo, the cubic V'_d = ((a V_d + b) V_d + c) V_d (degree 0);
  *   - jointly over all albedos, a, b, c linear in rho (degree 1, the talk's);
- *   - the alternative with a, b, c quadratic in rho (degree 2), kept beside
- *     the linear model and chosen only if its leave-one-scene-out error is
- *     lower.
+ *   - two alternatives: a, b, c quadratic in rho (degree 2), and the
+ *     anchored form (multibounce_model_anchored: 4 parameters, exact at
+ *     rho = 0 and V_d = 0, 1), reported beside the linear model; the model
+ *     with the lowest leave-one-scene-out error is the one chosen.
  * Weighting: each (scene, albedo) group of samples carries the same total
  * weight, so every scene and every albedo counts equally whatever its pixel
  * count; weights are scaled to mean 1. A sample's residual is
@@ -78,8 +79,11 @@ int multibounce_data_select(const multibounce_data *d, int scene, int exclude, i
                             multibounce_data *out, gt_error *e);
 
 typedef struct {
+    int anchored;       /* 1: parameters p1, q1, p2, q2 of multibounce_model_anchored;
+                           0: the model's own coefficients a[0..d], b[..], c[..] */
     multibounce_model model;
     int parameter_count;
+    double params[MULTIBOUNCE_MAX_PARAMETERS];
     double standard_errors[MULTIBOUNCE_MAX_PARAMETERS];
     double covariance[MULTIBOUNCE_MAX_PARAMETERS * MULTIBOUNCE_MAX_PARAMETERS];
     double residual_variance;
@@ -100,6 +104,12 @@ typedef struct {
  * or albedos to determine the model, solver failure). */
 int multibounce_fit_model(const multibounce_data *d, int degree, const multibounce_fit_options *options,
                           multibounce_fit *out, gt_error *e);
+/* The same for the anchored form (realtime/multibounce.h; 2+ albedos). */
+int multibounce_fit_anchored(const multibounce_data *d, const multibounce_fit_options *options,
+                             multibounce_fit *out, gt_error *e);
+
+/* "a0", "b1", ... ("a", "b", "c" at degree 0; "p1", "q1", "p2", "q2" anchored). */
+void multibounce_fit_parameter_name(const multibounce_fit *f, int index, char *name, size_t size);
 
 typedef struct {
     size_t samples;
@@ -119,6 +129,11 @@ double multibounce_max_shortfall(const multibounce_model *m, double albedo);
 
 /* ---- The whole analysis of `gtlab fit multibounce` ---------------------------------- */
 
+/* The joint models over all albedos, the candidates of issue 3 (c). */
+typedef enum { MB_JOINT_LINEAR, MB_JOINT_QUADRATIC, MB_JOINT_ANCHORED, MB_JOINT_COUNT } multibounce_joint;
+/* "joint_linear", "joint_quadratic", "joint_anchored" (JSON keys). */
+extern const char *const multibounce_joint_names[MB_JOINT_COUNT];
+
 typedef struct {
     float albedo;
     multibounce_fit fit;                    /* degree 0 */
@@ -127,23 +142,22 @@ typedef struct {
 
 typedef struct {
     int scene;
-    multibounce_model linear, quadratic;   /* fitted without the scene */
-    multibounce_errors linear_err, quadratic_err, talk_err; /* on the held-out scene, with max */
-    int has_quadratic;
+    multibounce_model model[MB_JOINT_COUNT];      /* fitted without the scene */
+    multibounce_errors err[MB_JOINT_COUNT], talk; /* on the held-out scene, with max */
 } multibounce_heldout;
 
 typedef struct {
     multibounce_albedo_result per_albedo[MBFIT_MAX_ALBEDOS];
-    multibounce_fit linear, quadratic;
-    int has_quadratic;                      /* needs 3+ albedos */
-    multibounce_errors linear_err[2], quadratic_err[2], talk_err[2]; /* [0] bare cubic, [1] with max */
+    int has[MB_JOINT_COUNT];                /* quadratic needs 3+ albedos */
+    multibounce_fit joint[MB_JOINT_COUNT];
+    multibounce_errors joint_err[MB_JOINT_COUNT][2], talk_err[2]; /* [0] bare cubic, [1] with max */
     int heldout_count;                      /* scenes when 2+, else 0 */
     multibounce_heldout heldout[MBFIT_MAX_SCENES];
-    double heldout_mean_linear, heldout_mean_quadratic, heldout_mean_talk;
-    int chosen_degree;                      /* 1 or 2 */
+    double heldout_mean[MB_JOINT_COUNT], heldout_mean_talk;
+    multibounce_joint chosen;               /* lowest held-out mean RMSE; linear without 2+ scenes */
 } multibounce_analysis;
 
-/* Every fit: per albedo, joint linear and quadratic, the talk's errors, and
+/* Every fit: per albedo, the joint models, the talk's errors, and
  * leave-one-scene-out. Needs samples at 2+ albedos. */
 int multibounce_analyse(const multibounce_data *d, multibounce_analysis *out, gt_error *e);
 

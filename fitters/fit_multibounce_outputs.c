@@ -22,34 +22,25 @@ static double albedo_value(float albedo)
     return strtod(text, NULL);
 }
 
-/* "a0", "a1", ... in the order of multibounce_model_to_vector ("a", "b", "c" at degree 0). */
-static void parameter_name(int degree, int index, char *name, size_t size)
-{
-    int n = degree + 1;
-    if (degree == 0)
-        snprintf(name, size, "%c", "abc"[index]);
-    else
-        snprintf(name, size, "%c%d", "abc"[index / n], index % n);
-}
-
 static void add_errors(cJSON *o, const char *prefix, const multibounce_errors *err)
 {
-    char key[64];
+    char key[160];
     snprintf(key, sizeof key, "%srmse", prefix);
     cJSON_AddNumberToObject(o, key, err->rmse);
     snprintf(key, sizeof key, "%smax_abs_error", prefix);
     cJSON_AddNumberToObject(o, key, err->max_abs);
 }
 
+/* A model's a, b, c coefficients by name ("a0", "a1", ...). */
 static cJSON *coefficients_json(const multibounce_model *m)
 {
-    double p[MULTIBOUNCE_MAX_PARAMETERS];
-    multibounce_model_to_vector(m, p);
+    multibounce_fit as_fit = {.model = *m};
+    multibounce_model_to_vector(m, as_fit.params);
     cJSON *o = cJSON_CreateObject();
     for (int i = 0; i < multibounce_model_parameter_count(m->degree); ++i) {
         char name[8];
-        parameter_name(m->degree, i, name, sizeof name);
-        cJSON_AddNumberToObject(o, name, p[i]);
+        multibounce_fit_parameter_name(&as_fit, i, name, sizeof name);
+        cJSON_AddNumberToObject(o, name, as_fit.params[i]);
     }
     return o;
 }
@@ -58,15 +49,19 @@ static cJSON *fit_json(const multibounce_fit *f)
 {
     cJSON *o = cJSON_CreateObject();
     int n = f->parameter_count;
-    cJSON_AddItemToObject(o, "coefficients", coefficients_json(&f->model));
-    cJSON *se = cJSON_AddObjectToObject(o, "standard_errors"), *order = cJSON_AddArrayToObject(o, "parameter_order");
-    cJSON *cov = cJSON_AddArrayToObject(o, "covariance");
+    cJSON *co = cJSON_AddObjectToObject(o, "coefficients"), *se = cJSON_AddObjectToObject(o, "standard_errors");
+    cJSON *order = cJSON_AddArrayToObject(o, "parameter_order"), *cov = cJSON_AddArrayToObject(o, "covariance");
     for (int i = 0; i < n; ++i) {
         char name[8];
-        parameter_name(f->model.degree, i, name, sizeof name);
+        multibounce_fit_parameter_name(f, i, name, sizeof name);
+        cJSON_AddNumberToObject(co, name, f->params[i]);
         cJSON_AddNumberToObject(se, name, f->standard_errors[i]);
         cJSON_AddItemToArray(order, cJSON_CreateString(name));
         cJSON_AddItemToArray(cov, cJSON_CreateDoubleArray(f->covariance + i * n, n));
+    }
+    if (f->anchored) {
+        cJSON_AddStringToObject(o, "form", "V'_d = V_d + V_d (1 - V_d) (rho (p1 + q1 V_d) + rho^2 (p2 + q2 V_d))");
+        cJSON_AddItemToObject(o, "cubic_coefficients", coefficients_json(&f->model));
     }
     cJSON_AddNumberToObject(o, "residual_variance", f->residual_variance);
     cJSON *s = cJSON_AddObjectToObject(o, "solver");
@@ -157,22 +152,25 @@ static cJSON *heldout_json(const multibounce_data *d, const multibounce_analysis
 {
     if (a->heldout_count == 0)
         return cJSON_CreateNull();
-    cJSON *o = cJSON_CreateObject();
-    cJSON_AddNumberToObject(o, "mean_rmse_linear", a->heldout_mean_linear);
-    if (a->has_quadratic)
-        cJSON_AddNumberToObject(o, "mean_rmse_quadratic", a->heldout_mean_quadratic);
-    cJSON_AddNumberToObject(o, "mean_rmse_talk", a->heldout_mean_talk);
+    cJSON *o = cJSON_CreateObject(), *means = cJSON_AddObjectToObject(o, "mean_rmse");
+    for (int j = 0; j < MB_JOINT_COUNT; ++j)
+        if (a->has[j])
+            cJSON_AddNumberToObject(means, multibounce_joint_names[j], a->heldout_mean[j]);
+    cJSON_AddNumberToObject(means, "talk", a->heldout_mean_talk);
     cJSON *list = cJSON_AddArrayToObject(o, "scenes");
     for (int i = 0; i < a->heldout_count; ++i) {
         const multibounce_heldout *h = &a->heldout[i];
         cJSON *s = cJSON_CreateObject();
         cJSON_AddStringToObject(s, "held_out", d->scenes[h->scene]);
-        cJSON_AddNumberToObject(s, "samples", (double)h->linear_err.samples);
-        add_errors(s, "linear_", &h->linear_err);
-        if (h->has_quadratic)
-            add_errors(s, "quadratic_", &h->quadratic_err);
-        add_errors(s, "talk_", &h->talk_err);
-        cJSON_AddItemToObject(s, "linear_coefficients", coefficients_json(&h->linear));
+        cJSON_AddNumberToObject(s, "samples", (double)h->talk.samples);
+        for (int j = 0; j < MB_JOINT_COUNT; ++j) {
+            char prefix[64];
+            snprintf(prefix, sizeof prefix, "%s_", multibounce_joint_names[j]);
+            if (a->has[j])
+                add_errors(s, prefix, &h->err[j]);
+        }
+        add_errors(s, "talk_", &h->talk);
+        cJSON_AddItemToObject(s, "joint_linear_coefficients", coefficients_json(&h->model[MB_JOINT_LINEAR]));
         cJSON_AddItemToArray(list, s);
     }
     return o;
@@ -184,19 +182,19 @@ static char *analysis_json(const multibounce_data *d, const multibounce_analysis
     cJSON_AddStringToObject(root, "gtlab_version", GTLAB_VERSION);
     cJSON_AddStringToObject(root, "command", command);
     cJSON_AddStringToObject(root, "model", "V'_d = max(V_d, ((a V_d + b) V_d + c) V_d), a = a0 + a1 rho (+ a2 rho^2), "
-                                           "likewise b and c (Jimenez et al. 2016, GTAOMultiBounce)");
+                                           "likewise b and c (Jimenez et al. 2016, GTAOMultiBounce); joint_anchored: "
+                                           "the same cubic with 4 parameters, exact at rho = 0 and V_d = 0, 1");
     cJSON_AddStringToObject(root, "errors", "rmse weighted as the fit (scenes and albedos equal), max_abs_error over "
                                             "all samples; with the max(V_d, .) unless prefixed without_max_");
     cJSON_AddItemToObject(root, "data", data_json(d));
-    cJSON *linear = fit_json(&a->linear);
-    add_data_errors(linear, d, &a->linear.model, a->linear_err);
-    cJSON_AddItemToObject(root, "joint_linear", linear);
-    if (a->has_quadratic) {
-        cJSON *q = fit_json(&a->quadratic);
-        add_data_errors(q, d, &a->quadratic.model, a->quadratic_err);
-        cJSON_AddItemToObject(root, "joint_quadratic", q);
-    } else {
-        cJSON_AddNullToObject(root, "joint_quadratic");
+    for (int j = 0; j < MB_JOINT_COUNT; ++j) {
+        if (!a->has[j]) {
+            cJSON_AddNullToObject(root, multibounce_joint_names[j]);
+            continue;
+        }
+        cJSON *o = fit_json(&a->joint[j]);
+        add_data_errors(o, d, &a->joint[j].model, a->joint_err[j]);
+        cJSON_AddItemToObject(root, multibounce_joint_names[j], o);
     }
     const multibounce_model talk = multibounce_model_jimenez2016();
     cJSON *t = cJSON_CreateObject();
@@ -206,7 +204,7 @@ static char *analysis_json(const multibounce_data *d, const multibounce_analysis
     cJSON_AddItemToObject(root, "per_albedo", per_albedo_json(d, a));
     cJSON_AddItemToObject(root, "leave_one_scene_out", heldout_json(d, a));
     cJSON *sel = cJSON_AddObjectToObject(root, "selection");
-    cJSON_AddStringToObject(sel, "chosen", a->chosen_degree == 2 ? "joint_quadratic" : "joint_linear");
+    cJSON_AddStringToObject(sel, "chosen", multibounce_joint_names[a->chosen]);
     cJSON_AddStringToObject(sel, "rule", a->heldout_count ? "lower mean leave-one-scene-out RMSE"
                                                           : "linear: held-out selection needs 2 or more scenes");
     char *text = cJSON_Print(root);
@@ -215,14 +213,26 @@ static char *analysis_json(const multibounce_data *d, const multibounce_analysis
 }
 
 /* Polynomial in rho of one coefficient, as C/HLSL source: "(c0 + rho * (c1 + rho * c2))". */
+/* A float literal C and HLSL both read: "1.0f", "-0.410470316f", "2e-05f". */
+static void float_literal(double v, char *out, size_t size)
+{
+    char digits[40];
+    snprintf(digits, sizeof digits, "%.9g", v);
+    snprintf(out, size, "%s%sf", digits, strpbrk(digits, ".e") ? "" : ".0");
+}
+
 static void rho_polynomial(const double *coef, int degree, char *out, size_t size)
 {
-    size_t used = (size_t)snprintf(out, size, "%.9gf", coef[degree]);
-    for (int k = degree - 1; k >= 0 && used < size; --k) {
-        char inner[256];
-        snprintf(inner, sizeof inner, "%s", out);
-        used = (size_t)snprintf(out, size, "%.9gf + albedo * (%s)", coef[k], inner);
+    /* Horner: c0 + albedo * (c1 + albedo * (c2)) */
+    size_t used = 0;
+    out[0] = '\0';
+    for (int k = 0; k <= degree && used < size; ++k) {
+        char literal[48];
+        float_literal(coef[k], literal, sizeof literal);
+        used += (size_t)snprintf(out + used, size - used, k < degree ? "%s + albedo * (" : "%s", literal);
     }
+    for (int k = 0; k < degree && used < size; ++k)
+        used += (size_t)snprintf(out + used, size - used, ")");
 }
 
 /* The three coefficient lines of a shader function, `type` float or float3. */
@@ -235,13 +245,42 @@ static void coefficient_lines(const multibounce_model *m, const char *type, char
     snprintf(out, size, "    %s a = %s;\n    %s b = %s;\n    %s c = %s;\n", type, a, type, b, type, c);
 }
 
+static const char *const kFunctionSuffix[MB_JOINT_COUNT] = {"Linear", "Quadratic", "Anchored"};
+static const char *const kFunctionWhat[MB_JOINT_COUNT] = {
+    "a, b, c linear in the albedo (the talk's form)", "a, b, c quadratic in the albedo",
+    "anchored: V_d + V_d (1 - V_d) (albedo (p1 + q1 V_d) + albedo^2 (p2 + q2 V_d)), exact at albedo 0 and "
+    "V_d = 0, 1"};
+
+/* One function per joint model: C (float) or HLSL (float3 albedo). */
+static int append_functions(const multibounce_analysis *a, int hlsl, char *text, size_t size, int used)
+{
+    for (int j = 0; j < MB_JOINT_COUNT; ++j) {
+        if (!a->has[j])
+            continue;
+        char lines[1024];
+        coefficient_lines(&a->joint[j].model, hlsl ? "float3" : "float", lines, sizeof lines);
+        const char *note = j == (int)a->chosen ? " Preferred by the leave-one-scene-out test." : "";
+        if (hlsl)
+            used += snprintf(text + used, size - (size_t)used,
+                             "\n// %s; weighted RMSE %.3g on the data.%s\n"
+                             "float3 GTAOMultiBounce%s(float visibility, float3 albedo)\n{\n%s"
+                             "    float x = visibility;\n    return max(x, ((x * a + b) * x + c) * x);\n}\n",
+                             kFunctionWhat[j], a->joint_err[j][1].rmse, note,
+                             j == MB_JOINT_LINEAR ? "" : kFunctionSuffix[j], lines);
+        else
+            used += snprintf(text + used, size - (size_t)used,
+                             "\n/* %s; weighted RMSE %.3g on the data.%s */\n"
+                             "static inline float gtlab_multibounce_%c%s(float visibility, float albedo)\n{\n%s"
+                             "    float x = visibility, y = ((a * x + b) * x + c) * x;\n    return y > x ? y : x;\n}\n",
+                             kFunctionWhat[j], a->joint_err[j][1].rmse, note, kFunctionSuffix[j][0] + 32,
+                             kFunctionSuffix[j] + 1, lines);
+    }
+    return used;
+}
+
 static char *header_text(const multibounce_analysis *a, const char *command)
 {
-    char linear[1024], quadratic[1024] = "";
-    coefficient_lines(&a->linear.model, "float", linear, sizeof linear);
-    if (a->has_quadratic)
-        coefficient_lines(&a->quadratic.model, "float", quadratic, sizeof quadratic);
-    size_t size = 8192;
+    size_t size = 16384;
     char *text = malloc(size);
     if (!text)
         return NULL;
@@ -249,45 +288,24 @@ static char *header_text(const multibounce_analysis *a, const char *command)
                      "/* GTAO multi-bounce, refitted by gtlab %s:\n *   %s\n"
                      " * V'_d = max(V_d, ((a V_d + b) V_d + c) V_d) with a, b, c polynomials in the albedo\n"
                      " * (Jimenez et al. 2016). Generated file: edit the data, not the numbers. */\n"
-                     "#ifndef GTLAB_MULTIBOUNCE_FIT_H\n#define GTLAB_MULTIBOUNCE_FIT_H\n\n"
-                     "/* a, b, c linear in the albedo (the talk's form); weighted RMSE %.3g on the data. */\n"
-                     "static inline float gtlab_multibounce_linear(float visibility, float albedo)\n{\n%s"
-                     "    float x = visibility, y = ((a * x + b) * x + c) * x;\n    return y > x ? y : x;\n}\n",
-                     GTLAB_VERSION, command, a->linear_err[1].rmse, linear);
-    if (a->has_quadratic)
-        n += snprintf(text + n, size - (size_t)n,
-                      "\n/* a, b, c quadratic in the albedo; weighted RMSE %.3g on the data%s. */\n"
-                      "static inline float gtlab_multibounce_quadratic(float visibility, float albedo)\n{\n%s"
-                      "    float x = visibility, y = ((a * x + b) * x + c) * x;\n    return y > x ? y : x;\n}\n",
-                      a->quadratic_err[1].rmse,
-                      a->chosen_degree == 2 ? "; preferred by the leave-one-scene-out test" : "", quadratic);
+                     "#ifndef GTLAB_MULTIBOUNCE_FIT_H\n#define GTLAB_MULTIBOUNCE_FIT_H\n",
+                     GTLAB_VERSION, command);
+    n = append_functions(a, 0, text, size, n);
     snprintf(text + n, size - (size_t)n, "\n#endif\n");
     return text;
 }
 
 static char *hlsl_text(const multibounce_analysis *a, const char *command)
 {
-    char linear[1024], quadratic[1024] = "";
-    coefficient_lines(&a->linear.model, "float3", linear, sizeof linear);
-    if (a->has_quadratic)
-        coefficient_lines(&a->quadratic.model, "float3", quadratic, sizeof quadratic);
-    size_t size = 8192;
+    size_t size = 16384;
     char *text = malloc(size);
     if (!text)
         return NULL;
     int n = snprintf(text, size,
                      "// GTAO multi-bounce, refitted by gtlab %s:\n//   %s\n"
-                     "// Same form as GTAOMultiBounce (Jimenez et al. 2016), new coefficients. Generated file.\n"
-                     "float3 GTAOMultiBounce(float visibility, float3 albedo)\n{\n%s"
-                     "    float x = visibility;\n    return max(x, ((x * a + b) * x + c) * x);\n}\n",
-                     GTLAB_VERSION, command, linear);
-    if (a->has_quadratic)
-        n += snprintf(text + n, size - (size_t)n,
-                      "\n// a, b, c quadratic in the albedo%s.\n"
-                      "float3 GTAOMultiBounceQuadratic(float visibility, float3 albedo)\n{\n%s"
-                      "    float x = visibility;\n    return max(x, ((x * a + b) * x + c) * x);\n}\n",
-                      a->chosen_degree == 2 ? " (preferred by the leave-one-scene-out test)" : "", quadratic);
-    (void)n;
+                     "// Same form as GTAOMultiBounce (Jimenez et al. 2016), new coefficients. Generated file.\n",
+                     GTLAB_VERSION, command);
+    append_functions(a, 1, text, size, n);
     return text;
 }
 

@@ -80,6 +80,17 @@ void multibounce_model_gradient(int degree, double visibility, double albedo, do
             gradient[term * n + k] = basis[term] * power;
 }
 
+multibounce_model multibounce_model_anchored(const double p[MULTIBOUNCE_ANCHORED_PARAMETERS])
+{
+    /* V (1 - V)(P + Q V) = P V + (Q - P) V^2 - Q V^3 with P = p1 rho + p2 rho^2, Q likewise. */
+    const double p1 = p[0], q1 = p[1], p2 = p[2], q2 = p[3];
+    multibounce_model m = {.degree = 2,
+                           .a = {0.0, -q1, -q2},
+                           .b = {0.0, q1 - p1, q2 - p2},
+                           .c = {1.0, p1, p2}};
+    return m;
+}
+
 double gtao_multibounce(const multibounce_model *model, double visibility, double albedo)
 {
     multibounce_cubic c = multibounce_cubic_at(model, albedo);

@@ -57,6 +57,16 @@ multibounce_model multibounce_model_from_vector(int degree, const double *params
 /* d (cubic without max) / d params at (visibility, albedo), in the vector order above. */
 void multibounce_model_gradient(int degree, double visibility, double albedo, double *gradient);
 
+/* The anchored form (gtlab's, not the talk's): the cubic written as
+ *     V'_d = V_d + V_d (1 - V_d) (rho (p1 + q1 V_d) + rho^2 (p2 + q2 V_d)),
+ * i.e. a = -(q1 rho + q2 rho^2), b = (q1 - p1) rho + (q2 - p2) rho^2,
+ * c = 1 + p1 rho + p2 rho^2. It holds by construction what the physics
+ * fixes and the talk's coefficients only approach: V'_d = V_d at rho = 0
+ * (no bounce light), V'_d(0) = 0 and V'_d(1) = 1 (an unoccluded point sees
+ * the dome) at every albedo. p = {p1, q1, p2, q2}. */
+enum { MULTIBOUNCE_ANCHORED_PARAMETERS = 4 };
+multibounce_model multibounce_model_anchored(const double p[MULTIBOUNCE_ANCHORED_PARAMETERS]);
+
 /* GTAOMultiBounce(visibility, albedo) of the talk with any coefficients:
  * max(x, cubic(x)). The max keeps V'_d >= V_d, which the physics guarantees
  * (a bounce only adds light) and a fitted cubic need not. */

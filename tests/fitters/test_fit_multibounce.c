@@ -85,6 +85,31 @@ static void test_recovery(void)
     CHECK_MSG(mean_z2 > 0.55 && mean_z2 < 1.45, "mean z^2 %g, expected 1", mean_z2);
 }
 
+/* The anchored form: a truth of that form is recovered within its
+ * standard errors, and every fit keeps V'_d(1) = 1 and V'_d = V_d at rho = 0. */
+static void test_anchored(void)
+{
+    const double p_true[4] = {1.2, -0.4, 0.9, -0.6};
+    multibounce_model t = multibounce_model_anchored(p_true);
+    multibounce_data d;
+    multibounce_data_init(&d);
+    synthesise(&d, &t, 3, 600, 21);
+    multibounce_fit f;
+    gt_error e;
+    CHECK_MSG(multibounce_fit_anchored(&d, NULL, &f, &e) == 0, "%s", e.message);
+    CHECK(f.anchored && f.parameter_count == 4);
+    for (int k = 0; k < 4; ++k)
+        CHECK_MSG(fabs(f.params[k] - p_true[k]) < 4.5 * f.standard_errors[k], "p[%d] = %g +- %g, truth %g", k,
+                  f.params[k], f.standard_errors[k], p_true[k]);
+    for (int j = 0; j <= 10; ++j)
+        CHECK_NEAR(gtao_multibounce(&f.model, 1.0, j / 10.0), 1.0, 1e-12);
+    CHECK_NEAR(gtao_multibounce(&f.model, 0.37, 0.0), 0.37, 1e-15);
+    char name[8];
+    multibounce_fit_parameter_name(&f, 3, name, sizeof name);
+    CHECK(strcmp(name, "q2") == 0);
+    multibounce_data_free(&d);
+}
+
 static void test_standard_error_scaling(void)
 {
     multibounce_model t = truth();
@@ -193,7 +218,7 @@ static void test_leave_one_scene_out(void)
     for (int s = 0; s < 3; ++s) {
         const multibounce_heldout *h = &a->heldout[s];
         CHECK(h->scene == s);
-        CHECK(h->linear_err.samples == 7 * 300);
+        CHECK(h->err[MB_JOINT_LINEAR].samples == 7 * 300);
         /* The held-out model is the fit without the scene, scored on the scene. */
         multibounce_data train, test;
         multibounce_data_select(&d, s, 1, -1, &train, &e);
@@ -202,18 +227,21 @@ static void test_leave_one_scene_out(void)
         multibounce_fit f;
         CHECK(multibounce_fit_model(&train, 1, NULL, &f, &e) == 0);
         for (int k = 0; k < 2; ++k)
-            CHECK_NEAR(h->linear.a[k] + h->linear.b[k] + h->linear.c[k], f.model.a[k] + f.model.b[k] + f.model.c[k], 1e-9);
+            CHECK_NEAR(h->model[MB_JOINT_LINEAR].a[k] + h->model[MB_JOINT_LINEAR].b[k] + h->model[MB_JOINT_LINEAR].c[k], f.model.a[k] + f.model.b[k] + f.model.c[k], 1e-9);
         multibounce_errors err;
-        multibounce_measure(&test, &h->linear, 1, &err);
-        CHECK_NEAR(h->linear_err.rmse, err.rmse, 1e-12);
+        multibounce_measure(&test, &h->model[MB_JOINT_LINEAR], 1, &err);
+        CHECK_NEAR(h->err[MB_JOINT_LINEAR].rmse, err.rmse, 1e-12);
         multibounce_data_free(&train);
         multibounce_data_free(&test);
     }
     /* The odd scene, held out, is predicted worse than the two alike. */
-    CHECK(a->heldout[2].linear_err.rmse > 3 * a->heldout[0].linear_err.rmse);
-    CHECK(a->heldout[2].linear_err.rmse > 3 * a->heldout[1].linear_err.rmse);
-    CHECK_NEAR(a->heldout_mean_linear,
-               (a->heldout[0].linear_err.rmse + a->heldout[1].linear_err.rmse + a->heldout[2].linear_err.rmse) / 3, 1e-12);
+    CHECK(a->heldout[2].err[MB_JOINT_LINEAR].rmse > 3 * a->heldout[0].err[MB_JOINT_LINEAR].rmse);
+    CHECK(a->heldout[2].err[MB_JOINT_LINEAR].rmse > 3 * a->heldout[1].err[MB_JOINT_LINEAR].rmse);
+    CHECK_NEAR(a->heldout_mean[MB_JOINT_LINEAR],
+               (a->heldout[0].err[MB_JOINT_LINEAR].rmse + a->heldout[1].err[MB_JOINT_LINEAR].rmse + a->heldout[2].err[MB_JOINT_LINEAR].rmse) / 3, 1e-12);
+    /* The chosen joint model has the lowest held-out mean. */
+    for (int j = 0; j < MB_JOINT_COUNT; ++j)
+        CHECK(a->has[j] && a->heldout_mean[a->chosen] <= a->heldout_mean[j]);
     /* Per albedo: a degree-0 cubic fitted to that albedo's samples only. */
     for (int k = 0; k < 7; ++k) {
         CHECK(a->per_albedo[k].albedo == kAlbedos[k]);
@@ -276,6 +304,7 @@ static void test_reading_images(void)
 int main(void)
 {
     test_recovery();
+    test_anchored();
     test_standard_error_scaling();
     test_weighting();
     test_leave_one_scene_out();

@@ -90,8 +90,29 @@ static void test_model_algebra(void)
     }
 }
 
+/* The anchored form against its defining expression, and its limits. */
+static void test_anchored(void)
+{
+    const double p[4] = {0.8, -0.3, 0.5, 0.4};
+    multibounce_model m = multibounce_model_anchored(p);
+    for (int i = 0; i <= 10; ++i)
+        for (int j = 0; j <= 10; ++j) {
+            double v = i / 10.0, rho = j / 10.0;
+            double direct = v + v * (1 - v) * (rho * (p[0] + p[1] * v) + rho * rho * (p[2] + p[3] * v));
+            multibounce_cubic c = multibounce_cubic_at(&m, rho);
+            CHECK_NEAR(multibounce_cubic_eval(&c, v), direct, 1e-14);
+        }
+    for (int j = 0; j <= 10; ++j) {
+        multibounce_cubic c = multibounce_cubic_at(&m, j / 10.0);
+        CHECK_NEAR(multibounce_cubic_eval(&c, 1.0), 1.0, 1e-14);
+    }
+    multibounce_cubic zero = multibounce_cubic_at(&m, 0.0);
+    CHECK(zero.a == 0.0 && zero.b == 0.0 && zero.c == 1.0);
+}
+
 int main(void)
 {
+    test_anchored();
     test_hand_values();
     test_against_talk_shader();
     test_model_algebra();
