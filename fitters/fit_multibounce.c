@@ -464,6 +464,7 @@ static int hold_out(const multibounce_data *d, int scene, const int *has, multib
         if (!has[j] || (rc = fit_joint(&train, (multibounce_joint)j, &model_only, &fit, e)) != 0)
             continue;
         h->model[j] = fit.model;
+        memcpy(h->params[j], fit.params, sizeof fit.params);
         multibounce_measure(&test, &h->model[j], 1, &h->err[j]);
     }
     multibounce_data_free(&train);
@@ -474,6 +475,20 @@ static int hold_out(const multibounce_data *d, int scene, const int *has, multib
         return gt_error_set(e, d->scenes[scene], "leave-one-scene-out fit without it: %s", why);
     }
     return 0;
+}
+
+static void jackknife(multibounce_analysis *a)
+{
+    const double s = a->heldout_count;
+    for (int j = 0; j < MB_JOINT_COUNT; ++j)
+        for (int k = 0; k < a->joint[j].parameter_count; ++k) {
+            double mean = 0.0, sum_sq = 0.0;
+            for (int i = 0; i < a->heldout_count; ++i)
+                mean += a->heldout[i].params[j][k] / s;
+            for (int i = 0; i < a->heldout_count; ++i)
+                sum_sq += (a->heldout[i].params[j][k] - mean) * (a->heldout[i].params[j][k] - mean);
+            a->jackknife_se[j][k] = sqrt((s - 1.0) / s * sum_sq);
+        }
 }
 
 static int leave_one_scene_out(const multibounce_data *d, multibounce_analysis *a, gt_error *e)
@@ -488,6 +503,7 @@ static int leave_one_scene_out(const multibounce_data *d, multibounce_analysis *
         a->heldout_mean_talk += h->talk.rmse / d->scene_count;
         a->heldout_count++;
     }
+    jackknife(a);
     return 0;
 }
 

@@ -143,6 +143,7 @@ typedef struct {
 typedef struct {
     int scene;
     multibounce_model model[MB_JOINT_COUNT];      /* fitted without the scene */
+    double params[MB_JOINT_COUNT][MULTIBOUNCE_MAX_PARAMETERS];
     multibounce_errors err[MB_JOINT_COUNT], talk; /* on the held-out scene, with max */
 } multibounce_heldout;
 
@@ -154,6 +155,11 @@ typedef struct {
     int heldout_count;                      /* scenes when 2+, else 0 */
     multibounce_heldout heldout[MBFIT_MAX_SCENES];
     double heldout_mean[MB_JOINT_COUNT], heldout_mean_talk;
+    /* Jackknife standard errors over scenes (2+ scenes): sqrt((S-1)/S sum
+     * (p_without_s - mean)^2) from the leave-one-scene-out fits. They say how
+     * much the coefficients move with the content, which the per-pixel
+     * standard errors (pixels taken as independent) do not. */
+    double jackknife_se[MB_JOINT_COUNT][MULTIBOUNCE_MAX_PARAMETERS];
     multibounce_joint chosen;               /* lowest held-out mean RMSE; linear without 2+ scenes */
 } multibounce_analysis;
 

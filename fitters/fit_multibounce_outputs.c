@@ -193,6 +193,14 @@ static char *analysis_json(const multibounce_data *d, const multibounce_analysis
             continue;
         }
         cJSON *o = fit_json(&a->joint[j]);
+        if (a->heldout_count) {
+            cJSON *jk = cJSON_AddObjectToObject(o, "jackknife_standard_errors_over_scenes");
+            for (int k = 0; k < a->joint[j].parameter_count; ++k) {
+                char name[8];
+                multibounce_fit_parameter_name(&a->joint[j], k, name, sizeof name);
+                cJSON_AddNumberToObject(jk, name, a->jackknife_se[j][k]);
+            }
+        }
         add_data_errors(o, d, &a->joint[j].model, a->joint_err[j]);
         cJSON_AddItemToObject(root, multibounce_joint_names[j], o);
     }

@@ -239,6 +239,16 @@ static void test_leave_one_scene_out(void)
     CHECK(a->heldout[2].err[MB_JOINT_LINEAR].rmse > 3 * a->heldout[1].err[MB_JOINT_LINEAR].rmse);
     CHECK_NEAR(a->heldout_mean[MB_JOINT_LINEAR],
                (a->heldout[0].err[MB_JOINT_LINEAR].rmse + a->heldout[1].err[MB_JOINT_LINEAR].rmse + a->heldout[2].err[MB_JOINT_LINEAR].rmse) / 3, 1e-12);
+    /* Jackknife standard errors from the held-out fits' parameters. */
+    for (int k = 0; k < 6; ++k) {
+        double mean = 0, ss = 0;
+        for (int i = 0; i < 3; ++i)
+            mean += a->heldout[i].params[MB_JOINT_LINEAR][k] / 3;
+        for (int i = 0; i < 3; ++i)
+            ss += pow(a->heldout[i].params[MB_JOINT_LINEAR][k] - mean, 2);
+        CHECK_NEAR(a->jackknife_se[MB_JOINT_LINEAR][k], sqrt(2.0 / 3.0 * ss), 1e-12);
+        CHECK(a->jackknife_se[MB_JOINT_LINEAR][k] > 0);
+    }
     /* The chosen joint model has the lowest held-out mean. */
     for (int j = 0; j < MB_JOINT_COUNT; ++j)
         CHECK(a->has[j] && a->heldout_mean[a->chosen] <= a->heldout_mean[j]);
