@@ -68,7 +68,6 @@ static cJSON *fit_json(const multibounce_fit *f)
     cJSON_AddBoolToObject(s, "converged", f->solver.success);
     cJSON_AddNumberToObject(s, "iterations", f->solver.iterations);
     cJSON_AddNumberToObject(s, "residuals", (double)f->solver.residual_count);
-    cJSON_AddNumberToObject(s, "seconds", f->solver.seconds);
     return o;
 }
 

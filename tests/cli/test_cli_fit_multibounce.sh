@@ -48,6 +48,10 @@ assert len(j["joint_linear"]["covariance"]) == 6 and j["joint_linear"]["rmse"] >
 assert j["talk_jimenez2016"]["coefficients"]["a1"] == 2.0404 and j["talk_jimenez2016"]["rmse"] > 0
 assert len(j["per_albedo"]) == 3 and len(j["leave_one_scene_out"]["scenes"]) == 2
 PY
+# Same data, same bytes.
+cp "$out" "$work/first.json"
+expect_ok fit-again $(fit --data "$work/corner.exr" "$work/boxes.exr")
+cmp -s "$out" "$work/first.json" || fail "a second fit of the same data wrote a different fit.json"
 # The header is C an engine can compile, and its function is the fitted one.
 cat >"$work/use_header.c" <<C
 #include "fit.h"
