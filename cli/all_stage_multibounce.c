@@ -537,7 +537,10 @@ static void findings(all_context *ctx, const stage *st)
         "the data it is lower than V_d by more than 0.001 for %.1f%% of the weighted samples, and the max "
         "changes its RMSE from %.5f to %.5f. So the max is a guard for albedos below about 0.1, where the "
         "talk's linear coefficients fall short of V'_d >= V_d; at the talk's albedos it changes little. Our "
-        "refit's cubic falls below V_d by up to %.4f (albedo %.1f) and %.3f at albedo 0.",
+        "refit's cubic falls below V_d by up to %.4f (albedo %.1f) and %.3f at albedo 0. The largest errors are "
+        "not noise: the talk's worst pixel (%s, albedo %.1f) has V_d = %.3f but V'_d = %.3f. Where a point sees "
+        "little sky but much lit surface (contacts, crevices facing bright walls), V'_d is not a function of "
+        "V_d, and no curve in V_d alone can follow it.",
         d->count, d->scene_count, d->albedo_count, a->talk_err[1].rmse, a->talk_err[1].max_abs, a->joint_err[MB_JOINT_LINEAR][1].rmse,
         a->joint_err[MB_JOINT_LINEAR][1].max_abs, a->per_albedo[0].own.rmse, (double)low, a->per_albedo[d->albedo_count - 1].own.rmse,
         (double)d->albedos[d->albedo_count - 1], sigmas, names[worst], scene_sigmas, names[scene_worst],
@@ -546,7 +549,9 @@ static void findings(all_context *ctx, const stage *st)
         a->heldout_mean[MB_JOINT_QUADRATIC], a->heldout_mean[MB_JOINT_ANCHORED], multibounce_joint_names[a->chosen],
         multibounce_max_shortfall(&talk, low), (double)low,
         multibounce_max_shortfall(&talk, 0.0), 100.0 * a->talk_err[0].below, a->talk_err[0].rmse, a->talk_err[1].rmse,
-        ours_worst, ours_worst_rho, multibounce_max_shortfall(&a->joint[MB_JOINT_LINEAR].model, 0.0));
+        ours_worst, ours_worst_rho, multibounce_max_shortfall(&a->joint[MB_JOINT_LINEAR].model, 0.0),
+        d->scenes[a->talk_err[1].worst.scene], (double)a->talk_err[1].worst.albedo,
+        (double)a->talk_err[1].worst.visibility, (double)a->talk_err[1].worst.multibounce);
 }
 
 static void add_summary(all_context *ctx, const stage *st, cJSON *validation)

@@ -383,6 +383,7 @@ void multibounce_fit_parameter_name(const multibounce_fit *f, int index, char *n
 
 void multibounce_measure(const multibounce_data *d, const multibounce_model *m, int with_max, multibounce_errors *out)
 {
+    memset(out, 0, sizeof *out);
     double sum_w = 0.0, sum_wr2 = 0.0, max_abs = 0.0, below = 0.0;
     for (size_t i = 0; i < d->count; ++i) {
         const multibounce_sample *s = &d->samples[i];
@@ -392,7 +393,10 @@ void multibounce_measure(const multibounce_data *d, const multibounce_model *m, 
         double r = model - s->multibounce;
         sum_w += s->weight;
         sum_wr2 += s->weight * r * r;
-        max_abs = fmax(max_abs, fabs(r));
+        if (fabs(r) > max_abs) {
+            max_abs = fabs(r);
+            out->worst = *s;
+        }
         below += cubic < s->visibility - MBFIT_BELOW_MARGIN ? s->weight : 0.0;
     }
     out->samples = d->count;

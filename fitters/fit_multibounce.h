@@ -115,6 +115,7 @@ typedef struct {
     size_t samples;
     double rmse;          /* sqrt(sum w r^2 / sum w): scenes and albedos equal */
     double max_abs;       /* max |r| over the samples */
+    multibounce_sample worst; /* the sample where it occurs */
     double below;         /* weighted fraction of samples where the cubic < V_d - MBFIT_BELOW_MARGIN */
 } multibounce_errors;
 

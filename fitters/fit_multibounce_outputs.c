@@ -80,6 +80,11 @@ static void add_data_errors(cJSON *o, const multibounce_data *d, const multiboun
     add_errors(o, "", &err[1]);
     add_errors(o, "without_max_", &err[0]);
     cJSON_AddNumberToObject(o, "fraction_cubic_below_v_d_by_0.001", err[0].below);
+    cJSON *worst = cJSON_AddObjectToObject(o, "max_error_sample");
+    cJSON_AddStringToObject(worst, "scene", d->scenes[err[1].worst.scene]);
+    cJSON_AddNumberToObject(worst, "albedo", albedo_value(err[1].worst.albedo));
+    cJSON_AddNumberToObject(worst, "v_d", err[1].worst.visibility);
+    cJSON_AddNumberToObject(worst, "v_prime_d", err[1].worst.multibounce);
     cJSON *list = cJSON_AddArrayToObject(o, "max_shortfall_below_v_d");
     for (int k = -2; k < d->albedo_count; ++k) {
         double rho = k == -2 ? 0.0 : k == -1 ? 0.05 : albedo_value(d->albedos[k]);
