@@ -60,7 +60,7 @@ static int run_gnuplot(const char *text, const char *log_path, const char *png_p
     if (log)
         fclose(log);
     line[strcspn(line, "\n")] = '\0';
-    return gt_error_set(e, png_path, "gnuplot failed: %s", line);
+    return gt_error_set(e, png_path, "gnuplot failed: %s", line + strspn(line, " \t"));
 }
 
 int gnuplot_render(const char *script, const char *png_path, int width, int height, gt_error *e)
