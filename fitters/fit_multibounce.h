@@ -65,7 +65,9 @@ int multibounce_data_push(multibounce_data *d, int scene, int albedo_index, floa
  * (ao.V, multibounce[_<rho>].V). The scene is the file's gtlab.scene. Errors
  * name `path`: not a multibounce render, coloured (--albedo scene), missing
  * channels, values outside [0, 1], no surface pixel, a --bounces setting
- * different from earlier files. Then call multibounce_data_weigh. */
+ * different from earlier files; after an error the data may hold part of
+ * the file's samples and should be discarded. Then call
+ * multibounce_data_weigh. */
 int multibounce_data_add_image(multibounce_data *d, const image *img, const char *path, gt_error *e);
 
 /* Sets every weight: each non-empty (scene, albedo) group gets equal total
