@@ -499,6 +499,17 @@ static int farthest_coefficient(const multibounce_analysis *a, int by_scene, dou
     return worst;
 }
 
+/* Largest difference between the joint linear coefficients and the talk's two-step lines. */
+static double two_step_gap(const multibounce_analysis *a)
+{
+    double joint[6], lines[6], gap = 0.0;
+    multibounce_model_to_vector(&a->joint[MB_JOINT_LINEAR].model, joint);
+    multibounce_model_to_vector(&a->two_step, lines);
+    for (int k = 0; k < 6; ++k)
+        gap = fmax(gap, fabs(joint[k] - lines[k]));
+    return gap;
+}
+
 static void findings(all_context *ctx, const stage *st)
 {
     const multibounce_analysis *a = st->analysis;
@@ -540,7 +551,10 @@ static void findings(all_context *ctx, const stage *st)
         "refit's cubic falls below V_d by up to %.4f (albedo %.1f) and %.3f at albedo 0. The largest errors are "
         "not noise: the talk's worst pixel (%s, albedo %.1f) has V_d = %.3f but V'_d = %.3f. Where a point sees "
         "little sky but much lit surface (contacts, crevices facing bright walls), V'_d is not a function of "
-        "V_d, and no curve in V_d alone can follow it.",
+        "V_d, and no curve in V_d alone can follow it. The talk's own procedure (lines through the per-albedo "
+        "coefficients) gives the joint fit's coefficients to %.1e here: when every albedo is rendered on the "
+        "same pixels with the same weights, as one multi-bounce pass does, least squares decomposes that way "
+        "exactly; a joint fit differs only where the albedos' samples differ.",
         d->count, d->scene_count, d->albedo_count, a->talk_err[1].rmse, a->talk_err[1].max_abs, a->joint_err[MB_JOINT_LINEAR][1].rmse,
         a->joint_err[MB_JOINT_LINEAR][1].max_abs, a->per_albedo[0].own.rmse, (double)low, a->per_albedo[d->albedo_count - 1].own.rmse,
         (double)d->albedos[d->albedo_count - 1], sigmas, names[worst], scene_sigmas, names[scene_worst],
@@ -551,7 +565,7 @@ static void findings(all_context *ctx, const stage *st)
         multibounce_max_shortfall(&talk, 0.0), 100.0 * a->talk_err[0].below, a->talk_err[0].rmse, a->talk_err[1].rmse,
         ours_worst, ours_worst_rho, multibounce_max_shortfall(&a->joint[MB_JOINT_LINEAR].model, 0.0),
         d->scenes[a->talk_err[1].worst.scene], (double)a->talk_err[1].worst.albedo,
-        (double)a->talk_err[1].worst.visibility, (double)a->talk_err[1].worst.multibounce);
+        (double)a->talk_err[1].worst.visibility, (double)a->talk_err[1].worst.multibounce, two_step_gap(a));
 }
 
 static void add_summary(all_context *ctx, const stage *st, cJSON *validation)

@@ -448,6 +448,45 @@ static int analyse_albedo(const multibounce_data *d, int albedo_index, const mul
     return rc;
 }
 
+/* Residuals of one albedo's per-albedo coefficients from lines in rho. */
+static int line_residuals(void *user, const double *params, double *residuals, double *jacobian)
+{
+    const multibounce_albedo_result *r = user;
+    const multibounce_model lines = multibounce_model_from_vector(1, params);
+    const multibounce_cubic at = multibounce_cubic_at(&lines, r->albedo);
+    const multibounce_cubic *own = &(const multibounce_cubic){r->fit.model.a[0], r->fit.model.b[0], r->fit.model.c[0]};
+    residuals[0] = at.a - own->a;
+    residuals[1] = at.b - own->b;
+    residuals[2] = at.c - own->c;
+    if (jacobian) {
+        memset(jacobian, 0, 3 * 6 * sizeof *jacobian);
+        for (int t = 0; t < 3; ++t) {
+            jacobian[t * 6 + 2 * t] = 1.0;
+            jacobian[t * 6 + 2 * t + 1] = r->albedo;
+        }
+    }
+    return 0;
+}
+
+/* The talk's two-step procedure: a cubic per albedo, then a line through
+ * each coefficient (seeds/001, "Finding a Symbolic Expression"). */
+static int two_step(const multibounce_data *d, multibounce_analysis *a, gt_error *e)
+{
+    double params[6] = {0, 0, 0, 0, 1, 0};
+    gt_fit *fit = gt_fit_create(6, params, e);
+    int rc = fit ? 0 : -1;
+    for (int k = 0; k < d->albedo_count && rc == 0; ++k)
+        rc = gt_fit_add_block(fit, 3, line_residuals, &a->per_albedo[k], NULL, e);
+    if (rc == 0)
+        rc = gt_fit_solve(fit, NULL, NULL, e);
+    gt_fit_destroy(fit);
+    if (rc != 0)
+        return -1;
+    a->two_step = multibounce_model_from_vector(1, params);
+    multibounce_measure(d, &a->two_step, 1, &a->two_step_err);
+    return 0;
+}
+
 /* Fits every joint model on every scene but `scene`, measures on `scene`. */
 static int hold_out(const multibounce_data *d, int scene, const int *has, multibounce_heldout *h, gt_error *e)
 {
@@ -533,6 +572,8 @@ int multibounce_analyse(const multibounce_data *d, multibounce_analysis *a, gt_e
     for (int k = 0; k < d->albedo_count; ++k)
         if (analyse_albedo(d, k, a, &a->per_albedo[k], e) != 0)
             return -1;
+    if (two_step(d, a, e) != 0)
+        return -1;
     a->chosen = MB_JOINT_LINEAR;
     if (d->scene_count >= 2) {
         if (leave_one_scene_out(d, a, e) != 0)

@@ -155,6 +155,10 @@ typedef struct {
     int has[MB_JOINT_COUNT];                /* quadratic needs 3+ albedos */
     multibounce_fit joint[MB_JOINT_COUNT];
     multibounce_errors joint_err[MB_JOINT_COUNT][2], talk_err[2]; /* [0] bare cubic, [1] with max */
+    /* The talk's own procedure, for comparison: lines a0 + a1 rho (etc.)
+     * fitted through the per-albedo coefficients, unweighted. */
+    multibounce_model two_step;
+    multibounce_errors two_step_err;        /* with max, on all the data */
     int heldout_count;                      /* scenes when 2+, else 0 */
     multibounce_heldout heldout[MBFIT_MAX_SCENES];
     double heldout_mean[MB_JOINT_COUNT], heldout_mean_talk;

@@ -214,6 +214,11 @@ static char *analysis_json(const multibounce_data *d, const multibounce_analysis
     add_data_errors(t, d, &talk, a->talk_err);
     cJSON_AddItemToObject(root, "talk_jimenez2016", t);
     cJSON_AddItemToObject(root, "per_albedo", per_albedo_json(d, a));
+    cJSON *two = cJSON_AddObjectToObject(root, "two_step_talk_procedure");
+    cJSON_AddStringToObject(two, "what", "the talk's procedure on our data: lines in rho fitted (unweighted) "
+                                         "through the per-albedo a, b, c; for comparison with joint_linear");
+    cJSON_AddItemToObject(two, "coefficients", coefficients_json(&a->two_step));
+    add_errors(two, "", &a->two_step_err);
     cJSON_AddItemToObject(root, "leave_one_scene_out", heldout_json(d, a));
     cJSON *sel = cJSON_AddObjectToObject(root, "selection");
     cJSON_AddStringToObject(sel, "chosen", multibounce_joint_names[a->chosen]);

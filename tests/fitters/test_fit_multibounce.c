@@ -110,6 +110,39 @@ static void test_anchored(void)
     multibounce_data_free(&d);
 }
 
+/* With every albedo sampled at the same V_d with the same weights (as one
+ * multi-bounce pass gives), least squares decomposes: the joint linear fit
+ * IS the talk's lines through the per-albedo coefficients, exactly (sum_k
+ * |X(beta_k - B z_k)|^2 with one metric X^T X for all k is minimised by the
+ * unweighted line fit). With different V_d per albedo they differ. */
+static void test_joint_equals_two_step_on_common_design(void)
+{
+    multibounce_model t = truth();
+    for (int common = 1; common >= 0; --common) {
+        multibounce_data d;
+        multibounce_data_init(&d);
+        synthesise(&d, &t, 2, 300, 31);
+        if (!common) /* squeeze V_d of albedo 0.9 towards 1: another design */
+            for (size_t i = 0; i < d.count; ++i)
+                if (d.samples[i].albedo_index == 6)
+                    d.samples[i].visibility = 0.5f + 0.5f * d.samples[i].visibility;
+        multibounce_analysis *a = malloc(sizeof *a);
+        gt_error e;
+        CHECK_MSG(multibounce_analyse(&d, a, &e) == 0, "%s", e.message);
+        double joint[6], lines[6], worst = 0.0;
+        multibounce_model_to_vector(&a->joint[MB_JOINT_LINEAR].model, joint);
+        multibounce_model_to_vector(&a->two_step, lines);
+        for (int k = 0; k < 6; ++k)
+            worst = fmax(worst, fabs(joint[k] - lines[k]));
+        if (common)
+            CHECK_MSG(worst < 1e-6, "joint and two-step differ by %g on a common design", worst);
+        else
+            CHECK_MSG(worst > 1e-3, "joint and two-step agree (%g) on different designs", worst);
+        free(a);
+        multibounce_data_free(&d);
+    }
+}
+
 static void test_standard_error_scaling(void)
 {
     multibounce_model t = truth();
@@ -315,6 +348,7 @@ int main(void)
 {
     test_recovery();
     test_anchored();
+    test_joint_equals_two_step_on_common_design();
     test_standard_error_scaling();
     test_weighting();
     test_leave_one_scene_out();
