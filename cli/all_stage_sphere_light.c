@@ -13,7 +13,7 @@
 #include "cli/bench_sphere_light.h"
 #include "cli/check_sphere_noh.h"
 #include "cli/fit_sphere_light.h"
-#include "cli/gnuplot_png.h"
+#include "cli/gnuplot_plot.h"
 #include "core/atomic_file.h"
 #include "core/sobol.h"
 #include "raytracer/sphere_light_reference.h"
@@ -114,7 +114,7 @@ static int run_map(const all_context *ctx, const char *dir, const error_map *m, 
              "unset multiplot\n",
              m->title, m->xlabel, x_lo, x_hi, asin(s_lo) * 180.0 / M_PI, asin(s_hi) * 180.0 / M_PI, path, path, path);
     snprintf(path, sizeof path, "%s/%s.png", dir, m->name);
-    return gnuplot_png(path, 1500, 460, commands, e);
+    return gnuplot_render(commands, path, 1500, 460, e);
 }
 
 static void add_errors_row(report *doc, const char *name, const sphere_light_errors *x)
@@ -253,7 +253,7 @@ static int write_profile(const char *dir, const sphere_fit_outcome *o, gt_error 
              "plot '%s' using 1:2 skip 1 with points pt 7\n",
              path);
     snprintf(path, sizeof path, "%s/fit_profile.png", dir);
-    return gnuplot_png(path, 700, 450, commands, e);
+    return gnuplot_render(commands, path, 700, 450, e);
 }
 
 static void report_cost(all_context *ctx, const sphere_cost *c, cJSON *json)

@@ -13,7 +13,7 @@
 #include <sys/stat.h>
 
 #include "cli/cli.h"
-#include "cli/gnuplot_png.h"
+#include "cli/gnuplot_plot.h"
 #include "core/atomic_file.h"
 #include "raytracer/sphere_light_reference.h"
 #include "realtime/sphere_light.h"
@@ -179,7 +179,7 @@ static int write_map(const char *dir, const sphere_noh_sweep *s, long count, con
              "unset multiplot\n",
              dir, dir, dir);
     snprintf(path, sizeof path, "%s/sphere_noh_map.png", dir);
-    if (gnuplot_png(path, 1200, 500, commands, e) != 0 || write_by_nv(dir, s, err, n, e) != 0)
+    if (gnuplot_render(commands, path, 1200, 500, e) != 0 || write_by_nv(dir, s, err, n, e) != 0)
         goto done;
     /* Mean shortfall against n.v, averaged over the elevations too. */
     snprintf(commands, sizeof commands,
@@ -192,7 +192,7 @@ static int write_map(const char *dir, const sphere_noh_sweep *s, long count, con
              "'' using 1:5 with linespoints title \"1 step, guarded (f''(0) < 0)\"\n",
              dir);
     snprintf(path, sizeof path, "%s/sphere_noh_error.png", dir);
-    rc = gnuplot_png(path, 800, 500, commands, e);
+    rc = gnuplot_render(commands, path, 800, 500, e);
 done:
     if (mem)
         fclose(mem);

@@ -20,11 +20,16 @@ int verb_all(int argc, char **argv);
 int verb_check(int argc, char **argv);
 int verb_fit(int argc, char **argv);
 
-/* `gtlab check NAME` and `gtlab fit PROBLEM` entries (cli/check_*.c, cli/fit_*.c). */
-int check_sphere_noh(int argc, char **argv);
-int fit_sphere_light(int argc, char **argv);
-/* `gtlab bench sphere-light` (cli/bench_sphere_light.c). */
+/* gtlab bench sub-benchmarks in their own files (dispatched by verb_bench.c). */
+int bench_multibounce(int argc, char **argv);
+int bench_fit(int argc, char **argv);
 int bench_sphere_light(int argc, char **argv);
+
+/* gtlab fit problems (cli/fit_<problem>.c) and gtlab check names
+ * (cli/check_<name>.c), dispatched by verb_fit.c and verb_check.c. */
+int fit_multibounce(int argc, char **argv);
+int fit_sphere_light(int argc, char **argv);
+int check_sphere_noh(int argc, char **argv);
 
 /* Prints "gtlab: <message>" on stderr and returns EXIT_USER_ERROR. */
 int cli_fail(const gt_error *e);

@@ -15,6 +15,7 @@ static const verb verbs[] = {
     {"render", verb_render, "render a reference quantity (gbuffer, ao) with Embree"},
     {"merge", verb_merge, "combine partial renders of disjoint sample blocks exactly"},
     {"compare", verb_compare, "SSIM/DSSIM, RMSE and absolute errors between two EXRs"},
+    {"fit", verb_fit, "fit a real-time model's constants to references with Ceres"},
     {"bench", verb_bench, "throughput figures (rays/s) and their ratios, from one run"},
     {"check", verb_check, "accuracy checks against brute force (sphere-noh, ...)"},
     {"fit", verb_fit, "Ceres fits of real-time constants to references (sphere-light, ...)"},

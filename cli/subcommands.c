@@ -24,8 +24,10 @@ int cli_run_subcommand(const cli_subcommand_verb *v, int argc, char **argv)
         return EXIT_OK;
     }
     for (size_t i = 0; i < v->count; ++i)
-        if (strcmp(argv[1], v->table[i].name) == 0)
+        if (strcmp(argv[1], v->table[i].name) == 0) {
+            cli_reset_getopt();
             return v->table[i].run(argc - 1, argv + 1);
+        }
     fprintf(stderr, "gtlab: %s: unknown %s (see 'gtlab %s --help')\n", argv[1], v->noun, v->verb);
     return EXIT_USER_ERROR;
 }

@@ -21,6 +21,7 @@ typedef struct {
 
 static const all_stage stages[] = {
     {"AO references", all_stage_ao_references},
+    {"multi-bounce refit", all_stage_multibounce},
     {"ray throughput", all_stage_ray_throughput},
     {"GGX sphere lights", all_stage_sphere_light},
 };

@@ -8,9 +8,20 @@
 #include "cli/cli.h"
 #include "raytracer/ray_throughput.h"
 
+/* Sub-benchmarks with their own options, in their own files. */
+static const struct {
+    const char *name;
+    int (*run)(int argc, char **argv);
+} sub_benchmarks[] = {
+    {"multibounce", bench_multibounce},
+    {"fit", bench_fit},
+    {"sphere-light", bench_sphere_light},
+};
+
 static void print_help(void)
 {
-    printf("usage: gtlab bench rays [--scene S] [--width W] [--height H] [--threads T] [--repeats R]\n"
+    printf("usage: gtlab bench rays|multibounce|fit|sphere-light [options]   (gtlab bench NAME --help for the others)\n\n"
+           "usage: gtlab bench rays [--scene S] [--width W] [--height H] [--threads T] [--repeats R]\n"
            "\n"
            "Measures, in one run, on the same scene, camera and machine:\n"
            "  raw Embree   occlusion rays/s through rtcOccluded1, rtcOccluded1M (streams of 64\n"
@@ -52,8 +63,11 @@ int verb_bench(int argc, char **argv)
         {"height", required_argument, 0, 'H'},  {"threads", required_argument, 0, 't'},
         {"repeats", required_argument, 0, 'r'}, {"help", no_argument, 0, 'h'},
         {0, 0, 0, 0}};
-    if (argc >= 2 && strcmp(argv[1], "sphere-light") == 0)
-        return bench_sphere_light(argc - 1, argv + 1);
+    for (size_t i = 0; argc >= 2 && i < sizeof sub_benchmarks / sizeof sub_benchmarks[0]; ++i)
+        if (strcmp(argv[1], sub_benchmarks[i].name) == 0) {
+            cli_reset_getopt();
+            return sub_benchmarks[i].run(argc - 1, argv + 1);
+        }
     const char *scene_spec = "builtin:menger";
     long width = 256, height = 256, threads = omp_get_num_procs(), repeats = 3;
     int c;
@@ -69,7 +83,7 @@ int verb_bench(int argc, char **argv)
         }
     }
     if (optind >= argc || strcmp(argv[optind], "rays") != 0)
-        return cli_failf("bench", "name a benchmark: rays (see 'gtlab bench --help')");
+        return cli_failf("bench", "name a benchmark: rays, multibounce or fit (see 'gtlab bench --help')");
     gt_error e;
     scene s;
     if (scene_load(scene_spec, &s, &e) != 0)

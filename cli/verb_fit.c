@@ -4,6 +4,7 @@
 #include "cli/subcommands.h"
 
 static const cli_subcommand problems[] = {
+    {"multibounce", fit_multibounce, "GTAO multi-bounce cubic (per albedo and joint in rho) vs multibounce renders"},
     {"sphere-light", fit_sphere_light, "Decima's sphere-light radius reduction and normalisation vs MC references"},
 };
 

@@ -1,0 +1,98 @@
+/* GTAO multi-bounce (Jimenez et al. 2016, "Multiple Bounces" to "Shader
+ * Code"); see multibounce.h for the formula and the correction of the
+ * slide's coefficient naming. */
+#include "realtime/multibounce.h"
+
+#include <math.h>
+
+multibounce_model multibounce_model_jimenez2016(void)
+{
+    /* GTAOMultiBounce in the talk's shader code: a = 2.0404 * albedo - 0.3324 etc. */
+    multibounce_model m = {.degree = 1,
+                           .a = {-0.3324, 2.0404, 0.0},
+                           .b = {0.6417, -4.7951, 0.0},
+                           .c = {0.6903, 2.7552, 0.0}};
+    return m;
+}
+
+/* sum_k coef[k] rho^k by Horner's rule. */
+static double polynomial(const double *coef, int degree, double rho)
+{
+    double v = coef[degree];
+    for (int k = degree - 1; k >= 0; --k)
+        v = v * rho + coef[k];
+    return v;
+}
+
+multibounce_cubic multibounce_cubic_at(const multibounce_model *model, double albedo)
+{
+    multibounce_cubic c = {polynomial(model->a, model->degree, albedo), polynomial(model->b, model->degree, albedo),
+                           polynomial(model->c, model->degree, albedo)};
+    return c;
+}
+
+double multibounce_cubic_eval(const multibounce_cubic *cubic, double visibility)
+{
+    double x = visibility;
+    return ((cubic->a * x + cubic->b) * x + cubic->c) * x;
+}
+
+void multibounce_cubic_basis(double visibility, double basis[3])
+{
+    double x = visibility;
+    basis[0] = x * x * x;
+    basis[1] = x * x;
+    basis[2] = x;
+}
+
+int multibounce_model_parameter_count(int degree) { return 3 * (degree + 1); }
+
+void multibounce_model_to_vector(const multibounce_model *model, double *params)
+{
+    int n = model->degree + 1;
+    for (int k = 0; k < n; ++k) {
+        params[k] = model->a[k];
+        params[n + k] = model->b[k];
+        params[2 * n + k] = model->c[k];
+    }
+}
+
+multibounce_model multibounce_model_from_vector(int degree, const double *params)
+{
+    multibounce_model m = {.degree = degree};
+    int n = degree + 1;
+    for (int k = 0; k < n; ++k) {
+        m.a[k] = params[k];
+        m.b[k] = params[n + k];
+        m.c[k] = params[2 * n + k];
+    }
+    return m;
+}
+
+void multibounce_model_gradient(int degree, double visibility, double albedo, double *gradient)
+{
+    double basis[3];
+    multibounce_cubic_basis(visibility, basis);
+    int n = degree + 1;
+    double power = 1.0;
+    for (int k = 0; k < n; ++k, power *= albedo)
+        for (int term = 0; term < 3; ++term)
+            gradient[term * n + k] = basis[term] * power;
+}
+
+multibounce_model multibounce_model_anchored(const double p[MULTIBOUNCE_ANCHORED_PARAMETERS])
+{
+    /* V (1 - V)(P + Q V) = P V + (Q - P) V^2 - Q V^3 with P = p1 rho + p2 rho^2, Q likewise. */
+    const double p1 = p[0], q1 = p[1], p2 = p[2], q2 = p[3];
+    multibounce_model m = {.degree = 2,
+                           .a = {0.0, -q1, -q2},
+                           .b = {0.0, q1 - p1, q2 - p2},
+                           .c = {1.0, p1, p2}};
+    return m;
+}
+
+double gtao_multibounce(const multibounce_model *model, double visibility, double albedo)
+{
+    multibounce_cubic c = multibounce_cubic_at(model, albedo);
+    return fmax(visibility, multibounce_cubic_eval(&c, visibility));
+}

@@ -1,0 +1,58 @@
+/* cli/gnuplot_plot.c: a good script gives a PNG (and keeps its .gp script),
+ * a broken one gives an error naming the PNG and leaves no file behind. */
+#include "cli/gnuplot_plot.h"
+#include "tests/check.h"
+
+#include <dirent.h>
+#include <string.h>
+
+static int png_signature(const char *path)
+{
+    unsigned char head[8] = {0};
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return 0;
+    size_t n = fread(head, 1, 8, f);
+    fclose(f);
+    return n == 8 && memcmp(head, "\x89PNG\r\n\x1a\n", 8) == 0;
+}
+
+static int leftovers(const char *dir)
+{
+    int found = 0;
+    DIR *d = opendir(dir);
+    for (struct dirent *entry; d && (entry = readdir(d));)
+        found += strstr(entry->d_name, ".tmp-") != NULL;
+    if (d)
+        closedir(d);
+    return found;
+}
+
+int main(void)
+{
+    if (!gnuplot_available()) {
+        fprintf(stderr, "gnuplot not installed (setup.sh installs gnuplot-nox): skipped\n");
+        return 77;
+    }
+    char png[1024], gp[1024], bad[1024];
+    snprintf(png, sizeof png, "%s/plot_test.png", check_tmp_dir());
+    snprintf(gp, sizeof gp, "%s/plot_test.gp", check_tmp_dir());
+    snprintf(bad, sizeof bad, "%s/plot_bad.png", check_tmp_dir());
+    remove(png);
+    remove(bad);
+    gt_error e;
+    CHECK_MSG(gnuplot_render("plot x*x title 'x^2'\n", png, 320, 240, &e) == 0, "%s", e.message);
+    CHECK(png_signature(png));
+    FILE *script = fopen(gp, "r");
+    CHECK(script != NULL);
+    if (script)
+        fclose(script);
+    CHECK(gnuplot_render("plot nonsense_function(x)\n", bad, 320, 240, &e) != 0);
+    CHECK_MSG(strstr(e.message, "plot_bad.png: gnuplot failed") != NULL, "%s", e.message);
+    FILE *none = fopen(bad, "rb");
+    CHECK(none == NULL);
+    if (none)
+        fclose(none);
+    CHECK(leftovers(check_tmp_dir()) == 0);
+    return check_report("cli_gnuplot_plot");
+}
