@@ -28,6 +28,12 @@ static void print_help(void)
         "            same pixels. Channels: multibounce.V (one albedo), multibounce_<a>.V\n"
         "            for each of several (e.g. multibounce_0.3.V), or multibounce.R/G/B with\n"
         "            --albedo scene; the header holds gtlab.albedos and gtlab.bounces\n"
+        "  specular-occlusion  the G-buffer plus GTSO specular occlusion under a white\n"
+        "            dome: specocc.V = integral of V f_r cos / integral of f_r cos (GGX,\n"
+        "            no Fresnel, view from the camera), specocc_d.V (the older D-only\n"
+        "            definition), and the integrals themselves: specocc_occluded.V,\n"
+        "            specocc_unoccluded.V (directional albedo), specocc_d_*.V; ratios'\n"
+        "            standard errors by the delta method\n"
         "\n"
         "options:\n"
         "  --scene S             a .gltf/.glb file or builtin:NAME ('gtlab scene list')\n"
@@ -38,7 +44,7 @@ static void print_help(void)
         "  --sample-offset K     first sample index: renders the block [K, K+N) so blocks\n"
         "                        of one seed can be rendered apart and merged\n"
         "  --target-stderr E     stop a pixel once the standard error of its first channel\n"
-        "                        (ao.V; multibounce: the first multibounce channel) is <= E\n"
+        "                        (ao.V; multibounce: the first multibounce channel;\n                        specular-occlusion: specocc_occluded.V) is <= E\n"
         "                        (checked at 16, 32, 64, ... samples)\n"
         "  --max-distance D      ao: rays farther than D count as unoccluded (default: none)\n"
         "  --albedo A,B,...|scene  multibounce (required): grey albedos in [0, 1], all\n"
@@ -47,6 +53,8 @@ static void print_help(void)
         "  --bounces N|inf       multibounce: inter-reflections after the first hit\n"
         "                        (0 gives V_d; default 4, as the GTAO talk); 'inf' ends paths\n"
         "                        by Russian roulette instead (unbiased)\n"
+        "  --roughness R         specular-occlusion: perceptual roughness in [0, 1] for\n"
+        "                        every surface (GGX alpha = R^2); default: the glTF material\n"
         "  --normal shading|geometric   normal the hemisphere is built on (default shading)\n"
         "  --threads T           worker threads (default: all cores); the output does not\n"
         "                        depend on it\n"
@@ -58,7 +66,7 @@ typedef struct {
     const char *scene, *camera, *output;
     long width, height;
     reference_request request;
-    const char *albedo, *bounces, *max_distance; /* as given, or NULL */
+    const char *albedo, *bounces, *max_distance, *roughness; /* as given, or NULL */
 } render_options;
 
 /* The options that belong to one quantity only are refused with the others. */
@@ -68,6 +76,8 @@ static int check_quantity_options(render_options *o)
     int multibounce = o->request.quantity == QUANTITY_MULTIBOUNCE;
     if (o->max_distance && o->request.quantity != QUANTITY_AO)
         return cli_failf("--max-distance", "applies to ao only"), -1;
+    if (o->roughness && o->request.quantity != QUANTITY_SPECULAR_OCCLUSION)
+        return cli_failf("--roughness", "applies to specular-occlusion only"), -1;
     if (!multibounce && (o->albedo || o->bounces))
         return cli_failf(o->albedo ? "--albedo" : "--bounces", "applies to multibounce only"), -1;
     if (!multibounce)
@@ -90,6 +100,7 @@ static int parse_options(int argc, char **argv, render_options *o)
         {"max-distance", required_argument, 0, 'd'}, {"normal", required_argument, 0, 'N'},
         {"threads", required_argument, 0, 't'},    {"output", required_argument, 0, 'o'},
         {"albedo", required_argument, 0, 'a'},     {"bounces", required_argument, 0, 'b'},
+        {"roughness", required_argument, 0, 'r'},
         {"help", no_argument, 0, 'h'},             {0, 0, 0, 0}};
     long value;
     double real;
@@ -116,6 +127,11 @@ static int parse_options(int argc, char **argv, render_options *o)
             o->max_distance = optarg;
             break;
         case 'a': o->albedo = optarg; break;
+        case 'r':
+            if (cli_parse_double("--roughness", optarg, 0.0, 1.0, &real)) return -1;
+            o->request.roughness = (float)real;
+            o->roughness = optarg;
+            break;
         case 'b': o->bounces = optarg; break;
         case 't':
             if (cli_parse_int("--threads", optarg, 1, 1024, &value)) return -1;
@@ -134,9 +150,9 @@ static int parse_options(int argc, char **argv, render_options *o)
         }
     }
     if (optind >= argc)
-        return cli_failf("render", "no QUANTITY given (gbuffer, ao or multibounce; see 'gtlab render --help')"), -1;
+        return cli_failf("render", "no QUANTITY given (gbuffer, ao, multibounce or specular-occlusion; see 'gtlab render --help')"), -1;
     if (reference_quantity_parse(argv[optind], &o->request.quantity) != 0)
-        return cli_failf("render", "unknown quantity '%s' (gbuffer, ao or multibounce)", argv[optind]), -1;
+        return cli_failf("render", "unknown quantity '%s' (gbuffer, ao, multibounce or specular-occlusion)", argv[optind]), -1;
     if (optind + 1 < argc)
         return cli_failf("render", "unexpected argument '%s'", argv[optind + 1]), -1;
     if (check_quantity_options(o) != 0)
@@ -157,6 +173,7 @@ int verb_render(int argc, char **argv)
     o.request.sampling.seed = 1;
     o.request.sampling.threads = omp_get_num_procs();
     o.request.max_distance = INFINITY;
+    o.request.roughness = -1.0f; /* the material's */
     o.request.multibounce.bounces = 4; /* the GTAO talk's */
     int parsed = parse_options(argc, argv, &o);
     if (parsed != 0)

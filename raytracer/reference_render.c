@@ -8,8 +8,9 @@
 #include <string.h>
 
 #include "raytracer/ao_integrator.h"
+#include "raytracer/specular_occlusion_integrator.h"
 
-static const char *const quantity_names[] = {"gbuffer", "ao", "multibounce"};
+static const char *const quantity_names[] = {"gbuffer", "ao", "multibounce", "specular-occlusion"};
 enum { QUANTITY_COUNT = sizeof quantity_names / sizeof quantity_names[0] };
 
 int reference_quantity_parse(const char *name, reference_quantity *q)
@@ -63,6 +64,11 @@ static int write_header(const char *scene_spec, const camera *cam, const referen
         rc |= image_set_attribute(img, MULTIBOUNCE_ATTR_BOUNCES, bounces);
         rc |= set_attributef(img, REF_ATTR_SETTINGS, "albedos=%s bounces=%s target_stderr=%.9g", albedos, bounces,
                              ss->target_stderr);
+    } else if (req->quantity == QUANTITY_SPECULAR_OCCLUSION) {
+        char roughness[32] = "material";
+        if (req->roughness >= 0.0f)
+            snprintf(roughness, sizeof roughness, "%.9g", req->roughness);
+        rc |= set_attributef(img, REF_ATTR_SETTINGS, "roughness=%s target_stderr=%.9g", roughness, ss->target_stderr);
     } else {
         rc |= set_attributef(img, REF_ATTR_SETTINGS, "max_distance=%.9g target_stderr=%.9g", req->max_distance,
                              ss->target_stderr);
@@ -76,12 +82,16 @@ static int render_quantity(const embree_scene *es, const gbuffer *gb, const refe
                            gt_error *e)
 {
     ao_settings ao = {req->max_distance};
-    integrator it = req->quantity == QUANTITY_AO ? ao_integrator(es, &ao) : multibounce_integrator(es, plan);
+    specular_occlusion_settings so = {req->roughness, gb->view.origin};
+    integrator it = req->quantity == QUANTITY_AO                    ? ao_integrator(es, &ao)
+                    : req->quantity == QUANTITY_SPECULAR_OCCLUSION ? specular_occlusion_integrator(es, &so)
+                                                                    : multibounce_integrator(es, plan);
     mc_film film;
     if (render_estimates(gb, &it, &req->sampling, &film, stats, e) != 0)
         return -1;
     int rc = 0;
-    if (mc_film_write_channels(&film, image_channel_data(out, "mask.A"), out) != 0)
+    if (mc_film_write_channels(&film, image_channel_data(out, "mask.A"), out) != 0 ||
+        (req->quantity == QUANTITY_SPECULAR_OCCLUSION && specular_occlusion_write_ratios(out) != 0))
         rc = gt_error_set(e, scene_spec, "out of memory for the output image");
     mc_film_free(&film);
     return rc;

@@ -11,7 +11,7 @@
 #include "raytracer/render_loop.h"
 #include "scene/scene.h"
 
-typedef enum { QUANTITY_GBUFFER, QUANTITY_AO, QUANTITY_MULTIBOUNCE } reference_quantity;
+typedef enum { QUANTITY_GBUFFER, QUANTITY_AO, QUANTITY_MULTIBOUNCE, QUANTITY_SPECULAR_OCCLUSION } reference_quantity;
 
 typedef struct {
     reference_quantity quantity;
@@ -19,9 +19,10 @@ typedef struct {
     normal_mode normals;
     float max_distance;               /* ao only; INFINITY: none */
     multibounce_settings multibounce; /* multibounce only: albedos, bounces */
+    float roughness;                  /* specular-occlusion only: perceptual roughness, < 0: the material's */
 } reference_request;
 
-/* "gbuffer" / "ao" / "multibounce" -> quantity; -1 if unknown. */
+/* "gbuffer" / "ao" / "multibounce" / "specular-occlusion" -> quantity; -1 if unknown. */
 int reference_quantity_parse(const char *name, reference_quantity *q);
 const char *reference_quantity_name(reference_quantity q);
 
