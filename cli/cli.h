@@ -17,6 +17,14 @@ int verb_merge(int argc, char **argv);
 int verb_compare(int argc, char **argv);
 int verb_bench(int argc, char **argv);
 int verb_all(int argc, char **argv);
+int verb_lut(int argc, char **argv);
+int verb_approx(int argc, char **argv);
+int verb_fit(int argc, char **argv);
+
+/* Entries of the dispatchers verb_lut.c, verb_approx.c and verb_fit.c. */
+int lut_specular_occlusion(int argc, char **argv);
+int approx_specular_occlusion(int argc, char **argv);
+int fit_aperture(int argc, char **argv);
 
 /* Prints "gtlab: <message>" on stderr and returns EXIT_USER_ERROR. */
 int cli_fail(const gt_error *e);

@@ -16,6 +16,8 @@ static const verb verbs[] = {
     {"merge", verb_merge, "combine partial renders of disjoint sample blocks exactly"},
     {"compare", verb_compare, "SSIM/DSSIM, RMSE and absolute errors between two EXRs"},
     {"bench", verb_bench, "throughput figures (rays/s) and their ratios, from one run"},
+    {"lut", verb_lut, "lookup tables in every format (EXR, 8-bit PNG, C header)"},
+    {"approx", verb_approx, "a real-time approximation on a G-buffer"},
     {"all", verb_all, "the main job: every reference and the accuracy report"},
 };
 
