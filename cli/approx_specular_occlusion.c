@@ -32,8 +32,8 @@ static void print_help(void)
            "  --u U               phong-u's parameter in (0, 1) (default 0.01, the talk's)\n"
            "  --ao-weighting W    cosine (ao.V, cos a_v = sqrt(1 - V); default) or uniform\n"
            "                      (ao.Vuniform, cos a_v = 1 - V)\n"
-           "  --roughness R       perceptual roughness for every pixel (default: roughness.Y);\n"
-           "                      use the reference's --roughness when it had one\n"
+           "  --roughness R       perceptual roughness for every pixel (default: the --gbuffer\n"
+           "                      reference's --roughness if it had one, else roughness.Y)\n"
            "  --lut-size N        lut: table size (default 32), built on the fly\n"
            "  --lobe L            lut: ggx (default), ggx-d or phong\n"
            "  -o, --output F.exr  output\n"
@@ -130,6 +130,8 @@ int approx_specular_occlusion(int argc, char **argv)
     image gbuffer, ao;
     if (exr_read(o.gbuffer, &gbuffer, &e) != 0)
         return cli_fail(&e);
+    if (o.roughness < 0.0)
+        o.roughness = so_reference_roughness(&gbuffer);
     if (exr_read(o.ao, &ao, &e) != 0) {
         image_free(&gbuffer);
         return cli_fail(&e);

@@ -18,6 +18,7 @@ static const verb verbs[] = {
     {"bench", verb_bench, "throughput figures (rays/s) and their ratios, from one run"},
     {"lut", verb_lut, "lookup tables in every format (EXR, 8-bit PNG, C header)"},
     {"approx", verb_approx, "a real-time approximation on a G-buffer"},
+    {"fit", verb_fit, "fit a technique's constants to references"},
     {"all", verb_all, "the main job: every reference and the accuracy report"},
 };
 

@@ -15,6 +15,14 @@ static const float *channel(const image *img, const char *what, const char *name
     return data;
 }
 
+double so_reference_roughness(const image *reference)
+{
+    const char *settings = image_get_attribute(reference, "gtlab.settings");
+    const char *r = settings ? strstr(settings, "roughness=") : NULL;
+    double value;
+    return r && sscanf(r + 10, "%lf", &value) == 1 ? value : -1.0;
+}
+
 void so_inputs_free(so_pixel_inputs *in)
 {
     free(in->mask);

@@ -26,6 +26,9 @@ typedef struct {
 int so_inputs_from_images(const image *gbuffer, const char *what_gbuffer, const image *ao, const char *what_ao,
                           double roughness, so_pixel_inputs *in, gt_error *e);
 void so_inputs_free(so_pixel_inputs *in);
+/* The roughness a specular-occlusion reference was rendered with (its
+ * gtlab.settings "roughness=R"), or -1 when it used the materials'. */
+double so_reference_roughness(const image *reference);
 
 typedef enum { SO_VARIANT_AO, SO_VARIANT_LAGARDE, SO_VARIANT_CONE_EXACT, SO_VARIANT_CONE_OAT, SO_VARIANT_LUT } so_variant_kind;
 
