@@ -22,6 +22,7 @@ typedef struct {
 static const all_stage stages[] = {
     {"AO references", all_stage_ao_references},
     {"ray throughput", all_stage_ray_throughput},
+    {"specular occlusion", all_stage_specular_occlusion},
 };
 
 static void print_help(void)
