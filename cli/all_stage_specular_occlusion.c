@@ -20,7 +20,10 @@
 #include "raytracer/specular_occlusion_integrator.h"
 #include "scene/builtin_scenes.h"
 
-enum { ROUGHNESS_COUNT = 3, SCENE_MAX = 16, LUT_SIZES = 3 };
+enum { ROUGHNESS_COUNT = 3, SCENE_MAX = 16, LUT_SIZES = 3, DEFINITIONS = 3 };
+/* The reference definitions the aperture is fitted to. */
+static const char *const definition_channels[DEFINITIONS] = {"specocc.V", "specocc_d.V", "specocc_phong.V"};
+static const char *const definition_names[DEFINITIONS] = {"gtso", "d_only", "phong"};
 static const float roughness_values[ROUGHNESS_COUNT] = {0.25f, 0.5f, 0.8f};
 static const int lut_sizes[LUT_SIZES] = {16, 32, 64};
 
@@ -40,8 +43,8 @@ typedef struct {
     double dssim[VARIANT_MAX][ROUGHNESS_COUNT], rmse[VARIANT_MAX][ROUGHNESS_COUNT]; /* sums over scenes */
     double floor_dssim[ROUGHNESS_COUNT];
     int scenes;
-    aperture_case cases[2][SCENE_MAX * ROUGHNESS_COUNT]; /* [gtso, d-only] */
-    float *owned[2][SCENE_MAX * ROUGHNESS_COUNT];
+    aperture_case cases[DEFINITIONS][SCENE_MAX * ROUGHNESS_COUNT]; /* [gtso, d-only, phong] */
+    float *owned[DEFINITIONS][SCENE_MAX * ROUGHNESS_COUNT];
     int case_count;
     double samples_per_second_sum;
     int renders;
@@ -148,10 +151,10 @@ static int write_heatmaps(const image *ref, const so_pixel_inputs *in, so_stage 
 static int score(so_stage *st, const image *ref, const image *ao, const char *what, int ri, const char *figures,
                  const char *name, gt_error *e)
 {
-    aperture_case *c[2] = {&st->cases[0][st->case_count], &st->cases[1][st->case_count]};
-    static const char *const channels[2] = {"specocc.V", "specocc_d.V"};
-    for (int d = 0; d < 2; ++d) {
-        if (aperture_case_init(c[d], ref, what, ao, what, channels[d], e) != 0)
+    aperture_case *c[DEFINITIONS];
+    for (int d = 0; d < DEFINITIONS; ++d) {
+        c[d] = &st->cases[d][st->case_count];
+        if (aperture_case_init(c[d], ref, what, ao, what, definition_channels[d], e) != 0)
             return -1;
         size_t n = image_pixel_count(ref);
         if (!(st->owned[d][st->case_count] = malloc(sizeof(float) * n)))
@@ -295,10 +298,10 @@ static void report_scores(all_context *ctx, so_stage *st, cJSON *json, int *best
     report_table_end(ctx->doc);
 }
 
-static int fit_and_plot(so_stage *st, const char *figures, cJSON *json, aperture_fit fits[2], gt_error *e)
+static int fit_and_plot(so_stage *st, const char *figures, cJSON *json, aperture_fit fits[DEFINITIONS], gt_error *e)
 {
-    static const char *const names[2] = {"gtso", "d_only"}, *const channels[2] = {"specocc.V", "specocc_d.V"};
-    for (int d = 0; d < 2; ++d) {
+    const char *const *names = definition_names, *const *channels = definition_channels;
+    for (int d = 0; d < DEFINITIONS; ++d) {
         if (aperture_fit_run(st->cases[d], st->case_count, 1, &fits[d], e) != 0)
             return -1;
         char path[4096], title[128];
@@ -306,7 +309,9 @@ static int fit_and_plot(so_stage *st, const char *figures, cJSON *json, aperture
         snprintf(title, sizeof title, "cone/cone (exact) vs %s: mean DSSIM against u", channels[d]);
         if (aperture_fit_plot(&fits[d], path, title, e) != 0)
             return -1;
-        cJSON_AddItemToObject(json, d ? "aperture_fit_d_only" : "aperture_fit_gtso", aperture_fit_json(&fits[d], channels[d], 1));
+        char key[64];
+        snprintf(key, sizeof key, "aperture_fit_%s", names[d]);
+        cJSON_AddItemToObject(json, key, aperture_fit_json(&fits[d], channels[d], 1));
     }
     return 0;
 }
@@ -327,12 +332,13 @@ static void add_figures(all_context *ctx)
         const char *c[5] = {captions[0], captions[1], captions[2], captions[3], captions[4]};
         report_figures(ctx->doc, 5, p, c);
     }
-    const char *p[2] = {"figures/aperture_fit_gtso.png", "figures/aperture_fit_d_only.png"};
-    const char *c[2] = {"gloss-to-aperture fit against GTSO's V_s", "against the D-only V_s"};
-    report_figures(ctx->doc, 2, p, c);
+    const char *p[3] = {"figures/aperture_fit_gtso.png", "figures/aperture_fit_d_only.png", "figures/aperture_fit_phong.png"};
+    const char *c[3] = {"gloss-to-aperture fit against GTSO's V_s (GGX f_r)", "against the D-only V_s (GGX D)",
+                        "against the Phong V_s (the talk's fit)"};
+    report_figures(ctx->doc, 3, p, c);
 }
 
-static void conclude(all_context *ctx, so_stage *st, const double *mean, int best, const aperture_fit fits[2], cJSON *json)
+static void conclude(all_context *ctx, so_stage *st, const double *mean, int best, const aperture_fit fits[DEFINITIONS], cJSON *json)
 {
     int exp2_alpha = 4, exp2_perceptual = 5; /* cone-exact rows */
     const char *r_meaning = mean[exp2_alpha] <= mean[exp2_perceptual] ? "alpha (= perceptual roughness squared)"
@@ -343,12 +349,14 @@ static void conclude(all_context *ctx, so_stage *st, const double *mean, int bes
                      "For the engines' reflection cone cos a_s = 2^(-3.32193 r^2) the data favour r = %s "
                      "(cone/cone exact: %.4f with r = alpha, %.4f with r perceptual); the talk's own derivation "
                      "(r = sqrt(2/(p+2)), Walter's Beckmann-Phong alpha) also means alpha. The gloss-to-aperture search "
-                     "gives u = %.3g against GTSO's V_s (DSSIM %.4f; %.4f at the talk's u = 0.01) and u = %.3g against "
-                     "the D-only V_s; a u at the edge of the scanned range [1e-12, 0.9] means the data want the "
+                     "gives u = %.3g against GTSO's V_s (DSSIM %.4f; %.4f at the talk's u = 0.01), u = %.3g against "
+                     "the D-only V_s and u = %.3g against the Phong V_s (DSSIM %.4f; %.4f at u = 0.01, the talk's "
+                     "result for Phong); a u at the edge of the scanned range [1e-12, 0.9] means the data want the "
                      "narrowest cone, i.e. the cone/cone model's error is dominated by the reflection cone leaving the "
                      "visibility cone (the hemisphere, on open surfaces), which the reference never counts as occluded.",
                      st->variants[best].label, mean[best], mean[0], mean[1], mean[LUT_32], r_meaning, mean[exp2_alpha],
-                     mean[exp2_perceptual], fits[0].u, fits[0].dssim, fits[0].dssim_at_published, fits[1].u);
+                     mean[exp2_perceptual], fits[0].u, fits[0].dssim, fits[0].dssim_at_published, fits[1].u, fits[2].u,
+                     fits[2].dssim, fits[2].dssim_at_published);
     cJSON_AddStringToObject(json, "best_variant", st->variants[best].label);
     cJSON_AddStringToObject(json, "exp2_r_meaning_supported", mean[exp2_alpha] <= mean[exp2_perceptual] ? "alpha" : "perceptual");
 }
@@ -358,7 +366,7 @@ static void free_stage(so_stage *st)
     for (int s = 0; s < LUT_SIZES; ++s)
         so_lut_free(&st->luts[s]);
     so_lut_free(&st->lut_cosines);
-    for (int d = 0; d < 2; ++d)
+    for (int d = 0; d < DEFINITIONS; ++d)
         for (int i = 0; i < st->case_count; ++i) {
             aperture_case_free(&st->cases[d][i]);
             free(st->owned[d][i]);
@@ -388,7 +396,7 @@ int all_stage_specular_occlusion(all_context *ctx, gt_error *e)
         rc = run_scene(ctx, st, builtin_scene_at(i), size, spp, figures, e);
         st->scenes += rc == 0;
     }
-    aperture_fit fits[2];
+    aperture_fit fits[DEFINITIONS];
     if (rc == 0) {
         double mean[VARIANT_MAX];
         int best;

@@ -130,8 +130,9 @@ static void print_help(void)
            "options:\n"
            "  --reference F.exr   a 'gtlab render specular-occlusion' output (repeat for several)\n"
            "  --ao F.exr          the 'gtlab render ao' output of the same view (one per --reference)\n"
-           "  --definition D      gtso (specocc.V, f_r-weighted; default) or d-only (specocc_d.V,\n"
-           "                      the talk's older D-weighted definition)\n"
+           "  --definition D      gtso (specocc.V, GGX f_r-weighted; default), d-only\n"
+           "                      (specocc_d.V, the talk's older GGX D-weighted definition) or\n"
+           "                      phong (specocc_phong.V, Phong-NDF-weighted, as the talk fitted)\n"
            "  --intersection I    exact (default) or oat (Oat 2007's approximation)\n"
            "  --plot F.png        the DSSIM-vs-u curve (gnuplot)\n"
            "  -o, --output F.json u, its DSSIM, the DSSIM at the talk's u = 0.01, and the curve\n"
@@ -164,7 +165,8 @@ static int parse_options(int argc, char **argv, fit_options *o)
         case 'd':
             if (strcmp(optarg, "gtso") == 0) o->channel = "specocc.V";
             else if (strcmp(optarg, "d-only") == 0) o->channel = "specocc_d.V";
-            else return cli_failf("--definition", "'%s' is neither gtso nor d-only", optarg), -1;
+            else if (strcmp(optarg, "phong") == 0) o->channel = "specocc_phong.V";
+            else return cli_failf("--definition", "'%s' is not gtso, d-only or phong", optarg), -1;
             break;
         case 'i':
             if (strcmp(optarg, "exact") == 0) o->exact = 1;

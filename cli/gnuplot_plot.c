@@ -21,7 +21,7 @@ int plot_curve_png(const char *png_path, const plot_style *style, const double *
     if (f && g && atomic_file_begin(&out, png_path, e) == 0) {
         for (int i = 0; i < n; ++i)
             fprintf(f, "%.9g %.9g\n", x[i], y[i]);
-        fprintf(g, "set terminal pngcairo size 800,500\nset output '%s'\nset title '%s'\nset xlabel '%s'\nset ylabel '%s'\n"
+        fprintf(g, "set terminal pngcairo size 800,500 noenhanced\nset output '%s'\nset title '%s'\nset xlabel '%s'\nset ylabel '%s'\n"
                    "set grid\n%s",
                 out.temp_path, style->title, style->xlabel, style->ylabel, style->log_x ? "set logscale x\n" : "");
         if (!isnan(style->marker_x))

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 
 #include "core/ggx.h"
+#include "core/phong.h"
 #include "core/quadrature.h"
 #include "core/vec3.h" /* M_PI */
 
@@ -52,10 +53,7 @@ double so_lobe_value(so_lobe lobe, double c, double roughness)
     switch (lobe) {
     case SO_LOBE_GGX: return ggx_ndf(ch, alpha) * ggx_smith_g2(1.0, c, alpha) / 4.0;
     case SO_LOBE_GGX_D: return ggx_ndf(ch, alpha) * c;
-    case SO_LOBE_PHONG: {
-        double p = 2.0 / (alpha * alpha) - 2.0;
-        return (p + 2.0) / (2.0 * M_PI) * pow(ch, p) * c;
-    }
+    case SO_LOBE_PHONG: return phong_ndf(ch, phong_exponent(alpha)) * c;
     default: return 0.0;
     }
 }

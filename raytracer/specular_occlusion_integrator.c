@@ -4,14 +4,18 @@
 #include <stdio.h>
 
 #include "core/ggx.h"
+#include "core/phong.h"
 #include "scene/material_lookup.h"
 
-enum { OCCLUDED, UNOCCLUDED, BLOCKED, D_OCCLUDED, D_UNOCCLUDED, D_BLOCKED, SO_QUANTITY_COUNT };
+enum { OCCLUDED, UNOCCLUDED, BLOCKED, D_OCCLUDED, D_UNOCCLUDED, D_BLOCKED, P_OCCLUDED, P_UNOCCLUDED, P_BLOCKED,
+       SO_QUANTITY_COUNT };
 
-/* f_r-weighted samples lie in [0, 1] (exponent 0), D-weighted ones in [0, 4] (exponent 2). */
+/* f_r-weighted samples lie in [0, 1] (exponent 0), D-weighted ones in [0, 4]
+ * (exponent 2), Phong-weighted ones in [0, 4 * 4/e] (exponent 3). */
 static const mc_quantity so_quantities[SO_QUANTITY_COUNT] = {
-    {"specocc_occluded.V", 0},   {"specocc_unoccluded.V", 0},   {"specocc_blocked.V", 0},
-    {"specocc_d_occluded.V", 2}, {"specocc_d_unoccluded.V", 2}, {"specocc_d_blocked.V", 2}};
+    {"specocc_occluded.V", 0},       {"specocc_unoccluded.V", 0},       {"specocc_blocked.V", 0},
+    {"specocc_d_occluded.V", 2},     {"specocc_d_unoccluded.V", 2},     {"specocc_d_blocked.V", 2},
+    {"specocc_phong_occluded.V", 3}, {"specocc_phong_unoccluded.V", 3}, {"specocc_phong_blocked.V", 3}};
 
 /* The view direction in the shading frame, never below its horizon. */
 static vec3 local_view(const pixel_context *px, vec3 camera_position)
@@ -42,7 +46,8 @@ static int so_sample_batch(const integrator *self, const pixel_context *px, uint
     const vec3 v = local_view(px, settings->camera_position);
     const double alpha = pixel_alpha(self, px), g1v = ggx_smith_g1(v.z, alpha);
     _Alignas(16) struct RTCRay rays[SAMPLE_BATCH];
-    float u0[SAMPLE_BATCH], u1[SAMPLE_BATCH], w[SAMPLE_BATCH], wd[SAMPLE_BATCH];
+    const double p = phong_exponent(alpha);
+    float u0[SAMPLE_BATCH], u1[SAMPLE_BATCH], w[SAMPLE_BATCH], wd[SAMPLE_BATCH], wp[SAMPLE_BATCH];
     sample_pair_points(&pair, first_index, count, u0, u1);
     int traced = 0;
     for (int k = 0; k < count; ++k) {
@@ -53,6 +58,7 @@ static int so_sample_batch(const integrator *self, const pixel_context *px, uint
         w[k] = lit ? (float)(ggx_smith_g2(v.z, l.z, alpha) / g1v) : 0.0f;
         vec3 h = v3_normalize(v3_add(v, l));
         wd[k] = lit ? (float)(4.0 * v.z * v3_dot(v, h) * l.z / g1v) : 0.0f;
+        wp[k] = lit ? (float)(wd[k] * phong_ndf(h.z, p) / ggx_ndf(h.z, alpha)) : 0.0f;
         vec3 d = frame_to_world(&px->shading, l);
         int above = lit && v3_dot(d, px->surface->ng) > 0.0f;
         embree_ray_init(&rays[k], px->ray_origin, d, above ? INFINITY : -1.0f);
@@ -67,6 +73,9 @@ static int so_sample_batch(const integrator *self, const pixel_context *px, uint
         values[D_OCCLUDED * SAMPLE_BATCH + k] = visible * wd[k];
         values[D_UNOCCLUDED * SAMPLE_BATCH + k] = wd[k];
         values[D_BLOCKED * SAMPLE_BATCH + k] = (1.0f - visible) * wd[k];
+        values[P_OCCLUDED * SAMPLE_BATCH + k] = visible * wp[k];
+        values[P_UNOCCLUDED * SAMPLE_BATCH + k] = wp[k];
+        values[P_BLOCKED * SAMPLE_BATCH + k] = (1.0f - visible) * wp[k];
     }
     return traced;
 }
@@ -115,5 +124,6 @@ static int write_ratio(image *img, const char *prefix, const char *out_name)
 
 int specular_occlusion_write_ratios(image *img)
 {
-    return write_ratio(img, "specocc", "specocc.V") | write_ratio(img, "specocc_d", "specocc_d.V");
+    return write_ratio(img, "specocc", "specocc.V") | write_ratio(img, "specocc_d", "specocc_d.V") |
+           write_ratio(img, "specocc_phong", "specocc_phong.V");
 }

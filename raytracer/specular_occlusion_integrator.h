@@ -5,6 +5,8 @@
  *   V_s   = \int V f_r cos / \int f_r cos          -> specocc.V   (GTSO)
  *   V_s^D = \int V D(h) cos / \int D(h) cos        -> specocc_d.V (the talk's
  *                                                    older, D-only definition)
+ *   V_s^P = the same with Phong's D_p (core/phong.h) -> specocc_phong.V (the
+ *                                                    talk's Phong comparisons)
  *
  * with f_r the GGX BRDF without Fresnel (core/ggx.h), alpha = roughness^2,
  * the roughness from the glTF material (G-buffer roughness.Y) or one value
@@ -18,6 +20,9 @@
  * 2018), pdf(l) = G1(v) D(h) / (4 n.v). The weights are then
  *   f_r cos / pdf  = G2(v, l) / G1(v)                  in [0, 1]
  *   D cos / pdf    = 4 (n.v)(v.h)(n.l) / G1(v)          in [0, 4]
+ *   D_p cos / pdf  = (D cos / pdf) D_p(h) / D(h)       in [0, 4 * 4/e]
+ * (D_p / D peaks at (1 + x)^2 e^-x <= 4/e with x = tan^2 theta_h / alpha^2:
+ * GGX's heavier tails cover the Phong lobe)
  * (both 0 when l falls below the surface), and one occlusion ray per sample
  * serves both definitions.
  *
@@ -50,7 +55,7 @@ typedef struct {
 
 integrator specular_occlusion_integrator(const embree_scene *es, const specular_occlusion_settings *settings);
 
-/* Derives specocc.V (+ .stderr) and specocc_d.V (+ .stderr) from the
+/* Derives specocc.V, specocc_d.V and specocc_phong.V (+ .stderr) from the
  * accumulated numerator, denominator and blocked-part channels of img (the
  * .stderr channels are optional: without them only the ratio is written, as
  * for the half means of the noise floor). Pixels with mask 0 get 0. */

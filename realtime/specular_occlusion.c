@@ -6,6 +6,7 @@
 
 #include <math.h>
 
+#include "core/phong.h"
 #include "core/spherical_caps.h"
 #include "core/vec3.h" /* M_PI */
 
@@ -17,11 +18,7 @@ double so_visibility_cos_aperture(double ao, so_ao_weighting weighting)
     return weighting == SO_AO_UNIFORM ? 1.0 - ao : sqrt(1.0 - ao);
 }
 
-double so_phong_exponent(double alpha)
-{
-    alpha = fmax(alpha, 1e-4);
-    return 2.0 / (alpha * alpha) - 2.0;
-}
+double so_phong_exponent(double alpha) { return phong_exponent(alpha); }
 
 const char *so_aperture_name(so_aperture_mapping m)
 {

@@ -30,7 +30,7 @@ typedef enum { SO_AO_COSINE, SO_AO_UNIFORM } so_ao_weighting;
 /* cos a_v of the visibility cone from an AO value in [0, 1]. */
 double so_visibility_cos_aperture(double ao, so_ao_weighting weighting);
 
-/* Phong exponent from alpha: p = 2 / alpha^2 - 2 (alpha clamped >= 1e-4). */
+/* Phong exponent from alpha: p = 2 / alpha^2 - 2 (core/phong.h). */
 double so_phong_exponent(double alpha);
 
 typedef enum {

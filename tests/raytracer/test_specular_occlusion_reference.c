@@ -1,6 +1,7 @@
 /* The specular-occlusion reference (raytracer/specular_occlusion_integrator.c):
- *  - a lone plane: V_s = V_s^D = 1 exactly at every roughness, stderr 0;
- *  - inside a closed box: V_s = V_s^D = 0 exactly;
+ *  - a lone plane: V_s = V_s^D = V_s^Phong = 1 exactly at every roughness,
+ *    stderr 0;
+ *  - inside a closed box: all three V_s = 0 exactly;
  *  - the unoccluded integral on the plane equals the GGX directional albedo
  *    \int f_r cos computed by deterministic quadrature of core/ggx.h's f_r
  *    (within 4 standard errors per pixel);
@@ -95,6 +96,7 @@ static void test_plane(void)
         CHECK(covered(&img) > 300);
         CHECK_MSG(count_not(&img, "specocc.V", 1.0f) == 0, "r %.2f: V_s != 1", roughness[c]);
         CHECK_MSG(count_not(&img, "specocc_d.V", 1.0f) == 0, "r %.2f: V_s^D != 1", roughness[c]);
+        CHECK_MSG(count_not(&img, "specocc_phong.V", 1.0f) == 0, "r %.2f: V_s^Phong != 1", roughness[c]);
         CHECK(count_not(&img, "specocc.V.stderr", 0.0f) == 0);
         if (c == 0)
             goto next; /* a near-mirror lobe: the product rule cannot resolve it */
@@ -128,6 +130,7 @@ static void test_closed_box(void)
     CHECK(covered(&img) == 16);
     CHECK(count_not(&img, "specocc.V", 0.0f) == 0);
     CHECK(count_not(&img, "specocc_d.V", 0.0f) == 0);
+    CHECK(count_not(&img, "specocc_phong.V", 0.0f) == 0);
     CHECK(count_not(&img, "specocc_occluded.V", 0.0f) == 0);
     CHECK(count_not(&img, "specocc_unoccluded.V", 0.0f) == 16); /* the lobe is there, all of it blocked */
     image_free(&img);
@@ -204,8 +207,8 @@ static void test_identity_and_stderr(void)
         sum_error += vs[px] * unocc[px] - independent, sum_var += se * se, ++checked;
     }
     double aggregate = fabs(sum_error) / sqrt(fmax(sum_var, 1e-300)), rms_z = sqrt(sum_z2 / (partial ? partial : 1));
-    printf("white-dome identity: %d pixels, aggregate z %.3f; ratio stderr: RMS z between seeds %.2f over %d pixels\n",
-           checked, aggregate, rms_z, partial);
+    printf("white-dome identity: %d pixels, sum of differences %.3e, its standard error %.3e, aggregate z %.3f; ratio stderr: RMS z between seeds %.2f over %d pixels\n",
+           checked, sum_error, sqrt(sum_var), aggregate, rms_z, partial);
     CHECK(checked > 20);
     CHECK(aggregate < 4.0);
     CHECK(partial > 10);
