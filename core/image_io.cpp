@@ -138,6 +138,7 @@ extern "C" int image_write_data8(const char *path, const float *values, int widt
     for (size_t i = 0; i < n; ++i)
         pixels[i] = clamp01(values[i]);
     ImageSpec spec(width, height, 1, TypeDesc::FLOAT);
+    spec.attribute("oiio:ColorSpace", "Linear"); // data: no sRGB chunk, gamma 1
     if (description)
         spec.attribute("ImageDescription", description);
     ImageBuf linear(spec, pixels.data());
