@@ -21,6 +21,15 @@ for variant in ao lagarde lut cone-exact:exp2-alpha cone-oat:uludag cone-exact:p
   expect_ok "approx $variant" approx specular-occlusion --gbuffer "$so" --ao "$ao" --variant $variant --lut-size 8 -o "$work/approx.exr"
   expect_ok "compare $variant" compare "$so" "$work/approx.exr" --channel specocc.V --json
 done
+# merge recomputes the ratio channels from the merged sums: same bits as one render
+expect_ok render-block-1 render specular-occlusion --scene builtin:sphere-on-plane --width 40 --height 32 --spp 16 --roughness 0.4 -o "$work/b1.exr"
+expect_ok render-block-2 render specular-occlusion --scene builtin:sphere-on-plane --width 40 --height 32 --spp 16 --sample-offset 16 --roughness 0.4 -o "$work/b2.exr"
+expect_ok merge merge "$work/b1.exr" "$work/b2.exr" -o "$work/merged.exr"
+for channel in specocc.V specocc.V.stderr specocc_d.V specocc_phong.V; do
+  run compare "$so" "$work/merged.exr" --channel $channel --json
+  cp "$work/stdout" "$work/merged.json"
+  json_is max_abs == 0 "$work/merged.json" && pass || fail "merged $channel differs: $(cat "$work/merged.json")"
+done
 expect_ok lut lut specular-occlusion --size 8 -o "$work/lut"
 for ext in exr png h json; do
   [ -s "$work/lut/specular_occlusion_ggx_8.$ext" ] && pass || fail "lut: no .$ext"
