@@ -12,15 +12,15 @@ expect_ok "approx specular-occlusion --help" approx specular-occlusion --help
 expect_ok "fit aperture --help" fit aperture --help
 
 so=$work/so.exr ao=$work/ao.exr
-expect_ok render-so render specular-occlusion --scene builtin:sphere-on-plane --width 40 --height 32 --spp 32 --roughness 0.4 -o "$so"
-expect_ok render-ao render ao --scene builtin:sphere-on-plane --width 40 --height 32 --spp 32 -o "$ao"
+expect_ok render-so render specular-occlusion --scene builtin:corner --width 40 --height 32 --spp 32 --roughness 0.4 -o "$so"
+expect_ok render-ao render ao --scene builtin:corner --width 40 --height 32 --spp 32 -o "$ao"
 for variant in lagarde lut cone-oat:phong-u; do
   expect_ok "approx $variant" approx specular-occlusion --gbuffer "$so" --ao "$ao" --variant $variant --lut-size 8 -o "$work/approx.exr"
   expect_ok "compare $variant" compare "$so" "$work/approx.exr" --channel specocc.V --json
 done
 # merge recomputes the ratio channels from the merged sums: same bits as one render
-expect_ok render-block-1 render specular-occlusion --scene builtin:sphere-on-plane --width 40 --height 32 --spp 16 --roughness 0.4 -o "$work/b1.exr"
-expect_ok render-block-2 render specular-occlusion --scene builtin:sphere-on-plane --width 40 --height 32 --spp 16 --sample-offset 16 --roughness 0.4 -o "$work/b2.exr"
+expect_ok render-block-1 render specular-occlusion --scene builtin:corner --width 40 --height 32 --spp 16 --roughness 0.4 -o "$work/b1.exr"
+expect_ok render-block-2 render specular-occlusion --scene builtin:corner --width 40 --height 32 --spp 16 --sample-offset 16 --roughness 0.4 -o "$work/b2.exr"
 expect_ok merge merge "$work/b1.exr" "$work/b2.exr" -o "$work/merged.exr"
 for channel in specocc.V.stderr specocc_phong.V; do
   run compare "$so" "$work/merged.exr" --channel $channel --json
