@@ -24,6 +24,8 @@ typedef struct {
 int all_stage_ao_references(all_context *ctx, gt_error *e);
 /* Multi-bounce references, the GTAO multi-bounce refit and its validation. */
 int all_stage_multibounce(all_context *ctx, gt_error *e);
+/* Specular occlusion: references, every variant scored, LUT axes, aperture fit. */
+int all_stage_specular_occlusion(all_context *ctx, gt_error *e);
 /* Ray throughput: raw Embree against the AO reference loop. */
 int all_stage_ray_throughput(all_context *ctx, gt_error *e);
 

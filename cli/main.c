@@ -12,13 +12,14 @@ typedef struct {
 
 static const verb verbs[] = {
     {"scene", verb_scene, "list the built-in scenes, or write one as .glb"},
-    {"render", verb_render, "render a reference quantity (gbuffer, ao) with Embree"},
+    {"render", verb_render, "render a reference (gbuffer, ao, multibounce, specular-occlusion, sphere-light)"},
     {"merge", verb_merge, "combine partial renders of disjoint sample blocks exactly"},
     {"compare", verb_compare, "SSIM/DSSIM, RMSE and absolute errors between two EXRs"},
     {"fit", verb_fit, "fit a real-time model's constants to references with Ceres"},
     {"bench", verb_bench, "throughput figures (rays/s) and their ratios, from one run"},
     {"check", verb_check, "accuracy checks against brute force (sphere-noh, ...)"},
-    {"fit", verb_fit, "Ceres fits of real-time constants to references (sphere-light, ...)"},
+    {"lut", verb_lut, "lookup tables in every format (EXR, 8-bit PNG, C header)"},
+    {"approx", verb_approx, "a real-time approximation on a G-buffer"},
     {"all", verb_all, "the main job: every reference and the accuracy report"},
 };
 

@@ -22,8 +22,9 @@ typedef struct {
 static const all_stage stages[] = {
     {"AO references", all_stage_ao_references},
     {"multi-bounce refit", all_stage_multibounce},
-    {"ray throughput", all_stage_ray_throughput},
+    {"specular occlusion", all_stage_specular_occlusion},
     {"GGX sphere lights", all_stage_sphere_light},
+    {"ray throughput", all_stage_ray_throughput},
 };
 
 static void print_help(void)

@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli/bench_specular_occlusion.h"
 #include "cli/cli.h"
 #include "raytracer/ray_throughput.h"
 
@@ -20,8 +21,9 @@ static const struct {
 
 static void print_help(void)
 {
-    printf("usage: gtlab bench rays|multibounce|fit|sphere-light [options]   (gtlab bench NAME --help for the others)\n\n"
-           "usage: gtlab bench rays [--scene S] [--width W] [--height H] [--threads T] [--repeats R]\n"
+    printf("usage: gtlab bench rays|specular-occlusion|multibounce|fit|sphere-light [options]\n"
+           "       (gtlab bench NAME --help for multibounce, fit and sphere-light)\n\n"
+           "usage: gtlab bench rays|specular-occlusion [--scene S] [--width W] [--height H] [--threads T] [--repeats R]\n"
            "\n"
            "Measures, in one run, on the same scene, camera and machine:\n"
            "  raw Embree   occlusion rays/s through rtcOccluded1, rtcOccluded1M (streams of 64\n"
@@ -33,6 +35,8 @@ static void print_help(void)
            "               exact accumulation)\n"
            "and prints their ratio, and the speed-up of T threads over 1. Each figure is the\n"
            "best of R passes (default 3).\n"
+           "'gtlab bench specular-occlusion': samples/s of the specular-occlusion reference\n"
+           "(64 spp, roughness 0.5), 1 thread and T threads.\n"
            "\n"
            "  --scene S      builtin:NAME or a glTF file (default builtin:menger)\n"
            "  --width W --height H   image size (default 256x256)\n"
@@ -82,8 +86,10 @@ int verb_bench(int argc, char **argv)
         default: return cli_usage_error("bench");
         }
     }
-    if (optind >= argc || strcmp(argv[optind], "rays") != 0)
-        return cli_failf("bench", "name a benchmark: rays, multibounce or fit (see 'gtlab bench --help')");
+    int specular = optind < argc && strcmp(argv[optind], "specular-occlusion") == 0;
+    if (optind >= argc || (strcmp(argv[optind], "rays") != 0 && !specular))
+        return cli_failf("bench", "name a benchmark: rays, specular-occlusion, multibounce, fit or sphere-light "
+                                  "(see 'gtlab bench --help')");
     gt_error e;
     scene s;
     if (scene_load(scene_spec, &s, &e) != 0)
@@ -91,7 +97,11 @@ int verb_bench(int argc, char **argv)
     camera cam;
     ray_benchmark b;
     int status = EXIT_OK;
-    if (scene_choose_camera(&s, NULL, (int)width, (int)height, &cam, &e) != 0 ||
+    if (specular) {
+        if (scene_choose_camera(&s, NULL, (int)width, (int)height, &cam, &e) != 0 ||
+            bench_specular_occlusion(&s, scene_spec, &cam, (int)threads, (int)repeats, &e) != 0)
+            status = cli_fail(&e);
+    } else if (scene_choose_camera(&s, NULL, (int)width, (int)height, &cam, &e) != 0 ||
         ray_benchmark_run(&s, &cam, (int)threads, (int)repeats, &b, &e) != 0)
         status = cli_fail(&e);
     else

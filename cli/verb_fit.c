@@ -6,6 +6,7 @@
 static const cli_subcommand problems[] = {
     {"multibounce", fit_multibounce, "GTAO multi-bounce cubic (per albedo and joint in rho) vs multibounce renders"},
     {"sphere-light", fit_sphere_light, "Decima's sphere-light radius reduction and normalisation vs MC references"},
+    {"aperture", fit_aperture, "GTSO gloss-to-aperture u by DSSIM against specular-occlusion references"},
 };
 
 int verb_fit(int argc, char **argv)

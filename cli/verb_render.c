@@ -31,6 +31,14 @@ static void print_help(void)
         "  sphere-light  the G-buffer plus sphere.R/G/B: radiance towards the camera from a\n"
         "            uniform spherical light over the glTF materials (Lambert + GGX with\n"
         "            Schlick Fresnel), integrated exactly over the light (MIS), unshadowed\n"
+        "  specular-occlusion  the G-buffer plus GTSO specular occlusion under a white\n"
+        "            dome: specocc.V = integral of V f_r cos / integral of f_r cos (GGX,\n"
+        "            no Fresnel, view from the camera), specocc_d.V (the older D-only\n"
+        "            definition), specocc_phong.V (the same with Phong's NDF,\n"
+        "            p = 2/alpha^2 - 2), and the integrals: specocc_occluded.V,\n"
+        "            specocc_unoccluded.V (directional albedo), specocc_d_*.V,\n"
+        "            specocc_phong_*.V; ratios'\n"
+        "            standard errors by the delta method\n"
         "\n"
         "options:\n"
         "  --scene S             a .gltf/.glb file or builtin:NAME ('gtlab scene list')\n"
@@ -41,7 +49,7 @@ static void print_help(void)
         "  --sample-offset K     first sample index: renders the block [K, K+N) so blocks\n"
         "                        of one seed can be rendered apart and merged\n"
         "  --target-stderr E     stop a pixel once the standard error of its first channel\n"
-        "                        (ao.V; multibounce: the first multibounce channel) is <= E\n"
+        "                        (ao.V; multibounce: the first multibounce channel;\n                        specular-occlusion: specocc_occluded.V) is <= E\n"
         "                        (checked at 16, 32, 64, ... samples)\n"
         "  --max-distance D      ao: rays farther than D count as unoccluded (default: none)\n"
         "  --albedo A,B,...|scene  multibounce (required): grey albedos in [0, 1], all\n"
@@ -53,6 +61,8 @@ static void print_help(void)
         "  --light-position X,Y,Z  sphere-light (required): the light's centre\n"
         "  --light-radius R      sphere-light (required): its radius, > 0\n"
         "  --light-radiance L    sphere-light: its emitted radiance (default 1)\n"
+        "  --roughness R         specular-occlusion: perceptual roughness in [0, 1] for\n"
+        "                        every surface (GGX alpha = R^2); default: the glTF material\n"
         "  --normal shading|geometric   normal the hemisphere is built on (default shading)\n"
         "  --threads T           worker threads (default: all cores); the output does not\n"
         "                        depend on it\n"
@@ -64,7 +74,7 @@ typedef struct {
     const char *scene, *camera, *output;
     long width, height;
     reference_request request;
-    const char *albedo, *bounces, *max_distance; /* as given, or NULL */
+    const char *albedo, *bounces, *max_distance, *roughness; /* as given, or NULL */
     const char *light_position, *light_radius, *light_radiance; /* as given, or NULL */
 } render_options;
 
@@ -106,6 +116,8 @@ static int check_quantity_options(render_options *o)
     int multibounce = o->request.quantity == QUANTITY_MULTIBOUNCE;
     if (o->max_distance && o->request.quantity != QUANTITY_AO)
         return cli_failf("--max-distance", "applies to ao only"), -1;
+    if (o->roughness && o->request.quantity != QUANTITY_SPECULAR_OCCLUSION)
+        return cli_failf("--roughness", "applies to specular-occlusion only"), -1;
     if (!multibounce && (o->albedo || o->bounces))
         return cli_failf(o->albedo ? "--albedo" : "--bounces", "applies to multibounce only"), -1;
     if (!multibounce)
@@ -130,6 +142,7 @@ static int parse_options(int argc, char **argv, render_options *o)
         {"albedo", required_argument, 0, 'a'},     {"bounces", required_argument, 0, 'b'},
         {"light-position", required_argument, 0, 'P'}, {"light-radius", required_argument, 0, 'R'},
         {"light-radiance", required_argument, 0, 'L'},
+        {"roughness", required_argument, 0, 'r'},
         {"help", no_argument, 0, 'h'},             {0, 0, 0, 0}};
     long value;
     double real;
@@ -156,6 +169,11 @@ static int parse_options(int argc, char **argv, render_options *o)
             o->max_distance = optarg;
             break;
         case 'a': o->albedo = optarg; break;
+        case 'r':
+            if (cli_parse_double("--roughness", optarg, 0.0, 1.0, &real)) return -1;
+            o->request.roughness = (float)real;
+            o->roughness = optarg;
+            break;
         case 'b': o->bounces = optarg; break;
         case 'P': o->light_position = optarg; break;
         case 'R': o->light_radius = optarg; break;
@@ -177,9 +195,9 @@ static int parse_options(int argc, char **argv, render_options *o)
         }
     }
     if (optind >= argc)
-        return cli_failf("render", "no QUANTITY given (gbuffer, ao, multibounce or sphere-light; see 'gtlab render --help')"), -1;
+        return cli_failf("render", "no QUANTITY given (gbuffer, ao, multibounce, specular-occlusion or sphere-light; see 'gtlab render --help')"), -1;
     if (reference_quantity_parse(argv[optind], &o->request.quantity) != 0)
-        return cli_failf("render", "unknown quantity '%s' (gbuffer, ao, multibounce or sphere-light)", argv[optind]), -1;
+        return cli_failf("render", "unknown quantity '%s' (gbuffer, ao, multibounce, specular-occlusion or sphere-light)", argv[optind]), -1;
     if (optind + 1 < argc)
         return cli_failf("render", "unexpected argument '%s'", argv[optind + 1]), -1;
     if (check_quantity_options(o) != 0 || check_light_options(o) != 0)
@@ -200,6 +218,7 @@ int verb_render(int argc, char **argv)
     o.request.sampling.seed = 1;
     o.request.sampling.threads = omp_get_num_procs();
     o.request.max_distance = INFINITY;
+    o.request.roughness = -1.0f; /* the material's */
     o.request.multibounce.bounces = 4; /* the GTAO talk's */
     int parsed = parse_options(argc, argv, &o);
     if (parsed != 0)

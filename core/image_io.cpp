@@ -127,3 +127,20 @@ extern "C" int image_write_heatmap(const char *path, const float *values, const 
         return -1;
     return write_8bit(path, encoded, e);
 }
+
+extern "C" int image_write_data8(const char *path, const float *values, int width, int height,
+                                 const char *description, gt_error *e)
+{
+    if (!valid_size(width, height))
+        return gt_error_set(e, path, "cannot write a %d x %d image", width, height);
+    size_t n = (size_t)width * (size_t)height;
+    std::vector<float> pixels(n);
+    for (size_t i = 0; i < n; ++i)
+        pixels[i] = clamp01(values[i]);
+    ImageSpec spec(width, height, 1, TypeDesc::FLOAT);
+    spec.attribute("oiio:ColorSpace", "Linear"); // data: no sRGB chunk, gamma 1
+    if (description)
+        spec.attribute("ImageDescription", description);
+    ImageBuf linear(spec, pixels.data());
+    return write_8bit(path, linear, e);
+}

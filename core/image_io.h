@@ -19,4 +19,11 @@ int image_write_preview(const char *path, const float *const *planes, int channe
 int image_write_heatmap(const char *path, const float *values, const float *mask, int width, int height,
                         float vmax, const char *map_name, gt_error *e);
 
+/* Data (not a picture): one channel of values in [0, 1] quantised linearly
+ * to 8 bits (no sRGB encoding), as a LUT a shader samples; `description`
+ * (may be NULL) goes to the file's ImageDescription metadata (a PNG tEXt
+ * chunk). Returns 0 or -1 with e. */
+int image_write_data8(const char *path, const float *values, int width, int height, const char *description,
+                      gt_error *e);
+
 #endif

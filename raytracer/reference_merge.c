@@ -7,6 +7,7 @@
 
 #include "core/mc_film.h"
 #include "raytracer/reference_render.h"
+#include "raytracer/specular_occlusion_integrator.h"
 
 typedef struct {
     uint32_t seed;
@@ -107,6 +108,10 @@ static int write_merged(const image *first, const mc_film *film, const sample_bl
         memcpy(dst, ch->data, sizeof(float) * image_pixel_count(first));
     }
     if (mc_film_write_channels(film, image_channel_data(out, "mask.A"), out) != 0)
+        return -1;
+    /* Ratio channels derive from the merged sums (specular occlusion). */
+    const char *quantity = image_get_attribute(first, REF_ATTR_QUANTITY);
+    if (quantity && strcmp(quantity, "specular-occlusion") == 0 && specular_occlusion_write_ratios(out) != 0)
         return -1;
     for (int a = 0; a < first->attribute_count; ++a)
         if (image_set_attribute(out, first->attributes[a].key, first->attributes[a].value) != 0)

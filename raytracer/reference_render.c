@@ -8,8 +8,9 @@
 #include <string.h>
 
 #include "raytracer/ao_integrator.h"
+#include "raytracer/specular_occlusion_integrator.h"
 
-static const char *const quantity_names[] = {"gbuffer", "ao", "multibounce", "sphere-light"};
+static const char *const quantity_names[] = {"gbuffer", "ao", "multibounce", "specular-occlusion", "sphere-light"};
 enum { QUANTITY_COUNT = sizeof quantity_names / sizeof quantity_names[0] };
 
 int reference_quantity_parse(const char *name, reference_quantity *q)
@@ -67,6 +68,11 @@ static int write_header(const char *scene_spec, const camera *cam, const referen
         char light[512];
         sphere_light_settings_text(&req->sphere_light, light, sizeof light);
         rc |= set_attributef(img, REF_ATTR_SETTINGS, "%s target_stderr=%.9g", light, ss->target_stderr);
+    } else if (req->quantity == QUANTITY_SPECULAR_OCCLUSION) {
+        char roughness[32] = "material";
+        if (req->roughness >= 0.0f)
+            snprintf(roughness, sizeof roughness, "%.9g", req->roughness);
+        rc |= set_attributef(img, REF_ATTR_SETTINGS, "roughness=%s target_stderr=%.9g", roughness, ss->target_stderr);
     } else {
         rc |= set_attributef(img, REF_ATTR_SETTINGS, "max_distance=%.9g target_stderr=%.9g", req->max_distance,
                              ss->target_stderr);
@@ -80,14 +86,20 @@ static int render_quantity(const embree_scene *es, const gbuffer *gb, const refe
                            image *out, render_stats *stats, gt_error *e)
 {
     ao_settings ao = {req->max_distance};
-    integrator it = req->quantity == QUANTITY_AO            ? ao_integrator(es, &ao)
-                    : req->quantity == QUANTITY_SPHERE_LIGHT ? sphere_light_integrator(es, light)
-                                                             : multibounce_integrator(es, plan);
+    specular_occlusion_settings so = {req->roughness, gb->view.origin};
+    integrator it;
+    switch (req->quantity) {
+    case QUANTITY_AO: it = ao_integrator(es, &ao); break;
+    case QUANTITY_SPECULAR_OCCLUSION: it = specular_occlusion_integrator(es, &so); break;
+    case QUANTITY_SPHERE_LIGHT: it = sphere_light_integrator(es, light); break;
+    default: it = multibounce_integrator(es, plan); break;
+    }
     mc_film film;
     if (render_estimates(gb, &it, &req->sampling, &film, stats, e) != 0)
         return -1;
     int rc = 0;
-    if (mc_film_write_channels(&film, image_channel_data(out, "mask.A"), out) != 0)
+    if (mc_film_write_channels(&film, image_channel_data(out, "mask.A"), out) != 0 ||
+        (req->quantity == QUANTITY_SPECULAR_OCCLUSION && specular_occlusion_write_ratios(out) != 0))
         rc = gt_error_set(e, scene_spec, "out of memory for the output image");
     mc_film_free(&film);
     return rc;

@@ -12,7 +12,13 @@
 #include "raytracer/sphere_light_integrator.h"
 #include "scene/scene.h"
 
-typedef enum { QUANTITY_GBUFFER, QUANTITY_AO, QUANTITY_MULTIBOUNCE, QUANTITY_SPHERE_LIGHT } reference_quantity;
+typedef enum {
+    QUANTITY_GBUFFER,
+    QUANTITY_AO,
+    QUANTITY_MULTIBOUNCE,
+    QUANTITY_SPECULAR_OCCLUSION,
+    QUANTITY_SPHERE_LIGHT
+} reference_quantity;
 
 typedef struct {
     reference_quantity quantity;
@@ -21,9 +27,10 @@ typedef struct {
     float max_distance;               /* ao only; INFINITY: none */
     multibounce_settings multibounce; /* multibounce only: albedos, bounces */
     sphere_light_settings sphere_light; /* sphere-light only: the light */
+    float roughness;                  /* specular-occlusion only: perceptual roughness, < 0: the material's */
 } reference_request;
 
-/* "gbuffer" / "ao" / "multibounce" -> quantity; -1 if unknown. */
+/* "gbuffer" / "ao" / "multibounce" / "specular-occlusion" / "sphere-light" -> quantity; -1 if unknown. */
 int reference_quantity_parse(const char *name, reference_quantity *q);
 const char *reference_quantity_name(reference_quantity q);
 

@@ -1,0 +1,33 @@
+/* Spherical caps: the set of unit directions within angle a of an axis.
+ *
+ *   solid angle of a cap           2 pi (1 - cos a)
+ *   solid angle of the intersection of two caps (angular radii a1, a2 in
+ *   [0, pi], axes gamma apart), exactly:
+ *
+ *     Omega = 2 [ pi - acos((cos g - cos a1 cos a2) / (sin a1 sin a2))
+ *                    - cos a1 acos((cos a2 - cos g cos a1) / (sin g sin a1))
+ *                    - cos a2 acos((cos a1 - cos g cos a2) / (sin g sin a2)) ]
+ *
+ *   when the two boundary circles cross (|a1 - a2| < g < a1 + a2 and
+ *   g < 2 pi - a1 - a2): Tovchigrechko and Vakser 2001, "How common is the
+ *   funnel-like energy landscape in protein-protein interactions?", Protein
+ *   Science 10, appendix; derived independently by Mazonka 2012, "Solid Angle
+ *   of Conical Surfaces, Polyhedral Cones, and Intersecting Spherical Caps"
+ *   (arXiv:1205.1396), eq. 30. (The GTSO talk cites both as "mathematically
+ *   equivalent".) The three terms are the Gauss-Bonnet sum over the lune's
+ *   two vertices and two arcs. The other cases are: one cap inside the other
+ *   (the smaller cap's solid angle), disjoint caps (0), and caps whose union
+ *   is the whole sphere (Omega1 + Omega2 - 4 pi).
+ *
+ * Tested against brute-force Monte Carlo on the sphere (tests/core). */
+#ifndef GTLAB_CORE_SPHERICAL_CAPS_H
+#define GTLAB_CORE_SPHERICAL_CAPS_H
+
+/* 2 pi (1 - cos a) for a cap of angular radius a, given cos a. */
+double spherical_cap_solid_angle(double cos_a);
+
+/* The exact solid angle of the intersection of caps of angular radii a1, a2
+ * (radians, [0, pi]) whose axes are gamma apart (radians, [0, pi]). */
+double spherical_cap_intersection(double a1, double a2, double gamma);
+
+#endif

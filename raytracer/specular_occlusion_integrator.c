@@ -1,0 +1,129 @@
+#include "raytracer/specular_occlusion_integrator.h"
+
+#include <math.h>
+#include <stdio.h>
+
+#include "core/ggx.h"
+#include "core/phong.h"
+#include "scene/material_lookup.h"
+
+enum { OCCLUDED, UNOCCLUDED, BLOCKED, D_OCCLUDED, D_UNOCCLUDED, D_BLOCKED, P_OCCLUDED, P_UNOCCLUDED, P_BLOCKED,
+       SO_QUANTITY_COUNT };
+
+/* f_r-weighted samples lie in [0, 1] (exponent 0), D-weighted ones in [0, 4]
+ * (exponent 2), Phong-weighted ones in [0, 4 * 4/e] (exponent 3). */
+static const mc_quantity so_quantities[SO_QUANTITY_COUNT] = {
+    {"specocc_occluded.V", 0},       {"specocc_unoccluded.V", 0},       {"specocc_blocked.V", 0},
+    {"specocc_d_occluded.V", 2},     {"specocc_d_unoccluded.V", 2},     {"specocc_d_blocked.V", 2},
+    {"specocc_phong_occluded.V", 3}, {"specocc_phong_unoccluded.V", 3}, {"specocc_phong_blocked.V", 3}};
+
+/* The view direction in the shading frame, never below its horizon. */
+static vec3 local_view(const pixel_context *px, vec3 camera_position)
+{
+    vec3 v = frame_to_local(&px->shading, v3_normalize(v3_sub(camera_position, px->surface->p)));
+    if (v.z < 1e-4f) {
+        float h = sqrtf(v.x * v.x + v.y * v.y);
+        float s = h > 0.0f ? sqrtf(1.0f - 1e-8f) / h : 0.0f;
+        v = h > 0.0f ? v3(v.x * s, v.y * s, 1e-4f) : v3(0.0f, 0.0f, 1.0f);
+    }
+    return v;
+}
+
+static float pixel_alpha(const integrator *self, const pixel_context *px)
+{
+    const specular_occlusion_settings *settings = self->settings;
+    float r = settings->roughness;
+    if (r < 0.0f)
+        r = material_lookup(self->scene->source, px->surface->mesh, px->surface->uv).roughness;
+    return (float)ggx_alpha(r);
+}
+
+static int so_sample_batch(const integrator *self, const pixel_context *px, uint32_t first_index, int count,
+                           float *values)
+{
+    const specular_occlusion_settings *settings = self->settings;
+    const sample_pair_seeds pair = sample_pair_seeds_for(px, 0);
+    const vec3 v = local_view(px, settings->camera_position);
+    const double alpha = pixel_alpha(self, px), g1v = ggx_smith_g1(v.z, alpha);
+    _Alignas(16) struct RTCRay rays[SAMPLE_BATCH];
+    const double p = phong_exponent(alpha);
+    float u0[SAMPLE_BATCH], u1[SAMPLE_BATCH], w[SAMPLE_BATCH], wd[SAMPLE_BATCH], wp[SAMPLE_BATCH];
+    sample_pair_points(&pair, first_index, count, u0, u1);
+    int traced = 0;
+    for (int k = 0; k < count; ++k) {
+        const float u[2] = {u0[k], u1[k]};
+        vec3 m = ggx_sample_visible_normal(v, alpha, u);
+        vec3 l = v3_normalize(ggx_reflect(v, m));
+        int lit = l.z > 0.0f;
+        w[k] = lit ? (float)(ggx_smith_g2(v.z, l.z, alpha) / g1v) : 0.0f;
+        vec3 h = v3_normalize(v3_add(v, l));
+        wd[k] = lit ? (float)(4.0 * v.z * v3_dot(v, h) * l.z / g1v) : 0.0f;
+        wp[k] = lit ? (float)(wd[k] * phong_ndf(h.z, p) / ggx_ndf(h.z, alpha)) : 0.0f;
+        vec3 d = frame_to_world(&px->shading, l);
+        int above = lit && v3_dot(d, px->surface->ng) > 0.0f;
+        embree_ray_init(&rays[k], px->ray_origin, d, above ? INFINITY : -1.0f);
+        traced += above;
+    }
+    embree_unoccluded_stream(self->scene, rays, (unsigned)count);
+    for (int k = 0; k < count; ++k) {
+        float visible = rays[k].tfar >= 0.0f ? 1.0f : 0.0f;
+        values[OCCLUDED * SAMPLE_BATCH + k] = visible * w[k];
+        values[UNOCCLUDED * SAMPLE_BATCH + k] = w[k];
+        values[BLOCKED * SAMPLE_BATCH + k] = (1.0f - visible) * w[k];
+        values[D_OCCLUDED * SAMPLE_BATCH + k] = visible * wd[k];
+        values[D_UNOCCLUDED * SAMPLE_BATCH + k] = wd[k];
+        values[D_BLOCKED * SAMPLE_BATCH + k] = (1.0f - visible) * wd[k];
+        values[P_OCCLUDED * SAMPLE_BATCH + k] = visible * wp[k];
+        values[P_UNOCCLUDED * SAMPLE_BATCH + k] = wp[k];
+        values[P_BLOCKED * SAMPLE_BATCH + k] = (1.0f - visible) * wp[k];
+    }
+    return traced;
+}
+
+integrator specular_occlusion_integrator(const embree_scene *es, const specular_occlusion_settings *settings)
+{
+    integrator it = {"specular-occlusion", SO_QUANTITY_COUNT, so_quantities, NULL, so_sample_batch, es, settings};
+    return it;
+}
+
+/* One ratio layer: out = num / den and, when the .stderr channels exist, its
+ * delta-method standard error (see the header). */
+static int write_ratio(image *img, const char *prefix, const char *out_name)
+{
+    char name[IMAGE_NAME_MAX];
+    const float *mask = image_channel_data(img, "mask.A");
+    const float *mean[3], *se[3];
+    static const char *const parts[3] = {"occluded", "unoccluded", "blocked"};
+    for (int i = 0; i < 3; ++i) {
+        snprintf(name, sizeof name, "%s_%s.V", prefix, parts[i]);
+        mean[i] = image_channel_data(img, name);
+        snprintf(name, sizeof name, "%s_%s.V.stderr", prefix, parts[i]);
+        se[i] = image_channel_data(img, name);
+    }
+    if (!mean[0] || !mean[1])
+        return -1;
+    int with_stderr = se[0] && se[1] && se[2];
+    float *ratio = image_add_channel(img, out_name), *ratio_se = NULL;
+    snprintf(name, sizeof name, "%s.stderr", out_name);
+    if (!ratio || (with_stderr && !(ratio_se = image_add_channel(img, name))))
+        return -1;
+    for (size_t p = 0; p < image_pixel_count(img); ++p) {
+        double n = mean[0][p], d = mean[1][p];
+        int valid = (!mask || mask[p] != 0.0f) && d > 0.0;
+        double r = valid ? n / d : 0.0;
+        ratio[p] = (float)r;
+        if (!with_stderr)
+            continue;
+        double sn = se[0][p], sd = se[1][p], sb = se[2][p];
+        double cov = 0.5 * (sn * sn + sd * sd - sb * sb);
+        double var = valid ? (sn * sn - 2.0 * r * cov + r * r * sd * sd) / (d * d) : 0.0;
+        ratio_se[p] = (float)sqrt(fmax(var, 0.0));
+    }
+    return 0;
+}
+
+int specular_occlusion_write_ratios(image *img)
+{
+    return write_ratio(img, "specocc", "specocc.V") | write_ratio(img, "specocc_d", "specocc_d.V") |
+           write_ratio(img, "specocc_phong", "specocc_phong.V");
+}

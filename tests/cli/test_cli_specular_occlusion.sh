@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Specular occlusion as a user runs it: reference, approximation, compare,
+# LUT and aperture fit end to end, and their bad inputs (one error line,
+# exit 1, no output).
+gtlab=$1
+work=$2
+rm -rf "$work" && mkdir -p "$work"
+source "$(dirname "$0")/cli_test_lib.sh"
+
+expect_ok "lut specular-occlusion --help" lut specular-occlusion --help
+expect_ok "approx specular-occlusion --help" approx specular-occlusion --help
+expect_ok "fit aperture --help" fit aperture --help
+
+so=$work/so.exr ao=$work/ao.exr
+expect_ok render-so render specular-occlusion --scene builtin:corner --width 40 --height 32 --spp 32 --roughness 0.4 -o "$so"
+expect_ok render-ao render ao --scene builtin:corner --width 40 --height 32 --spp 32 -o "$ao"
+for variant in lagarde lut cone-oat:phong-u; do
+  expect_ok "approx $variant" approx specular-occlusion --gbuffer "$so" --ao "$ao" --variant $variant --lut-size 8 -o "$work/approx.exr"
+  expect_ok "compare $variant" compare "$so" "$work/approx.exr" --channel specocc.V --json
+done
+# merge recomputes the ratio channels from the merged sums: same bits as one render
+expect_ok render-block-1 render specular-occlusion --scene builtin:corner --width 40 --height 32 --spp 16 --roughness 0.4 -o "$work/b1.exr"
+expect_ok render-block-2 render specular-occlusion --scene builtin:corner --width 40 --height 32 --spp 16 --sample-offset 16 --roughness 0.4 -o "$work/b2.exr"
+expect_ok merge merge "$work/b1.exr" "$work/b2.exr" -o "$work/merged.exr"
+for channel in specocc.V.stderr specocc_phong.V; do
+  run compare "$so" "$work/merged.exr" --channel $channel --json
+  cp "$work/stdout" "$work/merged.json"
+  json_is max_abs == 0 "$work/merged.json" && pass || fail "merged $channel differs: $(cat "$work/merged.json")"
+done
+expect_ok lut lut specular-occlusion --size 8 -o "$work/lut"
+for ext in exr png h json; do
+  [ -s "$work/lut/specular_occlusion_ggx_8.$ext" ] && pass || fail "lut: no .$ext"
+done
+expect_ok fit fit aperture --reference "$so" --ao "$ao" -o "$work/fit.json"
+python3 -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if 0 < d['u'] < 1 and len(d['curve']) > 50 else 1)" "$work/fit.json" && pass || fail "fit.json"
+
+expect_error bad-variant "--variant: unknown variant" "$work/x.exr" -- approx specular-occlusion --gbuffer "$so" --ao "$ao" --variant cone-exact:nope -o "$work/x.exr"
+expect_error missing-ao "ao.exr" "$work/x.exr" -- approx specular-occlusion --gbuffer "$so" --ao "$work/ao.exr.missing" -o "$work/x.exr"
+expect_error not-ao "no channel ao.V" "$work/x.exr" -- approx specular-occlusion --gbuffer "$so" --ao "$so" -o "$work/x.exr"
+expect_error bad-roughness "--roughness" "$work/x.exr" -- render specular-occlusion --scene builtin:plane --roughness 1.5 -o "$work/x.exr"
+expect_error roughness-elsewhere "--roughness: applies to specular-occlusion only" "$work/x.exr" -- render ao --scene builtin:plane --roughness 0.5 -o "$work/x.exr"
+expect_error bad-size "--size" "" -- lut specular-occlusion --size 1 -o "$work/lut2"
+expect_error unknown-table "unknown table" "" -- lut nope -o "$work/lut2"
+expect_error fit-unpaired "one --ao per --reference" "$work/f.json" -- fit aperture --reference "$so" -o "$work/f.json"
+expect_error fit-not-so "no channel specocc.V" "$work/f.json" -- fit aperture --reference "$ao" --ao "$ao" -o "$work/f.json"
+finish
