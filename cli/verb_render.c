@@ -28,6 +28,9 @@ static void print_help(void)
         "            same pixels. Channels: multibounce.V (one albedo), multibounce_<a>.V\n"
         "            for each of several (e.g. multibounce_0.3.V), or multibounce.R/G/B with\n"
         "            --albedo scene; the header holds gtlab.albedos and gtlab.bounces\n"
+        "  heightfield-ao  the G-buffer plus ao.V and ao.Vuniform where rays are blocked\n"
+        "            only by the depth buffer taken as a height field (infinite thickness,\n"
+        "            rays leaving the image escape): what screen-space AO can know\n"
         "\n"
         "options:\n"
         "  --scene S             a .gltf/.glb file or builtin:NAME ('gtlab scene list')\n"
@@ -40,7 +43,7 @@ static void print_help(void)
         "  --target-stderr E     stop a pixel once the standard error of its first channel\n"
         "                        (ao.V; multibounce: the first multibounce channel) is <= E\n"
         "                        (checked at 16, 32, 64, ... samples)\n"
-        "  --max-distance D      ao: rays farther than D count as unoccluded (default: none)\n"
+        "  --max-distance D      ao, heightfield-ao: rays farther than D count as unoccluded (default: none)\n"
         "  --albedo A,B,...|scene  multibounce (required): grey albedos in [0, 1], all\n"
         "                        rendered from the same paths in one pass, or 'scene': the\n"
         "                        glTF base colours (textures included), coloured R, G, B\n"
@@ -66,8 +69,8 @@ static int check_quantity_options(render_options *o)
 {
     gt_error e;
     int multibounce = o->request.quantity == QUANTITY_MULTIBOUNCE;
-    if (o->max_distance && o->request.quantity != QUANTITY_AO)
-        return cli_failf("--max-distance", "applies to ao only"), -1;
+    if (o->max_distance && o->request.quantity != QUANTITY_AO && o->request.quantity != QUANTITY_HEIGHTFIELD_AO)
+        return cli_failf("--max-distance", "applies to ao and heightfield-ao only"), -1;
     if (!multibounce && (o->albedo || o->bounces))
         return cli_failf(o->albedo ? "--albedo" : "--bounces", "applies to multibounce only"), -1;
     if (!multibounce)
@@ -134,9 +137,9 @@ static int parse_options(int argc, char **argv, render_options *o)
         }
     }
     if (optind >= argc)
-        return cli_failf("render", "no QUANTITY given (gbuffer, ao or multibounce; see 'gtlab render --help')"), -1;
+        return cli_failf("render", "no QUANTITY given (gbuffer, ao, multibounce or heightfield-ao; see 'gtlab render --help')"), -1;
     if (reference_quantity_parse(argv[optind], &o->request.quantity) != 0)
-        return cli_failf("render", "unknown quantity '%s' (gbuffer, ao or multibounce)", argv[optind]), -1;
+        return cli_failf("render", "unknown quantity '%s' (gbuffer, ao, multibounce or heightfield-ao)", argv[optind]), -1;
     if (optind + 1 < argc)
         return cli_failf("render", "unexpected argument '%s'", argv[optind + 1]), -1;
     if (check_quantity_options(o) != 0)

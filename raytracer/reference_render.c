@@ -8,8 +8,9 @@
 #include <string.h>
 
 #include "raytracer/ao_integrator.h"
+#include "raytracer/heightfield_ao_integrator.h"
 
-static const char *const quantity_names[] = {"gbuffer", "ao", "multibounce"};
+static const char *const quantity_names[] = {"gbuffer", "ao", "multibounce", "heightfield-ao"};
 enum { QUANTITY_COUNT = sizeof quantity_names / sizeof quantity_names[0] };
 
 int reference_quantity_parse(const char *name, reference_quantity *q)
@@ -76,9 +77,16 @@ static int render_quantity(const embree_scene *es, const gbuffer *gb, const refe
                            gt_error *e)
 {
     ao_settings ao = {req->max_distance};
-    integrator it = req->quantity == QUANTITY_AO ? ao_integrator(es, &ao) : multibounce_integrator(es, plan);
+    heightfield_settings hf = {0};
+    if (req->quantity == QUANTITY_HEIGHTFIELD_AO && heightfield_settings_init(&hf, gb, req->max_distance) != 0)
+        return gt_error_set(e, scene_spec, "out of memory for the height field");
+    integrator it = req->quantity == QUANTITY_AO                ? ao_integrator(es, &ao)
+                    : req->quantity == QUANTITY_HEIGHTFIELD_AO ? heightfield_ao_integrator(&hf)
+                                                                : multibounce_integrator(es, plan);
     mc_film film;
-    if (render_estimates(gb, &it, &req->sampling, &film, stats, e) != 0)
+    int estimated = render_estimates(gb, &it, &req->sampling, &film, stats, e);
+    heightfield_settings_free(&hf);
+    if (estimated != 0)
         return -1;
     int rc = 0;
     if (mc_film_write_channels(&film, image_channel_data(out, "mask.A"), out) != 0)

@@ -11,17 +11,17 @@
 #include "raytracer/render_loop.h"
 #include "scene/scene.h"
 
-typedef enum { QUANTITY_GBUFFER, QUANTITY_AO, QUANTITY_MULTIBOUNCE } reference_quantity;
+typedef enum { QUANTITY_GBUFFER, QUANTITY_AO, QUANTITY_MULTIBOUNCE, QUANTITY_HEIGHTFIELD_AO } reference_quantity;
 
 typedef struct {
     reference_quantity quantity;
     sampling_settings sampling;
     normal_mode normals;
-    float max_distance;               /* ao only; INFINITY: none */
+    float max_distance;               /* ao and heightfield-ao; INFINITY: none */
     multibounce_settings multibounce; /* multibounce only: albedos, bounces */
 } reference_request;
 
-/* "gbuffer" / "ao" / "multibounce" -> quantity; -1 if unknown. */
+/* "gbuffer" / "ao" / "multibounce" / "heightfield-ao" -> quantity; -1 if unknown. */
 int reference_quantity_parse(const char *name, reference_quantity *q);
 const char *reference_quantity_name(reference_quantity q);
 

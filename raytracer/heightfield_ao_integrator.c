@@ -1,0 +1,142 @@
+/* Height-field AO reference after the GTAO talk's screen-space ray marcher
+ * (seeds/001, "Methodology"); see heightfield_ao_integrator.h. */
+#include "raytracer/heightfield_ao_integrator.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "core/hemisphere_sampling.h"
+
+enum { HF_V, HF_VUNIFORM, HF_QUANTITY_COUNT };
+static const mc_quantity hf_quantities[HF_QUANTITY_COUNT] = {{"ao.V", 0}, {"ao.Vuniform", 0}};
+
+int heightfield_settings_init(heightfield_settings *hs, const gbuffer *gb, float max_distance)
+{
+    size_t n = (size_t)gb->width * (size_t)gb->height;
+    hs->gb = gb;
+    hs->max_distance = max_distance;
+    hs->depth = malloc(sizeof *hs->depth * n);
+    if (!hs->depth)
+        return -1;
+    for (size_t i = 0; i < n; ++i)
+        hs->depth[i] = gb->mask[i] ? camera_depth(&gb->view, gb->hits[i].p) : INFINITY;
+    return 0;
+}
+
+void heightfield_settings_free(heightfield_settings *hs)
+{
+    free(hs->depth);
+    hs->depth = NULL;
+}
+
+/* Camera-relative coordinates: (a, b, z) with z the depth along the axis and
+ * the screen position x = (a / z / (tan aspect) + 1) W / 2, y = (1 - b / z / tan) H / 2. */
+static vec3 to_camera(const camera_view *v, vec3 p)
+{
+    vec3 r = v3_sub(p, v->origin);
+    return v3(v3_dot(r, v->right), v3_dot(r, v->up), v3_dot(r, v->forward));
+}
+
+static void to_screen(const camera_view *v, vec3 c, float *x, float *y)
+{
+    *x = (c.x / (c.z * v->tan_half_yfov * v->aspect) + 1.0f) * 0.5f * (float)v->width;
+    *y = (1.0f - c.y / (c.z * v->tan_half_yfov)) * 0.5f * (float)v->height;
+}
+
+/* Depth of pixel j's surface (its tangent plane) along the eye ray through
+ * screen point (x, y); the centre depth when the plane is seen edge-on. */
+static float surface_depth(const heightfield_settings *hs, long j, float x, float y)
+{
+    const camera_view *v = &hs->gb->view;
+    const surface_hit *h = &hs->gb->hits[j];
+    float sx = (2.0f * x / (float)v->width - 1.0f) * v->tan_half_yfov * v->aspect;
+    float sy = (1.0f - 2.0f * y / (float)v->height) * v->tan_half_yfov;
+    vec3 w = v3_add(v->forward, v3_add(v3_scale(v->right, sx), v3_scale(v->up, sy)));
+    float nw = v3_dot(h->ng, w);
+    float depth = v3_dot(h->ng, v3_sub(h->p, v->origin)) / nw;
+    return fabsf(nw) > 1e-3f * v3_length(w) && depth > 0.0f ? depth : hs->depth[j];
+}
+
+/* The ray's end: where it reaches max_distance, or just short of the camera
+ * plane, or far enough to leave any image (100 times the start's depth
+ * beyond which the projection hardly moves: the march stops at the border). */
+static float ray_end(const heightfield_settings *hs, vec3 c0, vec3 dc)
+{
+    float t = isfinite(hs->max_distance) ? hs->max_distance : 1e3f * fmaxf(c0.z, 1e-3f);
+    float near = 1e-3f * c0.z;
+    if (dc.z < 0.0f)
+        t = fminf(t, (near - c0.z) / dc.z);
+    return t;
+}
+
+/* Clips the screen segment s0 + u (s1 - s0), u in [0, 1], to the image. */
+static float clip_to_image(float x0, float y0, float x1, float y1, float w, float h)
+{
+    float u = 1.0f;
+    if (x1 < 0.0f) u = fminf(u, x0 / (x0 - x1));
+    if (x1 > w) u = fminf(u, (w - x0) / (x1 - x0));
+    if (y1 < 0.0f) u = fminf(u, y0 / (y0 - y1));
+    if (y1 > h) u = fminf(u, (h - y0) / (y1 - y0));
+    return fmaxf(u, 0.0f);
+}
+
+int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d)
+{
+    const camera_view *v = &hs->gb->view;
+    vec3 c0 = to_camera(v, p), dc = v3(v3_dot(d, v->right), v3_dot(d, v->up), v3_dot(d, v->forward));
+    float t1 = ray_end(hs, c0, dc);
+    vec3 c1 = v3_add(c0, v3_scale(dc, t1));
+    float x0, y0, x1, y1;
+    to_screen(v, c0, &x0, &y0);
+    to_screen(v, c1, &x1, &y1);
+    float u_end = clip_to_image(x0, y0, x1, y1, (float)v->width, (float)v->height);
+    float pixels = u_end * hypotf(x1 - x0, y1 - y0);
+    int steps = (int)ceilf(2.0f * pixels); /* half-pixel steps in screen space */
+    int x_start = (int)floorf(x0), y_start = (int)floorf(y0);
+    for (int k = 1; k <= steps; ++k) {
+        float u = u_end * (float)k / (float)steps;
+        /* Perspective-correct: 1/z is linear in screen space. */
+        float a = u * c0.z / ((1.0f - u) * c1.z + u * c0.z);
+        float z = c0.z + a * (c1.z - c0.z);
+        float x = x0 + u * (x1 - x0), y = y0 + u * (y1 - y0);
+        int px = (int)floorf(x), py = (int)floorf(y);
+        if (px < 0 || py < 0 || px >= v->width || py >= v->height)
+            break;
+        if (px == x_start && py == y_start)
+            continue; /* the start's own tangent plane cannot occlude an outgoing ray */
+        long j = (long)py * v->width + px;
+        if (hs->gb->mask[j] && z > surface_depth(hs, j, x, y) * (1.0f + 1e-5f))
+            return 0;
+    }
+    return 1;
+}
+
+/* Per sample one cosine- and one uniform-distributed direction from the same
+ * 2-D point (as ao_integrator.c); a direction below the geometric surface is
+ * blocked by the surface itself. */
+static int hf_sample_batch(const integrator *self, const pixel_context *px, uint32_t first_index, int count,
+                           float *values)
+{
+    const heightfield_settings *hs = self->settings;
+    const sample_pair_seeds pair = sample_pair_seeds_for(px, 0);
+    float u0[SAMPLE_BATCH], u1[SAMPLE_BATCH];
+    vec3 local[2][SAMPLE_BATCH];
+    sample_pair_points(&pair, first_index, count, u0, u1);
+    sample_hemisphere_batch(u0, u1, count, local[0], local[1]);
+    int marched = 0;
+    for (int k = 0; k < count; ++k)
+        for (int q = 0; q < 2; ++q) {
+            vec3 d = frame_to_world(&px->shading, local[q][k]);
+            int above = v3_dot(d, px->surface->ng) > 0.0f;
+            values[(q == 0 ? HF_V : HF_VUNIFORM) * SAMPLE_BATCH + k] =
+                above && heightfield_unoccluded(hs, px->surface->p, d) ? 1.0f : 0.0f;
+            marched += above;
+        }
+    return marched;
+}
+
+integrator heightfield_ao_integrator(const heightfield_settings *settings)
+{
+    integrator it = {"heightfield-ao", HF_QUANTITY_COUNT, hf_quantities, NULL, hf_sample_batch, NULL, settings};
+    return it;
+}

@@ -1,0 +1,268 @@
+/* GTAO after Jimenez et al., SIGGRAPH 2016 (seeds/001), slides "Method",
+ * "Integration Domain", "Cosine Weighting", "Cosine Weighting Normal
+ * Projection", "Bent Normal", "Achieving the Performance Target", "Noise
+ * Distribution", "Minimizing Artifacts". Corrections to the transcription
+ * (each proved in tests/realtime):
+ *  - "Method": h = -+cos(max ...) must be -+acos(max ...): the max is a cosine.
+ *  - GTAOFastCos is an arc cosine (Eberly's acos), not a cosine.
+ *  - GTAOFastSqrt's constant 0x1FB01DF5 is Drobot's 0x1FBD1DF5 with a digit
+ *    lost: the transcribed one is 10.5% low at worst, Drobot's 4.5%.
+ *  - The 4x4 direction noise lacks a pair of brackets: as transcribed the
+ *    (x & 3) term is not scaled by 1/16, adds whole turns, and the tile holds
+ *    4 distinct directions instead of 16.
+ *  - "offsets[frameCount / 6] % 4]" is offsets[(frameCount / 6) % 4].
+ *  - Temporal rotations and offsets added at full weight repeat the spatial
+ *    values (48 distinct slices, 4 distinct offsets, not 96 and 16); they are
+ *    applied as sub-steps of the spatial pattern (rotation / 16, offset / 4).
+ *  - "Possible Pitfall": the integrand is cos(theta - n) |sin theta|. */
+#include "realtime/gtao.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "realtime/gtao_denoiser.h"
+
+#define GTAO_PI 3.14159265358979f
+
+float gtao_integrate_arc_cosine(float h1, float h2, float n)
+{
+    float cos_n = cosf(n), sin_n = sinf(n);
+    return 0.25f * (-cosf(2.0f * h1 - n) + cos_n + 2.0f * h1 * sin_n) +
+           0.25f * (-cosf(2.0f * h2 - n) + cos_n + 2.0f * h2 * sin_n);
+}
+
+float gtao_integrate_arc_uniform(float h1, float h2) { return (1.0f - cosf(h1)) + (1.0f - cosf(h2)); }
+
+float gtao_fast_sqrt_magic(float x, uint32_t magic)
+{
+    uint32_t bits;
+    memcpy(&bits, &x, sizeof bits);
+    bits = magic + (bits >> 1);
+    float r;
+    memcpy(&r, &bits, sizeof r);
+    return r;
+}
+
+float gtao_fast_sqrt(float x) { return gtao_fast_sqrt_magic(x, GTAO_FAST_SQRT_MAGIC); }
+
+float gtao_fast_acos(float x)
+{
+    float a = fabsf(x);
+    float r = (-0.156583f * a + 0.5f * GTAO_PI) * gtao_fast_sqrt(1.0f - a);
+    return x >= 0.0f ? r : GTAO_PI - r;
+}
+
+float gtao_spatial_direction(int x, int y)
+{
+    return (1.0f / 16.0f) * (float)((((x + y) & 3) << 2) + (x & 3));
+}
+
+float gtao_spatial_direction_as_transcribed(int x, int y)
+{
+    return (1.0f / 16.0f) * (float)(((x + y) & 3) << 2) + (float)(x & 3);
+}
+
+float gtao_spatial_offset(int x, int y) { return 0.25f * (float)((y - x) & 3); }
+
+float gtao_temporal_rotation(int frame)
+{
+    static const float rotations[6] = {60.0f, 300.0f, 180.0f, 240.0f, 120.0f, 0.0f};
+    return rotations[frame % 6] / 360.0f;
+}
+
+float gtao_temporal_offset(int frame)
+{
+    static const float offsets[4] = {0.0f, 0.5f, 0.25f, 0.75f};
+    return offsets[(frame / 6) % 4];
+}
+
+static float fraction(float t) { return t - floorf(t); }
+
+float gtao_slice_angle(int x, int y, int frame, int k, int slices, int pattern)
+{
+    float u = pattern ? fraction(gtao_spatial_direction(x, y) + gtao_temporal_rotation(frame) / 16.0f) : 0.5f;
+    return GTAO_PI * ((float)k + u) / (float)slices;
+}
+
+float gtao_step_offset(int x, int y, int frame, int pattern)
+{
+    return pattern ? fraction(gtao_spatial_offset(x, y) + 0.25f * gtao_temporal_offset(frame)) : 0.5f;
+}
+
+static const gtao_params presets[] = {
+    /* weighting, slices, steps, radius, falloff, max px, thickness, pattern, fast, denoise, frames */
+    {GTAO_COSINE, 1, 2, 1.0f, 0.25f, 256.0f, 0.0f, 1, 1, 1, 1},   /* low */
+    {GTAO_COSINE, 1, 4, 1.0f, 0.25f, 256.0f, 0.0f, 1, 1, 1, 1},   /* medium: the talk's */
+    {GTAO_COSINE, 2, 6, 1.0f, 0.25f, 256.0f, 0.0f, 1, 0, 1, 1},   /* high */
+    {GTAO_COSINE, 4, 8, 1.0f, 0.25f, 256.0f, 0.0f, 1, 0, 1, 1},   /* ultra */
+    {GTAO_COSINE, 64, 64, 1.0f, 0.25f, 256.0f, 0.0f, 0, 0, 0, 1}, /* reference */
+};
+const char *const gtao_preset_names[] = {"low", "medium", "high", "ultra", "reference", NULL};
+
+int gtao_preset(const char *name, gtao_params *p)
+{
+    for (int i = 0; gtao_preset_names[i]; ++i)
+        if (strcmp(name, gtao_preset_names[i]) == 0) {
+            *p = presets[i];
+            return 0;
+        }
+    return -1;
+}
+
+int ss_side_samples(const ss_gbuffer *g, int x, int y, float dx, float dy, float radius_px, int steps, float offset,
+                    int (*xy)[2])
+{
+    int count = 0;
+    for (int j = 0; j < steps; ++j) {
+        float t = radius_px * ((float)j + offset) / (float)steps;
+        int sx = (int)floorf((float)x + 0.5f + t * dx), sy = (int)floorf((float)y + 0.5f + t * dy);
+        if ((sx == x && sy == y) || !ss_covered(g, sx, sy))
+            continue;
+        xy[count][0] = sx;
+        xy[count][1] = sy;
+        ++count;
+    }
+    return count;
+}
+
+/* Conservative attenuation: full effect up to (1 - falloff) radius, then a
+ * linear fade to none at the radius. */
+static float attenuation(float distance, const gtao_params *p)
+{
+    float fade = p->falloff * p->radius;
+    if (fade <= 0.0f)
+        return distance <= p->radius ? 1.0f : 0.0f;
+    return fminf(fmaxf((p->radius - distance) / fade, 0.0f), 1.0f);
+}
+
+static float acos_of(float c, int fast) { return fast ? gtao_fast_acos(c) : acosf(fminf(fmaxf(c, -1.0f), 1.0f)); }
+
+/* Cosine of the horizon on one side, from near to far: a sample raises the
+ * horizon to its own cosine (faded towards `low`, the side's hemisphere
+ * limit, by its attenuation); with the thickness heuristic a lower sample
+ * behind the current horizon pulls it back down a little, since an occluder
+ * seen only by its front face is assumed about as thick as it is wide. */
+static float side_horizon_cos(const ss_gbuffer *g, vec3 pc, vec3 v, const int (*xy)[2], int count, float low,
+                              const gtao_params *p)
+{
+    float horizon = low;
+    for (int i = 0; i < count; ++i) {
+        vec3 d = v3_sub(ss_view_position(g, xy[i][0], xy[i][1]), pc);
+        float len = v3_length(d);
+        float c = low + attenuation(len, p) * (v3_dot(d, v) / len - low);
+        if (c > horizon)
+            horizon = c;
+        else
+            horizon += p->thickness * (fmaxf(c, low) - horizon);
+    }
+    return horizon;
+}
+
+void gtao_search_slice(const ss_gbuffer *g, int x, int y, const gtao_params *p, float phi, float offset,
+                       gtao_slice *s)
+{
+    vec3 pc = ss_view_position(g, x, y), n = ss_view_normal(g, x, y);
+    float dx = cosf(phi), dy = sinf(phi);
+    /* Screen direction (dx, dy) (y down) is the view-space direction (dx, -dy, 0)
+     * on the image plane; the slice plane holds it and the eye ray. */
+    vec3 d3 = v3(dx, -dy, 0.0f);
+    s->v = v3_normalize(v3_neg(pc));
+    s->side = v3_normalize(v3_sub(d3, v3_scale(s->v, v3_dot(d3, s->v))));
+    vec3 axis = v3_cross(s->side, s->v);
+    vec3 np = v3_sub(n, v3_scale(axis, v3_dot(n, axis)));
+    s->n_len = v3_length(np);
+    float cos_n = s->n_len > 0.0f ? v3_dot(np, s->v) / s->n_len : 1.0f;
+    float n_angle = acos_of(cos_n, p->fast_math);
+    s->n = v3_dot(np, s->side) < 0.0f ? -n_angle : n_angle;
+
+    /* The hemisphere limits n -+ pi/2 as cosines from v: cos(n - pi/2) = sin n,
+     * cos(n + pi/2) = -sin n. */
+    float sin_n = sinf(s->n);
+    int xy[GTAO_MAX_STEPS][2];
+    float r = ss_radius_px(g, x, y, p->radius, p->max_radius_px);
+    int c2n = ss_side_samples(g, x, y, dx, dy, r, p->steps, offset, xy);
+    float c2 = side_horizon_cos(g, pc, s->v, (const int(*)[2])xy, c2n, -sin_n, p);
+    int c1n = ss_side_samples(g, x, y, -dx, -dy, r, p->steps, offset, xy);
+    float c1 = side_horizon_cos(g, pc, s->v, (const int(*)[2])xy, c1n, sin_n, p);
+    float h1 = -acos_of(c1, p->fast_math), h2 = acos_of(c2, p->fast_math);
+    s->h1 = s->n + fmaxf(h1 - s->n, -0.5f * GTAO_PI);
+    s->h2 = s->n + fminf(h2 - s->n, 0.5f * GTAO_PI);
+}
+
+/* The slice's visibility contribution: cosine-weighted arcs are weighted by
+ * the projected normal's length (Timonen 2013); uniform arcs are halved so
+ * an open slice counts 1 in both. */
+static float slice_visibility(const gtao_slice *s, gtao_weighting w)
+{
+    if (w == GTAO_UNIFORM)
+        return 0.5f * gtao_integrate_arc_uniform(s->h1, s->h2);
+    return s->n_len * gtao_integrate_arc_cosine(s->h1, s->h2, s->n);
+}
+
+/* The talk's bent normal: the direction halfway between the two horizons,
+ * h = (h1 + h2) / 2 in the slice, weighted by the slice's visibility. */
+static vec3 slice_bent(const gtao_slice *s, float visibility)
+{
+    float h = 0.5f * (s->h1 + s->h2);
+    return v3_scale(v3_add(v3_scale(s->v, cosf(h)), v3_scale(s->side, sinf(h))), visibility);
+}
+
+static void pixel_gtao(const ss_gbuffer *g, const gtao_params *p, int frame, int x, int y, float *ao, vec3 *bent)
+{
+    float sum = 0.0f;
+    vec3 b = v3(0.0f, 0.0f, 0.0f);
+    float offset = gtao_step_offset(x, y, frame, p->pattern);
+    for (int k = 0; k < p->slices; ++k) {
+        gtao_slice s;
+        gtao_search_slice(g, x, y, p, gtao_slice_angle(x, y, frame, k, p->slices, p->pattern), offset, &s);
+        float vis = slice_visibility(&s, p->weighting);
+        sum += vis;
+        b = v3_add(b, slice_bent(&s, vis));
+    }
+    *ao = sum / (float)p->slices;
+    float len = v3_length(b);
+    *bent = len > 0.0f ? ss_world_direction(g, v3_scale(b, 1.0f / len)) : ss_world_direction(g, ss_view_normal(g, x, y));
+}
+
+void gtao_frame(const ss_gbuffer *g, const gtao_params *p, int frame, float *ao, float *const *bent)
+{
+#pragma omp parallel for schedule(dynamic, 4)
+    for (int y = 0; y < g->height; ++y)
+        for (int x = 0; x < g->width; ++x) {
+            long i = (long)y * g->width + x;
+            float a = 0.0f;
+            vec3 b = v3(0.0f, 0.0f, 0.0f);
+            if (g->mask[i] != 0.0f)
+                pixel_gtao(g, p, frame, x, y, &a, &b);
+            ao[i] = a;
+            if (bent) {
+                bent[0][i] = b.x;
+                bent[1][i] = b.y;
+                bent[2][i] = b.z;
+            }
+        }
+}
+
+typedef struct {
+    const gtao_params *p;
+    int bent;
+} frame_job;
+
+/* Adapts gtao_frame to the shared frame loop: plane 0 AO, planes 1-3 the bent normal. */
+static void frame_planes(const ss_gbuffer *g, const void *params, int frame, float *const *planes)
+{
+    const frame_job *job = params;
+    gtao_frame(g, job->p, frame, planes[0], job->bent ? planes + 1 : NULL);
+}
+
+int gtao_render(const ss_gbuffer *g, const gtao_params *p, float *ao, float *const *bent)
+{
+    frame_job job = {p, bent != NULL};
+    float *out[4] = {ao, job.bent ? bent[0] : NULL, job.bent ? bent[1] : NULL, job.bent ? bent[2] : NULL};
+    if (ss_denoised_frames(g, frame_planes, &job, p->frames, p->denoise, job.bent ? 4 : 1, out) != 0)
+        return -1;
+    if (job.bent)
+        gtao_normalize_directions(g, bent);
+    return 0;
+}

@@ -1,0 +1,67 @@
+#include "realtime/screen_space.h"
+
+#include <stdlib.h>
+
+#include "realtime/gtao_denoiser.h"
+
+vec3 ss_view_position(const ss_gbuffer *g, int x, int y)
+{
+    const ss_camera *c = &g->camera;
+    float d = g->depth[(long)y * g->width + x];
+    float sx = (2.0f * ((float)x + 0.5f) / (float)g->width - 1.0f) * c->tan_half_yfov * c->aspect;
+    float sy = (1.0f - 2.0f * ((float)y + 0.5f) / (float)g->height) * c->tan_half_yfov;
+    return v3(sx * d, sy * d, -d);
+}
+
+vec3 ss_view_normal(const ss_gbuffer *g, int x, int y)
+{
+    long i = (long)y * g->width + x;
+    vec3 n = v3(g->normal[0][i], g->normal[1][i], g->normal[2][i]);
+    const ss_camera *c = &g->camera;
+    return v3(v3_dot(n, c->right), v3_dot(n, c->up), -v3_dot(n, c->forward));
+}
+
+vec3 ss_world_direction(const ss_gbuffer *g, vec3 v)
+{
+    const ss_camera *c = &g->camera;
+    return v3_add(v3_add(v3_scale(c->right, v.x), v3_scale(c->up, v.y)), v3_scale(c->forward, -v.z));
+}
+
+float ss_pixels_per_unit(const ss_gbuffer *g, float depth)
+{
+    return 0.5f * (float)g->height / (g->camera.tan_half_yfov * depth);
+}
+
+float ss_radius_px(const ss_gbuffer *g, int x, int y, float radius, float max_px)
+{
+    return fminf(radius * ss_pixels_per_unit(g, g->depth[(long)y * g->width + x]), max_px);
+}
+
+int ss_denoised_frames(const ss_gbuffer *g, ss_frame_fn frame_fn, const void *params, int frames, int denoise,
+                       int planes, float *const *out)
+{
+    size_t n = (size_t)g->width * (size_t)g->height;
+    float *raw = malloc(sizeof *raw * n * (size_t)planes), *filtered = malloc(sizeof *filtered * n);
+    float *raw_planes[4];
+    if (!raw || !filtered || planes > 4) {
+        free(raw);
+        free(filtered);
+        return -1;
+    }
+    for (int c = 0; c < planes; ++c)
+        raw_planes[c] = raw + (size_t)c * n;
+    for (int f = 0; f < (frames > 0 ? frames : 1); ++f) {
+        frame_fn(g, params, f, raw_planes);
+        for (int c = 0; c < planes; ++c) {
+            const float *plane = raw_planes[c];
+            if (denoise) {
+                gtao_spatial_denoise(g, f, plane, filtered);
+                plane = filtered;
+            }
+            gtao_temporal_accumulate(plane, f, n, out[c]);
+        }
+    }
+    free(raw);
+    free(filtered);
+    return 0;
+}
