@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "core/heightfield_model.h"
 #include "core/hemisphere_sampling.h"
 
 enum { HF_V, HF_VUNIFORM, HF_QUANTITY_COUNT };
@@ -44,7 +45,8 @@ static void to_screen(const camera_view *v, vec3 c, float *x, float *y)
 }
 
 /* Depth of pixel j's surface (its tangent plane) along the eye ray through
- * screen point (x, y); the centre depth when the plane is seen edge-on. */
+ * screen point (x, y); the centre depth when the plane is seen at a grazing
+ * angle (core/heightfield_model.h). */
 static float surface_depth(const heightfield_settings *hs, long j, float x, float y)
 {
     const camera_view *v = &hs->gb->view;
@@ -54,7 +56,7 @@ static float surface_depth(const heightfield_settings *hs, long j, float x, floa
     vec3 w = v3_add(v->forward, v3_add(v3_scale(v->right, sx), v3_scale(v->up, sy)));
     float nw = v3_dot(h->ng, w);
     float depth = v3_dot(h->ng, v3_sub(h->p, v->origin)) / nw;
-    return fabsf(nw) > 1e-3f * v3_length(w) && depth > 0.0f ? depth : hs->depth[j];
+    return fabsf(nw) >= HEIGHTFIELD_MIN_FACING * v3_length(w) && depth > 0.0f ? depth : hs->depth[j];
 }
 
 /* The ray's end: where it reaches max_distance, or just short of the camera
@@ -80,33 +82,64 @@ static float clip_to_image(float x0, float y0, float x1, float y1, float w, floa
     return fmaxf(u, 0.0f);
 }
 
+/* Whether the ray's point at screen parameter u (segment s0 -> s1, depths
+ * z0 -> z1) lies behind the height field. */
+typedef struct {
+    float x0, y0, x1, y1, z0, z1;
+    int x_start, y_start;
+} screen_segment;
+
+static int behind_at(const heightfield_settings *hs, const screen_segment *sg, float u)
+{
+    const camera_view *v = &hs->gb->view;
+    float x = sg->x0 + u * (sg->x1 - sg->x0), y = sg->y0 + u * (sg->y1 - sg->y0);
+    int px = (int)floorf(x), py = (int)floorf(y);
+    if (px < 0 || py < 0 || px >= v->width || py >= v->height || (px == sg->x_start && py == sg->y_start))
+        return 0; /* nothing known off the image; the start's own plane cannot occlude an outgoing ray */
+    long j = (long)py * v->width + px;
+    /* Perspective-correct depth: 1/z is linear in screen space. */
+    float a = u * sg->z0 / ((1.0f - u) * sg->z1 + u * sg->z0);
+    float z = sg->z0 + a * (sg->z1 - sg->z0);
+    return hs->gb->mask[j] && z > surface_depth(hs, j, x, y) * (1.0f + 1e-5f);
+}
+
+/* The screen path of the ray crosses pixel cells; in each, the ray is behind
+ * the cell's plane on at most one side of a single point (the ray and the
+ * plane are both straight), so testing the ray just inside both ends of every
+ * cell it crosses decides exactly whether it passes behind the height field. */
 int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d)
 {
     const camera_view *v = &hs->gb->view;
     vec3 c0 = to_camera(v, p), dc = v3(v3_dot(d, v->right), v3_dot(d, v->up), v3_dot(d, v->forward));
-    float t1 = ray_end(hs, c0, dc);
-    vec3 c1 = v3_add(c0, v3_scale(dc, t1));
-    float x0, y0, x1, y1;
-    to_screen(v, c0, &x0, &y0);
-    to_screen(v, c1, &x1, &y1);
-    float u_end = clip_to_image(x0, y0, x1, y1, (float)v->width, (float)v->height);
-    float pixels = u_end * hypotf(x1 - x0, y1 - y0);
-    int steps = (int)ceilf(2.0f * pixels); /* half-pixel steps in screen space */
-    int x_start = (int)floorf(x0), y_start = (int)floorf(y0);
-    for (int k = 1; k <= steps; ++k) {
-        float u = u_end * (float)k / (float)steps;
-        /* Perspective-correct: 1/z is linear in screen space. */
-        float a = u * c0.z / ((1.0f - u) * c1.z + u * c0.z);
-        float z = c0.z + a * (c1.z - c0.z);
-        float x = x0 + u * (x1 - x0), y = y0 + u * (y1 - y0);
-        int px = (int)floorf(x), py = (int)floorf(y);
-        if (px < 0 || py < 0 || px >= v->width || py >= v->height)
-            break;
-        if (px == x_start && py == y_start)
-            continue; /* the start's own tangent plane cannot occlude an outgoing ray */
-        long j = (long)py * v->width + px;
-        if (hs->gb->mask[j] && z > surface_depth(hs, j, x, y) * (1.0f + 1e-5f))
+    vec3 c1 = v3_add(c0, v3_scale(dc, ray_end(hs, c0, dc)));
+    screen_segment sg = {0, 0, 0, 0, c0.z, c1.z, 0, 0};
+    to_screen(v, c0, &sg.x0, &sg.y0);
+    to_screen(v, c1, &sg.x1, &sg.y1);
+    sg.x_start = (int)floorf(sg.x0);
+    sg.y_start = (int)floorf(sg.y0);
+    float length = hypotf(sg.x1 - sg.x0, sg.y1 - sg.y0);
+    float u_end = clip_to_image(sg.x0, sg.y0, sg.x1, sg.y1, (float)v->width, (float)v->height);
+    if (!(length > 0.0f))
+        return 1;
+    /* Walk the cells: tau is the distance along the screen path in pixels. */
+    float dx = (sg.x1 - sg.x0) / length, dy = (sg.y1 - sg.y0) / length, tau_end = u_end * length;
+    float step_x = dx != 0.0f ? fabsf(1.0f / dx) : INFINITY, step_y = dy != 0.0f ? fabsf(1.0f / dy) : INFINITY;
+    float next_x = dx > 0 ? ((float)sg.x_start + 1.0f - sg.x0) * step_x : (sg.x0 - (float)sg.x_start) * step_x;
+    float next_y = dy > 0 ? ((float)sg.y_start + 1.0f - sg.y0) * step_y : (sg.y0 - (float)sg.y_start) * step_y;
+    if (dx == 0.0f)
+        next_x = INFINITY;
+    if (dy == 0.0f)
+        next_y = INFINITY;
+    const float eps = 1e-3f;
+    for (float tau = 0.0f; tau < tau_end;) {
+        float tau_next = fminf(fminf(next_x, next_y), tau_end);
+        if ((tau > 0.0f && behind_at(hs, &sg, (tau + eps) / length)) || behind_at(hs, &sg, (tau_next - eps) / length))
             return 0;
+        if (next_x <= next_y)
+            next_x += step_x;
+        else
+            next_y += step_y;
+        tau = tau_next;
     }
     return 1;
 }

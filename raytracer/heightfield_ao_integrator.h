@@ -5,8 +5,8 @@
  * camera with infinite thickness: a point of the ray is inside the scene when
  * it lies farther along its eye ray than the surface the G-buffer holds
  * there. Each pixel's surface is its tangent plane (geometric normal) over the
- * pixel's footprint, so planes are reproduced exactly; background pixels hold
- * nothing. A ray that leaves the image or crosses the camera plane escapes
+ * pixel's footprint, so planes are reproduced exactly, unless seen at a
+ * grazing angle (core/heightfield_model.h); background pixels hold nothing. A ray that leaves the image or crosses the camera plane escapes
  * (nothing beyond the screen is known). This is the quantity GTAO computes
  * exactly, given enough slices and samples, so GTAO minus this reference is
  * pure sampling/denoising error; this reference minus the 3-D one is the

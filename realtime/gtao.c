@@ -14,7 +14,10 @@
  *  - Temporal rotations and offsets added at full weight repeat the spatial
  *    values (48 distinct slices, 4 distinct offsets, not 96 and 16); they are
  *    applied as sub-steps of the spatial pattern (rotation / 16, offset / 4).
- *  - "Possible Pitfall": the integrand is cos(theta - n) |sin theta|. */
+ *  - "Possible Pitfall": the integrand is cos(theta - n) |sin theta|.
+ * Addition: slices are weighted by d psi / d phi (gtao_slice_weight), the
+ * rotation about the view vector per screen angle, without which a tilted
+ * plane off the image centre came out 2% dark with 32 regular slices. */
 #include "realtime/gtao.h"
 
 #include <math.h>
@@ -96,7 +99,7 @@ static const gtao_params presets[] = {
     {GTAO_COSINE, 1, 4, 1.0f, 0.25f, 256.0f, 0.0f, 1, 1, 1, 1},   /* medium: the talk's */
     {GTAO_COSINE, 2, 6, 1.0f, 0.25f, 256.0f, 0.0f, 1, 0, 1, 1},   /* high */
     {GTAO_COSINE, 4, 8, 1.0f, 0.25f, 256.0f, 0.0f, 1, 0, 1, 1},   /* ultra */
-    {GTAO_COSINE, 64, 64, 1.0f, 0.25f, 256.0f, 0.0f, 0, 0, 0, 1}, /* reference */
+    {GTAO_COSINE, 64, 0, 1.0f, 0.25f, 256.0f, 0.0f, 0, 0, 0, 1},  /* reference: every cell */
 };
 const char *const gtao_preset_names[] = {"low", "medium", "high", "ultra", "reference", NULL};
 
@@ -110,18 +113,54 @@ int gtao_preset(const char *name, gtao_params *p)
     return -1;
 }
 
-int ss_side_samples(const ss_gbuffer *g, int x, int y, float dx, float dy, float radius_px, int steps, float offset,
-                    int (*xy)[2])
+static int keep_sample(const ss_gbuffer *g, int x, int y, float fx, float fy, float (*xy)[2], int count)
 {
+    int sx = (int)floorf(fx), sy = (int)floorf(fy);
+    if ((sx == x && sy == y) || !ss_covered(g, sx, sy))
+        return count;
+    xy[count][0] = fx;
+    xy[count][1] = fy;
+    return count + 1;
+}
+
+/* Exact mode: both ends of every pixel cell the line crosses. Each cell is a
+ * plane piece, and along a line on a plane the angle seen from the centre
+ * is monotonic, so a cell's highest point is one of its ends. */
+static int cell_samples(const ss_gbuffer *g, int x, int y, float dx, float dy, float radius_px, float (*xy)[2])
+{
+    const float eps = 1e-3f;
+    float ox = (float)x + 0.5f, oy = (float)y + 0.5f;
+    float step_x = dx > 0 ? 1.0f / dx : dx < 0 ? -1.0f / dx : INFINITY;
+    float step_y = dy > 0 ? 1.0f / dy : dy < 0 ? -1.0f / dy : INFINITY;
+    float next_x = step_x * 0.5f, next_y = step_y * 0.5f; /* the centre is mid-cell */
+    int count = 0;
+    float t = 0.0f;
+    while (t < radius_px && count + 2 <= GTAO_MAX_SAMPLES) {
+        float t_next = fminf(fminf(next_x, next_y), radius_px);
+        if (t > 0.0f)
+            count = keep_sample(g, x, y, ox + (t + eps) * dx, oy + (t + eps) * dy, xy, count);
+        count = keep_sample(g, x, y, ox + (t_next - eps) * dx, oy + (t_next - eps) * dy, xy, count);
+        if (next_x <= next_y)
+            next_x += step_x;
+        else
+            next_y += step_y;
+        t = t_next;
+        float fx = ox + t * dx, fy = oy + t * dy;
+        if (fx < 0.0f || fy < 0.0f || fx > (float)g->width || fy > (float)g->height)
+            break;
+    }
+    return count;
+}
+
+int ss_side_samples(const ss_gbuffer *g, int x, int y, float dx, float dy, float radius_px, int steps, float offset,
+                    float (*xy)[2])
+{
+    if (steps == 0)
+        return cell_samples(g, x, y, dx, dy, radius_px, xy);
     int count = 0;
     for (int j = 0; j < steps; ++j) {
         float t = radius_px * ((float)j + offset) / (float)steps;
-        int sx = (int)floorf((float)x + 0.5f + t * dx), sy = (int)floorf((float)y + 0.5f + t * dy);
-        if ((sx == x && sy == y) || !ss_covered(g, sx, sy))
-            continue;
-        xy[count][0] = sx;
-        xy[count][1] = sy;
-        ++count;
+        count = keep_sample(g, x, y, (float)x + 0.5f + t * dx, (float)y + 0.5f + t * dy, xy, count);
     }
     return count;
 }
@@ -143,12 +182,12 @@ static float acos_of(float c, int fast) { return fast ? gtao_fast_acos(c) : acos
  * limit, by its attenuation); with the thickness heuristic a lower sample
  * behind the current horizon pulls it back down a little, since an occluder
  * seen only by its front face is assumed about as thick as it is wide. */
-static float side_horizon_cos(const ss_gbuffer *g, vec3 pc, vec3 v, const int (*xy)[2], int count, float low,
+static float side_horizon_cos(const ss_gbuffer *g, vec3 pc, vec3 v, const float (*xy)[2], int count, float low,
                               const gtao_params *p)
 {
     float horizon = low;
     for (int i = 0; i < count; ++i) {
-        vec3 d = v3_sub(ss_view_position(g, xy[i][0], xy[i][1]), pc);
+        vec3 d = v3_sub(ss_sample_position(g, xy[i][0], xy[i][1]), pc);
         float len = v3_length(d);
         float c = low + attenuation(len, p) * (v3_dot(d, v) / len - low);
         if (c > horizon)
@@ -157,6 +196,12 @@ static float side_horizon_cos(const ss_gbuffer *g, vec3 pc, vec3 v, const int (*
             horizon += p->thickness * (fmaxf(c, low) - horizon);
     }
     return horizon;
+}
+
+float gtao_slice_weight(vec3 v, float phi)
+{
+    float dv = cosf(phi) * v.x - sinf(phi) * v.y;
+    return v.z / (1.0f - dv * dv);
 }
 
 void gtao_search_slice(const ss_gbuffer *g, int x, int y, const gtao_params *p, float phi, float offset,
@@ -169,6 +214,7 @@ void gtao_search_slice(const ss_gbuffer *g, int x, int y, const gtao_params *p, 
     vec3 d3 = v3(dx, -dy, 0.0f);
     s->v = v3_normalize(v3_neg(pc));
     s->side = v3_normalize(v3_sub(d3, v3_scale(s->v, v3_dot(d3, s->v))));
+    s->weight = gtao_slice_weight(s->v, phi);
     vec3 axis = v3_cross(s->side, s->v);
     vec3 np = v3_sub(n, v3_scale(axis, v3_dot(n, axis)));
     s->n_len = v3_length(np);
@@ -179,12 +225,12 @@ void gtao_search_slice(const ss_gbuffer *g, int x, int y, const gtao_params *p, 
     /* The hemisphere limits n -+ pi/2 as cosines from v: cos(n - pi/2) = sin n,
      * cos(n + pi/2) = -sin n. */
     float sin_n = sinf(s->n);
-    int xy[GTAO_MAX_STEPS][2];
+    float xy[GTAO_MAX_SAMPLES][2];
     float r = ss_radius_px(g, x, y, p->radius, p->max_radius_px);
     int c2n = ss_side_samples(g, x, y, dx, dy, r, p->steps, offset, xy);
-    float c2 = side_horizon_cos(g, pc, s->v, (const int(*)[2])xy, c2n, -sin_n, p);
+    float c2 = side_horizon_cos(g, pc, s->v, (const float(*)[2])xy, c2n, -sin_n, p);
     int c1n = ss_side_samples(g, x, y, -dx, -dy, r, p->steps, offset, xy);
-    float c1 = side_horizon_cos(g, pc, s->v, (const int(*)[2])xy, c1n, sin_n, p);
+    float c1 = side_horizon_cos(g, pc, s->v, (const float(*)[2])xy, c1n, sin_n, p);
     float h1 = -acos_of(c1, p->fast_math), h2 = acos_of(c2, p->fast_math);
     s->h1 = s->n + fmaxf(h1 - s->n, -0.5f * GTAO_PI);
     s->h2 = s->n + fminf(h2 - s->n, 0.5f * GTAO_PI);
@@ -216,7 +262,7 @@ static void pixel_gtao(const ss_gbuffer *g, const gtao_params *p, int frame, int
     for (int k = 0; k < p->slices; ++k) {
         gtao_slice s;
         gtao_search_slice(g, x, y, p, gtao_slice_angle(x, y, frame, k, p->slices, p->pattern), offset, &s);
-        float vis = slice_visibility(&s, p->weighting);
+        float vis = s.weight * slice_visibility(&s, p->weighting);
         sum += vis;
         b = v3_add(b, slice_bent(&s, vis));
     }

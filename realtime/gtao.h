@@ -11,7 +11,8 @@
  * direction (cos phi, sin phi) (pixels, y down), phi in [0, pi). In it, an
  * angle theta is measured from the view vector v = -p / |p| towards the side
  * the screen direction points to (side 2, theta > 0); side 1 has theta < 0.
- * n is the angle of the projected normal, h1 <= 0 <= h2 the two horizons. */
+ * n is the angle of the projected normal, h1 <= 0 <= h2 the two horizons.
+ * The average over slices is weighted by d psi / d phi (gtao_slice_weight). */
 #ifndef GTLAB_REALTIME_GTAO_H
 #define GTLAB_REALTIME_GTAO_H
 
@@ -52,13 +53,15 @@ float gtao_slice_angle(int x, int y, int frame, int k, int slices, int pattern);
 float gtao_step_offset(int x, int y, int frame, int pattern);
 
 #define GTAO_MAX_STEPS 256
+#define GTAO_MAX_SAMPLES 1024 /* per side, in the exact (every cell) mode */
 
 typedef enum { GTAO_COSINE, GTAO_UNIFORM } gtao_weighting;
 
 typedef struct {
     gtao_weighting weighting;
     int slices;          /* slice directions per pixel and frame */
-    int steps;           /* depth samples per side of a slice, 1..GTAO_MAX_STEPS */
+    int steps;           /* depth samples per side of a slice, 1..GTAO_MAX_STEPS; 0: exact, both ends of
+                            every pixel cell crossed (up to GTAO_MAX_SAMPLES) */
     float radius;        /* world-space search radius */
     float falloff;       /* fraction of the radius over which samples fade to no effect; 0: full effect to the radius */
     float max_radius_px; /* clamp of the screen-space radius (the talk's cache guard) */
@@ -75,13 +78,16 @@ typedef struct {
 int gtao_preset(const char *name, gtao_params *p);
 extern const char *const gtao_preset_names[]; /* NULL-terminated */
 
-/* The pixels sampled on one side of a slice: `steps` points at distances
- * radius_px (j + offset) / steps, j = 0..steps-1, along screen direction
- * (dx, dy), rounded to pixels; points off the image, on background pixels or
- * on the centre pixel are left out. Returns how many were written to xy.
- * Shared by every horizon-based technique so they see the same samples. */
+/* The screen points sampled on one side of a slice: `steps` points at
+ * distances radius_px (j + offset) / steps, j = 0..steps-1, from the centre
+ * of pixel (x, y) along screen direction (dx, dy); points off the image, on
+ * background pixels or in the centre pixel are left out. Returns how many
+ * were written to xy. Shared by every horizon-based technique so they see
+ * the same samples (positions: ss_sample_position). steps = 0: both ends of
+ * every pixel cell the line crosses within the radius, which finds the exact
+ * horizon of the piecewise-planar height field. */
 int ss_side_samples(const ss_gbuffer *g, int x, int y, float dx, float dy, float radius_px, int steps, float offset,
-                    int (*xy)[2]);
+                    float (*xy)[2]);
 
 /* One slice's geometry and horizons, before integration. */
 typedef struct {
@@ -89,7 +95,16 @@ typedef struct {
     float n;       /* angle of the projected normal */
     float n_len;   /* length of the projected normal */
     float h1, h2;  /* horizon angles clamped to the normal's hemisphere */
+    float weight;  /* d psi / d phi: see gtao_slice_weight */
 } gtao_slice;
+
+/* Slices are spaced evenly in the screen angle phi, but the integral over
+ * slices runs over their rotation psi about the view vector v, and off the
+ * image centre psi is not linear in phi. With d = (cos phi, -sin phi, 0) the
+ * slice's image-plane direction, d psi / d phi = v.z / (1 - (d . v)^2)
+ * (averaging 1 over phi); each slice is weighted by it so the slice average
+ * estimates (1/pi) integral over psi exactly. 1 at the image centre. */
+float gtao_slice_weight(vec3 v, float phi);
 
 /* Searches the horizons of one slice at phi with step offset `offset`. */
 void gtao_search_slice(const ss_gbuffer *g, int x, int y, const gtao_params *p, float phi, float offset,

@@ -3,7 +3,9 @@
  * (with uniform weighting) if no obscurance is used"); see hbao.h. The
  * elevations are measured from the plane perpendicular to the view vector,
  * so sin(elevation) is the cosine GTAO measures from the view vector: the
- * two methods share the samples but not the integration. */
+ * two methods share the samples but not the integration. As in GTAO each
+ * direction is weighted by its rotation about the view vector per screen
+ * angle (gtao_slice_weight). */
 #include "realtime/hbao.h"
 
 #include <math.h>
@@ -22,12 +24,12 @@ static float direction_occlusion(const ss_gbuffer *g, const hbao_params *p, int 
      * rotated by 90 degrees in that plane: sin t = -(n.u) / |n in the plane|. */
     float nu = v3_dot(n, u), nv = v3_dot(n, v);
     float sin_t = -nu / sqrtf(nu * nu + nv * nv);
-    int xy[GTAO_MAX_STEPS][2];
+    float xy[GTAO_MAX_SAMPLES][2];
     float r_px = ss_radius_px(g, x, y, p->radius, p->max_radius_px);
     int count = ss_side_samples(g, x, y, dx, dy, r_px, p->steps, offset, xy);
     float sin_h = sin_t, occlusion = 0.0f;
     for (int i = 0; i < count; ++i) {
-        vec3 d = v3_sub(ss_view_position(g, xy[i][0], xy[i][1]), pc);
+        vec3 d = v3_sub(ss_sample_position(g, xy[i][0], xy[i][1]), pc);
         float len = v3_length(d);
         if (len > p->radius)
             continue;
@@ -38,7 +40,7 @@ static float direction_occlusion(const ss_gbuffer *g, const hbao_params *p, int 
         occlusion += w * (s - sin_h);
         sin_h = s;
     }
-    return occlusion;
+    return gtao_slice_weight(v, psi) * occlusion;
 }
 
 void hbao_frame(const ss_gbuffer *g, const hbao_params *p, int frame, float *ao)

@@ -43,7 +43,7 @@ void horizon_integrator_render(const ss_gbuffer *g, const gtao_params *p, int in
                 for (int k = 0; k < q.slices; ++k) {
                     gtao_slice s;
                     gtao_search_slice(g, x, y, &q, gtao_slice_angle(x, y, 0, k, q.slices, 0), 0.5f, &s);
-                    sum += horizon_arc_numeric(&s, n, q.weighting, intervals);
+                    sum += s.weight * horizon_arc_numeric(&s, n, q.weighting, intervals);
                 }
             }
             ao[i] = (float)(sum / q.slices);

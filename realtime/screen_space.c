@@ -1,8 +1,28 @@
 #include "realtime/screen_space.h"
 
+#include <math.h>
 #include <stdlib.h>
 
+#include "core/heightfield_model.h"
 #include "realtime/gtao_denoiser.h"
+
+int ss_gbuffer_from_image(const image *img, const char *what, ss_camera camera, ss_gbuffer *g, gt_error *e)
+{
+    static const char *const names[5] = {"depth.Z", "N.X", "N.Y", "N.Z", "mask.A"};
+    const float *planes[5];
+    for (int c = 0; c < 5; ++c)
+        if (!(planes[c] = image_channel_data(img, names[c])))
+            return gt_error_set(e, what, "missing channel %s (a G-buffer needs depth.Z, N.X, N.Y, N.Z and mask.A; "
+                                         "'gtlab render gbuffer' writes them)", names[c]);
+    g->width = img->width;
+    g->height = img->height;
+    g->depth = planes[0];
+    for (int a = 0; a < 3; ++a)
+        g->normal[a] = planes[1 + a];
+    g->mask = planes[4];
+    g->camera = camera;
+    return 0;
+}
 
 vec3 ss_view_position(const ss_gbuffer *g, int x, int y)
 {
@@ -11,6 +31,19 @@ vec3 ss_view_position(const ss_gbuffer *g, int x, int y)
     float sx = (2.0f * ((float)x + 0.5f) / (float)g->width - 1.0f) * c->tan_half_yfov * c->aspect;
     float sy = (1.0f - 2.0f * ((float)y + 0.5f) / (float)g->height) * c->tan_half_yfov;
     return v3(sx * d, sy * d, -d);
+}
+
+vec3 ss_sample_position(const ss_gbuffer *g, float fx, float fy)
+{
+    const ss_camera *c = &g->camera;
+    int x = (int)floorf(fx), y = (int)floorf(fy);
+    vec3 w = v3((2.0f * fx / (float)g->width - 1.0f) * c->tan_half_yfov * c->aspect,
+                (1.0f - 2.0f * fy / (float)g->height) * c->tan_half_yfov, -1.0f);
+    vec3 p = ss_view_position(g, x, y), n = ss_view_normal(g, x, y);
+    float nw = v3_dot(n, w), depth = v3_dot(n, p) / nw;
+    if (!(fabsf(nw) >= HEIGHTFIELD_MIN_FACING * v3_length(w) && depth > 0.0f))
+        depth = -p.z;
+    return v3_scale(w, depth);
 }
 
 vec3 ss_view_normal(const ss_gbuffer *g, int x, int y)

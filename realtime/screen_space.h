@@ -14,6 +14,8 @@
 #ifndef GTLAB_REALTIME_SCREEN_SPACE_H
 #define GTLAB_REALTIME_SCREEN_SPACE_H
 
+#include "core/error.h"
+#include "core/image.h"
 #include "core/vec3.h"
 
 typedef struct {
@@ -30,6 +32,11 @@ typedef struct {
     ss_camera camera;
 } ss_gbuffer;
 
+/* Points g at the channels of img (depth.Z, N.X, N.Y, N.Z, mask.A) with the
+ * given camera. Returns 0, or -1 with e = "<what>: missing channel <name>
+ * (...)" or a camera whose size differs from the image's. */
+int ss_gbuffer_from_image(const image *img, const char *what, ss_camera camera, ss_gbuffer *g, gt_error *e);
+
 static inline int ss_covered(const ss_gbuffer *g, int x, int y)
 {
     return x >= 0 && y >= 0 && x < g->width && y < g->height && g->mask[(long)y * g->width + x] != 0.0f;
@@ -37,6 +44,16 @@ static inline int ss_covered(const ss_gbuffer *g, int x, int y)
 
 /* View-space position of the surface seen through the centre of pixel (x, y). */
 vec3 ss_view_position(const ss_gbuffer *g, int x, int y);
+/* View-space position of the depth buffer's surface seen through screen
+ * point (fx, fy) (pixels, not snapped to a centre): the eye ray through the
+ * point meets the tangent plane of the pixel it falls in (that pixel's
+ * position and normal); the pixel's own depth when its plane is seen at a
+ * grazing angle (core/heightfield_model.h, shared with the height-field
+ * reference). Each pixel is a planar piece of the height field, so a sample
+ * stays exactly in its slice and a plane is reproduced exactly; snapping
+ * samples to pixel centres moves them off the slice and raises a plane's
+ * horizons above its tangent. */
+vec3 ss_sample_position(const ss_gbuffer *g, float fx, float fy);
 /* The pixel's normal rotated into view space. */
 vec3 ss_view_normal(const ss_gbuffer *g, int x, int y);
 /* A view-space direction rotated back into world space. */
