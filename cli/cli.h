@@ -17,6 +17,12 @@ int verb_merge(int argc, char **argv);
 int verb_compare(int argc, char **argv);
 int verb_bench(int argc, char **argv);
 int verb_all(int argc, char **argv);
+int verb_approx(int argc, char **argv);
+
+/* gtlab approx techniques (cli/approx_<name>.c). */
+int approx_gtao(int argc, char **argv);
+int approx_hbao(int argc, char **argv);
+int approx_vo(int argc, char **argv);
 
 /* Prints "gtlab: <message>" on stderr and returns EXIT_USER_ERROR. */
 int cli_fail(const gt_error *e);

@@ -11,24 +11,6 @@
 enum { HF_V, HF_VUNIFORM, HF_QUANTITY_COUNT };
 static const mc_quantity hf_quantities[HF_QUANTITY_COUNT] = {{"ao.V", 0}, {"ao.Vuniform", 0}};
 
-int heightfield_settings_init(heightfield_settings *hs, const gbuffer *gb, float max_distance)
-{
-    size_t n = (size_t)gb->width * (size_t)gb->height;
-    hs->gb = gb;
-    hs->max_distance = max_distance;
-    hs->depth = malloc(sizeof *hs->depth * n);
-    if (!hs->depth)
-        return -1;
-    for (size_t i = 0; i < n; ++i)
-        hs->depth[i] = gb->mask[i] ? camera_depth(&gb->view, gb->hits[i].p) : INFINITY;
-    return 0;
-}
-
-void heightfield_settings_free(heightfield_settings *hs)
-{
-    free(hs->depth);
-    hs->depth = NULL;
-}
 
 /* Camera-relative coordinates: (a, b, z) with z the depth along the axis and
  * the screen position x = (a / z / (tan aspect) + 1) W / 2, y = (1 - b / z / tan) H / 2. */
@@ -103,10 +85,73 @@ static int behind_at(const heightfield_settings *hs, const screen_segment *sg, f
     return hs->gb->mask[j] && z > surface_depth(hs, j, x, y) * (1.0f + 1e-5f);
 }
 
+/* Distance along the screen path (origin o, unit direction d) to the next
+ * multiple of `size` beyond cell c on one axis. */
+static float boundary(float o, float d, int c, int size)
+{
+    if (d > 0.0f)
+        return ((float)((c / size + 1) * size) - o) / d;
+    if (d < 0.0f)
+        return ((float)(c / size * size) - o) / d;
+    return INFINITY;
+}
+
+static float ray_depth(const screen_segment *sg, float u)
+{
+    float a = u * sg->z0 / ((1.0f - u) * sg->z1 + u * sg->z0);
+    return sg->z0 + a * (sg->z1 - sg->z0);
+}
+
 /* The screen path of the ray crosses pixel cells; in each, the ray is behind
  * the cell's plane on at most one side of a single point (the ray and the
  * plane are both straight), so testing the ray just inside both ends of every
- * cell it crosses decides exactly whether it passes behind the height field. */
+ * cell it crosses decides exactly whether it passes behind the height field.
+ * Tiles whose nearest surface is farther than the ray's depth through them
+ * (the ray's depth is monotonic) are crossed in one step. */
+/* The nearest the surface of pixel j comes to the camera: its plane's depth
+ * is extreme at the cell's corners (1/depth is linear across it). */
+static float cell_min_depth(const heightfield_settings *hs, int x, int y)
+{
+    long j = (long)y * hs->gb->width + x;
+    float m = hs->depth[j];
+    for (int k = 0; k < 4; ++k)
+        m = fminf(m, surface_depth(hs, j, (float)(x + (k & 1)), (float)(y + (k >> 1))));
+    return m;
+}
+
+int heightfield_settings_init(heightfield_settings *hs, const gbuffer *gb, float max_distance)
+{
+    size_t n = (size_t)gb->width * (size_t)gb->height;
+    hs->gb = gb;
+    hs->max_distance = max_distance;
+    hs->tiles_x = (gb->width + HEIGHTFIELD_TILE - 1) / HEIGHTFIELD_TILE;
+    int tiles_y = (gb->height + HEIGHTFIELD_TILE - 1) / HEIGHTFIELD_TILE;
+    hs->depth = malloc(sizeof *hs->depth * n);
+    hs->tile_min = malloc(sizeof *hs->tile_min * (size_t)hs->tiles_x * (size_t)tiles_y);
+    if (!hs->depth || !hs->tile_min) {
+        heightfield_settings_free(hs);
+        return -1;
+    }
+    for (size_t i = 0; i < n; ++i)
+        hs->depth[i] = gb->mask[i] ? camera_depth(&gb->view, gb->hits[i].p) : INFINITY;
+    for (int t = 0; t < hs->tiles_x * tiles_y; ++t)
+        hs->tile_min[t] = INFINITY;
+    for (int y = 0; y < gb->height; ++y)
+        for (int x = 0; x < gb->width; ++x) {
+            float *m = &hs->tile_min[(y / HEIGHTFIELD_TILE) * hs->tiles_x + x / HEIGHTFIELD_TILE];
+            if (gb->mask[(size_t)y * gb->width + x])
+                *m = fminf(*m, cell_min_depth(hs, x, y));
+        }
+    return 0;
+}
+
+void heightfield_settings_free(heightfield_settings *hs)
+{
+    free(hs->depth);
+    free(hs->tile_min);
+    hs->depth = hs->tile_min = NULL;
+}
+
 int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d)
 {
     const camera_view *v = &hs->gb->view;
@@ -118,28 +163,29 @@ int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d)
     sg.x_start = (int)floorf(sg.x0);
     sg.y_start = (int)floorf(sg.y0);
     float length = hypotf(sg.x1 - sg.x0, sg.y1 - sg.y0);
-    float u_end = clip_to_image(sg.x0, sg.y0, sg.x1, sg.y1, (float)v->width, (float)v->height);
     if (!(length > 0.0f))
         return 1;
-    /* Walk the cells: tau is the distance along the screen path in pixels. */
+    float u_end = clip_to_image(sg.x0, sg.y0, sg.x1, sg.y1, (float)v->width, (float)v->height);
     float dx = (sg.x1 - sg.x0) / length, dy = (sg.y1 - sg.y0) / length, tau_end = u_end * length;
-    float step_x = dx != 0.0f ? fabsf(1.0f / dx) : INFINITY, step_y = dy != 0.0f ? fabsf(1.0f / dy) : INFINITY;
-    float next_x = dx > 0 ? ((float)sg.x_start + 1.0f - sg.x0) * step_x : (sg.x0 - (float)sg.x_start) * step_x;
-    float next_y = dy > 0 ? ((float)sg.y_start + 1.0f - sg.y0) * step_y : (sg.y0 - (float)sg.y_start) * step_y;
-    if (dx == 0.0f)
-        next_x = INFINITY;
-    if (dy == 0.0f)
-        next_y = INFINITY;
     const float eps = 1e-3f;
     for (float tau = 0.0f; tau < tau_end;) {
-        float tau_next = fminf(fminf(next_x, next_y), tau_end);
-        if ((tau > 0.0f && behind_at(hs, &sg, (tau + eps) / length)) || behind_at(hs, &sg, (tau_next - eps) / length))
+        int cx = (int)floorf(sg.x0 + (tau + eps) * dx), cy = (int)floorf(sg.y0 + (tau + eps) * dy);
+        if (cx < 0 || cy < 0 || cx >= v->width || cy >= v->height)
+            break;
+        float tile_exit = fminf(fminf(boundary(sg.x0, dx, cx, HEIGHTFIELD_TILE), boundary(sg.y0, dy, cy, HEIGHTFIELD_TILE)),
+                                tau_end);
+        /* Nudged positions can round back onto the boundary just crossed when
+         * the path is nearly parallel to it: always move on. */
+        tile_exit = fmaxf(tile_exit, tau + eps);
+        float tile_min = hs->tile_min[(cy / HEIGHTFIELD_TILE) * hs->tiles_x + cx / HEIGHTFIELD_TILE];
+        if (fmaxf(ray_depth(&sg, tau / length), ray_depth(&sg, tile_exit / length)) <= tile_min) {
+            tau = tile_exit;
+            continue;
+        }
+        float cell_exit = fmaxf(fminf(fminf(boundary(sg.x0, dx, cx, 1), boundary(sg.y0, dy, cy, 1)), tau_end), tau + eps);
+        if ((tau > 0.0f && behind_at(hs, &sg, (tau + eps) / length)) || behind_at(hs, &sg, (cell_exit - eps) / length))
             return 0;
-        if (next_x <= next_y)
-            next_x += step_x;
-        else
-            next_y += step_y;
-        tau = tau_next;
+        tau = cell_exit;
     }
     return 1;
 }

@@ -16,9 +16,13 @@
 
 #include "raytracer/render_loop.h"
 
+enum { HEIGHTFIELD_TILE = 8 };
+
 typedef struct {
     const gbuffer *gb;
     float *depth;       /* per-pixel depth along the camera axis (owned) */
+    float *tile_min;    /* per tile of HEIGHTFIELD_TILE^2 pixels, the nearest depth of its surfaces (owned) */
+    int tiles_x;
     float max_distance; /* V = 1 beyond it along the ray; INFINITY for none */
 } heightfield_settings;
 

@@ -21,6 +21,7 @@
 #include "realtime/gtao.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -113,6 +114,15 @@ int gtao_preset(const char *name, gtao_params *p)
     return -1;
 }
 
+void gtao_params_text(const gtao_params *p, char *text, size_t size)
+{
+    snprintf(text, size,
+             "weighting=%s slices=%d steps=%d radius=%.9g falloff=%.9g max_radius_px=%.9g thickness=%.9g pattern=%d "
+             "fast_math=%d denoise=%d frames=%d",
+             p->weighting == GTAO_UNIFORM ? "uniform" : "cosine", p->slices, p->steps, p->radius, p->falloff,
+             p->max_radius_px, p->thickness, p->pattern, p->fast_math, p->denoise, p->frames);
+}
+
 static int keep_sample(const ss_gbuffer *g, int x, int y, float fx, float fy, float (*xy)[2], int count)
 {
     int sx = (int)floorf(fx), sy = (int)floorf(fy);
@@ -175,7 +185,13 @@ static float attenuation(float distance, const gtao_params *p)
     return fminf(fmaxf((p->radius - distance) / fade, 0.0f), 1.0f);
 }
 
-static float acos_of(float c, int fast) { return fast ? gtao_fast_acos(c) : acosf(fminf(fmaxf(c, -1.0f), 1.0f)); }
+/* Cosines computed from rounded positions may leave [-1, 1] by an ulp; the
+ * fast acos would then take the fast sqrt of a negative number. */
+static float acos_of(float c, int fast)
+{
+    c = fminf(fmaxf(c, -1.0f), 1.0f);
+    return fast ? gtao_fast_acos(c) : acosf(c);
+}
 
 /* Cosine of the horizon on one side, from near to far: a sample raises the
  * horizon to its own cosine (faded towards `low`, the side's hemisphere

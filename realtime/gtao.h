@@ -16,6 +16,7 @@
 #ifndef GTLAB_REALTIME_GTAO_H
 #define GTLAB_REALTIME_GTAO_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "realtime/screen_space.h"
@@ -77,6 +78,8 @@ typedef struct {
  * no denoiser, exact maths). Radius and falloff are left to the caller. */
 int gtao_preset(const char *name, gtao_params *p);
 extern const char *const gtao_preset_names[]; /* NULL-terminated */
+/* "weighting=cosine slices=1 ..." for headers and reports. */
+void gtao_params_text(const gtao_params *p, char *text, size_t size);
 
 /* The screen points sampled on one side of a slice: `steps` points at
  * distances radius_px (j + offset) / steps, j = 0..steps-1, from the centre

@@ -9,6 +9,7 @@
 #include "realtime/hbao.h"
 
 #include <math.h>
+#include <stdio.h>
 
 #include "realtime/gtao.h"
 
@@ -69,4 +70,10 @@ static void frame_planes(const ss_gbuffer *g, const void *params, int frame, flo
 int hbao_render(const ss_gbuffer *g, const hbao_params *p, float *ao)
 {
     return ss_denoised_frames(g, frame_planes, p, p->frames, p->denoise, 1, &ao);
+}
+
+void hbao_params_text(const hbao_params *p, char *text, size_t size)
+{
+    snprintf(text, size, "directions=%d steps=%d radius=%.9g max_radius_px=%.9g attenuation=%d pattern=%d denoise=%d frames=%d",
+             p->directions, p->steps, p->radius, p->max_radius_px, p->attenuation, p->pattern, p->denoise, p->frames);
 }

@@ -10,6 +10,8 @@
 #ifndef GTLAB_REALTIME_HBAO_H
 #define GTLAB_REALTIME_HBAO_H
 
+#include <stddef.h>
+
 #include "realtime/screen_space.h"
 
 typedef struct {
@@ -24,5 +26,6 @@ typedef struct {
 
 void hbao_frame(const ss_gbuffer *g, const hbao_params *p, int frame, float *ao);
 int hbao_render(const ss_gbuffer *g, const hbao_params *p, float *ao);
+void hbao_params_text(const hbao_params *p, char *text, size_t size);
 
 #endif

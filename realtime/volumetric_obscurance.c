@@ -3,6 +3,7 @@
 #include "realtime/volumetric_obscurance.h"
 
 #include <math.h>
+#include <stdio.h>
 
 #include "realtime/gtao.h"
 
@@ -57,4 +58,10 @@ static void frame_planes(const ss_gbuffer *g, const void *params, int frame, flo
 int vo_render(const ss_gbuffer *g, const vo_params *p, float *ao)
 {
     return ss_denoised_frames(g, frame_planes, p, p->frames, p->denoise, 1, &ao);
+}
+
+void vo_params_text(const vo_params *p, char *text, size_t size)
+{
+    snprintf(text, size, "samples=4 radius=%.9g max_radius_px=%.9g pattern=%d denoise=%d frames=%d", p->radius,
+             p->max_radius_px, p->pattern, p->denoise, p->frames);
 }

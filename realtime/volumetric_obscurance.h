@@ -11,6 +11,8 @@
 #ifndef GTLAB_REALTIME_VOLUMETRIC_OBSCURANCE_H
 #define GTLAB_REALTIME_VOLUMETRIC_OBSCURANCE_H
 
+#include <stddef.h>
+
 #include "realtime/screen_space.h"
 
 typedef struct {
@@ -22,5 +24,6 @@ typedef struct {
 
 void vo_frame(const ss_gbuffer *g, const vo_params *p, int frame, float *ao);
 int vo_render(const ss_gbuffer *g, const vo_params *p, float *ao);
+void vo_params_text(const vo_params *p, char *text, size_t size);
 
 #endif
