@@ -25,6 +25,8 @@ int all_stage_ao_references(all_context *ctx, gt_error *e);
 /* Ray throughput: raw Embree against the AO reference loop. */
 int all_stage_ray_throughput(all_context *ctx, gt_error *e);
 
+/* GTAO, HBAO and VO against the height-field and 3-D AO references. */
+int all_stage_gtao(all_context *ctx, gt_error *e);
 /* "<output_dir>/<sub>" with the folder created. */
 int all_make_dir(const all_context *ctx, const char *sub, char *path, size_t size, gt_error *e);
 

@@ -24,6 +24,9 @@ int approx_gtao(int argc, char **argv);
 int approx_hbao(int argc, char **argv);
 int approx_vo(int argc, char **argv);
 
+/* gtlab bench gtao (cli/bench_gtao.c). */
+int bench_gtao(int argc, char **argv);
+
 /* Prints "gtlab: <message>" on stderr and returns EXIT_USER_ERROR. */
 int cli_fail(const gt_error *e);
 /* Prints "gtlab: <subject>: <formatted problem>" and returns EXIT_USER_ERROR. */

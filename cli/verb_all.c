@@ -21,6 +21,7 @@ typedef struct {
 
 static const all_stage stages[] = {
     {"AO references", all_stage_ao_references},
+    {"GTAO validation", all_stage_gtao},
     {"ray throughput", all_stage_ray_throughput},
 };
 

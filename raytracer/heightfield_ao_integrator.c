@@ -106,10 +106,12 @@ static float ray_depth(const screen_segment *sg, float u)
  * the cell's plane on at most one side of a single point (the ray and the
  * plane are both straight), so testing the ray just inside both ends of every
  * cell it crosses decides exactly whether it passes behind the height field.
- * Tiles whose nearest surface is farther than the ray's depth through them
- * (the ray's depth is monotonic) are crossed in one step. */
+ * Tiles (32x32, then 8x8) whose nearest surface is farther than the ray's
+ * depth through them (the ray's depth is monotonic) are crossed in one step. */
 /* The nearest the surface of pixel j comes to the camera: its plane's depth
  * is extreme at the cell's corners (1/depth is linear across it). */
+const int heightfield_tile_sizes[HEIGHTFIELD_LEVELS] = {32, 8};
+
 static float cell_min_depth(const heightfield_settings *hs, int x, int y)
 {
     long j = (long)y * hs->gb->width + x;
@@ -124,23 +126,34 @@ int heightfield_settings_init(heightfield_settings *hs, const gbuffer *gb, float
     size_t n = (size_t)gb->width * (size_t)gb->height;
     hs->gb = gb;
     hs->max_distance = max_distance;
-    hs->tiles_x = (gb->width + HEIGHTFIELD_TILE - 1) / HEIGHTFIELD_TILE;
-    int tiles_y = (gb->height + HEIGHTFIELD_TILE - 1) / HEIGHTFIELD_TILE;
+    int tiles_y[HEIGHTFIELD_LEVELS], ok = 1;
     hs->depth = malloc(sizeof *hs->depth * n);
-    hs->tile_min = malloc(sizeof *hs->tile_min * (size_t)hs->tiles_x * (size_t)tiles_y);
-    if (!hs->depth || !hs->tile_min) {
+    for (int level = 0; level < HEIGHTFIELD_LEVELS; ++level) {
+        int size = heightfield_tile_sizes[level];
+        hs->tiles_x[level] = (gb->width + size - 1) / size;
+        tiles_y[level] = (gb->height + size - 1) / size;
+        hs->tile_min[level] = malloc(sizeof(float) * (size_t)hs->tiles_x[level] * (size_t)tiles_y[level]);
+        ok &= hs->tile_min[level] != NULL;
+    }
+    if (!hs->depth || !ok) {
         heightfield_settings_free(hs);
         return -1;
     }
     for (size_t i = 0; i < n; ++i)
         hs->depth[i] = gb->mask[i] ? camera_depth(&gb->view, gb->hits[i].p) : INFINITY;
-    for (int t = 0; t < hs->tiles_x * tiles_y; ++t)
-        hs->tile_min[t] = INFINITY;
+    for (int level = 0; level < HEIGHTFIELD_LEVELS; ++level)
+        for (int t = 0; t < hs->tiles_x[level] * tiles_y[level]; ++t)
+            hs->tile_min[level][t] = INFINITY;
     for (int y = 0; y < gb->height; ++y)
         for (int x = 0; x < gb->width; ++x) {
-            float *m = &hs->tile_min[(y / HEIGHTFIELD_TILE) * hs->tiles_x + x / HEIGHTFIELD_TILE];
-            if (gb->mask[(size_t)y * gb->width + x])
-                *m = fminf(*m, cell_min_depth(hs, x, y));
+            if (!gb->mask[(size_t)y * gb->width + x])
+                continue;
+            float m = cell_min_depth(hs, x, y);
+            for (int level = 0; level < HEIGHTFIELD_LEVELS; ++level) {
+                int size = heightfield_tile_sizes[level];
+                float *t = &hs->tile_min[level][(y / size) * hs->tiles_x[level] + x / size];
+                *t = fminf(*t, m);
+            }
         }
     return 0;
 }
@@ -148,8 +161,11 @@ int heightfield_settings_init(heightfield_settings *hs, const gbuffer *gb, float
 void heightfield_settings_free(heightfield_settings *hs)
 {
     free(hs->depth);
-    free(hs->tile_min);
-    hs->depth = hs->tile_min = NULL;
+    hs->depth = NULL;
+    for (int level = 0; level < HEIGHTFIELD_LEVELS; ++level) {
+        free(hs->tile_min[level]);
+        hs->tile_min[level] = NULL;
+    }
 }
 
 int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d)
@@ -172,16 +188,21 @@ int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d)
         int cx = (int)floorf(sg.x0 + (tau + eps) * dx), cy = (int)floorf(sg.y0 + (tau + eps) * dy);
         if (cx < 0 || cy < 0 || cx >= v->width || cy >= v->height)
             break;
-        float tile_exit = fminf(fminf(boundary(sg.x0, dx, cx, HEIGHTFIELD_TILE), boundary(sg.y0, dy, cy, HEIGHTFIELD_TILE)),
-                                tau_end);
-        /* Nudged positions can round back onto the boundary just crossed when
-         * the path is nearly parallel to it: always move on. */
-        tile_exit = fmaxf(tile_exit, tau + eps);
-        float tile_min = hs->tile_min[(cy / HEIGHTFIELD_TILE) * hs->tiles_x + cx / HEIGHTFIELD_TILE];
-        if (fmaxf(ray_depth(&sg, tau / length), ray_depth(&sg, tile_exit / length)) <= tile_min) {
-            tau = tile_exit;
-            continue;
+        int skipped = 0;
+        for (int level = 0; level < HEIGHTFIELD_LEVELS && !skipped; ++level) {
+            int size = heightfield_tile_sizes[level];
+            float tile_exit = fminf(fminf(boundary(sg.x0, dx, cx, size), boundary(sg.y0, dy, cy, size)), tau_end);
+            /* Nudged positions can round back onto the boundary just crossed
+             * when the path is nearly parallel to it: always move on. */
+            tile_exit = fmaxf(tile_exit, tau + eps);
+            float tile_min = hs->tile_min[level][(cy / size) * hs->tiles_x[level] + cx / size];
+            if (fmaxf(ray_depth(&sg, tau / length), ray_depth(&sg, tile_exit / length)) <= tile_min) {
+                tau = tile_exit;
+                skipped = 1;
+            }
         }
+        if (skipped)
+            continue;
         float cell_exit = fmaxf(fminf(fminf(boundary(sg.x0, dx, cx, 1), boundary(sg.y0, dy, cy, 1)), tau_end), tau + eps);
         if ((tau > 0.0f && behind_at(hs, &sg, (tau + eps) / length)) || behind_at(hs, &sg, (cell_exit - eps) / length))
             return 0;

@@ -16,13 +16,14 @@
 
 #include "raytracer/render_loop.h"
 
-enum { HEIGHTFIELD_TILE = 8 };
+enum { HEIGHTFIELD_LEVELS = 2 };
+extern const int heightfield_tile_sizes[HEIGHTFIELD_LEVELS]; /* tile sides in pixels, coarse to fine */
 
 typedef struct {
     const gbuffer *gb;
     float *depth;       /* per-pixel depth along the camera axis (owned) */
-    float *tile_min;    /* per tile of HEIGHTFIELD_TILE^2 pixels, the nearest depth of its surfaces (owned) */
-    int tiles_x;
+    float *tile_min[HEIGHTFIELD_LEVELS]; /* per tile of each level, the nearest depth of its surfaces (owned) */
+    int tiles_x[HEIGHTFIELD_LEVELS];
     float max_distance; /* V = 1 beyond it along the ray; INFINITY for none */
 } heightfield_settings;
 

@@ -146,7 +146,7 @@ static int cell_samples(const ss_gbuffer *g, int x, int y, float dx, float dy, f
     int count = 0;
     float t = 0.0f;
     while (t < radius_px && count + 2 <= GTAO_MAX_SAMPLES) {
-        float t_next = fminf(fminf(next_x, next_y), radius_px);
+        float t_next = ss_minf(ss_minf(next_x, next_y), radius_px);
         if (t > 0.0f)
             count = keep_sample(g, x, y, ox + (t + eps) * dx, oy + (t + eps) * dy, xy, count);
         count = keep_sample(g, x, y, ox + (t_next - eps) * dx, oy + (t_next - eps) * dy, xy, count);
@@ -182,14 +182,14 @@ static float attenuation(float distance, const gtao_params *p)
     float fade = p->falloff * p->radius;
     if (fade <= 0.0f)
         return distance <= p->radius ? 1.0f : 0.0f;
-    return fminf(fmaxf((p->radius - distance) / fade, 0.0f), 1.0f);
+    return ss_minf(ss_maxf((p->radius - distance) / fade, 0.0f), 1.0f);
 }
 
 /* Cosines computed from rounded positions may leave [-1, 1] by an ulp; the
  * fast acos would then take the fast sqrt of a negative number. */
 static float acos_of(float c, int fast)
 {
-    c = fminf(fmaxf(c, -1.0f), 1.0f);
+    c = ss_minf(ss_maxf(c, -1.0f), 1.0f);
     return fast ? gtao_fast_acos(c) : acosf(c);
 }
 
@@ -209,7 +209,7 @@ static float side_horizon_cos(const ss_gbuffer *g, vec3 pc, vec3 v, const float 
         if (c > horizon)
             horizon = c;
         else
-            horizon += p->thickness * (fmaxf(c, low) - horizon);
+            horizon += p->thickness * (ss_maxf(c, low) - horizon);
     }
     return horizon;
 }
@@ -248,8 +248,8 @@ void gtao_search_slice(const ss_gbuffer *g, int x, int y, const gtao_params *p, 
     int c1n = ss_side_samples(g, x, y, -dx, -dy, r, p->steps, offset, xy);
     float c1 = side_horizon_cos(g, pc, s->v, (const float(*)[2])xy, c1n, sin_n, p);
     float h1 = -acos_of(c1, p->fast_math), h2 = acos_of(c2, p->fast_math);
-    s->h1 = s->n + fmaxf(h1 - s->n, -0.5f * GTAO_PI);
-    s->h2 = s->n + fminf(h2 - s->n, 0.5f * GTAO_PI);
+    s->h1 = s->n + ss_maxf(h1 - s->n, -0.5f * GTAO_PI);
+    s->h2 = s->n + ss_minf(h2 - s->n, 0.5f * GTAO_PI);
 }
 
 /* The slice's visibility contribution: cosine-weighted arcs are weighted by

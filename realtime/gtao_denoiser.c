@@ -26,7 +26,7 @@ static float filter_pixel(const ss_gbuffer *g, int shift, const float *in, int x
                 continue;
             long j = (long)(y + oy) * g->width + x + ox;
             float plane = zc + sx * (float)ox + sy * (float)oy;
-            float w = fminf(fmaxf(1.0f - fabsf(g->depth[j] - plane) / (0.1f * zc), 0.0f), 1.0f);
+            float w = ss_minf(ss_maxf(1.0f - fabsf(g->depth[j] - plane) / (0.1f * zc), 0.0f), 1.0f);
             sum += w * in[j];
             weight += w;
         }

@@ -67,7 +67,7 @@ float ss_pixels_per_unit(const ss_gbuffer *g, float depth)
 
 float ss_radius_px(const ss_gbuffer *g, int x, int y, float radius, float max_px)
 {
-    return fminf(radius * ss_pixels_per_unit(g, g->depth[(long)y * g->width + x]), max_px);
+    return ss_minf(radius * ss_pixels_per_unit(g, g->depth[(long)y * g->width + x]), max_px);
 }
 
 int ss_denoised_frames(const ss_gbuffer *g, ss_frame_fn frame_fn, const void *params, int frames, int denoise,

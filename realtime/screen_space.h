@@ -37,6 +37,12 @@ typedef struct {
  * (...)" or a camera whose size differs from the image's. */
 int ss_gbuffer_from_image(const image *img, const char *what, ss_camera camera, ss_gbuffer *g, gt_error *e);
 
+/* min/max without libm's NaN handling, which GCC does not inline (operands
+ * here are never NaN): the horizon loops call them per sample. */
+static inline float ss_minf(float a, float b) { return a < b ? a : b; }
+static inline float ss_maxf(float a, float b) { return a > b ? a : b; }
+static inline float ss_clampf(float x, float lo, float hi) { return ss_minf(ss_maxf(x, lo), hi); }
+
 static inline int ss_covered(const ss_gbuffer *g, int x, int y)
 {
     return x >= 0 && y >= 0 && x < g->width && y < g->height && g->mask[(long)y * g->width + x] != 0.0f;

@@ -13,7 +13,7 @@
 static void line_sample(const ss_gbuffer *g, int x, int y, float r_px, float radius, float ox, float oy, float *full,
                         float *occupied)
 {
-    float half = radius * sqrtf(fmaxf(1.0f - ox * ox - oy * oy, 0.0f));
+    float half = radius * sqrtf(ss_maxf(1.0f - ox * ox - oy * oy, 0.0f));
     int sx = (int)floorf((float)x + 0.5f + ox * r_px), sy = (int)floorf((float)y + 0.5f + oy * r_px);
     *full = 2.0f * half;
     if (!ss_covered(g, sx, sy)) {
@@ -21,7 +21,7 @@ static void line_sample(const ss_gbuffer *g, int x, int y, float r_px, float rad
         return;
     }
     float zc = g->depth[(long)y * g->width + x], zs = g->depth[(long)sy * g->width + sx];
-    *occupied = fminf(fmaxf(zc + half - fmaxf(zs, zc - half), 0.0f), 2.0f * half);
+    *occupied = ss_minf(ss_maxf(zc + half - ss_maxf(zs, zc - half), 0.0f), 2.0f * half);
 }
 
 void vo_frame(const ss_gbuffer *g, const vo_params *p, int frame, float *ao)
@@ -46,7 +46,7 @@ void vo_frame(const ss_gbuffer *g, const vo_params *p, int frame, float *ao)
                 full += f;
                 occupied += o;
             }
-            ao[i] = fminf(1.0f, 2.0f * (1.0f - occupied / full));
+            ao[i] = ss_minf(1.0f, 2.0f * (1.0f - occupied / full));
         }
 }
 
