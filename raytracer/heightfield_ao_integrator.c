@@ -27,8 +27,8 @@ static void to_screen(const camera_view *v, vec3 c, float *x, float *y)
 }
 
 /* Depth of pixel j's surface (its tangent plane) along the eye ray through
- * screen point (x, y); the centre depth when the plane is seen at a grazing
- * angle (core/heightfield_model.h). */
+ * screen point (x, y), clamped to its neighbourhood's depths
+ * (core/heightfield_model.h). */
 static float surface_depth(const heightfield_settings *hs, long j, float x, float y)
 {
     const camera_view *v = &hs->gb->view;
@@ -38,7 +38,9 @@ static float surface_depth(const heightfield_settings *hs, long j, float x, floa
     vec3 w = v3_add(v->forward, v3_add(v3_scale(v->right, sx), v3_scale(v->up, sy)));
     float nw = v3_dot(h->ng, w);
     float depth = v3_dot(h->ng, v3_sub(h->p, v->origin)) / nw;
-    return fabsf(nw) >= HEIGHTFIELD_MIN_FACING * v3_length(w) && depth > 0.0f ? depth : hs->depth[j];
+    if (!(fabsf(nw) >= HEIGHTFIELD_MIN_FACING * v3_length(w) && depth > 0.0f))
+        depth = hs->depth[j];
+    return fminf(fmaxf(depth, hs->depth_lo[j]), hs->depth_hi[j]);
 }
 
 /* The ray's end: where it reaches max_distance, or just short of the camera
@@ -121,6 +123,11 @@ static float cell_min_depth(const heightfield_settings *hs, int x, int y)
     return m;
 }
 
+static int covered(const gbuffer *gb, int x, int y)
+{
+    return x >= 0 && y >= 0 && x < gb->width && y < gb->height && gb->mask[(size_t)y * gb->width + x];
+}
+
 int heightfield_settings_init(heightfield_settings *hs, const gbuffer *gb, float max_distance)
 {
     size_t n = (size_t)gb->width * (size_t)gb->height;
@@ -128,6 +135,9 @@ int heightfield_settings_init(heightfield_settings *hs, const gbuffer *gb, float
     hs->max_distance = max_distance;
     int tiles_y[HEIGHTFIELD_LEVELS], ok = 1;
     hs->depth = malloc(sizeof *hs->depth * n);
+    hs->depth_lo = malloc(sizeof *hs->depth_lo * n);
+    hs->depth_hi = malloc(sizeof *hs->depth_hi * n);
+    ok &= hs->depth_lo && hs->depth_hi;
     for (int level = 0; level < HEIGHTFIELD_LEVELS; ++level) {
         int size = heightfield_tile_sizes[level];
         hs->tiles_x[level] = (gb->width + size - 1) / size;
@@ -141,6 +151,25 @@ int heightfield_settings_init(heightfield_settings *hs, const gbuffer *gb, float
     }
     for (size_t i = 0; i < n; ++i)
         hs->depth[i] = gb->mask[i] ? camera_depth(&gb->view, gb->hits[i].p) : INFINITY;
+    for (int y = 0; y < gb->height; ++y)
+        for (int x = 0; x < gb->width; ++x) {
+            size_t i = (size_t)y * gb->width + x;
+            hs->depth_lo[i] = hs->depth_hi[i] = hs->depth[i];
+            if (!gb->mask[i])
+                continue;
+            for (int k = 0; k < 9; ++k) {
+                int ox = k % 3 - 1, oy = k / 3 - 1;
+                float d;
+                if (covered(gb, x + ox, y + oy))
+                    d = hs->depth[(size_t)(y + oy) * gb->width + x + ox];
+                else if (covered(gb, x - ox, y - oy)) /* the missing side mirrored */
+                    d = 2.0f * hs->depth[i] - hs->depth[(size_t)(y - oy) * gb->width + x - ox];
+                else
+                    continue;
+                hs->depth_lo[i] = fminf(hs->depth_lo[i], d);
+                hs->depth_hi[i] = fmaxf(hs->depth_hi[i], d);
+            }
+        }
     for (int level = 0; level < HEIGHTFIELD_LEVELS; ++level)
         for (int t = 0; t < hs->tiles_x[level] * tiles_y[level]; ++t)
             hs->tile_min[level][t] = INFINITY;
@@ -161,7 +190,9 @@ int heightfield_settings_init(heightfield_settings *hs, const gbuffer *gb, float
 void heightfield_settings_free(heightfield_settings *hs)
 {
     free(hs->depth);
-    hs->depth = NULL;
+    free(hs->depth_lo);
+    free(hs->depth_hi);
+    hs->depth = hs->depth_lo = hs->depth_hi = NULL;
     for (int level = 0; level < HEIGHTFIELD_LEVELS; ++level) {
         free(hs->tile_min[level]);
         hs->tile_min[level] = NULL;

@@ -5,8 +5,9 @@
  * camera with infinite thickness: a point of the ray is inside the scene when
  * it lies farther along its eye ray than the surface the G-buffer holds
  * there. Each pixel's surface is its tangent plane (geometric normal) over the
- * pixel's footprint, so planes are reproduced exactly, unless seen at a
- * grazing angle (core/heightfield_model.h); background pixels hold nothing. A ray that leaves the image or crosses the camera plane escapes
+ * pixel's footprint, clamped to its neighbours' depths, so planes are
+ * reproduced exactly (core/heightfield_model.h); background pixels hold
+ * nothing. A ray that leaves the image or crosses the camera plane escapes
  * (nothing beyond the screen is known). This is the quantity GTAO computes
  * exactly, given enough slices and samples, so GTAO minus this reference is
  * pure sampling/denoising error; this reference minus the 3-D one is the
@@ -22,6 +23,7 @@ extern const int heightfield_tile_sizes[HEIGHTFIELD_LEVELS]; /* tile sides in pi
 typedef struct {
     const gbuffer *gb;
     float *depth;       /* per-pixel depth along the camera axis (owned) */
+    float *depth_lo, *depth_hi; /* per pixel, the range of its and its neighbours' depths (owned) */
     float *tile_min[HEIGHTFIELD_LEVELS]; /* per tile of each level, the nearest depth of its surfaces (owned) */
     int tiles_x[HEIGHTFIELD_LEVELS];
     float max_distance; /* V = 1 beyond it along the ray; INFINITY for none */

@@ -43,7 +43,20 @@ vec3 ss_sample_position(const ss_gbuffer *g, float fx, float fy)
     float nw = v3_dot(n, w), depth = v3_dot(n, p) / nw;
     if (!(fabsf(nw) >= HEIGHTFIELD_MIN_FACING * v3_length(w) && depth > 0.0f))
         depth = -p.z;
-    return v3_scale(w, depth);
+    float lo = -p.z, hi = -p.z;
+    for (int k = 0; k < 9; ++k) {
+        int ox = k % 3 - 1, oy = k / 3 - 1;
+        float d;
+        if (ss_covered(g, x + ox, y + oy))
+            d = g->depth[(long)(y + oy) * g->width + x + ox];
+        else if (ss_covered(g, x - ox, y - oy)) /* the missing side mirrored */
+            d = -2.0f * p.z - g->depth[(long)(y - oy) * g->width + x - ox];
+        else
+            continue;
+        lo = ss_minf(lo, d);
+        hi = ss_maxf(hi, d);
+    }
+    return v3_scale(w, ss_clampf(depth, lo, hi));
 }
 
 vec3 ss_view_normal(const ss_gbuffer *g, int x, int y)

@@ -53,8 +53,8 @@ vec3 ss_view_position(const ss_gbuffer *g, int x, int y);
 /* View-space position of the depth buffer's surface seen through screen
  * point (fx, fy) (pixels, not snapped to a centre): the eye ray through the
  * point meets the tangent plane of the pixel it falls in (that pixel's
- * position and normal); the pixel's own depth when its plane is seen at a
- * grazing angle (core/heightfield_model.h, shared with the height-field
+ * position and normal), clamped to the depths of the pixel and its
+ * neighbours (core/heightfield_model.h, shared with the height-field
  * reference). Each pixel is a planar piece of the height field, so a sample
  * stays exactly in its slice and a plane is reproduced exactly; snapping
  * samples to pixel centres moves them off the slice and raises a plane's
