@@ -195,6 +195,15 @@ static void add_rows(all_context *ctx, const char *scene_name, const variant *v,
  * expected squared difference is the true one plus the mean variance. */
 static double denoised_rmse(double rmse, double mean_variance) { return sqrt(fmax(rmse * rmse - mean_variance, 0.0)); }
 
+/* A noise-corrected RMSE, or the plain fact that it is within the noise. */
+static void noise_corrected_text(double rmse, char *text, size_t size)
+{
+    if (rmse > 0.0)
+        snprintf(text, size, "%.4f", rmse);
+    else
+        snprintf(text, size, "below the references' noise");
+}
+
 static void add_statement(all_context *ctx, const char *scene_name, const variant *v, int count, double hf_vs_3d_rmse,
                           double hf_vs_3d_dssim, double hf_floor, double hf_variance, double ref_variance)
 {
@@ -210,17 +219,22 @@ static void add_statement(all_context *ctx, const char *scene_name, const varian
     double sampling_rmse = denoised_rmse(medium->s.rmse_hf, hf_variance);
     double model_rmse = denoised_rmse(hf_vs_3d_rmse, hf_variance + ref_variance);
     double sampling = sampling_rmse * sampling_rmse, model = model_rmse * model_rmse;
+    char model_text[64], sampling_text[64], converged_text[64];
+    noise_corrected_text(model_rmse, model_text, sizeof model_text);
+    noise_corrected_text(sampling_rmse, sampling_text, sizeof sampling_text);
+    noise_corrected_text(denoised_rmse(converged->s.rmse_hf, hf_variance), converged_text, sizeof converged_text);
     report_paragraph(ctx->doc,
                      "%s: the height-field assumption alone (height-field reference vs 3-D reference) costs RMSE "
-                     "%.4f (%.4f once both references' Monte Carlo noise is taken out; DSSIM %.4f, the height-field "
+                     "%.4f (%s once both references' Monte Carlo noise is taken out; DSSIM %.4f, the height-field "
                      "reference's own noise floor being DSSIM %.4f). GTAO in the talk's configuration (medium, one "
-                     "frame) is RMSE %.4f from the height-field reference (%.4f without its noise: sampling and "
+                     "frame) is RMSE %.4f from the height-field reference (%s without its noise: sampling and "
                      "denoising) and %.4f from the 3-D reference. In squared error, %.0f%% of the two parts is "
                      "sampling/denoising and %.0f%% the height-field assumption. Converged (%s), the sampling "
-                     "part falls to RMSE %.4f (%.4f without the reference's noise).",
-                     scene_name, hf_vs_3d_rmse, model_rmse, hf_vs_3d_dssim, hf_floor, medium->s.rmse_hf, sampling_rmse,
-                     medium->s.rmse_3d, 100.0 * sampling / (sampling + model), 100.0 * model / (sampling + model),
-                     converged->name, converged->s.rmse_hf, denoised_rmse(converged->s.rmse_hf, hf_variance));
+                     "part falls to RMSE %.4f (%s without the reference's noise).",
+                     scene_name, hf_vs_3d_rmse, model_text, hf_vs_3d_dssim, hf_floor, medium->s.rmse_hf, sampling_text,
+                     medium->s.rmse_3d, sampling + model > 0 ? 100.0 * sampling / (sampling + model) : 0.0,
+                     sampling + model > 0 ? 100.0 * model / (sampling + model) : 0.0, converged->name,
+                     converged->s.rmse_hf, converged_text);
 }
 
 /* Mean of ao.V.stderr^2 over the mask: the reference's noise in RMSE^2. */
