@@ -36,6 +36,9 @@ static void print_help(void)
            "                        regular slices, step offset 0.5)\n"
            "  --denoise on|off      the 4x4 bilateral spatial denoiser\n"
            "  --fast-math on|off    the talk's fast acos and sqrt\n"
+           "  --bent exact|halfway  bent normal: the cosine-weighted mean direction of each\n"
+           "                        slice's visible arc (default) or the talk's direction\n"
+           "                        halfway between the horizons (16 degrees off on a plane)\n"
            "%s"
            "\nexample: gtlab approx gtao --gbuffer ao.exr --preset high --radius 2 -o gtao.exr\n",
            approx_common_help);
@@ -67,6 +70,12 @@ static int parse_option(int c, const char *arg, gtao_params *p)
     case 'P': return approx_parse_switch("--pattern", arg, &p->pattern);
     case 'D': return approx_parse_switch("--denoise", arg, &p->denoise);
     case 'M': return approx_parse_switch("--fast-math", arg, &p->fast_math);
+    case 'B':
+        if (strcmp(arg, "exact") == 0 || strcmp(arg, "halfway") == 0) {
+            p->bent_halfway = arg[0] == 'h';
+            return 0;
+        }
+        return cli_failf("--bent", "'%s' is neither exact nor halfway", arg), -1;
     case 'W':
         if (strcmp(arg, "cosine") == 0 || strcmp(arg, "uniform") == 0) {
             p->weighting = arg[0] == 'u' ? GTAO_UNIFORM : GTAO_COSINE;
@@ -99,6 +108,7 @@ int approx_gtao(int argc, char **argv)
         {"steps", required_argument, 0, 'n'},       {"frames", required_argument, 0, 'F'},
         {"pattern", required_argument, 0, 'P'},     {"denoise", required_argument, 0, 'D'},
         {"fast-math", required_argument, 0, 'M'},   {"weighting", required_argument, 0, 'W'},
+        {"bent", required_argument, 0, 'B'},
         APPROX_COMMON_OPTIONS};
     const char *preset;
     find_preset(argc, argv, &preset);

@@ -15,6 +15,9 @@
  *    values (48 distinct slices, 4 distinct offsets, not 96 and 16); they are
  *    applied as sub-steps of the spatial pattern (rotation / 16, offset / 4).
  *  - "Possible Pitfall": the integrand is cos(theta - n) |sin theta|.
+ *  - "Bent Normal": the halfway direction between the horizons is 16 degrees
+ *    off on an open plane seen at 45 degrees; the arc's cosine-weighted mean
+ *    direction is integrated in closed form instead (gtao_integrate_arc_bent).
  * Addition: slices are weighted by d psi / d phi (gtao_slice_weight), the
  * rotation about the view vector per screen angle, without which a tilted
  * plane off the image centre came out 2% dark with 32 regular slices. */
@@ -37,6 +40,27 @@ float gtao_integrate_arc_cosine(float h1, float h2, float n)
 }
 
 float gtao_integrate_arc_uniform(float h1, float h2) { return (1.0f - cosf(h1)) + (1.0f - cosf(h2)); }
+
+/* Antiderivatives of cos t cos(t - n) sin t and sin t cos(t - n) sin t,
+ * with cos(t - n) = cos t cos n + sin t sin n. */
+static void bent_antiderivatives(float t, float cos_n, float sin_n, float *fv, float *fs)
+{
+    float c = cosf(t), s = sinf(t), c3 = c * c * c, s3 = s * s * s;
+    *fv = (-cos_n * c3 + sin_n * s3) / 3.0f;
+    *fs = cos_n * s3 / 3.0f + sin_n * (c3 / 3.0f - c);
+}
+
+void gtao_integrate_arc_bent(float h1, float h2, float n, float *bv, float *bs)
+{
+    float cos_n = cosf(n), sin_n = sinf(n), v1, s1, v2, s2, v0, s0;
+    bent_antiderivatives(h1, cos_n, sin_n, &v1, &s1);
+    bent_antiderivatives(h2, cos_n, sin_n, &v2, &s2);
+    bent_antiderivatives(0.0f, cos_n, sin_n, &v0, &s0);
+    /* Side 2 runs 0 -> h2 with |sin| = sin; side 1 runs h1 -> 0 with
+     * |sin| = -sin, which is F(h1) - F(0) as well. */
+    *bv = (v2 - v0) + (v1 - v0);
+    *bs = (s2 - s0) + (s1 - s0);
+}
 
 float gtao_fast_sqrt_magic(float x, uint32_t magic)
 {
@@ -95,12 +119,12 @@ float gtao_step_offset(int x, int y, int frame, int pattern)
 }
 
 static const gtao_params presets[] = {
-    /* weighting, slices, steps, radius, falloff, max px, thickness, pattern, fast, denoise, frames */
-    {GTAO_COSINE, 1, 2, 1.0f, 0.25f, 256.0f, 0.0f, 1, 1, 1, 1},   /* low */
-    {GTAO_COSINE, 1, 4, 1.0f, 0.25f, 256.0f, 0.0f, 1, 1, 1, 1},   /* medium: the talk's */
-    {GTAO_COSINE, 2, 6, 1.0f, 0.25f, 256.0f, 0.0f, 1, 0, 1, 1},   /* high */
-    {GTAO_COSINE, 4, 8, 1.0f, 0.25f, 256.0f, 0.0f, 1, 0, 1, 1},   /* ultra */
-    {GTAO_COSINE, 64, 0, 1.0f, 0.25f, 256.0f, 0.0f, 0, 0, 0, 1},  /* reference: every cell */
+    /* weighting, slices, steps, radius, falloff, max px, thickness, pattern, fast, denoise, frames, bent halfway */
+    {GTAO_COSINE, 1, 2, 1.0f, 0.25f, 256.0f, 0.0f, 1, 1, 1, 1, 0},   /* low */
+    {GTAO_COSINE, 1, 4, 1.0f, 0.25f, 256.0f, 0.0f, 1, 1, 1, 1, 0},   /* medium: the talk's */
+    {GTAO_COSINE, 2, 6, 1.0f, 0.25f, 256.0f, 0.0f, 1, 0, 1, 1, 0},   /* high */
+    {GTAO_COSINE, 4, 8, 1.0f, 0.25f, 256.0f, 0.0f, 1, 0, 1, 1, 0},   /* ultra */
+    {GTAO_COSINE, 64, 0, 1.0f, 0.25f, 256.0f, 0.0f, 0, 0, 0, 1, 0},  /* reference: every cell */
 };
 const char *const gtao_preset_names[] = {"low", "medium", "high", "ultra", "reference", NULL};
 
@@ -118,9 +142,10 @@ void gtao_params_text(const gtao_params *p, char *text, size_t size)
 {
     snprintf(text, size,
              "weighting=%s slices=%d steps=%d radius=%.9g falloff=%.9g max_radius_px=%.9g thickness=%.9g pattern=%d "
-             "fast_math=%d denoise=%d frames=%d",
+             "fast_math=%d denoise=%d frames=%d bent=%s",
              p->weighting == GTAO_UNIFORM ? "uniform" : "cosine", p->slices, p->steps, p->radius, p->falloff,
-             p->max_radius_px, p->thickness, p->pattern, p->fast_math, p->denoise, p->frames);
+             p->max_radius_px, p->thickness, p->pattern, p->fast_math, p->denoise, p->frames,
+             p->bent_halfway ? "halfway" : "exact");
 }
 
 static int keep_sample(const ss_gbuffer *g, int x, int y, float fx, float fy, float (*xy)[2], int count)
@@ -262,12 +287,22 @@ static float slice_visibility(const gtao_slice *s, gtao_weighting w)
     return s->n_len * gtao_integrate_arc_cosine(s->h1, s->h2, s->n);
 }
 
-/* The talk's bent normal: the direction halfway between the two horizons,
- * h = (h1 + h2) / 2 in the slice, weighted by the slice's visibility. */
-static vec3 slice_bent(const gtao_slice *s, float visibility)
+/* The slice's share of the bent normal (view space): the exact
+ * cosine-weighted mean direction of the visible arc, weighted like the
+ * visibility, or the talk's halfway direction weighted by the visibility. */
+static vec3 slice_bent(const gtao_slice *s, float visibility, int halfway)
 {
-    float h = 0.5f * (s->h1 + s->h2);
-    return v3_scale(v3_add(v3_scale(s->v, cosf(h)), v3_scale(s->side, sinf(h))), visibility);
+    float bv, bs;
+    if (halfway) {
+        float h = gtao_bent_halfway_angle(s->h1, s->h2);
+        bv = visibility * cosf(h);
+        bs = visibility * sinf(h);
+    } else {
+        gtao_integrate_arc_bent(s->h1, s->h2, s->n, &bv, &bs);
+        bv *= s->weight * s->n_len;
+        bs *= s->weight * s->n_len;
+    }
+    return v3_add(v3_scale(s->v, bv), v3_scale(s->side, bs));
 }
 
 static void pixel_gtao(const ss_gbuffer *g, const gtao_params *p, int frame, int x, int y, float *ao, vec3 *bent)
@@ -280,7 +315,7 @@ static void pixel_gtao(const ss_gbuffer *g, const gtao_params *p, int frame, int
         gtao_search_slice(g, x, y, p, gtao_slice_angle(x, y, frame, k, p->slices, p->pattern), offset, &s);
         float vis = s.weight * slice_visibility(&s, p->weighting);
         sum += vis;
-        b = v3_add(b, slice_bent(&s, vis));
+        b = v3_add(b, slice_bent(&s, vis, p->bent_halfway));
     }
     *ao = sum / (float)p->slices;
     float len = v3_length(b);

@@ -30,6 +30,17 @@
 float gtao_integrate_arc_cosine(float h1, float h2, float n);
 float gtao_integrate_arc_uniform(float h1, float h2);
 
+/* The cosine-weighted mean direction of a slice's visible arc, unnormalised,
+ * as components along v and along the slice's side vector:
+ *   (bv, bs) = sum over h in {h1, h2} of integral_0^h (cos theta, sin theta) cos(theta - n) |sin theta| dtheta.
+ * Summed over slices (weighted like the visibility) it is the bent normal's
+ * direction. The talk's shortcut, the direction halfway between the horizons,
+ * is gtao_bent_halfway_angle: on an open plane seen at 45 degrees it is 16
+ * degrees off the true bent normal (the normal), so gtlab uses this one. */
+void gtao_integrate_arc_bent(float h1, float h2, float n, float *bv, float *bs);
+/* The talk's bent direction in a slice: the angle (h1 + h2) / 2. */
+static inline float gtao_bent_halfway_angle(float h1, float h2) { return 0.5f * (h1 + h2); }
+
 /* The fast sqrt of Drobot 2014 (integer shift and magic constant) and the
  * first-order acos of Eberly 2014 built on it, as the talk uses them. */
 #define GTAO_FAST_SQRT_MAGIC 0x1FBD1DF5u        /* Drobot's constant */
@@ -71,6 +82,7 @@ typedef struct {
     int fast_math;       /* the talk's fast acos/sqrt */
     int denoise;         /* the 4x4 bilateral spatial denoiser */
     int frames;          /* frames accumulated by the temporal filter (static camera); 1: a single frame */
+    int bent_halfway;    /* bent normal: 0 the exact cosine-weighted arc mean, 1 the talk's halfway direction */
 } gtao_params;
 
 /* low, medium (the talk's configuration: 1 direction, 8 samples, denoised),

@@ -56,6 +56,26 @@ static void test_integrate_arc_uniform(void)
     CHECK(worst < 1e-6);
 }
 
+static double bent_v_integrand(double t, double n) { return cos(t) * cos(t - n) * fabs(sin(t)); }
+static double bent_s_integrand(double t, double n) { return sin(t) * cos(t - n) * fabs(sin(t)); }
+
+/* The closed-form bent-normal arc integrals equal Simpson's. */
+static void test_integrate_arc_bent(void)
+{
+    double worst = 0;
+    for (int i = 0; i < 1000; ++i) {
+        double n = (uniform01() - 0.5) * PI * 0.999;
+        double h1 = (n - PI / 2) * uniform01(), h2 = (n + PI / 2) * uniform01();
+        float bv, bs;
+        gtao_integrate_arc_bent((float)h1, (float)h2, (float)n, &bv, &bs);
+        double v = simpson(bent_v_integrand, n, h1, 0, 2000) + simpson(bent_v_integrand, n, 0, h2, 2000);
+        double s = simpson(bent_s_integrand, n, h1, 0, 2000) + simpson(bent_s_integrand, n, 0, h2, 2000);
+        worst = fmax(worst, fmax(fabs(bv - v), fabs(bs - s)));
+    }
+    printf("bent arc integrals: max |closed form - numeric| = %.3g\n", worst);
+    CHECK(worst < 1e-6);
+}
+
 /* Timonen's projection: with the arc weighted by |n_p|, the open hemisphere of
  * any normal integrates to exactly 1 over the slices (cosine AO of an open
  * hemisphere). The "Possible Pitfall" integrand |sin(theta - n)| does not. */
@@ -205,6 +225,7 @@ int main(void)
 {
     test_integrate_arc_cosine();
     test_integrate_arc_uniform();
+    test_integrate_arc_bent();
     test_projected_normal_open_hemisphere();
     test_horizon_is_acos();
     test_fast_sqrt();

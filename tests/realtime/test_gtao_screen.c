@@ -85,6 +85,24 @@ static void test_plane(void)
             worst = fmax(worst, fabs(ao[i] - 1.0));
     printf("plane: brute-force GTAO max |V - 1| = %.3g\n", worst);
     CHECK(worst < 2e-6);
+    /* An open plane's bent normal is its normal; the talk's halfway direction
+     * is far from it. */
+    for (int halfway = 0; halfway <= 1; ++halfway) {
+        float *bent[3] = {plane_buffer(&r.g), plane_buffer(&r.g), plane_buffer(&r.g)};
+        p.bent_halfway = halfway;
+        gtao_render(&r.g, &p, ao, bent);
+        double worst_deg = 0;
+        for (size_t i = 0; i < image_pixel_count(&r.img); ++i)
+            if (r.g.mask[i] != 0.0f) {
+                double c = bent[0][i] * r.g.normal[0][i] + bent[1][i] * r.g.normal[1][i] + bent[2][i] * r.g.normal[2][i];
+                worst_deg = fmax(worst_deg, acos(fmin(c, 1.0)) * 180 / 3.14159265358979);
+            }
+        printf("plane: bent normal (%s) max angle to the normal %.3g deg\n", halfway ? "talk's halfway" : "exact", worst_deg);
+        CHECK(halfway ? worst_deg > 10 : worst_deg < 0.05);
+        for (int k = 0; k < 3; ++k)
+            free(bent[k]);
+    }
+    p.bent_halfway = 0;
     /* The talk's configuration converged over the 24-frame cycle: per-slice
      * values of a tilted plane are not 1, only their average over slices. */
     gtao_preset("medium", &p);
