@@ -194,6 +194,35 @@ static void test_horizon_integrator(const rendered *r)
     free(b);
 }
 
+/* The thickness heuristic and the conservative attenuation only ever lower
+ * horizons: visibility never drops, and rises somewhere on the boxes. */
+static void test_thickness_and_attenuation(const rendered *r)
+{
+    size_t n = image_pixel_count(&r->img);
+    float *base = calloc(n, sizeof *base), *other = calloc(n, sizeof *other);
+    gtao_params p = brute_force(8, 16);
+    p.radius = 6.0f;
+    gtao_frame(&r->g, &p, 0, base, NULL);
+    for (int variant = 0; variant < 2; ++variant) {
+        gtao_params q = p;
+        if (variant == 0)
+            q.thickness = 0.3f;
+        else
+            q.falloff = 0.5f;
+        gtao_frame(&r->g, &q, 0, other, NULL);
+        int lower = 0, higher = 0;
+        for (size_t i = 0; i < n; ++i) {
+            lower += other[i] < base[i] - 1e-6f;
+            higher += other[i] > base[i] + 1e-3f;
+        }
+        printf("%s: %d pixels more visible, %d less\n", variant ? "falloff 0.5" : "thickness 0.3", higher, lower);
+        CHECK(lower == 0);
+        CHECK(higher > 50);
+    }
+    free(base);
+    free(other);
+}
+
 /* Same bits for 1 and 2 threads, through the whole pipeline. */
 static void test_determinism(const rendered *r)
 {
@@ -292,6 +321,7 @@ int main(void)
         return 1;
     test_hbao_equivalence(&boxes);
     test_horizon_integrator(&boxes);
+    test_thickness_and_attenuation(&boxes);
     test_determinism(&boxes);
     test_brute_force_vs_heightfield(&boxes);
     image_free(&boxes.img);
