@@ -18,6 +18,10 @@ int verb_compare(int argc, char **argv);
 int verb_bench(int argc, char **argv);
 int verb_all(int argc, char **argv);
 int verb_approx(int argc, char **argv);
+int verb_fit(int argc, char **argv);
+
+/* gtlab fit problems (cli/fit_<problem>.c). */
+int fit_gtao_params(int argc, char **argv);
 
 /* gtlab approx techniques (cli/approx_<name>.c). */
 int approx_gtao(int argc, char **argv);

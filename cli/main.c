@@ -15,6 +15,7 @@ static const verb verbs[] = {
     {"render", verb_render, "render a reference quantity (gbuffer, ao) with Embree"},
     {"merge", verb_merge, "combine partial renders of disjoint sample blocks exactly"},
     {"approx", verb_approx, "a real-time approximation (gtao, hbao, vo) on a G-buffer"},
+    {"fit", verb_fit, "a Ceres fit (gtao-params)"},
     {"compare", verb_compare, "SSIM/DSSIM, RMSE and absolute errors between two EXRs"},
     {"bench", verb_bench, "throughput figures (rays/s) and their ratios, from one run"},
     {"all", verb_all, "the main job: every reference and the accuracy report"},

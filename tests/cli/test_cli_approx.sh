@@ -30,4 +30,21 @@ expect_error no-output "gtao: no output given" "" -- approx gtao --gbuffer "$g"
 expect_error unknown-technique "ssao: unknown technique" "$out" -- approx ssao --gbuffer "$g" -o "$out"
 printf '{"position":[1,1,1],"target":[0,0,0],"yfov_deg":45,"width":64,"height":64}' >"$work/cam.json"
 expect_error camera-size "cam.json: camera is 64x64 but the G-buffer is 32x32" "$out" -- approx gtao --gbuffer "$g" --camera "$work/cam.json" -o "$out"
+
+# gtlab fit gtao-params on two tiny references: Ceres only takes steps that
+# lower the training cost, so no training scene's summed error can rise.
+mkdir -p "$work/refs"
+expect_ok ref-corner render ao --scene builtin:corner --width 24 --height 24 --spp 32 -o "$work/refs/corner.exr"
+expect_ok ref-boxes render ao --scene builtin:boxes --width 24 --height 24 --spp 32 -o "$work/refs/boxes.exr"
+expect_ok fit-help fit gtao-params --help
+expect_ok fit fit gtao-params --refs "$work/refs" --train corner --test boxes --preset low -o "$work/fit.json"
+python3 - "$work/fit.json" <<'PY' || fail "fit.json: training error rose or fields missing"
+import json, sys
+f = json.load(open(sys.argv[1]))
+t = f["train_scores"][0]
+assert t["rmse_after"] <= t["rmse_before"] + 1e-9, t
+assert set(f["values"]) == {"radius_over_camera_distance", "falloff", "thickness"}
+assert f["test_scores"][0]["scene"] == "boxes"
+PY
+expect_error fit-missing-refs "nowhere/boxes.exr: " "$work/fit2.json" -- fit gtao-params --refs "$work/nowhere" -o "$work/fit2.json"
 finish
