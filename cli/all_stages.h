@@ -32,6 +32,8 @@ int all_stage_ray_throughput(all_context *ctx, gt_error *e);
 /* GGX sphere lights: GetNoHSquared accuracy, Decima refit, error maps, cost. */
 int all_stage_sphere_light(all_context *ctx, gt_error *e);
 
+/* GTAO, HBAO and VO against the height-field and 3-D AO references. */
+int all_stage_gtao(all_context *ctx, gt_error *e);
 /* "<output_dir>/<sub>" with the folder created. */
 int all_make_dir(const all_context *ctx, const char *sub, char *path, size_t size, gt_error *e);
 

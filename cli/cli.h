@@ -26,15 +26,20 @@ int verb_approx(int argc, char **argv);
 int bench_multibounce(int argc, char **argv);
 int bench_fit(int argc, char **argv);
 int bench_sphere_light(int argc, char **argv);
+int bench_gtao(int argc, char **argv);
 
 /* Subcommands in their own files (cli/<verb>_<name>.c), dispatched by
  * verb_fit.c, verb_check.c, verb_lut.c and verb_approx.c. */
 int fit_multibounce(int argc, char **argv);
 int fit_sphere_light(int argc, char **argv);
 int fit_aperture(int argc, char **argv);
+int fit_gtao_params(int argc, char **argv);
 int check_sphere_noh(int argc, char **argv);
 int lut_specular_occlusion(int argc, char **argv);
 int approx_specular_occlusion(int argc, char **argv);
+int approx_gtao(int argc, char **argv);
+int approx_hbao(int argc, char **argv);
+int approx_vo(int argc, char **argv);
 
 /* Prints "gtlab: <message>" on stderr and returns EXIT_USER_ERROR. */
 int cli_fail(const gt_error *e);

@@ -12,14 +12,14 @@ typedef struct {
 
 static const verb verbs[] = {
     {"scene", verb_scene, "list the built-in scenes, or write one as .glb"},
-    {"render", verb_render, "render a reference (gbuffer, ao, multibounce, specular-occlusion, sphere-light)"},
+    {"render", verb_render, "render a reference (gbuffer, ao, multibounce, heightfield-ao, ...) with Embree"},
     {"merge", verb_merge, "combine partial renders of disjoint sample blocks exactly"},
+    {"approx", verb_approx, "a real-time approximation on a G-buffer (gtao, hbao, vo, specular-occlusion)"},
     {"compare", verb_compare, "SSIM/DSSIM, RMSE and absolute errors between two EXRs"},
-    {"fit", verb_fit, "fit a real-time model's constants to references with Ceres"},
+    {"fit", verb_fit, "fit a real-time model's constants to references (Ceres)"},
     {"bench", verb_bench, "throughput figures (rays/s) and their ratios, from one run"},
     {"check", verb_check, "accuracy checks against brute force (sphere-noh, ...)"},
     {"lut", verb_lut, "lookup tables in every format (EXR, 8-bit PNG, C header)"},
-    {"approx", verb_approx, "a real-time approximation on a G-buffer"},
     {"all", verb_all, "the main job: every reference and the accuracy report"},
 };
 

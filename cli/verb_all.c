@@ -21,6 +21,7 @@ typedef struct {
 
 static const all_stage stages[] = {
     {"AO references", all_stage_ao_references},
+    {"GTAO validation", all_stage_gtao},
     {"multi-bounce refit", all_stage_multibounce},
     {"specular occlusion", all_stage_specular_occlusion},
     {"GGX sphere lights", all_stage_sphere_light},

@@ -4,6 +4,9 @@
 #include "cli/subcommands.h"
 
 static const cli_subcommand techniques[] = {
+    {"gtao", approx_gtao, "ground-truth AO (Jimenez et al. 2016): cosine-weighted horizons, bent normals"},
+    {"hbao", approx_hbao, "horizon-based AO (Bavoil et al. 2008): uniform weighting"},
+    {"vo", approx_vo, "volumetric obscurance with 4 samples (Loos and Sloan 2010; CryENGINE 3)"},
     {"specular-occlusion", approx_specular_occlusion, "GTSO and the other specular-occlusion variants from AO + bent normal"},
 };
 

@@ -28,6 +28,9 @@ static void print_help(void)
         "            same pixels. Channels: multibounce.V (one albedo), multibounce_<a>.V\n"
         "            for each of several (e.g. multibounce_0.3.V), or multibounce.R/G/B with\n"
         "            --albedo scene; the header holds gtlab.albedos and gtlab.bounces\n"
+        "  heightfield-ao  the G-buffer plus ao.V and ao.Vuniform where rays are blocked\n"
+        "            only by the depth buffer taken as a height field (infinite thickness,\n"
+        "            rays leaving the image escape): what screen-space AO can know\n"
         "  sphere-light  the G-buffer plus sphere.R/G/B: radiance towards the camera from a\n"
         "            uniform spherical light over the glTF materials (Lambert + GGX with\n"
         "            Schlick Fresnel), integrated exactly over the light (MIS), unshadowed\n"
@@ -51,7 +54,8 @@ static void print_help(void)
         "  --target-stderr E     stop a pixel once the standard error of its first channel\n"
         "                        (ao.V; multibounce: the first multibounce channel;\n                        specular-occlusion: specocc_occluded.V) is <= E\n"
         "                        (checked at 16, 32, 64, ... samples)\n"
-        "  --max-distance D      ao: rays farther than D count as unoccluded (default: none)\n"
+        "  --max-distance D      ao, heightfield-ao: rays farther than D count as\n"
+        "                        unoccluded (default: none)\n"
         "  --albedo A,B,...|scene  multibounce (required): grey albedos in [0, 1], all\n"
         "                        rendered from the same paths in one pass, or 'scene': the\n"
         "                        glTF base colours (textures included), coloured R, G, B\n"
@@ -114,8 +118,8 @@ static int check_quantity_options(render_options *o)
 {
     gt_error e;
     int multibounce = o->request.quantity == QUANTITY_MULTIBOUNCE;
-    if (o->max_distance && o->request.quantity != QUANTITY_AO)
-        return cli_failf("--max-distance", "applies to ao only"), -1;
+    if (o->max_distance && o->request.quantity != QUANTITY_AO && o->request.quantity != QUANTITY_HEIGHTFIELD_AO)
+        return cli_failf("--max-distance", "applies to ao and heightfield-ao only"), -1;
     if (o->roughness && o->request.quantity != QUANTITY_SPECULAR_OCCLUSION)
         return cli_failf("--roughness", "applies to specular-occlusion only"), -1;
     if (!multibounce && (o->albedo || o->bounces))
@@ -195,9 +199,9 @@ static int parse_options(int argc, char **argv, render_options *o)
         }
     }
     if (optind >= argc)
-        return cli_failf("render", "no QUANTITY given (gbuffer, ao, multibounce, specular-occlusion or sphere-light; see 'gtlab render --help')"), -1;
+        return cli_failf("render", "no QUANTITY given (gbuffer, ao, multibounce, heightfield-ao, specular-occlusion or sphere-light; see 'gtlab render --help')"), -1;
     if (reference_quantity_parse(argv[optind], &o->request.quantity) != 0)
-        return cli_failf("render", "unknown quantity '%s' (gbuffer, ao, multibounce, specular-occlusion or sphere-light)", argv[optind]), -1;
+        return cli_failf("render", "unknown quantity '%s' (gbuffer, ao, multibounce, heightfield-ao, specular-occlusion or sphere-light)", argv[optind]), -1;
     if (optind + 1 < argc)
         return cli_failf("render", "unexpected argument '%s'", argv[optind + 1]), -1;
     if (check_quantity_options(o) != 0 || check_light_options(o) != 0)

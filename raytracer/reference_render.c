@@ -8,9 +8,12 @@
 #include <string.h>
 
 #include "raytracer/ao_integrator.h"
+#include "raytracer/heightfield_ao_integrator.h"
 #include "raytracer/specular_occlusion_integrator.h"
 
-static const char *const quantity_names[] = {"gbuffer", "ao", "multibounce", "specular-occlusion", "sphere-light"};
+/* In the order of reference_quantity. */
+static const char *const quantity_names[] = {"gbuffer", "ao", "multibounce", "heightfield-ao", "specular-occlusion",
+                                             "sphere-light"};
 enum { QUANTITY_COUNT = sizeof quantity_names / sizeof quantity_names[0] };
 
 int reference_quantity_parse(const char *name, reference_quantity *q)
@@ -87,15 +90,21 @@ static int render_quantity(const embree_scene *es, const gbuffer *gb, const refe
 {
     ao_settings ao = {req->max_distance};
     specular_occlusion_settings so = {req->roughness, gb->view.origin};
+    heightfield_settings hf = {0};
+    if (req->quantity == QUANTITY_HEIGHTFIELD_AO && heightfield_settings_init(&hf, gb, req->max_distance) != 0)
+        return gt_error_set(e, scene_spec, "out of memory for the height field");
     integrator it;
     switch (req->quantity) {
     case QUANTITY_AO: it = ao_integrator(es, &ao); break;
+    case QUANTITY_HEIGHTFIELD_AO: it = heightfield_ao_integrator(&hf); break;
     case QUANTITY_SPECULAR_OCCLUSION: it = specular_occlusion_integrator(es, &so); break;
     case QUANTITY_SPHERE_LIGHT: it = sphere_light_integrator(es, light); break;
     default: it = multibounce_integrator(es, plan); break;
     }
     mc_film film;
-    if (render_estimates(gb, &it, &req->sampling, &film, stats, e) != 0)
+    int estimated = render_estimates(gb, &it, &req->sampling, &film, stats, e);
+    heightfield_settings_free(&hf);
+    if (estimated != 0)
         return -1;
     int rc = 0;
     if (mc_film_write_channels(&film, image_channel_data(out, "mask.A"), out) != 0 ||

@@ -16,6 +16,7 @@ typedef enum {
     QUANTITY_GBUFFER,
     QUANTITY_AO,
     QUANTITY_MULTIBOUNCE,
+    QUANTITY_HEIGHTFIELD_AO,
     QUANTITY_SPECULAR_OCCLUSION,
     QUANTITY_SPHERE_LIGHT
 } reference_quantity;
@@ -24,13 +25,14 @@ typedef struct {
     reference_quantity quantity;
     sampling_settings sampling;
     normal_mode normals;
-    float max_distance;               /* ao only; INFINITY: none */
+    float max_distance;               /* ao and heightfield-ao; INFINITY: none */
     multibounce_settings multibounce; /* multibounce only: albedos, bounces */
     sphere_light_settings sphere_light; /* sphere-light only: the light */
     float roughness;                  /* specular-occlusion only: perceptual roughness, < 0: the material's */
 } reference_request;
 
-/* "gbuffer" / "ao" / "multibounce" / "specular-occlusion" / "sphere-light" -> quantity; -1 if unknown. */
+/* "gbuffer" / "ao" / "multibounce" / "heightfield-ao" / "specular-occlusion" /
+ * "sphere-light" -> quantity; -1 if unknown. */
 int reference_quantity_parse(const char *name, reference_quantity *q);
 const char *reference_quantity_name(reference_quantity q);
 

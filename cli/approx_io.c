@@ -1,0 +1,138 @@
+/* Input and output of `gtlab approx` techniques; see approx_io.h. */
+#include "cli/approx_io.h"
+
+#include <getopt.h>
+#include <omp.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "core/exr_io.h"
+
+const char approx_common_help[] =
+    "  --gbuffer G.exr       input: an EXR with depth.Z, N.X, N.Y, N.Z and mask.A (from\n"
+    "                        'gtlab render gbuffer' or any reference render)\n"
+    "  --camera cam.json     its camera (default: the EXR's gtlab.camera header, else\n"
+    "                        G.camera.json beside it)\n"
+    "  --threads T           worker threads (default: all cores); the output does not\n"
+    "                        depend on it\n"
+    "  -o, --output F.exr    output EXR: ao.V (and bent.X/Y/Z where the technique has\n"
+    "                        them), mask.A, the header naming technique and parameters\n"
+    "  -h, --help\n";
+
+ss_camera approx_ss_camera(const camera *cam)
+{
+    camera_view v = camera_view_from(cam);
+    ss_camera c = {v.forward, v.right, v.up, v.tan_half_yfov, v.aspect};
+    return c;
+}
+
+static int load_camera(const char *path, const char *camera_path, const image *img, camera *cam, gt_error *e)
+{
+    if (camera_path)
+        return camera_read_json(camera_path, cam, e);
+    const char *text = image_get_attribute(img, "gtlab.camera");
+    if (text)
+        return camera_parse_json(text, path, cam, e);
+    char sidecar[4096];
+    camera_sidecar_path(path, sidecar, sizeof sidecar);
+    FILE *f = fopen(sidecar, "rb");
+    if (!f)
+        return gt_error_set(e, path, "no camera: no gtlab.camera header, no %s; give --camera", sidecar);
+    fclose(f);
+    return camera_read_json(sidecar, cam, e);
+}
+
+int approx_load(const char *path, const char *camera_path, approx_input *in, gt_error *e)
+{
+    memset(in, 0, sizeof *in);
+    if (exr_read(path, &in->img, e) != 0)
+        return -1;
+    int rc = load_camera(path, camera_path, &in->img, &in->cam, e);
+    if (rc == 0 && (in->cam.width != in->img.width || in->cam.height != in->img.height))
+        rc = gt_error_set(e, camera_path ? camera_path : path, "camera is %dx%d but the G-buffer is %dx%d",
+                          in->cam.width, in->cam.height, in->img.width, in->img.height);
+    if (rc == 0)
+        rc = camera_validate(&in->cam, camera_path ? camera_path : path, e);
+    if (rc == 0)
+        rc = ss_gbuffer_from_image(&in->img, path, approx_ss_camera(&in->cam), &in->g, e);
+    if (rc != 0)
+        image_free(&in->img);
+    return rc;
+}
+
+void approx_input_free(approx_input *in) { image_free(&in->img); }
+
+int approx_output_init(const approx_input *in, const char *technique, const char *settings, image *out)
+{
+    if (image_init(out, in->img.width, in->img.height) != 0)
+        return -1;
+    float *mask = image_add_channel(out, "mask.A");
+    int rc = mask ? 0 : -1;
+    if (mask)
+        memcpy(mask, in->g.mask, sizeof *mask * image_pixel_count(out));
+    rc |= image_set_attribute(out, "gtlab.version", GTLAB_VERSION);
+    rc |= image_set_attribute(out, "gtlab.quantity", "approx");
+    rc |= image_set_attribute(out, "gtlab.technique", technique);
+    rc |= image_set_attribute(out, "gtlab.settings", settings);
+    for (int k = 0; k < 2; ++k) {
+        const char *key = k ? "gtlab.scene" : "gtlab.camera", *value = image_get_attribute(&in->img, key);
+        if (value)
+            rc |= image_set_attribute(out, key, value);
+    }
+    if (rc != 0)
+        image_free(out);
+    return rc;
+}
+
+int approx_check_common(const approx_common *c, const char *technique)
+{
+    if (!c->gbuffer)
+        return cli_failf(technique, "no --gbuffer given (see 'gtlab approx %s --help')", technique), -1;
+    if (!c->output)
+        return cli_failf(technique, "no output given: -o out.exr"), -1;
+    return 0;
+}
+
+int approx_common_option(int c, const char *arg, approx_common *common)
+{
+    switch (c) {
+    case 'g': common->gbuffer = arg; return 1;
+    case 'c': common->camera = arg; return 1;
+    case 'o': common->output = arg; return 1;
+    case 't': return cli_parse_int("--threads", arg, 1, 1024, &common->threads) == 0 ? 1 : -1;
+    default: return 0;
+    }
+}
+
+int approx_parse_switch(const char *option, const char *arg, int *out)
+{
+    if (strcmp(arg, "on") == 0 || strcmp(arg, "off") == 0) {
+        *out = arg[1] == 'n';
+        return 0;
+    }
+    return cli_failf(option, "'%s' is neither on nor off", arg), -1;
+}
+
+int approx_run(const approx_common *c, const char *technique, const char *settings, approx_compute_fn compute,
+               const void *params)
+{
+    gt_error e;
+    approx_input in;
+    if (approx_load(c->gbuffer, c->camera, &in, &e) != 0)
+        return cli_fail(&e);
+    if (c->threads > 0)
+        omp_set_num_threads((int)c->threads);
+    image out = {0};
+    int status = EXIT_OK;
+    if (approx_output_init(&in, technique, settings, &out) != 0 || compute(&in.g, params, &out) != 0) {
+        fprintf(stderr, "gtlab: %s: out of memory\n", technique);
+        status = EXIT_INTERNAL_ERROR;
+    } else {
+        if (exr_write(c->output, &out, &e) != 0)
+            status = cli_fail(&e);
+    }
+    image_free(&out);
+    approx_input_free(&in);
+    return status;
+}

@@ -1,0 +1,273 @@
+/* Height-field AO reference after the GTAO talk's screen-space ray marcher
+ * (seeds/001, "Methodology"); see heightfield_ao_integrator.h. */
+#include "raytracer/heightfield_ao_integrator.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "core/heightfield_model.h"
+#include "core/hemisphere_sampling.h"
+
+enum { HF_V, HF_VUNIFORM, HF_QUANTITY_COUNT };
+static const mc_quantity hf_quantities[HF_QUANTITY_COUNT] = {{"ao.V", 0}, {"ao.Vuniform", 0}};
+
+
+/* Camera-relative coordinates: (a, b, z) with z the depth along the axis and
+ * the screen position x = (a / z / (tan aspect) + 1) W / 2, y = (1 - b / z / tan) H / 2. */
+static vec3 to_camera(const camera_view *v, vec3 p)
+{
+    vec3 r = v3_sub(p, v->origin);
+    return v3(v3_dot(r, v->right), v3_dot(r, v->up), v3_dot(r, v->forward));
+}
+
+static void to_screen(const camera_view *v, vec3 c, float *x, float *y)
+{
+    *x = (c.x / (c.z * v->tan_half_yfov * v->aspect) + 1.0f) * 0.5f * (float)v->width;
+    *y = (1.0f - c.y / (c.z * v->tan_half_yfov)) * 0.5f * (float)v->height;
+}
+
+/* Depth of pixel j's surface (its tangent plane) along the eye ray through
+ * screen point (x, y), clamped to its neighbourhood's depths
+ * (core/heightfield_model.h). */
+static float surface_depth(const heightfield_settings *hs, long j, float x, float y)
+{
+    const camera_view *v = &hs->gb->view;
+    const surface_hit *h = &hs->gb->hits[j];
+    float sx = (2.0f * x / (float)v->width - 1.0f) * v->tan_half_yfov * v->aspect;
+    float sy = (1.0f - 2.0f * y / (float)v->height) * v->tan_half_yfov;
+    vec3 w = v3_add(v->forward, v3_add(v3_scale(v->right, sx), v3_scale(v->up, sy)));
+    float nw = v3_dot(h->ng, w);
+    float depth = v3_dot(h->ng, v3_sub(h->p, v->origin)) / nw;
+    if (!(fabsf(nw) >= HEIGHTFIELD_MIN_FACING * v3_length(w) && depth > 0.0f))
+        depth = hs->depth[j];
+    return fminf(fmaxf(depth, hs->depth_lo[j]), hs->depth_hi[j]);
+}
+
+/* The ray's end: where it reaches max_distance, or just short of the camera
+ * plane, or far enough to leave any image (100 times the start's depth
+ * beyond which the projection hardly moves: the march stops at the border). */
+static float ray_end(const heightfield_settings *hs, vec3 c0, vec3 dc)
+{
+    float t = isfinite(hs->max_distance) ? hs->max_distance : 1e3f * fmaxf(c0.z, 1e-3f);
+    float near = 1e-3f * c0.z;
+    if (dc.z < 0.0f)
+        t = fminf(t, (near - c0.z) / dc.z);
+    return t;
+}
+
+/* Clips the screen segment s0 + u (s1 - s0), u in [0, 1], to the image. */
+static float clip_to_image(float x0, float y0, float x1, float y1, float w, float h)
+{
+    float u = 1.0f;
+    if (x1 < 0.0f) u = fminf(u, x0 / (x0 - x1));
+    if (x1 > w) u = fminf(u, (w - x0) / (x1 - x0));
+    if (y1 < 0.0f) u = fminf(u, y0 / (y0 - y1));
+    if (y1 > h) u = fminf(u, (h - y0) / (y1 - y0));
+    return fmaxf(u, 0.0f);
+}
+
+/* Whether the ray's point at screen parameter u (segment s0 -> s1, depths
+ * z0 -> z1) lies behind the height field. */
+typedef struct {
+    float x0, y0, x1, y1, z0, z1;
+    int x_start, y_start;
+} screen_segment;
+
+static int behind_at(const heightfield_settings *hs, const screen_segment *sg, float u)
+{
+    const camera_view *v = &hs->gb->view;
+    float x = sg->x0 + u * (sg->x1 - sg->x0), y = sg->y0 + u * (sg->y1 - sg->y0);
+    int px = (int)floorf(x), py = (int)floorf(y);
+    if (px < 0 || py < 0 || px >= v->width || py >= v->height || (px == sg->x_start && py == sg->y_start))
+        return 0; /* nothing known off the image; the start's own plane cannot occlude an outgoing ray */
+    long j = (long)py * v->width + px;
+    /* Perspective-correct depth: 1/z is linear in screen space. */
+    float a = u * sg->z0 / ((1.0f - u) * sg->z1 + u * sg->z0);
+    float z = sg->z0 + a * (sg->z1 - sg->z0);
+    return hs->gb->mask[j] && z > surface_depth(hs, j, x, y) * (1.0f + 1e-5f);
+}
+
+/* Distance along the screen path (origin o, unit direction d) to the next
+ * multiple of `size` beyond cell c on one axis. */
+static float boundary(float o, float d, int c, int size)
+{
+    if (d > 0.0f)
+        return ((float)((c / size + 1) * size) - o) / d;
+    if (d < 0.0f)
+        return ((float)(c / size * size) - o) / d;
+    return INFINITY;
+}
+
+static float ray_depth(const screen_segment *sg, float u)
+{
+    float a = u * sg->z0 / ((1.0f - u) * sg->z1 + u * sg->z0);
+    return sg->z0 + a * (sg->z1 - sg->z0);
+}
+
+/* The screen path of the ray crosses pixel cells; in each, the ray is behind
+ * the cell's plane on at most one side of a single point (the ray and the
+ * plane are both straight), so testing the ray just inside both ends of every
+ * cell it crosses decides exactly whether it passes behind the height field.
+ * Tiles (32x32, then 8x8) whose nearest surface is farther than the ray's
+ * depth through them (the ray's depth is monotonic) are crossed in one step. */
+/* The nearest the surface of pixel j comes to the camera: its plane's depth
+ * is extreme at the cell's corners (1/depth is linear across it). */
+const int heightfield_tile_sizes[HEIGHTFIELD_LEVELS] = {32, 8};
+
+static float cell_min_depth(const heightfield_settings *hs, int x, int y)
+{
+    long j = (long)y * hs->gb->width + x;
+    float m = hs->depth[j];
+    for (int k = 0; k < 4; ++k)
+        m = fminf(m, surface_depth(hs, j, (float)(x + (k & 1)), (float)(y + (k >> 1))));
+    return m;
+}
+
+static int covered(const gbuffer *gb, int x, int y)
+{
+    return x >= 0 && y >= 0 && x < gb->width && y < gb->height && gb->mask[(size_t)y * gb->width + x];
+}
+
+int heightfield_settings_init(heightfield_settings *hs, const gbuffer *gb, float max_distance)
+{
+    size_t n = (size_t)gb->width * (size_t)gb->height;
+    hs->gb = gb;
+    hs->max_distance = max_distance;
+    int tiles_y[HEIGHTFIELD_LEVELS], ok = 1;
+    hs->depth = malloc(sizeof *hs->depth * n);
+    hs->depth_lo = malloc(sizeof *hs->depth_lo * n);
+    hs->depth_hi = malloc(sizeof *hs->depth_hi * n);
+    ok &= hs->depth_lo && hs->depth_hi;
+    for (int level = 0; level < HEIGHTFIELD_LEVELS; ++level) {
+        int size = heightfield_tile_sizes[level];
+        hs->tiles_x[level] = (gb->width + size - 1) / size;
+        tiles_y[level] = (gb->height + size - 1) / size;
+        hs->tile_min[level] = malloc(sizeof(float) * (size_t)hs->tiles_x[level] * (size_t)tiles_y[level]);
+        ok &= hs->tile_min[level] != NULL;
+    }
+    if (!hs->depth || !ok) {
+        heightfield_settings_free(hs);
+        return -1;
+    }
+    for (size_t i = 0; i < n; ++i)
+        hs->depth[i] = gb->mask[i] ? camera_depth(&gb->view, gb->hits[i].p) : INFINITY;
+    for (int y = 0; y < gb->height; ++y)
+        for (int x = 0; x < gb->width; ++x) {
+            size_t i = (size_t)y * gb->width + x;
+            hs->depth_lo[i] = hs->depth_hi[i] = hs->depth[i];
+            if (!gb->mask[i])
+                continue;
+            for (int k = 0; k < 9; ++k) {
+                int ox = k % 3 - 1, oy = k / 3 - 1;
+                float d;
+                if (covered(gb, x + ox, y + oy))
+                    d = hs->depth[(size_t)(y + oy) * gb->width + x + ox];
+                else if (covered(gb, x - ox, y - oy)) /* the missing side mirrored */
+                    d = 2.0f * hs->depth[i] - hs->depth[(size_t)(y - oy) * gb->width + x - ox];
+                else
+                    continue;
+                hs->depth_lo[i] = fminf(hs->depth_lo[i], d);
+                hs->depth_hi[i] = fmaxf(hs->depth_hi[i], d);
+            }
+        }
+    for (int level = 0; level < HEIGHTFIELD_LEVELS; ++level)
+        for (int t = 0; t < hs->tiles_x[level] * tiles_y[level]; ++t)
+            hs->tile_min[level][t] = INFINITY;
+    for (int y = 0; y < gb->height; ++y)
+        for (int x = 0; x < gb->width; ++x) {
+            if (!gb->mask[(size_t)y * gb->width + x])
+                continue;
+            float m = cell_min_depth(hs, x, y);
+            for (int level = 0; level < HEIGHTFIELD_LEVELS; ++level) {
+                int size = heightfield_tile_sizes[level];
+                float *t = &hs->tile_min[level][(y / size) * hs->tiles_x[level] + x / size];
+                *t = fminf(*t, m);
+            }
+        }
+    return 0;
+}
+
+void heightfield_settings_free(heightfield_settings *hs)
+{
+    free(hs->depth);
+    free(hs->depth_lo);
+    free(hs->depth_hi);
+    hs->depth = hs->depth_lo = hs->depth_hi = NULL;
+    for (int level = 0; level < HEIGHTFIELD_LEVELS; ++level) {
+        free(hs->tile_min[level]);
+        hs->tile_min[level] = NULL;
+    }
+}
+
+int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d)
+{
+    const camera_view *v = &hs->gb->view;
+    vec3 c0 = to_camera(v, p), dc = v3(v3_dot(d, v->right), v3_dot(d, v->up), v3_dot(d, v->forward));
+    vec3 c1 = v3_add(c0, v3_scale(dc, ray_end(hs, c0, dc)));
+    screen_segment sg = {0, 0, 0, 0, c0.z, c1.z, 0, 0};
+    to_screen(v, c0, &sg.x0, &sg.y0);
+    to_screen(v, c1, &sg.x1, &sg.y1);
+    sg.x_start = (int)floorf(sg.x0);
+    sg.y_start = (int)floorf(sg.y0);
+    float length = hypotf(sg.x1 - sg.x0, sg.y1 - sg.y0);
+    if (!(length > 0.0f))
+        return 1;
+    float u_end = clip_to_image(sg.x0, sg.y0, sg.x1, sg.y1, (float)v->width, (float)v->height);
+    float dx = (sg.x1 - sg.x0) / length, dy = (sg.y1 - sg.y0) / length, tau_end = u_end * length;
+    const float eps = 1e-3f;
+    for (float tau = 0.0f; tau < tau_end;) {
+        int cx = (int)floorf(sg.x0 + (tau + eps) * dx), cy = (int)floorf(sg.y0 + (tau + eps) * dy);
+        if (cx < 0 || cy < 0 || cx >= v->width || cy >= v->height)
+            break;
+        int skipped = 0;
+        for (int level = 0; level < HEIGHTFIELD_LEVELS && !skipped; ++level) {
+            int size = heightfield_tile_sizes[level];
+            float tile_exit = fminf(fminf(boundary(sg.x0, dx, cx, size), boundary(sg.y0, dy, cy, size)), tau_end);
+            /* Nudged positions can round back onto the boundary just crossed
+             * when the path is nearly parallel to it: always move on. */
+            tile_exit = fmaxf(tile_exit, tau + eps);
+            float tile_min = hs->tile_min[level][(cy / size) * hs->tiles_x[level] + cx / size];
+            if (fmaxf(ray_depth(&sg, tau / length), ray_depth(&sg, tile_exit / length)) <= tile_min) {
+                tau = tile_exit;
+                skipped = 1;
+            }
+        }
+        if (skipped)
+            continue;
+        float cell_exit = fmaxf(fminf(fminf(boundary(sg.x0, dx, cx, 1), boundary(sg.y0, dy, cy, 1)), tau_end), tau + eps);
+        if ((tau > 0.0f && behind_at(hs, &sg, (tau + eps) / length)) || behind_at(hs, &sg, (cell_exit - eps) / length))
+            return 0;
+        tau = cell_exit;
+    }
+    return 1;
+}
+
+/* Per sample one cosine- and one uniform-distributed direction from the same
+ * 2-D point (as ao_integrator.c); a direction below the geometric surface is
+ * blocked by the surface itself. */
+static int hf_sample_batch(const integrator *self, const pixel_context *px, uint32_t first_index, int count,
+                           float *values)
+{
+    const heightfield_settings *hs = self->settings;
+    const sample_pair_seeds pair = sample_pair_seeds_for(px, 0);
+    float u0[SAMPLE_BATCH], u1[SAMPLE_BATCH];
+    vec3 local[2][SAMPLE_BATCH];
+    sample_pair_points(&pair, first_index, count, u0, u1);
+    sample_hemisphere_batch(u0, u1, count, local[0], local[1]);
+    int marched = 0;
+    for (int k = 0; k < count; ++k)
+        for (int q = 0; q < 2; ++q) {
+            vec3 d = frame_to_world(&px->shading, local[q][k]);
+            int above = v3_dot(d, px->surface->ng) > 0.0f;
+            values[(q == 0 ? HF_V : HF_VUNIFORM) * SAMPLE_BATCH + k] =
+                above && heightfield_unoccluded(hs, px->surface->p, d) ? 1.0f : 0.0f;
+            marched += above;
+        }
+    return marched;
+}
+
+integrator heightfield_ao_integrator(const heightfield_settings *settings)
+{
+    integrator it = {"heightfield-ao", HF_QUANTITY_COUNT, hf_quantities, NULL, hf_sample_batch, NULL, settings};
+    return it;
+}

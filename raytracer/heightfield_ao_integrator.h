@@ -1,0 +1,43 @@
+/* Height-field AO: the screen-space ray marcher of the GTAO talk's
+ * methodology (seeds/001, "Methodology": "Screen-space ray marcher (height
+ * map)"). Cosine-weighted (and uniform) AO as in ao_integrator.h, but a ray
+ * is blocked only by the depth buffer, taken as a height field seen from the
+ * camera with infinite thickness: a point of the ray is inside the scene when
+ * it lies farther along its eye ray than the surface the G-buffer holds
+ * there. Each pixel's surface is its tangent plane (geometric normal) over the
+ * pixel's footprint, clamped to its neighbours' depths, so planes are
+ * reproduced exactly (core/heightfield_model.h); background pixels hold
+ * nothing. A ray that leaves the image or crosses the camera plane escapes
+ * (nothing beyond the screen is known). This is the quantity GTAO computes
+ * exactly, given enough slices and samples, so GTAO minus this reference is
+ * pure sampling/denoising error; this reference minus the 3-D one is the
+ * height-field assumption's error. */
+#ifndef GTLAB_RAYTRACER_HEIGHTFIELD_AO_INTEGRATOR_H
+#define GTLAB_RAYTRACER_HEIGHTFIELD_AO_INTEGRATOR_H
+
+#include "raytracer/render_loop.h"
+
+enum { HEIGHTFIELD_LEVELS = 2 };
+extern const int heightfield_tile_sizes[HEIGHTFIELD_LEVELS]; /* tile sides in pixels, coarse to fine */
+
+typedef struct {
+    const gbuffer *gb;
+    float *depth;       /* per-pixel depth along the camera axis (owned) */
+    float *depth_lo, *depth_hi; /* per pixel, the range of its and its neighbours' depths (owned) */
+    float *tile_min[HEIGHTFIELD_LEVELS]; /* per tile of each level, the nearest depth of its surfaces (owned) */
+    int tiles_x[HEIGHTFIELD_LEVELS];
+    float max_distance; /* V = 1 beyond it along the ray; INFINITY for none */
+} heightfield_settings;
+
+/* Prepares the settings from a G-buffer (keeps a pointer to it). Returns 0,
+ * or -1 when out of memory. */
+int heightfield_settings_init(heightfield_settings *hs, const gbuffer *gb, float max_distance);
+void heightfield_settings_free(heightfield_settings *hs);
+
+/* 1 if the ray p + t d, t in (0, max_distance], stays in front of the
+ * height field (exposed for tests). */
+int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d);
+
+integrator heightfield_ao_integrator(const heightfield_settings *settings);
+
+#endif
