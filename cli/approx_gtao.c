@@ -55,11 +55,32 @@ static int compute(const ss_gbuffer *g, const void *params, image *out)
 }
 
 /* Options that override the preset. */
-static int parse_option(int c, const char *arg, gtao_params *p)
+/* The parameters and the preset they started from (for the header). */
+typedef struct {
+    gtao_params p;
+    const char *preset;
+} gtao_settings;
+
+static int compute_settings(const ss_gbuffer *g, const void *settings, image *out)
 {
+    return compute(g, &((const gtao_settings *)settings)->p, out);
+}
+
+static void settings_text(const void *settings, char *text, size_t size)
+{
+    const gtao_settings *s = settings;
+    char params[512];
+    gtao_params_text(&s->p, params, sizeof params);
+    snprintf(text, size, "preset=%s %s", s->preset, params);
+}
+
+static int parse_option(int c, const char *arg, void *settings)
+{
+    gtao_params *p = &((gtao_settings *)settings)->p;
     double v;
     long n;
     switch (c) {
+    case 'p': return 0; /* read first, by find_preset */
     case 'r': return cli_parse_double("--radius", arg, 1e-9, 1e30, &v) ? -1 : (p->radius = (float)v, 0);
     case 'f': return cli_parse_double("--falloff", arg, 0, 1, &v) ? -1 : (p->falloff = (float)v, 0);
     case 'm': return cli_parse_double("--max-radius-px", arg, 1, 4096, &v) ? -1 : (p->max_radius_px = (float)v, 0);
@@ -110,26 +131,10 @@ int approx_gtao(int argc, char **argv)
         {"fast-math", required_argument, 0, 'M'},   {"weighting", required_argument, 0, 'W'},
         {"bent", required_argument, 0, 'B'},
         APPROX_COMMON_OPTIONS};
-    const char *preset;
-    find_preset(argc, argv, &preset);
-    gtao_params p;
-    if (gtao_preset(preset, &p) != 0)
-        return cli_failf("--preset", "unknown preset '%s' (low, medium, high, ultra, reference)", preset);
-    approx_common common = {0};
-    int c;
-    while ((c = getopt_long(argc, argv, "o:h", longs, NULL)) != -1) {
-        if (c == 'h')
-            return print_help(), EXIT_OK;
-        int handled = approx_common_option(c, optarg, &common);
-        if (handled < 0 || (handled == 0 && c != 'p' && parse_option(c, optarg, &p) != 0))
-            return EXIT_USER_ERROR;
-    }
-    if (optind < argc)
-        return cli_failf(argv[optind], "unexpected argument (see 'gtlab approx gtao --help')");
-    if (approx_check_common(&common, "gtao") != 0)
-        return EXIT_USER_ERROR;
-    char settings[512], text[600];
-    gtao_params_text(&p, settings, sizeof settings);
-    snprintf(text, sizeof text, "preset=%s %s", preset, settings);
-    return approx_run(&common, "gtao", text, compute, &p);
+    static const approx_technique technique = {"gtao", longs, print_help, parse_option, settings_text, compute_settings};
+    gtao_settings settings;
+    find_preset(argc, argv, &settings.preset);
+    if (gtao_preset(settings.preset, &settings.p) != 0)
+        return cli_failf("--preset", "unknown preset '%s' (low, medium, high, ultra, reference)", settings.preset);
+    return approx_main(&technique, &settings, argc, argv);
 }

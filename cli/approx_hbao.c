@@ -33,8 +33,9 @@ static int compute(const ss_gbuffer *g, const void *params, image *out)
     return ao ? hbao_render(g, params, ao) : -1;
 }
 
-static int parse_option(int c, const char *arg, hbao_params *p)
+static int parse_option(int c, const char *arg, void *params)
 {
+    hbao_params *p = params;
     double v;
     long n;
     switch (c) {
@@ -50,6 +51,8 @@ static int parse_option(int c, const char *arg, hbao_params *p)
     }
 }
 
+static void settings_text(const void *params, char *text, size_t size) { hbao_params_text(params, text, size); }
+
 int approx_hbao(int argc, char **argv)
 {
     static const struct option longs[] = {
@@ -58,21 +61,7 @@ int approx_hbao(int argc, char **argv)
         {"attenuation", required_argument, 0, 'A'}, {"pattern", required_argument, 0, 'P'},
         {"denoise", required_argument, 0, 'D'},    {"frames", required_argument, 0, 'F'},
         APPROX_COMMON_OPTIONS};
+    static const approx_technique technique = {"hbao", longs, print_help, parse_option, settings_text, compute};
     hbao_params p = {8, 8, 1.0f, 256.0f, 1, 1, 0, 1};
-    approx_common common = {0};
-    int c;
-    while ((c = getopt_long(argc, argv, "o:h", longs, NULL)) != -1) {
-        if (c == 'h')
-            return print_help(), EXIT_OK;
-        int handled = approx_common_option(c, optarg, &common);
-        if (handled < 0 || (handled == 0 && parse_option(c, optarg, &p) != 0))
-            return EXIT_USER_ERROR;
-    }
-    if (optind < argc)
-        return cli_failf(argv[optind], "unexpected argument (see 'gtlab approx hbao --help')");
-    if (approx_check_common(&common, "hbao") != 0)
-        return EXIT_USER_ERROR;
-    char settings[512];
-    hbao_params_text(&p, settings, sizeof settings);
-    return approx_run(&common, "hbao", settings, compute, &p);
+    return approx_main(&technique, &p, argc, argv);
 }

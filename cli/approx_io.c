@@ -85,16 +85,14 @@ int approx_output_init(const approx_input *in, const char *technique, const char
     return rc;
 }
 
-int approx_check_common(const approx_common *c, const char *technique)
-{
-    if (!c->gbuffer)
-        return cli_failf(technique, "no --gbuffer given (see 'gtlab approx %s --help')", technique), -1;
-    if (!c->output)
-        return cli_failf(technique, "no output given: -o out.exr"), -1;
-    return 0;
-}
+/* The options every technique takes. */
+typedef struct {
+    const char *gbuffer, *camera, *output;
+    long threads; /* 0: all cores */
+} approx_common;
 
-int approx_common_option(int c, const char *arg, approx_common *common)
+/* 1 if c is a common option (stored), 0 if not, -1 after an error (printed). */
+static int common_option(int c, const char *arg, approx_common *common)
 {
     switch (c) {
     case 'g': common->gbuffer = arg; return 1;
@@ -114,9 +112,11 @@ int approx_parse_switch(const char *option, const char *arg, int *out)
     return cli_failf(option, "'%s' is neither on nor off", arg), -1;
 }
 
-int approx_run(const approx_common *c, const char *technique, const char *settings, approx_compute_fn compute,
-               const void *params)
+/* Loads, computes, writes: returns the exit status. */
+static int run(const approx_technique *t, const approx_common *c, const void *params)
 {
+    char settings[640];
+    t->settings_text(params, settings, sizeof settings);
     gt_error e;
     approx_input in;
     if (approx_load(c->gbuffer, c->camera, &in, &e) != 0)
@@ -125,14 +125,33 @@ int approx_run(const approx_common *c, const char *technique, const char *settin
         omp_set_num_threads((int)c->threads);
     image out = {0};
     int status = EXIT_OK;
-    if (approx_output_init(&in, technique, settings, &out) != 0 || compute(&in.g, params, &out) != 0) {
-        fprintf(stderr, "gtlab: %s: out of memory\n", technique);
+    if (approx_output_init(&in, t->name, settings, &out) != 0 || t->compute(&in.g, params, &out) != 0) {
+        fprintf(stderr, "gtlab: %s: out of memory\n", t->name);
         status = EXIT_INTERNAL_ERROR;
-    } else {
-        if (exr_write(c->output, &out, &e) != 0)
-            status = cli_fail(&e);
+    } else if (exr_write(c->output, &out, &e) != 0) {
+        status = cli_fail(&e);
     }
     image_free(&out);
     approx_input_free(&in);
     return status;
+}
+
+int approx_main(const approx_technique *t, void *params, int argc, char **argv)
+{
+    approx_common common = {0};
+    int c;
+    while ((c = getopt_long(argc, argv, "o:h", t->options, NULL)) != -1) {
+        if (c == 'h')
+            return t->print_help(), EXIT_OK;
+        int handled = common_option(c, optarg, &common);
+        if (handled < 0 || (handled == 0 && t->parse_option(c, optarg, params) != 0))
+            return EXIT_USER_ERROR;
+    }
+    if (optind < argc)
+        return cli_failf(argv[optind], "unexpected argument (see 'gtlab approx %s --help')", t->name);
+    if (!common.gbuffer)
+        return cli_failf(t->name, "no --gbuffer given (see 'gtlab approx %s --help')", t->name);
+    if (!common.output)
+        return cli_failf(t->name, "no output given: -o out.exr");
+    return run(t, &common, params);
 }

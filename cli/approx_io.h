@@ -5,6 +5,9 @@
 #ifndef GTLAB_CLI_APPROX_IO_H
 #define GTLAB_CLI_APPROX_IO_H
 
+#include <getopt.h>
+#include <stddef.h>
+
 #include "core/error.h"
 #include "core/image.h"
 #include "realtime/screen_space.h"
@@ -15,12 +18,6 @@ typedef struct {
     ss_gbuffer g;
     camera cam;
 } approx_input;
-
-/* The options every technique takes. */
-typedef struct {
-    const char *gbuffer, *camera, *output;
-    long threads; /* 0: all cores */
-} approx_common;
 
 /* The camera of a G-buffer as real-time code sees it. */
 ss_camera approx_ss_camera(const camera *cam);
@@ -43,19 +40,25 @@ int approx_output_init(const approx_input *in, const char *technique, const char
     {                                                                                                                 \
         0, 0, 0, 0                                                                                                    \
     }
-/* Handles one of the common options: 1 if it was one, 0 if not, -1 after an
- * error (printed). */
-int approx_common_option(int c, const char *arg, approx_common *common);
 /* "on" / "off" -> 1 / 0; -1 after an error (printed). */
 int approx_parse_switch(const char *option, const char *arg, int *out);
-/* Checks the common options after parsing (gbuffer and output given). */
-int approx_check_common(const approx_common *c, const char *technique);
 
-/* Computes the technique's channels into out (which already holds mask.A). */
-typedef int (*approx_compute_fn)(const ss_gbuffer *g, const void *params, image *out);
-/* Loads, computes, writes: returns the exit status. */
-int approx_run(const approx_common *c, const char *technique, const char *settings, approx_compute_fn compute,
-               const void *params);
+/* A technique's command line: its getopt_long table (its own options, then
+ * APPROX_COMMON_OPTIONS), its help, its option parser, the text of its
+ * parameters for the header, and the computation. */
+typedef struct {
+    const char *name; /* "hbao" */
+    const struct option *options;
+    void (*print_help)(void);
+    int (*parse_option)(int c, const char *arg, void *params); /* 0, or -1 after an error (printed) */
+    void (*settings_text)(const void *params, char *text, size_t size);
+    int (*compute)(const ss_gbuffer *g, const void *params, image *out); /* into out, which holds mask.A */
+} approx_technique;
+
+/* Parses argv into params (already holding the defaults), then loads the
+ * G-buffer, computes and writes the output: returns the exit status. */
+int approx_main(const approx_technique *t, void *params, int argc, char **argv);
+
 /* Help lines of the common options. */
 extern const char approx_common_help[];
 

@@ -31,8 +31,9 @@ static int compute(const ss_gbuffer *g, const void *params, image *out)
     return ao ? vo_render(g, params, ao) : -1;
 }
 
-static int parse_option(int c, const char *arg, vo_params *p)
+static int parse_option(int c, const char *arg, void *params)
 {
+    vo_params *p = params;
     double v;
     long n;
     switch (c) {
@@ -45,27 +46,15 @@ static int parse_option(int c, const char *arg, vo_params *p)
     }
 }
 
+static void settings_text(const void *params, char *text, size_t size) { vo_params_text(params, text, size); }
+
 int approx_vo(int argc, char **argv)
 {
     static const struct option longs[] = {
         {"radius", required_argument, 0, 'r'},  {"max-radius-px", required_argument, 0, 'm'},
         {"pattern", required_argument, 0, 'P'}, {"denoise", required_argument, 0, 'D'},
         {"frames", required_argument, 0, 'F'},  APPROX_COMMON_OPTIONS};
+    static const approx_technique technique = {"vo", longs, print_help, parse_option, settings_text, compute};
     vo_params p = {1.0f, 256.0f, 1, 1, 1};
-    approx_common common = {0};
-    int c;
-    while ((c = getopt_long(argc, argv, "o:h", longs, NULL)) != -1) {
-        if (c == 'h')
-            return print_help(), EXIT_OK;
-        int handled = approx_common_option(c, optarg, &common);
-        if (handled < 0 || (handled == 0 && parse_option(c, optarg, &p) != 0))
-            return EXIT_USER_ERROR;
-    }
-    if (optind < argc)
-        return cli_failf(argv[optind], "unexpected argument (see 'gtlab approx vo --help')");
-    if (approx_check_common(&common, "vo") != 0)
-        return EXIT_USER_ERROR;
-    char settings[512];
-    vo_params_text(&p, settings, sizeof settings);
-    return approx_run(&common, "vo", settings, compute, &p);
+    return approx_main(&technique, &p, argc, argv);
 }
