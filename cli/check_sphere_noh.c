@@ -66,13 +66,9 @@ static int write_csv(const char *path, const sphere_noh_sweep *s, long count, co
                      gt_error *e)
 {
     atomic_file f;
-    if (atomic_file_begin(&f, path, e) != 0)
+    FILE *out = atomic_file_open(&f, path, "w", e);
+    if (!out)
         return -1;
-    FILE *out = fopen(f.temp_path, "w");
-    if (!out) {
-        atomic_file_abort(&f);
-        return gt_error_set(e, path, "cannot write: %s", strerror(errno));
-    }
     fprintf(out, "n_dot_v,light_theta_deg,light_phi_deg,radius_tan,max_noh2,karis_noh2,newton1_noh2,newton2_noh2,"
                  "guarded_noh2\n");
     for (long i = 0; i < count; ++i) {
@@ -82,11 +78,7 @@ static int write_csv(const char *path, const sphere_noh_sweep *s, long count, co
         fprintf(out, "%.6g,%.6g,%.6g,%.6g,%.9g,%.9g,%.9g,%.9g,%.9g\n", c.v[2], acos(c.lc[2]) * 180.0 / M_PI,
                 atan2(c.lc[1], c.lc[0]) * 180.0 / M_PI, c.radius_tan, best[i], g[0], g[1], g[2], g[3]);
     }
-    if (fclose(out) != 0) {
-        atomic_file_abort(&f);
-        return gt_error_set(e, path, "cannot write: %s", strerror(errno));
-    }
-    return atomic_file_commit(&f, e);
+    return atomic_file_close(&f, out, e);
 }
 
 /* Mean shortfalls per n.v over every other dimension, from the map's sums

@@ -55,22 +55,40 @@ int atomic_file_check_writable(const char *path, gt_error *e)
     return 0;
 }
 
-int atomic_write_text(const char *path, const char *text, gt_error *e)
+FILE *atomic_file_open(atomic_file *f, const char *path, const char *mode, gt_error *e)
 {
-    atomic_file f;
-    if (atomic_file_begin(&f, path, e) != 0)
-        return -1;
-    FILE *out = fopen(f.temp_path, "w");
+    if (atomic_file_begin(f, path, e) != 0)
+        return NULL;
+    FILE *out = fopen(f->temp_path, mode);
     if (!out) {
-        atomic_file_abort(&f);
-        return gt_error_set(e, path, "cannot write: %s", strerror(errno));
+        gt_error_set(e, path, "cannot write: %s", strerror(errno));
+        atomic_file_abort(f);
     }
-    size_t n = strlen(text);
-    int ok = fwrite(text, 1, n, out) == n;
+    return out;
+}
+
+int atomic_file_close(atomic_file *f, FILE *out, gt_error *e)
+{
+    int ok = !ferror(out);
     ok = (fclose(out) == 0) && ok;
     if (!ok) {
-        atomic_file_abort(&f);
-        return gt_error_set(e, path, "write failed (disk full?)");
+        atomic_file_abort(f);
+        return gt_error_set(e, f->final_path, "write failed (disk full?)");
     }
-    return atomic_file_commit(&f, e);
+    return atomic_file_commit(f, e);
+}
+
+int atomic_write_bytes(const char *path, const void *data, size_t size, gt_error *e)
+{
+    atomic_file f;
+    FILE *out = atomic_file_open(&f, path, "wb", e);
+    if (!out)
+        return -1;
+    fwrite(data, 1, size, out);
+    return atomic_file_close(&f, out, e);
+}
+
+int atomic_write_text(const char *path, const char *text, gt_error *e)
+{
+    return atomic_write_bytes(path, text, strlen(text), e);
 }

@@ -5,6 +5,8 @@
 #ifndef GTLAB_CORE_ATOMIC_FILE_H
 #define GTLAB_CORE_ATOMIC_FILE_H
 
+#include <stdio.h>
+
 #include "core/error.h"
 
 #define ATOMIC_PATH_MAX 4096
@@ -26,7 +28,14 @@ void atomic_file_abort(atomic_file *f);
 /* Checks, without leaving anything behind, that `path` could be written. */
 int atomic_file_check_writable(const char *path, gt_error *e);
 
-/* Writes a whole text file atomically. */
+/* A stream on a fresh temporary file for `path` (mode "w" or "wb"), or NULL
+ * with e. Finish with atomic_file_close, which commits when every write and
+ * the close succeeded and aborts otherwise. */
+FILE *atomic_file_open(atomic_file *f, const char *path, const char *mode, gt_error *e);
+int atomic_file_close(atomic_file *f, FILE *out, gt_error *e);
+
+/* Writes a whole file atomically. */
+int atomic_write_bytes(const char *path, const void *data, size_t size, gt_error *e);
 int atomic_write_text(const char *path, const char *text, gt_error *e);
 
 #endif

@@ -57,6 +57,14 @@ int gbuffer_write_channels(const gbuffer *gb, const scene *s, image *img)
     return 0;
 }
 
+long gbuffer_covered_pixels(const gbuffer *gb)
+{
+    long covered = 0;
+    for (int i = 0; i < gb->width * gb->height; ++i)
+        covered += gb->mask[i];
+    return covered;
+}
+
 void gbuffer_free(gbuffer *gb)
 {
     free(gb->hits);

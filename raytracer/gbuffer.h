@@ -23,6 +23,8 @@ int gbuffer_render(const embree_scene *es, const camera *cam, normal_mode normal
                    gt_error *e);
 /* Adds the G-buffer channels to img (same size). */
 int gbuffer_write_channels(const gbuffer *gb, const scene *s, image *img);
+/* The number of pixels whose primary ray hit a surface. */
+long gbuffer_covered_pixels(const gbuffer *gb);
 void gbuffer_free(gbuffer *gb);
 
 #endif

@@ -16,9 +16,7 @@ enum { RAW_STREAM = 64 };
  * later bounces'. */
 static struct RTCRayHit *make_rays(const gbuffer *gb, int spp, long *count)
 {
-    long covered = 0;
-    for (int i = 0; i < gb->width * gb->height; ++i)
-        covered += gb->mask[i];
+    long covered = gbuffer_covered_pixels(gb);
     struct RTCRayHit *rays = aligned_alloc(64, sizeof *rays * (size_t)(covered * spp + RAW_STREAM));
     if (!rays)
         return NULL;
@@ -26,8 +24,7 @@ static struct RTCRayHit *make_rays(const gbuffer *gb, int spp, long *count)
     for (int i = 0; i < gb->width * gb->height; ++i) {
         if (!gb->mask[i])
             continue;
-        pixel_context px = pixel_context_prepare(&gb->hits[i], pixel_seed(1, (uint32_t)(i % gb->width),
-                                                                          (uint32_t)(i / gb->width)));
+        pixel_context px = pixel_context_at(gb, i, 1);
         const sample_pair_seeds pair = sample_pair_seeds_for(&px, 0);
         for (int k = 0; k < spp; ++k) {
             float u[2];

@@ -27,9 +27,7 @@ const char *const raw_call_names[RAW_CALL_COUNT] = {"Embree rtcOccluded1", "Embr
  * figure). */
 static struct RTCRay *make_rays(const gbuffer *gb, long *count)
 {
-    long covered = 0;
-    for (int i = 0; i < gb->width * gb->height; ++i)
-        covered += gb->mask[i];
+    long covered = gbuffer_covered_pixels(gb);
     struct RTCRay *rays = aligned_alloc(64, sizeof *rays * (size_t)(covered * RAYS_PER_PIXEL + LONGEST_STREAM));
     if (!rays)
         return NULL;
@@ -37,8 +35,7 @@ static struct RTCRay *make_rays(const gbuffer *gb, long *count)
     for (int i = 0; i < gb->width * gb->height; ++i) {
         if (!gb->mask[i])
             continue;
-        pixel_context px = pixel_context_prepare(&gb->hits[i], pixel_seed(1, (uint32_t)(i % gb->width),
-                                                                          (uint32_t)(i / gb->width)));
+        pixel_context px = pixel_context_at(gb, i, 1);
         const sample_pair_seeds pair = sample_pair_seeds_for(&px, 0);
         for (uint32_t k = 0; k < RAYS_PER_PIXEL; ++k) {
             float u[2];

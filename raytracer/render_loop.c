@@ -32,6 +32,12 @@ pixel_context pixel_context_prepare(const surface_hit *surface, uint32_t seed)
     return px;
 }
 
+pixel_context pixel_context_at(const gbuffer *gb, int pixel, uint32_t seed)
+{
+    uint32_t x = (uint32_t)(pixel % gb->width), y = (uint32_t)(pixel / gb->width);
+    return pixel_context_prepare(&gb->hits[pixel], pixel_seed(seed, x, y));
+}
+
 void sample_pair_points(const sample_pair_seeds *s, uint32_t first, int count, float *u0, float *u1)
 {
     /* Even samples are points of sequence 0, odd ones of sequence 1. */
@@ -53,7 +59,7 @@ static uint64_t render_pixel(const gbuffer *gb, const integrator *it, const samp
                              int x, int y, uint64_t *samples)
 {
     int pixel = y * gb->width + x;
-    pixel_context px = pixel_context_prepare(&gb->hits[pixel], pixel_seed(ss->seed, (uint32_t)x, (uint32_t)y));
+    pixel_context px = pixel_context_at(gb, pixel, ss->seed);
     float values[SAMPLE_BATCH * MAX_QUANTITIES];
     mc_pixel acc;
     mc_pixel_clear(&acc, film);

@@ -32,6 +32,8 @@ typedef struct {
 
 /* The context of a pixel whose sequence seed is pixel_seed(seed, x, y). */
 pixel_context pixel_context_prepare(const surface_hit *surface, uint32_t seed);
+/* The context of G-buffer pixel `pixel` (row-major) under the render seed. */
+pixel_context pixel_context_at(const gbuffer *gb, int pixel, uint32_t seed);
 
 /* The two halves of a pixel's samples come from two independently scrambled
  * Sobol' sequences: sample i is point i / 2 of sequence i mod 2. Within one

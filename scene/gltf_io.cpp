@@ -1104,21 +1104,7 @@ int build_model(const scene *s, const char *path, gt_error *e, tinygltf::Model &
 
 int write_atomically(const char *path, const std::string &bytes, gt_error *e)
 {
-    atomic_file f;
-    if (atomic_file_begin(&f, path, e) != 0)
-        return -1;
-    FILE *out = std::fopen(f.temp_path, "wb");
-    if (!out) {
-        atomic_file_abort(&f);
-        return gt_error_set(e, path, "cannot write: %s", std::strerror(errno));
-    }
-    bool ok = std::fwrite(bytes.data(), 1, bytes.size(), out) == bytes.size();
-    ok = std::fclose(out) == 0 && ok;
-    if (!ok) {
-        atomic_file_abort(&f);
-        return gt_error_set(e, path, "write failed (disk full?)");
-    }
-    return atomic_file_commit(&f, e);
+    return atomic_write_bytes(path, bytes.data(), bytes.size(), e);
 }
 
 } // namespace

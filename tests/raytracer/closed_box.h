@@ -1,4 +1,5 @@
-/* The cube [-1, 1]^3 as six inward-facing quads (one mesh, default material),
+/* The cube [-1, 1]^3 as six inward-facing quads (one mesh, the default
+ * material: white, base colour 1),
  * for tests that need a scene from which no ray escapes. */
 #ifndef GTLAB_TESTS_RAYTRACER_CLOSED_BOX_H
 #define GTLAB_TESTS_RAYTRACER_CLOSED_BOX_H

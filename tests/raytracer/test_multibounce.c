@@ -22,6 +22,7 @@
 #include "raytracer/reference_merge.h"
 #include "raytracer/reference_render.h"
 #include "tests/check.h"
+#include "tests/raytracer/closed_box.h"
 
 /* ---- Rendering helpers ------------------------------------------------------------- */
 
@@ -166,29 +167,6 @@ static void test_open_plane(void)
         image_free(&img);
     }
     scene_free(&s);
-}
-
-/* The cube [-1, 1]^3 as six inward-facing quads (one mesh, its default
- * material white: base colour 1). */
-static int add_closed_box(scene *s)
-{
-    scene_mesh *m = scene_add_mesh(s, 24, 12, 0);
-    if (!m)
-        return -1;
-    static const float corner[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-    for (int face = 0; face < 6; ++face) {
-        int axis = face / 2, b = (axis + 1) % 3, c = (axis + 2) % 3;
-        float side = face % 2 ? 1.0f : -1.0f;
-        for (int k = 0; k < 4; ++k) {
-            float *p = &m->positions[3 * (4 * face + k)], *n = &m->normals[3 * (4 * face + k)];
-            p[axis] = side, p[b] = corner[k][0], p[c] = corner[k][1];
-            n[axis] = -side, n[b] = 0.0f, n[c] = 0.0f;
-        }
-        static const uint32_t quad[6] = {0, 1, 2, 0, 2, 3};
-        for (int k = 0; k < 6; ++k)
-            m->indices[6 * face + k] = 4u * (uint32_t)face + quad[k];
-    }
-    return 0;
 }
 
 static void test_closed_box(void)
