@@ -108,8 +108,6 @@ void sphere_rim_newton_step(const sphere_rim *rim, float *num, float *den) { rim
 
 void sphere_rim_rotate(sphere_rim *rim, float num, float den) { rim_rotate(rim, num, den); }
 
-float sphere_rim_noh_squared(const sphere_rim *rim) { return rim_noh_squared(rim); }
-
 float sphere_noh_squared(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l, int newton_steps)
 {
     sphere_rim rim;

@@ -40,9 +40,6 @@ void sphere_rim_newton_step(const sphere_rim *rim, float *num, float *den);
  * step starts from x = 0 again. */
 void sphere_rim_rotate(sphere_rim *rim, float num, float den);
 
-/* (N.H)^2 at the rim's reference point (phi = 0). */
-float sphere_rim_noh_squared(const sphere_rim *rim);
-
 /* GetNoHSquared: (N.H)^2 after newton_steps (0 = Karis's point, 1 = the
  * talk, 2 = one more step from the first), 1 if R is inside the light. */
 float sphere_noh_squared(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l, int newton_steps);

@@ -2,7 +2,8 @@
  * the Newton step against finite differences of (N.H)^2 computed with
  * vectors, GetNoHSquared against the rotated light vector and against the
  * brute-force maximum over the light, the early-out, the small-light limit
- * of the approximations, and Frostbite's illuminance against the MC
+ * of the approximations, the representative-point diffuse term against the
+ * exact illuminance, and Frostbite's illuminance against the MC
  * reference where the light crosses the horizon. */
 #include <math.h>
 #include <stdio.h>
@@ -165,11 +166,41 @@ static void test_small_light_limit(void)
     }
 }
 
+/* The representative-point diffuse term against Frostbite's exact sphere
+ * illuminance: for a cap wholly above the horizon the exact value is
+ * pi sin^2(sigma) cos(theta) (the cap's projected solid angle), so the
+ * representative point, lit at cos(theta - sigma), is exact with the light
+ * straight above, never below the exact value elsewhere, and tends to it as
+ * sigma -> 0. Across the horizon it is an approximation with no bound here. */
+static void test_representative_diffuse(void)
+{
+    for (int i = 0; i < 200; ++i) {
+        double sin_sigma = 0.5 * uniform01((uint32_t)i, 7), sigma = asin(sin_sigma);
+        double theta = (M_PI / 2 - sigma) * uniform01((uint32_t)i, 8);
+        double exact = M_PI * sin_sigma * sin_sigma * cos(theta);
+        CHECK_NEAR(sphere_illuminance_frostbite((float)cos(theta), (float)sin_sigma), exact, 1e-5);
+        double rep = sphere_illuminance_representative((float)cos(theta), (float)sin_sigma);
+        CHECK(rep >= exact * (1.0 - 1e-5));
+        CHECK(rep <= M_PI * sin_sigma * sin_sigma * (1.0 + 1e-5));
+    }
+    CHECK_NEAR(sphere_illuminance_representative(1.0f, 0.3f), M_PI * 0.09, 1e-6);
+    for (double sin_sigma = 0.1, prev = INFINITY; sin_sigma > 1e-4; sin_sigma *= 0.1) {
+        double exact = M_PI * sin_sigma * sin_sigma * cos(1.0);
+        double rel = sphere_illuminance_representative((float)cos(1.0), (float)sin_sigma) / exact - 1.0;
+        CHECK(rel < prev);
+        prev = rel;
+        if (sin_sigma < 1e-3)
+            CHECK_NEAR(rel, 0.0, 2e-3);
+    }
+    CHECK(sphere_illuminance_representative((float)cos(2.0), 0.1f) == 0.0f); /* cap wholly below */
+}
+
 int main(void)
 {
     test_newton_step_is_newton();
     test_matches_rotated_vector();
     test_bounded_by_brute_force();
     test_small_light_limit();
+    test_representative_diffuse();
     return check_report("test_sphere_light");
 }
