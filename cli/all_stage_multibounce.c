@@ -86,8 +86,11 @@ static int render_reference(const all_context *ctx, int k, const char *dir, stag
     return multibounce_data_add_image(&st->data, &st->refs[k], spec, e);
 }
 
+/* A table cell: room for a scene name (up to 255 characters) or a number. */
+enum { CELL = 264 };
+
 /* One table row from formatted cells. */
-static void row_of(report *doc, int n, char cells[][48])
+static void row_of(report *doc, int n, char cells[][CELL])
 {
     const char *row[12];
     for (int i = 0; i < n; ++i)
@@ -204,15 +207,15 @@ static int validation_section(all_context *ctx, const stage *st, cJSON *json, gt
                 report_table_end(ctx->doc);
                 return -1;
             }
-            char cells[11][48];
-            snprintf(cells[0], 48, "%s", kScenes[k]);
-            snprintf(cells[1], 48, "%.1f", (double)kAlbedos[a]);
-            snprintf(cells[2], 48, "%.2e", v.noise_floor);
+            char cells[11][CELL];
+            snprintf(cells[0], CELL, "%s", kScenes[k]);
+            snprintf(cells[1], CELL, "%.1f", (double)kAlbedos[a]);
+            snprintf(cells[2], CELL, "%.2e", v.noise_floor);
             for (int m = 0; m < 3; ++m)
-                snprintf(cells[3 + m], 48, "%.2e", v.dssim[m]);
-            snprintf(cells[6], 48, "%.4f", v.rmse_floor);
+                snprintf(cells[3 + m], CELL, "%.2e", v.dssim[m]);
+            snprintf(cells[6], CELL, "%.4f", v.rmse_floor);
             for (int m = 0; m < 4; ++m)
-                snprintf(cells[7 + m], 48, "%.4f", v.rmse[m]);
+                snprintf(cells[7 + m], CELL, "%.4f", v.rmse[m]);
             row_of(ctx->doc, 11, cells);
             cJSON *o = cJSON_CreateObject();
             cJSON_AddStringToObject(o, "scene", kScenes[k]);
@@ -255,14 +258,14 @@ static void coefficient_table(all_context *ctx, const multibounce_analysis *a)
                                            "jackknife s.e. (scenes)", "talk", "talk - ours in jackknife s.e."};
     report_table_begin(ctx->doc, 6, headers);
     for (int i = 0; i < 6; ++i) {
-        char cells[6][48];
+        char cells[6][CELL];
         const double jk = a->jackknife_se[MB_JOINT_LINEAR][i];
-        snprintf(cells[0], 48, "%s", names[i]);
-        snprintf(cells[1], 48, "%.4f", ours[i]);
-        snprintf(cells[2], 48, "%.4f", a->joint[MB_JOINT_LINEAR].standard_errors[i]);
-        snprintf(cells[3], 48, "%.4f", jk);
-        snprintf(cells[4], 48, "%.4f", theirs[i]);
-        snprintf(cells[5], 48, "%.1f", (theirs[i] - ours[i]) / jk);
+        snprintf(cells[0], CELL, "%s", names[i]);
+        snprintf(cells[1], CELL, "%.4f", ours[i]);
+        snprintf(cells[2], CELL, "%.4f", a->joint[MB_JOINT_LINEAR].standard_errors[i]);
+        snprintf(cells[3], CELL, "%.4f", jk);
+        snprintf(cells[4], CELL, "%.4f", theirs[i]);
+        snprintf(cells[5], CELL, "%.1f", (theirs[i] - ours[i]) / jk);
         row_of(ctx->doc, 6, cells);
     }
     report_table_end(ctx->doc);
@@ -278,16 +281,16 @@ static void per_albedo_table(all_context *ctx, const multibounce_data *d, const 
         const multibounce_albedo_result *r = &a->per_albedo[k];
         const multibounce_fit *f = &r->fit;
         multibounce_cubic t = multibounce_cubic_at(&talk, r->albedo);
-        char cells[9][48];
-        snprintf(cells[0], 48, "%.1f", (double)r->albedo);
-        snprintf(cells[1], 48, "%.3f ± %.3f", f->model.a[0], f->standard_errors[0]);
-        snprintf(cells[2], 48, "%.3f ± %.3f", f->model.b[0], f->standard_errors[1]);
-        snprintf(cells[3], 48, "%.3f ± %.3f", f->model.c[0], f->standard_errors[2]);
-        snprintf(cells[4], 48, "%.3f, %.3f, %.3f", t.a, t.b, t.c);
-        snprintf(cells[5], 48, "%.4f", r->own.rmse);
-        snprintf(cells[6], 48, "%.4f", r->linear.rmse);
-        snprintf(cells[7], 48, "%.4f", r->talk.rmse);
-        snprintf(cells[8], 48, "%.1f%%", 100.0 * r->talk.below);
+        char cells[9][CELL];
+        snprintf(cells[0], CELL, "%.1f", (double)r->albedo);
+        snprintf(cells[1], CELL, "%.3f ± %.3f", f->model.a[0], f->standard_errors[0]);
+        snprintf(cells[2], CELL, "%.3f ± %.3f", f->model.b[0], f->standard_errors[1]);
+        snprintf(cells[3], CELL, "%.3f ± %.3f", f->model.c[0], f->standard_errors[2]);
+        snprintf(cells[4], CELL, "%.3f, %.3f, %.3f", t.a, t.b, t.c);
+        snprintf(cells[5], CELL, "%.4f", r->own.rmse);
+        snprintf(cells[6], CELL, "%.4f", r->linear.rmse);
+        snprintf(cells[7], CELL, "%.4f", r->talk.rmse);
+        snprintf(cells[8], CELL, "%.1f%%", 100.0 * r->talk.below);
         row_of(ctx->doc, 9, cells);
     }
     report_table_end(ctx->doc);
@@ -298,15 +301,15 @@ static void heldout_table(all_context *ctx, const multibounce_data *d, const mul
     static const char *const headers[6] = {"held-out scene", "RMSE joint linear", "RMSE joint quadratic",
                                            "RMSE joint anchored", "RMSE talk", "samples"};
     report_table_begin(ctx->doc, 6, headers);
-    char cells[6][48];
+    char cells[6][CELL];
     for (int i = 0; i <= a->heldout_count; ++i) {
         const int mean = i == a->heldout_count;
         const multibounce_heldout *h = &a->heldout[mean ? 0 : i];
-        snprintf(cells[0], 48, "%s", mean ? "mean" : d->scenes[h->scene]);
+        snprintf(cells[0], CELL, "%s", mean ? "mean" : d->scenes[h->scene]);
         for (int j = 0; j < MB_JOINT_COUNT; ++j)
-            snprintf(cells[1 + j], 48, a->has[j] ? "%.4f" : "n/a", mean ? a->heldout_mean[j] : h->err[j].rmse);
-        snprintf(cells[4], 48, "%.4f", mean ? a->heldout_mean_talk : h->talk.rmse);
-        snprintf(cells[5], 48, "%zu", mean ? d->count : h->talk.samples);
+            snprintf(cells[1 + j], CELL, a->has[j] ? "%.4f" : "n/a", mean ? a->heldout_mean[j] : h->err[j].rmse);
+        snprintf(cells[4], CELL, "%.4f", mean ? a->heldout_mean_talk : h->talk.rmse);
+        snprintf(cells[5], CELL, "%zu", mean ? d->count : h->talk.samples);
         row_of(ctx->doc, 6, cells);
     }
     report_table_end(ctx->doc);
