@@ -177,6 +177,11 @@ static void report_noh(all_context *ctx, const sphere_noh_sweep *sw, const spher
     const char *caps[2] = {"Where one Newton step helps (blue) or hurts (red), and the share of worse configurations",
                            "Mean shortfall against n.v"};
     report_figures(doc, 2, figs, caps);
+    report_finding(doc, "GetNoHSquared",
+                   "one Newton step from Karis's point cuts the mean (N.H)^2 shortfall from %.4f to %.4f but is "
+                   "worse in %.1f%% of configurations (guarded step: %.4f, worse in %.1f%%).",
+                   st->mean[NOH_KARIS], st->mean[NOH_STEP1], 100.0 * st->share_worse[NOH_STEP1], st->mean[NOH_GUARDED],
+                   100.0 * st->share_worse[NOH_GUARDED]);
     report_paragraph(doc, "The step hurts at grazing view with the light far from the normal: there f''(0) > 0 "
                           "at Karis's point, so Newton's step heads for a minimum of (N.H)^2, and a second step "
                           "goes on towards it. Taking the step only where f''(0) < 0 (xDenom < 0: one comparison, "
@@ -233,6 +238,11 @@ static void report_fit(all_context *ctx, const sphere_fit_settings *fs, const sp
     cJSON_AddItemToObject(held, "karis", errors_json(&o->karis));
     cJSON_AddItemToObject(held, "decima_published", errors_json(&o->published));
     cJSON_AddItemToObject(held, "decima_refit", errors_json(&o->refit));
+    report_finding(doc, "GGX sphere lights",
+                   "held-out mean |log error| Karis %.3f, Decima as published %.3f, Decima refit %.3f "
+                   "(radius reduction %.3g ± %.2g, published %g).",
+                   o->karis.mean_abs, o->published.mean_abs, o->refit.mean_abs, o->fit.value[0], o->fit.stderr_[0],
+                   pub.radius_reduction);
 }
 
 /* The profile as CSV and a plot. */

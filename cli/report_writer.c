@@ -28,23 +28,33 @@ static void append(char **buf, size_t *len, size_t *cap, int *failed, const char
 static void md(report *r, const char *text) { append(&r->md, &r->md_len, &r->md_cap, &r->failed, text); }
 static void html(report *r, const char *text) { append(&r->html, &r->html_len, &r->html_cap, &r->failed, text); }
 
-static void html_escaped(report *r, const char *text)
+/* Appends text to an HTML buffer with <, >, & and " escaped. */
+static void append_escaped(char **buf, size_t *len, size_t *cap, int *failed, const char *text)
 {
     char one[2] = {0, 0};
     for (const char *c = text; *c; ++c) {
-        if (*c == '<')
-            html(r, "&lt;");
-        else if (*c == '>')
-            html(r, "&gt;");
-        else if (*c == '&')
-            html(r, "&amp;");
-        else if (*c == '"')
-            html(r, "&quot;");
-        else {
-            one[0] = *c;
-            html(r, one);
-        }
+        const char *entity = *c == '<' ? "&lt;" : *c == '>' ? "&gt;" : *c == '&' ? "&amp;" : *c == '"' ? "&quot;" : NULL;
+        one[0] = *c;
+        append(buf, len, cap, failed, entity ? entity : one);
     }
+}
+
+static void html_escaped(report *r, const char *text)
+{
+    append_escaped(&r->html, &r->html_len, &r->html_cap, &r->failed, text);
+}
+
+static void finding_md(report *r, const char *text)
+{
+    append(&r->findings_md, &r->findings_md_len, &r->findings_md_cap, &r->failed, text);
+}
+
+static void finding_html(report *r, const char *text, int escaped)
+{
+    if (escaped)
+        append_escaped(&r->findings_html, &r->findings_html_len, &r->findings_html_cap, &r->failed, text);
+    else
+        append(&r->findings_html, &r->findings_html_len, &r->findings_html_cap, &r->failed, text);
 }
 
 void report_init(report *r, const char *title)
@@ -161,22 +171,67 @@ void report_figures(report *r, int count, const char *const *paths, const char *
     html(r, "</div>\n");
 }
 
+void report_findings_here(report *r)
+{
+    r->findings_md_at = r->md_len;
+    r->findings_html_at = r->html_len;
+}
+
+void report_finding(report *r, const char *topic, const char *fmt, ...)
+{
+    char text[2048];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(text, sizeof text, fmt, ap);
+    va_end(ap);
+    finding_md(r, "- **");
+    finding_md(r, topic);
+    finding_md(r, "**: ");
+    finding_md(r, text);
+    finding_md(r, "\n");
+    finding_html(r, "<li><b>", 0);
+    finding_html(r, topic, 1);
+    finding_html(r, "</b>: ", 0);
+    finding_html(r, text, 1);
+    finding_html(r, "</li>\n", 0);
+}
+
+/* `body` with `section` inserted at offset `at`, written atomically. */
+static int write_with_section(const char *path, const char *body, size_t at, const char *head, const char *section,
+                              const char *tail, gt_error *e)
+{
+    size_t n = strlen(body) + strlen(head) + strlen(section) + strlen(tail) + 1;
+    char *text = malloc(n);
+    if (!text)
+        return gt_error_set(e, path, "out of memory");
+    snprintf(text, n, "%.*s%s%s%s%s", (int)at, body, head, section, tail, body + at);
+    int rc = atomic_write_text(path, text, e);
+    free(text);
+    return rc;
+}
+
 int report_write(report *r, const char *dir, gt_error *e)
 {
     html(r, "</body></html>\n");
     if (r->failed)
         return gt_error_set(e, dir, "out of memory while writing the report");
+    int glance = r->findings_md_len > 0;
     char path[4096];
     snprintf(path, sizeof path, "%s/report.md", dir);
-    if (atomic_write_text(path, r->md, e) != 0)
+    if (write_with_section(path, r->md, glance ? r->findings_md_at : 0, glance ? "## At a glance\n\n" : "",
+                           glance ? r->findings_md : "", glance ? "\n" : "", e) != 0)
         return -1;
     snprintf(path, sizeof path, "%s/report.html", dir);
-    return atomic_write_text(path, r->html, e);
+    return write_with_section(path, r->html, glance ? r->findings_html_at : 0,
+                              glance ? "<h2>At a glance</h2>\n<ul>\n" : "", glance ? r->findings_html : "",
+                              glance ? "</ul>\n" : "", e);
 }
 
 void report_free(report *r)
 {
     free(r->md);
     free(r->html);
+    free(r->findings_md);
+    free(r->findings_html);
     memset(r, 0, sizeof *r);
 }

@@ -14,6 +14,11 @@ typedef struct {
     size_t md_len, html_len, md_cap, html_cap;
     int table_columns; /* > 0 inside a table */
     int failed;        /* out of memory at some point */
+    /* The "At a glance" list: gathered while the stages run, written where
+     * report_findings_here marked (after the introduction). */
+    char *findings_md, *findings_html;
+    size_t findings_md_len, findings_html_len, findings_md_cap, findings_html_cap;
+    size_t findings_md_at, findings_html_at;
 } report;
 
 void report_init(report *r, const char *title);
@@ -25,6 +30,11 @@ void report_table_row(report *r, const char *const *cells);
 void report_table_end(report *r);
 /* A row of figures: image paths relative to the report, with captions. */
 void report_figures(report *r, int count, const char *const *paths, const char *const *captions);
+/* Marks where the "At a glance" section goes. */
+void report_findings_here(report *r);
+/* One finding for that section: a topic and a sentence computed from the
+ * run's numbers (plain text). */
+void report_finding(report *r, const char *topic, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 /* Writes <dir>/report.md and <dir>/report.html atomically. */
 int report_write(report *r, const char *dir, gt_error *e);
 void report_free(report *r);

@@ -117,6 +117,7 @@ int verb_all(int argc, char **argv)
                      "rerunning the command reproduces the images bit for bit (timings vary with the machine). "
                      "Machine-readable figures: summary.json.",
                      GTLAB_VERSION, quality);
+    report_findings_here(&doc);
     int status = EXIT_OK;
     for (size_t i = 0; i < sizeof stages / sizeof stages[0] && status == EXIT_OK; ++i) {
         fprintf(stderr, "gtlab all: %s\n", stages[i].name);
