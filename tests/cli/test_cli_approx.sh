@@ -32,19 +32,27 @@ printf '{"position":[1,1,1],"target":[0,0,0],"yfov_deg":45,"width":64,"height":6
 expect_error camera-size "cam.json: camera is 64x64 but the G-buffer is 32x32" "$out" -- approx gtao --gbuffer "$g" --camera "$work/cam.json" -o "$out"
 
 # gtlab fit gtao-params on two tiny references: Ceres only takes steps that
-# lower the training cost, so no training scene's summed error can rise.
+# lower the training cost, so with one training scene its error under the
+# objective (DSSIM by default, or RMSE) cannot rise.
 mkdir -p "$work/refs"
 expect_ok ref-corner render ao --scene builtin:corner --width 24 --height 24 --spp 32 -o "$work/refs/corner.exr"
 expect_ok ref-boxes render ao --scene builtin:boxes --width 24 --height 24 --spp 32 -o "$work/refs/boxes.exr"
 expect_ok fit-help fit gtao-params --help
 expect_ok fit fit gtao-params --refs "$work/refs" --train corner --test boxes --preset low -o "$work/fit.json"
-python3 - "$work/fit.json" <<'PY' || fail "fit.json: training error rose or fields missing"
+expect_ok fit-rmse fit gtao-params --refs "$work/refs" --train corner --test boxes --preset low --objective rmse -o "$work/fit_rmse.json"
+python3 - "$work/fit.json" "$work/fit_rmse.json" <<'PY' || fail "fit.json: training error rose or fields missing"
 import json, sys
-f = json.load(open(sys.argv[1]))
-t = f["train_scores"][0]
-assert t["rmse_after"] <= t["rmse_before"] + 1e-9, t
-assert set(f["values"]) == {"radius_over_camera_distance", "falloff", "thickness"}
-assert f["test_scores"][0]["scene"] == "boxes"
+for path, objective in zip(sys.argv[1:], ("dssim", "rmse")):
+    f = json.load(open(path))
+    assert f["objective"] == objective, f["objective"]
+    t = f["train_scores"][0]
+    assert t[objective + "_after"] <= t[objective + "_before"] + 1e-9, t
+    assert set(f["values"]) == {"radius_over_camera_distance", "falloff", "thickness"}
+    assert f["test_scores"][0]["scene"] == "boxes"
+    # objective_per_scene is the training scene's own score after the fit
+    after = t["dssim_after"] if objective == "dssim" else t["rmse_after"] ** 2
+    assert abs(f["objective_per_scene"] - after) < 1e-6 * max(1.0, after), (f["objective_per_scene"], after)
 PY
+expect_error fit-bad-objective "--objective: 'ssim' is neither dssim nor rmse" "$work/fit3.json" -- fit gtao-params --refs "$work/refs" --objective ssim -o "$work/fit3.json"
 expect_error fit-missing-refs "nowhere/boxes.exr: " "$work/fit2.json" -- fit gtao-params --refs "$work/nowhere" -o "$work/fit2.json"
 finish
