@@ -22,7 +22,8 @@ static void print_help(void)
            "\n"
            "options:\n"
            "  --gbuffer F.exr     G-buffer channels and camera\n"
-           "  --ao F.exr          ao.V, ao.Vuniform and bent.X/Y/Z (may be the same file)\n"
+           "  --ao F.exr          ao.V, bent.X/Y/Z and ao.Vuniform (may be the same file; a\n"
+           "                    'gtlab approx gtao' output serves the cosine weighting)\n"
            "  --variant V         lut (GTSO cone/lobe, default), ao (AO as specular occlusion),\n"
            "                      lagarde (Lagarde 2014), cone-exact:M or cone-oat:M (cone/cone\n"
            "                      with the exact cap intersection or Oat 2007's), M the\n"
@@ -141,6 +142,9 @@ int approx_specular_occlusion(int argc, char **argv)
     int status = EXIT_OK;
     if (so_inputs_from_images(&gbuffer, o.gbuffer, &ao, o.ao, o.roughness, &in, &e) != 0) {
         status = cli_fail(&e);
+    } else if (v.weighting == SO_AO_UNIFORM && !in.ao_uniform) {
+        status = cli_failf(o.ao, "no ao.Vuniform channel, which --ao-weighting uniform needs");
+        so_inputs_free(&in);
     } else {
         if (v.kind == SO_VARIANT_LUT && so_lut_build(&lut, (int)o.lut_size, o.lobe, SO_AXES_ANGLES, omp_get_num_procs()) != 0)
             status = cli_failf("approx specular-occlusion", "out of memory");

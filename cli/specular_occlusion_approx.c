@@ -52,8 +52,9 @@ int so_inputs_from_images(const image *gbuffer, const char *what_gbuffer, const 
         if (!(g[i] = channel(gbuffer, what_gbuffer, gnames[i], e)))
             return -1;
     for (int i = 0; i < 5; ++i)
-        if (!(a[i] = channel(ao, what_ao, anames[i], e)))
+        if (i != 1 && !(a[i] = channel(ao, what_ao, anames[i], e)))
             return -1;
+    a[1] = image_channel_data(ao, anames[1]); /* optional: GTAO's output has one weighting */
     if (ao->width != gbuffer->width || ao->height != gbuffer->height)
         return gt_error_set(e, what_ao, "size %dx%d differs from the G-buffer's %dx%d", ao->width, ao->height,
                             gbuffer->width, gbuffer->height);
@@ -79,9 +80,11 @@ int so_inputs_from_images(const image *gbuffer, const char *what_gbuffer, const 
         in->n_dot_v[p] = fmaxf(nv, 0.0f);
         in->beta[p] = (float)acos(fmax(-1.0, fmin(1.0, cos_beta)));
         in->ao_cosine[p] = a[0][p];
-        in->ao_uniform[p] = a[1][p];
+        in->ao_uniform[p] = a[1] ? a[1][p] : NAN;
         in->roughness[p] = roughness >= 0.0 ? (float)roughness : g[7][p];
     }
+    if (!a[1])
+        in->ao_uniform = NULL;
     return 0;
 }
 

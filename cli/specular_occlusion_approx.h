@@ -21,8 +21,10 @@ typedef struct {
 } so_pixel_inputs;
 
 /* From the G-buffer channels (N.*, P.*, roughness.Y, mask.A, header
- * gtlab.camera) of `gbuffer` and ao.V, ao.Vuniform, bent.* of `ao` (the same
- * size; may be the same image). roughness >= 0 replaces roughness.Y. */
+ * gtlab.camera) of `gbuffer` and ao.V, bent.* and, if present, ao.Vuniform
+ * of `ao` (the same size; may be the same image; `gtlab approx gtao` output
+ * has no ao.Vuniform, and then in->ao_uniform is NULL). roughness >= 0
+ * replaces roughness.Y. */
 int so_inputs_from_images(const image *gbuffer, const char *what_gbuffer, const image *ao, const char *what_ao,
                           double roughness, so_pixel_inputs *in, gt_error *e);
 void so_inputs_free(so_pixel_inputs *in);

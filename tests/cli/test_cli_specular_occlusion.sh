@@ -36,6 +36,11 @@ python3 -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if 0 < d
 
 expect_error bad-variant "--variant: unknown variant" "$work/x.exr" -- approx specular-occlusion --gbuffer "$so" --ao "$ao" --variant cone-exact:nope -o "$work/x.exr"
 expect_error missing-ao "ao.exr" "$work/x.exr" -- approx specular-occlusion --gbuffer "$so" --ao "$work/ao.exr.missing" -o "$work/x.exr"
+# GTAO's output (one weighting, no ao.Vuniform) feeds the cosine weighting, and
+# only that: the uniform weighting names the missing channel.
+expect_ok gtao approx gtao --gbuffer "$ao" --preset high -o "$work/gtao.exr"
+expect_ok approx-on-gtao approx specular-occlusion --gbuffer "$so" --ao "$work/gtao.exr" --variant lut --lut-size 8 -o "$work/on_gtao.exr"
+expect_error gtao-uniform "gtao.exr: no ao.Vuniform channel" "$work/x.exr" -- approx specular-occlusion --gbuffer "$so" --ao "$work/gtao.exr" --ao-weighting uniform -o "$work/x.exr"
 expect_error not-ao "no channel ao.V" "$work/x.exr" -- approx specular-occlusion --gbuffer "$so" --ao "$so" -o "$work/x.exr"
 expect_error bad-roughness "--roughness" "$work/x.exr" -- render specular-occlusion --scene builtin:plane --roughness 1.5 -o "$work/x.exr"
 expect_error roughness-elsewhere "--roughness: applies to specular-occlusion only" "$work/x.exr" -- render ao --scene builtin:plane --roughness 0.5 -o "$work/x.exr"
