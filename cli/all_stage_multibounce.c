@@ -655,19 +655,20 @@ static int performance(all_context *ctx, const stage *st, const reference_reques
 
 static int run_fit(all_context *ctx, stage *st, gt_error *e)
 {
-    char fits[2048], json[4096], header[4096], hlsl[4096];
+    char fits[2048], json[4096], header[4096], hlsl[4096], glsl[4096];
     if (all_make_dir(ctx, "fits", fits, sizeof fits, e) != 0)
         return -1;
     snprintf(json, sizeof json, "%s/multibounce.json", fits);
     snprintf(header, sizeof header, "%s/multibounce.h", fits);
     snprintf(hlsl, sizeof hlsl, "%s/multibounce.hlsl", fits);
+    snprintf(glsl, sizeof glsl, "%s/multibounce.glsl", fits);
     multibounce_data_weigh(&st->data);
     if (multibounce_analyse(&st->data, st->analysis, e) != 0)
         return -1;
     return multibounce_write_outputs(&st->data, st->analysis,
                                      ctx->quality == QUALITY_PREVIEW ? "gtlab all --quality preview"
                                                                      : "gtlab all --quality production",
-                                     json, header, hlsl, e);
+                                     json, header, hlsl, glsl, e);
 }
 
 static void intro(all_context *ctx, const reference_request *req, const stage *st)

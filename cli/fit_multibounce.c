@@ -38,6 +38,7 @@ static void print_help(void)
            "                   table, data used (files, scenes, albedos, counts, weights)\n"
            "  --header F.h     C header with the fitted functions (default: F without .json, .h)\n"
            "  --hlsl F.hlsl    HLSL GTAOMultiBounce with the new coefficients (default: .hlsl)\n"
+           "  --glsl F.glsl    the same in GLSL (default: .glsl)\n"
            "  -h, --help\n"
            "\n"
            "example: gtlab render multibounce --scene builtin:corner --albedo 0.1,0.2,0.3,0.4,0.5,0.7,0.9 -o c.exr\n"
@@ -108,14 +109,15 @@ static void command_text(int argc, char **argv, char *out, size_t size)
 
 int fit_multibounce(int argc, char **argv)
 {
-    enum { OPT_DATA = 256, OPT_HEADER, OPT_HLSL };
+    enum { OPT_DATA = 256, OPT_HEADER, OPT_HLSL, OPT_GLSL };
     static const struct option longs[] = {{"data", required_argument, 0, OPT_DATA},
                                           {"output", required_argument, 0, 'o'},
                                           {"header", required_argument, 0, OPT_HEADER},
                                           {"hlsl", required_argument, 0, OPT_HLSL},
+                                          {"glsl", required_argument, 0, OPT_GLSL},
                                           {"help", no_argument, 0, 'h'},
                                           {0, 0, 0, 0}};
-    const char *files[MAX_FILES], *output = NULL, *header = NULL, *hlsl = NULL;
+    const char *files[MAX_FILES], *output = NULL, *header = NULL, *hlsl = NULL, *glsl = NULL;
     int file_count = 0, data_given = 0, c;
     char command[4096];
     command_text(argc, argv, command, sizeof command); /* before getopt permutes argv */
@@ -130,6 +132,7 @@ int fit_multibounce(int argc, char **argv)
         case 'o': output = optarg; break;
         case OPT_HEADER: header = optarg; break;
         case OPT_HLSL: hlsl = optarg; break;
+        case OPT_GLSL: glsl = optarg; break;
         case 'h': print_help(); return EXIT_OK;
         default: return cli_usage_error("fit multibounce");
         }
@@ -145,16 +148,19 @@ int fit_multibounce(int argc, char **argv)
         return cli_failf("--data", "no reference files given (see 'gtlab fit multibounce --help')");
     if (!output)
         return cli_failf("-o", "an output file is required (fit.json)");
-    char header_path[4096], hlsl_path[4096];
+    char header_path[4096], hlsl_path[4096], glsl_path[4096];
     sibling_path(output, ".h", header_path, sizeof header_path);
     sibling_path(output, ".hlsl", hlsl_path, sizeof hlsl_path);
+    sibling_path(output, ".glsl", glsl_path, sizeof glsl_path);
     if (!header)
         header = header_path;
     if (!hlsl)
         hlsl = hlsl_path;
+    if (!glsl)
+        glsl = glsl_path;
     gt_error e;
     if (atomic_file_check_writable(output, &e) != 0 || atomic_file_check_writable(header, &e) != 0 ||
-        atomic_file_check_writable(hlsl, &e) != 0)
+        atomic_file_check_writable(hlsl, &e) != 0 || atomic_file_check_writable(glsl, &e) != 0)
         return cli_fail(&e);
     multibounce_data d;
     multibounce_data_init(&d);
@@ -163,7 +169,7 @@ int fit_multibounce(int argc, char **argv)
     if (!a)
         status = cli_failf("fit multibounce", "out of memory");
     else if (load_files(files, file_count, &d, &e) != 0 || multibounce_analyse(&d, a, &e) != 0 ||
-             multibounce_write_outputs(&d, a, command, output, header, hlsl, &e) != 0)
+             multibounce_write_outputs(&d, a, command, output, header, hlsl, glsl, &e) != 0)
         status = cli_fail(&e);
     else
         print_summary(&d, a);

@@ -175,9 +175,11 @@ typedef struct {
 int multibounce_analyse(const multibounce_data *d, multibounce_analysis *out, gt_error *e);
 
 /* Writes the JSON (coefficients, standard errors, covariance, errors, the
- * talk's errors, data used), a C header and an HLSL function, each
- * atomically; header_path / hlsl_path may be NULL. `command` is recorded. */
+ * talk's errors, data used), a C header and HLSL and GLSL functions, each
+ * atomically; header_path / hlsl_path / glsl_path may be NULL. `command` is
+ * recorded. */
 int multibounce_write_outputs(const multibounce_data *d, const multibounce_analysis *a, const char *command,
-                              const char *json_path, const char *header_path, const char *hlsl_path, gt_error *e);
+                              const char *json_path, const char *header_path, const char *hlsl_path,
+                              const char *glsl_path, gt_error *e);
 
 #endif

@@ -1,5 +1,5 @@
 /* The outputs of the GTAO multi-bounce refit (fit_multibounce.h): the JSON a
- * person or a script reads, and the C header and HLSL function an engine
+ * person or a script reads, and the C header and HLSL/GLSL functions an engine
  * takes, all generated from the fitted numbers and written atomically. */
 #include "fitters/fit_multibounce.h"
 
@@ -229,8 +229,7 @@ static char *analysis_json(const multibounce_data *d, const multibounce_analysis
     return text;
 }
 
-/* Polynomial in rho of one coefficient, as C/HLSL source: "(c0 + rho * (c1 + rho * c2))". */
-/* A float literal C and HLSL both read: "1.0f", "-0.410470316f", "2e-05f". */
+/* A float literal C, HLSL and GLSL (1.30 and later) all read: "1.0f", "-0.410470316f", "2e-05f". */
 static void float_literal(double v, char *out, size_t size)
 {
     char digits[40];
@@ -238,6 +237,7 @@ static void float_literal(double v, char *out, size_t size)
     snprintf(out, size, "%s%sf", digits, strpbrk(digits, ".e") ? "" : ".0");
 }
 
+/* Polynomial in the albedo of one coefficient, as source: "c0 + albedo * (c1 + albedo * (c2))". */
 static void rho_polynomial(const double *coef, int degree, char *out, size_t size)
 {
     /* Horner: c0 + albedo * (c1 + albedo * (c2)) */
@@ -268,22 +268,24 @@ static const char *const kFunctionWhat[MB_JOINT_COUNT] = {
     "anchored: V_d + V_d (1 - V_d) (albedo (p1 + q1 V_d) + albedo^2 (p2 + q2 V_d)), exact at albedo 0 and "
     "V_d = 0, 1"};
 
-/* One function per joint model: C (float) or HLSL (float3 albedo). */
-static int append_functions(const multibounce_analysis *a, int hlsl, char *text, size_t size, int used)
+/* One function per joint model: C (float albedo; vector_type NULL) or a
+ * shading language (vector_type "float3" for HLSL, "vec3" for GLSL). The
+ * shader form max(y, x) with y a vector and x a float is legal in both. */
+static int append_functions(const multibounce_analysis *a, const char *vector_type, char *text, size_t size, int used)
 {
     for (int j = 0; j < MB_JOINT_COUNT; ++j) {
         if (!a->has[j])
             continue;
         char lines[1024];
-        coefficient_lines(&a->joint[j].model, hlsl ? "float3" : "float", lines, sizeof lines);
+        coefficient_lines(&a->joint[j].model, vector_type ? vector_type : "float", lines, sizeof lines);
         const char *note = j == (int)a->chosen ? " Preferred by the leave-one-scene-out test." : "";
-        if (hlsl)
+        if (vector_type)
             used += snprintf(text + used, size - (size_t)used,
                              "\n// %s; weighted RMSE %.3g on the data.%s\n"
-                             "float3 GTAOMultiBounce%s(float visibility, float3 albedo)\n{\n%s"
-                             "    float x = visibility;\n    return max(x, ((x * a + b) * x + c) * x);\n}\n",
-                             kFunctionWhat[j], a->joint_err[j][1].rmse, note,
-                             j == MB_JOINT_LINEAR ? "" : kFunctionSuffix[j], lines);
+                             "%s GTAOMultiBounce%s(float visibility, %s albedo)\n{\n%s"
+                             "    float x = visibility;\n    return max(((x * a + b) * x + c) * x, x);\n}\n",
+                             kFunctionWhat[j], a->joint_err[j][1].rmse, note, vector_type,
+                             j == MB_JOINT_LINEAR ? "" : kFunctionSuffix[j], vector_type, lines);
         else
             used += snprintf(text + used, size - (size_t)used,
                              "\n/* %s; weighted RMSE %.3g on the data.%s */\n"
@@ -307,12 +309,13 @@ static char *header_text(const multibounce_analysis *a, const char *command)
                      " * (Jimenez et al. 2016). Generated file: edit the data, not the numbers. */\n"
                      "#ifndef GTLAB_MULTIBOUNCE_FIT_H\n#define GTLAB_MULTIBOUNCE_FIT_H\n",
                      GTLAB_VERSION, command);
-    n = append_functions(a, 0, text, size, n);
+    n = append_functions(a, NULL, text, size, n);
     snprintf(text + n, size - (size_t)n, "\n#endif\n");
     return text;
 }
 
-static char *hlsl_text(const multibounce_analysis *a, const char *command)
+/* The shader functions; vector_type "float3" (HLSL) or "vec3" (GLSL). */
+static char *shader_text(const multibounce_analysis *a, const char *command, const char *vector_type)
 {
     size_t size = 16384;
     char *text = malloc(size);
@@ -322,7 +325,7 @@ static char *hlsl_text(const multibounce_analysis *a, const char *command)
                      "// GTAO multi-bounce, refitted by gtlab %s:\n//   %s\n"
                      "// Same form as GTAOMultiBounce (Jimenez et al. 2016), new coefficients. Generated file.\n",
                      GTLAB_VERSION, command);
-    append_functions(a, 1, text, size, n);
+    append_functions(a, vector_type, text, size, n);
     return text;
 }
 
@@ -336,13 +339,16 @@ static int write_owned_text(const char *path, char *text, gt_error *e)
 }
 
 int multibounce_write_outputs(const multibounce_data *d, const multibounce_analysis *a, const char *command,
-                              const char *json_path, const char *header_path, const char *hlsl_path, gt_error *e)
+                              const char *json_path, const char *header_path, const char *hlsl_path,
+                              const char *glsl_path, gt_error *e)
 {
     if (write_owned_text(json_path, analysis_json(d, a, command), e) != 0)
         return -1;
     if (header_path && write_owned_text(header_path, header_text(a, command), e) != 0)
         return -1;
-    if (hlsl_path && write_owned_text(hlsl_path, hlsl_text(a, command), e) != 0)
+    if (hlsl_path && write_owned_text(hlsl_path, shader_text(a, command, "float3"), e) != 0)
+        return -1;
+    if (glsl_path && write_owned_text(glsl_path, shader_text(a, command, "vec3"), e) != 0)
         return -1;
     return 0;
 }

@@ -61,6 +61,25 @@ json_is() {
   python3 -c "import json,sys; v=json.load(open(sys.argv[4]))[sys.argv[1]]; sys.exit(0 if eval(f'{v!r} {sys.argv[2]} {sys.argv[3]}') else 1)" "$1" "$2" "$3" "$4"
 }
 
+# expect_shader_compiles NAME FILE LANG CALL: the generated shader functions in
+# FILE (LANG glsl or hlsl) compile with Khronos' glslangValidator (Debian's
+# glslang-tools, installed by setup.sh) inside a fragment shader whose output
+# is CALL, an expression of the input v (a float4/vec4) returning 4 floats.
+expect_shader_compiles() {
+  local name=$1 file=$2 lang=$3 call=$4 src
+  if [ "$lang" = glsl ]; then
+    src="$work/$name.frag"
+    { echo "#version 450"; cat "$file"
+      printf 'layout(location = 0) in vec4 v;\nlayout(location = 0) out vec4 o;\nvoid main() { o = %s; }\n' "$call"; } >"$src"
+    glslangValidator "$src" >"$work/$name.log" 2>&1
+  else
+    src="$work/$name.hlsl"
+    { cat "$file"; printf 'float4 main(float4 v : TEXCOORD0) : SV_Target { return %s; }\n' "$call"; } >"$src"
+    glslangValidator -D -V -e main -S frag "$src" -o "$work/$name.spv" >"$work/$name.log" 2>&1
+  fi
+  [ $? -eq 0 ] && pass || fail "$name: $file does not compile as $lang: $(head -c 600 "$work/$name.log")"
+}
+
 finish() {
   echo "$passed passed, $failed failed"
   [ "$failed" -eq 0 ]

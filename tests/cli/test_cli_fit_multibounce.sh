@@ -36,7 +36,7 @@ grep -q "multibounce" "$work/stdout" || fail "fit --help does not list multiboun
 
 # Good data: two scenes, three albedos, data files after one --data.
 expect_ok fit $(fit --data "$work/corner.exr" "$work/boxes.exr")
-for f in "$work/fit.json" "$work/fit.h" "$work/fit.hlsl"; do [ -s "$f" ] || fail "$f not written"; done
+for f in "$work/fit.json" "$work/fit.h" "$work/fit.hlsl" "$work/fit.glsl"; do [ -s "$f" ] || fail "$f not written"; done
 python3 - "$out" <<'PY' || fail "fit.json lacks what it promises"
 import json, sys
 j = json.load(open(sys.argv[1]))
@@ -66,5 +66,7 @@ else
   fail "fit.h does not compile: $(cat "$work/cc.log")"
 fi
 grep -q "float3 GTAOMultiBounce(float visibility, float3 albedo)" "$work/fit.hlsl" || fail "fit.hlsl lacks GTAOMultiBounce"
+expect_shader_compiles mb-hlsl "$work/fit.hlsl" hlsl "float4(GTAOMultiBounce(v.x, v.yzw), 1.0)"
+expect_shader_compiles mb-glsl "$work/fit.glsl" glsl "vec4(GTAOMultiBounce(v.x, v.yzw), 1.0)"
 no_leftovers "$work"
 finish

@@ -49,7 +49,10 @@ for k in ("radius_reduction", "norm_scale", "norm_alpha"):
 h = j["held_out_errors"]
 assert h["decima_refit"]["rms_log_error"] < h["decima_published"]["rms_log_error"], h
 PY
-grep -q "GetNoHSquared" "$work/fit.hlsl" && grep -q "inversesqrt" "$work/fit.glsl" && pass || fail "shader files"
+expect_shader_compiles sl-hlsl "$work/fit.hlsl" hlsl \
+  "float4(EvaluateSphericalAreaGGX(v.x, v.y, v.z, v.w, 0.1, 0.3, float3(0.04, 0.04, 0.04)), GetNoHSquared(0.1, v.x, v.y, v.z))"
+expect_shader_compiles sl-glsl "$work/fit.glsl" glsl \
+  "vec4(EvaluateSphericalAreaGGX(v.x, v.y, v.z, v.w, 0.1, 0.3, vec3(0.04)), GetNoHSquared(0.1, v.x, v.y, v.z))"
 no_leftovers "$work"
 
 # Same seed, same bits, whatever the thread count.
