@@ -33,7 +33,8 @@ static void print_help(void)
         "            rays leaving the image escape): what screen-space AO can know\n"
         "  sphere-light  the G-buffer plus sphere.R/G/B: radiance towards the camera from a\n"
         "            uniform spherical light over the glTF materials (Lambert + GGX with\n"
-        "            Schlick Fresnel), integrated exactly over the light (MIS), unshadowed\n"
+        "            Schlick Fresnel), integrated exactly over the light (MIS); unshadowed\n"
+        "            like the real-time approximations unless --shadows\n"
         "  specular-occlusion  the G-buffer plus GTSO specular occlusion under a white\n"
         "            dome: specocc.V = integral of V f_r cos / integral of f_r cos (GGX,\n"
         "            no Fresnel, view from the camera), specocc_d.V (the older D-only\n"
@@ -65,6 +66,8 @@ static void print_help(void)
         "  --light-position X,Y,Z  sphere-light (required): the light's centre\n"
         "  --light-radius R      sphere-light (required): its radius, > 0\n"
         "  --light-radiance L    sphere-light: its emitted radiance (default 1)\n"
+        "  --shadows             sphere-light: the scene's geometry blocks the light (one\n"
+        "                        occlusion ray per light-carrying sample direction)\n"
         "  --roughness R         specular-occlusion: perceptual roughness in [0, 1] for\n"
         "                        every surface (GGX alpha = R^2); default: the glTF material\n"
         "  --normal shading|geometric   normal the hemisphere is built on (default shading)\n"
@@ -80,6 +83,7 @@ typedef struct {
     reference_request request;
     const char *albedo, *bounces, *max_distance, *roughness; /* as given, or NULL */
     const char *light_position, *light_radius, *light_radiance; /* as given, or NULL */
+    int shadows;
 } render_options;
 
 /* "X,Y,Z": three finite numbers. */
@@ -98,7 +102,8 @@ static int parse_position(const char *option, const char *text, vec3 *out)
 static int check_light_options(render_options *o)
 {
     const char *given = o->light_position ? "--light-position" : o->light_radius ? "--light-radius"
-                        : o->light_radiance                   ? "--light-radiance" : NULL;
+                        : o->light_radiance                   ? "--light-radiance"
+                        : o->shadows                          ? "--shadows" : NULL;
     if (o->request.quantity != QUANTITY_SPHERE_LIGHT)
         return given ? (cli_failf(given, "applies to sphere-light only"), -1) : 0;
     if (!o->light_position || !o->light_radius)
@@ -109,7 +114,7 @@ static int check_light_options(render_options *o)
         cli_parse_double("--light-radius", o->light_radius, 1e-30, 1e30, &radius) != 0 ||
         (o->light_radiance && cli_parse_double("--light-radiance", o->light_radiance, 1e-30, 1e30, &radiance) != 0))
         return -1;
-    l->radius = (float)radius, l->radiance = (float)radiance;
+    l->radius = (float)radius, l->radiance = (float)radiance, l->shadows = o->shadows;
     return 0;
 }
 
@@ -145,7 +150,7 @@ static int parse_options(int argc, char **argv, render_options *o)
         {"threads", required_argument, 0, 't'},    {"output", required_argument, 0, 'o'},
         {"albedo", required_argument, 0, 'a'},     {"bounces", required_argument, 0, 'b'},
         {"light-position", required_argument, 0, 'P'}, {"light-radius", required_argument, 0, 'R'},
-        {"light-radiance", required_argument, 0, 'L'},
+        {"light-radiance", required_argument, 0, 'L'}, {"shadows", no_argument, 0, 'D'},
         {"roughness", required_argument, 0, 'r'},
         {"help", no_argument, 0, 'h'},             {0, 0, 0, 0}};
     long value;
@@ -182,6 +187,7 @@ static int parse_options(int argc, char **argv, render_options *o)
         case 'P': o->light_position = optarg; break;
         case 'R': o->light_radius = optarg; break;
         case 'L': o->light_radiance = optarg; break;
+        case 'D': o->shadows = 1; break;
         case 't':
             if (cli_parse_int("--threads", optarg, 1, 1024, &value)) return -1;
             o->request.sampling.threads = (int)value;

@@ -40,8 +40,9 @@ int sphere_light_plan_init(sphere_light_plan *plan, const sphere_light_settings 
 
 void sphere_light_settings_text(const sphere_light_settings *light, char *text, size_t size)
 {
-    snprintf(text, size, "light_position=%.9g,%.9g,%.9g light_radius=%.9g light_radiance=%.9g shadows=none",
-             light->position.x, light->position.y, light->position.z, light->radius, light->radiance);
+    snprintf(text, size, "light_position=%.9g,%.9g,%.9g light_radius=%.9g light_radiance=%.9g shadows=%s",
+             light->position.x, light->position.y, light->position.z, light->radius, light->radiance,
+             light->shadows ? "traced" : "none");
 }
 
 /* What a pixel's samples share: the configuration in the shading frame and
@@ -81,6 +82,67 @@ static int above_geometry(const pixel_context *px, vec3 l)
     return v3_dot(frame_to_world(&px->shading, l), px->surface->ng) > 0.0f;
 }
 
+/* The directions of one MIS sample and the RGB each carries. */
+enum { DIRECTION_CAP, DIRECTION_GGX, DIRECTION_COSINE, DIRECTIONS };
+typedef struct {
+    vec3 l[DIRECTIONS]; /* local */
+    float rgb[DIRECTIONS][3];
+} light_sample;
+
+static light_sample evaluate_sample(const pixel_setup *ps, const pixel_context *px, float le, const float u_cap[2],
+                                    const float u_brdf[2])
+{
+    sphere_light_mis_terms t;
+    sphere_light_mis_sample(&ps->config, u_cap, u_brdf, &t);
+    double spec_cap = above_geometry(px, t.l_cap) ? t.spec_cap : 0.0;
+    double spec_brdf = t.spec_brdf > 0.0 && above_geometry(px, t.l_brdf) ? t.spec_brdf : 0.0;
+    /* Fresnel at v.h of each direction (only where it counts: a missed BRDF
+     * direction may be -v, with no half vector). */
+    float vh_cap = spec_cap > 0.0 ? v3_dot(ps->config.v, v3_normalize(v3_add(ps->config.v, t.l_cap))) : 1.0f;
+    float vh_brdf = spec_brdf > 0.0 ? v3_dot(ps->config.v, v3_normalize(v3_add(ps->config.v, t.l_brdf))) : 1.0f;
+    light_sample s = {{t.l_cap, t.l_brdf, t.l_diff}, {{0}}};
+    for (int c = 0; c < 3; ++c) {
+        s.rgb[DIRECTION_CAP][c] = (float)(le * (ps->diffuse[c] * t.diff_cap + fresnel_schlick(vh_cap, ps->f0[c]) * spec_cap));
+        s.rgb[DIRECTION_GGX][c] = (float)(le * fresnel_schlick(vh_brdf, ps->f0[c]) * spec_brdf);
+        s.rgb[DIRECTION_COSINE][c] = (float)(le * ps->diffuse[c] * t.diff_brdf);
+    }
+    return s;
+}
+
+/* Distance along the unit direction d from o to the light's sphere (d points
+ * into its cone, so the ray meets it; rounding is clamped). */
+static float distance_to_light(const sphere_light_settings *light, vec3 o, vec3 d)
+{
+    vec3 oc = v3_sub(light->position, o);
+    float b = v3_dot(d, oc), c = v3_dot(oc, oc) - light->radius * light->radius;
+    return b - sqrtf(fmaxf(b * b - c, 0.0f));
+}
+
+/* With --shadows: one occlusion ray per direction that carries light, from
+ * the lifted surface point to the light's surface; visible[k][j] = 1 when
+ * nothing blocks it. Returns the rays traced. */
+static int trace_shadows(const integrator *self, const pixel_context *px, const light_sample *samples, int count,
+                         float visible[][DIRECTIONS])
+{
+    const sphere_light_plan *plan = self->settings;
+    _Alignas(16) struct RTCRay rays[DIRECTIONS * SAMPLE_BATCH];
+    int traced = 0;
+    for (int k = 0; k < count; ++k)
+        for (int j = 0; j < DIRECTIONS; ++j) {
+            const float *rgb = samples[k].rgb[j];
+            int carries = rgb[0] > 0.0f || rgb[1] > 0.0f || rgb[2] > 0.0f;
+            vec3 d = frame_to_world(&px->shading, samples[k].l[j]);
+            float t_max = carries ? distance_to_light(&plan->light, px->ray_origin, d) : -1.0f;
+            embree_ray_init(&rays[k * DIRECTIONS + j], px->ray_origin, d, t_max);
+            traced += carries;
+        }
+    embree_unoccluded_stream(self->scene, rays, (unsigned)(DIRECTIONS * count));
+    for (int k = 0; k < count; ++k)
+        for (int j = 0; j < DIRECTIONS; ++j)
+            visible[k][j] = rays[k * DIRECTIONS + j].tfar >= 0.0f ? 1.0f : 0.0f;
+    return traced;
+}
+
 static int sphere_light_sample_batch(const integrator *self, const pixel_context *px, uint32_t first_index, int count,
                                      float *values)
 {
@@ -90,27 +152,22 @@ static int sphere_light_sample_batch(const integrator *self, const pixel_context
     float cu0[SAMPLE_BATCH], cu1[SAMPLE_BATCH], bu0[SAMPLE_BATCH], bu1[SAMPLE_BATCH];
     sample_pair_points(&cap_pair, first_index, count, cu0, cu1);
     sample_pair_points(&brdf_pair, first_index, count, bu0, bu1);
-    const float le = plan->light.radiance;
+    static const light_sample unlit;
+    light_sample samples[SAMPLE_BATCH];
+    float visible[SAMPLE_BATCH][DIRECTIONS];
     for (int k = 0; k < count; ++k) {
-        float out[3] = {0.0f, 0.0f, 0.0f};
-        if (ps.lit) {
-            const float u_cap[2] = {cu0[k], cu1[k]}, u_brdf[2] = {bu0[k], bu1[k]};
-            sphere_light_mis_terms t;
-            sphere_light_mis_sample(&ps.config, u_cap, u_brdf, &t);
-            double spec_cap = above_geometry(px, t.l_cap) ? t.spec_cap : 0.0;
-            double spec_brdf = t.spec_brdf > 0.0 && above_geometry(px, t.l_brdf) ? t.spec_brdf : 0.0;
-            /* Fresnel at v.h of each direction (only where it counts: a
-             * missed BRDF direction may be -v, with no half vector). */
-            float vh_cap = spec_cap > 0.0 ? v3_dot(ps.config.v, v3_normalize(v3_add(ps.config.v, t.l_cap))) : 1.0f;
-            float vh_brdf = spec_brdf > 0.0 ? v3_dot(ps.config.v, v3_normalize(v3_add(ps.config.v, t.l_brdf))) : 1.0f;
-            for (int c = 0; c < 3; ++c)
-                out[c] = (float)(le * (ps.diffuse[c] * t.diff + fresnel_schlick(vh_cap, ps.f0[c]) * spec_cap +
-                                       fresnel_schlick(vh_brdf, ps.f0[c]) * spec_brdf));
-        }
-        for (int c = 0; c < 3; ++c)
-            values[c * SAMPLE_BATCH + k] = out[c];
+        const float u_cap[2] = {cu0[k], cu1[k]}, u_brdf[2] = {bu0[k], bu1[k]};
+        samples[k] = ps.lit ? evaluate_sample(&ps, px, plan->light.radiance, u_cap, u_brdf) : unlit;
+        for (int j = 0; j < DIRECTIONS; ++j)
+            visible[k][j] = 1.0f;
     }
-    return 0;
+    int traced = plan->light.shadows && ps.lit ? trace_shadows(self, px, samples, count, visible) : 0;
+    for (int k = 0; k < count; ++k)
+        for (int c = 0; c < 3; ++c)
+            values[c * SAMPLE_BATCH + k] = visible[k][DIRECTION_CAP] * samples[k].rgb[DIRECTION_CAP][c] +
+                                           visible[k][DIRECTION_GGX] * samples[k].rgb[DIRECTION_GGX][c] +
+                                           visible[k][DIRECTION_COSINE] * samples[k].rgb[DIRECTION_COSINE][c];
+    return traced;
 }
 
 integrator sphere_light_integrator(const embree_scene *es, const sphere_light_plan *plan)

@@ -2,13 +2,16 @@
  * radiance leaving each G-buffer surface towards the camera, lit by a
  * uniform spherical emitter, integrated exactly over the light's solid
  * angle with the parameter-space reference's MIS sample
- * (raytracer/sphere_light_reference.h), unshadowed (the real-time
- * approximations have no shadows). Material: glTF metallic-roughness, a
+ * (raytracer/sphere_light_reference.h), unshadowed by default (the
+ * real-time approximations have no shadows); with `shadows`, each direction
+ * that carries light is weighted by an Embree occlusion ray from the lifted
+ * surface point to the light's surface (the light itself is not geometry).
+ * Material: glTF metallic-roughness, a
  * Lambert lobe of colour base (1 - metallic) plus GGX (alpha = roughness^2,
  * height-correlated Smith) with Schlick Fresnel of F0 = mix(0.04, base,
  * metallic) evaluated per light direction inside the integral. Directions
  * below the shading surface contribute 0, specular ones below the geometric
- * surface too. No rays are traced.
+ * surface too. Unshadowed, no rays are traced.
  *
  * Channels: sphere.R, sphere.G, sphere.B (quantity 0 drives the stop rule).
  * Sampling: the cap technique uses dimension pair 0, the BRDF technique
@@ -22,6 +25,7 @@ typedef struct {
     vec3 position;  /* the light's centre, world space */
     float radius;   /* > 0 */
     float radiance; /* emitted radiance L_e > 0 (white) */
+    int shadows;    /* 1: occluders in the scene block the light */
 } sphere_light_settings;
 
 typedef struct {

@@ -78,7 +78,7 @@ void sphere_light_mis_sample(const sphere_light_config *c, const float u_cap[2],
     double cos_l = fmax(0.0, (double)l.z);
     t->l_cap = l;
     t->spec_cap = mis_term(ggx_brdf(c->v, l, c->alpha) * cos_l, pdf_cap, ggx_reflection_pdf(c->v, l, c->alpha));
-    t->diff = mis_term(cos_l / M_PI, pdf_cap, cos_l / M_PI);
+    t->diff_cap = mis_term(cos_l / M_PI, pdf_cap, cos_l / M_PI);
     /* Technique 2: GGX visible normals (specular), cosine (diffuse). */
     vec3 m = ggx_sample_visible_normal(c->v, c->alpha, u_brdf);
     vec3 ls = ggx_reflect(c->v, m);
@@ -87,8 +87,8 @@ void sphere_light_mis_sample(const sphere_light_config *c, const float u_cap[2],
     if (ls.z > 0.0f && cone_contains(c->lc, c->sin_sigma, ls))
         t->spec_brdf = mis_term(ggx_brdf(c->v, ls, c->alpha) * ls.z, ggx_reflection_pdf(c->v, ls, c->alpha), pdf_cap);
     vec3 ld = sample_cosine_hemisphere(u_brdf);
-    if (cone_contains(c->lc, c->sin_sigma, ld))
-        t->diff += mis_term(ld.z / M_PI, ld.z / M_PI, pdf_cap);
+    t->l_diff = ld;
+    t->diff_brdf = cone_contains(c->lc, c->sin_sigma, ld) ? mis_term(ld.z / M_PI, ld.z / M_PI, pdf_cap) : 0.0;
 }
 
 void sphere_light_reference(const sphere_light_config *c, uint32_t samples, uint32_t seed,
@@ -104,7 +104,7 @@ void sphere_light_reference(const sphere_light_config *c, uint32_t samples, uint
         sphere_light_mis_terms t;
         sphere_light_mis_sample(c, u_cap, u_brdf, &t);
         moments_add(&spec, t.spec_cap + t.spec_brdf);
-        moments_add(&diff, t.diff);
+        moments_add(&diff, t.diff_cap + t.diff_brdf);
     }
     moments_result(&spec, &out->spec, &out->spec_stderr);
     moments_result(&diff, &out->diff, &out->diff_stderr);

@@ -48,12 +48,13 @@ typedef struct {
 } sphere_light_estimate;
 
 /* One MIS sample from two points of [0, 1)^2 (cap technique, BRDF
- * technique): the specular contributions of the cap direction and of the
- * BRDF direction (0 when it misses the light) with their directions, so a
- * caller can weight each by a Fresnel term, and the diffuse contribution. */
+ * technique): each contribution with the direction that carries it, so a
+ * caller can weight each by a Fresnel term or by a shadow ray: the cap
+ * direction's specular and diffuse terms, the GGX direction's specular term
+ * and the cosine direction's diffuse term (0 when they miss the light). */
 typedef struct {
-    vec3 l_cap, l_brdf;
-    double spec_cap, spec_brdf, diff;
+    vec3 l_cap, l_brdf, l_diff;
+    double spec_cap, spec_brdf, diff_cap, diff_brdf;
 } sphere_light_mis_terms;
 
 void sphere_light_mis_sample(const sphere_light_config *c, const float u_cap[2], const float u_brdf[2],

@@ -21,6 +21,8 @@ expect_error render-bad-position "--light-position: '0,2' is not three numbers" 
 expect_error render-radius-ao "--light-radius: applies to sphere-light only" "$exr" -- render ao --scene builtin:plane --light-radius 1 -o "$exr"
 expect_ok render-small render sphere-light --scene builtin:plane --light-position 0,2,-3 --light-radius 0.5 --width 16 --height 16 --spp 16 -o "$exr"
 [ -s "$exr" ] && pass || fail "render sphere-light wrote nothing"
+expect_error render-shadows-ao "--shadows: applies to sphere-light only" "$exr.ao" -- render ao --scene builtin:plane --shadows -o "$exr.ao"
+expect_ok render-shadows render sphere-light --scene builtin:sphere-on-plane --light-position 0,6,0 --light-radius 0.3 --shadows --width 16 --height 16 --spp 16 -o "$work/shadowed.exr"
 
 for verb in "check sphere-noh" "fit sphere-light"; do
   expect_ok "help-$verb" $verb --help
