@@ -94,3 +94,13 @@ double ggx_reflection_pdf(vec3 v, vec3 l, double alpha)
     double vh = (double)v.x * h[0] + (double)v.y * h[1] + (double)v.z * h[2];
     return vh > 0.0 ? visible_normal_pdf(v, h, alpha) / (4.0 * vh) : 0.0;
 }
+
+double ggx_reflection_weight_brdf(vec3 v, vec3 l, double alpha)
+{
+    return l.z > 0.0f ? ggx_smith_g2(v.z, l.z, alpha) / ggx_smith_g1(v.z, alpha) : 0.0;
+}
+
+double ggx_reflection_weight_ndf(vec3 v, vec3 l, double alpha)
+{
+    return l.z > 0.0f ? 4.0 * (double)v.z * l.z / ggx_smith_g1(v.z, alpha) : 0.0;
+}

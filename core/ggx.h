@@ -55,4 +55,13 @@ vec3 ggx_reflect(vec3 v, vec3 m);
  * chance that l falls below the surface. */
 double ggx_reflection_pdf(vec3 v, vec3 l, double alpha);
 
+/* The Monte Carlo weights of l = ggx_reflect(v, m), m ~ D_v, whose density
+ * ggx_reflection_pdf simplifies to G1(v) D(h) / (4 n.v); both are 0 when l is
+ * below the surface:
+ *   f_r(v, l) (n.l) / pdf = G2(v, l) / G1(v)        in [0, 1]
+ *   D(h) (n.l) / pdf      = 4 (n.v)(n.l) / G1(v)    in [0, 4]
+ * (n.v / G1(v) = (n.v + sqrt(alpha^2 + (1 - alpha^2)(n.v)^2)) / 2 <= 1). */
+double ggx_reflection_weight_brdf(vec3 v, vec3 l, double alpha);
+double ggx_reflection_weight_ndf(vec3 v, vec3 l, double alpha);
+
 #endif

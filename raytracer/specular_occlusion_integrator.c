@@ -44,7 +44,7 @@ static int so_sample_batch(const integrator *self, const pixel_context *px, uint
     const specular_occlusion_settings *settings = self->settings;
     const sample_pair_seeds pair = sample_pair_seeds_for(px, 0);
     const vec3 v = local_view(px, settings->camera_position);
-    const double alpha = pixel_alpha(self, px), g1v = ggx_smith_g1(v.z, alpha);
+    const double alpha = pixel_alpha(self, px);
     _Alignas(16) struct RTCRay rays[SAMPLE_BATCH];
     const double p = phong_exponent(alpha);
     float u0[SAMPLE_BATCH], u1[SAMPLE_BATCH], w[SAMPLE_BATCH], wd[SAMPLE_BATCH], wp[SAMPLE_BATCH];
@@ -55,9 +55,9 @@ static int so_sample_batch(const integrator *self, const pixel_context *px, uint
         vec3 m = ggx_sample_visible_normal(v, alpha, u);
         vec3 l = v3_normalize(ggx_reflect(v, m));
         int lit = l.z > 0.0f;
-        w[k] = lit ? (float)(ggx_smith_g2(v.z, l.z, alpha) / g1v) : 0.0f;
+        w[k] = (float)ggx_reflection_weight_brdf(v, l, alpha);
+        wd[k] = (float)ggx_reflection_weight_ndf(v, l, alpha);
         vec3 h = v3_normalize(v3_add(v, l));
-        wd[k] = lit ? (float)(4.0 * v.z * v3_dot(v, h) * l.z / g1v) : 0.0f;
         wp[k] = lit ? (float)(wd[k] * phong_ndf(h.z, p) / ggx_ndf(h.z, alpha)) : 0.0f;
         vec3 d = frame_to_world(&px->shading, l);
         int above = lit && v3_dot(d, px->surface->ng) > 0.0f;

@@ -19,7 +19,7 @@
  * Sampling: l is the mirror of v about a visible normal m ~ D_v (Heitz
  * 2018), pdf(l) = G1(v) D(h) / (4 n.v). The weights are then
  *   f_r cos / pdf  = G2(v, l) / G1(v)                  in [0, 1]
- *   D cos / pdf    = 4 (n.v)(v.h)(n.l) / G1(v)          in [0, 4]
+ *   D cos / pdf    = 4 (n.v)(n.l) / G1(v)               in [0, 4]
  *   D_p cos / pdf  = (D cos / pdf) D_p(h) / D(h)       in [0, 4 * 4/e]
  * (D_p / D peaks at (1 + x)^2 e^-x <= 4/e with x = tan^2 theta_h / alpha^2:
  * GGX's heavier tails cover the Phong lobe)

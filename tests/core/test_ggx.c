@@ -9,7 +9,10 @@
  *     equals the share of sampled reflections that land there;
  *   - f_r is reciprocal, and its cosine-weighted integral by quadrature
  *     equals the importance-sampled estimate (two implementations) and is
- *     at most 1 (energy conservation).
+ *     at most 1 (energy conservation);
+ *   - the closed-form sample weights (f_r cos / pdf and D cos / pdf) equal
+ *     the quotients of the functions they simplify, and their importance-
+ *     sampled means equal quadratures of f_r cos and D(h) cos.
  * Quadratures: Simpson in cos theta, the trapezoid rule in phi (spectrally
  * accurate for periodic integrands). Monte Carlo: Owen-scrambled Sobol',
  * fixed seeds, asserted within 4 standard errors. */
@@ -155,11 +158,56 @@ static void test_brdf_reciprocity_and_albedo(void)
         }
 }
 
+/* D(h) (n.l) as a function of l, h = normalize(v + l). */
+static double cosine_weighted_ndf(vec3 l, const void *ctx)
+{
+    const view *c = ctx;
+    vec3 h = v3_normalize(v3_add(c->v, l));
+    return ggx_ndf(h.z, c->alpha) * l.z;
+}
+
+static void test_reflection_weights(void)
+{
+    const double alphas[] = {0.2, 0.5, 0.9}, thetas[] = {0.3, 1.0, 1.35};
+    for (int a = 0; a < 3; ++a)
+        for (int t = 0; t < 3; ++t) {
+            view c = {direction_at(thetas[t]), alphas[a]};
+            const uint32_t n = 1u << 15;
+            sobol_pair_seeds seeds = sobol_owen_pair_seeds(hash_combine(41u, (uint32_t)(3 * a + t)), 0);
+            double sum[2] = {0, 0}, sum_sq[2] = {0, 0};
+            for (uint32_t i = 0; i < n; ++i) {
+                float u[2];
+                sobol_owen_point(&seeds, i, u);
+                vec3 l = ggx_reflect(c.v, ggx_sample_visible_normal(c.v, c.alpha, u));
+                double w[2] = {ggx_reflection_weight_brdf(c.v, l, c.alpha), ggx_reflection_weight_ndf(c.v, l, c.alpha)};
+                double pdf = ggx_reflection_pdf(c.v, l, c.alpha);
+                if (l.z > 0.0f && pdf > 0.0) {
+                    vec3 h = v3_normalize(v3_add(c.v, l));
+                    double direct[2] = {ggx_brdf(c.v, l, c.alpha) * l.z / pdf, ggx_ndf(h.z, c.alpha) * l.z / pdf};
+                    for (int k = 0; k < 2; ++k)
+                        CHECK_MSG(fabs(w[k] - direct[k]) <= 1e-4 * fmax(1.0, direct[k]),
+                                  "weight %d: closed form %.9g, quotient %.9g", k, w[k], direct[k]);
+                }
+                for (int k = 0; k < 2; ++k)
+                    sum[k] += w[k], sum_sq[k] += w[k] * w[k];
+            }
+            const spherical_fn integrands[2] = {cosine_weighted_brdf, cosine_weighted_ndf};
+            for (int k = 0; k < 2; ++k) {
+                double mean = sum[k] / n, se = sqrt(fmax(sum_sq[k] / n - mean * mean, 0.0) / (n - 1));
+                double quadrature = hemisphere_integral(integrands[k], &c, 4000, 256);
+                CHECK_MSG(fabs(mean - quadrature) < 4.0 * se + 1e-4 * quadrature,
+                          "weight %d, alpha %g theta %g: sampled %.6f +- %.2g, quadrature %.6f", k, c.alpha, thetas[t],
+                          mean, se, quadrature);
+            }
+        }
+}
+
 int main(void)
 {
     test_ndf_normalised();
     test_visible_normals_normalised();
     test_sampler_matches_pdf();
     test_brdf_reciprocity_and_albedo();
+    test_reflection_weights();
     return check_report("test_ggx");
 }
