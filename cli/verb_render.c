@@ -42,7 +42,9 @@ static void print_help(void)
         "            p = 2/alpha^2 - 2), and the integrals: specocc_occluded.V,\n"
         "            specocc_unoccluded.V (directional albedo), specocc_d_*.V,\n"
         "            specocc_phong_*.V; ratios'\n"
-        "            standard errors by the delta method\n"
+        "            standard errors by the delta method. With --environment sky also\n"
+        "            the GTSO talk's split integrals under an analytic sky: split_truth.V\n"
+        "            (integral of V L f_r cos), split_two.V, split_three.V\n"
         "\n"
         "options:\n"
         "  --scene S             a .gltf/.glb file or builtin:NAME ('gtlab scene list')\n"
@@ -68,6 +70,8 @@ static void print_help(void)
         "  --light-radiance L    sphere-light: its emitted radiance (default 1)\n"
         "  --shadows             sphere-light: the scene's geometry blocks the light (one\n"
         "                        occlusion ray per light-carrying sample direction)\n"
+        "  --environment E       specular-occlusion: white (default) or sky, which adds the\n"
+        "                        two- vs three-split channels (docs/decisions.md, the sky)\n"
         "  --roughness R         specular-occlusion: perceptual roughness in [0, 1] for\n"
         "                        every surface (GGX alpha = R^2); default: the glTF material\n"
         "  --normal shading|geometric   normal the hemisphere is built on (default shading)\n"
@@ -81,7 +85,7 @@ typedef struct {
     const char *scene, *camera, *output;
     long width, height;
     reference_request request;
-    const char *albedo, *bounces, *max_distance, *roughness; /* as given, or NULL */
+    const char *albedo, *bounces, *max_distance, *roughness, *environment; /* as given, or NULL */
     const char *light_position, *light_radius, *light_radiance; /* as given, or NULL */
     int shadows;
 } render_options;
@@ -127,6 +131,8 @@ static int check_quantity_options(render_options *o)
         return cli_failf("--max-distance", "applies to ao and heightfield-ao only"), -1;
     if (o->roughness && o->request.quantity != QUANTITY_SPECULAR_OCCLUSION)
         return cli_failf("--roughness", "applies to specular-occlusion only"), -1;
+    if (o->environment && o->request.quantity != QUANTITY_SPECULAR_OCCLUSION)
+        return cli_failf("--environment", "applies to specular-occlusion only"), -1;
     if (!multibounce && (o->albedo || o->bounces))
         return cli_failf(o->albedo ? "--albedo" : "--bounces", "applies to multibounce only"), -1;
     if (!multibounce)
@@ -151,7 +157,7 @@ static int parse_options(int argc, char **argv, render_options *o)
         {"albedo", required_argument, 0, 'a'},     {"bounces", required_argument, 0, 'b'},
         {"light-position", required_argument, 0, 'P'}, {"light-radius", required_argument, 0, 'R'},
         {"light-radiance", required_argument, 0, 'L'}, {"shadows", no_argument, 0, 'D'},
-        {"roughness", required_argument, 0, 'r'},
+        {"roughness", required_argument, 0, 'r'}, {"environment", required_argument, 0, 'E'},
         {"help", no_argument, 0, 'h'},             {0, 0, 0, 0}};
     long value;
     double real;
@@ -182,6 +188,11 @@ static int parse_options(int argc, char **argv, render_options *o)
             if (cli_parse_double("--roughness", optarg, 0.0, 1.0, &real)) return -1;
             o->request.roughness = (float)real;
             o->roughness = optarg;
+            break;
+        case 'E':
+            if (environment_parse(optarg, &o->request.environment) != 0)
+                return cli_failf("--environment", "'%s' is neither white nor sky", optarg), -1;
+            o->environment = optarg;
             break;
         case 'b': o->bounces = optarg; break;
         case 'P': o->light_position = optarg; break;

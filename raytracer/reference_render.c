@@ -75,7 +75,8 @@ static int write_header(const char *scene_spec, const camera *cam, const referen
         char roughness[32] = "material";
         if (req->roughness >= 0.0f)
             snprintf(roughness, sizeof roughness, "%.9g", req->roughness);
-        rc |= set_attributef(img, REF_ATTR_SETTINGS, "roughness=%s target_stderr=%.9g", roughness, ss->target_stderr);
+        rc |= set_attributef(img, REF_ATTR_SETTINGS, "roughness=%s environment=%s target_stderr=%.9g", roughness,
+                             environment_name(req->environment), ss->target_stderr);
     } else {
         rc |= set_attributef(img, REF_ATTR_SETTINGS, "max_distance=%.9g target_stderr=%.9g", req->max_distance,
                              ss->target_stderr);
@@ -89,7 +90,7 @@ static int render_quantity(const embree_scene *es, const gbuffer *gb, const refe
                            image *out, render_stats *stats, gt_error *e)
 {
     ao_settings ao = {req->max_distance};
-    specular_occlusion_settings so = {req->roughness, gb->view.origin};
+    specular_occlusion_settings so = {req->roughness, gb->view.origin, req->environment};
     heightfield_settings hf = {0};
     if (req->quantity == QUANTITY_HEIGHTFIELD_AO && heightfield_settings_init(&hf, gb, req->max_distance) != 0)
         return gt_error_set(e, scene_spec, "out of memory for the height field");

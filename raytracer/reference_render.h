@@ -6,6 +6,7 @@
 #define GTLAB_RAYTRACER_REFERENCE_RENDER_H
 
 #include "core/image.h"
+#include "core/sky_environment.h"
 #include "raytracer/gbuffer.h"
 #include "raytracer/multibounce_integrator.h"
 #include "raytracer/render_loop.h"
@@ -29,6 +30,7 @@ typedef struct {
     multibounce_settings multibounce; /* multibounce only: albedos, bounces */
     sphere_light_settings sphere_light; /* sphere-light only: the light */
     float roughness;                  /* specular-occlusion only: perceptual roughness, < 0: the material's */
+    environment_kind environment;     /* specular-occlusion only: sky adds the split-integral channels */
 } reference_request;
 
 /* "gbuffer" / "ao" / "multibounce" / "heightfield-ao" / "specular-occlusion" /

@@ -5,17 +5,21 @@
 
 #include "core/ggx.h"
 #include "core/phong.h"
+#include "core/sky_environment.h"
 #include "scene/material_lookup.h"
 
 enum { OCCLUDED, UNOCCLUDED, BLOCKED, D_OCCLUDED, D_UNOCCLUDED, D_BLOCKED, P_OCCLUDED, P_UNOCCLUDED, P_BLOCKED,
-       SO_QUANTITY_COUNT };
+       SO_QUANTITY_COUNT, SPLIT_TRUTH = SO_QUANTITY_COUNT, SPLIT_ENV_D_OCCLUDED, SPLIT_ENV_D_UNOCCLUDED,
+       WITH_SPLIT_QUANTITY_COUNT };
 
 /* f_r-weighted samples lie in [0, 1] (exponent 0), D-weighted ones in [0, 4]
- * (exponent 2), Phong-weighted ones in [0, 4 * 4/e] (exponent 3). */
-static const mc_quantity so_quantities[SO_QUANTITY_COUNT] = {
+ * (exponent 2), Phong-weighted ones in [0, 4 * 4/e] (exponent 3); times the
+ * sky's radiance (at most 6): [0, 6] (exponent 3) and [0, 24] (exponent 5). */
+static const mc_quantity so_quantities[WITH_SPLIT_QUANTITY_COUNT] = {
     {"specocc_occluded.V", 0},       {"specocc_unoccluded.V", 0},       {"specocc_blocked.V", 0},
     {"specocc_d_occluded.V", 2},     {"specocc_d_unoccluded.V", 2},     {"specocc_d_blocked.V", 2},
-    {"specocc_phong_occluded.V", 3}, {"specocc_phong_unoccluded.V", 3}, {"specocc_phong_blocked.V", 3}};
+    {"specocc_phong_occluded.V", 3}, {"specocc_phong_unoccluded.V", 3}, {"specocc_phong_blocked.V", 3},
+    {"split_truth.V", 3},            {"split_env_d_occluded.V", 5},     {"split_env_d_unoccluded.V", 5}};
 
 /* The view direction in the shading frame, never below its horizon. */
 static vec3 local_view(const pixel_context *px, vec3 camera_position)
@@ -47,7 +51,7 @@ static int so_sample_batch(const integrator *self, const pixel_context *px, uint
     const double alpha = pixel_alpha(self, px);
     _Alignas(16) struct RTCRay rays[SAMPLE_BATCH];
     const double p = phong_exponent(alpha);
-    float u0[SAMPLE_BATCH], u1[SAMPLE_BATCH], w[SAMPLE_BATCH], wd[SAMPLE_BATCH], wp[SAMPLE_BATCH];
+    float u0[SAMPLE_BATCH], u1[SAMPLE_BATCH], w[SAMPLE_BATCH], wd[SAMPLE_BATCH], wp[SAMPLE_BATCH], env[SAMPLE_BATCH];
     sample_pair_points(&pair, first_index, count, u0, u1);
     int traced = 0;
     for (int k = 0; k < count; ++k) {
@@ -60,6 +64,7 @@ static int so_sample_batch(const integrator *self, const pixel_context *px, uint
         vec3 h = v3_normalize(v3_add(v, l));
         wp[k] = lit ? (float)(wd[k] * phong_ndf(h.z, p) / ggx_ndf(h.z, alpha)) : 0.0f;
         vec3 d = frame_to_world(&px->shading, l);
+        env[k] = settings->environment == ENVIRONMENT_SKY ? (float)sky_radiance(d) : 1.0f;
         int above = lit && v3_dot(d, px->surface->ng) > 0.0f;
         embree_ray_init(&rays[k], px->ray_origin, d, above ? INFINITY : -1.0f);
         traced += above;
@@ -76,13 +81,19 @@ static int so_sample_batch(const integrator *self, const pixel_context *px, uint
         values[P_OCCLUDED * SAMPLE_BATCH + k] = visible * wp[k];
         values[P_UNOCCLUDED * SAMPLE_BATCH + k] = wp[k];
         values[P_BLOCKED * SAMPLE_BATCH + k] = (1.0f - visible) * wp[k];
+        if (settings->environment == ENVIRONMENT_WHITE)
+            continue;
+        values[SPLIT_TRUTH * SAMPLE_BATCH + k] = visible * env[k] * w[k];
+        values[SPLIT_ENV_D_OCCLUDED * SAMPLE_BATCH + k] = visible * env[k] * wd[k];
+        values[SPLIT_ENV_D_UNOCCLUDED * SAMPLE_BATCH + k] = env[k] * wd[k];
     }
     return traced;
 }
 
 integrator specular_occlusion_integrator(const embree_scene *es, const specular_occlusion_settings *settings)
 {
-    integrator it = {"specular-occlusion", SO_QUANTITY_COUNT, so_quantities, NULL, so_sample_batch, es, settings};
+    int count = settings->environment == ENVIRONMENT_SKY ? WITH_SPLIT_QUANTITY_COUNT : SO_QUANTITY_COUNT;
+    integrator it = {"specular-occlusion", count, so_quantities, NULL, so_sample_batch, es, settings};
     return it;
 }
 
@@ -122,8 +133,34 @@ static int write_ratio(image *img, const char *prefix, const char *out_name)
     return 0;
 }
 
+/* The split approximations from the means (see the header): with
+ * E = \int L D cos / \int D cos, the prefiltered environment,
+ *   two   = (\int V L D cos / \int D cos) \int f_r cos
+ *   three = V_s^D E \int f_r cos. */
+static int write_splits(image *img)
+{
+    const float *mask = image_channel_data(img, "mask.A");
+    const float *env_occluded = image_channel_data(img, "split_env_d_occluded.V");
+    const float *env_unoccluded = image_channel_data(img, "split_env_d_unoccluded.V");
+    const float *d_occluded = image_channel_data(img, "specocc_d_occluded.V");
+    const float *d_unoccluded = image_channel_data(img, "specocc_d_unoccluded.V");
+    const float *albedo = image_channel_data(img, "specocc_unoccluded.V");
+    if (!env_occluded || !env_unoccluded)
+        return 0; /* a white-dome render */
+    float *two = image_add_channel(img, "split_two.V"), *three = image_add_channel(img, "split_three.V");
+    if (!two || !three || !d_occluded || !d_unoccluded || !albedo)
+        return -1;
+    for (size_t p = 0; p < image_pixel_count(img); ++p) {
+        double d = d_unoccluded[p];
+        int valid = (!mask || mask[p] != 0.0f) && d > 0.0;
+        two[p] = valid ? (float)(env_occluded[p] / d * albedo[p]) : 0.0f;
+        three[p] = valid ? (float)((d_occluded[p] / d) * (env_unoccluded[p] / d) * albedo[p]) : 0.0f;
+    }
+    return 0;
+}
+
 int specular_occlusion_write_ratios(image *img)
 {
     return write_ratio(img, "specocc", "specocc.V") | write_ratio(img, "specocc_d", "specocc_d.V") |
-           write_ratio(img, "specocc_phong", "specocc_phong.V");
+           write_ratio(img, "specocc_phong", "specocc_phong.V") | write_splits(img);
 }

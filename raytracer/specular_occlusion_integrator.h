@@ -37,6 +37,21 @@
  * All three are exact sums (core/mc_film.h), so merge and the even/odd noise
  * floor work on them; the ratio channels are derived from them on output.
  *
+ * Split integrals (slides "Two Split", "Three Split"), with an environment
+ * L (core/sky_environment.h; settings.environment = ENVIRONMENT_SKY) from
+ * the same samples and rays, all exact sums:
+ *   split_truth.V             \int V L f_r cos         (the ground truth, with
+ *                                                     its .stderr)
+ *   split_env_d_occluded.V    \int V L D cos
+ *   split_env_d_unoccluded.V  \int L D cos
+ * and derived on output from the means (no standard error: their noise is
+ * measured by the even/odd noise floor of split_truth.V):
+ *   split_two.V   = [\int* V L D cos] \int f_r cos          (two-split)
+ *   split_three.V = [\int* V D cos][\int* L D cos] \int f_r cos (three-split)
+ * where \int* is normalised by \int D cos. The integrals are over the
+ * actual view and normal (no n = v = R assumption): what is measured is the
+ * error of splitting the integral, nothing else.
+ *
  * The view direction may fall below the shading normal's horizon (shading
  * normals that disagree with the geometry); it is then moved onto the
  * horizon and lifted by 1e-4 so the sampler is defined. Directions below the
@@ -46,16 +61,19 @@
 #define GTLAB_RAYTRACER_SPECULAR_OCCLUSION_INTEGRATOR_H
 
 #include "core/image.h"
+#include "core/sky_environment.h"
 #include "raytracer/render_loop.h"
 
 typedef struct {
     float roughness;      /* perceptual roughness for every surface; < 0: the glTF material's */
     vec3 camera_position; /* the view vector points from the surface to here */
+    environment_kind environment; /* ENVIRONMENT_SKY adds the split-integral channels */
 } specular_occlusion_settings;
 
 integrator specular_occlusion_integrator(const embree_scene *es, const specular_occlusion_settings *settings);
 
-/* Derives specocc.V, specocc_d.V and specocc_phong.V (+ .stderr) from the
+/* Derives specocc.V, specocc_d.V and specocc_phong.V (+ .stderr), and with
+ * the split channels split_two.V and split_three.V, from the
  * accumulated numerator, denominator and blocked-part channels of img (the
  * .stderr channels are optional: without them only the ratio is written, as
  * for the half means of the noise floor). Pixels with mask 0 get 0. */

@@ -18,15 +18,20 @@ for variant in lagarde lut cone-oat:phong-u; do
   expect_ok "approx $variant" approx specular-occlusion --gbuffer "$so" --ao "$ao" --variant $variant --lut-size 8 -o "$work/approx.exr"
   expect_ok "compare $variant" compare "$so" "$work/approx.exr" --channel specocc.V --json
 done
-# merge recomputes the ratio channels from the merged sums: same bits as one render
-expect_ok render-block-1 render specular-occlusion --scene builtin:corner --width 40 --height 32 --spp 16 --roughness 0.4 -o "$work/b1.exr"
-expect_ok render-block-2 render specular-occlusion --scene builtin:corner --width 40 --height 32 --spp 16 --sample-offset 16 --roughness 0.4 -o "$work/b2.exr"
+# merge recomputes the ratio and split channels from the merged sums: same
+# bits as one render (the sky adds channels, and changes none of the others)
+expect_ok render-sky render specular-occlusion --scene builtin:corner --width 40 --height 32 --spp 32 --roughness 0.4 --environment sky -o "$work/sky.exr"
+expect_ok render-block-1 render specular-occlusion --scene builtin:corner --width 40 --height 32 --spp 16 --roughness 0.4 --environment sky -o "$work/b1.exr"
+expect_ok render-block-2 render specular-occlusion --scene builtin:corner --width 40 --height 32 --spp 16 --sample-offset 16 --roughness 0.4 --environment sky -o "$work/b2.exr"
 expect_ok merge merge "$work/b1.exr" "$work/b2.exr" -o "$work/merged.exr"
-for channel in specocc.V.stderr specocc_phong.V; do
-  run compare "$so" "$work/merged.exr" --channel $channel --json
+for pair in "$so specocc.V.stderr" "$so specocc_phong.V" "$work/sky.exr split_truth.V.stderr" "$work/sky.exr split_two.V" "$work/sky.exr split_three.V"; do
+  set -- $pair
+  run compare "$1" "$work/merged.exr" --channel "$2" --json
   cp "$work/stdout" "$work/merged.json"
-  json_is max_abs == 0 "$work/merged.json" && pass || fail "merged $channel differs: $(cat "$work/merged.json")"
+  json_is max_abs == 0 "$work/merged.json" && pass || fail "merged $2 differs: $(cat "$work/merged.json")"
 done
+expect_error bad-environment "--environment: 'dusk' is neither white nor sky" "$work/x.exr" -- render specular-occlusion --scene builtin:corner --environment dusk -o "$work/x.exr"
+expect_error environment-ao "--environment: applies to specular-occlusion only" "$work/x.exr" -- render ao --scene builtin:corner --environment sky -o "$work/x.exr"
 expect_ok lut lut specular-occlusion --size 8 -o "$work/lut"
 for ext in exr png h json; do
   [ -s "$work/lut/specular_occlusion_ggx_8.$ext" ] && pass || fail "lut: no .$ext"
