@@ -5,7 +5,9 @@
  * by interpolation error, and the talk's gloss-to-aperture fit of u. The
  * main variants run twice: on the AO reference's AO and bent normal (the
  * variant's own error) and on GTAO's (what a renderer ships: the variant's
- * error plus GTAO's). */
+ * error plus GTAO's). The references are rendered under the analytic sky, so
+ * they also carry the talk's two- and three-split integrals, compared with
+ * the ground truth from the same samples. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
