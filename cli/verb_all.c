@@ -15,34 +15,58 @@
 #include "core/progress.h"
 
 typedef struct {
-    const char *name;
+    const char *key, *name;
     int (*run)(all_context *ctx, gt_error *e);
 } all_stage;
 
-static const all_stage stages[] = {
-    {"AO references", all_stage_ao_references},
-    {"GTAO validation", all_stage_gtao},
-    {"multi-bounce refit", all_stage_multibounce},
-    {"specular occlusion", all_stage_specular_occlusion},
-    {"GGX sphere lights", all_stage_sphere_light},
-    {"ray throughput", all_stage_ray_throughput},
+enum { STAGE_COUNT = 6 };
+static const all_stage stages[STAGE_COUNT] = {
+    {"ao", "AO references", all_stage_ao_references},
+    {"gtao", "GTAO validation", all_stage_gtao},
+    {"multibounce", "multi-bounce refit", all_stage_multibounce},
+    {"specular-occlusion", "specular occlusion", all_stage_specular_occlusion},
+    {"sphere-light", "GGX sphere lights", all_stage_sphere_light},
+    {"throughput", "ray throughput", all_stage_ray_throughput},
 };
 
 static void print_help(void)
 {
-    printf("usage: gtlab all [--quality preview|production] [-o DIR] [--threads T]\n"
+    printf("usage: gtlab all [--quality preview|production] [-o DIR] [--threads T] [--stages LIST]\n"
            "\n"
            "Runs every stage on the built-in scenes and writes the accuracy report:\n"
            "  DIR/report.md, DIR/report.html   the report (figures under DIR/figures)\n"
            "  DIR/summary.json                 every figure of the report, machine-readable\n"
            "  DIR/ao/*.exr                     the references (with their .camera.json)\n"
            "Stages:\n");
-    for (size_t i = 0; i < sizeof stages / sizeof stages[0]; ++i)
-        printf("  - %s\n", stages[i].name);
+    for (int i = 0; i < STAGE_COUNT; ++i)
+        printf("  %-20s %s\n", stages[i].key, stages[i].name);
     printf("\n"
            "  --quality Q   preview (default: a few minutes on 2 cores) or production\n"
            "  -o, --output DIR   output folder (default results)\n"
-           "  --threads T   worker threads (default: all cores; results do not depend on it)\n");
+           "  --threads T   worker threads (default: all cores; results do not depend on it)\n"
+           "  --stages LIST comma-separated stage names from the list above (default: all);\n"
+           "                the report then holds those sections only. gtao reads DIR/ao/,\n"
+           "                which the ao stage writes (in this run or an earlier one)\n");
+}
+
+/* Marks the stages named in the comma-separated list; -1 after an error (printed). */
+static int select_stages(const char *list, int selected[STAGE_COUNT])
+{
+    char copy[512];
+    snprintf(copy, sizeof copy, "%s", list);
+    memset(selected, 0, sizeof(int) * STAGE_COUNT);
+    for (char *tok = strtok(copy, ","); tok; tok = strtok(NULL, ",")) {
+        int found = 0;
+        for (int i = 0; i < STAGE_COUNT; ++i)
+            if (strcmp(tok, stages[i].key) == 0)
+                selected[i] = found = 1;
+        if (!found)
+            return cli_failf("--stages", "unknown stage '%s' (see 'gtlab all --help')", tok), -1;
+    }
+    for (int i = 0; i < STAGE_COUNT; ++i)
+        if (selected[i])
+            return 0;
+    return cli_failf("--stages", "no stage named in '%s'", list), -1;
 }
 
 int all_make_dir(const all_context *ctx, const char *sub, char *path, size_t size, gt_error *e)
@@ -70,11 +94,13 @@ int verb_all(int argc, char **argv)
     static const struct option longs[] = {{"quality", required_argument, 0, 'q'},
                                           {"output", required_argument, 0, 'o'},
                                           {"threads", required_argument, 0, 't'},
+                                          {"stages", required_argument, 0, 's'},
                                           {"help", no_argument, 0, 'h'},
                                           {0, 0, 0, 0}};
     all_context ctx = {"results", QUALITY_PREVIEW, omp_get_num_procs(), NULL, NULL};
     long threads;
-    int c;
+    int c, selected[STAGE_COUNT] = {1, 1, 1, 1, 1, 1};
+    const char *stage_list = NULL;
     while ((c = getopt_long(argc, argv, "o:h", longs, NULL)) != -1) {
         switch (c) {
         case 'q':
@@ -90,6 +116,11 @@ int verb_all(int argc, char **argv)
             if (cli_parse_int("--threads", optarg, 1, 1024, &threads))
                 return EXIT_USER_ERROR;
             ctx.threads = (int)threads;
+            break;
+        case 's':
+            if (select_stages(optarg, selected) != 0)
+                return EXIT_USER_ERROR;
+            stage_list = optarg;
             break;
         case 'h': print_help(); return EXIT_OK;
         default: return cli_usage_error("all");
@@ -112,14 +143,19 @@ int verb_all(int argc, char **argv)
     const char *quality = ctx.quality == QUALITY_PREVIEW ? "preview" : "production";
     cJSON_AddStringToObject(ctx.summary, "gtlab_version", GTLAB_VERSION);
     cJSON_AddStringToObject(ctx.summary, "quality", quality);
+    char stage_option[512] = "";
+    if (stage_list)
+        snprintf(stage_option, sizeof stage_option, " --stages %s", stage_list);
     report_paragraph(&doc,
-                     "Made by gtlab %s with 'gtlab all --quality %s'. Every figure below comes from that run; "
+                     "Made by gtlab %s with 'gtlab all --quality %s%s'. Every figure below comes from that run; "
                      "rerunning the command reproduces the images bit for bit (timings vary with the machine). "
                      "Machine-readable figures: summary.json.",
-                     GTLAB_VERSION, quality);
+                     GTLAB_VERSION, quality, stage_option);
     report_findings_here(&doc);
     int status = EXIT_OK;
-    for (size_t i = 0; i < sizeof stages / sizeof stages[0] && status == EXIT_OK; ++i) {
+    for (int i = 0; i < STAGE_COUNT && status == EXIT_OK; ++i) {
+        if (!selected[i])
+            continue;
         fprintf(stderr, "gtlab all: %s\n", stages[i].name);
         double t0 = seconds_now();
         if (stages[i].run(&ctx, &e) != 0)

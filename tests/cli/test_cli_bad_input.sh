@@ -106,4 +106,16 @@ expect_error merge-overlap "small.exr: .*counted twice" "$work/merged.exr" -- me
 expect_error merge-different "other.exr: size 24x24 differs" "$work/merged.exr" -- merge "$work/small.exr" "$work/other.exr" -o "$work/merged.exr"
 expect_ok gbuffer-render render gbuffer --scene builtin:plane --width 16 --height 16 -o "$work/g.exr"
 expect_error merge-gbuffer "g.exr: no Monte Carlo accumulator" "$work/merged.exr" -- merge "$work/g.exr" "$work/small.exr" -o "$work/merged.exr"
+# gtlab all --stages: unknown or empty lists are refused before any work;
+# one stage gives a report with that section only.
+expect_error all-unknown-stage "--stages: unknown stage 'fog'" "" -- all --stages ao,fog -o "$work/all"
+expect_error all-no-stage "--stages: no stage named in ','" "" -- all --stages , -o "$work/all"
+expect_ok all-one-stage all --stages throughput -o "$work/all"
+python3 - "$work/all" <<'PY' && pass || fail "all --stages throughput: report or summary.json holds other stages"
+import json, sys
+summary = json.load(open(sys.argv[1] + "/summary.json"))
+assert set(summary) == {"gtlab_version", "quality", "ray_throughput"}, set(summary)
+sections = [l for l in open(sys.argv[1] + "/report.md") if l.startswith("## ")]
+assert sections == ["## At a glance\n", "## Ray throughput\n"], sections
+PY
 finish
