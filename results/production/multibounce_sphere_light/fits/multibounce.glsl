@@ -1,5 +1,5 @@
 // GTAO multi-bounce, refitted by gtlab 0.1.0:
-//   gtlab fit multibounce --data corner.exr boxes.exr menger.exr cornell.exr sphere-on-plane.exr -o fits/multibounce.json
+//   gtlab all --quality production
 // Same form as GTAOMultiBounce (Jimenez et al. 2016), new coefficients. Generated file.
 
 // a, b, c linear in the albedo (the talk's form); weighted RMSE 0.0323 on the data.

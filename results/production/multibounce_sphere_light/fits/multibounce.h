@@ -1,5 +1,5 @@
 /* GTAO multi-bounce, refitted by gtlab 0.1.0:
- *   gtlab fit multibounce --data corner.exr boxes.exr menger.exr cornell.exr sphere-on-plane.exr -o fits/multibounce.json
+ *   gtlab all --quality production
  * V'_d = max(V_d, ((a V_d + b) V_d + c) V_d) with a, b, c polynomials in the albedo
  * (Jimenez et al. 2016). Generated file: edit the data, not the numbers. */
 #ifndef GTLAB_MULTIBOUNCE_FIT_H
