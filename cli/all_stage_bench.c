@@ -15,7 +15,7 @@ int all_stage_ray_throughput(all_context *ctx, gt_error *e)
     ray_benchmark b;
     int rc = scene_choose_camera(&s, NULL, 256, 256, &cam, e);
     if (rc == 0)
-        rc = ray_benchmark_run(&s, &cam, ctx->threads, ctx->quality == QUALITY_PREVIEW ? 2 : 5, &b, e);
+        rc = ray_benchmark_run(&s, &cam, ctx->study.threads, ctx->study.quality == QUALITY_PREVIEW ? 2 : 5, &b, e);
     scene_free(&s);
     if (rc != 0)
         return -1;

@@ -26,6 +26,7 @@
 #include "realtime/hbao.h"
 #include "realtime/volumetric_obscurance.h"
 #include "scene/builtin_scenes.h"
+#include "core/reference_schema.h"
 
 enum { FULL_CYCLE = 24 };   /* 6 temporal rotations x 4 temporal offsets */
 enum { PREVIEW_FRAMES = 6 }; /* one cycle of the rotations, to keep the preview quick */
@@ -157,7 +158,7 @@ static int render_heightfield(all_context *ctx, const char *spec, const camera *
     if (scene_load(spec, &s, e) != 0)
         return -1;
     reference_request req = {.quantity = QUANTITY_HEIGHTFIELD_AO,
-                             .sampling = {.spp = preview ? 32 : 1024, .seed = 1, .threads = ctx->threads},
+                             .sampling = {.spp = preview ? 32 : 1024, .seed = 1, .threads = ctx->study.threads},
                              .normals = NORMAL_SHADING, .max_distance = INFINITY};
     render_stats stats;
     int rc = reference_render(&s, spec, cam, &req, hf, &stats, e);
@@ -241,7 +242,7 @@ static void add_statement(all_context *ctx, const char *scene_name, const varian
 /* Mean of ao.V.stderr^2 over the mask: the reference's noise in RMSE^2. */
 static double mean_variance(const image *ref, const float *mask)
 {
-    const float *se = image_channel_data(ref, "ao.V.stderr");
+    const float *se = image_channel_data(ref, CH_AO_STDERR);
     double sum = 0;
     size_t count = 0;
     for (size_t i = 0; se && i < image_pixel_count(ref); ++i)
@@ -256,10 +257,10 @@ static int score_scene(all_context *ctx, const builtin_scene *b, const char *dir
                        cJSON *list, gt_error *e)
 {
     char ref_path[4096], hf_path[4096], spec[128];
-    snprintf(ref_path, sizeof ref_path, "%s/ao/%s.exr", ctx->output_dir, b->name);
+    snprintf(ref_path, sizeof ref_path, "%s/ao/%s.exr", ctx->study.output_dir, b->name);
     snprintf(hf_path, sizeof hf_path, "%s/%s_heightfield.exr", dir, b->name);
     snprintf(spec, sizeof spec, "builtin:%s", b->name);
-    int preview = ctx->quality == QUALITY_PREVIEW;
+    int preview = ctx->study.quality == QUALITY_PREVIEW;
     approx_input in;
     if (approx_load(ref_path, NULL, &in, e) != 0)
         return -1;
@@ -269,7 +270,7 @@ static int score_scene(all_context *ctx, const builtin_scene *b, const char *dir
         return -1;
     }
     size_t n = image_pixel_count(&in.img);
-    scene_data d = {&in.g, image_channel_data(&hf, "ao.V"), image_channel_data(&in.img, "ao.V"), in.g.mask,
+    scene_data d = {&in.g, image_channel_data(&hf, CH_AO), image_channel_data(&in.img, CH_AO), in.g.mask,
                     preview ? PREVIEW_FRAMES : FULL_CYCLE, 0.25f * v3_length(v3_sub(in.cam.target, in.cam.position))};
     float *ao = malloc(sizeof *ao * n), *medium = malloc(sizeof *medium * n);
     variant v[32];
@@ -280,7 +281,7 @@ static int score_scene(all_context *ctx, const builtin_scene *b, const char *dir
         gt_error_set(e, spec, "out of memory");
     else if (run_variants(&d, preview, v, &count, ao, medium, e) == 0 &&
              compare(&d, d.hf, d.ref3d, spec, &hf_dssim, &hf_rmse, e) == 0 &&
-             ssim_noise_floor(&hf, hf_path, "ao.V", d.mask, &floor, e) == 0 &&
+             ssim_noise_floor(&hf, hf_path, CH_AO, d.mask, &floor, e) == 0 &&
              heatmap(figures, "gtao_err_hf_vs_3d", b->name, &d, d.hf, d.ref3d, e) == 0 &&
              heatmap(figures, "gtao_err_medium_vs_hf", b->name, &d, medium, d.hf, e) == 0 &&
              heatmap(figures, "gtao_err_medium_vs_3d", b->name, &d, medium, d.ref3d, e) == 0) {
@@ -319,7 +320,7 @@ static int convergence_plot(all_context *ctx, const char *dir, const char *figur
 {
     const char *name = "boxes";
     char ref_path[4096], hf_path[4096], data_path[4096], script_path[4096], png_path[4096];
-    snprintf(ref_path, sizeof ref_path, "%s/ao/%s.exr", ctx->output_dir, name);
+    snprintf(ref_path, sizeof ref_path, "%s/ao/%s.exr", ctx->study.output_dir, name);
     snprintf(hf_path, sizeof hf_path, "%s/%s_heightfield.exr", dir, name);
     snprintf(data_path, sizeof data_path, "%s/gtao_convergence.dat", dir);
     snprintf(script_path, sizeof script_path, "%s/gtao_convergence.gp", dir);
@@ -332,7 +333,7 @@ static int convergence_plot(all_context *ctx, const char *dir, const char *figur
         approx_input_free(&in);
         return -1;
     }
-    scene_data d = {&in.g, image_channel_data(&hf, "ao.V"), image_channel_data(&in.img, "ao.V"), in.g.mask, 1, 1.0f};
+    scene_data d = {&in.g, image_channel_data(&hf, CH_AO), image_channel_data(&in.img, CH_AO), in.g.mask, 1, 1.0f};
     float *ao = malloc(sizeof *ao * image_pixel_count(&hf));
     static const int steps[4] = {2, 4, 8, 16}, slices[5] = {1, 2, 4, 8, 16};
     char *data = malloc(8192);
@@ -390,7 +391,7 @@ static int convergence_plot(all_context *ctx, const char *dir, const char *figur
 static int parameter_fit(all_context *ctx, const char *dir, cJSON *json, gt_error *e)
 {
     char refs[2048], path[2300];
-    snprintf(refs, sizeof refs, "%s/ao", ctx->output_dir);
+    snprintf(refs, sizeof refs, "%s/ao", ctx->study.output_dir);
     gtao_fit_request rq = {refs, "boxes,corner,cornell", "menger,sphere-on-plane", "high", GTAO_FIT_DSSIM};
     static gtao_fit_result r;
     if (gtao_params_fit(&rq, &r, e) != 0)
@@ -438,7 +439,7 @@ static int parameter_fit(all_context *ctx, const char *dir, cJSON *json, gt_erro
 int all_stage_gtao(all_context *ctx, gt_error *e)
 {
     char dir[2048], figures[2048];
-    if (all_make_dir(ctx, "gtao", dir, sizeof dir, e) != 0 || all_make_dir(ctx, "figures", figures, sizeof figures, e))
+    if (study_make_dir(&ctx->study, "gtao", dir, sizeof dir, e) != 0 || study_make_dir(&ctx->study, "figures", figures, sizeof figures, e))
         return -1;
     report_heading(ctx->doc, 2, "GTAO, HBAO and volumetric obscurance against two references");
     report_paragraph(ctx->doc,
@@ -452,7 +453,7 @@ int all_stage_gtao(all_context *ctx, gt_error *e)
                      "of the talk's pattern with a static camera (24 is its full cycle; the preview stops at 6); ms "
                      "are per frame on this machine, shared with other work. Brute-force GTAO (reference preset) "
                      "and the baselines' converged runs are scored at production quality only.",
-                     ctx->quality == QUALITY_PREVIEW ? 32 : 1024);
+                     ctx->study.quality == QUALITY_PREVIEW ? 32 : 1024);
     cJSON *list = cJSON_AddArrayToObject(ctx->summary, "gtao");
     int rc = 0;
     for (int i = 0; i < builtin_scene_count() && rc == 0; ++i)

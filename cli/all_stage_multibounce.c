@@ -18,6 +18,7 @@
 #include "metrics/ssim.h"
 #include "raytracer/multibounce_throughput.h"
 #include "raytracer/reference_render.h"
+#include "core/reference_schema.h"
 
 /* The plane is left out: V_d = V'_d = 1 everywhere, nothing to fit. */
 static const char *const kScenes[] = {"sphere-on-plane", "corner", "menger", "boxes", "cornell"};
@@ -47,9 +48,9 @@ typedef struct {
 
 static reference_request request(const all_context *ctx)
 {
-    int preview = ctx->quality == QUALITY_PREVIEW;
+    int preview = ctx->study.quality == QUALITY_PREVIEW;
     reference_request req = {.quantity = QUANTITY_MULTIBOUNCE,
-                             .sampling = {.spp = preview ? 128 : 2048, .seed = 1, .threads = ctx->threads},
+                             .sampling = {.spp = preview ? 128 : 2048, .seed = 1, .threads = ctx->study.threads},
                              .normals = NORMAL_SHADING,
                              .max_distance = INFINITY,
                              .multibounce = {.albedo_count = ALBEDOS, .bounces = 4}};
@@ -68,7 +69,7 @@ static int render_reference(const all_context *ctx, int k, const char *dir, stag
         return -1;
     camera cam;
     const reference_request req = request(ctx);
-    int size = ctx->quality == QUALITY_PREVIEW ? 128 : 384;
+    int size = ctx->study.quality == QUALITY_PREVIEW ? 128 : 384;
     int rc = scene_choose_camera(&s, NULL, size, 0, &cam, e);
     if (rc == 0)
         rc = reference_render(&s, spec, &cam, &req, &st->refs[k], &st->stats[k], e);
@@ -107,7 +108,7 @@ static int split_halves(const image *img, const char *what, image halves[2], gt_
     mc_film film;
     if (mc_film_read_channels(img, what, &film, e) != 0)
         return -1;
-    const float *mask = image_channel_data(img, "mask.A");
+    const float *mask = image_channel_data(img, CH_MASK);
     int rc = 0, made = 0;
     for (int h = 0; h < 2 && rc == 0; ++h) {
         if (image_init(&halves[h], img->width, img->height) != 0) {
@@ -163,8 +164,8 @@ static int validate(const stage *st, int k, int a, validation *v, gt_error *e)
     const char *channel = st->plan.quantities[a].name;
     char what[256];
     snprintf(what, sizeof what, "%s %s", kScenes[k], channel);
-    const float *mask = image_channel_data(img, "mask.A"), *target = image_channel_data(odd, channel);
-    const float *vd = image_channel_data(even, "ao.V");
+    const float *mask = image_channel_data(img, CH_MASK), *target = image_channel_data(odd, channel);
+    const float *vd = image_channel_data(even, CH_AO);
     size_t n = image_pixel_count(img);
     if (score(image_channel_data(even, channel), target, mask, img, what, &v->noise_floor, &v->rmse_floor, e) != 0)
         return -1;
@@ -624,7 +625,7 @@ static int performance(all_context *ctx, const stage *st, const reference_reques
     multibounce_benchmark b;
     int rc = scene_choose_camera(&s, NULL, 96, 96, &cam, e);
     if (rc == 0)
-        rc = multibounce_benchmark_run(&s, &cam, &req->multibounce, 32, ctx->threads, 1, &b, e);
+        rc = multibounce_benchmark_run(&s, &cam, &req->multibounce, 32, ctx->study.threads, 1, &b, e);
     scene_free(&s);
     if (rc != 0)
         return -1;
@@ -656,7 +657,7 @@ static int performance(all_context *ctx, const stage *st, const reference_reques
 static int run_fit(all_context *ctx, stage *st, gt_error *e)
 {
     char fits[2048], json[4096], header[4096], hlsl[4096], glsl[4096];
-    if (all_make_dir(ctx, "fits", fits, sizeof fits, e) != 0)
+    if (study_make_dir(&ctx->study, "fits", fits, sizeof fits, e) != 0)
         return -1;
     snprintf(json, sizeof json, "%s/multibounce.json", fits);
     snprintf(header, sizeof header, "%s/multibounce.h", fits);
@@ -666,7 +667,7 @@ static int run_fit(all_context *ctx, stage *st, gt_error *e)
     if (multibounce_analyse(&st->data, st->analysis, e) != 0)
         return -1;
     return multibounce_write_outputs(&st->data, st->analysis,
-                                     ctx->quality == QUALITY_PREVIEW ? "gtlab all --quality preview"
+                                     ctx->study.quality == QUALITY_PREVIEW ? "gtlab all --quality preview"
                                                                      : "gtlab all --quality production",
                                      json, header, hlsl, glsl, e);
 }
@@ -708,9 +709,9 @@ int all_stage_multibounce(all_context *ctx, gt_error *e)
     char dir[2048];
     int rc = multibounce_plan_init(&st->plan, &req.multibounce, req.normals, e);
     if (rc == 0)
-        rc = all_make_dir(ctx, "multibounce", dir, sizeof dir, e);
+        rc = study_make_dir(&ctx->study, "multibounce", dir, sizeof dir, e);
     if (rc == 0)
-        rc = all_make_dir(ctx, "figures", st->figures, sizeof st->figures, e);
+        rc = study_make_dir(&ctx->study, "figures", st->figures, sizeof st->figures, e);
     for (int k = 0; k < SCENES && rc == 0; ++k)
         rc = render_reference(ctx, k, dir, st, e);
     if (rc == 0)

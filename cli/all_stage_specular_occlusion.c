@@ -26,10 +26,11 @@
 #include "raytracer/specular_occlusion_integrator.h"
 #include "realtime/gtao.h"
 #include "scene/builtin_scenes.h"
+#include "core/reference_schema.h"
 
 enum { ROUGHNESS_COUNT = 3, SCENE_MAX = 16, LUT_SIZES = 3, DEFINITIONS = 3 };
 /* The reference definitions the aperture is fitted to. */
-static const char *const definition_channels[DEFINITIONS] = {"specocc.V", "specocc_d.V", "specocc_phong.V"};
+static const char *const definition_channels[DEFINITIONS] = {CH_SPECOCC, CH_SPECOCC_D, CH_SPECOCC_PHONG};
 static const char *const definition_names[DEFINITIONS] = {"gtso", "d_only", "phong"};
 static const float roughness_values[ROUGHNESS_COUNT] = {0.25f, 0.5f, 0.8f};
 static const int lut_sizes[LUT_SIZES] = {16, 32, 64};
@@ -111,7 +112,7 @@ static int ratio_noise_floor(const image *ref, const char *what, const char *cha
             specular_occlusion_write_ratios(&half[h]) != 0)
             rc = gt_error_set(e, what, "out of memory");
     }
-    const float *mask = image_channel_data(ref, "mask.A");
+    const float *mask = image_channel_data(ref, CH_MASK);
     if (rc == 0) {
         float *a = image_channel_data(&half[0], channel), *b = image_channel_data(&half[1], channel);
         for (size_t i = 0; i < image_pixel_count(ref); ++i)
@@ -147,7 +148,7 @@ static int write_heatmaps(const image *ref, const so_pixel_inputs *in, so_stage 
                           const char *name, gt_error *e)
 {
     char path[4096];
-    const float *vs = image_channel_data(ref, "specocc.V");
+    const float *vs = image_channel_data(ref, CH_SPECOCC);
     snprintf(path, sizeof path, "%s/specocc_ref_%s.png", figures, name);
     if (image_write_preview(path, &vs, 1, ref->width, ref->height, 1.0f, e) != 0)
         return -1;
@@ -171,8 +172,8 @@ static int write_heatmaps(const image *ref, const so_pixel_inputs *in, so_stage 
  * under the sky (channels of the same reference), and the truth's noise floor. */
 static int score_splits(so_stage *st, const image *ref, const char *what, int ri, gt_error *e)
 {
-    static const char *const approximations[2] = {"split_two.V", "split_three.V"};
-    const float *truth = image_channel_data(ref, "split_truth.V"), *mask = image_channel_data(ref, "mask.A");
+    static const char *const approximations[2] = {CH_SPLIT_TWO, CH_SPLIT_THREE};
+    const float *truth = image_channel_data(ref, CH_SPLIT_TRUTH), *mask = image_channel_data(ref, CH_MASK);
     for (int k = 0; k < 2; ++k) {
         const float *approx = image_channel_data(ref, approximations[k]);
         ssim_result s;
@@ -183,7 +184,7 @@ static int score_splits(so_stage *st, const image *ref, const char *what, int ri
         st->split_dssim[k][ri] += s.dssim, st->split_rmse[k][ri] += err.rmse;
     }
     ssim_result floor;
-    if (ssim_noise_floor(ref, what, "split_truth.V", mask, &floor, e) != 0)
+    if (ssim_noise_floor(ref, what, CH_SPLIT_TRUTH, mask, &floor, e) != 0)
         return -1;
     st->split_floor[ri] += floor.dssim;
     return 0;
@@ -225,7 +226,7 @@ static int score(so_stage *st, const image *ref, const image *ao, const image *g
     so_inputs_free(&on_gtao);
     double floor = 0.0;
     if (rc == 0)
-        rc = ratio_noise_floor(ref, what, "specocc.V", &floor, e);
+        rc = ratio_noise_floor(ref, what, CH_SPECOCC, &floor, e);
     st->floor_dssim[ri] += floor;
     if (rc == 0)
         rc = score_splits(st, ref, what, ri, e);
@@ -244,8 +245,8 @@ static int gtao_inputs(const image *ao, const camera *cam, const char *what, ima
         return -1;
     if (image_init(out, ao->width, ao->height) != 0)
         return gt_error_set(e, what, "out of memory");
-    float *cosine = image_add_channel(out, "ao.V"), *uniform = image_add_channel(out, "ao.Vuniform");
-    float *bent[3] = {image_add_channel(out, "bent.X"), image_add_channel(out, "bent.Y"), image_add_channel(out, "bent.Z")};
+    float *cosine = image_add_channel(out, CH_AO), *uniform = image_add_channel(out, CH_AO_UNIFORM);
+    float *bent[3] = {image_add_channel(out, CH_BENT_X), image_add_channel(out, CH_BENT_Y), image_add_channel(out, CH_BENT_Z)};
     if (!cosine || !uniform || !bent[0] || !bent[1] || !bent[2])
         return gt_error_set(e, what, "out of memory");
     gtao_params p;
@@ -269,13 +270,13 @@ static int run_scene(all_context *ctx, so_stage *st, const builtin_scene *b, int
     image ao = {0}, gtao = {0};
     int rc = scene_choose_camera(&s, NULL, size, 0, &cam, e);
     if (rc == 0)
-        rc = render(&s, spec, &cam, QUANTITY_AO, -1.0f, spp, ctx->threads, &ao, st, e);
+        rc = render(&s, spec, &cam, QUANTITY_AO, -1.0f, spp, ctx->study.threads, &ao, st, e);
     if (rc == 0)
         rc = gtao_inputs(&ao, &cam, b->name, &gtao, e);
     for (int r = 0; r < ROUGHNESS_COUNT && rc == 0; ++r) {
         image ref;
         snprintf(what, sizeof what, "%s (roughness %.2f)", b->name, roughness_values[r]);
-        if ((rc = render(&s, spec, &cam, QUANTITY_SPECULAR_OCCLUSION, roughness_values[r], spp, ctx->threads, &ref, st, e)) != 0)
+        if ((rc = render(&s, spec, &cam, QUANTITY_SPECULAR_OCCLUSION, roughness_values[r], spp, ctx->study.threads, &ref, st, e)) != 0)
             break;
         rc = score(st, &ref, &ao, &gtao, what, r, figures, b->name, e);
         image_free(&ref);
@@ -288,7 +289,7 @@ static int run_scene(all_context *ctx, so_stage *st, const builtin_scene *b, int
 
 static int build_luts(all_context *ctx, so_stage *st, cJSON *json, gt_error *e)
 {
-    int production = ctx->quality == QUALITY_PRODUCTION, points = production ? 20000 : 2000;
+    int production = ctx->study.quality == QUALITY_PRODUCTION, points = production ? 20000 : 2000;
     static const char *const headers[6] = {"size", "axes", "generation (s)", "quadrature error", "max interp. error",
                                            "rms interp. error"};
     report_paragraph(ctx->doc,
@@ -304,10 +305,10 @@ static int build_luts(all_context *ctx, so_stage *st, cJSON *json, gt_error *e)
                 continue; /* 64^3 takes ~10 s on 2 cores: production only, one parametrisation */
             so_lut scratch, *lut = axes == SO_AXES_ANGLES ? &st->luts[s] : lut_sizes[s] == 32 ? &st->lut_cosines : &scratch;
             double t0 = seconds_now(), max_e, rms_e;
-            if (so_lut_build(lut, lut_sizes[s], SO_LOBE_GGX, (so_lut_axes)axes, ctx->threads) != 0)
+            if (so_lut_build(lut, lut_sizes[s], SO_LOBE_GGX, (so_lut_axes)axes, ctx->study.threads) != 0)
                 return gt_error_set(e, "specular-occlusion LUT", "out of memory");
             double seconds = seconds_now() - t0;
-            so_lut_interpolation_error(lut, points, 1u, ctx->threads, &max_e, &rms_e);
+            so_lut_interpolation_error(lut, points, 1u, ctx->study.threads, &max_e, &rms_e);
             char cells[6][32];
             snprintf(cells[0], 32, "%d", lut_sizes[s]);
             snprintf(cells[1], 32, "%s", so_lut_axes_name((so_lut_axes)axes));
@@ -524,9 +525,9 @@ static void free_stage(so_stage *st)
 
 int all_stage_specular_occlusion(all_context *ctx, gt_error *e)
 {
-    int preview = ctx->quality == QUALITY_PREVIEW, size = preview ? 96 : 256, spp = preview ? 128 : 1024;
+    int preview = ctx->study.quality == QUALITY_PREVIEW, size = preview ? 96 : 256, spp = preview ? 128 : 1024;
     char figures[2048];
-    if (all_make_dir(ctx, "figures", figures, sizeof figures, e) != 0)
+    if (study_make_dir(&ctx->study, "figures", figures, sizeof figures, e) != 0)
         return -1;
     so_stage *st = calloc(1, sizeof *st);
     if (!st)

@@ -67,7 +67,7 @@ static int run_map(const all_context *ctx, const char *dir, const error_map *m, 
         return gt_error_set(e, dir, "out of memory");
     const double x_lo = m->x_is_roughness ? 0.05 : 0.05, x_hi = 1.0;
     const double s_lo = 0.00465, s_hi = 0.5;
-#pragma omp parallel for schedule(dynamic, 1) num_threads(ctx->threads)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(ctx->study.threads)
     for (int cell = 0; cell < size * size; ++cell) {
         int i = cell % size, j = cell / size;
         double x = x_lo + (x_hi - x_lo) * (i + 0.5) / size;
@@ -298,9 +298,9 @@ static void report_cost(all_context *ctx, const sphere_cost *c, cJSON *json)
 
 int all_stage_sphere_light(all_context *ctx, gt_error *e)
 {
-    const int preview = ctx->quality == QUALITY_PREVIEW;
+    const int preview = ctx->study.quality == QUALITY_PREVIEW;
     char dir[4096], fits[4096], json_path[8192];
-    if (all_make_dir(ctx, "sphere_light", dir, sizeof dir, e) != 0 || all_make_dir(ctx, "fits", fits, sizeof fits, e) != 0)
+    if (study_make_dir(&ctx->study, "sphere_light", dir, sizeof dir, e) != 0 || study_make_dir(&ctx->study, "fits", fits, sizeof fits, e) != 0)
         return -1;
     cJSON *json = cJSON_AddObjectToObject(ctx->summary, "sphere_light");
     report_heading(ctx->doc, 2, "GGX sphere lights (Decima 2017, Karis 2013)");
@@ -311,7 +311,7 @@ int all_stage_sphere_light(all_context *ctx, gt_error *e)
         return -1;
     report_noh(ctx, &sweep, &st, json);
 
-    sphere_fit_settings fs = {preview ? 1500 : 20000, preview ? 800 : 10000, preview ? 512u : 1024u, 1u, ctx->threads};
+    sphere_fit_settings fs = {preview ? 1500 : 20000, preview ? 800 : 10000, preview ? 512u : 1024u, 1u, ctx->study.threads};
     sphere_fit_outcome fo;
     snprintf(json_path, sizeof json_path, "%s/sphere_light.json", fits);
     if (sphere_fit_run(&fs, json_path, &fo, e) != 0 || write_profile(dir, &fo, e) != 0)

@@ -20,6 +20,7 @@
 #include "raytracer/reference_render.h"
 #include "raytracer/sphere_light_reference.h"
 #include "realtime/sphere_light.h"
+#include "core/reference_schema.h"
 
 #define APPROX 3
 static const char *approx_names[APPROX] = {"Karis", "Decima", "Decima refit"};
@@ -42,9 +43,9 @@ typedef struct {
 static float approx_pixel(int method, const image *ref, size_t i, vec3 eye, const light_scene *ls,
                           const decima_sphere_constants *refit)
 {
-    vec3 p = v3(image_channel_data(ref, "P.X")[i], image_channel_data(ref, "P.Y")[i], image_channel_data(ref, "P.Z")[i]);
-    vec3 n = v3(image_channel_data(ref, "N.X")[i], image_channel_data(ref, "N.Y")[i], image_channel_data(ref, "N.Z")[i]);
-    float albedo = image_channel_data(ref, "albedo.G")[i], roughness = image_channel_data(ref, "roughness.Y")[i];
+    vec3 p = v3(image_channel_data(ref, CH_P_X)[i], image_channel_data(ref, CH_P_Y)[i], image_channel_data(ref, CH_P_Z)[i]);
+    vec3 n = v3(image_channel_data(ref, CH_N_X)[i], image_channel_data(ref, CH_N_Y)[i], image_channel_data(ref, CH_N_Z)[i]);
+    float albedo = image_channel_data(ref, CH_ALBEDO_G)[i], roughness = image_channel_data(ref, CH_ROUGHNESS)[i];
     frame f = frame_from_normal(v3_normalize(n));
     vec3 to_light = v3_sub(ls->light, p);
     float d = v3_length(to_light), sin_sigma = ls->radius / d, alpha = roughness * roughness;
@@ -99,7 +100,7 @@ typedef struct {
 static int compare_scene(all_context *ctx, const char *dir, const light_scene *ls, const decima_sphere_constants *refit,
                          scene_figures *fig, gt_error *e)
 {
-    const int preview = ctx->quality == QUALITY_PREVIEW;
+    const int preview = ctx->study.quality == QUALITY_PREVIEW;
     scene s;
     if (scene_load("builtin:plane", &s, e) != 0)
         return -1;
@@ -115,7 +116,7 @@ static int compare_scene(all_context *ctx, const char *dir, const light_scene *l
     req.quantity = QUANTITY_SPHERE_LIGHT;
     req.sampling.spp = preview ? 64 : 1024;
     req.sampling.seed = 1;
-    req.sampling.threads = ctx->threads;
+    req.sampling.threads = ctx->study.threads;
     req.normals = NORMAL_SHADING;
     req.sphere_light.position = ls->light;
     req.sphere_light.radius = ls->radius;
@@ -127,7 +128,7 @@ static int compare_scene(all_context *ctx, const char *dir, const light_scene *l
     if (rc != 0)
         return -1;
     size_t n = image_pixel_count(&ref);
-    const float *mask = image_channel_data(&ref, "mask.A"), *want = image_channel_data(&ref, "sphere.G");
+    const float *mask = image_channel_data(&ref, CH_MASK), *want = image_channel_data(&ref, CH_SPHERE_G);
     float *approx = malloc(APPROX * n * sizeof *approx), *err = malloc(n * sizeof *err);
     char path[8192];
     fig->width = ref.width, fig->height = ref.height;
@@ -137,7 +138,7 @@ static int compare_scene(all_context *ctx, const char *dir, const light_scene *l
     }
     snprintf(path, sizeof path, "%s/scene_%s.exr", dir, ls->name);
     ssim_result floor;
-    if ((rc = ssim_noise_floor(&ref, path, "sphere.G", mask, &floor, e)) != 0)
+    if ((rc = ssim_noise_floor(&ref, path, CH_SPHERE_G, mask, &floor, e)) != 0)
         goto done;
     fig->noise_floor = floor.dssim;
     if ((rc = exr_write(path, &ref, e)) != 0)
@@ -180,8 +181,8 @@ static int render_sphere_on_plane(all_context *ctx, const camera *cam, int shado
     reference_request req;
     memset(&req, 0, sizeof req);
     req.quantity = QUANTITY_SPHERE_LIGHT;
-    req.sampling = (sampling_settings){.spp = ctx->quality == QUALITY_PREVIEW ? 64 : 1024, .seed = 1,
-                                       .threads = ctx->threads};
+    req.sampling = (sampling_settings){.spp = ctx->study.quality == QUALITY_PREVIEW ? 64 : 1024, .seed = 1,
+                                       .threads = ctx->study.threads};
     req.normals = NORMAL_SHADING;
     req.sphere_light = (sphere_light_settings){v3(-2.5f, 4.0f, 1.5f), 0.5f, 5.0f, shadows};
     render_stats stats;
@@ -193,7 +194,7 @@ static int render_sphere_on_plane(all_context *ctx, const camera *cam, int shado
 /* What none of the approximations models: the same light with --shadows. */
 static int shadow_comparison(all_context *ctx, const char *dir, cJSON *json, gt_error *e)
 {
-    const int preview = ctx->quality == QUALITY_PREVIEW;
+    const int preview = ctx->study.quality == QUALITY_PREVIEW;
     camera cam = {v3(0.0f, 3.0f, 7.0f), v3(0.0f, 0.7f, 0.0f), v3(0.0f, 1.0f, 0.0f), (float)(40.0 * M_PI / 180.0),
                   preview ? 160 : 400, preview ? 96 : 240};
     image plain, shadowed;
@@ -203,8 +204,8 @@ static int shadow_comparison(all_context *ctx, const char *dir, cJSON *json, gt_
         image_free(&plain);
         return -1;
     }
-    const float *mask = image_channel_data(&plain, "mask.A");
-    const float *planes[2] = {image_channel_data(&plain, "sphere.G"), image_channel_data(&shadowed, "sphere.G")};
+    const float *mask = image_channel_data(&plain, CH_MASK);
+    const float *planes[2] = {image_channel_data(&plain, CH_SPHERE_G), image_channel_data(&shadowed, CH_SPHERE_G)};
     size_t n = image_pixel_count(&plain), covered = 0, darkened = 0;
     for (size_t i = 0; i < n; ++i) {
         covered += mask[i] != 0.0f;

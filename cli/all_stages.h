@@ -9,13 +9,10 @@
 
 #include "cli/report_writer.h"
 #include "core/error.h"
-
-typedef enum { QUALITY_PREVIEW, QUALITY_PRODUCTION } all_quality;
+#include "studies/study.h"
 
 typedef struct {
-    const char *output_dir;
-    all_quality quality;
-    int threads;
+    study_context study; /* output folder, quality, threads: what the studies see */
     report *doc;
     cJSON *summary; /* summary.json: one member per stage */
 } all_context;
@@ -34,7 +31,5 @@ int all_stage_sphere_light(all_context *ctx, gt_error *e);
 
 /* GTAO, HBAO and VO against the height-field and 3-D AO references. */
 int all_stage_gtao(all_context *ctx, gt_error *e);
-/* "<output_dir>/<sub>" with the folder created. */
-int all_make_dir(const all_context *ctx, const char *sub, char *path, size_t size, gt_error *e);
 
 #endif

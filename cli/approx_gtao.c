@@ -6,6 +6,7 @@
 #include "cli/approx_io.h"
 #include "cli/cli.h"
 #include "realtime/gtao.h"
+#include "core/reference_schema.h"
 
 static void print_help(void)
 {
@@ -46,9 +47,9 @@ static void print_help(void)
 
 static int compute(const ss_gbuffer *g, const void *params, image *out)
 {
-    float *ao = image_add_channel(out, "ao.V");
-    float *bent[3] = {image_add_channel(out, "bent.X"), image_add_channel(out, "bent.Y"),
-                      image_add_channel(out, "bent.Z")};
+    float *ao = image_add_channel(out, CH_AO);
+    float *bent[3] = {image_add_channel(out, CH_BENT_X), image_add_channel(out, CH_BENT_Y),
+                      image_add_channel(out, CH_BENT_Z)};
     if (!ao || !bent[0] || !bent[1] || !bent[2])
         return -1;
     return gtao_render(g, params, ao, bent);

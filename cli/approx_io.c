@@ -8,6 +8,7 @@
 
 #include "cli/cli.h"
 #include "core/exr_io.h"
+#include "core/reference_schema.h"
 
 const char approx_common_help[] =
     "  --gbuffer G.exr       input: an EXR with depth.Z, N.X, N.Y, N.Z and mask.A (from\n"
@@ -31,7 +32,7 @@ static int load_camera(const char *path, const char *camera_path, const image *i
 {
     if (camera_path)
         return camera_read_json(camera_path, cam, e);
-    const char *text = image_get_attribute(img, "gtlab.camera");
+    const char *text = image_get_attribute(img, ATTR_CAMERA);
     if (text)
         return camera_parse_json(text, path, cam, e);
     char sidecar[4096];
@@ -67,16 +68,16 @@ int approx_output_init(const approx_input *in, const char *technique, const char
 {
     if (image_init(out, in->img.width, in->img.height) != 0)
         return -1;
-    float *mask = image_add_channel(out, "mask.A");
+    float *mask = image_add_channel(out, CH_MASK);
     int rc = mask ? 0 : -1;
     if (mask)
         memcpy(mask, in->g.mask, sizeof *mask * image_pixel_count(out));
-    rc |= image_set_attribute(out, "gtlab.version", GTLAB_VERSION);
-    rc |= image_set_attribute(out, "gtlab.quantity", "approx");
-    rc |= image_set_attribute(out, "gtlab.technique", technique);
-    rc |= image_set_attribute(out, "gtlab.settings", settings);
+    rc |= image_set_attribute(out, ATTR_VERSION, GTLAB_VERSION);
+    rc |= image_set_attribute(out, ATTR_QUANTITY, QUANTITY_NAME_APPROX);
+    rc |= image_set_attribute(out, ATTR_TECHNIQUE, technique);
+    rc |= image_set_attribute(out, ATTR_SETTINGS, settings);
     for (int k = 0; k < 2; ++k) {
-        const char *key = k ? "gtlab.scene" : "gtlab.camera", *value = image_get_attribute(&in->img, key);
+        const char *key = k ? ATTR_SCENE : ATTR_CAMERA, *value = image_get_attribute(&in->img, key);
         if (value)
             rc |= image_set_attribute(out, key, value);
     }

@@ -10,6 +10,7 @@
 #include "cli/cli.h"
 #include "cli/specular_occlusion_approx.h"
 #include "core/exr_io.h"
+#include "core/reference_schema.h"
 
 static void print_help(void)
 {
@@ -102,15 +103,15 @@ static int write_output(const approx_options *o, const image *gbuffer, const so_
     image out;
     if (image_init(&out, in->width, in->height) != 0)
         return gt_error_set(e, o->output, "out of memory");
-    float *vs = image_add_channel(&out, "specocc.V"), *mask = image_add_channel(&out, "mask.A");
+    float *vs = image_add_channel(&out, CH_SPECOCC), *mask = image_add_channel(&out, CH_MASK);
     char label[128];
     so_variant_label(v, label, sizeof label);
     int rc = vs && mask ? 0 : gt_error_set(e, o->output, "out of memory");
     if (rc == 0) {
         so_approx_evaluate(in, v, vs);
         memcpy(mask, in->mask, sizeof(float) * image_pixel_count(&out));
-        rc = image_set_attribute(&out, "gtlab.approx", label) |
-             image_set_attribute(&out, "gtlab.camera", image_get_attribute(gbuffer, "gtlab.camera"));
+        rc = image_set_attribute(&out, ATTR_APPROX, label) |
+             image_set_attribute(&out, ATTR_CAMERA, image_get_attribute(gbuffer, ATTR_CAMERA));
         rc = rc ? gt_error_set(e, o->output, "out of memory") : exr_write(o->output, &out, e);
     }
     image_free(&out);

@@ -6,6 +6,7 @@
 #include "cli/approx_io.h"
 #include "cli/cli.h"
 #include "realtime/volumetric_obscurance.h"
+#include "core/reference_schema.h"
 
 static void print_help(void)
 {
@@ -27,7 +28,7 @@ static void print_help(void)
 
 static int compute(const ss_gbuffer *g, const void *params, image *out)
 {
-    float *ao = image_add_channel(out, "ao.V");
+    float *ao = image_add_channel(out, CH_AO);
     return ao ? vo_render(g, params, ao) : -1;
 }
 

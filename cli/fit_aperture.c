@@ -16,6 +16,7 @@
 #include "core/atomic_file.h"
 #include "core/exr_io.h"
 #include "metrics/ssim.h"
+#include "core/reference_schema.h"
 
 static const double SCAN_LO = -12.0, SCAN_HI = -0.05, SCAN_STEP = 0.125, GOLDEN_TOLERANCE = 1e-3;
 
@@ -163,9 +164,9 @@ static int parse_options(int argc, char **argv, fit_options *o)
             o->aos[o->ao_count++] = optarg;
             break;
         case 'd':
-            if (strcmp(optarg, "gtso") == 0) o->channel = "specocc.V";
-            else if (strcmp(optarg, "d-only") == 0) o->channel = "specocc_d.V";
-            else if (strcmp(optarg, "phong") == 0) o->channel = "specocc_phong.V";
+            if (strcmp(optarg, "gtso") == 0) o->channel = CH_SPECOCC;
+            else if (strcmp(optarg, "d-only") == 0) o->channel = CH_SPECOCC_D;
+            else if (strcmp(optarg, "phong") == 0) o->channel = CH_SPECOCC_PHONG;
             else return cli_failf("--definition", "'%s' is not gtso, d-only or phong", optarg), -1;
             break;
         case 'i':
@@ -251,7 +252,7 @@ static int load_cases(const fit_options *o, image *refs, image *aos, aperture_ca
 
 int fit_aperture(int argc, char **argv)
 {
-    fit_options o = {.exact = 1, .channel = "specocc.V"};
+    fit_options o = {.exact = 1, .channel = CH_SPECOCC};
     int parsed = parse_options(argc, argv, &o);
     if (parsed != 0)
         return parsed > 0 ? EXIT_OK : EXIT_USER_ERROR;

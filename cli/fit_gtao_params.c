@@ -22,6 +22,7 @@
 #include "metrics/image_error.h"
 #include "metrics/ssim.h"
 #include "realtime/gtao.h"
+#include "core/reference_schema.h"
 
 enum { PARAM_RADIUS, PARAM_FALLOFF, PARAM_THICKNESS, PARAM_COUNT = GTAO_FIT_PARAMS, MAX_SCENES = GTAO_FIT_MAX_SCENES };
 const char *const gtao_fit_param_names[GTAO_FIT_PARAMS] = {"radius_over_camera_distance", "falloff", "thickness"};
@@ -100,7 +101,7 @@ static int residuals_at(const fit_scene *s, const double *params, float *ao, flo
 {
     if (run_gtao(s, params, ao) != 0)
         return -1;
-    const float *ref = image_channel_data(&s->in.img, "ao.V");
+    const float *ref = image_channel_data(&s->in.img, CH_AO);
     int w = s->in.img.width, h = s->in.img.height;
     if (s->objective == GTAO_FIT_DSSIM) {
         ssim_result unused;
@@ -161,7 +162,7 @@ static int score(const fit_scene *s, const double *p, fit_score *out, gt_error *
         free(ao);
         return gt_error_set(e, s->name, "out of memory");
     }
-    const float *ref = image_channel_data(&s->in.img, "ao.V");
+    const float *ref = image_channel_data(&s->in.img, CH_AO);
     image_error_stats st;
     ssim_result ss;
     int rc = image_error_compute(ao, ref, s->in.g.mask, s->in.img.width, s->in.img.height, s->name, &st, e) ||
@@ -187,7 +188,7 @@ static int load_scenes(const char *dir, const char *list, const gtao_params *bas
         if (approx_load(path, NULL, &s->in, e) != 0)
             return -1;
         ++*count;
-        if (!image_channel_data(&s->in.img, "ao.V"))
+        if (!image_channel_data(&s->in.img, CH_AO))
             return gt_error_set(e, path, "not an AO reference: no ao.V");
         snprintf(s->name, sizeof s->name, "%s", tok);
         s->distance = v3_length(v3_sub(s->in.cam.target, s->in.cam.position));

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "scene/camera.h"
+#include "core/reference_schema.h"
 
 static const float *channel(const image *img, const char *what, const char *name, gt_error *e)
 {
@@ -17,10 +18,8 @@ static const float *channel(const image *img, const char *what, const char *name
 
 double so_reference_roughness(const image *reference)
 {
-    const char *settings = image_get_attribute(reference, "gtlab.settings");
-    const char *r = settings ? strstr(settings, "roughness=") : NULL;
     double value;
-    return r && sscanf(r + 10, "%lf", &value) == 1 ? value : -1.0;
+    return schema_get_real(reference, ATTR_ROUGHNESS, NULL, &value, NULL) == 1 ? value : -1.0;
 }
 
 void so_inputs_free(so_pixel_inputs *in)
@@ -45,8 +44,8 @@ static int allocate(so_pixel_inputs *in, int width, int height)
 int so_inputs_from_images(const image *gbuffer, const char *what_gbuffer, const image *ao, const char *what_ao,
                           double roughness, so_pixel_inputs *in, gt_error *e)
 {
-    static const char *const gnames[8] = {"N.X", "N.Y", "N.Z", "P.X", "P.Y", "P.Z", "mask.A", "roughness.Y"};
-    static const char *const anames[5] = {"ao.V", "ao.Vuniform", "bent.X", "bent.Y", "bent.Z"};
+    static const char *const gnames[8] = {CH_N_X, CH_N_Y, CH_N_Z, CH_P_X, CH_P_Y, CH_P_Z, CH_MASK, CH_ROUGHNESS};
+    static const char *const anames[5] = {CH_AO, CH_AO_UNIFORM, CH_BENT_X, CH_BENT_Y, CH_BENT_Z};
     const float *g[8], *a[5];
     for (int i = 0; i < 8; ++i)
         if (!(g[i] = channel(gbuffer, what_gbuffer, gnames[i], e)))
@@ -58,7 +57,7 @@ int so_inputs_from_images(const image *gbuffer, const char *what_gbuffer, const 
     if (ao->width != gbuffer->width || ao->height != gbuffer->height)
         return gt_error_set(e, what_ao, "size %dx%d differs from the G-buffer's %dx%d", ao->width, ao->height,
                             gbuffer->width, gbuffer->height);
-    const char *camera_json = image_get_attribute(gbuffer, "gtlab.camera");
+    const char *camera_json = image_get_attribute(gbuffer, ATTR_CAMERA);
     camera cam;
     if (!camera_json)
         return gt_error_set(e, what_gbuffer, "no gtlab.camera header attribute (not a gtlab G-buffer?)");

@@ -69,18 +69,10 @@ static int select_stages(const char *list, int selected[STAGE_COUNT])
     return cli_failf("--stages", "no stage named in '%s'", list), -1;
 }
 
-int all_make_dir(const all_context *ctx, const char *sub, char *path, size_t size, gt_error *e)
-{
-    snprintf(path, size, "%s/%s", ctx->output_dir, sub);
-    if (mkdir(path, 0755) != 0 && errno != EEXIST)
-        return gt_error_set(e, path, "cannot create folder: %s", strerror(errno));
-    return 0;
-}
-
 static int write_summary(const all_context *ctx, gt_error *e)
 {
     char path[4096];
-    snprintf(path, sizeof path, "%s/summary.json", ctx->output_dir);
+    snprintf(path, sizeof path, "%s/summary.json", ctx->study.output_dir);
     char *text = cJSON_Print(ctx->summary);
     if (!text)
         return gt_error_set(e, path, "out of memory");
@@ -97,7 +89,7 @@ int verb_all(int argc, char **argv)
                                           {"stages", required_argument, 0, 's'},
                                           {"help", no_argument, 0, 'h'},
                                           {0, 0, 0, 0}};
-    all_context ctx = {"results", QUALITY_PREVIEW, omp_get_num_procs(), NULL, NULL};
+    all_context ctx = {{"results", QUALITY_PREVIEW, omp_get_num_procs()}, NULL, NULL};
     long threads;
     int c, selected[STAGE_COUNT] = {1, 1, 1, 1, 1, 1};
     const char *stage_list = NULL;
@@ -105,17 +97,17 @@ int verb_all(int argc, char **argv)
         switch (c) {
         case 'q':
             if (strcmp(optarg, "preview") == 0)
-                ctx.quality = QUALITY_PREVIEW;
+                ctx.study.quality = QUALITY_PREVIEW;
             else if (strcmp(optarg, "production") == 0)
-                ctx.quality = QUALITY_PRODUCTION;
+                ctx.study.quality = QUALITY_PRODUCTION;
             else
                 return cli_failf("--quality", "'%s' is neither preview nor production", optarg);
             break;
-        case 'o': ctx.output_dir = optarg; break;
+        case 'o': ctx.study.output_dir = optarg; break;
         case 't':
             if (cli_parse_int("--threads", optarg, 1, 1024, &threads))
                 return EXIT_USER_ERROR;
-            ctx.threads = (int)threads;
+            ctx.study.threads = (int)threads;
             break;
         case 's':
             if (select_stages(optarg, selected) != 0)
@@ -129,10 +121,10 @@ int verb_all(int argc, char **argv)
     if (optind < argc)
         return cli_failf("all", "unexpected argument '%s'", argv[optind]);
     gt_error e;
-    if (mkdir(ctx.output_dir, 0755) != 0 && errno != EEXIST)
-        return cli_failf(ctx.output_dir, "cannot create folder: %s", strerror(errno));
+    if (mkdir(ctx.study.output_dir, 0755) != 0 && errno != EEXIST)
+        return cli_failf(ctx.study.output_dir, "cannot create folder: %s", strerror(errno));
     char probe[4096];
-    snprintf(probe, sizeof probe, "%s/report.md", ctx.output_dir);
+    snprintf(probe, sizeof probe, "%s/report.md", ctx.study.output_dir);
     if (atomic_file_check_writable(probe, &e) != 0)
         return cli_fail(&e);
 
@@ -140,7 +132,7 @@ int verb_all(int argc, char **argv)
     report_init(&doc, "gtlab accuracy report");
     ctx.doc = &doc;
     ctx.summary = cJSON_CreateObject();
-    const char *quality = ctx.quality == QUALITY_PREVIEW ? "preview" : "production";
+    const char *quality = ctx.study.quality == QUALITY_PREVIEW ? "preview" : "production";
     cJSON_AddStringToObject(ctx.summary, "gtlab_version", GTLAB_VERSION);
     cJSON_AddStringToObject(ctx.summary, "quality", quality);
     char stage_option[512] = "";
@@ -163,10 +155,10 @@ int verb_all(int argc, char **argv)
         else
             fprintf(stderr, "gtlab all: %s done in %.1f s\n", stages[i].name, seconds_now() - t0);
     }
-    if (status == EXIT_OK && (report_write(&doc, ctx.output_dir, &e) != 0 || write_summary(&ctx, &e) != 0))
+    if (status == EXIT_OK && (report_write(&doc, ctx.study.output_dir, &e) != 0 || write_summary(&ctx, &e) != 0))
         status = cli_fail(&e);
     if (status == EXIT_OK)
-        printf("report: %s/report.html and %s/report.md\n", ctx.output_dir, ctx.output_dir);
+        printf("report: %s/report.html and %s/report.md\n", ctx.study.output_dir, ctx.study.output_dir);
     report_free(&doc);
     cJSON_Delete(ctx.summary);
     return status;

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "core/reference_schema.h"
 #include "core/atomic_file.h"
 #include "core/exr_io.h"
 #include "core/image_io.h"
@@ -111,9 +112,8 @@ typedef struct {
 /* Whether img is a reference render holding the accumulators of `channel`. */
 static int is_reference_of(const image *img, const char *channel)
 {
-    char name[2 * IMAGE_NAME_MAX];
-    snprintf(name, sizeof name, "%s.sum", channel);
-    return image_find_channel(img, name) != NULL;
+    char name[IMAGE_NAME_MAX];
+    return schema_channel_suffixed(channel, CH_SUFFIX_SUM, name) == 0 && image_find_channel(img, name) != NULL;
 }
 
 /* The heatmap's values and mask: |A-B| inside the pair's mask, or the

@@ -1,4 +1,5 @@
 #include "core/mc_film.h"
+#include "core/reference_schema.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -227,7 +228,7 @@ static void normalize_layers(const mc_film *film, image *img, int with_stderr)
                 return;
             mean[a] = image_channel_data(img, film->quantities[q].name);
             if (with_stderr)
-                err[a] = add_suffixed(img, film->quantities[q].name, "stderr");
+                err[a] = add_suffixed(img, film->quantities[q].name, CH_SUFFIX_STDERR);
         }
         for (size_t p = 0; p < pixel_count(film); ++p) {
             double len = sqrt((double)mean[0][p] * mean[0][p] + (double)mean[1][p] * mean[1][p] +
@@ -255,10 +256,10 @@ int mc_film_write_channels(const mc_film *film, const float *mask, image *img)
     for (int q = 0; q < film->quantity_count; ++q) {
         const char *name = film->quantities[q].name;
         float *mean = image_add_channel(img, name);
-        float *err = add_suffixed(img, name, "stderr");
-        float *s = add_suffixed(img, name, "sum"), *s_lo = add_suffixed(img, name, "sum_lo");
-        float *ss = add_suffixed(img, name, "sumsq"), *ss_lo = add_suffixed(img, name, "sumsq_lo");
-        float *se = add_suffixed(img, name, "sumeven"), *se_lo = add_suffixed(img, name, "sumeven_lo");
+        float *err = add_suffixed(img, name, CH_SUFFIX_STDERR);
+        float *s = add_suffixed(img, name, CH_SUFFIX_SUM), *s_lo = add_suffixed(img, name, CH_SUFFIX_SUM_LO);
+        float *ss = add_suffixed(img, name, CH_SUFFIX_SUMSQ), *ss_lo = add_suffixed(img, name, CH_SUFFIX_SUMSQ_LO);
+        float *se = add_suffixed(img, name, CH_SUFFIX_SUMEVEN), *se_lo = add_suffixed(img, name, CH_SUFFIX_SUMEVEN_LO);
         if (!mean || !err || !s || !s_lo || !ss || !ss_lo || !se || !se_lo)
             return -1;
         for (size_t p = 0; p < np; ++p) {
@@ -271,7 +272,7 @@ int mc_film_write_channels(const mc_film *film, const float *mask, image *img)
             split_hi_lo(film->sum_even[i], &se[p], &se_lo[p]);
         }
     }
-    float *n = image_add_channel(img, "spp.N"), *n_even = image_add_channel(img, "spp.Neven");
+    float *n = image_add_channel(img, CH_SPP), *n_even = image_add_channel(img, CH_SPP_EVEN);
     if (!n || !n_even)
         return -1;
     for (size_t p = 0; p < np; ++p) {
@@ -290,8 +291,8 @@ int mc_film_write_channels(const mc_film *film, const float *mask, image *img)
     for (int q = 0; q < film->quantity_count; ++q)
         len += (size_t)snprintf(exponents + len, sizeof exponents - len, "%s%s:%d", q ? " " : "",
                                 film->quantities[q].name, film->quantities[q].scale_exponent);
-    return image_set_attribute(img, MC_FILM_ATTR_NORMALIZED, layers) |
-           image_set_attribute(img, MC_FILM_ATTR_EXPONENTS, exponents);
+    return image_set_attribute(img, ATTR_NORMALIZED, layers) |
+           image_set_attribute(img, ATTR_EXPONENTS, exponents);
 }
 
 int mc_film_write_half_means(const mc_film *film, int half, image *img)
@@ -330,9 +331,9 @@ static int valid_count(float n) { return n >= 0.0f && n <= 16777216.0f && n == f
 /* Restores each quantity's scale exponent from the header ("name:E ..."). */
 static int read_exponents(const image *img, const char *what, mc_quantity *quantities, int count, gt_error *e)
 {
-    const char *text = image_get_attribute(img, MC_FILM_ATTR_EXPONENTS);
+    const char *text = image_get_attribute(img, ATTR_EXPONENTS);
     if (!text)
-        return gt_error_set(e, what, "header attribute %s is missing", MC_FILM_ATTR_EXPONENTS);
+        return gt_error_set(e, what, "header attribute %s is missing", ATTR_EXPONENTS);
     for (int q = 0; q < count; ++q) {
         size_t len = strlen(quantities[q].name);
         const char *at = text;
@@ -347,24 +348,26 @@ static int read_exponents(const image *img, const char *what, mc_quantity *quant
         }
         if (!found || quantities[q].scale_exponent < -64 || quantities[q].scale_exponent > 64)
             return gt_error_set(e, what, "no valid scale exponent for %s in %s", quantities[q].name,
-                                MC_FILM_ATTR_EXPONENTS);
+                                ATTR_EXPONENTS);
     }
     return 0;
 }
 
 int mc_film_read_channels(const image *img, const char *what, mc_film *film, gt_error *e)
 {
-    /* The quantities are the channels that have a ".sum" accumulator. */
+    /* The quantities are the channels that have a "Q.sum" accumulator. */
+    static const char suffix[] = "." CH_SUFFIX_SUM;
+    const size_t suffix_len = sizeof suffix - 1;
     mc_quantity quantities[MC_FILM_MAX_QUANTITIES];
     int count = 0;
     for (int c = 0; c < img->channel_count; ++c) {
         const char *name = img->channels[c].name;
         size_t len = strlen(name);
-        if (len > 4 && strcmp(name + len - 4, ".sum") == 0) {
+        if (len > suffix_len && strcmp(name + len - suffix_len, suffix) == 0) {
             if (count == MC_FILM_MAX_QUANTITIES)
                 return gt_error_set(e, what, "more than %d Monte Carlo quantities", MC_FILM_MAX_QUANTITIES);
             memset(&quantities[count], 0, sizeof quantities[count]);
-            memcpy(quantities[count].name, name, len - 4);
+            memcpy(quantities[count].name, name, len - suffix_len);
             count++;
         }
     }
@@ -372,7 +375,7 @@ int mc_film_read_channels(const image *img, const char *what, mc_film *film, gt_
         return gt_error_set(e, what, "no Monte Carlo accumulator channels (*.sum): not a gtlab reference render");
     if (read_exponents(img, what, quantities, count, e) != 0)
         return -1;
-    const float *n = image_channel_data(img, "spp.N"), *n_even = image_channel_data(img, "spp.Neven");
+    const float *n = image_channel_data(img, CH_SPP), *n_even = image_channel_data(img, CH_SPP_EVEN);
     if (!n || !n_even)
         return gt_error_set(e, what, "channels spp.N and spp.Neven are missing");
     if (mc_film_init(film, img->width, img->height, quantities, count) != 0)
@@ -380,11 +383,11 @@ int mc_film_read_channels(const image *img, const char *what, mc_film *film, gt_
     size_t np = pixel_count(film);
     for (int q = 0; q < count; ++q) {
         const char *qn = quantities[q].name;
-        const float *s = required_channel(img, qn, "sum", what, e), *s_lo = required_channel(img, qn, "sum_lo", what, e);
-        const float *ss = required_channel(img, qn, "sumsq", what, e);
-        const float *ss_lo = required_channel(img, qn, "sumsq_lo", what, e);
-        const float *se = required_channel(img, qn, "sumeven", what, e);
-        const float *se_lo = required_channel(img, qn, "sumeven_lo", what, e);
+        const float *s = required_channel(img, qn, CH_SUFFIX_SUM, what, e), *s_lo = required_channel(img, qn, CH_SUFFIX_SUM_LO, what, e);
+        const float *ss = required_channel(img, qn, CH_SUFFIX_SUMSQ, what, e);
+        const float *ss_lo = required_channel(img, qn, CH_SUFFIX_SUMSQ_LO, what, e);
+        const float *se = required_channel(img, qn, CH_SUFFIX_SUMEVEN, what, e);
+        const float *se_lo = required_channel(img, qn, CH_SUFFIX_SUMEVEN_LO, what, e);
         if (!s || !s_lo || !ss || !ss_lo || !se || !se_lo) {
             mc_film_free(film);
             return -1;
@@ -404,7 +407,7 @@ int mc_film_read_channels(const image *img, const char *what, mc_film *film, gt_
         film->count[p] = (uint32_t)n[p];
         film->count_even[p] = (uint32_t)n_even[p];
     }
-    const char *layers = image_get_attribute(img, MC_FILM_ATTR_NORMALIZED);
+    const char *layers = image_get_attribute(img, ATTR_NORMALIZED);
     if (layers) {
         char copy[MC_FILM_MAX_NORMALIZED * IMAGE_NAME_MAX];
         snprintf(copy, sizeof copy, "%s", layers);

@@ -24,13 +24,11 @@
 #define MC_FILM_MAX_QUANTITIES 64
 
 typedef struct {
-    char name[IMAGE_NAME_MAX]; /* channel name of the mean, e.g. "ao.V" */
+    char name[IMAGE_NAME_MAX]; /* channel name of the mean, e.g. CH_AO (core/reference_schema.h) */
     int scale_exponent;        /* E: samples expected within [-2^E, 2^E] */
 } mc_quantity;
 
 #define MC_FILM_MAX_NORMALIZED 4
-#define MC_FILM_ATTR_NORMALIZED "gtlab.normalized" /* "layer layer ..." */
-#define MC_FILM_ATTR_EXPONENTS "gtlab.scale_exponents" /* "name:E name:E ..." */
 
 /* A quantity's rounding grids: 2^(E-24) for samples, 2^(2E-24) for squares. */
 typedef struct {
@@ -85,8 +83,8 @@ double mc_film_stderr(const mc_film *film, int quantity, int pixel);
 
 /* Adds the channels "Q", "Q.stderr", the accumulators "Q.sum", "Q.sum_lo",
  * "Q.sumsq", "Q.sumsq_lo", "Q.sumeven", "Q.sumeven_lo" of every quantity,
- * and "spp.N", "spp.Neven"; and the attributes MC_FILM_ATTR_NORMALIZED and
- * MC_FILM_ATTR_EXPONENTS, so a film read back accumulates on the same grid. Pixels with
+ * and CH_SPP, CH_SPP_EVEN; and the attributes ATTR_NORMALIZED and
+ * ATTR_EXPONENTS, so a film read back accumulates on the same grid. Pixels with
  * mask[pixel] == 0 (background; mask may be NULL) get 0 in Q and Q.stderr. */
 int mc_film_write_channels(const mc_film *film, const float *mask, image *img);
 /* Means of one half of the samples only (half 0: even indices, 1: odd) into

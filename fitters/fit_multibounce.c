@@ -4,6 +4,7 @@
  * here the joint model is fitted to all samples at once (issue 3). */
 #define _POSIX_C_SOURCE 200809L
 #include "fitters/fit_multibounce.h"
+#include "core/reference_schema.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -115,7 +116,7 @@ int multibounce_data_select(const multibounce_data *d, int scene, int exclude, i
 static void albedo_channel(const char *token, int count, char *name, size_t size)
 {
     if (count == 1)
-        snprintf(name, size, "multibounce.V");
+        snprintf(name, size, CH_MULTIBOUNCE);
     else
         snprintf(name, size, "multibounce_%.31s.V", token);
 }
@@ -147,9 +148,9 @@ static int parse_albedo_list(const char *text, const char *path, char tokens[][3
 
 static int check_header(multibounce_data *d, const image *img, const char *path, gt_error *e)
 {
-    const char *quantity = image_get_attribute(img, "gtlab.quantity");
-    const char *albedos = image_get_attribute(img, "gtlab.albedos");
-    const char *bounces = image_get_attribute(img, "gtlab.bounces");
+    const char *quantity = image_get_attribute(img, ATTR_QUANTITY);
+    const char *albedos = image_get_attribute(img, ATTR_ALBEDOS);
+    const char *bounces = image_get_attribute(img, ATTR_BOUNCES);
     if (!quantity || strcmp(quantity, "multibounce") != 0 || !albedos || !bounces)
         return gt_error_set(e, path, "no multibounce channels (not made by 'gtlab render multibounce'%s%s)",
                             quantity ? "; it holds " : "", quantity ? quantity : "");
@@ -179,9 +180,9 @@ int multibounce_data_add_image(multibounce_data *d, const image *img, const char
     float albedos[MBFIT_MAX_ALBEDOS];
     int count, index[MBFIT_MAX_ALBEDOS];
     const float *planes[MBFIT_MAX_ALBEDOS];
-    if (parse_albedo_list(image_get_attribute(img, "gtlab.albedos"), path, tokens, albedos, &count, e) != 0)
+    if (parse_albedo_list(image_get_attribute(img, ATTR_ALBEDOS), path, tokens, albedos, &count, e) != 0)
         return -1;
-    const float *mask = require_channel(img, "mask.A", path, e), *vd = mask ? require_channel(img, "ao.V", path, e) : NULL;
+    const float *mask = require_channel(img, CH_MASK, path, e), *vd = mask ? require_channel(img, CH_AO, path, e) : NULL;
     if (!vd)
         return -1;
     for (int k = 0; k < count; ++k) {
@@ -190,7 +191,7 @@ int multibounce_data_add_image(multibounce_data *d, const image *img, const char
         if (!(planes[k] = require_channel(img, name, path, e)))
             return -1;
     }
-    const char *scene_name = image_get_attribute(img, "gtlab.scene");
+    const char *scene_name = image_get_attribute(img, ATTR_SCENE);
     int scene = multibounce_data_scene(d, scene_name ? scene_name : path, e);
     if (scene < 0)
         return -1;

@@ -8,14 +8,15 @@
 #include "core/exr_io.h"
 #include "core/image.h"
 #include "core/image_io.h"
+#include "core/reference_schema.h"
 
 static int write_exr(const char *path, const float *data, int size, const char *description, gt_error *e)
 {
     image img;
     if (image_init(&img, size, size * size) != 0)
         return gt_error_set(e, path, "out of memory");
-    float *plane = image_add_channel(&img, "lut.V");
-    int rc = plane && image_set_attribute(&img, "gtlab.lut", description) == 0 ? 0 : -1;
+    float *plane = image_add_channel(&img, CH_LUT);
+    int rc = plane && image_set_attribute(&img, ATTR_LUT, description) == 0 ? 0 : -1;
     if (rc != 0)
         gt_error_set(e, path, "out of memory");
     else {

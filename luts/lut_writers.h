@@ -2,7 +2,7 @@
  * + i]) in the formats DESIGN.md promises, each carrying `description` (the
  * axes' parametrisation) in its metadata:
  *   <base>.exr  float, N wide and N*N high (slice k in rows k*N .. k*N+N-1),
- *               channel "lut.V", description in attribute "gtlab.lut"
+ *               channel "lut.V" (CH_LUT), description in attribute "gtlab.lut" (ATTR_LUT)
  *   <base>.png  the same layout quantised linearly to 8 bits (the talk stored
  *               its LUT as 8-bit BC4), description in ImageDescription
  *   <base>.h    a C array `static const float <identifier>[N*N*N]`, the
@@ -12,6 +12,7 @@
 #define GTLAB_LUTS_LUT_WRITERS_H
 
 #include "core/error.h"
+#include "core/reference_schema.h"
 
 int lut_write_all(const char *dir, const char *base, const char *identifier, const float *data, int size,
                   const char *description, gt_error *e);

@@ -1,12 +1,13 @@
 /* The set-up of a comparison of two images; see image_pair.h. */
 #include "metrics/image_pair.h"
+#include "core/reference_schema.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-const char *const metrics_default_channels[] = {"ao.V", "multibounce.V", "specocc.V", "ao.Vuniform", NULL};
+const char *const metrics_default_channels[] = {CH_AO, CH_MULTIBOUNCE, CH_SPECOCC, CH_AO_UNIFORM, NULL};
 
 /* "name, name, ..." of a list into buf, ending in "..." where the rest would
  * not fit (one line of an error message). */
@@ -109,8 +110,8 @@ int metrics_pair_init(metrics_pair *pair, const image *a, const char *what_a, co
     pair->mask = malloc(sizeof *pair->mask * n);
     if (!pair->mask)
         return gt_error_set(e, what_a, "out of memory");
-    const float *mask_a = image_channel_data(a, METRICS_MASK_CHANNEL);
-    const float *mask_b = image_channel_data(b, METRICS_MASK_CHANNEL);
+    const float *mask_a = image_channel_data(a, CH_MASK);
+    const float *mask_b = image_channel_data(b, CH_MASK);
     for (size_t i = 0; i < n; ++i)
         pair->mask[i] = metrics_in_mask(mask_a, i) && metrics_in_mask(mask_b, i) ? 1.0f : 0.0f;
     strcpy(pair->channel, channel); /* fits: it names a channel of a */

@@ -9,9 +9,6 @@
 #include "core/image.h"
 #include "metrics/image_error.h"
 
-/* The mask channel of gtlab images (DESIGN.md: 1 where a surface was hit). */
-#define METRICS_MASK_CHANNEL "mask.A"
-
 /* Channels compared when none is named, in order of preference; NULL-terminated. */
 extern const char *const metrics_default_channels[];
 

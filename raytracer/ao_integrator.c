@@ -1,12 +1,13 @@
 #include "raytracer/ao_integrator.h"
 
 #include "core/hemisphere_sampling.h"
+#include "core/reference_schema.h"
 
 enum { AO_V, AO_VUNIFORM, BENT_X, BENT_Y, BENT_Z, AO_QUANTITY_COUNT };
 
 /* All AO estimates lie in [-1, 1]: scale exponent 0. */
 static const mc_quantity ao_quantities[AO_QUANTITY_COUNT] = {
-    {"ao.V", 0}, {"ao.Vuniform", 0}, {"bent.X", 0}, {"bent.Y", 0}, {"bent.Z", 0}};
+    {CH_AO, 0}, {CH_AO_UNIFORM, 0}, {CH_BENT_X, 0}, {CH_BENT_Y, 0}, {CH_BENT_Z, 0}};
 
 /* Per sample: ray 2k is cosine-distributed, ray 2k+1 uniform, both mapped
  * from the sample's one 2-D point (pair 0). Each estimator on its own is a

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "scene/material_lookup.h"
+#include "core/reference_schema.h"
 
 int gbuffer_render(const embree_scene *es, const camera *cam, normal_mode normals, int threads, gbuffer *gb,
                    gt_error *e)
@@ -36,8 +37,8 @@ int gbuffer_render(const embree_scene *es, const camera *cam, normal_mode normal
 
 int gbuffer_write_channels(const gbuffer *gb, const scene *s, image *img)
 {
-    static const char *const names[] = {"depth.Z", "N.X", "N.Y", "N.Z", "Ng.X", "Ng.Y", "Ng.Z", "P.X", "P.Y",
-                                        "P.Z", "albedo.R", "albedo.G", "albedo.B", "roughness.Y", "mask.A"};
+    static const char *const names[] = {CH_DEPTH, CH_N_X, CH_N_Y, CH_N_Z, CH_NG_X, CH_NG_Y, CH_NG_Z, CH_P_X, CH_P_Y,
+                                        CH_P_Z, CH_ALBEDO_R, CH_ALBEDO_G, CH_ALBEDO_B, CH_ROUGHNESS, CH_MASK};
     enum { COUNT = sizeof names / sizeof names[0] };
     float *ch[COUNT];
     for (int c = 0; c < COUNT; ++c)

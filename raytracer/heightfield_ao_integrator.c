@@ -7,9 +7,10 @@
 
 #include "core/heightfield_model.h"
 #include "core/hemisphere_sampling.h"
+#include "core/reference_schema.h"
 
 enum { HF_V, HF_VUNIFORM, HF_QUANTITY_COUNT };
-static const mc_quantity hf_quantities[HF_QUANTITY_COUNT] = {{"ao.V", 0}, {"ao.Vuniform", 0}};
+static const mc_quantity hf_quantities[HF_QUANTITY_COUNT] = {{CH_AO, 0}, {CH_AO_UNIFORM, 0}};
 
 
 /* Camera-relative coordinates: (a, b, z) with z the depth along the axis and

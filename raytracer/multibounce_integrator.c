@@ -8,6 +8,7 @@
 
 #include "core/hemisphere_sampling.h"
 #include "scene/material_lookup.h"
+#include "core/reference_schema.h"
 
 /* ---- Settings ---------------------------------------------------------------------- */
 
@@ -133,19 +134,19 @@ static void name_quantities(multibounce_plan *plan)
     const multibounce_settings *s = &plan->settings;
     int n = 0;
     if (s->scene_albedo) {
-        static const char *const colours[3] = {"multibounce.R", "multibounce.G", "multibounce.B"};
+        static const char *const colours[3] = {CH_MULTIBOUNCE_R, CH_MULTIBOUNCE_G, CH_MULTIBOUNCE_B};
         for (int c = 0; c < 3; ++c)
             snprintf(plan->quantities[n++].name, IMAGE_NAME_MAX, "%s", colours[c]);
     } else if (s->albedo_count == 1) {
-        snprintf(plan->quantities[n++].name, IMAGE_NAME_MAX, "multibounce.V");
+        snprintf(plan->quantities[n++].name, IMAGE_NAME_MAX, CH_MULTIBOUNCE);
     } else {
         for (int i = 0; i < s->albedo_count; ++i) {
             char albedo[32];
             format_albedo(s->albedos[i], albedo, sizeof albedo);
-            snprintf(plan->quantities[n++].name, IMAGE_NAME_MAX, "multibounce_%s.V", albedo);
+            snprintf(plan->quantities[n++].name, IMAGE_NAME_MAX, CH_MULTIBOUNCE_ALBEDO_FMT, albedo);
         }
     }
-    snprintf(plan->quantities[n++].name, IMAGE_NAME_MAX, "ao.V");
+    snprintf(plan->quantities[n++].name, IMAGE_NAME_MAX, CH_AO);
     for (int q = 0; q < n; ++q)
         plan->quantities[q].scale_exponent = 0;
     plan->quantity_count = n;

@@ -38,8 +38,8 @@
  *   scene albedo          multibounce.R, multibounce.G, multibounce.B
  *   always                ao.V: V_d, the escape of the first cosine ray
  *                         (the AO integrator's estimator)
- * The header records MULTIBOUNCE_ATTR_ALBEDOS ("0.1 0.3 0.5" or "scene") and
- * MULTIBOUNCE_ATTR_BOUNCES ("4" or "inf").
+ * The header records ATTR_ALBEDOS ("0.1 0.3 0.5" or "scene") and
+ * ATTR_BOUNCES ("4" or "inf").
  *
  * Sampling: the direction leaving vertex d (d = 0: the pixel's surface) uses
  * dimension pair d (pair 0 is the AO integrator's); the roulette decision at
@@ -53,6 +53,7 @@
 #include <stddef.h>
 
 #include "raytracer/render_loop.h"
+#include "core/reference_schema.h"
 
 enum {
     MULTIBOUNCE_MAX_ALBEDOS = 32,
@@ -62,8 +63,6 @@ enum {
     MULTIBOUNCE_MAX_QUANTITIES = MULTIBOUNCE_MAX_ALBEDOS + 1
 };
 
-#define MULTIBOUNCE_ATTR_ALBEDOS "gtlab.albedos"
-#define MULTIBOUNCE_ATTR_BOUNCES "gtlab.bounces"
 
 typedef struct {
     int scene_albedo;                       /* 1: the scene's base colours, coloured */

@@ -8,6 +8,7 @@
 #include "core/mc_film.h"
 #include "raytracer/reference_render.h"
 #include "raytracer/specular_occlusion_integrator.h"
+#include "core/reference_schema.h"
 
 typedef struct {
     uint32_t seed;
@@ -45,8 +46,8 @@ static int blocks_overlap(const sample_block *a, const sample_block *b)
 /* The attributes that must agree for a merge to make sense. */
 static int check_compatible(const image *first, const image *other, const char *name, gt_error *e)
 {
-    static const char *const keys[] = {REF_ATTR_QUANTITY, REF_ATTR_SCENE, REF_ATTR_CAMERA, REF_ATTR_SETTINGS,
-                                       "gtlab.normal"};
+    static const char *const keys[] = {ATTR_QUANTITY, ATTR_SCENE, ATTR_CAMERA, ATTR_SETTINGS,
+                                       ATTR_NORMAL};
     if (first->width != other->width || first->height != other->height)
         return gt_error_set(e, name, "size %dx%d differs from the first input's %dx%d", other->width, other->height,
                             first->width, first->height);
@@ -63,9 +64,9 @@ static int check_compatible(const image *first, const image *other, const char *
 static int add_blocks(const image *img, const char *name, sample_block *all, int *count, gt_error *e)
 {
     sample_block mine[MAX_BLOCKS];
-    int n = parse_blocks(image_get_attribute(img, REF_ATTR_BLOCKS), mine, MAX_BLOCKS);
+    int n = parse_blocks(image_get_attribute(img, ATTR_BLOCKS), mine, MAX_BLOCKS);
     if (n <= 0)
-        return gt_error_set(e, name, "header attribute %s is missing or malformed", REF_ATTR_BLOCKS);
+        return gt_error_set(e, name, "header attribute %s is missing or malformed", ATTR_BLOCKS);
     for (int i = 0; i < n; ++i) {
         for (int j = 0; j < *count; ++j)
             if (blocks_overlap(&mine[i], &all[j]))
@@ -107,10 +108,10 @@ static int write_merged(const image *first, const mc_film *film, const sample_bl
             return -1;
         memcpy(dst, ch->data, sizeof(float) * image_pixel_count(first));
     }
-    if (mc_film_write_channels(film, image_channel_data(out, "mask.A"), out) != 0)
+    if (mc_film_write_channels(film, image_channel_data(out, CH_MASK), out) != 0)
         return -1;
     /* Ratio channels derive from the merged sums (specular occlusion). */
-    const char *quantity = image_get_attribute(first, REF_ATTR_QUANTITY);
+    const char *quantity = image_get_attribute(first, ATTR_QUANTITY);
     if (quantity && strcmp(quantity, "specular-occlusion") == 0 && specular_occlusion_write_ratios(out) != 0)
         return -1;
     for (int a = 0; a < first->attribute_count; ++a)
@@ -126,7 +127,7 @@ static int write_merged(const image *first, const mc_film *film, const sample_bl
     }
     char spp_text[32];
     snprintf(spp_text, sizeof spp_text, "%" PRIu64, spp);
-    return image_set_attribute(out, REF_ATTR_BLOCKS, text) | image_set_attribute(out, REF_ATTR_SPP, spp_text);
+    return image_set_attribute(out, ATTR_BLOCKS, text) | image_set_attribute(out, ATTR_SPP, spp_text);
 }
 
 int reference_merge(const image *inputs, const char *const *names, int count, image *out, gt_error *e)

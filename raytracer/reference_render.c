@@ -10,6 +10,7 @@
 #include "raytracer/ao_integrator.h"
 #include "raytracer/heightfield_ao_integrator.h"
 #include "raytracer/specular_occlusion_integrator.h"
+#include "core/reference_schema.h"
 
 /* In the order of reference_quantity. */
 static const char *const quantity_names[] = {"gbuffer", "ao", "multibounce", "heightfield-ao", "specular-occlusion",
@@ -46,39 +47,41 @@ static int write_header(const char *scene_spec, const camera *cam, const referen
 {
     char *camera_json = camera_to_json(cam);
     int rc = camera_json ? 0 : -1;
-    rc |= image_set_attribute(img, REF_ATTR_VERSION, GTLAB_VERSION);
-    rc |= image_set_attribute(img, REF_ATTR_QUANTITY, reference_quantity_name(req->quantity));
-    rc |= image_set_attribute(img, REF_ATTR_SCENE, scene_spec);
+    rc |= image_set_attribute(img, ATTR_VERSION, GTLAB_VERSION);
+    rc |= image_set_attribute(img, ATTR_QUANTITY, reference_quantity_name(req->quantity));
+    rc |= image_set_attribute(img, ATTR_SCENE, scene_spec);
     if (camera_json)
-        rc |= image_set_attribute(img, REF_ATTR_CAMERA, camera_json);
+        rc |= image_set_attribute(img, ATTR_CAMERA, camera_json);
     free(camera_json);
-    rc |= image_set_attribute(img, "gtlab.normal", req->normals == NORMAL_GEOMETRIC ? "geometric" : "shading");
+    rc |= image_set_attribute(img, ATTR_NORMAL, req->normals == NORMAL_GEOMETRIC ? "geometric" : "shading");
     if (req->quantity == QUANTITY_GBUFFER)
         return rc;
     const sampling_settings *ss = &req->sampling;
-    rc |= set_attributef(img, REF_ATTR_SPP, "%d", ss->spp);
-    rc |= set_attributef(img, REF_ATTR_SEED, "%" PRIu32, ss->seed);
-    rc |= set_attributef(img, REF_ATTR_BLOCKS, "%" PRIu32 ":%" PRIu32 "+%d", ss->seed, ss->sample_offset, ss->spp);
+    rc |= set_attributef(img, ATTR_SPP, "%d", ss->spp);
+    rc |= set_attributef(img, ATTR_SEED, "%" PRIu32, ss->seed);
+    rc |= set_attributef(img, ATTR_BLOCKS, "%" PRIu32 ":%" PRIu32 "+%d", ss->seed, ss->sample_offset, ss->spp);
     if (req->quantity == QUANTITY_MULTIBOUNCE) {
         char albedos[512], bounces[16];
         multibounce_albedos_text(&req->multibounce, albedos, sizeof albedos);
         multibounce_bounces_text(&req->multibounce, bounces, sizeof bounces);
-        rc |= image_set_attribute(img, MULTIBOUNCE_ATTR_ALBEDOS, albedos);
-        rc |= image_set_attribute(img, MULTIBOUNCE_ATTR_BOUNCES, bounces);
-        rc |= set_attributef(img, REF_ATTR_SETTINGS, "albedos=%s bounces=%s target_stderr=%.9g", albedos, bounces,
+        rc |= image_set_attribute(img, ATTR_ALBEDOS, albedos);
+        rc |= image_set_attribute(img, ATTR_BOUNCES, bounces);
+        rc |= set_attributef(img, ATTR_SETTINGS, "albedos=%s bounces=%s target_stderr=%.9g", albedos, bounces,
                              ss->target_stderr);
     } else if (req->quantity == QUANTITY_SPHERE_LIGHT) {
         char light[512];
         sphere_light_settings_text(&req->sphere_light, light, sizeof light);
-        rc |= set_attributef(img, REF_ATTR_SETTINGS, "%s target_stderr=%.9g", light, ss->target_stderr);
+        rc |= set_attributef(img, ATTR_SETTINGS, "%s target_stderr=%.9g", light, ss->target_stderr);
     } else if (req->quantity == QUANTITY_SPECULAR_OCCLUSION) {
         char roughness[32] = "material";
-        if (req->roughness >= 0.0f)
+        if (req->roughness >= 0.0f) {
             snprintf(roughness, sizeof roughness, "%.9g", req->roughness);
-        rc |= set_attributef(img, REF_ATTR_SETTINGS, "roughness=%s environment=%s target_stderr=%.9g", roughness,
+            rc |= schema_set_real(img, ATTR_ROUGHNESS, req->roughness);
+        }
+        rc |= set_attributef(img, ATTR_SETTINGS, "roughness=%s environment=%s target_stderr=%.9g", roughness,
                              environment_name(req->environment), ss->target_stderr);
     } else {
-        rc |= set_attributef(img, REF_ATTR_SETTINGS, "max_distance=%.9g target_stderr=%.9g", req->max_distance,
+        rc |= set_attributef(img, ATTR_SETTINGS, "max_distance=%.9g target_stderr=%.9g", req->max_distance,
                              ss->target_stderr);
     }
     return rc;
@@ -108,7 +111,7 @@ static int render_quantity(const embree_scene *es, const gbuffer *gb, const refe
     if (estimated != 0)
         return -1;
     int rc = 0;
-    if (mc_film_write_channels(&film, image_channel_data(out, "mask.A"), out) != 0 ||
+    if (mc_film_write_channels(&film, image_channel_data(out, CH_MASK), out) != 0 ||
         (req->quantity == QUANTITY_SPECULAR_OCCLUSION && specular_occlusion_write_ratios(out) != 0))
         rc = gt_error_set(e, scene_spec, "out of memory for the output image");
     mc_film_free(&film);

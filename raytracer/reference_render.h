@@ -42,14 +42,4 @@ const char *reference_quantity_name(reference_quantity q);
 int reference_render(const scene *s, const char *scene_spec, const camera *cam, const reference_request *req,
                      image *out, render_stats *stats, gt_error *e);
 
-/* Header keys shared by render and merge. */
-#define REF_ATTR_VERSION "gtlab.version"
-#define REF_ATTR_QUANTITY "gtlab.quantity"
-#define REF_ATTR_SCENE "gtlab.scene"
-#define REF_ATTR_CAMERA "gtlab.camera"
-#define REF_ATTR_SPP "gtlab.spp"
-#define REF_ATTR_SEED "gtlab.seed"
-#define REF_ATTR_BLOCKS "gtlab.sample_blocks" /* "seed:offset+count ..." */
-#define REF_ATTR_SETTINGS "gtlab.settings"    /* the integrator's options, as text */
-
 #endif

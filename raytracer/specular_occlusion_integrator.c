@@ -7,6 +7,7 @@
 #include "core/phong.h"
 #include "core/sky_environment.h"
 #include "scene/material_lookup.h"
+#include "core/reference_schema.h"
 
 enum { OCCLUDED, UNOCCLUDED, BLOCKED, D_OCCLUDED, D_UNOCCLUDED, D_BLOCKED, P_OCCLUDED, P_UNOCCLUDED, P_BLOCKED,
        SO_QUANTITY_COUNT, SPLIT_TRUTH = SO_QUANTITY_COUNT, SPLIT_ENV_D_OCCLUDED, SPLIT_ENV_D_UNOCCLUDED,
@@ -16,10 +17,10 @@ enum { OCCLUDED, UNOCCLUDED, BLOCKED, D_OCCLUDED, D_UNOCCLUDED, D_BLOCKED, P_OCC
  * (exponent 2), Phong-weighted ones in [0, 4 * 4/e] (exponent 3); times the
  * sky's radiance (at most 6): [0, 6] (exponent 3) and [0, 24] (exponent 5). */
 static const mc_quantity so_quantities[WITH_SPLIT_QUANTITY_COUNT] = {
-    {"specocc_occluded.V", 0},       {"specocc_unoccluded.V", 0},       {"specocc_blocked.V", 0},
-    {"specocc_d_occluded.V", 2},     {"specocc_d_unoccluded.V", 2},     {"specocc_d_blocked.V", 2},
-    {"specocc_phong_occluded.V", 3}, {"specocc_phong_unoccluded.V", 3}, {"specocc_phong_blocked.V", 3},
-    {"split_truth.V", 3},            {"split_env_d_occluded.V", 5},     {"split_env_d_unoccluded.V", 5}};
+    {CH_SPECOCC_OCCLUDED, 0},       {CH_SPECOCC_UNOCCLUDED, 0},       {CH_SPECOCC_BLOCKED, 0},
+    {CH_SPECOCC_D_OCCLUDED, 2},     {CH_SPECOCC_D_UNOCCLUDED, 2},     {CH_SPECOCC_D_BLOCKED, 2},
+    {CH_SPECOCC_PHONG_OCCLUDED, 3}, {CH_SPECOCC_PHONG_UNOCCLUDED, 3}, {CH_SPECOCC_PHONG_BLOCKED, 3},
+    {CH_SPLIT_TRUTH, 3},            {CH_SPLIT_ENV_D_OCCLUDED, 5},     {CH_SPLIT_ENV_D_UNOCCLUDED, 5}};
 
 /* The view direction in the shading frame, never below its horizon. */
 static vec3 local_view(const pixel_context *px, vec3 camera_position)
@@ -102,20 +103,21 @@ integrator specular_occlusion_integrator(const embree_scene *es, const specular_
 static int write_ratio(image *img, const char *prefix, const char *out_name)
 {
     char name[IMAGE_NAME_MAX];
-    const float *mask = image_channel_data(img, "mask.A");
+    const float *mask = image_channel_data(img, CH_MASK);
     const float *mean[3], *se[3];
-    static const char *const parts[3] = {"occluded", "unoccluded", "blocked"};
+    static const char *const parts[3] = {CH_SPECOCC_PART_OCCLUDED, CH_SPECOCC_PART_UNOCCLUDED,
+                                         CH_SPECOCC_PART_BLOCKED};
     for (int i = 0; i < 3; ++i) {
-        snprintf(name, sizeof name, "%s_%s.V", prefix, parts[i]);
+        snprintf(name, sizeof name, CH_SPECOCC_PART_FMT, prefix, parts[i]);
         mean[i] = image_channel_data(img, name);
-        snprintf(name, sizeof name, "%s_%s.V.stderr", prefix, parts[i]);
-        se[i] = image_channel_data(img, name);
+        se[i] = schema_stderr_data(img, name);
     }
     if (!mean[0] || !mean[1])
         return -1;
     int with_stderr = se[0] && se[1] && se[2];
     float *ratio = image_add_channel(img, out_name), *ratio_se = NULL;
-    snprintf(name, sizeof name, "%s.stderr", out_name);
+    if (schema_channel_suffixed(out_name, CH_SUFFIX_STDERR, name) != 0)
+        return -1;
     if (!ratio || (with_stderr && !(ratio_se = image_add_channel(img, name))))
         return -1;
     for (size_t p = 0; p < image_pixel_count(img); ++p) {
@@ -139,15 +141,15 @@ static int write_ratio(image *img, const char *prefix, const char *out_name)
  *   three = V_s^D E \int f_r cos. */
 static int write_splits(image *img)
 {
-    const float *mask = image_channel_data(img, "mask.A");
-    const float *env_occluded = image_channel_data(img, "split_env_d_occluded.V");
-    const float *env_unoccluded = image_channel_data(img, "split_env_d_unoccluded.V");
-    const float *d_occluded = image_channel_data(img, "specocc_d_occluded.V");
-    const float *d_unoccluded = image_channel_data(img, "specocc_d_unoccluded.V");
-    const float *albedo = image_channel_data(img, "specocc_unoccluded.V");
+    const float *mask = image_channel_data(img, CH_MASK);
+    const float *env_occluded = image_channel_data(img, CH_SPLIT_ENV_D_OCCLUDED);
+    const float *env_unoccluded = image_channel_data(img, CH_SPLIT_ENV_D_UNOCCLUDED);
+    const float *d_occluded = image_channel_data(img, CH_SPECOCC_D_OCCLUDED);
+    const float *d_unoccluded = image_channel_data(img, CH_SPECOCC_D_UNOCCLUDED);
+    const float *albedo = image_channel_data(img, CH_SPECOCC_UNOCCLUDED);
     if (!env_occluded || !env_unoccluded)
         return 0; /* a white-dome render */
-    float *two = image_add_channel(img, "split_two.V"), *three = image_add_channel(img, "split_three.V");
+    float *two = image_add_channel(img, CH_SPLIT_TWO), *three = image_add_channel(img, CH_SPLIT_THREE);
     if (!two || !three || !d_occluded || !d_unoccluded || !albedo)
         return -1;
     for (size_t p = 0; p < image_pixel_count(img); ++p) {
@@ -161,6 +163,6 @@ static int write_splits(image *img)
 
 int specular_occlusion_write_ratios(image *img)
 {
-    return write_ratio(img, "specocc", "specocc.V") | write_ratio(img, "specocc_d", "specocc_d.V") |
-           write_ratio(img, "specocc_phong", "specocc_phong.V") | write_splits(img);
+    return write_ratio(img, CH_SPECOCC_PREFIX, CH_SPECOCC) | write_ratio(img, CH_SPECOCC_D_PREFIX, CH_SPECOCC_D) |
+           write_ratio(img, CH_SPECOCC_PHONG_PREFIX, CH_SPECOCC_PHONG) | write_splits(img);
 }

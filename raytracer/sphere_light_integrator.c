@@ -8,6 +8,7 @@
 #include "core/ggx.h"
 #include "raytracer/sphere_light_reference.h"
 #include "scene/material_lookup.h"
+#include "core/reference_schema.h"
 
 int sphere_light_plan_init(sphere_light_plan *plan, const sphere_light_settings *light, const scene *s, vec3 eye,
                            gt_error *e)
@@ -30,7 +31,7 @@ int sphere_light_plan_init(sphere_light_plan *plan, const sphere_light_settings 
     float d = v3_length(v3_sub(nearest, light->position));
     double sin2 = d > light->radius ? (double)light->radius * light->radius / ((double)d * d) : 1.0;
     int exponent = (int)ceil(log2(4.0 * M_PI * sin2 * light->radiance));
-    const char *names[3] = {"sphere.R", "sphere.G", "sphere.B"};
+    const char *names[3] = {CH_SPHERE_R, CH_SPHERE_G, CH_SPHERE_B};
     for (int c = 0; c < 3; ++c) {
         snprintf(plan->quantities[c].name, sizeof plan->quantities[c].name, "%s", names[c]);
         plan->quantities[c].scale_exponent = exponent;

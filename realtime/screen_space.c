@@ -5,10 +5,11 @@
 
 #include "core/heightfield_model.h"
 #include "realtime/gtao_denoiser.h"
+#include "core/reference_schema.h"
 
 int ss_gbuffer_from_image(const image *img, const char *what, ss_camera camera, ss_gbuffer *g, gt_error *e)
 {
-    static const char *const names[5] = {"depth.Z", "N.X", "N.Y", "N.Z", "mask.A"};
+    static const char *const names[5] = {CH_DEPTH, CH_N_X, CH_N_Y, CH_N_Z, CH_MASK};
     const float *planes[5];
     for (int c = 0; c < 5; ++c)
         if (!(planes[c] = image_channel_data(img, names[c])))

@@ -23,6 +23,7 @@
 #include "raytracer/reference_render.h"
 #include "tests/check.h"
 #include "tests/raytracer/closed_box.h"
+#include "core/reference_schema.h"
 
 /* ---- Rendering helpers ------------------------------------------------------------- */
 
@@ -505,15 +506,15 @@ static void test_determinism_and_merge(void)
                                            "multibounce.R.stderr", "multibounce.B.stderr", "ao.V.stderr"};
     for (size_t c = 0; c < sizeof compared / sizeof compared[0]; ++c)
         CHECK_MSG(channels_identical(&one, compared[c], &merged, compared[c]), "merged %s", compared[c]);
-    CHECK(strcmp(image_get_attribute(&merged, MULTIBOUNCE_ATTR_ALBEDOS), "scene") == 0);
-    CHECK(strcmp(image_get_attribute(&merged, MULTIBOUNCE_ATTR_BOUNCES), "inf") == 0);
+    CHECK(strcmp(image_get_attribute(&merged, ATTR_ALBEDOS), "scene") == 0);
+    CHECK(strcmp(image_get_attribute(&merged, ATTR_BOUNCES), "inf") == 0);
     image_free(&merged);
 
     /* A block rendered with other settings is not part of the same render. */
     image other = render(&s, &cam, scene_albedo(4), (sampling){32, 32, 13, 2});
     image parts[2] = {halves[0], other};
     CHECK(reference_merge(parts, names, 2, &merged, &e) != 0);
-    CHECK_MSG(strstr(e.message, REF_ATTR_SETTINGS) != NULL, "unexpected refusal: %s", e.message);
+    CHECK_MSG(strstr(e.message, ATTR_SETTINGS) != NULL, "unexpected refusal: %s", e.message);
 
     image_free(&other);
     for (int h = 0; h < 2; ++h)

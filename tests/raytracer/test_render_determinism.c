@@ -9,6 +9,7 @@
 #include "raytracer/reference_merge.h"
 #include "raytracer/reference_render.h"
 #include "tests/check.h"
+#include "core/reference_schema.h"
 
 static scene test_scene;
 static camera test_camera;
@@ -70,7 +71,7 @@ static void test_merge(void)
         CHECK_MSG(channels_identical(&full, &merged, quantities[q]), "%s", quantities[q]);
         CHECK_MSG(channels_identical(&full, &merged, err_name), "%s", err_name);
     }
-    CHECK(strcmp(image_get_attribute(&merged, REF_ATTR_SPP), "64") == 0);
+    CHECK(strcmp(image_get_attribute(&merged, ATTR_SPP), "64") == 0);
 
     /* Through files: write the halves, read them back, merge again. */
     image reread[2];

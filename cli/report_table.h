@@ -1,0 +1,53 @@
+/* A study's rows rendered from one description of their columns: the same
+ * field of the same struct becomes a cell of the report's table (Markdown and
+ * HTML, printed with the column's format) and a member of summary.json (the
+ * full double), so no figure is written twice by hand.
+ *
+ *   static const report_column columns[] = {
+ *       REPORT_TEXT("scene", "scene", ao_reference_row, scene),
+ *       REPORT_REAL("mean stderr", "mean_stderr_ao", "%.2e", ao_reference_row, mean_stderr),
+ *   };
+ *   report_rows(doc, json_list, columns, 2, result.rows, sizeof result.rows[0], result.count);
+ *
+ * A column with no header is JSON only; one with no key is table only (its
+ * cell may be drawn by a function from several fields). */
+#ifndef GTLAB_CLI_REPORT_TABLE_H
+#define GTLAB_CLI_REPORT_TABLE_H
+
+#include <cjson/cJSON.h>
+#include <stddef.h>
+
+#include "cli/report_writer.h"
+
+typedef enum {
+    REPORT_COLUMN_TEXT,   /* char array */
+    REPORT_COLUMN_STRING, /* const char * */
+    REPORT_COLUMN_INT,    /* int */
+    REPORT_COLUMN_COUNT,  /* uint64_t */
+    REPORT_COLUMN_REAL,   /* double */
+    REPORT_COLUMN_CELL    /* table only: drawn by `cell` */
+} report_column_kind;
+
+typedef struct {
+    const char *header; /* table heading, or NULL: JSON only */
+    const char *key;    /* summary.json member, or NULL: table only */
+    report_column_kind kind;
+    size_t offset;      /* of the field in the row struct */
+    const char *format; /* of the table cell (REPORT_COLUMN_REAL; default "%g") */
+    void (*cell)(const void *row, char *text, size_t size); /* REPORT_COLUMN_CELL */
+} report_column;
+
+#define REPORT_TEXT(header, key, type, field) {header, key, REPORT_COLUMN_TEXT, offsetof(type, field), NULL, NULL}
+#define REPORT_STRING(header, key, type, field) {header, key, REPORT_COLUMN_STRING, offsetof(type, field), NULL, NULL}
+#define REPORT_INT(header, key, type, field) {header, key, REPORT_COLUMN_INT, offsetof(type, field), NULL, NULL}
+#define REPORT_COUNT(header, key, type, field) {header, key, REPORT_COLUMN_COUNT, offsetof(type, field), NULL, NULL}
+#define REPORT_REAL(header, key, format, type, field) \
+    {header, key, REPORT_COLUMN_REAL, offsetof(type, field), format, NULL}
+#define REPORT_CELL(header, function) {header, NULL, REPORT_COLUMN_CELL, 0, NULL, function}
+
+/* The table of `count` rows (each `row_size` bytes from `rows`) in the
+ * report, and one object per row appended to json_list (either may be NULL). */
+void report_rows(report *doc, cJSON *json_list, const report_column *columns, int column_count, const void *rows,
+                 size_t row_size, int count);
+
+#endif

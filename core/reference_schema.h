@@ -1,0 +1,152 @@
+/* The format contract of every EXR gtlab writes or reads, in one place
+ * (docs/design.md, "EXR channels" and "Header attributes"): the channel
+ * names, the suffixes of the Monte Carlo accumulators, and the header
+ * attributes with their types. No other file spells a channel or an
+ * attribute name: they name these macros, and read or write typed header
+ * values through the helpers below.
+ *
+ * Channels are "layer.channel" (OpenEXR's layer convention, so viewers group
+ * them): a scalar quantity is "<layer>.V", a vector one "<layer>.X/Y/Z", a
+ * colour "<layer>.R/G/B". Every Monte Carlo quantity Q also has "Q.stderr"
+ * (its standard error) and the exact accumulators "Q.sum", "Q.sum_lo", ...
+ * (core/mc_film.h) from which partial renders merge bit for bit.
+ *
+ * Header attributes are EXR string attributes (OpenEXR's string type keeps
+ * every viewer able to show them); numbers are written as text by the typed
+ * helpers ("%.9g" for doubles, which float32 values survive exactly) and read
+ * back strictly (the whole string must be a number). */
+#ifndef GTLAB_CORE_REFERENCE_SCHEMA_H
+#define GTLAB_CORE_REFERENCE_SCHEMA_H
+
+#include "core/error.h"
+#include "core/image.h"
+
+/* ---- The G-buffer: the surface seen through each pixel centre ---------- */
+#define CH_DEPTH "depth.Z"   /* distance along the primary ray */
+#define CH_N_X "N.X"         /* shading normal, world space */
+#define CH_N_Y "N.Y"
+#define CH_N_Z "N.Z"
+#define CH_NG_X "Ng.X"       /* geometric normal */
+#define CH_NG_Y "Ng.Y"
+#define CH_NG_Z "Ng.Z"
+#define CH_P_X "P.X"         /* position, world space */
+#define CH_P_Y "P.Y"
+#define CH_P_Z "P.Z"
+#define CH_ALBEDO_R "albedo.R"
+#define CH_ALBEDO_G "albedo.G"
+#define CH_ALBEDO_B "albedo.B"
+#define CH_ROUGHNESS "roughness.Y" /* perceptual roughness */
+#define CH_MASK "mask.A"     /* 1 where the primary ray hit a surface */
+/* Initialisers of the vector channels' names, in X, Y, Z order. */
+#define CH_N_XYZ {CH_N_X, CH_N_Y, CH_N_Z}
+#define CH_NG_XYZ {CH_NG_X, CH_NG_Y, CH_NG_Z}
+#define CH_P_XYZ {CH_P_X, CH_P_Y, CH_P_Z}
+#define CH_ALBEDO_RGB {CH_ALBEDO_R, CH_ALBEDO_G, CH_ALBEDO_B}
+
+/* ---- Monte Carlo bookkeeping (core/mc_film.h) --------------------------- */
+#define CH_SPP "spp.N"           /* samples taken in the pixel */
+#define CH_SPP_EVEN "spp.Neven"  /* of which even-indexed (the noise-floor halves) */
+#define CH_LAYER_SPP "spp"       /* their layer */
+#define CH_SUFFIX_STDERR "stderr" /* "Q.stderr": standard error of Q's mean */
+#define CH_SUFFIX_SUM "sum"      /* exact accumulators: see core/mc_film.h */
+#define CH_SUFFIX_SUM_LO "sum_lo"
+#define CH_SUFFIX_SUMSQ "sumsq"
+#define CH_SUFFIX_SUMSQ_LO "sumsq_lo"
+#define CH_SUFFIX_SUMEVEN "sumeven"
+#define CH_SUFFIX_SUMEVEN_LO "sumeven_lo"
+
+/* ---- Ambient occlusion (render ao, heightfield-ao, approx gtao/hbao/vo) -- */
+#define CH_AO "ao.V"               /* cosine-weighted visibility V_d */
+#define CH_AO_UNIFORM "ao.Vuniform" /* uniformly weighted visibility */
+#define CH_AO_STDERR "ao.V.stderr"
+#define CH_BENT_X "bent.X"         /* bent normal (unit, world space) */
+#define CH_BENT_Y "bent.Y"
+#define CH_BENT_Z "bent.Z"
+#define CH_BENT_XYZ {CH_BENT_X, CH_BENT_Y, CH_BENT_Z}
+#define CH_LAYER_BENT "bent"
+
+/* ---- Multi-bounce diffuse (render multibounce) -------------------------- */
+#define CH_MULTIBOUNCE "multibounce.V" /* one albedo */
+#define CH_MULTIBOUNCE_R "multibounce.R" /* the scene's albedo, per colour */
+#define CH_MULTIBOUNCE_G "multibounce.G"
+#define CH_MULTIBOUNCE_B "multibounce.B"
+#define CH_MULTIBOUNCE_RGB {CH_MULTIBOUNCE_R, CH_MULTIBOUNCE_G, CH_MULTIBOUNCE_B}
+/* Several albedos: "multibounce_<albedo>.V", albedo as multibounce_albedos_text prints it. */
+#define CH_MULTIBOUNCE_ALBEDO_FMT "multibounce_%s.V"
+
+/* ---- Specular occlusion (render specular-occlusion, approx) ------------- */
+#define CH_SPECOCC "specocc.V"             /* GTSO's definition: f_r-weighted */
+#define CH_SPECOCC_D "specocc_d.V"         /* D-weighted (the talk's older one) */
+#define CH_SPECOCC_PHONG "specocc_phong.V" /* Phong-lobe weighted */
+/* Each definition's ratio is derived from three sums, "<prefix>_<part>.V". */
+#define CH_SPECOCC_PREFIX "specocc"
+#define CH_SPECOCC_D_PREFIX "specocc_d"
+#define CH_SPECOCC_PHONG_PREFIX "specocc_phong"
+#define CH_SPECOCC_PART_FMT "%s_%s.V"      /* prefix, part */
+#define CH_SPECOCC_PART_OCCLUDED "occluded"
+#define CH_SPECOCC_PART_UNOCCLUDED "unoccluded"
+#define CH_SPECOCC_PART_BLOCKED "blocked"
+#define CH_SPECOCC_OCCLUDED "specocc_occluded.V"
+#define CH_SPECOCC_UNOCCLUDED "specocc_unoccluded.V"
+#define CH_SPECOCC_BLOCKED "specocc_blocked.V"
+#define CH_SPECOCC_D_OCCLUDED "specocc_d_occluded.V"
+#define CH_SPECOCC_D_UNOCCLUDED "specocc_d_unoccluded.V"
+#define CH_SPECOCC_D_BLOCKED "specocc_d_blocked.V"
+#define CH_SPECOCC_PHONG_OCCLUDED "specocc_phong_occluded.V"
+#define CH_SPECOCC_PHONG_UNOCCLUDED "specocc_phong_unoccluded.V"
+#define CH_SPECOCC_PHONG_BLOCKED "specocc_phong_blocked.V"
+/* The GTSO talk's split integrals under the analytic sky (--environment sky). */
+#define CH_SPLIT_TRUTH "split_truth.V"
+#define CH_SPLIT_TWO "split_two.V"
+#define CH_SPLIT_THREE "split_three.V"
+#define CH_SPLIT_ENV_D_OCCLUDED "split_env_d_occluded.V"
+#define CH_SPLIT_ENV_D_UNOCCLUDED "split_env_d_unoccluded.V"
+
+/* ---- GGX sphere lights (render sphere-light) ---------------------------- */
+#define CH_SPHERE_R "sphere.R"
+#define CH_SPHERE_G "sphere.G"
+#define CH_SPHERE_B "sphere.B"
+#define CH_SPHERE_RGB {CH_SPHERE_R, CH_SPHERE_G, CH_SPHERE_B}
+
+/* ---- Lookup tables (gtlab lut) ------------------------------------------ */
+#define CH_LUT "lut.V"
+
+/* ---- Header attributes -------------------------------------------------- */
+/* text */
+#define ATTR_VERSION "gtlab.version"     /* the gtlab version that wrote the file */
+#define ATTR_QUANTITY "gtlab.quantity"   /* "ao", "gbuffer", ..., "approx" */
+#define ATTR_SCENE "gtlab.scene"         /* the scene spec ("builtin:boxes", a path) */
+#define ATTR_CAMERA "gtlab.camera"       /* the camera as JSON (scene/camera.h) */
+#define ATTR_NORMAL "gtlab.normal"       /* "shading" or "geometric" */
+#define ATTR_SETTINGS "gtlab.settings"   /* the integrator's options, for people to read */
+#define ATTR_BLOCKS "gtlab.sample_blocks" /* "seed:offset+count ..." */
+#define ATTR_ALBEDOS "gtlab.albedos"     /* multibounce: the albedo list */
+#define ATTR_BOUNCES "gtlab.bounces"     /* multibounce: bounce count or "inf" */
+#define ATTR_NORMALIZED "gtlab.normalized" /* "layer layer ...": vector layers written normalised */
+#define ATTR_EXPONENTS "gtlab.scale_exponents" /* "name:E ...": the film's exact-sum scales */
+#define ATTR_TECHNIQUE "gtlab.technique" /* approx output: the technique */
+#define ATTR_APPROX "gtlab.approx"       /* approx specular-occlusion: the variant's label */
+#define ATTR_LUT "gtlab.lut"             /* a LUT's axes and parametrisation */
+/* integer */
+#define ATTR_SPP "gtlab.spp"
+#define ATTR_SEED "gtlab.seed"
+/* real */
+#define ATTR_ROUGHNESS "gtlab.roughness" /* specular occlusion: the fixed roughness, absent: the materials' */
+
+/* Values of ATTR_QUANTITY written by other than a reference integrator. */
+#define QUANTITY_NAME_APPROX "approx"
+
+/* "<quantity>.<suffix>" into name (IMAGE_NAME_MAX); 0, or -1 if too long. */
+int schema_channel_suffixed(const char *quantity, const char *suffix, char name[IMAGE_NAME_MAX]);
+/* The standard-error channel of a quantity channel, or NULL when absent. */
+const float *schema_stderr_data(const image *img, const char *quantity);
+
+/* Typed header values. Setters return 0, or -1 when out of memory. */
+int schema_set_int(image *img, const char *key, long value);
+int schema_set_real(image *img, const char *key, double value);
+/* Getters return 1 and the value when the attribute is present and valid,
+ * 0 when absent, -1 (with e naming `what`) when present but not a number. */
+int schema_get_int(const image *img, const char *key, const char *what, long *value, gt_error *e);
+int schema_get_real(const image *img, const char *key, const char *what, double *value, gt_error *e);
+
+#endif

@@ -1,0 +1,25 @@
+/* What every study shares. A study is one technique's experiment as a
+ * function: it renders its references, runs its approximations and fits, and
+ * returns a plain results struct (studies/<technique>.h). It writes its data
+ * files (references, previews, error maps) under the output folder, and
+ * nothing else: no report, no JSON, no plot. cli/ renders the results into
+ * the report and summary.json; tests check the numbers without any prose. */
+#ifndef GTLAB_STUDIES_STUDY_H
+#define GTLAB_STUDIES_STUDY_H
+
+#include <stddef.h>
+
+#include "core/error.h"
+
+typedef enum { QUALITY_PREVIEW, QUALITY_PRODUCTION } study_quality;
+
+typedef struct {
+    const char *output_dir; /* everything a study writes goes below it */
+    study_quality quality;
+    int threads;            /* results do not depend on it */
+} study_context;
+
+/* "<output_dir>/<sub>" with the folder created. */
+int study_make_dir(const study_context *ctx, const char *sub, char *path, size_t size, gt_error *e);
+
+#endif
