@@ -47,13 +47,21 @@ static void table_row(report *doc, const report_column *columns, int column_coun
     report_table_row(doc, row_cells);
 }
 
-static void json_row(cJSON *list, const report_column *columns, int column_count, const void *row)
+static cJSON *json_row(const report_column *columns, int column_count, const void *row)
 {
     cJSON *o = cJSON_CreateObject();
     for (int i = 0; i < column_count; ++i)
         if (columns[i].key)
             add_member(o, &columns[i], row);
-    cJSON_AddItemToArray(list, o);
+    return o;
+}
+
+cJSON *report_object(cJSON *parent, const char *key, const report_column *columns, int column_count,
+                     const void *row)
+{
+    cJSON *o = json_row(columns, column_count, row);
+    cJSON_AddItemToObject(parent, key, o);
+    return o;
 }
 
 static void table_begin(report *doc, const report_column *columns, int column_count)
@@ -76,7 +84,7 @@ void report_rows(report *doc, cJSON *json_list, const report_column *columns, in
         if (doc)
             table_row(doc, columns, column_count, row);
         if (json_list)
-            json_row(json_list, columns, column_count, row);
+            cJSON_AddItemToArray(json_list, json_row(columns, column_count, row));
     }
     if (doc)
         report_table_end(doc);

@@ -50,4 +50,10 @@ typedef struct {
 void report_rows(report *doc, cJSON *json_list, const report_column *columns, int column_count, const void *rows,
                  size_t row_size, int count);
 
+/* One struct's fields as members of an object `key` added to parent (JSON
+ * only: for figures that are not a table, e.g. a fit's coefficients).
+ * Returns the object. */
+cJSON *report_object(cJSON *parent, const char *key, const report_column *columns, int column_count,
+                     const void *row);
+
 #endif
