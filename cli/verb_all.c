@@ -11,23 +11,15 @@
 
 #include "cli/all_stages.h"
 #include "cli/cli.h"
+#include "cli/technique.h"
 #include "core/atomic_file.h"
 #include "core/progress.h"
 
-typedef struct {
-    const char *key, *name;
-    int (*run)(all_context *ctx, gt_error *e);
-} all_stage;
+enum { STAGE_MAX = 64 };
 
-enum { STAGE_COUNT = 6 };
-static const all_stage stages[STAGE_COUNT] = {
-    {"ao", "AO references", all_stage_ao_references},
-    {"gtao", "GTAO validation", all_stage_gtao},
-    {"multibounce", "multi-bounce refit", all_stage_multibounce},
-    {"specular-occlusion", "specular occlusion", all_stage_specular_occlusion},
-    {"sphere-light", "GGX sphere lights", all_stage_sphere_light},
-    {"throughput", "ray throughput", all_stage_ray_throughput},
-};
+/* The stages of the registered techniques, in the report's order. */
+static const all_stage *stages[STAGE_MAX];
+static int stage_count;
 
 static void print_help(void)
 {
@@ -38,32 +30,34 @@ static void print_help(void)
            "  DIR/summary.json                 every figure of the report, machine-readable\n"
            "  DIR/ao/*.exr                     the references (with their .camera.json)\n"
            "Stages:\n");
-    for (int i = 0; i < STAGE_COUNT; ++i)
-        printf("  %-20s %s\n", stages[i].key, stages[i].name);
+    for (int i = 0; i < stage_count; ++i)
+        printf("  %-20s %s%s%s\n", stages[i]->key, stages[i]->title, stages[i]->needs ? ", reads the output of " : "",
+               stages[i]->needs ? stages[i]->needs : "");
     printf("\n"
            "  --quality Q   preview (default: a few minutes on 2 cores) or production\n"
            "  -o, --output DIR   output folder (default results)\n"
            "  --threads T   worker threads (default: all cores; results do not depend on it)\n"
            "  --stages LIST comma-separated stage names from the list above (default: all);\n"
-           "                the report then holds those sections only. gtao reads DIR/ao/,\n"
-           "                which the ao stage writes (in this run or an earlier one)\n");
+           "                the report then holds those sections only. A stage that reads\n"
+           "                another's output uses it from this run, or from an earlier run\n"
+           "                into the same DIR\n");
 }
 
 /* Marks the stages named in the comma-separated list; -1 after an error (printed). */
-static int select_stages(const char *list, int selected[STAGE_COUNT])
+static int select_stages(const char *list, int selected[STAGE_MAX])
 {
     char copy[512];
     snprintf(copy, sizeof copy, "%s", list);
-    memset(selected, 0, sizeof(int) * STAGE_COUNT);
+    memset(selected, 0, sizeof(int) * STAGE_MAX);
     for (char *tok = strtok(copy, ","); tok; tok = strtok(NULL, ",")) {
         int found = 0;
-        for (int i = 0; i < STAGE_COUNT; ++i)
-            if (strcmp(tok, stages[i].key) == 0)
+        for (int i = 0; i < stage_count; ++i)
+            if (strcmp(tok, stages[i]->key) == 0)
                 selected[i] = found = 1;
         if (!found)
             return cli_failf("--stages", "unknown stage '%s' (see 'gtlab all --help')", tok), -1;
     }
-    for (int i = 0; i < STAGE_COUNT; ++i)
+    for (int i = 0; i < stage_count; ++i)
         if (selected[i])
             return 0;
     return cli_failf("--stages", "no stage named in '%s'", list), -1;
@@ -81,7 +75,8 @@ static int write_summary(const all_context *ctx, gt_error *e)
     return rc;
 }
 
-int verb_all(int argc, char **argv)
+/* Parses the options into ctx and selected; 1 after --help, -1 after an error (printed). */
+static int parse_options(int argc, char **argv, all_context *ctx, int selected[STAGE_MAX], const char **stage_list)
 {
     static const struct option longs[] = {{"quality", required_argument, 0, 'q'},
                                           {"output", required_argument, 0, 'o'},
@@ -89,37 +84,114 @@ int verb_all(int argc, char **argv)
                                           {"stages", required_argument, 0, 's'},
                                           {"help", no_argument, 0, 'h'},
                                           {0, 0, 0, 0}};
-    all_context ctx = {{"results", QUALITY_PREVIEW, omp_get_num_procs()}, NULL, NULL};
     long threads;
-    int c, selected[STAGE_COUNT] = {1, 1, 1, 1, 1, 1};
-    const char *stage_list = NULL;
+    int c;
     while ((c = getopt_long(argc, argv, "o:h", longs, NULL)) != -1) {
         switch (c) {
         case 'q':
             if (strcmp(optarg, "preview") == 0)
-                ctx.study.quality = QUALITY_PREVIEW;
+                ctx->study.quality = QUALITY_PREVIEW;
             else if (strcmp(optarg, "production") == 0)
-                ctx.study.quality = QUALITY_PRODUCTION;
+                ctx->study.quality = QUALITY_PRODUCTION;
             else
-                return cli_failf("--quality", "'%s' is neither preview nor production", optarg);
+                return cli_failf("--quality", "'%s' is neither preview nor production", optarg), -1;
             break;
-        case 'o': ctx.study.output_dir = optarg; break;
+        case 'o': ctx->study.output_dir = optarg; break;
         case 't':
             if (cli_parse_int("--threads", optarg, 1, 1024, &threads))
-                return EXIT_USER_ERROR;
-            ctx.study.threads = (int)threads;
+                return -1;
+            ctx->study.threads = (int)threads;
             break;
         case 's':
             if (select_stages(optarg, selected) != 0)
-                return EXIT_USER_ERROR;
-            stage_list = optarg;
+                return -1;
+            *stage_list = optarg;
             break;
-        case 'h': print_help(); return EXIT_OK;
-        default: return cli_usage_error("all");
+        case 'h': print_help(); return 1;
+        default: return cli_usage_error("all"), -1;
         }
     }
     if (optind < argc)
-        return cli_failf("all", "unexpected argument '%s'", argv[optind]);
+        return cli_failf("all", "unexpected argument '%s'", argv[optind]), -1;
+    return 0;
+}
+
+static int stage_index(const char *key)
+{
+    for (int i = 0; i < stage_count; ++i)
+        if (strcmp(stages[i]->key, key) == 0)
+            return i;
+    return -1;
+}
+
+/* Every selected stage's input is made earlier in this run or was made by an
+ * earlier run into the same folder: checked before any work. */
+static int check_inputs(const all_context *ctx, const int selected[STAGE_MAX])
+{
+    for (int i = 0; i < stage_count; ++i) {
+        if (!selected[i] || !stages[i]->needs)
+            continue;
+        int k = stage_index(stages[i]->needs);
+        if (k < 0 || k >= i || !stages[k]->writes)
+            return cli_failf("all", "stage %s reads stage %s, which is not registered before it", stages[i]->key,
+                             stages[i]->needs), -1;
+        char path[4096];
+        struct stat st;
+        snprintf(path, sizeof path, "%s/%s", ctx->study.output_dir, stages[k]->writes);
+        if (!selected[k] && (stat(path, &st) != 0 || !S_ISDIR(st.st_mode)))
+            return cli_failf(path, "stage %s reads what stage %s writes here: add %s to --stages", stages[i]->key,
+                             stages[k]->key, stages[k]->key), -1;
+    }
+    return 0;
+}
+
+/* The introduction: how the report was made. */
+static void introduce(all_context *ctx, const char *stage_list)
+{
+    const char *quality = ctx->study.quality == QUALITY_PREVIEW ? "preview" : "production";
+    cJSON_AddStringToObject(ctx->summary, "gtlab_version", GTLAB_VERSION);
+    cJSON_AddStringToObject(ctx->summary, "quality", quality);
+    char stage_option[512] = "";
+    if (stage_list)
+        snprintf(stage_option, sizeof stage_option, " --stages %s", stage_list);
+    report_paragraph(ctx->doc,
+                     "Made by gtlab %s with 'gtlab all --quality %s%s'. Every figure below comes from that run; "
+                     "rerunning the command reproduces the images bit for bit (timings vary with the machine). "
+                     "Machine-readable figures: summary.json.",
+                     GTLAB_VERSION, quality, stage_option);
+    report_findings_here(ctx->doc);
+}
+
+static int run_stages(all_context *ctx, const int selected[STAGE_MAX])
+{
+    gt_error e;
+    for (int i = 0; i < stage_count; ++i) {
+        if (!selected[i])
+            continue;
+        fprintf(stderr, "gtlab all: %s\n", stages[i]->title);
+        double t0 = seconds_now();
+        if (stages[i]->run(ctx, &e) != 0)
+            return cli_fail(&e);
+        fprintf(stderr, "gtlab all: %s done in %.1f s\n", stages[i]->title, seconds_now() - t0);
+    }
+    if (report_write(ctx->doc, ctx->study.output_dir, &e) != 0 || write_summary(ctx, &e) != 0)
+        return cli_fail(&e);
+    return EXIT_OK;
+}
+
+int verb_all(int argc, char **argv)
+{
+    stage_count = (int)technique_stages(stages, STAGE_MAX);
+    all_context ctx = {{"results", QUALITY_PREVIEW, omp_get_num_procs()}, NULL, NULL};
+    int selected[STAGE_MAX];
+    for (int i = 0; i < STAGE_MAX; ++i)
+        selected[i] = 1;
+    const char *stage_list = NULL;
+    int parsed = parse_options(argc, argv, &ctx, selected, &stage_list);
+    if (parsed != 0)
+        return parsed > 0 ? EXIT_OK : EXIT_USER_ERROR;
+    if (check_inputs(&ctx, selected) != 0)
+        return EXIT_USER_ERROR;
     gt_error e;
     if (mkdir(ctx.study.output_dir, 0755) != 0 && errno != EEXIST)
         return cli_failf(ctx.study.output_dir, "cannot create folder: %s", strerror(errno));
@@ -127,36 +199,12 @@ int verb_all(int argc, char **argv)
     snprintf(probe, sizeof probe, "%s/report.md", ctx.study.output_dir);
     if (atomic_file_check_writable(probe, &e) != 0)
         return cli_fail(&e);
-
     report doc;
     report_init(&doc, "gtlab accuracy report");
     ctx.doc = &doc;
     ctx.summary = cJSON_CreateObject();
-    const char *quality = ctx.study.quality == QUALITY_PREVIEW ? "preview" : "production";
-    cJSON_AddStringToObject(ctx.summary, "gtlab_version", GTLAB_VERSION);
-    cJSON_AddStringToObject(ctx.summary, "quality", quality);
-    char stage_option[512] = "";
-    if (stage_list)
-        snprintf(stage_option, sizeof stage_option, " --stages %s", stage_list);
-    report_paragraph(&doc,
-                     "Made by gtlab %s with 'gtlab all --quality %s%s'. Every figure below comes from that run; "
-                     "rerunning the command reproduces the images bit for bit (timings vary with the machine). "
-                     "Machine-readable figures: summary.json.",
-                     GTLAB_VERSION, quality, stage_option);
-    report_findings_here(&doc);
-    int status = EXIT_OK;
-    for (int i = 0; i < STAGE_COUNT && status == EXIT_OK; ++i) {
-        if (!selected[i])
-            continue;
-        fprintf(stderr, "gtlab all: %s\n", stages[i].name);
-        double t0 = seconds_now();
-        if (stages[i].run(&ctx, &e) != 0)
-            status = cli_fail(&e);
-        else
-            fprintf(stderr, "gtlab all: %s done in %.1f s\n", stages[i].name, seconds_now() - t0);
-    }
-    if (status == EXIT_OK && (report_write(&doc, ctx.study.output_dir, &e) != 0 || write_summary(&ctx, &e) != 0))
-        status = cli_fail(&e);
+    introduce(&ctx, stage_list);
+    int status = run_stages(&ctx, selected);
     if (status == EXIT_OK)
         printf("report: %s/report.html and %s/report.md\n", ctx.study.output_dir, ctx.study.output_dir);
     report_free(&doc);

@@ -7,18 +7,8 @@
 
 #include "cli/bench_specular_occlusion.h"
 #include "cli/cli.h"
+#include "cli/technique.h"
 #include "raytracer/ray_throughput.h"
-
-/* Sub-benchmarks with their own options, in their own files. */
-static const struct {
-    const char *name;
-    int (*run)(int argc, char **argv);
-} sub_benchmarks[] = {
-    {"multibounce", bench_multibounce},
-    {"fit", bench_fit},
-    {"sphere-light", bench_sphere_light},
-    {"gtao", bench_gtao},
-};
 
 static void print_help(void)
 {
@@ -69,10 +59,13 @@ int verb_bench(int argc, char **argv)
         {"height", required_argument, 0, 'H'},  {"threads", required_argument, 0, 't'},
         {"repeats", required_argument, 0, 'r'}, {"help", no_argument, 0, 'h'},
         {0, 0, 0, 0}};
-    for (size_t i = 0; argc >= 2 && i < sizeof sub_benchmarks / sizeof sub_benchmarks[0]; ++i)
-        if (strcmp(argv[1], sub_benchmarks[i].name) == 0) {
+    /* The techniques' own benchmarks, each with its options (cli/techniques.c). */
+    cli_subcommand registered[32];
+    size_t count = technique_subcommands(VERB_BENCH, registered, 32);
+    for (size_t i = 0; argc >= 2 && i < count; ++i)
+        if (strcmp(argv[1], registered[i].name) == 0) {
             cli_reset_getopt();
-            return sub_benchmarks[i].run(argc - 1, argv + 1);
+            return registered[i].run(argc - 1, argv + 1);
         }
     const char *scene_spec = "builtin:menger";
     long width = 256, height = 256, threads = omp_get_num_procs(), repeats = 3;

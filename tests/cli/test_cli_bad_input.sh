@@ -110,6 +110,8 @@ expect_error merge-gbuffer "g.exr: no Monte Carlo accumulator" "$work/merged.exr
 # one stage gives a report with that section only.
 expect_error all-unknown-stage "--stages: unknown stage 'fog'" "" -- all --stages ao,fog -o "$work/all"
 expect_error all-no-stage "--stages: no stage named in ','" "" -- all --stages , -o "$work/all"
+# A stage whose input another stage makes is refused when that input is absent.
+expect_error all-missing-input "stage gtao reads what stage ao writes" "$work/all_empty/report.md" -- all --stages gtao -o "$work/all_empty"
 expect_ok all-one-stage all --stages throughput -o "$work/all"
 python3 - "$work/all" <<'PY' && pass || fail "all --stages throughput: report or summary.json holds other stages"
 import json, sys

@@ -1,0 +1,48 @@
+/* A technique as the command line sees it: the subcommands it adds to the
+ * verbs (`gtlab approx NAME`, `fit`, `lut`, `check`, `bench`) and its
+ * sections of `gtlab all`. Each technique defines one `technique` in
+ * cli/technique_<name>.c; cli/techniques.c lists them, one line each, and
+ * the verbs, their --help and `gtlab all` are built from that list, so adding
+ * a technique edits no verb (docs/adding-a-technique.md). The reference
+ * quantities of `gtlab render` have their own registry one layer down
+ * (raytracer/), since the raytracer must know them without the CLI. */
+#ifndef GTLAB_CLI_TECHNIQUE_H
+#define GTLAB_CLI_TECHNIQUE_H
+
+#include <stddef.h>
+
+#include "cli/all_stages.h"
+#include "cli/subcommands.h"
+
+typedef enum { VERB_APPROX, VERB_FIT, VERB_LUT, VERB_CHECK, VERB_BENCH, VERB_KIND_COUNT } technique_verb;
+
+/* A section of `gtlab all`. */
+typedef struct {
+    const char *key;   /* --stages name */
+    const char *title; /* progress line */
+    int (*run)(all_context *ctx, gt_error *e);
+    const char *writes; /* the folder below the output folder other stages read, or NULL */
+    const char *needs;  /* the key of a stage whose `writes` folder this one reads, or NULL */
+} all_stage;
+
+typedef struct {
+    const char *name;
+    /* Per verb, a list ended by an entry with a NULL name; NULL: none. */
+    const cli_subcommand *subcommands[VERB_KIND_COUNT];
+    const all_stage *stages; /* ended by an entry with a NULL key; NULL: none */
+} technique;
+
+/* The registered techniques, in the report's order, ended by NULL. */
+extern const technique *const gtlab_techniques[];
+
+/* Every technique's subcommands of one verb, in registry order, into out
+ * (at most capacity); returns their number. */
+size_t technique_subcommands(technique_verb verb, cli_subcommand *out, size_t capacity);
+/* Every stage of `gtlab all`, in registry order; returns their number. */
+size_t technique_stages(const all_stage **out, size_t capacity);
+
+/* Runs `gtlab <verb> NAME ...` over the registry's subcommands of that verb. */
+int technique_run_verb(technique_verb verb, const char *name, const char *usage, const char *kind, const char *noun,
+                       int argc, char **argv);
+
+#endif
