@@ -53,8 +53,9 @@ static void add_figures(report *doc, const ao_references_result *r)
 static void render_section(all_context *ctx, const ao_references_result *r)
 {
     char stop[96] = "";
-    if (r->target_stderr > 0)
-        snprintf(stop, sizeof stop, ", stopping at a standard error of %g", r->target_stderr);
+    const ao_references_request *rq = &r->request;
+    if (rq->target_stderr > 0)
+        snprintf(stop, sizeof stop, ", stopping at a standard error of %g", rq->target_stderr);
     report_heading(ctx->doc, 2, "Ambient occlusion and bent-normal references");
     report_paragraph(ctx->doc,
                      "Cosine-weighted AO V_d = (1/pi) integral of V(w) (n.w) over the hemisphere, uniform AO and "
@@ -62,7 +63,7 @@ static void render_section(all_context *ctx, const ao_references_result *r)
                      "Owen-scrambled Sobol' samples (%d per pixel at most%s; seed %u). Standard errors are per "
                      "pixel, from the samples themselves. The noise floor is the DSSIM between the AO of the even "
                      "and of the odd samples: no approximation can be scored more finely than that.",
-                     r->spp, stop, (unsigned)r->seed);
+                     rq->spp, stop, (unsigned)rq->seed);
     report_rows(ctx->doc, cJSON_AddArrayToObject(ctx->summary, "ao_references"), columns,
                 (int)(sizeof columns / sizeof columns[0]), r->rows, sizeof r->rows[0], r->count);
     add_figures(ctx->doc, r);
@@ -71,7 +72,8 @@ static void render_section(all_context *ctx, const ao_references_result *r)
 int all_stage_ao_references(all_context *ctx, gt_error *e)
 {
     static ao_references_result r;
-    if (ao_references_study(&ctx->study, &r, e) != 0)
+    ao_references_request rq = ao_references_default_request(ctx->study.quality);
+    if (ao_references_study(&ctx->study, &rq, &r, e) != 0)
         return -1;
     render_section(ctx, &r);
     return 0;

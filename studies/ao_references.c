@@ -121,24 +121,30 @@ static int study_scene(const builtin_scene *b, const reference_request *req, int
     return rc;
 }
 
-int ao_references_study(const study_context *ctx, ao_references_result *out, gt_error *e)
+ao_references_request ao_references_default_request(study_quality quality)
 {
-    int preview = ctx->quality == QUALITY_PREVIEW;
+    int preview = quality == QUALITY_PREVIEW;
+    ao_references_request rq = {preview ? 256 : 512, preview ? 256 : 4096, preview ? 0.0 : 0.002, 1, 0};
+    return rq;
+}
+
+int ao_references_study(const study_context *ctx, const ao_references_request *rq, ao_references_result *out,
+                        gt_error *e)
+{
     memset(out, 0, sizeof *out);
-    out->size = preview ? 256 : 512;
-    out->spp = preview ? 256 : 4096;
-    out->target_stderr = preview ? 0.0 : 0.002;
-    out->seed = 1;
+    out->request = *rq;
     reference_request req = {.quantity = QUANTITY_AO,
-                             .sampling = {.spp = out->spp, .seed = out->seed, .target_stderr = out->target_stderr,
+                             .sampling = {.spp = rq->spp, .seed = rq->seed, .target_stderr = rq->target_stderr,
                                           .threads = ctx->threads},
                              .normals = NORMAL_SHADING, .max_distance = INFINITY};
     char refs[2048], figures[2048];
     if (study_make_dir(ctx, AO_REFERENCES_DIR, refs, sizeof refs, e) != 0 ||
         study_make_dir(ctx, "figures", figures, sizeof figures, e) != 0)
         return -1;
-    for (int i = 0; i < builtin_scene_count() && i < AO_REFERENCES_MAX_SCENES; ++i, ++out->count)
-        if (study_scene(builtin_scene_at(i), &req, out->size, refs, figures, &out->rows[i], e) != 0)
+    int scenes = rq->scene_count > 0 && rq->scene_count < builtin_scene_count() ? rq->scene_count
+                                                                                 : builtin_scene_count();
+    for (int i = 0; i < scenes && i < AO_REFERENCES_MAX_SCENES; ++i, ++out->count)
+        if (study_scene(builtin_scene_at(i), &req, rq->size, refs, figures, &out->rows[i], e) != 0)
             return -1;
     return 0;
 }

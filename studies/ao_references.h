@@ -30,14 +30,24 @@ typedef struct {
 } ao_reference_row;
 
 typedef struct {
+    int size;             /* image width (the height follows the scene's camera) */
     int spp;              /* samples per pixel (the most with a target) */
     double target_stderr; /* 0: every pixel takes spp samples */
     uint32_t seed;
-    int size;             /* image width */
+    int scene_count;      /* the first scene_count built-in scenes; 0: all */
+} ao_references_request;
+
+typedef struct {
+    ao_references_request request;
     int count;
     ao_reference_row rows[AO_REFERENCES_MAX_SCENES]; /* builtin_scene_at order */
 } ao_references_result;
 
-int ao_references_study(const study_context *ctx, ao_references_result *out, gt_error *e);
+/* The request of `gtlab all` at a quality: preview 256 px, 256 spp;
+ * production 512 px, up to 4096 spp stopping at a standard error of 0.002. */
+ao_references_request ao_references_default_request(study_quality quality);
+
+int ao_references_study(const study_context *ctx, const ao_references_request *rq, ao_references_result *out,
+                        gt_error *e);
 
 #endif
