@@ -44,8 +44,8 @@ std::string format_of(const char *path)
     return p.substr(dot + 1);
 }
 
-// Writes buf as 8 bits per channel to path, atomically.
-int write_8bit(const char *path, const ImageBuf &buf, gt_error *e)
+// Writes buf with `type` per channel to path, atomically.
+int write_as(const char *path, const ImageBuf &buf, TypeDesc type, gt_error *e)
 {
     std::string format = format_of(path);
     if (format.empty())
@@ -53,7 +53,7 @@ int write_8bit(const char *path, const ImageBuf &buf, gt_error *e)
     atomic_file out;
     if (atomic_file_begin(&out, path, e) != 0)
         return -1;
-    if (!buf.write(out.temp_path, TypeDesc::UINT8, format)) {
+    if (!buf.write(out.temp_path, type, format)) {
         std::string why = one_line(buf.geterror());
         if (why.empty())
             why = one_line(OIIO::geterror());
@@ -62,6 +62,9 @@ int write_8bit(const char *path, const ImageBuf &buf, gt_error *e)
     }
     return atomic_file_commit(&out, e);
 }
+
+// Writes buf as 8 bits per channel to path, atomically.
+int write_8bit(const char *path, const ImageBuf &buf, gt_error *e) { return write_as(path, buf, TypeDesc::UINT8, e); }
 
 // OIIO's linear -> sRGB transfer function (IEC 61966-2-1).
 bool encode_srgb(ImageBuf &dst, const ImageBuf &linear, const char *path, gt_error *e)
@@ -143,4 +146,22 @@ extern "C" int image_write_data8(const char *path, const float *values, int widt
         spec.attribute("ImageDescription", description);
     ImageBuf linear(spec, pixels.data());
     return write_8bit(path, linear, e);
+}
+
+extern "C" int image_write_data16(const char *path, const float *const *planes, int channel_count, int width,
+                                  int height, const char *description, gt_error *e)
+{
+    if (channel_count < 1 || channel_count > 4 || !valid_size(width, height))
+        return gt_error_set(e, path, "cannot write a %d x %d image of %d channels", width, height, channel_count);
+    size_t n = (size_t)width * (size_t)height;
+    std::vector<float> pixels(n * (size_t)channel_count);
+    for (size_t i = 0; i < n; ++i)
+        for (int c = 0; c < channel_count; ++c)
+            pixels[i * (size_t)channel_count + (size_t)c] = planes[c] ? clamp01(planes[c][i]) : 0.0f;
+    ImageSpec spec(width, height, channel_count, TypeDesc::FLOAT);
+    spec.attribute("oiio:ColorSpace", "Linear"); // data: no sRGB chunk, gamma 1
+    if (description)
+        spec.attribute("ImageDescription", description);
+    ImageBuf linear(spec, pixels.data());
+    return write_as(path, linear, TypeDesc::UINT16, e);
 }

@@ -26,4 +26,10 @@ int image_write_heatmap(const char *path, const float *values, const float *mask
 int image_write_data8(const char *path, const float *values, int width, int height, const char *description,
                       gt_error *e);
 
+/* Data of 1 to 4 planar channels in [0, 1] quantised linearly to 16 bits
+ * (no sRGB encoding), e.g. a two-channel LUT as RG with blue 0; planes[c]
+ * points at width*height floats, a NULL plane writes zeros. Returns 0 or -1. */
+int image_write_data16(const char *path, const float *const *planes, int channel_count, int width, int height,
+                       const char *description, gt_error *e);
+
 #endif
