@@ -110,6 +110,10 @@
 
 /* ---- Lookup tables (gtlab lut) ------------------------------------------ */
 #define CH_LUT "lut.V"
+/* The split-sum DFG table (luts/dfg_lut.h): scale A, bias B, albedo E = A + B. */
+#define CH_DFG_A "dfg.A"
+#define CH_DFG_B "dfg.B"
+#define CH_DFG_E "dfg.E"
 
 /* ---- Header attributes -------------------------------------------------- */
 /* text */
@@ -131,6 +135,7 @@
 #define ATTR_SPP "gtlab.spp"
 #define ATTR_SEED "gtlab.seed"
 /* real */
+#define ATTR_LUT_ERROR "gtlab.lut.error" /* a LUT's largest quadrature error estimate */
 #define ATTR_ROUGHNESS "gtlab.roughness" /* specular occlusion: the fixed roughness, absent: the materials' */
 
 /* Values of ATTR_QUANTITY written by other than a reference integrator. */

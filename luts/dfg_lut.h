@@ -54,11 +54,6 @@
 #ifndef GTLAB_LUTS_DFG_LUT_H
 #define GTLAB_LUTS_DFG_LUT_H
 
-/* EXR channel names of the three channels (one place). */
-#define DFG_CHANNEL_SCALE "dfg.A"
-#define DFG_CHANNEL_BIAS "dfg.B"
-#define DFG_CHANNEL_ALBEDO "dfg.E"
-
 #define DFG_MIN_N_DOT_V 1e-4
 #define DFG_MIN_SIZE 32
 #define DFG_MAX_SIZE 256

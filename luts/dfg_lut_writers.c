@@ -8,8 +8,9 @@
 #include "core/exr_io.h"
 #include "core/image.h"
 #include "core/image_io.h"
+#include "core/reference_schema.h"
 
-static const char *const CHANNEL_NAMES[DFG_CHANNELS] = {DFG_CHANNEL_SCALE, DFG_CHANNEL_BIAS, DFG_CHANNEL_ALBEDO};
+static const char *const CHANNEL_NAMES[DFG_CHANNELS] = {CH_DFG_A, CH_DFG_B, CH_DFG_E};
 
 /* Copies channel c of the interleaved table into a plane. */
 static void deinterleave(const dfg_lut *lut, int c, float *plane)
@@ -21,12 +22,10 @@ static void deinterleave(const dfg_lut *lut, int c, float *plane)
 int dfg_lut_write_exr(const char *path, const dfg_lut *lut, gt_error *e)
 {
     image img;
-    char error_text[32];
     if (image_init(&img, lut->size, lut->size) != 0)
         return gt_error_set(e, path, "out of memory");
-    snprintf(error_text, sizeof error_text, "%.3e", lut->max_error_estimate);
-    int rc = image_set_attribute(&img, "gtlab.lut", dfg_lut_description()) == 0 &&
-                     image_set_attribute(&img, "gtlab.lut.error", error_text) == 0 ? 0 : -1;
+    int rc = image_set_attribute(&img, ATTR_LUT, dfg_lut_description()) == 0 &&
+                     schema_set_real(&img, ATTR_LUT_ERROR, lut->max_error_estimate) == 0 ? 0 : -1;
     for (int c = 0; c < DFG_CHANNELS && rc == 0; ++c) {
         float *plane = image_add_channel(&img, CHANNEL_NAMES[c]);
         rc = plane ? 0 : -1;

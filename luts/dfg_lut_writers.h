@@ -1,7 +1,7 @@
 /* Writers of the split-sum DFG LUT (luts/dfg_lut.h), each carrying
  * dfg_lut_description() (the axes) in its metadata or comment:
- *   <base>.exr   float, N x N, channels DFG_CHANNEL_SCALE, _BIAS, _ALBEDO
- *                ("dfg.A", "dfg.B", "dfg.E"), description in "gtlab.lut",
+ *   <base>.exr   float, N x N, channels "dfg.A", "dfg.B", "dfg.E" (CH_DFG_*
+ *                in core/reference_schema.h), description in "gtlab.lut",
  *                the largest quadrature error estimate in "gtlab.lut.error"
  *   <base>.png   16-bit RGB: R = A, G = B, blue 0 (UE4's R16G16 layout)
  *   <base>.h     `static const float <identifier>[N*N*3]` and <IDENTIFIER>_SIZE
