@@ -13,7 +13,7 @@ static void check_exr_round_trip(const char *dir, const dfg_lut *lut)
     gt_error e;
     snprintf(path, sizeof path, "%s/dfg.exr", dir);
     CHECK(exr_read(path, &img, &e) == 0);
-    const char *names[DFG_CHANNELS] = {DFG_CHANNEL_SCALE, DFG_CHANNEL_BIAS, DFG_CHANNEL_ALBEDO};
+    const char *names[DFG_CHANNELS] = {"dfg.A", "dfg.B", "dfg.E"};
     int mismatches = 0;
     for (int c = 0; c < DFG_CHANNELS; ++c) {
         const float *plane = image_channel_data(&img, names[c]);
