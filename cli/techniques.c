@@ -8,6 +8,7 @@
     T(multibounce)          \
     T(specular_occlusion)   \
     T(sphere_light)         \
+    T(dfg)                  \
     T(throughput)
 
 #define DECLARE(name) extern const technique technique_##name;
