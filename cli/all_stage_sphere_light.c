@@ -1,144 +1,61 @@
-/* `gtlab all` stage: GGX sphere lights (Decima, SIGGRAPH 2017; Karis 2013).
- * The accuracy of GetNoHSquared against brute force, the refit of Decima's
- * constants, error maps of Karis, Decima and Decima refit against the
- * parameter-space Monte Carlo reference over (n.v, angular size) and
- * roughness, and the cost of the Newton step. */
-#define _GNU_SOURCE
+/* `gtlab all` stage: GGX sphere lights (Decima, SIGGRAPH 2017; Karis 2013),
+ * studies/sphere_light.h rendered into the report: the accuracy of
+ * GetNoHSquared against brute force, the refit of Decima's constants, error
+ * maps of Karis, Decima and Decima refit against the parameter-space Monte
+ * Carlo reference, scene renders, shadows and the cost of the Newton step. */
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 
-#include "cli/all_stage_sphere_light.h"
-#include "cli/bench_sphere_light.h"
+#include "cli/all_stages.h"
 #include "cli/check_sphere_noh.h"
 #include "cli/fit_sphere_light.h"
 #include "cli/gnuplot_plot.h"
-#include "core/atomic_file.h"
-#include "core/sobol.h"
-#include "raytracer/sphere_light_reference.h"
+#include "cli/report_table.h"
+#include "studies/sphere_light.h"
 
-#define METHODS 3
-static const char *method_names[METHODS] = {"Karis", "Decima", "Decima refit"};
+#define COLUMNS(c) ((int)(sizeof c / sizeof c[0]))
 
-/* Light offsets from the mirror direction, in units of (alpha + sigma),
- * and their azimuths about R: the highlight and its surroundings. */
-#define OFFSETS 8
-static const double offset_delta[OFFSETS] = {0.0, 0.5, 0.5, 0.5, 1.0, 1.0, 1.0, 2.0};
-static const double offset_psi[OFFSETS] = {0.0, 0.0, 1.5707963, 3.1415927, 0.0, 1.5707963, 3.1415927, 1.5707963};
+/* ---- N.H maximisation ---- */
 
-typedef struct {
-    const char *name, *title, *xlabel; /* file stem, plot title, x axis */
-    int x_is_roughness;                /* x: roughness (else n.v) */
-    double fixed;                      /* the other of roughness / n.v */
-} error_map;
-
-/* Mean |ln((model + 0.01)/(reference + 0.01))| of each method over the
- * offsets of one cell (x, sin_sigma). */
-static void cell_errors(const error_map *m, double x, double sin_sigma, uint32_t samples, uint32_t seed,
-                        const decima_sphere_constants *refit, double err[METHODS])
+static void percent_or_dash(double share, int has_baseline, char *text, size_t size)
 {
-    double roughness = m->x_is_roughness ? x : m->fixed, n_dot_v = m->x_is_roughness ? m->fixed : x;
-    const decima_sphere_constants published = decima_sphere_published();
-    for (int k = 0; k < METHODS; ++k)
-        err[k] = 0.0;
-    for (int o = 0; o < OFFSETS; ++o) {
-        double delta = offset_delta[o] * (roughness * roughness + asin(sin_sigma));
-        sphere_light_config c = sphere_light_config_near_mirror(n_dot_v, delta, offset_psi[o], sin_sigma, roughness);
-        sphere_light_estimate est;
-        sphere_light_reference(&c, samples, hash_combine(seed, (uint32_t)o), &est);
-        double e_perp = sphere_light_normal_illuminance(sin_sigma);
-        sphere_light_sample s = {c.v, c.lc, (float)sin_sigma, (float)c.alpha, est.spec / e_perp,
-                                 est.spec_stderr / e_perp};
-        err[0] += fabs(sphere_light_residual(SPHERE_MODEL_KARIS, NULL, &s)) / OFFSETS;
-        err[1] += fabs(sphere_light_residual(SPHERE_MODEL_DECIMA, &published, &s)) / OFFSETS;
-        err[2] += fabs(sphere_light_residual(SPHERE_MODEL_DECIMA, refit, &s)) / OFFSETS;
-    }
+    snprintf(text, size, has_baseline ? "%.2f%%" : "-", 100.0 * share);
 }
 
-/* One map: a grid of cells, a CSV and a gnuplot figure of the three
- * methods side by side on a common colour scale. means[] receives each
- * method's mean over the map. */
-static int run_map(const all_context *ctx, const char *dir, const error_map *m, int size, uint32_t samples,
-                   const decima_sphere_constants *refit, double means[METHODS], gt_error *e)
+static void worse_cell(const void *row, char *text, size_t size)
 {
-    double *err = malloc((size_t)size * size * METHODS * sizeof *err);
-    if (!err)
-        return gt_error_set(e, dir, "out of memory");
-    const double x_lo = m->x_is_roughness ? 0.05 : 0.05, x_hi = 1.0;
-    const double s_lo = 0.00465, s_hi = 0.5;
-#pragma omp parallel for schedule(dynamic, 1) num_threads(ctx->study.threads)
-    for (int cell = 0; cell < size * size; ++cell) {
-        int i = cell % size, j = cell / size;
-        double x = x_lo + (x_hi - x_lo) * (i + 0.5) / size;
-        double sin_sigma = s_lo * pow(s_hi / s_lo, (j + 0.5) / size);
-        cell_errors(m, x, sin_sigma, samples, hash_combine(0x5f1e, (uint32_t)cell), refit, err + METHODS * cell);
-    }
-    char *text = NULL, path[8192];
-    size_t len = 0;
-    FILE *mem = open_memstream(&text, &len);
-    if (!mem) {
-        free(err);
-        return gt_error_set(e, dir, "out of memory");
-    }
-    fprintf(mem, "%s,angular_radius_deg,karis,decima,decima_refit\n", m->x_is_roughness ? "roughness" : "n_dot_v");
-    for (int k = 0; k < METHODS; ++k)
-        means[k] = 0.0;
-    for (int j = 0; j < size; ++j) {
-        for (int i = 0; i < size; ++i) {
-            const double *c = err + METHODS * (j * size + i);
-            double x = x_lo + (x_hi - x_lo) * (i + 0.5) / size;
-            double sigma_deg = asin(s_lo * pow(s_hi / s_lo, (j + 0.5) / size)) * 180.0 / M_PI;
-            fprintf(mem, "%.6g,%.6g,%.6g,%.6g,%.6g\n", x, sigma_deg, c[0], c[1], c[2]);
-            for (int k = 0; k < METHODS; ++k)
-                means[k] += c[k] / (size * size);
-        }
-        fprintf(mem, "\n");
-    }
-    fclose(mem);
-    free(err);
-    snprintf(path, sizeof path, "%s/%s.csv", dir, m->name);
-    int rc = atomic_write_text(path, text, e);
-    free(text);
-    if (rc != 0)
-        return -1;
-    char commands[32768];
-    snprintf(commands, sizeof commands,
-             "set datafile separator ','\n"
-             "set multiplot layout 1,3 title '%s: mean |ln((approx + 0.01)/(reference + 0.01))| near the highlight'\n"
-             "set xlabel '%s'\nset ylabel 'angular radius (deg)'\nset logscale y\n"
-             "set palette rgb 21,22,23\nset cbrange [0:1]\nset xrange [%g:%g]\nset yrange [%g:%g]\n"
-             "set title 'Karis'\nplot '%s' using 1:2:3 with image notitle\n"
-             "set title 'Decima (published)'\nplot '%s' using 1:2:4 with image notitle\n"
-             "set title 'Decima refit'\nplot '%s' using 1:2:5 with image notitle\n"
-             "unset multiplot\n",
-             m->title, m->xlabel, x_lo, x_hi, asin(s_lo) * 180.0 / M_PI, asin(s_hi) * 180.0 / M_PI, path, path, path);
-    snprintf(path, sizeof path, "%s/%s.png", dir, m->name);
-    return gnuplot_render(commands, path, 1500, 460, e);
+    const sphere_noh_row *r = row;
+    percent_or_dash(r->share_worse, r->has_baseline, text, size);
 }
 
-static void add_errors_row(report *doc, const char *name, const sphere_light_errors *x)
+static void better_cell(const void *row, char *text, size_t size)
 {
-    char a[64], b[64];
-    snprintf(a, sizeof a, "%.4f ± %.4f", x->mean_abs, x->mean_abs_stderr);
-    snprintf(b, sizeof b, "%.4f ± %.4f", x->rms, x->rms_stderr);
-    const char *cells[3] = {name, a, b};
-    report_table_row(doc, cells);
+    const sphere_noh_row *r = row;
+    percent_or_dash(r->share_better, r->has_baseline, text, size);
 }
 
-static cJSON *errors_json(const sphere_light_errors *x)
-{
-    cJSON *o = cJSON_CreateObject();
-    cJSON_AddNumberToObject(o, "mean_abs_log_error", x->mean_abs);
-    cJSON_AddNumberToObject(o, "mean_abs_log_error_stderr", x->mean_abs_stderr);
-    cJSON_AddNumberToObject(o, "rms_log_error", x->rms);
-    cJSON_AddNumberToObject(o, "rms_log_error_stderr", x->rms_stderr);
-    return o;
-}
+#define NOH_FIGURES                                                         \
+    REPORT_STRING("method", "method", sphere_noh_row, method),              \
+        REPORT_REAL("mean", "mean", "%.4g", sphere_noh_row, mean),          \
+        REPORT_REAL("99th percentile", "p99", "%.4g", sphere_noh_row, p99), \
+        REPORT_REAL("worst", "worst", "%.4g", sphere_noh_row, worst)
+
+static const report_column noh_table[] = {
+    NOH_FIGURES, REPORT_CELL("worse", worse_cell), REPORT_CELL("better", better_cell),
+    REPORT_STRING("than", NULL, sphere_noh_row, baseline),
+};
+/* summary.json: Karis has no baseline to be worse than. */
+static const report_column noh_json_karis[] = {NOH_FIGURES};
+static const report_column noh_json_steps[] = {
+    NOH_FIGURES,
+    REPORT_REAL(NULL, "share_worse_than_baseline", NULL, sphere_noh_row, share_worse),
+    REPORT_STRING(NULL, "baseline", sphere_noh_row, baseline),
+};
 
 static void report_noh(all_context *ctx, const sphere_noh_sweep *sw, const sphere_noh_stats *st, cJSON *json)
 {
     report *doc = ctx->doc;
+    const sphere_noh_row *r = st->rows;
     report_heading(doc, 3, "N.H maximisation (GetNoHSquared)");
     report_paragraph(doc,
                      "Shortfall of (N.H)^2 below its brute-force maximum over the light's rim (%d angles, refined "
@@ -147,32 +64,10 @@ static void report_noh(all_context *ctx, const sphere_noh_sweep *sw, const spher
                      "The Newton step is gtlab's derivation; the test suite checks it against finite differences "
                      "and the rotated light vector.",
                      sw->rim_steps, sw->nv_steps, st->r_inside, st->configurations);
-    const char *headers[7] = {"method", "mean", "99th percentile", "worst", "worse", "better", "than"};
-    report_table_begin(doc, 7, headers);
-    cJSON *arr = cJSON_AddArrayToObject(json, "noh_shortfall");
-    for (int m = 0; m < NOH_METHODS; ++m) {
-        char c[5][32];
-        int base = sphere_noh_baseline[m];
-        snprintf(c[0], 32, "%.4g", st->mean[m]);
-        snprintf(c[1], 32, "%.4g", st->p99[m]);
-        snprintf(c[2], 32, "%.4g", st->worst[m]);
-        snprintf(c[3], 32, base >= 0 ? "%.2f%%" : "-", 100.0 * st->share_worse[m]);
-        snprintf(c[4], 32, base >= 0 ? "%.2f%%" : "-", 100.0 * st->share_better[m]);
-        const char *cells[7] = {sphere_noh_method_names[m], c[0], c[1], c[2], c[3], c[4],
-                                base >= 0 ? sphere_noh_method_names[base] : "-"};
-        report_table_row(doc, cells);
-        cJSON *o = cJSON_CreateObject();
-        cJSON_AddStringToObject(o, "method", sphere_noh_method_names[m]);
-        cJSON_AddNumberToObject(o, "mean", st->mean[m]);
-        cJSON_AddNumberToObject(o, "p99", st->p99[m]);
-        cJSON_AddNumberToObject(o, "worst", st->worst[m]);
-        if (base >= 0) {
-            cJSON_AddNumberToObject(o, "share_worse_than_baseline", st->share_worse[m]);
-            cJSON_AddStringToObject(o, "baseline", sphere_noh_method_names[base]);
-        }
-        cJSON_AddItemToArray(arr, o);
-    }
-    report_table_end(doc);
+    cJSON *list = cJSON_AddArrayToObject(json, "noh_shortfall");
+    report_rows(doc, NULL, noh_table, COLUMNS(noh_table), r, sizeof *r, NOH_METHODS);
+    report_rows(NULL, list, noh_json_karis, COLUMNS(noh_json_karis), r, sizeof *r, 1);
+    report_rows(NULL, list, noh_json_steps, COLUMNS(noh_json_steps), r + 1, sizeof *r, NOH_METHODS - 1);
     const char *figs[2] = {"sphere_light/sphere_noh_map.png", "sphere_light/sphere_noh_error.png"};
     const char *caps[2] = {"Where one Newton step helps (blue) or hurts (red), and the share of worse configurations",
                            "Mean shortfall against n.v"};
@@ -180,13 +75,55 @@ static void report_noh(all_context *ctx, const sphere_noh_sweep *sw, const spher
     report_finding(doc, "GetNoHSquared",
                    "one Newton step from Karis's point cuts the mean (N.H)^2 shortfall from %.4f to %.4f but is "
                    "worse in %.1f%% of configurations (guarded step: %.4f, worse in %.1f%%).",
-                   st->mean[NOH_KARIS], st->mean[NOH_STEP1], 100.0 * st->share_worse[NOH_STEP1], st->mean[NOH_GUARDED],
-                   100.0 * st->share_worse[NOH_GUARDED]);
+                   r[NOH_KARIS].mean, r[NOH_STEP1].mean, 100.0 * r[NOH_STEP1].share_worse, r[NOH_GUARDED].mean,
+                   100.0 * r[NOH_GUARDED].share_worse);
     report_paragraph(doc, "The step hurts at grazing view with the light far from the normal: there f''(0) > 0 "
                           "at Karis's point, so Newton's step heads for a minimum of (N.H)^2, and a second step "
                           "goes on towards it. Taking the step only where f''(0) < 0 (xDenom < 0: one comparison, "
                           "not in the talk) is the 'guarded' row.");
 }
+
+/* ---- The refit ---- */
+
+static void constant_cell(const void *row, char *text, size_t size)
+{
+    const sphere_fit_constant *k = row;
+    snprintf(text, size, "%.4g ± %.2g", k->value, k->stderr_);
+}
+
+static const report_column constant_table[] = {
+    REPORT_STRING("constant", NULL, sphere_fit_constant, name),
+    REPORT_CELL("refit ± standard error", constant_cell),
+    REPORT_REAL("published", NULL, "%g", sphere_fit_constant, published),
+};
+static const report_column constant_json[] = {
+    REPORT_REAL(NULL, "value", NULL, sphere_fit_constant, value),
+    REPORT_REAL(NULL, "stderr", NULL, sphere_fit_constant, stderr_),
+};
+
+static void mean_abs_cell(const void *row, char *text, size_t size)
+{
+    const sphere_light_errors *x = &((const sphere_fit_errors_row *)row)->errors;
+    snprintf(text, size, "%.4f ± %.4f", x->mean_abs, x->mean_abs_stderr);
+}
+
+static void rms_cell(const void *row, char *text, size_t size)
+{
+    const sphere_light_errors *x = &((const sphere_fit_errors_row *)row)->errors;
+    snprintf(text, size, "%.4f ± %.4f", x->rms, x->rms_stderr);
+}
+
+static const report_column held_out_table[] = {
+    REPORT_STRING("held-out", NULL, sphere_fit_errors_row, method),
+    REPORT_CELL("mean abs error", mean_abs_cell),
+    REPORT_CELL("RMS error", rms_cell),
+};
+static const report_column errors_json[] = {
+    REPORT_REAL(NULL, "mean_abs_log_error", NULL, sphere_light_errors, mean_abs),
+    REPORT_REAL(NULL, "mean_abs_log_error_stderr", NULL, sphere_light_errors, mean_abs_stderr),
+    REPORT_REAL(NULL, "rms_log_error", NULL, sphere_light_errors, rms),
+    REPORT_REAL(NULL, "rms_log_error_stderr", NULL, sphere_light_errors, rms_stderr),
+};
 
 static void report_fit(all_context *ctx, const sphere_fit_settings *fs, const sphere_fit_outcome *o, cJSON *json)
 {
@@ -200,23 +137,11 @@ static void report_fit(all_context *ctx, const sphere_fit_settings *fs, const sp
                      "ln((model + 0.01)/(reference + 0.01)), radiance per unit normal illuminance. Files: "
                      "fits/sphere_light.json, .h, .hlsl, .glsl.",
                      fs->train, fs->mc_samples, fs->test);
-    const char *headers[3] = {"constant", "refit ± standard error", "published"};
-    report_table_begin(doc, 3, headers);
-    const char *names[3] = {"radius_reduction", "norm_scale", "norm_alpha"};
-    const decima_sphere_constants pub = decima_sphere_published();
-    const double pub_v[3] = {pub.radius_reduction, pub.norm_scale, pub.norm_alpha};
-    cJSON *vals = cJSON_AddObjectToObject(json, "refit");
-    for (int j = 0; j < 3; ++j) {
-        char a[64], b[32];
-        snprintf(a, sizeof a, "%.4g ± %.2g", o->fit.value[j], o->fit.stderr_[j]);
-        snprintf(b, sizeof b, "%g", pub_v[j]);
-        const char *cells[3] = {names[j], a, b};
-        report_table_row(doc, cells);
-        cJSON *p = cJSON_AddObjectToObject(vals, names[j]);
-        cJSON_AddNumberToObject(p, "value", o->fit.value[j]);
-        cJSON_AddNumberToObject(p, "stderr", o->fit.stderr_[j]);
-    }
-    report_table_end(doc);
+    report_rows(doc, NULL, constant_table, COLUMNS(constant_table), o->constants, sizeof o->constants[0],
+                SPHERE_FIT_PARAMS);
+    cJSON *values = cJSON_AddObjectToObject(json, "refit");
+    for (int j = 0; j < SPHERE_FIT_PARAMS; ++j)
+        report_object(values, o->constants[j].name, constant_json, COLUMNS(constant_json), &o->constants[j]);
     report_paragraph(doc,
                      "The cost is rugged in the radius reduction (the Newton step jumps, max() clamps the "
                      "radius): Levenberg-Marquardt from the published 0.25 stops in small local minima. So it is "
@@ -228,34 +153,24 @@ static void report_fit(all_context *ctx, const sphere_fit_settings *fs, const sp
                      "independent residuals of one variance, do not show it (docs/decisions.md).");
     const char *pf[1] = {"sphere_light/fit_profile.png"}, *pc[1] = {"Cost against the radius reduction (profile)"};
     report_figures(doc, 1, pf, pc);
-    const char *h2[3] = {"held-out", "mean abs error", "RMS error"};
-    report_table_begin(doc, 3, h2);
-    add_errors_row(doc, "Karis", &o->karis);
-    add_errors_row(doc, "Decima (published)", &o->published);
-    add_errors_row(doc, "Decima refit", &o->refit);
-    report_table_end(doc);
+    report_rows(doc, NULL, held_out_table, COLUMNS(held_out_table), o->held_out, sizeof o->held_out[0],
+                SPHERE_FIT_MODELS);
     cJSON *held = cJSON_AddObjectToObject(json, "held_out");
-    cJSON_AddItemToObject(held, "karis", errors_json(&o->karis));
-    cJSON_AddItemToObject(held, "decima_published", errors_json(&o->published));
-    cJSON_AddItemToObject(held, "decima_refit", errors_json(&o->refit));
+    for (int m = 0; m < SPHERE_FIT_MODELS; ++m)
+        report_object(held, o->held_out[m].key, errors_json, COLUMNS(errors_json), &o->held_out[m].errors);
     report_finding(doc, "GGX sphere lights",
                    "held-out mean |log error| Karis %.3f, Decima as published %.3f, Decima refit %.3f "
                    "(radius reduction %.3g ± %.2g, published %g).",
-                   o->karis.mean_abs, o->published.mean_abs, o->refit.mean_abs, o->fit.value[0], o->fit.stderr_[0],
-                   pub.radius_reduction);
+                   o->held_out[SPHERE_FIT_KARIS].errors.mean_abs, o->held_out[SPHERE_FIT_PUBLISHED].errors.mean_abs,
+                   o->held_out[SPHERE_FIT_REFIT].errors.mean_abs, o->constants[0].value, o->constants[0].stderr_,
+                   o->constants[0].published);
 }
 
-/* The profile as CSV and a plot. */
-static int write_profile(const char *dir, const sphere_fit_outcome *o, gt_error *e)
+/* The profile's plot, from DIR/fit_profile.csv. */
+static int plot_profile(const char *dir, gt_error *e)
 {
-    char text[4096], path[8192], commands[16384];
-    int len = snprintf(text, sizeof text, "radius_reduction,cost\n");
-    for (int k = 0; k < SPHERE_FIT_PROFILE; ++k)
-        len += snprintf(text + len, sizeof text - (size_t)len, "%.6g,%.9g\n", o->fit.profile_reduction[k],
-                        o->fit.profile_cost[k]);
+    char path[8192], commands[16384];
     snprintf(path, sizeof path, "%s/fit_profile.csv", dir);
-    if (atomic_write_text(path, text, e) != 0)
-        return -1;
     snprintf(commands, sizeof commands,
              "set datafile separator ','\nset xlabel 'radius reduction (published 0.25)'\n"
              "set ylabel 'cost: 1/2 sum of squared log errors'\nset key off\n"
@@ -265,6 +180,124 @@ static int write_profile(const char *dir, const sphere_fit_outcome *o, gt_error 
     snprintf(path, sizeof path, "%s/fit_profile.png", dir);
     return gnuplot_render(commands, path, 700, 450, e);
 }
+
+/* ---- Error maps ---- */
+
+/* The three methods side by side on a common colour scale, from DIR/<name>.csv. */
+static int plot_map(const char *dir, const sphere_map_row *m, gt_error *e)
+{
+    char path[8192], commands[32768];
+    snprintf(path, sizeof path, "%s/%s.csv", dir, m->name);
+    snprintf(commands, sizeof commands,
+             "set datafile separator ','\n"
+             "set multiplot layout 1,3 title '%s: mean |ln((approx + 0.01)/(reference + 0.01))| near the highlight'\n"
+             "set xlabel '%s'\nset ylabel 'angular radius (deg)'\nset logscale y\n"
+             "set palette rgb 21,22,23\nset cbrange [0:1]\nset xrange [%g:%g]\nset yrange [%g:%g]\n"
+             "set title 'Karis'\nplot '%s' using 1:2:3 with image notitle\n"
+             "set title 'Decima (published)'\nplot '%s' using 1:2:4 with image notitle\n"
+             "set title 'Decima refit'\nplot '%s' using 1:2:5 with image notitle\n"
+             "unset multiplot\n",
+             m->title, m->xlabel, SPHERE_MAP_X_LO, SPHERE_MAP_X_HI, asin(SPHERE_MAP_SIN_LO) * 180.0 / M_PI,
+             asin(SPHERE_MAP_SIN_HI) * 180.0 / M_PI, path, path, path);
+    snprintf(path, sizeof path, "%s/%s.png", dir, m->name);
+    return gnuplot_render(commands, path, 1500, 460, e);
+}
+
+static const report_column map_columns[] = {
+    REPORT_STRING("map", NULL, sphere_map_row, title),
+    REPORT_REAL("Karis", "Karis", "%.4f", sphere_map_row, karis),
+    REPORT_REAL("Decima", "Decima", "%.4f", sphere_map_row, decima),
+    REPORT_REAL("Decima refit", "Decima refit", "%.4f", sphere_map_row, refit),
+};
+
+static void report_maps(all_context *ctx, const sphere_light_result *r, cJSON *json)
+{
+    report_heading(ctx->doc, 3, "Error maps against the Monte Carlo reference");
+    report_paragraph(ctx->doc, "Each cell: mean |ln((approx + 0.01)/(reference + 0.01))| over 8 light positions "
+                               "at 0 to 2 (alpha + sigma) from the mirror direction; same colour scale (0 to 1) "
+                               "in every map.");
+    report_rows(ctx->doc, NULL, map_columns, COLUMNS(map_columns), r->maps, sizeof r->maps[0], SPHERE_MAPS);
+    cJSON *maps_json = cJSON_AddObjectToObject(json, "error_maps");
+    const char *figs[SPHERE_MAPS], *caps[SPHERE_MAPS];
+    char fig_paths[SPHERE_MAPS][256];
+    for (int k = 0; k < SPHERE_MAPS; ++k) {
+        report_object(maps_json, r->maps[k].name, map_columns, COLUMNS(map_columns), &r->maps[k]);
+        snprintf(fig_paths[k], sizeof fig_paths[k], "sphere_light/%s.png", r->maps[k].name);
+        figs[k] = fig_paths[k], caps[k] = r->maps[k].title;
+    }
+    report_figures(ctx->doc, SPHERE_MAPS, figs, caps);
+}
+
+/* ---- Scenes and shadows ---- */
+
+static const report_column scene_columns[] = {
+    REPORT_STRING("scene", NULL, sphere_scene_row, title),
+    REPORT_STRING(NULL, "scene", sphere_scene_row, name),
+    REPORT_REAL("Karis", "karis", "%.4g", sphere_scene_row, karis),
+    REPORT_REAL("Decima", "decima", "%.4g", sphere_scene_row, decima),
+    REPORT_REAL("Decima refit", "decima_refit", "%.4g", sphere_scene_row, refit),
+    REPORT_REAL("noise floor", "noise_floor_dssim", "%.2g", sphere_scene_row, noise_floor),
+};
+
+static void scene_figures(report *doc, const sphere_scene_row *s)
+{
+    char paths[7][256];
+    const char *figs[7], *caps[7] = {"reference", "Karis", "Decima", "Decima refit",
+                                     "|Karis - reference|", "|Decima - reference|", "|refit - reference|"};
+    snprintf(paths[0], 256, "sphere_light/scene_%s_reference.png", s->name);
+    for (int m = 0; m < SPHERE_SCENE_APPROX; ++m) {
+        snprintf(paths[1 + m], 256, "sphere_light/scene_%s_%s.png", s->name, sphere_scene_approx_files[m]);
+        snprintf(paths[4 + m], 256, "sphere_light/scene_%s_%s_error.png", s->name, sphere_scene_approx_files[m]);
+    }
+    for (int j = 0; j < 7; ++j)
+        figs[j] = paths[j];
+    report_paragraph(doc, "%s:", s->title);
+    report_figures(doc, 4, figs, caps);
+    report_figures(doc, 3, figs + 4, caps + 4);
+}
+
+static const report_column shadow_json[] = {
+    REPORT_REAL(NULL, "dssim_shadowed_vs_unshadowed", NULL, sphere_shadow_result, dssim),
+    REPORT_REAL(NULL, "share_of_pixels_darkened_over_10_percent", NULL, sphere_shadow_result, share_darkened),
+};
+
+static void report_scenes(all_context *ctx, const sphere_light_result *r, cJSON *json)
+{
+    report *doc = ctx->doc;
+    report_heading(doc, 3, "Scene renders: glossy floor at grazing view");
+    report_paragraph(doc,
+                     "A grey dielectric floor (albedo %.2f, roughness %.2f, F0 %.2f) seen from 0.5 units above it, "
+                     "unshadowed. Reference: 'gtlab render sphere-light' (MIS over the light, Fresnel inside the "
+                     "integral). Approximations evaluated per pixel from the reference's G-buffer, with the exact "
+                     "Lambert part (Frostbite's illuminance) in all three, so they differ only in the specular. "
+                     "DSSIM on linear radiance (green channel; the scenes are grey); previews and heatmaps scaled "
+                     "by the reference's 99th percentile.",
+                     SPHERE_FLOOR_ALBEDO, SPHERE_FLOOR_ROUGHNESS, SPHERE_F0_DIELECTRIC);
+    report_rows(doc, cJSON_AddArrayToObject(json, "scenes"), scene_columns, COLUMNS(scene_columns), r->scenes,
+                sizeof r->scenes[0], SPHERE_SCENES);
+    for (int k = 0; k < SPHERE_SCENES; ++k)
+        scene_figures(doc, &r->scenes[k]);
+    report_paragraph(doc,
+                     "What none of the approximations models: the same reference with 'gtlab render sphere-light "
+                     "--shadows' (one occlusion ray per light-carrying sample) on sphere-on-plane, light of radius "
+                     "0.5 up and to the left. %.0f%% of the visible pixels lose more than a tenth of their light to "
+                     "the sphere's shadow; DSSIM between the shadowed and the unshadowed reference %.4f. A renderer "
+                     "must get that part from elsewhere (shadow maps, specular occlusion).",
+                     100.0 * r->shadows.share_darkened, r->shadows.dssim);
+    const char *figs[2] = {"sphere_light/scene_shadows_unshadowed.png", "sphere_light/scene_shadows_shadowed.png"};
+    const char *caps[2] = {"unshadowed reference (what the approximations aim at)", "with --shadows"};
+    report_figures(doc, 2, figs, caps);
+    report_object(json, "shadows", shadow_json, COLUMNS(shadow_json), &r->shadows);
+}
+
+/* ---- Cost ---- */
+
+static const report_column cost_json[] = {
+    REPORT_INT(NULL, "instructions_karis", sphere_cost, instructions_karis),
+    REPORT_INT(NULL, "instructions_decima", sphere_cost, instructions_decima),
+    REPORT_REAL(NULL, "ns_per_call_karis", NULL, sphere_cost, ns_karis),
+    REPORT_REAL(NULL, "ns_per_call_decima", NULL, sphere_cost, ns_decima),
+};
 
 static void report_cost(all_context *ctx, const sphere_cost *c, cJSON *json)
 {
@@ -278,84 +311,50 @@ static void report_cost(all_context *ctx, const sphere_cost *c, cJSON *json)
     const char *headers[4] = {"", "Karis", "Decima (1 step)", "increase"};
     report_table_begin(doc, 4, headers);
     char a[32], b[32], d[32];
-    snprintf(a, sizeof a, "%d", c->instructions[0]);
-    snprintf(b, sizeof b, "%d", c->instructions[1]);
-    snprintf(d, sizeof d, "%+.0f%%", 100.0 * (c->instructions[1] - c->instructions[0]) / c->instructions[0]);
-    const char *r1[4] = {"instructions", a, b, c->instructions[0] > 0 ? d : "n/a"};
+    snprintf(a, sizeof a, "%d", c->instructions_karis);
+    snprintf(b, sizeof b, "%d", c->instructions_decima);
+    snprintf(d, sizeof d, "%+.0f%%",
+             100.0 * (c->instructions_decima - c->instructions_karis) / c->instructions_karis);
+    const char *r1[4] = {"instructions", a, b, c->instructions_karis > 0 ? d : "n/a"};
     report_table_row(doc, r1);
-    snprintf(a, sizeof a, "%.2f", c->ns_per_call[0]);
-    snprintf(b, sizeof b, "%.2f", c->ns_per_call[1]);
-    snprintf(d, sizeof d, "%+.0f%%", 100.0 * (c->ns_per_call[1] - c->ns_per_call[0]) / c->ns_per_call[0]);
+    snprintf(a, sizeof a, "%.2f", c->ns_karis);
+    snprintf(b, sizeof b, "%.2f", c->ns_decima);
+    snprintf(d, sizeof d, "%+.0f%%", 100.0 * (c->ns_decima - c->ns_karis) / c->ns_karis);
     const char *r2[4] = {"ns per call", a, b, d};
     report_table_row(doc, r2);
     report_table_end(doc);
-    cJSON *o = cJSON_AddObjectToObject(json, "cost");
-    cJSON_AddNumberToObject(o, "instructions_karis", c->instructions[0]);
-    cJSON_AddNumberToObject(o, "instructions_decima", c->instructions[1]);
-    cJSON_AddNumberToObject(o, "ns_per_call_karis", c->ns_per_call[0]);
-    cJSON_AddNumberToObject(o, "ns_per_call_decima", c->ns_per_call[1]);
+    report_object(json, "cost", cost_json, COLUMNS(cost_json), c);
+}
+
+/* ---- The stage ---- */
+
+static int write_files(all_context *ctx, const sphere_light_result *r, gt_error *e)
+{
+    char dir[4096], fits[4096], json_path[8192];
+    if (study_make_dir(&ctx->study, SPHERE_LIGHT_DIR, dir, sizeof dir, e) != 0 ||
+        study_make_dir(&ctx->study, "fits", fits, sizeof fits, e) != 0)
+        return -1;
+    snprintf(json_path, sizeof json_path, "%s/sphere_light.json", fits);
+    if (sphere_noh_plots(dir, e) != 0 || sphere_fit_write(&r->fit_settings, &r->fit, json_path, e) != 0 ||
+        plot_profile(dir, e) != 0)
+        return -1;
+    for (int k = 0; k < SPHERE_MAPS; ++k)
+        if (plot_map(dir, &r->maps[k], e) != 0)
+            return -1;
+    return 0;
 }
 
 int all_stage_sphere_light(all_context *ctx, gt_error *e)
 {
-    const int preview = ctx->study.quality == QUALITY_PREVIEW;
-    char dir[4096], fits[4096], json_path[8192];
-    if (study_make_dir(&ctx->study, "sphere_light", dir, sizeof dir, e) != 0 || study_make_dir(&ctx->study, "fits", fits, sizeof fits, e) != 0)
+    static sphere_light_result r;
+    if (sphere_light_study(&ctx->study, &r, e) != 0 || write_files(ctx, &r, e) != 0)
         return -1;
     cJSON *json = cJSON_AddObjectToObject(ctx->summary, "sphere_light");
     report_heading(ctx->doc, 2, "GGX sphere lights (Decima 2017, Karis 2013)");
-
-    sphere_noh_sweep sweep = {preview ? 10 : 16, preview ? 10 : 16, preview ? 10 : 16, preview ? 10 : 16, 256};
-    sphere_noh_stats st;
-    if (sphere_noh_sweep_run(&sweep, dir, &st, e) != 0)
-        return -1;
-    report_noh(ctx, &sweep, &st, json);
-
-    sphere_fit_settings fs = {preview ? 1500 : 20000, preview ? 800 : 10000, preview ? 512u : 1024u, 1u, ctx->study.threads};
-    sphere_fit_outcome fo;
-    snprintf(json_path, sizeof json_path, "%s/sphere_light.json", fits);
-    if (sphere_fit_run(&fs, json_path, &fo, e) != 0 || write_profile(dir, &fo, e) != 0)
-        return -1;
-    report_fit(ctx, &fs, &fo, json);
-
-    const error_map maps[4] = {
-        {"errors_nv_size_r015", "roughness 0.15", "n.v", 0, 0.15},
-        {"errors_nv_size_r04", "roughness 0.4", "n.v", 0, 0.4},
-        {"errors_nv_size_r07", "roughness 0.7", "n.v", 0, 0.7},
-        {"errors_roughness_size_nv03", "n.v = 0.3", "roughness", 1, 0.3},
-    };
-    report_heading(ctx->doc, 3, "Error maps against the Monte Carlo reference");
-    report_paragraph(ctx->doc, "Each cell: mean |ln((approx + 0.01)/(reference + 0.01))| over 8 light positions "
-                               "at 0 to 2 (alpha + sigma) from the mirror direction; same colour scale (0 to 1) "
-                               "in every map.");
-    const char *headers[4] = {"map", "Karis", "Decima", "Decima refit"};
-    const char *figs[4], *caps[4];
-    char fig_paths[4][256];
-    report_table_begin(ctx->doc, 4, headers);
-    cJSON *maps_json = cJSON_AddObjectToObject(json, "error_maps");
-    for (int k = 0; k < 4; ++k) {
-        double means[METHODS];
-        if (run_map(ctx, dir, &maps[k], preview ? 16 : 40, preview ? 256u : 1024u, &fo.fit.constants, means, e) != 0)
-            return -1;
-        char c[METHODS][32];
-        cJSON *m = cJSON_AddObjectToObject(maps_json, maps[k].name);
-        for (int j = 0; j < METHODS; ++j) {
-            snprintf(c[j], 32, "%.4f", means[j]);
-            cJSON_AddNumberToObject(m, method_names[j], means[j]);
-        }
-        const char *cells[4] = {maps[k].title, c[0], c[1], c[2]};
-        report_table_row(ctx->doc, cells);
-        snprintf(fig_paths[k], sizeof fig_paths[k], "sphere_light/%s.png", maps[k].name);
-        figs[k] = fig_paths[k], caps[k] = maps[k].title;
-    }
-    report_table_end(ctx->doc);
-    report_figures(ctx->doc, 4, figs, caps);
-
-    if (all_stage_sphere_light_scenes(ctx, dir, &fo.fit.constants, json, e) != 0)
-        return -1;
-
-    sphere_cost cost;
-    sphere_cost_measure(preview ? 1L << 20 : 1L << 22, 3, &cost);
-    report_cost(ctx, &cost, json);
+    report_noh(ctx, &r.sweep, &r.noh, json);
+    report_fit(ctx, &r.fit_settings, &r.fit, json);
+    report_maps(ctx, &r, json);
+    report_scenes(ctx, &r, json);
+    report_cost(ctx, &r.cost, json);
     return 0;
 }

@@ -4,6 +4,10 @@
 
 double ggx_alpha(double roughness) { return roughness * roughness; }
 
+double ggx_alpha_phong_cone(double roughness) { return fmax(ggx_alpha(roughness), 1e-4); }
+
+double ggx_alpha_tabulated(double roughness) { return fmax(ggx_alpha(roughness), 1e-3); }
+
 double ggx_ndf(double cos_m, double alpha)
 {
     if (cos_m <= 0.0)

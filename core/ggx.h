@@ -22,8 +22,25 @@
 
 #include "core/vec3.h"
 
-/* alpha = roughness^2 (perceptual roughness, as glTF's metallic-roughness). */
+/* alpha = roughness^2 (perceptual roughness, as glTF's metallic-roughness).
+ * Unclamped: the references and the real-time functions take roughness 0
+ * as it is. */
 double ggx_alpha(double roughness);
+
+/* alpha with a floor, where roughness 0 (a mirror) would break a formula
+ * rather than make a sharp lobe. The two floors serve different purposes
+ * and are kept apart: one floor for both would change the specular-occlusion
+ * LUT's roughness-0 row or the cone apertures at roughness < 0.032. */
+
+/* max(roughness^2, 1e-4): the Phong exponent 2/alpha^2 - 2 of the
+ * specular-occlusion cone mappings stays finite (at most 2e8). */
+double ggx_alpha_phong_cone(double roughness);
+
+/* max(roughness^2, 1e-3): a lobe integrated by quadrature (the specular-
+ * occlusion LUT): below it, cos theta_h near 1 leaves D with fewer than ~10
+ * significant digits, and the lobe (width ~2e-3 rad) is a mirror for any
+ * table. */
+double ggx_alpha_tabulated(double roughness);
 
 /* D(m) given cos theta_m = n.m; 0 for n.m <= 0. */
 double ggx_ndf(double cos_m, double alpha);

@@ -40,10 +40,8 @@ const char *so_lut_axes_description(so_lut_axes axes)
                  "k: t = r, perceptual roughness in [0, 1] (GGX alpha = r^2)";
 }
 
-/* alpha >= 1e-3: below that, cos theta_h near 1 leaves D with fewer than
- * ~10 significant digits, and the lobe (width ~2e-3 rad) is a mirror for
- * any table. */
-static double lobe_alpha(double roughness) { return fmax(roughness * roughness, 1e-3); }
+/* alpha >= 1e-3 (core/ggx.h says why). */
+static double lobe_alpha(double roughness) { return ggx_alpha_tabulated(roughness); }
 
 double so_lobe_value(so_lobe lobe, double c, double roughness)
 {

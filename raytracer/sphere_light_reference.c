@@ -32,8 +32,6 @@ sphere_light_config sphere_light_config_near_mirror(double n_dot_v, double delta
     return sphere_light_config_make(n_dot_v, theta, phi, sin_sigma, roughness);
 }
 
-double sphere_light_normal_illuminance(double sin_sigma) { return M_PI * sin_sigma * sin_sigma; }
-
 /* Mean and sum of squared deviations of one estimator (Welford's update:
  * no cancellation when the variance is tiny next to the mean, as for a
  * Lambert plane under a small light). */

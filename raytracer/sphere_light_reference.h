@@ -21,6 +21,7 @@
 
 #include <stdint.h>
 
+#include "core/sphere_light_units.h"
 #include "core/vec3.h"
 
 /* One configuration, in the local frame of the surface (n = +z). */
@@ -64,9 +65,9 @@ void sphere_light_mis_sample(const sphere_light_config *c, const float u_cap[2],
 void sphere_light_reference(const sphere_light_config *c, uint32_t samples, uint32_t seed,
                             sphere_light_estimate *out);
 
-/* pi sin^2(sigma): the illuminance of the sphere at normal incidence per
- * unit radiance, which the approximations are normalised to. */
-double sphere_light_normal_illuminance(double sin_sigma);
+/* sphere_light_normal_illuminance: pi sin^2(sigma), the illuminance of the
+ * sphere at normal incidence per unit radiance, which the approximations are
+ * normalised to (core/sphere_light_units.h). */
 
 /* ---- The maximum of (N.H)^2 over the light, by brute force ----
  * The reference for GetNoHSquared (realtime/sphere_light.h): plain double

@@ -6,6 +6,7 @@
 
 #include <math.h>
 
+#include "core/ggx.h"
 #include "core/phong.h"
 #include "core/spherical_caps.h"
 #include "core/vec3.h" /* M_PI */
@@ -29,7 +30,7 @@ const char *so_aperture_name(so_aperture_mapping m)
 
 double so_reflection_cos_aperture(so_aperture_mapping m, double roughness, double u)
 {
-    double alpha = fmax(roughness * roughness, 1e-4), p = so_phong_exponent(alpha);
+    double alpha = ggx_alpha_phong_cone(roughness), p = so_phong_exponent(alpha);
     switch (m) {
     case SO_APERTURE_DROBOT: return cos(fmin(M_PI, 2.0 * sqrt(2.0 / (p + 2.0))));
     case SO_APERTURE_ULUDAG: return pow(0.244, 1.0 / (p + 1.0));

@@ -27,142 +27,62 @@
  * vectors, and (N.H)^2 against the rotated light vector. */
 #include "realtime/sphere_light.h"
 
-#include <float.h>
-#include <math.h>
-
-#include "core/fresnel.h"
-#include "core/ggx.h"
-
-/* A shader's max and saturate are one instruction each; C's fmaxf/fminf
- * are library calls (their NaN rules), which would distort the cost
- * measured by `gtlab bench sphere-light`. */
-static inline float max_float(float a, float b) { return a > b ? a : b; }
-static inline float saturate(float x) { return x < 0.0f ? 0.0f : x > 1.0f ? 1.0f : x; }
-
-/* The steps are always inlined into the two forms a shader would write
- * (sphere_noh_squared_karis, _decima), so each is one straight function
- * whose instructions can be counted, as in the talk's comparison. */
-#define RIM_INLINE static inline __attribute__((always_inline))
-
-RIM_INLINE int rim_setup(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l, sphere_rim *rim)
-{
-    float radius_cos = 1.0f / sqrtf(1.0f + radius_tan * radius_tan);
-    /* R = 2 (N.V) N - V, so R.lc = 2 (N.lc)(N.V) - V.lc. */
-    float r_dot_l = 2.0f * n_dot_l * n_dot_v - v_dot_l;
-    if (r_dot_l >= radius_cos)
-        return 1;
-    /* s / |R - (R.lc) lc| scales R - (R.lc) lc to s T. The clamp only keeps
-     * R = -lc (T undefined: the light's centre is then below the horizon)
-     * from giving NaN. */
-    float s_over_len_t = radius_cos * radius_tan / sqrtf(max_float(1.0f - r_dot_l * r_dot_l, FLT_MIN));
-    rim->no_t = s_over_len_t * (n_dot_v - r_dot_l * n_dot_l);                  /* N.R = N.V */
-    rim->vo_t = s_over_len_t * (2.0f * n_dot_v * n_dot_v - 1.0f - r_dot_l * v_dot_l); /* V.R = 2 (N.V)^2 - 1 */
-    /* |det(N, lc, V)| = sqrt of the Gram determinant; B = T x lc up to sign
-     * has N.B = |det| / |R - (R.lc) lc| and V.B = 2 (N.V) N.B. */
-    float triple = sqrtf(saturate(1.0f - n_dot_l * n_dot_l - n_dot_v * n_dot_v - v_dot_l * v_dot_l +
-                                  2.0f * n_dot_l * n_dot_v * v_dot_l));
-    rim->no_b = s_over_len_t * triple;
-    rim->vo_b = s_over_len_t * (2.0f * triple * n_dot_v);
-    rim->no_c = n_dot_l * radius_cos + n_dot_v;
-    rim->vo_c = v_dot_l * radius_cos + 1.0f;
-    return 0;
-}
-
-RIM_INLINE void rim_newton_step(const sphere_rim *rim, float *num, float *den)
-{
-    float n0 = rim->no_c + rim->no_t, d0 = rim->vo_c + rim->vo_t;
-    float p = rim->no_b * d0, q = n0 * d0, s = rim->vo_b * n0;
-    *num = q * (-0.5f * p + 0.25f * s);
-    *den = p * p + s * (s - 2.0f * p) + n0 * (rim->no_c * d0 * d0 + q * (-0.5f * (d0 + rim->vo_c)));
-}
-
-RIM_INLINE void rim_rotate(sphere_rim *rim, float num, float den)
-{
-    /* cos(phi) = (1 - x^2)/(1 + x^2), sin(phi) = 2x/(1 + x^2), x = num/den,
-     * without dividing by den (which may be 0). */
-    float len2 = num * num + den * den;
-    if (!(len2 > 0.0f))
-        return; /* 0/0: no direction to move (a shader would produce NaN) */
-    float two_x = 2.0f * num / len2;
-    float sin_phi = two_x * den, cos_phi = 1.0f - two_x * num;
-    float no_t = rim->no_t, vo_t = rim->vo_t;
-    rim->no_t = cos_phi * no_t + sin_phi * rim->no_b;
-    rim->vo_t = cos_phi * vo_t + sin_phi * rim->vo_b;
-    rim->no_b = cos_phi * rim->no_b - sin_phi * no_t;
-    rim->vo_b = cos_phi * rim->vo_b - sin_phi * vo_t;
-}
-
-RIM_INLINE float rim_noh_squared(const sphere_rim *rim)
-{
-    float no_h = rim->no_c + rim->no_t;             /* N.(L + V) */
-    float h_dot_h = 2.0f * (rim->vo_c + rim->vo_t); /* |L + V|^2 */
-    return max_float(0.0f, no_h * no_h / h_dot_h);
-}
+#include "core/frame.h"
+#include "core/sphere_light_units.h"
+#include "realtime/sphere_light_c.h"
+#include "realtime/sphere_light.inc"
 
 int sphere_rim_setup(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l, sphere_rim *rim)
 {
-    return rim_setup(radius_tan, n_dot_l, n_dot_v, v_dot_l, rim);
+    if (sl_r_inside_light(radius_tan, n_dot_l, n_dot_v, v_dot_l))
+        return 1;
+    *rim = sl_rim_setup(radius_tan, n_dot_l, n_dot_v, v_dot_l);
+    return 0;
 }
 
-void sphere_rim_newton_step(const sphere_rim *rim, float *num, float *den) { rim_newton_step(rim, num, den); }
+void sphere_rim_newton_step(const sphere_rim *rim, float *num, float *den)
+{
+    sphere_rim_step x1 = sl_rim_newton_step(*rim);
+    *num = x1.num, *den = x1.den;
+}
 
-void sphere_rim_rotate(sphere_rim *rim, float num, float den) { rim_rotate(rim, num, den); }
+void sphere_rim_rotate(sphere_rim *rim, float num, float den)
+{
+    sphere_rim_step x1 = {num, den};
+    *rim = sl_rim_rotate(*rim, x1);
+}
 
 float sphere_noh_squared(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l, int newton_steps)
 {
-    sphere_rim rim;
-    if (rim_setup(radius_tan, n_dot_l, n_dot_v, v_dot_l, &rim))
-        return 1.0f;
-    for (int i = 0; i < newton_steps; ++i) {
-        float num, den;
-        rim_newton_step(&rim, &num, &den);
-        rim_rotate(&rim, num, den);
-    }
-    return rim_noh_squared(&rim);
+    return sl_noh_squared(radius_tan, n_dot_l, n_dot_v, v_dot_l, newton_steps, false);
 }
 
 float sphere_noh_squared_karis(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l)
 {
-    sphere_rim rim;
-    if (rim_setup(radius_tan, n_dot_l, n_dot_v, v_dot_l, &rim))
-        return 1.0f;
-    return rim_noh_squared(&rim);
+    return sl_noh_squared(radius_tan, n_dot_l, n_dot_v, v_dot_l, 0, false);
 }
 
 float sphere_noh_squared_decima(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l)
 {
-    sphere_rim rim;
-    if (rim_setup(radius_tan, n_dot_l, n_dot_v, v_dot_l, &rim))
-        return 1.0f;
-    float num, den;
-    rim_newton_step(&rim, &num, &den);
-    rim_rotate(&rim, num, den);
-    return rim_noh_squared(&rim);
+    return sl_noh_squared(radius_tan, n_dot_l, n_dot_v, v_dot_l, 1, false);
 }
 
 float sphere_noh_squared_guarded(float radius_tan, float n_dot_l, float n_dot_v, float v_dot_l)
 {
-    sphere_rim rim;
-    if (rim_setup(radius_tan, n_dot_l, n_dot_v, v_dot_l, &rim))
-        return 1.0f;
-    float num, den;
-    rim_newton_step(&rim, &num, &den);
-    if (den < 0.0f) /* den = (q^2/8) f''(0)/f(0) */
-        rim_rotate(&rim, num, den);
-    return rim_noh_squared(&rim);
+    return sl_noh_squared(radius_tan, n_dot_l, n_dot_v, v_dot_l, 1, true);
 }
 
 vec3 karis_sphere_point(vec3 r, vec3 lc, float sin_sigma)
 {
     vec3 centre_to_ray = v3_sub(v3_scale(r, v3_dot(lc, r)), lc);
     float len = v3_length(centre_to_ray);
-    float t = len > 0.0f ? saturate(sin_sigma / len) : 0.0f;
+    float t = len > 0.0f ? sl_saturate(sin_sigma / len) : 0.0f;
     return v3_normalize(v3_add(lc, v3_scale(centre_to_ray, t)));
 }
 
 float karis_sphere_normalization(float alpha, float sin_sigma)
 {
-    float widened = saturate(alpha + 0.5f * sin_sigma);
+    float widened = sl_saturate(alpha + 0.5f * sin_sigma);
     float ratio = alpha / widened;
     return ratio * ratio;
 }
@@ -171,7 +91,7 @@ float karis_sphere_ggx(vec3 v, vec3 lc, float sin_sigma, float alpha)
 {
     vec3 r = v3(-v.x, -v.y, v.z); /* reflect(-v, n) with n = +z */
     vec3 l = karis_sphere_point(r, lc, sin_sigma);
-    return karis_sphere_normalization(alpha, sin_sigma) * (float)ggx_brdf(v, l, alpha) * saturate(l.z);
+    return karis_sphere_normalization(alpha, sin_sigma) * (float)ggx_brdf(v, l, alpha) * sl_saturate(l.z);
 }
 
 decima_sphere_constants decima_sphere_published(void)
@@ -180,29 +100,10 @@ decima_sphere_constants decima_sphere_published(void)
     return k;
 }
 
-/* GGX D as a function of (N.H)^2 (the appendix's GetGGXFromNDotHSquared). */
-static float ggx_from_noh_squared(float noh2, float alpha)
-{
-    float a2 = alpha * alpha, t = noh2 * (a2 - 1.0f) + 1.0f;
-    return a2 / ((float)M_PI * t * t);
-}
-
 float decima_sphere_ggx(float n_dot_l, float n_dot_v, float v_dot_l, float l_dot_h, float radius_over_distance,
                         float alpha, float f0, const decima_sphere_constants *k, int newton_steps)
 {
-    if (n_dot_l <= 0.0f || n_dot_v <= 0.0f)
-        return 0.0f;
-    /* "light radius is made smaller for rougher materials" */
-    float radius_tan = fmaxf(k->min_radius_tan, radius_over_distance - k->radius_reduction * alpha);
-    float noh2 = sphere_noh_squared(radius_tan, n_dot_l, n_dot_v, v_dot_l, newton_steps);
-    float density = ggx_from_noh_squared(noh2, alpha);
-    /* visibility = G2 / (4 n.l n.v) */
-    float visibility = (float)(ggx_smith_g2(n_dot_v, n_dot_l, alpha) / (4.0 * (double)n_dot_l * n_dot_v));
-    float brdf = density * visibility * fresnel_schlick(l_dot_h, f0);
-    float a2_ldoth = alpha * alpha * (l_dot_h + k->norm_eps);
-    float normalization =
-        a2_ldoth / (a2_ldoth + k->norm_scale * radius_over_distance * (k->norm_alpha * alpha + radius_over_distance));
-    return normalization * brdf * saturate(n_dot_l);
+    return sl_decima_sphere_ggx(n_dot_l, n_dot_v, v_dot_l, l_dot_h, radius_over_distance, alpha, f0, *k, newton_steps);
 }
 
 float decima_sphere_ggx_local(vec3 v, vec3 lc, float sin_sigma, float alpha, const decima_sphere_constants *k,
@@ -218,7 +119,7 @@ float sphere_illuminance_frostbite(float cos_theta, float sin_sigma)
     float sin_sigma_sq = sin_sigma * sin_sigma;
     /* Whole cap above the horizon (or below it): a point light's cosine law. */
     if (cos_theta * cos_theta > sin_sigma_sq)
-        return (float)M_PI * sin_sigma_sq * saturate(cos_theta);
+        return (float)M_PI * sin_sigma_sq * sl_saturate(cos_theta);
     float sin_theta = sqrtf(fmaxf(0.0f, 1.0f - cos_theta * cos_theta));
     float x = sqrtf(1.0f / sin_sigma_sq - 1.0f); /* cot(sigma) */
     float y = -x * (cos_theta / sin_theta);
@@ -233,5 +134,33 @@ float sphere_illuminance_representative(float cos_theta, float sin_sigma)
     float cos_sigma = sqrtf(fmaxf(0.0f, 1.0f - sin_sigma * sin_sigma));
     /* cos(theta - sigma), or 1 once the cap contains n. */
     float cos_rep = cos_theta >= cos_sigma ? 1.0f : cos_theta * cos_sigma + sin_theta * sin_sigma;
-    return (float)M_PI * sin_sigma * sin_sigma * saturate(cos_rep);
+    return (float)M_PI * sin_sigma * sin_sigma * sl_saturate(cos_rep);
+}
+
+/* One pixel of sphere_light_shade. */
+static float shade_point(vec3 p, vec3 n, float albedo, float roughness, vec3 eye, const sphere_light_source *light,
+                         float f0, const decima_sphere_constants *k)
+{
+    frame f = frame_from_normal(v3_normalize(n));
+    vec3 to_light = v3_sub(light->position, p);
+    float d = v3_length(to_light), sin_sigma = light->radius / d, alpha = (float)ggx_alpha(roughness);
+    vec3 v = frame_to_local(&f, v3_normalize(v3_sub(eye, p))), lc = frame_to_local(&f, v3_scale(to_light, 1.0f / d));
+    if (!(v.z > 0.0f))
+        return 0.0f;
+    float e_perp = (float)sphere_light_normal_illuminance(sin_sigma);
+    float diffuse = albedo / (float)M_PI * sphere_illuminance_frostbite(lc.z, sin_sigma);
+    float l_dot_h = sqrtf(fmaxf(0.0f, 0.5f + 0.5f * v3_dot(v, lc)));
+    float spec = k ? decima_sphere_ggx(lc.z, v.z, v3_dot(v, lc), l_dot_h, sin_sigma, alpha, f0, k, 1)
+                   : karis_sphere_ggx(v, lc, sin_sigma, alpha) * fresnel_schlick(l_dot_h, f0);
+    return light->radiance * (diffuse + e_perp * spec);
+}
+
+void sphere_light_shade(const sphere_light_gbuffer *g, vec3 eye, const sphere_light_source *light, float f0,
+                        const decima_sphere_constants *k, float *out)
+{
+    for (size_t i = 0; i < g->count; ++i) {
+        vec3 p = v3(g->position[0][i], g->position[1][i], g->position[2][i]);
+        vec3 n = v3(g->normal[0][i], g->normal[1][i], g->normal[2][i]);
+        out[i] = g->mask[i] != 0.0f ? shade_point(p, n, g->albedo[i], g->roughness[i], eye, light, f0, k) : 0.0f;
+    }
 }

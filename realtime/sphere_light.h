@@ -11,6 +11,8 @@
 #ifndef GTLAB_REALTIME_SPHERE_LIGHT_H
 #define GTLAB_REALTIME_SPHERE_LIGHT_H
 
+#include <stddef.h>
+
 #include "core/vec3.h"
 
 /* ---- De Carpentier's maximisation of N.H on the rim (Decima, 2017) ---- */
@@ -24,6 +26,11 @@ typedef struct {
     float no_c;       /* cos(sigma) N.lc + N.V: the fixed part of N.(L + V) */
     float vo_c;       /* cos(sigma) V.lc + 1:   the fixed part of 1 + V.L */
 } sphere_rim;
+
+/* A Newton step x1 = num / den on the rim (sphere_rim_newton_step). */
+typedef struct {
+    float num, den;
+} sphere_rim_step;
 
 /* Sets up the rim at phi = 0 (Karis's point: the rim point nearest R) from
  * the talk's inputs, radius_tan = tan(sigma). Returns 1 when R lies inside
@@ -111,5 +118,27 @@ float sphere_illuminance_frostbite(float cos_theta, float sin_sigma);
  * pi sin^2(sigma): pi sin^2(sigma) cos(max(theta - sigma, 0)), 0 once the
  * whole cap is below the horizon. */
 float sphere_illuminance_representative(float cos_theta, float sin_sigma);
+
+/* ---- A G-buffer lit by a sphere light, as a real-time renderer shades it ---- */
+
+typedef struct {
+    vec3 position;
+    float radius, radiance; /* of the sphere; radiance L_e */
+} sphere_light_source;
+
+/* Per-pixel planes (world space): position, shading normal, diffuse albedo,
+ * perceptual roughness, and the mask of covered pixels. */
+typedef struct {
+    const float *position[3], *normal[3], *albedo, *roughness, *mask;
+    size_t count;
+} sphere_light_gbuffer;
+
+/* The radiance towards eye of each covered pixel (0 elsewhere) of a
+ * dielectric lit by the sphere: the exact Lambert part albedo/pi E
+ * (sphere_illuminance_frostbite) plus the specular with Schlick's Fresnel of
+ * f0, by Karis (k == NULL) or by Decima with the constants k (one Newton
+ * step), times E_perp = pi sin^2(sigma) L_e. */
+void sphere_light_shade(const sphere_light_gbuffer *g, vec3 eye, const sphere_light_source *light, float f0,
+                        const decima_sphere_constants *k, float *out);
 
 #endif

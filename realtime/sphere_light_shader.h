@@ -1,0 +1,21 @@
+/* Decima's sphere light for an engine: GetNoHSquared (gtlab's Newton step)
+ * and EvaluateSphericalAreaGGX with given constants, as HLSL or GLSL. The
+ * functions are realtime/sphere_light.inc itself, the text realtime/sphere_light.c
+ * compiles as C, behind a few definitions of the language's dialect: no
+ * formula is written for the shaders alone but the visibility and Fresnel
+ * that C takes from core/ (checked against core/ by the tests). */
+#ifndef GTLAB_REALTIME_SPHERE_LIGHT_SHADER_H
+#define GTLAB_REALTIME_SPHERE_LIGHT_SHADER_H
+
+#include "realtime/sphere_light.h"
+
+typedef enum { SHADER_HLSL, SHADER_GLSL } shader_language;
+
+/* The text of realtime/sphere_light.inc, embedded by the build. */
+extern const char sphere_light_inc_text[];
+
+/* The shader source (malloc'd; NULL if out of memory): a header comment
+ * naming `generator`, the constants k, the dialect and the functions. */
+char *sphere_light_shader_source(shader_language language, const decima_sphere_constants *k, const char *generator);
+
+#endif

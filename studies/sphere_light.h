@@ -1,0 +1,182 @@
+/* GGX sphere lights (the `sphere-light` stage of `gtlab all`; Decima,
+ * SIGGRAPH 2017; Karis 2013): the accuracy of GetNoHSquared against brute
+ * force, the refit of Decima's constants to Monte Carlo references, error
+ * maps of Karis, Decima and Decima refit over (n.v, angular size) and
+ * roughness, scene renders of a glossy floor against the path-traced
+ * reference, the shadows none of them models, and the cost of the Newton
+ * step. The parts are also functions of their own for `gtlab check
+ * sphere-noh`, `gtlab fit sphere-light` and `gtlab bench sphere-light`.
+ *
+ * Writes under <output>/sphere_light: sphere_noh{,_map,_by_nv}.csv,
+ * fit_profile.csv, errors_*.csv, scene_*.exr and the scenes' previews and
+ * heatmaps (PNG). The fit's own files (fits/sphere_light.json, .h, .hlsl,
+ * .glsl) are the caller's to write from the results. */
+#ifndef GTLAB_STUDIES_SPHERE_LIGHT_H
+#define GTLAB_STUDIES_SPHERE_LIGHT_H
+
+#include <stdint.h>
+
+#include "fitters/fit_sphere_light.h"
+#include "studies/study.h"
+
+/* The folder below the output folder. */
+#define SPHERE_LIGHT_DIR "sphere_light"
+
+/* ---- GetNoHSquared against the brute-force maximum of (N.H)^2 ---- */
+
+/* A grid over n.v, the light's elevation and azimuth and its angular size
+ * (tan sigma log-spaced over [1e-3, 1]); rim_steps brute-force angles on the
+ * light's rim, refined by golden-section search. */
+typedef struct {
+    int nv_steps, theta_steps, phi_steps, size_steps;
+    int rim_steps;
+} sphere_noh_sweep;
+
+/* Karis's point (0 Newton steps), 1 and 2 steps, 1 step guarded (taken
+ * only where f''(0) < 0). */
+enum { NOH_KARIS, NOH_STEP1, NOH_STEP2, NOH_GUARDED, NOH_METHODS };
+
+/* One method's shortfall of (N.H)^2 below the maximum, over the
+ * configurations with R outside the light. "Worse"/"better" compare with
+ * the baseline: the previous number of steps, or Karis for the guarded
+ * step (none for Karis itself: has_baseline 0). */
+typedef struct {
+    const char *method, *baseline;
+    int has_baseline;
+    double mean, p99, worst;
+    double share_worse, share_better;
+} sphere_noh_row;
+
+typedef struct {
+    long configurations, r_inside; /* R inside the light: all exact (1) */
+    sphere_noh_row rows[NOH_METHODS];
+} sphere_noh_stats;
+
+/* Runs the sweep and writes DIR/sphere_noh.csv (every configuration),
+ * DIR/sphere_noh_map.csv (over n.v and the light's elevation: the mean gain
+ * of one step over Karis and the share of worse configurations) and
+ * DIR/sphere_noh_by_nv.csv (mean shortfalls against n.v). */
+int sphere_noh_study(const sphere_noh_sweep *sweep, const char *dir, sphere_noh_stats *out, gt_error *e);
+
+/* ---- The refit of Decima's radius reduction and normalisation ---- */
+
+typedef struct {
+    int train, test;     /* configurations fitted and held out */
+    uint32_t mc_samples; /* MIS samples per reference */
+    uint32_t seed;
+    int threads;
+} sphere_fit_settings;
+
+/* A fitted constant beside the talk's value. */
+typedef struct {
+    const char *name;
+    double value, stderr_, published;
+} sphere_fit_constant;
+
+/* A model's errors on the held-out configurations. */
+typedef struct {
+    const char *method, *key;
+    sphere_light_errors errors;
+} sphere_fit_errors_row;
+
+enum { SPHERE_FIT_KARIS, SPHERE_FIT_PUBLISHED, SPHERE_FIT_REFIT, SPHERE_FIT_MODELS };
+
+typedef struct {
+    sphere_light_fit_result fit;
+    sphere_fit_constant constants[SPHERE_FIT_PARAMS];
+    sphere_fit_errors_row held_out[SPHERE_FIT_MODELS];
+    double mean_reference_rel_stderr; /* mean stderr / (reference + floor) of the held-out set */
+    double seconds;
+} sphere_fit_outcome;
+
+/* Configurations drawn from a realistic distribution (roughness 0.05-1,
+ * the sun's size to 30 deg, the light mostly near the mirror direction),
+ * their Monte Carlo references, the fit (fitters/fit_sphere_light.h) and
+ * the errors before and after on held-out configurations. Writes nothing. */
+int sphere_fit_study(const sphere_fit_settings *s, sphere_fit_outcome *out, gt_error *e);
+
+/* ---- Error maps against the parameter-space reference ---- */
+
+/* Each cell: mean |ln((approx + 0.01)/(reference + 0.01))| over
+ * SPHERE_MAP_OFFSETS light positions at 0 to 2 (alpha + sigma) from the
+ * mirror direction. x over [SPHERE_MAP_X_LO, 1], sin(sigma) log-spaced over
+ * [SPHERE_MAP_SIN_LO, SPHERE_MAP_SIN_HI]. */
+#define SPHERE_MAP_OFFSETS 8
+#define SPHERE_MAP_X_LO 0.05
+#define SPHERE_MAP_X_HI 1.0
+#define SPHERE_MAP_SIN_LO 0.00465
+#define SPHERE_MAP_SIN_HI 0.5
+enum { SPHERE_MAPS = 4 };
+
+typedef struct {
+    const char *name, *title, *xlabel; /* file stem (DIR/<name>.csv), title, x axis */
+    int x_is_roughness;                /* x: roughness (else n.v) */
+    double fixed;                      /* the other of roughness / n.v */
+    double karis, decima, refit;       /* means over the map */
+} sphere_map_row;
+
+/* ---- Scene renders ---- */
+
+enum { SPHERE_SCENES = 2, SPHERE_SCENE_APPROX = 3 };
+/* File stems of the approximations: scene_<scene>_<stem>.png. */
+extern const char *const sphere_scene_approx_files[SPHERE_SCENE_APPROX];
+
+/* Floor material of the comparison: grey dielectric, glossy. */
+#define SPHERE_FLOOR_ROUGHNESS 0.25f
+#define SPHERE_FLOOR_ALBEDO 0.5f
+#define SPHERE_F0_DIELECTRIC 0.04f
+
+typedef struct {
+    const char *name, *title;
+    double karis, decima, refit; /* DSSIM against the reference */
+    double noise_floor;          /* DSSIM of the reference's even against odd samples */
+    int width, height;
+} sphere_scene_row;
+
+/* The sphere-on-plane reference with shadows against without. */
+typedef struct {
+    double dssim;           /* shadowed vs unshadowed */
+    double share_darkened;  /* of the visible pixels, losing more than a tenth */
+} sphere_shadow_result;
+
+/* Renders the sun and large-light floor scenes, compares Karis, Decima and
+ * Decima with `refit` per pixel from the reference's G-buffer (the exact
+ * Lambert part in all three), and the shadowed sphere-on-plane. Writes
+ * DIR/scene_<name>.exr, the previews scene_<name>_{reference,karis,...}.png,
+ * heatmaps scene_<name>_<approx>_error.png and scene_shadows_*.png. */
+int sphere_scenes_study(const study_context *ctx, const char *dir, const decima_sphere_constants *refit,
+                        sphere_scene_row rows[SPHERE_SCENES], sphere_shadow_result *shadows, gt_error *e);
+
+/* ---- The cost of the Newton step ---- */
+
+/* x86-64 instructions of the two functions a shader would hard-code,
+ * counted from the disassembly of the running binary (objdump), and time
+ * per call over `count` random configurations (one thread). */
+typedef struct {
+    int instructions_karis, instructions_decima; /* -1 if objdump is unavailable */
+    int calls_karis, calls_decima;               /* call instructions inside them (0: straight code) */
+    double ns_karis, ns_decima;                  /* best of the passes; NaN: out of memory */
+    long count;                                  /* configurations per pass */
+    double share_early_out;                      /* R inside the light: both return 1 at once */
+} sphere_cost;
+
+void sphere_cost_study(long count, int repeats, sphere_cost *out);
+
+/* ---- The whole stage ---- */
+
+typedef struct {
+    sphere_noh_sweep sweep;
+    sphere_noh_stats noh;
+    sphere_fit_settings fit_settings;
+    sphere_fit_outcome fit;
+    int map_size;          /* cells per side */
+    uint32_t map_samples;  /* MIS samples per cell and offset */
+    sphere_map_row maps[SPHERE_MAPS];
+    sphere_scene_row scenes[SPHERE_SCENES];
+    sphere_shadow_result shadows;
+    sphere_cost cost;
+} sphere_light_result;
+
+int sphere_light_study(const study_context *ctx, sphere_light_result *out, gt_error *e);
+
+#endif
