@@ -12,10 +12,7 @@
 /* rays/s, or the ratio to 3 decimals. */
 static void rate_cell(double value, int is_ratio, char *text, size_t size)
 {
-    if (is_ratio)
-        snprintf(text, size, "%.3f", value);
-    else
-        snprintf(text, size, "%.3g", value);
+    snprintf(text, size, is_ratio ? "%.3f" : "%.3g", value);
 }
 
 static void one_thread_cell(const void *row, char *text, size_t size)
