@@ -1,24 +1,51 @@
 /* `gtlab all` stage: ray throughput of the AO reference against raw Embree,
- * measured in this run (the figures of `gtlab bench rays`). */
+ * measured in this run (studies/ray_throughput.h, the figures of `gtlab
+ * bench rays`), rendered into the report and summary.json. */
 #include <stdio.h>
 
 #include "cli/all_stages.h"
-#include "raytracer/ray_throughput.h"
+#include "cli/report_table.h"
+#include "studies/ray_throughput.h"
 
-int all_stage_ray_throughput(all_context *ctx, gt_error *e)
+#define COLUMNS(c) (int)(sizeof(c) / sizeof((c)[0]))
+
+/* rays/s, or the ratio to 3 decimals. */
+static void rate_cell(double value, int is_ratio, char *text, size_t size)
 {
-    const char *spec = "builtin:menger";
-    scene s;
-    if (scene_load(spec, &s, e) != 0)
-        return -1;
-    camera cam;
-    ray_benchmark b;
-    int rc = scene_choose_camera(&s, NULL, 256, 256, &cam, e);
-    if (rc == 0)
-        rc = ray_benchmark_run(&s, &cam, ctx->study.threads, ctx->study.quality == QUALITY_PREVIEW ? 2 : 5, &b, e);
-    scene_free(&s);
-    if (rc != 0)
-        return -1;
+    snprintf(text, size, is_ratio ? "%.3f" : "%.3g", value);
+}
+
+static void one_thread_cell(const void *row, char *text, size_t size)
+{
+    const ray_throughput_row *r = row;
+    rate_cell(r->one_thread, r->is_ratio, text, size);
+}
+
+static void threads_cell(const void *row, char *text, size_t size)
+{
+    const ray_throughput_row *r = row;
+    rate_cell(r->threads, r->is_ratio, text, size);
+}
+
+static const report_column row_columns[] = {
+    REPORT_STRING("rays/s", NULL, ray_throughput_row, name),
+    REPORT_CELL("1 thread", one_thread_cell),
+    REPORT_CELL("threads", threads_cell),
+};
+
+static const report_column summary_columns[] = {
+    REPORT_STRING(NULL, "scene", ray_throughput_result, scene),
+    REPORT_INT(NULL, "threads", ray_throughput_result, threads),
+    REPORT_REAL(NULL, "raw_best_1_thread", NULL, ray_throughput_result, raw_best_1_thread),
+    REPORT_REAL(NULL, "raw_best_threads", NULL, ray_throughput_result, raw_best_threads),
+    REPORT_REAL(NULL, "gtlab_ao_1_thread", NULL, ray_throughput_result, gtlab_ao_1_thread),
+    REPORT_REAL(NULL, "gtlab_ao_threads", NULL, ray_throughput_result, gtlab_ao_threads),
+    REPORT_REAL(NULL, "ratio_threads", NULL, ray_throughput_result, ratio_threads),
+    REPORT_REAL(NULL, "speedup_gtlab", NULL, ray_throughput_result, speedup_gtlab),
+};
+
+static void render_section(all_context *ctx, const ray_throughput_result *r)
+{
     report_heading(ctx->doc, 2, "Ray throughput");
     report_paragraph(ctx->doc,
                      "Occlusion rays per second on %s, the best of several passes: raw Embree calls on a prepared "
@@ -26,40 +53,22 @@ int all_stage_ray_throughput(all_context *ctx, gt_error *e)
                      "cosine- and one uniform-distributed direction — and gtlab's AO reference loop end to end "
                      "at 64 samples per pixel (sampling, ray set-up, Embree, exact accumulation). Same run, "
                      "same machine: 'gtlab bench rays' measures the same.",
-                     spec, b.rays_per_pass);
-    static const char *const headers[3] = {"rays/s", "1 thread", "threads"};
-    report_table_begin(ctx->doc, 3, headers);
-    char cells[3][64];
-    const char *row[3] = {cells[0], cells[1], cells[2]};
-    for (int call = 0; call < RAW_CALL_COUNT; ++call) {
-        snprintf(cells[0], 64, "%s", raw_call_names[call]);
-        snprintf(cells[1], 64, "%.3g", b.raw[0].by_call[call]);
-        snprintf(cells[2], 64, "%.3g", b.raw[1].by_call[call]);
-        report_table_row(ctx->doc, row);
-    }
-    snprintf(cells[0], 64, "gtlab AO reference");
-    snprintf(cells[1], 64, "%.3g", b.gtlab_ao[0]);
-    snprintf(cells[2], 64, "%.3g", b.gtlab_ao[1]);
-    report_table_row(ctx->doc, row);
-    snprintf(cells[0], 64, "ratio gtlab / best raw");
-    snprintf(cells[1], 64, "%.3f", b.gtlab_ao[0] / b.raw[0].best);
-    snprintf(cells[2], 64, "%.3f", b.gtlab_ao[1] / b.raw[1].best);
-    report_table_row(ctx->doc, row);
-    report_table_end(ctx->doc);
-    report_paragraph(ctx->doc, "Speed-up of %d threads over 1: gtlab %.2fx, raw Embree %.2fx.", b.threads,
-                     b.gtlab_ao[1] / b.gtlab_ao[0], b.raw[1].best / b.raw[0].best);
+                     r->scene, r->rays_per_pass);
+    report_rows(ctx->doc, NULL, row_columns, COLUMNS(row_columns), r->rows, sizeof r->rows[0], RAY_THROUGHPUT_ROWS);
+    report_paragraph(ctx->doc, "Speed-up of %d threads over 1: gtlab %.2fx, raw Embree %.2fx.", r->threads,
+                     r->speedup_gtlab, r->speedup_raw);
     report_finding(ctx->doc, "Ray throughput",
                    "the AO reference traces %.3g rays/s on %d threads, %.2f of raw Embree's best on the same rays "
                    "(%s).",
-                   b.gtlab_ao[1], b.threads, b.gtlab_ao[1] / b.raw[1].best, spec);
-    cJSON *o = cJSON_AddObjectToObject(ctx->summary, "ray_throughput");
-    cJSON_AddStringToObject(o, "scene", spec);
-    cJSON_AddNumberToObject(o, "threads", b.threads);
-    cJSON_AddNumberToObject(o, "raw_best_1_thread", b.raw[0].best);
-    cJSON_AddNumberToObject(o, "raw_best_threads", b.raw[1].best);
-    cJSON_AddNumberToObject(o, "gtlab_ao_1_thread", b.gtlab_ao[0]);
-    cJSON_AddNumberToObject(o, "gtlab_ao_threads", b.gtlab_ao[1]);
-    cJSON_AddNumberToObject(o, "ratio_threads", b.gtlab_ao[1] / b.raw[1].best);
-    cJSON_AddNumberToObject(o, "speedup_gtlab", b.gtlab_ao[1] / b.gtlab_ao[0]);
+                   r->gtlab_ao_threads, r->threads, r->ratio_threads, r->scene);
+    report_object(ctx->summary, "ray_throughput", summary_columns, COLUMNS(summary_columns), r);
+}
+
+int all_stage_ray_throughput(all_context *ctx, gt_error *e)
+{
+    ray_throughput_result r;
+    if (ray_throughput_study(&ctx->study, &r, e) != 0)
+        return -1;
+    render_section(ctx, &r);
     return 0;
 }

@@ -1,16 +1,13 @@
 /* gtlab bench fit: the time of a multi-bounce joint fit (a, b, c linear in
  * the albedo) over a million samples through the Ceres bridge, with one
- * residual block per sample against blocks of 1024 (fitters/ceres_bridge.h). */
+ * residual block per sample against blocks of 1024 (fitters/ceres_bridge.h),
+ * measured by studies/multibounce_fit_timing.h. */
 #define _GNU_SOURCE
 #include <getopt.h>
-#include <math.h>
-#include <stdint.h>
 #include <stdio.h>
-#include <string.h>
 
 #include "cli/cli.h"
-#include "core/progress.h"
-#include "fitters/fit_multibounce.h"
+#include "studies/multibounce_fit_timing.h"
 
 static void print_help(void)
 {
@@ -24,31 +21,6 @@ static void print_help(void)
            "\n"
            "  --samples N   samples (default 1000000)\n"
            "  --repeats R   runs per figure (default 1)\n");
-}
-
-/* A uniform number in [-0.5, 0.5) from a hash of i: the synthetic noise. */
-static double hashed_noise(uint64_t i)
-{
-    i = (i ^ (i >> 30)) * 0xBF58476D1CE4E5B9ull;
-    i = (i ^ (i >> 27)) * 0x94D049BB133111EBull;
-    i ^= i >> 31;
-    return (double)(i >> 11) * 0x1p-53 - 0.5;
-}
-
-static int synthesise(multibounce_data *d, long n, gt_error *e)
-{
-    static const float albedos[7] = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.7f, 0.9f};
-    const multibounce_model truth = multibounce_model_jimenez2016(); /* any smooth curve serves a timing */
-    int scene = multibounce_data_scene(d, "synthetic", e);
-    for (long i = 0; i < n; ++i) {
-        int a = multibounce_data_albedo(d, albedos[i % 7], e);
-        double v = ((double)(i / 7) + 0.5) / (double)((n + 6) / 7);
-        double y = gtao_multibounce(&truth, v, albedos[i % 7]) + 0.02 * hashed_noise((uint64_t)i);
-        if (scene < 0 || a < 0 || multibounce_data_push(d, scene, a, (float)v, (float)y, e) != 0)
-            return -1;
-    }
-    multibounce_data_weigh(d);
-    return 0;
 }
 
 int bench_fit(int argc, char **argv)
@@ -70,32 +42,17 @@ int bench_fit(int argc, char **argv)
     if (optind < argc)
         return cli_failf("bench fit", "unexpected argument '%s'", argv[optind]);
     gt_error e;
-    multibounce_data d;
-    multibounce_data_init(&d);
-    if (synthesise(&d, samples, &e) != 0) {
-        multibounce_data_free(&d);
+    multibounce_fit_timing t[MULTIBOUNCE_FIT_TIMINGS];
+    if (multibounce_fit_timing_run(samples, repeats, t, &e) != 0)
         return cli_fail(&e);
-    }
     printf("joint multi-bounce fit, %ld samples, 6 coefficients, 1 thread (solve + covariance)\n\n", samples);
     printf("%-28s %12s %12s %12s\n", "", "total s", "solve s", "iterations");
-    static const int block_sizes[2] = {1, MBFIT_DEFAULT_BLOCK};
-    double best[2] = {INFINITY, INFINITY};
-    for (int b = 0; b < 2; ++b) {
-        multibounce_fit f;
-        for (long r = 0; r < repeats; ++r) {
-            const multibounce_fit_options o = {block_sizes[b], 0};
-            double t0 = seconds_now();
-            if (multibounce_fit_model(&d, 1, &o, &f, &e) != 0) {
-                multibounce_data_free(&d);
-                return cli_fail(&e);
-            }
-            best[b] = fmin(best[b], seconds_now() - t0);
-        }
+    for (int b = 0; b < MULTIBOUNCE_FIT_TIMINGS; ++b) {
         char label[64];
-        snprintf(label, sizeof label, "blocks of %d sample%s", block_sizes[b], block_sizes[b] > 1 ? "s" : "");
-        printf("%-28s %12.3f %12.3f %12d\n", label, best[b], f.solver.seconds, f.solver.iterations);
+        snprintf(label, sizeof label, "blocks of %d sample%s", t[b].block_size, t[b].block_size > 1 ? "s" : "");
+        printf("%-28s %12.3f %12.3f %12d\n", label, t[b].best_seconds, t[b].solve_seconds, t[b].iterations);
     }
-    printf("\nratio (1-sample blocks / %d-sample blocks): %.1f\n", MBFIT_DEFAULT_BLOCK, best[0] / best[1]);
-    multibounce_data_free(&d);
+    printf("\nratio (1-sample blocks / %d-sample blocks): %.1f\n", t[1].block_size,
+           t[0].best_seconds / t[1].best_seconds);
     return EXIT_OK;
 }

@@ -1,0 +1,160 @@
+/* The GTAO multi-bounce refit (Jimenez et al. 2016, "Multiple Bounces" to
+ * "Shader Code"; issue 3), the `multibounce` stage of `gtlab all`.
+ *
+ * References: V'_d = L / rho of a Lambertian surface of albedo rho under a
+ * white dome of radiance 1, every surface of albedo rho, 4 bounces, and the
+ * single-bounce V_d of the same paths, for the built-in scenes (the plane
+ * is left out: V_d = V'_d = 1) at seven grey albedos in one pass per scene.
+ * Fit: `gtlab fit multibounce` on them (fitters/fit_multibounce.h): per
+ * albedo V'_d = ((a V_d + b) V_d + c) V_d, jointly a, b, c linear in rho,
+ * the alternatives, leave-one-scene-out and the jackknife over scenes.
+ * Validation: per scene and albedo, V'_d of the odd-index samples against
+ * V_d alone, the talk's model, ours and ours fitted without the scene, each
+ * fed V_d of the even-index samples (metrics/reference_halves.h), with the
+ * noise floors (the even half of V'_d against the odd half). Performance: a
+ * short multi-bounce benchmark (raytracer/multibounce_throughput.h).
+ *
+ * Writes <output>/multibounce/<scene>.exr and .camera.json, the fit's
+ * <output>/fits/multibounce.{json,h,hlsl,glsl}, and the plot data
+ * <output>/figures/multibounce_{scatter,curves,coefficients}.dat. */
+#ifndef GTLAB_STUDIES_MULTIBOUNCE_H
+#define GTLAB_STUDIES_MULTIBOUNCE_H
+
+#include <stdint.h>
+
+#include "fitters/fit_multibounce.h"
+#include "studies/study.h"
+
+#define MULTIBOUNCE_STUDY_DIR "multibounce" /* the references, below the output folder */
+#define MULTIBOUNCE_FIT_FILE "fits/multibounce.json"
+/* Plot data below <output>/figures (formats: multibounce_plot_data.c). */
+#define MULTIBOUNCE_SCATTER_DATA "multibounce_scatter.dat"
+#define MULTIBOUNCE_CURVES_DATA "multibounce_curves.dat"
+#define MULTIBOUNCE_COEFFICIENTS_DATA "multibounce_coefficients.dat"
+
+enum {
+    MULTIBOUNCE_STUDY_SCENES = 5,
+    MULTIBOUNCE_STUDY_ALBEDOS = 7,
+    MULTIBOUNCE_COEFFICIENTS = 6, /* a0 a1 b0 b1 c0 c1 of the joint linear model */
+    MULTIBOUNCE_STUDY_NAME = 64
+};
+
+/* One scene's render. */
+typedef struct {
+    char scene[MULTIBOUNCE_STUDY_NAME]; /* built-in scene name */
+    double seconds;
+    uint64_t paths, rays;
+} multibounce_render_row;
+
+/* One coefficient of the joint linear model against the talk's. */
+typedef struct {
+    char name[8];                     /* "a0", "a1", ... (multibounce_fit_parameter_name) */
+    int rho_power;                    /* the coefficient multiplies rho^rho_power */
+    double ours, standard_error;      /* Ceres' covariance, pixels taken as independent */
+    double jackknife_se;              /* over scenes */
+    double talk;
+    double talk_minus_ours_jackknife; /* (talk - ours) / jackknife_se */
+} multibounce_coefficient_row;
+
+/* One albedo: its own cubic, and the RMSE (with the max) of each model on its samples. */
+typedef struct {
+    double albedo;
+    double a, se_a, b, se_b, c, se_c; /* the albedo's own cubic and standard errors */
+    double talk_a, talk_b, talk_c;    /* the talk's cubic at this albedo */
+    double rmse_own, rmse_joint, rmse_talk;
+    double fraction_talk_below;       /* weighted fraction where the talk's cubic < V_d - MBFIT_BELOW_MARGIN */
+} multibounce_albedo_row;
+
+/* One held-out scene: the models fitted without it, scored on it (with the
+ * max). The last row of a table is the mean over the scenes (is_mean). */
+typedef struct {
+    char scene[MBFIT_NAME_MAX];       /* the data's scene ("builtin:NAME"), or "mean" */
+    int is_mean;
+    double rmse_linear, rmse_quadratic, rmse_anchored; /* NAN: not determined by the data */
+    double rmse_talk;
+    uint64_t samples;                 /* of the scene; all samples in the mean row */
+} multibounce_heldout_row;
+
+/* One scene and albedo: the reference (odd samples) against each
+ * approximation fed V_d of the even samples, and the noise floors. */
+typedef struct {
+    char scene[MULTIBOUNCE_STUDY_NAME]; /* built-in scene name, or "mean" */
+    double albedo;
+    double noise_floor_dssim, noise_floor_rmse; /* even half of V'_d against the odd half */
+    double dssim_v_d, dssim_talk, dssim_ours, dssim_ours_held_out;
+    double rmse_v_d, rmse_talk, rmse_ours, rmse_ours_held_out;
+} multibounce_validation_row;
+
+/* The joint fit on all the data (weighted; errors with the shader's max unless said). */
+typedef struct {
+    const char *file;              /* MULTIBOUNCE_FIT_FILE, relative to the output folder */
+    uint64_t samples;
+    int scenes, albedos;
+    double rmse_ours, max_error_ours, rmse_talk, max_error_talk;
+    double rmse_talk_without_max, fraction_talk_cubic_below_v_d;
+    int heldout_scenes;            /* scenes held out in turn */
+    double heldout_mean_rmse_linear, heldout_mean_rmse_quadratic, heldout_mean_rmse_anchored,
+        heldout_mean_rmse_talk;
+    const char *chosen;            /* multibounce_joint_names[]: lowest held-out mean */
+    char worst_scene[MBFIT_NAME_MAX]; /* the talk's worst sample */
+    double worst_albedo, worst_v_d, worst_v_prime_d;
+} multibounce_fit_summary;
+
+/* What the findings are made of. */
+typedef struct {
+    int farthest_pixels, farthest_scenes; /* index into coefficients: largest |talk - ours| / (s.e. | jackknife s.e.) */
+    double farthest_pixels_sigmas, farthest_scenes_sigmas;
+    int talk_better_heldout;              /* held-out scenes where the talk's RMSE is lower than ours (linear) */
+    double talk_shortfall_lowest_albedo;  /* multibounce_max_shortfall of the talk's cubic */
+    double talk_shortfall_zero;           /* ... at albedo 0 */
+    double ours_worst_shortfall, ours_worst_shortfall_albedo; /* ours, over the study's albedos */
+    double ours_shortfall_zero;
+    double two_step_gap;                  /* max |joint linear - the talk's two-step lines| over the coefficients */
+} multibounce_findings;
+
+/* A short `gtlab bench multibounce` and the joint fit's own time. */
+typedef struct {
+    const char *scene;
+    int width, height, spp, albedos, channels, threads;
+    double paths_per_s_1_thread, rays_per_s_1_thread, raw_intersect1_rays_per_s_1_thread;
+    double loop_to_raw_ratio;            /* rays_per_s_1_thread / raw_intersect1_rays_per_s_1_thread */
+    double paths_per_s_threads;
+    double one_pass_seconds, separate_renders_seconds, one_pass_speedup;
+    uint64_t fit_samples;
+    int fit_block;
+    double joint_fit_solve_seconds;
+} multibounce_performance;
+
+typedef struct {
+    /* the references */
+    int bounces, spp, width, height;
+    double total_seconds, total_paths, total_rays;
+    multibounce_render_row renders[MULTIBOUNCE_STUDY_SCENES];
+    float albedo_values[MULTIBOUNCE_STUDY_ALBEDOS];
+    /* the fit */
+    multibounce_fit_summary fit;
+    multibounce_coefficient_row coefficients[MULTIBOUNCE_COEFFICIENTS];
+    int albedo_count;
+    multibounce_albedo_row albedos[MBFIT_MAX_ALBEDOS];
+    int heldout_rows;                    /* held-out scenes + the mean row */
+    multibounce_heldout_row heldout[MBFIT_MAX_SCENES + 1];
+    multibounce_findings findings;
+    /* validation: scene-major, then albedo */
+    int validation_count;
+    multibounce_validation_row validation[MULTIBOUNCE_STUDY_SCENES * MULTIBOUNCE_STUDY_ALBEDOS];
+    multibounce_validation_row validation_mean; /* over the rows, scene "mean" */
+    multibounce_performance performance;
+} multibounce_study_result;
+
+int multibounce_study(const study_context *ctx, multibounce_study_result *out, gt_error *e);
+
+/* The fit's rows and findings from an analysis of `d` (multibounce_analyse):
+ * fit, coefficients, albedos, heldout and findings of out; the rest untouched. */
+void multibounce_study_fit_rows(const multibounce_data *d, const multibounce_analysis *a,
+                                multibounce_study_result *out);
+
+/* model(V_d, rho) = gtao_multibounce at the n pixels with mask != 0, 0 in the background. */
+void multibounce_apply_model(const multibounce_model *m, const float *visibility, const float *mask, size_t n,
+                             float albedo, float *out);
+
+#endif

@@ -1,0 +1,30 @@
+/* The parts of studies/multibounce.c kept in their own files: what they
+ * share (the study's working state), the validation and the plot data.
+ * Internal to studies/. */
+#ifndef GTLAB_STUDIES_MULTIBOUNCE_PARTS_H
+#define GTLAB_STUDIES_MULTIBOUNCE_PARTS_H
+
+#include "raytracer/multibounce_integrator.h"
+#include "studies/multibounce.h"
+
+typedef struct {
+    image refs[MULTIBOUNCE_STUDY_SCENES];
+    image halves[MULTIBOUNCE_STUDY_SCENES][2]; /* means of the even- and odd-index samples */
+    int rendered[MULTIBOUNCE_STUDY_SCENES], split[MULTIBOUNCE_STUDY_SCENES];
+    multibounce_plan plan; /* the channel names */
+    multibounce_data data;
+    multibounce_analysis *analysis;
+} multibounce_state;
+
+/* The validation rows of every scene and albedo and their mean
+ * (multibounce_validation.c); scene k is scenes[k], albedo a albedos[a]. */
+int multibounce_validate(const multibounce_state *st, const char *const *scenes, const float *albedos,
+                         multibounce_study_result *out, gt_error *e);
+
+/* MULTIBOUNCE_SCATTER_DATA, MULTIBOUNCE_CURVES_DATA and
+ * MULTIBOUNCE_COEFFICIENTS_DATA into the folder `figures`
+ * (multibounce_plot_data.c). */
+int multibounce_write_plot_data(const multibounce_data *d, const multibounce_analysis *a, const char *figures,
+                                gt_error *e);
+
+#endif

@@ -1,0 +1,46 @@
+#include "studies/ray_throughput.h"
+
+#include <string.h>
+
+/* The table's rows: each raw call, gtlab's AO loop, and their ratio. */
+static void fill_rows(const ray_benchmark *b, ray_throughput_row *rows)
+{
+    for (int call = 0; call < RAW_CALL_COUNT; ++call)
+        rows[call] = (ray_throughput_row){raw_call_names[call], 0, b->raw[0].by_call[call], b->raw[1].by_call[call]};
+    rows[RAW_CALL_COUNT] = (ray_throughput_row){"gtlab AO reference", 0, b->gtlab_ao[0], b->gtlab_ao[1]};
+    rows[RAW_CALL_COUNT + 1] = (ray_throughput_row){"ratio gtlab / best raw", 1, b->gtlab_ao[0] / b->raw[0].best,
+                                                    b->gtlab_ao[1] / b->raw[1].best};
+}
+
+static void fill_result(const ray_benchmark *b, ray_throughput_result *out)
+{
+    out->threads = b->threads;
+    out->rays_per_pass = b->rays_per_pass;
+    fill_rows(b, out->rows);
+    out->raw_best_1_thread = b->raw[0].best;
+    out->raw_best_threads = b->raw[1].best;
+    out->gtlab_ao_1_thread = b->gtlab_ao[0];
+    out->gtlab_ao_threads = b->gtlab_ao[1];
+    out->ratio_threads = b->gtlab_ao[1] / b->raw[1].best;
+    out->speedup_gtlab = b->gtlab_ao[1] / b->gtlab_ao[0];
+    out->speedup_raw = b->raw[1].best / b->raw[0].best;
+}
+
+int ray_throughput_study(const study_context *ctx, ray_throughput_result *out, gt_error *e)
+{
+    memset(out, 0, sizeof *out);
+    out->scene = "builtin:menger";
+    out->repeats = ctx->quality == QUALITY_PREVIEW ? 2 : 5;
+    scene s;
+    if (scene_load(out->scene, &s, e) != 0)
+        return -1;
+    camera cam;
+    ray_benchmark b;
+    int rc = scene_choose_camera(&s, NULL, 256, 256, &cam, e);
+    if (rc == 0)
+        rc = ray_benchmark_run(&s, &cam, ctx->threads, out->repeats, &b, e);
+    scene_free(&s);
+    if (rc == 0)
+        fill_result(&b, out);
+    return rc;
+}

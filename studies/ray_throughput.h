@@ -1,0 +1,35 @@
+/* Ray throughput (the `throughput` stage of `gtlab all`, the figures of
+ * `gtlab bench rays`; raytracer/ray_throughput.h): occlusion rays per second
+ * of raw Embree calls on a prepared array of the very rays the AO reference
+ * traces, against gtlab's AO reference loop end to end at 64 samples per
+ * pixel, on one scene, with 1 and with all threads, the best of several
+ * passes. Writes no file. */
+#ifndef GTLAB_STUDIES_RAY_THROUGHPUT_H
+#define GTLAB_STUDIES_RAY_THROUGHPUT_H
+
+#include "raytracer/ray_throughput.h"
+#include "studies/study.h"
+
+/* One way of tracing the rays: rays/s with 1 thread and with `threads`. */
+typedef struct {
+    const char *name;     /* raw_call_names[], or the AO reference, or the ratio */
+    int is_ratio;         /* 1: the row is gtlab's rays/s over the best raw call's */
+    double one_thread, threads;
+} ray_throughput_row;
+
+enum { RAY_THROUGHPUT_ROWS = RAW_CALL_COUNT + 2 }; /* the raw calls, gtlab, the ratio */
+
+typedef struct {
+    const char *scene;
+    int threads, repeats;
+    long rays_per_pass;
+    ray_throughput_row rows[RAY_THROUGHPUT_ROWS];
+    double raw_best_1_thread, raw_best_threads;
+    double gtlab_ao_1_thread, gtlab_ao_threads;
+    double ratio_threads;                 /* gtlab_ao_threads / raw_best_threads */
+    double speedup_gtlab, speedup_raw;    /* `threads` threads over 1 */
+} ray_throughput_result;
+
+int ray_throughput_study(const study_context *ctx, ray_throughput_result *out, gt_error *e);
+
+#endif
