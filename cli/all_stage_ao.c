@@ -10,6 +10,7 @@
 #include "metrics/ssim.h"
 #include "raytracer/reference_render.h"
 #include "scene/builtin_scenes.h"
+#include "scene/scene_loaders.h"
 
 typedef struct {
     double seconds, rays_per_second, mean_spp, mean_stderr, max_stderr, noise_floor_dssim;

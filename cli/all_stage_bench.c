@@ -4,6 +4,7 @@
 
 #include "cli/all_stages.h"
 #include "raytracer/ray_throughput.h"
+#include "scene/scene_loaders.h"
 
 int all_stage_ray_throughput(all_context *ctx, gt_error *e)
 {

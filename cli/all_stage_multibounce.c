@@ -18,6 +18,7 @@
 #include "metrics/ssim.h"
 #include "raytracer/multibounce_throughput.h"
 #include "raytracer/reference_render.h"
+#include "scene/scene_loaders.h"
 
 /* The plane is left out: V_d = V'_d = 1 everywhere, nothing to fit. */
 static const char *const kScenes[] = {"sphere-on-plane", "corner", "menger", "boxes", "cornell"};

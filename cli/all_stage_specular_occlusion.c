@@ -26,6 +26,7 @@
 #include "raytracer/specular_occlusion_integrator.h"
 #include "realtime/gtao.h"
 #include "scene/builtin_scenes.h"
+#include "scene/scene_loaders.h"
 
 enum { ROUGHNESS_COUNT = 3, SCENE_MAX = 16, LUT_SIZES = 3, DEFINITIONS = 3 };
 /* The reference definitions the aperture is fitted to. */

@@ -20,6 +20,7 @@
 #include "raytracer/reference_render.h"
 #include "raytracer/sphere_light_reference.h"
 #include "realtime/sphere_light.h"
+#include "scene/scene_loaders.h"
 
 #define APPROX 3
 static const char *approx_names[APPROX] = {"Karis", "Decima", "Decima refit"};

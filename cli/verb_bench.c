@@ -8,6 +8,7 @@
 #include "cli/bench_specular_occlusion.h"
 #include "cli/cli.h"
 #include "raytracer/ray_throughput.h"
+#include "scene/scene_loaders.h"
 
 /* Sub-benchmarks with their own options, in their own files. */
 static const struct {
