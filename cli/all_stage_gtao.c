@@ -27,6 +27,7 @@
 #include "realtime/volumetric_obscurance.h"
 #include "scene/builtin_scenes.h"
 #include "core/reference_schema.h"
+#include "scene/scene_loaders.h"
 
 enum { FULL_CYCLE = 24 };   /* 6 temporal rotations x 4 temporal offsets */
 enum { PREVIEW_FRAMES = 6 }; /* one cycle of the rotations, to keep the preview quick */

@@ -27,6 +27,7 @@
 #include "realtime/gtao.h"
 #include "scene/builtin_scenes.h"
 #include "core/reference_schema.h"
+#include "scene/scene_loaders.h"
 
 enum { ROUGHNESS_COUNT = 3, SCENE_MAX = 16, LUT_SIZES = 3, DEFINITIONS = 3 };
 /* The reference definitions the aperture is fitted to. */

@@ -14,6 +14,7 @@
 #include "core/progress.h"
 #include "raytracer/reference_render.h"
 #include "realtime/gtao.h"
+#include "scene/scene_loaders.h"
 
 static void print_help(void)
 {

@@ -9,6 +9,7 @@
 
 #include "cli/cli.h"
 #include "raytracer/multibounce_throughput.h"
+#include "scene/scene_loaders.h"
 
 static void print_help(void)
 {

@@ -9,6 +9,7 @@
 #include "cli/cli.h"
 #include "cli/technique.h"
 #include "raytracer/ray_throughput.h"
+#include "scene/scene_loaders.h"
 
 static void print_help(void)
 {

@@ -10,6 +10,7 @@
 #include "core/atomic_file.h"
 #include "core/exr_io.h"
 #include "raytracer/reference_render.h"
+#include "scene/scene_loaders.h"
 
 static void print_help(void)
 {

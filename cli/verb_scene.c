@@ -9,7 +9,7 @@
 
 #include "cli/cli.h"
 #include "scene/builtin_scenes.h"
-#include "scene/gltf_io.h"
+#include "scene/gltf_writer.h"
 
 static const char list_usage[] =
     "usage: gtlab scene list\n"

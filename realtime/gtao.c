@@ -357,7 +357,7 @@ int gtao_render(const ss_gbuffer *g, const gtao_params *p, float *ao, float *con
 {
     frame_job job = {p, bent != NULL};
     float *out[4] = {ao, job.bent ? bent[0] : NULL, job.bent ? bent[1] : NULL, job.bent ? bent[2] : NULL};
-    if (ss_denoised_frames(g, frame_planes, &job, p->frames, p->denoise, job.bent ? 4 : 1, out) != 0)
+    if (gtao_denoised_frames(g, frame_planes, &job, p->frames, p->denoise, job.bent ? 4 : 1, out) != 0)
         return -1;
     if (job.bent)
         gtao_normalize_directions(g, bent);

@@ -1,8 +1,10 @@
 /* The GTAO talk's spatial and temporal denoisers (seeds/001, "Spatial
- * Denoiser Details", "Temporal Denoiser Details"); see gtao_denoiser.h. */
+ * Denoiser Details", "Temporal Denoiser Details") and the frame loop that
+ * applies them; see gtao_denoiser.h. */
 #include "realtime/gtao_denoiser.h"
 
 #include <math.h>
+#include <stdlib.h>
 
 /* The one-sided depth difference of smaller magnitude: at a silhouette it
  * takes the side on the same surface. */
@@ -60,4 +62,33 @@ void gtao_normalize_directions(const ss_gbuffer *g, float *const *d)
         for (int c = 0; c < 3; ++c)
             d[c][i] *= s;
     }
+}
+
+int gtao_denoised_frames(const ss_gbuffer *g, gtao_frame_fn frame_fn, const void *params, int frames, int denoise,
+                         int planes, float *const *out)
+{
+    size_t n = (size_t)g->width * (size_t)g->height;
+    float *raw = malloc(sizeof *raw * n * (size_t)planes), *filtered = malloc(sizeof *filtered * n);
+    float *raw_planes[4];
+    if (!raw || !filtered || planes > 4) {
+        free(raw);
+        free(filtered);
+        return -1;
+    }
+    for (int c = 0; c < planes; ++c)
+        raw_planes[c] = raw + (size_t)c * n;
+    for (int f = 0; f < (frames > 0 ? frames : 1); ++f) {
+        frame_fn(g, params, f, raw_planes);
+        for (int c = 0; c < planes; ++c) {
+            const float *plane = raw_planes[c];
+            if (denoise) {
+                gtao_spatial_denoise(g, f, plane, filtered);
+                plane = filtered;
+            }
+            gtao_temporal_accumulate(plane, f, n, out[c]);
+        }
+    }
+    free(raw);
+    free(filtered);
+    return 0;
 }

@@ -12,6 +12,7 @@
 #include <stdio.h>
 
 #include "realtime/gtao.h"
+#include "realtime/gtao_denoiser.h"
 
 /* Occlusion of one direction: from the tangent elevation up to the horizon. */
 static float direction_occlusion(const ss_gbuffer *g, const hbao_params *p, int x, int y, float psi, float offset)
@@ -69,7 +70,7 @@ static void frame_planes(const ss_gbuffer *g, const void *params, int frame, flo
 
 int hbao_render(const ss_gbuffer *g, const hbao_params *p, float *ao)
 {
-    return ss_denoised_frames(g, frame_planes, p, p->frames, p->denoise, 1, &ao);
+    return gtao_denoised_frames(g, frame_planes, p, p->frames, p->denoise, 1, &ao);
 }
 
 void hbao_params_text(const hbao_params *p, char *text, size_t size)

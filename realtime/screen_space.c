@@ -1,10 +1,8 @@
 #include "realtime/screen_space.h"
 
 #include <math.h>
-#include <stdlib.h>
 
 #include "core/heightfield_model.h"
-#include "realtime/gtao_denoiser.h"
 #include "core/reference_schema.h"
 
 int ss_gbuffer_from_image(const image *img, const char *what, ss_camera camera, ss_gbuffer *g, gt_error *e)
@@ -82,33 +80,4 @@ float ss_pixels_per_unit(const ss_gbuffer *g, float depth)
 float ss_radius_px(const ss_gbuffer *g, int x, int y, float radius, float max_px)
 {
     return ss_minf(radius * ss_pixels_per_unit(g, g->depth[(long)y * g->width + x]), max_px);
-}
-
-int ss_denoised_frames(const ss_gbuffer *g, ss_frame_fn frame_fn, const void *params, int frames, int denoise,
-                       int planes, float *const *out)
-{
-    size_t n = (size_t)g->width * (size_t)g->height;
-    float *raw = malloc(sizeof *raw * n * (size_t)planes), *filtered = malloc(sizeof *filtered * n);
-    float *raw_planes[4];
-    if (!raw || !filtered || planes > 4) {
-        free(raw);
-        free(filtered);
-        return -1;
-    }
-    for (int c = 0; c < planes; ++c)
-        raw_planes[c] = raw + (size_t)c * n;
-    for (int f = 0; f < (frames > 0 ? frames : 1); ++f) {
-        frame_fn(g, params, f, raw_planes);
-        for (int c = 0; c < planes; ++c) {
-            const float *plane = raw_planes[c];
-            if (denoise) {
-                gtao_spatial_denoise(g, f, plane, filtered);
-                plane = filtered;
-            }
-            gtao_temporal_accumulate(plane, f, n, out[c]);
-        }
-    }
-    free(raw);
-    free(filtered);
-    return 0;
 }

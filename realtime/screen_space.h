@@ -71,12 +71,4 @@ float ss_pixels_per_unit(const ss_gbuffer *g, float depth);
  * max_px (the talk's guard against cache thrashing on near objects). */
 float ss_radius_px(const ss_gbuffer *g, int x, int y, float radius, float max_px);
 
-/* The frame loop every technique shares: `frames` frames of `frame_fn`
- * (writing `planes` planes), each through the 4x4 bilateral denoiser if
- * `denoise`, averaged into out[0..planes-1] (realtime/gtao_denoiser.h).
- * Returns 0, or -1 when out of memory. */
-typedef void (*ss_frame_fn)(const ss_gbuffer *g, const void *params, int frame, float *const *planes);
-int ss_denoised_frames(const ss_gbuffer *g, ss_frame_fn frame_fn, const void *params, int frames, int denoise,
-                       int planes, float *const *out);
-
 #endif

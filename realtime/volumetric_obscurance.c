@@ -6,6 +6,7 @@
 #include <stdio.h>
 
 #include "realtime/gtao.h"
+#include "realtime/gtao_denoiser.h"
 
 /* Line sample at disc point (ox, oy) (units of the sphere radius): the
  * length of the sphere's chord along the view axis that lies behind the
@@ -57,7 +58,7 @@ static void frame_planes(const ss_gbuffer *g, const void *params, int frame, flo
 
 int vo_render(const ss_gbuffer *g, const vo_params *p, float *ao)
 {
-    return ss_denoised_frames(g, frame_planes, p, p->frames, p->denoise, 1, &ao);
+    return gtao_denoised_frames(g, frame_planes, p, p->frames, p->denoise, 1, &ao);
 }
 
 void vo_params_text(const vo_params *p, char *text, size_t size)

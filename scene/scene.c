@@ -4,9 +4,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "scene/builtin_scenes.h"
-#include "scene/gltf_io.h"
-
 scene_material scene_default_material(void)
 {
     scene_material m = {{1.0f, 1.0f, 1.0f, 1.0f}, -1, 1.0f, 1.0f, -1};
@@ -159,15 +156,4 @@ int scene_choose_camera(const scene *s, const char *camera_json_path, int width,
         cam->height = height;
     }
     return camera_validate(cam, camera_json_path ? camera_json_path : s->name, e);
-}
-
-int scene_load(const char *spec, scene *s, gt_error *e)
-{
-    memset(s, 0, sizeof *s);
-    int rc = strncmp(spec, "builtin:", 8) == 0 ? builtin_scene_build(spec + 8, s, e) : gltf_load(spec, s, e);
-    if (rc == 0)
-        rc = scene_validate(s, spec, e);
-    if (rc != 0)
-        scene_free(s);
-    return rc;
 }

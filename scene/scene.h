@@ -1,7 +1,8 @@
 /* The plain C scene every renderer reads: triangle meshes already in world
  * space (node transforms applied), glTF metallic-roughness materials, 8-bit
- * textures, and an optional camera. Filled by the glTF loader or by a built-in
- * scene; written back to .glb by the glTF writer. */
+ * textures, and an optional camera. Filled by the glTF reader or by a built-in
+ * scene, chosen by scene_load (scene_loaders.h); written back to .glb by the
+ * glTF writer (gltf_writer.h). This file knows no file format. */
 #ifndef GTLAB_SCENE_SCENE_H
 #define GTLAB_SCENE_SCENE_H
 
@@ -68,8 +69,5 @@ void scene_free(scene *s);
  * camera's aspect ratio. */
 int scene_choose_camera(const scene *s, const char *camera_json_path, int width, int height, camera *cam,
                         gt_error *e);
-
-/* Loads "builtin:NAME" (see builtin_scenes.h) or a .gltf/.glb file. */
-int scene_load(const char *spec, scene *s, gt_error *e);
 
 #endif

@@ -9,6 +9,7 @@
 #include "core/reference_schema.h"
 #include "metrics/ssim.h"
 #include "raytracer/reference_render.h"
+#include "scene/scene_loaders.h"
 #include "scene/builtin_scenes.h"
 
 /* Samples, standard errors and throughput over the covered pixels. */

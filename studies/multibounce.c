@@ -9,6 +9,7 @@
 #include "metrics/reference_halves.h"
 #include "raytracer/multibounce_throughput.h"
 #include "raytracer/reference_render.h"
+#include "scene/scene_loaders.h"
 #include "studies/multibounce_parts.h"
 
 /* The plane is left out: V_d = V'_d = 1 everywhere, nothing to fit. */

@@ -2,6 +2,8 @@
 
 #include <string.h>
 
+#include "scene/scene_loaders.h"
+
 /* The table's rows: each raw call, gtlab's AO loop, and their ratio. */
 static void fill_rows(const ray_benchmark *b, ray_throughput_row *rows)
 {

@@ -16,6 +16,7 @@
 #include "core/reference_schema.h"
 #include "metrics/ssim.h"
 #include "raytracer/reference_render.h"
+#include "scene/scene_loaders.h"
 #include "realtime/sphere_light.h"
 #include "studies/sphere_light.h"
 

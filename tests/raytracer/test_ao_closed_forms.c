@@ -13,6 +13,7 @@
 
 #include "raytracer/reference_render.h"
 #include "core/hemisphere_sampling.h"
+#include "scene/scene_loaders.h"
 #include "tests/check.h"
 
 static image render(const char *spec, const camera *cam_override, int size, int spp, float max_distance,

@@ -21,6 +21,7 @@
 #include "core/hemisphere_sampling.h"
 #include "raytracer/reference_merge.h"
 #include "raytracer/reference_render.h"
+#include "scene/scene_loaders.h"
 #include "tests/check.h"
 #include "tests/raytracer/closed_box.h"
 #include "core/reference_schema.h"

@@ -8,6 +8,7 @@
 #include "core/exr_io.h"
 #include "raytracer/reference_merge.h"
 #include "raytracer/reference_render.h"
+#include "scene/scene_loaders.h"
 #include "tests/check.h"
 #include "core/reference_schema.h"
 

@@ -27,6 +27,7 @@
 #include "core/sobol.h"
 #include "raytracer/embree_scene.h"
 #include "raytracer/reference_render.h"
+#include "scene/scene_loaders.h"
 #include "tests/check.h"
 #include "tests/raytracer/closed_box.h"
 

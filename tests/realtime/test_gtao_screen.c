@@ -12,6 +12,7 @@
 #include "realtime/horizon_integrator.h"
 #include "realtime/volumetric_obscurance.h"
 #include "scene/builtin_scenes.h"
+#include "scene/scene_loaders.h"
 #include "tests/check.h"
 
 /* A G-buffer rendered by the reference code (depth, normals, mask), with the

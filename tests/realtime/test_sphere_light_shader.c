@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../check.h"
+#include "tests/check.h"
 #include "realtime/sphere_light.h"
 #include "realtime/sphere_light_shader.h"
 

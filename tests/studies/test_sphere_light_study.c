@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <sys/stat.h>
 
-#include "../check.h"
+#include "tests/check.h"
 #include "studies/sphere_light.h"
 
 static void test_noh_sweep(const char *dir)

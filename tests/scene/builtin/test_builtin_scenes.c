@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "scene/builtin_scenes.h"
+#include "scene/scene_loaders.h"
 #include "tests/check.h"
 #include "tests/scene/builtin/mesh_math.h"
 
