@@ -8,7 +8,6 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
-#include <string.h>
 
 #include "cli/all_stages.h"
 #include "cli/fit_aperture.h"

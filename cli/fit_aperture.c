@@ -6,7 +6,6 @@
 
 #include <cjson/cJSON.h>
 #include <getopt.h>
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,8 +14,8 @@
 #include "cli/gnuplot_plot.h"
 #include "core/atomic_file.h"
 #include "core/exr_io.h"
-#include "studies/specular_occlusion_inputs.h"
 #include "core/reference_schema.h"
+#include "studies/specular_occlusion_inputs.h"
 
 enum { MAX_CASES = 32 };
 
