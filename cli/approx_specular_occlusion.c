@@ -1,6 +1,6 @@
 /* gtlab approx specular-occlusion: every specular-occlusion variant of the
  * GTSO talk (cone/cone, cone/lobe LUT) and its baselines on a G-buffer and
- * an AO / bent-normal image (cli/specular_occlusion_approx.h). */
+ * an AO / bent-normal image (realtime/specular_occlusion_screen.h). */
 #define _GNU_SOURCE
 #include <getopt.h>
 #include <omp.h>
@@ -8,9 +8,9 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "cli/specular_occlusion_approx.h"
 #include "core/exr_io.h"
 #include "core/reference_schema.h"
+#include "studies/specular_occlusion_inputs.h"
 
 static void print_help(void)
 {

@@ -1,12 +1,11 @@
 /* gtlab fit aperture: the GTSO talk's gloss-to-aperture parameter u, found
  * as the talk did, by DSSIM of cone/cone specular-occlusion images against
- * Monte Carlo references (cli/fit_aperture.h describes the search). */
+ * Monte Carlo references (fitters/aperture_fit.h describes the search). */
 #define _GNU_SOURCE
 #include "cli/fit_aperture.h"
 
 #include <cjson/cJSON.h>
 #include <getopt.h>
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,106 +14,8 @@
 #include "cli/gnuplot_plot.h"
 #include "core/atomic_file.h"
 #include "core/exr_io.h"
-#include "metrics/ssim.h"
 #include "core/reference_schema.h"
-
-static const double SCAN_LO = -12.0, SCAN_HI = -0.05, SCAN_STEP = 0.125, GOLDEN_TOLERANCE = 1e-3;
-
-int aperture_case_init(aperture_case *c, const image *reference, const char *what_reference, const image *ao,
-                       const char *what_ao, const char *channel, gt_error *e)
-{
-    memset(c, 0, sizeof *c);
-    snprintf(c->name, sizeof c->name, "%s", what_reference);
-    if (!(c->reference = image_channel_data(reference, channel)))
-        return gt_error_set(e, what_reference, "no channel %s (not a specular-occlusion reference?)", channel);
-    return so_inputs_from_images(reference, what_reference, ao, what_ao, so_reference_roughness(reference), &c->inputs, e);
-}
-
-void aperture_case_free(aperture_case *c) { so_inputs_free(&c->inputs); }
-
-typedef struct {
-    const aperture_case *cases;
-    int count, exact;
-    float *scratch;
-    aperture_fit *fit;
-} objective;
-
-static double mean_dssim(objective *o, double log10_u, gt_error *e, int *failed)
-{
-    so_variant v = {o->exact ? SO_VARIANT_CONE_EXACT : SO_VARIANT_CONE_OAT, SO_APERTURE_PHONG_U, pow(10.0, log10_u),
-                    SO_AO_COSINE, NULL};
-    double total = 0.0;
-    for (int i = 0; i < o->count; ++i) {
-        const so_pixel_inputs *in = &o->cases[i].inputs;
-        so_approx_evaluate(in, &v, o->scratch);
-        ssim_result r;
-        if (ssim_compute(o->cases[i].reference, o->scratch, in->mask, in->width, in->height, o->cases[i].name, NULL,
-                         &r, e) != 0) {
-            *failed = 1;
-            return NAN;
-        }
-        total += r.dssim;
-    }
-    o->fit->evaluations++;
-    return total / o->count;
-}
-
-static void add_point(aperture_fit *fit, double log10_u, double dssim)
-{
-    if (fit->curve_count >= APERTURE_CURVE_MAX)
-        return;
-    int i = fit->curve_count++;
-    double u = pow(10.0, log10_u);
-    while (i > 0 && fit->curve_u[i - 1] > u) {
-        fit->curve_u[i] = fit->curve_u[i - 1], fit->curve_dssim[i] = fit->curve_dssim[i - 1];
-        --i;
-    }
-    fit->curve_u[i] = u, fit->curve_dssim[i] = dssim;
-}
-
-int aperture_fit_run(const aperture_case *cases, int count, int exact, aperture_fit *out, gt_error *e)
-{
-    memset(out, 0, sizeof *out);
-    size_t largest = 0;
-    for (int i = 0; i < count; ++i)
-        largest = fmax(largest, (size_t)cases[i].inputs.width * cases[i].inputs.height);
-    objective o = {cases, count, exact, malloc(sizeof(float) * largest), out};
-    if (!o.scratch)
-        return gt_error_set(e, "fit aperture", "out of memory");
-    int failed = 0, best = 0, scan_count = (int)floor((SCAN_HI - SCAN_LO) / SCAN_STEP + 1e-9) + 1;
-    double scan[APERTURE_CURVE_MAX];
-    for (int i = 0; i < scan_count && !failed; ++i) {
-        scan[i] = mean_dssim(&o, SCAN_LO + i * SCAN_STEP, e, &failed);
-        add_point(out, SCAN_LO + i * SCAN_STEP, scan[i]);
-        if (scan[i] < scan[best])
-            best = i;
-    }
-    /* golden section in the bracket around the scan's minimum */
-    double a = SCAN_LO + fmax(best - 1, 0) * SCAN_STEP, b = SCAN_LO + fmin(best + 1, scan_count - 1) * SCAN_STEP;
-    const double ratio = 0.5 * (sqrt(5.0) - 1.0);
-    double x1 = b - ratio * (b - a), x2 = a + ratio * (b - a);
-    double f1 = failed ? 0 : mean_dssim(&o, x1, e, &failed), f2 = failed ? 0 : mean_dssim(&o, x2, e, &failed);
-    while (!failed && b - a > GOLDEN_TOLERANCE) {
-        if (f1 <= f2) {
-            b = x2, x2 = x1, f2 = f1, x1 = b - ratio * (b - a);
-            f1 = mean_dssim(&o, x1, e, &failed);
-        } else {
-            a = x1, x1 = x2, f1 = f2, x2 = a + ratio * (b - a);
-            f2 = mean_dssim(&o, x2, e, &failed);
-        }
-    }
-    if (!failed) {
-        double x = f1 <= f2 ? x1 : x2, f = fmin(f1, f2);
-        if (scan[best] < f) /* the scan point itself was better than the bracket's interior */
-            x = SCAN_LO + best * SCAN_STEP, f = scan[best];
-        out->log10_u = x, out->u = pow(10.0, x), out->dssim = f;
-        out->dssim_at_published = mean_dssim(&o, -2.0, e, &failed);
-    }
-    free(o.scratch);
-    return failed ? -1 : 0;
-}
-
-/* ---- the verb ------------------------------------------------------------------ */
+#include "studies/specular_occlusion_inputs.h"
 
 enum { MAX_CASES = 32 };
 
@@ -244,7 +145,7 @@ static int load_cases(const fit_options *o, image *refs, image *aos, aperture_ca
             return -1;
         }
         *loaded = i + 1;
-        if (aperture_case_init(&cases[i], &refs[i], o->references[i], &aos[i], o->aos[i], o->channel, e) != 0)
+        if (aperture_case_from_images(&cases[i], &refs[i], o->references[i], &aos[i], o->aos[i], o->channel, e) != 0)
             return -1;
     }
     return 0;

@@ -1,0 +1,45 @@
+/* The gloss-to-aperture fit of the GTSO talk (slide "Calculating Aperture
+ * from Gloss"): the reflection cone's aperture a_s = arccos(u^(1/(p+2)))
+ * (Phong importance sampling, Walter et al. 2007 eq. 31) has one parameter
+ * u, which the talk chose by comparing cone/cone specular-occlusion IMAGES
+ * with the Monte Carlo reference by DSSIM (it found u = 0.01). DSSIM as a
+ * function of u is piecewise and not smooth (SSIM windows, clamping), so
+ * instead of a gradient fit: a scan of log10 u over [-12, -0.05] in steps of
+ * 1/8 decade (which is also the curve reported), then golden-section search
+ * between the scan minimum's neighbours to 1e-3 in log10 u. The objective is
+ * the mean DSSIM over all cases (masked to surfaces).
+ *
+ * The cases are in memory: the screen pass's per-pixel inputs
+ * (realtime/specular_occlusion_screen.h) and the reference V_s of the same
+ * pixels. Building them from reference files is the caller's job
+ * (studies/specular_occlusion_inputs.h). */
+#ifndef GTLAB_FITTERS_APERTURE_FIT_H
+#define GTLAB_FITTERS_APERTURE_FIT_H
+
+#include "core/error.h"
+#include "realtime/specular_occlusion_screen.h"
+
+typedef struct {
+    so_pixel_inputs inputs;
+    const float *reference; /* the reference V_s, one per pixel (not owned) */
+    char name[128];         /* names the case in errors */
+} aperture_case;
+
+/* Frees the case's inputs. */
+void aperture_case_free(aperture_case *c);
+
+enum { APERTURE_CURVE_MAX = 128 };
+
+typedef struct {
+    double u, log10_u, dssim;
+    double dssim_at_published; /* at the talk's u = 0.01, for comparison */
+    int curve_count;
+    double curve_u[APERTURE_CURVE_MAX], curve_dssim[APERTURE_CURVE_MAX]; /* sorted by u */
+    int evaluations;
+} aperture_fit;
+
+/* The search; `exact`: exact cap intersection, else Oat's. Returns 0, or -1
+ * with e (out of memory, or a case SSIM cannot score). */
+int aperture_fit_run(const aperture_case *cases, int count, int exact, aperture_fit *out, gt_error *e);
+
+#endif

@@ -1,0 +1,460 @@
+#include "studies/specular_occlusion.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "studies/gbuffer_input.h"
+#include "core/image_io.h"
+#include "core/mc_film.h"
+#include "core/progress.h"
+#include "core/reference_schema.h"
+#include "metrics/image_error.h"
+#include "metrics/ssim.h"
+#include "raytracer/reference_render.h"
+#include "raytracer/specular_occlusion_integrator.h"
+#include "realtime/gtao.h"
+#include "scene/builtin_scenes.h"
+#include "studies/specular_occlusion_inputs.h"
+
+enum { LUT_SIZES = 3, CASES_MAX = SO_STUDY_MAX_SCENES * SO_STUDY_ROUGHNESSES };
+static const char *const definition_channels[SO_STUDY_DEFINITIONS] = {CH_SPECOCC, CH_SPECOCC_D, CH_SPECOCC_PHONG};
+static const char *const definition_names[SO_STUDY_DEFINITIONS] = {"gtso", "d_only", "phong"};
+static const float roughness_values[SO_STUDY_ROUGHNESSES] = {0.25f, 0.5f, 0.8f};
+static const int lut_sizes[LUT_SIZES] = {16, 32, 64};
+
+/* What the study holds while it runs: the tables the LUT variants read, the
+ * variants themselves, sums over the scenes, and the fit cases (with their
+ * own copy of the reference channel: the reference image is freed). */
+typedef struct {
+    const study_context *ctx;
+    so_study_result *out;
+    char figures[2048];
+    so_lut luts[LUT_SIZES], lut_cosines;
+    so_variant variants[SO_STUDY_MAX_VARIANTS];
+    int heatmaps[SO_STUDY_HEATMAPS];
+    double dssim[SO_STUDY_MAX_VARIANTS][SO_STUDY_ROUGHNESSES], rmse[SO_STUDY_MAX_VARIANTS][SO_STUDY_ROUGHNESSES];
+    double floor_dssim[SO_STUDY_ROUGHNESSES];
+    double split_dssim[2][SO_STUDY_ROUGHNESSES], split_rmse[2][SO_STUDY_ROUGHNESSES], split_floor[SO_STUDY_ROUGHNESSES];
+    aperture_case cases[SO_STUDY_DEFINITIONS][CASES_MAX];
+    float *owned[SO_STUDY_DEFINITIONS][CASES_MAX];
+    int case_count;
+    double samples_per_second_sum;
+    int renders;
+} so_state;
+
+/* ---- the rows ------------------------------------------------------------------ */
+
+int so_study_find(const so_study_result *r, so_variant_kind kind, so_aperture_mapping mapping, int lut_size,
+                  so_lut_axes lut_axes, int on_gtao)
+{
+    for (int i = 0; i < r->variant_count; ++i) {
+        const so_variant_row *v = &r->variants[i];
+        int cone = kind == SO_VARIANT_CONE_EXACT || kind == SO_VARIANT_CONE_OAT, lut = kind == SO_VARIANT_LUT;
+        if (v->kind == kind && v->on_gtao == on_gtao && (!cone || v->mapping == mapping) &&
+            (!lut || (v->lut_size == lut_size && v->lut_axes == lut_axes)))
+            return i;
+    }
+    return -1;
+}
+
+void so_study_heatmap_rows(const so_study_result *r, int rows[SO_STUDY_HEATMAPS])
+{
+    rows[0] = so_study_find(r, SO_VARIANT_AO, 0, 0, 0, 0);
+    rows[1] = so_study_find(r, SO_VARIANT_LAGARDE, 0, 0, 0, 0);
+    rows[2] = so_study_find(r, SO_VARIANT_CONE_EXACT, SO_APERTURE_EXP2_ALPHA, 0, 0, 0);
+    rows[3] = so_study_find(r, SO_VARIANT_LUT, 0, 32, SO_AXES_ANGLES, 0);
+}
+
+/* A variant from its text (so_variant_parse), with its table and input. */
+static void add_variant(so_state *st, const char *text, const so_lut *lut, int on_gtao)
+{
+    so_variant_row *row = &st->out->variants[st->out->variant_count];
+    so_variant *v = &st->variants[st->out->variant_count++];
+    so_variant_parse(text, v);
+    v->lut = lut;
+    row->kind = v->kind, row->mapping = v->mapping, row->weighting = v->weighting, row->on_gtao = on_gtao;
+    row->lut_size = lut ? lut->size : 0, row->lut_axes = lut ? lut->axes : SO_AXES_ANGLES;
+    so_variant_label(v, row->label, sizeof row->label);
+    if (lut && lut->axes == SO_AXES_COSINES)
+        strcat(row->label, "-cosines");
+    if (on_gtao)
+        strcat(row->label, " on GTAO");
+}
+
+/* ao, lagarde, 4 cone-exact, 4 cone-oat, the LUTs (16, 32, [64], 32
+ * cosines), then ao, lagarde, cone-exact:exp2-alpha and lut 32 on GTAO. */
+static void setup_variants(so_state *st)
+{
+    static const char *const cones[] = {"drobot", "uludag", "exp2-alpha", "exp2-perceptual"};
+    add_variant(st, "ao", NULL, 0);
+    add_variant(st, "lagarde", NULL, 0);
+    char text[64];
+    for (int kind = 0; kind < 2; ++kind)
+        for (int m = 0; m < 4; ++m) {
+            snprintf(text, sizeof text, "%s:%s", kind ? "cone-oat" : "cone-exact", cones[m]);
+            add_variant(st, text, NULL, 0);
+        }
+    for (int s = 0; s < LUT_SIZES; ++s)
+        if (st->luts[s].data)
+            add_variant(st, "lut", &st->luts[s], 0);
+    add_variant(st, "lut", &st->lut_cosines, 0);
+    add_variant(st, "ao", NULL, 1);
+    add_variant(st, "lagarde", NULL, 1);
+    add_variant(st, "cone-exact:exp2-alpha", NULL, 1);
+    add_variant(st, "lut", &st->luts[1], 1);
+    so_study_heatmap_rows(st->out, st->heatmaps);
+}
+
+/* ---- the LUTs ------------------------------------------------------------------ */
+
+/* Builds one table into lut and measures it into row. */
+static int build_lut(so_state *st, so_lut *lut, int size, so_lut_axes axes, so_lut_row *row, gt_error *e)
+{
+    double t0 = seconds_now();
+    if (so_lut_build(lut, size, SO_LOBE_GGX, axes, st->ctx->threads) != 0)
+        return gt_error_set(e, "specular-occlusion LUT", "out of memory");
+    row->seconds = seconds_now() - t0;
+    so_lut_interpolation_error(lut, st->out->lut_points, 1u, st->ctx->threads, &row->max_interpolation_error,
+                               &row->rms_interpolation_error);
+    row->size = size, row->axes = axes, row->axes_name = so_lut_axes_name(axes);
+    row->quadrature_error = lut->max_error_estimate;
+    return 0;
+}
+
+/* Every size in both parametrisations; the angles tables and the 32^3
+ * cosines one are kept for the variants. 64^3 takes ~10 s on 2 cores:
+ * production only, one parametrisation. */
+static int build_luts(so_state *st, gt_error *e)
+{
+    int production = st->ctx->quality == QUALITY_PRODUCTION;
+    st->out->lut_points = production ? 20000 : 2000;
+    for (int s = 0; s < LUT_SIZES; ++s)
+        for (int axes = 0; axes < SO_AXES_COUNT; ++axes) {
+            if (lut_sizes[s] == 64 && (axes == SO_AXES_COSINES || !production))
+                continue;
+            so_lut scratch, *lut = axes == SO_AXES_ANGLES ? &st->luts[s] : lut_sizes[s] == 32 ? &st->lut_cosines : &scratch;
+            if (build_lut(st, lut, lut_sizes[s], (so_lut_axes)axes, &st->out->luts[st->out->lut_count++], e) != 0)
+                return -1;
+            if (lut == &scratch)
+                so_lut_free(&scratch);
+        }
+    return 0;
+}
+
+/* ---- scoring ------------------------------------------------------------------- */
+
+/* The noise floor of a ratio channel: DSSIM between the ratios of the even
+ * and of the odd samples' means. */
+static int ratio_noise_floor(const image *ref, const char *what, const char *channel, double *dssim, gt_error *e)
+{
+    mc_film film;
+    if (mc_film_read_channels(ref, what, &film, e) != 0)
+        return -1;
+    image half[2];
+    int rc = 0;
+    for (int h = 0; h < 2; ++h) {
+        if (image_init(&half[h], ref->width, ref->height) != 0 || mc_film_write_half_means(&film, h, &half[h]) != 0 ||
+            specular_occlusion_write_ratios(&half[h]) != 0)
+            rc = gt_error_set(e, what, "out of memory");
+    }
+    const float *mask = image_channel_data(ref, CH_MASK);
+    if (rc == 0) {
+        float *a = image_channel_data(&half[0], channel), *b = image_channel_data(&half[1], channel);
+        for (size_t i = 0; i < image_pixel_count(ref); ++i)
+            if (mask[i] == 0.0f)
+                a[i] = b[i] = 0.0f;
+        ssim_result r;
+        rc = ssim_compute(a, b, mask, ref->width, ref->height, what, NULL, &r, e);
+        *dssim = r.dssim;
+    }
+    image_free(&half[0]);
+    image_free(&half[1]);
+    mc_film_free(&film);
+    return rc;
+}
+
+/* The reference V_s and the |error| heatmaps of the heatmap rows. */
+static int write_heatmaps(const so_state *st, const image *ref, const so_pixel_inputs *in, const char *name, gt_error *e)
+{
+    char path[4096];
+    const float *vs = image_channel_data(ref, CH_SPECOCC);
+    snprintf(path, sizeof path, "%s/specocc_ref_%s.png", st->figures, name);
+    if (image_write_preview(path, &vs, 1, ref->width, ref->height, 1.0f, e) != 0)
+        return -1;
+    size_t n = image_pixel_count(ref);
+    float *approx = malloc(sizeof(float) * n), *err = malloc(sizeof(float) * n);
+    int rc = approx && err ? 0 : gt_error_set(e, name, "out of memory");
+    for (int k = 0; k < SO_STUDY_HEATMAPS && rc == 0; ++k) {
+        so_approx_evaluate(in, &st->variants[st->heatmaps[k]], approx);
+        for (size_t i = 0; i < n; ++i)
+            err[i] = fabsf(approx[i] - vs[i]);
+        snprintf(path, sizeof path, "%s/specocc_err_%s_%d.png", st->figures, name, k);
+        rc = image_write_heatmap(path, err, in->mask, ref->width, ref->height, 0.5f, "inferno", e);
+    }
+    free(approx);
+    free(err);
+    return rc;
+}
+
+/* DSSIM and RMSE of approx against truth over the mask, added to the sums. */
+static int add_scores(const float *truth, const float *approx, const float *mask, int width, int height,
+                      const char *what, double *dssim_sum, double *rmse_sum, gt_error *e)
+{
+    ssim_result s;
+    image_error_stats err;
+    if (ssim_compute(truth, approx, mask, width, height, what, NULL, &s, e) != 0 ||
+        image_error_compute(truth, approx, mask, width, height, what, &err, e) != 0)
+        return -1;
+    *dssim_sum += s.dssim, *rmse_sum += err.rmse;
+    return 0;
+}
+
+/* The talk's two- and three-split approximations against the ground truth
+ * under the sky (channels of the same reference), and the truth's noise floor. */
+static int score_splits(so_state *st, const image *ref, const char *what, int ri, gt_error *e)
+{
+    static const char *const approximations[2] = {CH_SPLIT_TWO, CH_SPLIT_THREE};
+    const float *truth = image_channel_data(ref, CH_SPLIT_TRUTH), *mask = image_channel_data(ref, CH_MASK);
+    for (int k = 0; k < 2; ++k)
+        if (add_scores(truth, image_channel_data(ref, approximations[k]), mask, ref->width, ref->height, what,
+                       &st->split_dssim[k][ri], &st->split_rmse[k][ri], e) != 0)
+            return -1;
+    ssim_result floor;
+    if (ssim_noise_floor(ref, what, CH_SPLIT_TRUTH, mask, &floor, e) != 0)
+        return -1;
+    st->split_floor[ri] += floor.dssim;
+    return 0;
+}
+
+/* The fit cases of one reference, one per definition, each keeping a copy
+ * of its reference channel. */
+static int keep_cases(so_state *st, const image *ref, const image *ao, const char *what, gt_error *e)
+{
+    size_t n = image_pixel_count(ref);
+    for (int d = 0; d < SO_STUDY_DEFINITIONS; ++d) {
+        aperture_case *c = &st->cases[d][st->case_count];
+        if (aperture_case_from_images(c, ref, what, ao, what, definition_channels[d], e) != 0)
+            return -1;
+        if (!(st->owned[d][st->case_count] = malloc(sizeof(float) * n)))
+            return gt_error_set(e, what, "out of memory");
+        memcpy(st->owned[d][st->case_count], c->reference, sizeof(float) * n);
+        c->reference = st->owned[d][st->case_count];
+    }
+    st->case_count++;
+    return 0;
+}
+
+/* Every variant on the reference's inputs or GTAO's, against V_s. */
+static int score_variants(so_state *st, const aperture_case *c, const so_pixel_inputs *on_gtao, const char *what,
+                          int ri, gt_error *e)
+{
+    const so_pixel_inputs *in = &c->inputs;
+    float *approx = malloc(sizeof(float) * (size_t)in->width * in->height);
+    int rc = approx ? 0 : gt_error_set(e, what, "out of memory");
+    for (int v = 0; v < st->out->variant_count && rc == 0; ++v) {
+        so_approx_evaluate(st->out->variants[v].on_gtao ? on_gtao : in, &st->variants[v], approx);
+        rc = add_scores(c->reference, approx, in->mask, in->width, in->height, what, &st->dssim[v][ri],
+                        &st->rmse[v][ri], e);
+    }
+    free(approx);
+    return rc;
+}
+
+/* Scores every variant on one reference, with the AO reference's or GTAO's
+ * AO and bent normal, its noise floor and split integrals; keeps its fit
+ * cases; at r = 0.5 writes the heatmaps. */
+static int score(so_state *st, const image *ref, const image *ao, const image *gtao, const char *what, int ri,
+                 const char *name, gt_error *e)
+{
+    if (keep_cases(st, ref, ao, what, e) != 0)
+        return -1;
+    const aperture_case *c = &st->cases[0][st->case_count - 1];
+    so_pixel_inputs on_gtao;
+    if (so_inputs_from_images(ref, what, gtao, "GTAO", so_reference_roughness(ref), &on_gtao, e) != 0)
+        return -1;
+    int rc = score_variants(st, c, &on_gtao, what, ri, e);
+    so_inputs_free(&on_gtao);
+    double floor = 0.0;
+    if (rc == 0)
+        rc = ratio_noise_floor(ref, what, CH_SPECOCC, &floor, e);
+    st->floor_dssim[ri] += floor;
+    if (rc == 0)
+        rc = score_splits(st, ref, what, ri, e);
+    if (rc == 0 && ri == 1)
+        rc = write_heatmaps(st, ref, &c->inputs, name, e);
+    return rc;
+}
+
+/* ---- the references ------------------------------------------------------------ */
+
+static int render(so_state *st, const scene *s, const char *spec, const camera *cam, reference_quantity q,
+                  float roughness, image *out, gt_error *e)
+{
+    reference_request req = {.quantity = q, .sampling = {.spp = st->out->spp, .seed = 1, .threads = st->ctx->threads},
+                             .normals = NORMAL_SHADING, .max_distance = INFINITY, .roughness = roughness,
+                             .environment = ENVIRONMENT_SKY};
+    render_stats stats;
+    if (reference_render(s, spec, cam, &req, out, &stats, e) != 0)
+        return -1;
+    if (q == QUANTITY_SPECULAR_OCCLUSION && stats.seconds > 0.0) {
+        st->samples_per_second_sum += (double)stats.samples / stats.seconds;
+        st->renders++;
+    }
+    return 0;
+}
+
+/* GTAO's AO of both weightings and bent normal on the AO reference's
+ * G-buffer, as the channels so_inputs_from_images reads: high preset, one
+ * frame, and like the AO reference no radius limit. */
+static int gtao_inputs(const image *ao, const camera *cam, const char *what, image *out, gt_error *e)
+{
+    ss_gbuffer g;
+    if (ss_gbuffer_from_image(ao, what, approx_ss_camera(cam), &g, e) != 0)
+        return -1;
+    if (image_init(out, ao->width, ao->height) != 0)
+        return gt_error_set(e, what, "out of memory");
+    float *cosine = image_add_channel(out, CH_AO), *uniform = image_add_channel(out, CH_AO_UNIFORM);
+    float *bent[3] = {image_add_channel(out, CH_BENT_X), image_add_channel(out, CH_BENT_Y), image_add_channel(out, CH_BENT_Z)};
+    if (!cosine || !uniform || !bent[0] || !bent[1] || !bent[2])
+        return gt_error_set(e, what, "out of memory");
+    gtao_params p;
+    gtao_preset("high", &p);
+    p.radius = 1e6f, p.falloff = 0.0f, p.max_radius_px = (float)ao->width;
+    if (gtao_render(&g, &p, cosine, bent) != 0)
+        return gt_error_set(e, what, "out of memory");
+    p.weighting = GTAO_UNIFORM;
+    return gtao_render(&g, &p, uniform, NULL) != 0 ? gt_error_set(e, what, "out of memory") : 0;
+}
+
+/* The specular-occlusion references of one scene at every roughness, scored. */
+static int score_roughnesses(so_state *st, const scene *s, const char *spec, const camera *cam, const image *ao,
+                             const image *gtao, const char *name, gt_error *e)
+{
+    int rc = 0;
+    for (int r = 0; r < SO_STUDY_ROUGHNESSES && rc == 0; ++r) {
+        image ref;
+        char what[256];
+        snprintf(what, sizeof what, "%s (roughness %.2f)", name, roughness_values[r]);
+        if ((rc = render(st, s, spec, cam, QUANTITY_SPECULAR_OCCLUSION, roughness_values[r], &ref, e)) != 0)
+            break;
+        rc = score(st, &ref, ao, gtao, what, r, name, e);
+        image_free(&ref);
+    }
+    return rc;
+}
+
+/* One scene: its AO reference, GTAO on it, then the roughnesses. */
+static int run_scene(so_state *st, const builtin_scene *b, gt_error *e)
+{
+    char spec[128];
+    snprintf(spec, sizeof spec, "builtin:%s", b->name);
+    scene s;
+    if (scene_load(spec, &s, e) != 0)
+        return -1;
+    camera cam;
+    image ao = {0}, gtao = {0};
+    int rc = scene_choose_camera(&s, NULL, st->out->size, 0, &cam, e);
+    if (rc == 0)
+        rc = render(st, &s, spec, &cam, QUANTITY_AO, -1.0f, &ao, e);
+    if (rc == 0)
+        rc = gtao_inputs(&ao, &cam, b->name, &gtao, e);
+    if (rc == 0)
+        rc = score_roughnesses(st, &s, spec, &cam, &ao, &gtao, b->name, e);
+    image_free(&ao);
+    image_free(&gtao);
+    scene_free(&s);
+    return rc;
+}
+
+/* ---- the results --------------------------------------------------------------- */
+
+/* The sums over the scenes as means. */
+static void average(const so_state *st, so_study_result *out)
+{
+    int n = out->scene_count;
+    for (int v = 0; v < out->variant_count; ++v) {
+        so_variant_row *row = &out->variants[v];
+        row->mean_dssim = 0.0;
+        for (int k = 0; k < SO_STUDY_ROUGHNESSES; ++k) {
+            row->dssim[k] = st->dssim[v][k] / n, row->rmse[k] = st->rmse[v][k] / n;
+            row->mean_dssim += row->dssim[k] / SO_STUDY_ROUGHNESSES;
+        }
+    }
+    for (int k = 0; k < SO_STUDY_ROUGHNESSES; ++k) {
+        so_split_row *s = &out->splits[k];
+        out->noise_floor_dssim[k] = st->floor_dssim[k] / n;
+        s->roughness = roughness_values[k];
+        s->dssim_two = st->split_dssim[0][k] / n, s->dssim_three = st->split_dssim[1][k] / n;
+        s->rmse_two = st->split_rmse[0][k] / n, s->rmse_three = st->split_rmse[1][k] / n;
+        s->noise_floor = st->split_floor[k] / n;
+    }
+    out->reference_samples_per_second = st->renders ? st->samples_per_second_sum / st->renders : 0.0;
+}
+
+/* The gloss-to-aperture fit (exact intersection) against each definition. */
+static int fit_apertures(so_state *st, gt_error *e)
+{
+    for (int d = 0; d < SO_STUDY_DEFINITIONS; ++d) {
+        so_aperture_row *row = &st->out->fits[d];
+        row->name = definition_names[d], row->channel = definition_channels[d];
+        if (aperture_fit_run(st->cases[d], st->case_count, 1, &row->fit, e) != 0)
+            return -1;
+    }
+    return 0;
+}
+
+static void free_state(so_state *st)
+{
+    for (int s = 0; s < LUT_SIZES; ++s)
+        so_lut_free(&st->luts[s]);
+    so_lut_free(&st->lut_cosines);
+    for (int d = 0; d < SO_STUDY_DEFINITIONS; ++d)
+        for (int i = 0; i < st->case_count; ++i) {
+            aperture_case_free(&st->cases[d][i]);
+            free(st->owned[d][i]);
+        }
+}
+
+static void init_result(const study_context *ctx, so_study_result *out)
+{
+    int preview = ctx->quality == QUALITY_PREVIEW;
+    memset(out, 0, sizeof *out);
+    out->size = preview ? 96 : 256, out->spp = preview ? 128 : 1024;
+    for (int k = 0; k < SO_STUDY_ROUGHNESSES; ++k)
+        out->roughness[k] = roughness_values[k];
+}
+
+/* The LUTs, the variants, every scene, the means and the fits. */
+static int run(so_state *st, gt_error *e)
+{
+    int rc = build_luts(st, e);
+    setup_variants(st);
+    for (int i = 0; i < builtin_scene_count() && i < SO_STUDY_MAX_SCENES && rc == 0; ++i) {
+        const builtin_scene *b = builtin_scene_at(i);
+        rc = run_scene(st, b, e);
+        if (rc == 0)
+            snprintf(st->out->scenes[st->out->scene_count++], sizeof st->out->scenes[0], "%s", b->name);
+    }
+    if (rc == 0) {
+        average(st, st->out);
+        rc = fit_apertures(st, e);
+    }
+    return rc;
+}
+
+int specular_occlusion_study(const study_context *ctx, so_study_result *out, gt_error *e)
+{
+    init_result(ctx, out);
+    so_state *st = calloc(1, sizeof *st);
+    if (!st)
+        return gt_error_set(e, "specular occlusion", "out of memory");
+    st->ctx = ctx, st->out = out;
+    int rc = study_make_dir(ctx, "figures", st->figures, sizeof st->figures, e);
+    if (rc == 0)
+        rc = run(st, e);
+    free_state(st);
+    free(st);
+    return rc;
+}

@@ -1,0 +1,110 @@
+/* Specular occlusion (the `specular-occlusion` stage of `gtlab all`): how
+ * close each real-time specular-occlusion variant of the GTSO talk (Jimenez
+ * et al. 2016) and its baselines come to the Monte Carlo V_s.
+ *
+ * References: V_s = \int V f_r cos / \int f_r cos (GGX, alpha = r^2, no
+ * Fresnel, view from the camera), VNDF-sampled under the analytic sky, of
+ * every built-in scene at perceptual roughness 0.25, 0.5 and 0.8, with the
+ * D-only and Phong definitions and the split integrals from the same samples
+ * (raytracer/specular_occlusion_integrator.h); an AO reference of the same
+ * view gives the exact AO and bent normal, GTAO (high preset, one frame, no
+ * radius limit) the shipped ones.
+ *
+ * Computed:
+ *  - the cone/lobe LUT (GGX) at sizes 16, 32 (and 64 in production) in both
+ *    axis parametrisations: generation time, quadrature error estimate and
+ *    trilinear interpolation error at random points;
+ *  - every variant (realtime/specular_occlusion_screen.h) scored per
+ *    roughness by DSSIM and RMSE against specocc.V, means over the scenes;
+ *    the main ones again on GTAO's inputs;
+ *  - the noise floor of specocc.V, a ratio: DSSIM between the ratios of the
+ *    even and of the odd samples' means;
+ *  - the two- and three-split approximations against the split ground
+ *    truth, and the truth's own half-sample noise floor;
+ *  - the gloss-to-aperture fit of u (fitters/aperture_fit.h, exact cap
+ *    intersection) against each reference definition.
+ *
+ * Writes <output>/figures/specocc_ref_<scene>.png (V_s at r = 0.5) and
+ * specocc_err_<scene>_<k>.png, |error| heatmaps (0 to 0.5) at r = 0.5 of the
+ * rows so_study_heatmap_rows names, k = 0..3. */
+#ifndef GTLAB_STUDIES_SPECULAR_OCCLUSION_H
+#define GTLAB_STUDIES_SPECULAR_OCCLUSION_H
+
+#include "fitters/aperture_fit.h"
+#include "luts/specular_occlusion_lut.h"
+#include "realtime/specular_occlusion_screen.h"
+#include "studies/study.h"
+
+enum {
+    SO_STUDY_ROUGHNESSES = 3,
+    SO_STUDY_MAX_SCENES = 16,
+    SO_STUDY_MAX_VARIANTS = 20,
+    SO_STUDY_MAX_LUTS = 6,
+    SO_STUDY_DEFINITIONS = 3, /* the reference definitions the aperture is fitted to */
+    SO_STUDY_HEATMAPS = 4
+};
+
+/* One variant on one kind of input. */
+typedef struct {
+    so_variant_kind kind;
+    so_aperture_mapping mapping; /* cone variants */
+    so_ao_weighting weighting;
+    int lut_size;                /* SO_VARIANT_LUT: entries per axis */
+    so_lut_axes lut_axes;        /* SO_VARIANT_LUT */
+    int on_gtao;                 /* fed by GTAO's AO and bent normal instead of the reference's */
+    char label[64];              /* for display: "cone-exact:exp2-alpha", "lut-ggx-32 on GTAO" */
+    double dssim[SO_STUDY_ROUGHNESSES], rmse[SO_STUDY_ROUGHNESSES]; /* means over the scenes */
+    double mean_dssim;           /* mean of dssim over the roughnesses */
+} so_variant_row;
+
+/* One cone/lobe table. */
+typedef struct {
+    int size;
+    so_lut_axes axes;
+    const char *axes_name; /* so_lut_axes_name(axes) */
+    double seconds;        /* generation */
+    double quadrature_error, max_interpolation_error, rms_interpolation_error;
+} so_lut_row;
+
+/* The split integrals at one roughness, means over the scenes. */
+typedef struct {
+    double roughness;
+    double dssim_two, dssim_three, rmse_two, rmse_three;
+    double noise_floor; /* DSSIM of split_truth.V's halves */
+} so_split_row;
+
+/* The gloss-to-aperture fit against one reference definition. */
+typedef struct {
+    const char *name;    /* "gtso", "d_only", "phong" */
+    const char *channel; /* specocc.V, specocc_d.V, specocc_phong.V */
+    aperture_fit fit;
+} so_aperture_row;
+
+typedef struct {
+    int size, spp;  /* of every reference (square images) */
+    int lut_points; /* random points of the interpolation error */
+    int scene_count;
+    char scenes[SO_STUDY_MAX_SCENES][64]; /* builtin_scene_at order */
+    double roughness[SO_STUDY_ROUGHNESSES];
+    int lut_count;
+    so_lut_row luts[SO_STUDY_MAX_LUTS];
+    int variant_count;
+    so_variant_row variants[SO_STUDY_MAX_VARIANTS];
+    double noise_floor_dssim[SO_STUDY_ROUGHNESSES]; /* of specocc.V, means over the scenes */
+    so_split_row splits[SO_STUDY_ROUGHNESSES];
+    so_aperture_row fits[SO_STUDY_DEFINITIONS]; /* gtso, d_only, phong */
+    double reference_samples_per_second;        /* mean over the specular-occlusion renders */
+} so_study_result;
+
+int specular_occlusion_study(const study_context *ctx, so_study_result *out, gt_error *e);
+
+/* The row of a variant (lut_size and lut_axes matter for SO_VARIANT_LUT,
+ * mapping for the cone variants only), or -1. */
+int so_study_find(const so_study_result *r, so_variant_kind kind, so_aperture_mapping mapping, int lut_size,
+                  so_lut_axes lut_axes, int on_gtao);
+
+/* The rows of the heatmaps k = 0..3: AO, Lagarde, cone/cone exact with
+ * exp2(-3.32 alpha^2), the LUT 32^3 (angles), all on the reference's inputs. */
+void so_study_heatmap_rows(const so_study_result *r, int rows[SO_STUDY_HEATMAPS]);
+
+#endif

@@ -1,0 +1,32 @@
+/* The specular-occlusion screen pass's inputs (realtime/
+ * specular_occlusion_screen.h) from gtlab's files: the G-buffer channels
+ * (N.*, P.*, roughness.Y, mask.A) and the camera (header gtlab.camera) of a
+ * reference or G-buffer EXR, and the AO / bent normal (ao.V, bent.*, and if
+ * present ao.Vuniform) of an AO EXR of the same view. Used by `gtlab approx
+ * specular-occlusion`, `gtlab fit aperture` and the specular-occlusion study. */
+#ifndef GTLAB_STUDIES_SPECULAR_OCCLUSION_INPUTS_H
+#define GTLAB_STUDIES_SPECULAR_OCCLUSION_INPUTS_H
+
+#include "core/error.h"
+#include "core/image.h"
+#include "fitters/aperture_fit.h"
+#include "realtime/specular_occlusion_screen.h"
+
+/* From `gbuffer` and `ao` (the same size; may be the same image; `gtlab
+ * approx gtao` output has no ao.Vuniform, and then in->ao_uniform is NULL).
+ * roughness >= 0 replaces roughness.Y. Returns 0, or -1 with e naming the
+ * file at fault (a missing channel or camera, sizes that differ). */
+int so_inputs_from_images(const image *gbuffer, const char *what_gbuffer, const image *ao, const char *what_ao,
+                          double roughness, so_pixel_inputs *in, gt_error *e);
+
+/* The roughness a specular-occlusion reference was rendered with (its
+ * gtlab.roughness attribute), or -1 when it used the materials'. */
+double so_reference_roughness(const image *reference);
+
+/* A fit case from a specular-occlusion reference (its G-buffer, its
+ * roughness, `channel` = specocc.V, specocc_d.V or specocc_phong.V) and an
+ * AO reference of the same view. c->reference points into `reference`. */
+int aperture_case_from_images(aperture_case *c, const image *reference, const char *what_reference, const image *ao,
+                              const char *what_ao, const char *channel, gt_error *e);
+
+#endif

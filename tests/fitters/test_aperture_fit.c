@@ -1,0 +1,75 @@
+/* The gloss-to-aperture search (fitters/aperture_fit.c) recovers the u its
+ * cases were synthesised with: two 64x64 cases of varied inputs (n.v, beta,
+ * AO, roughness; a masked-out border) whose "reference" is the cone/cone
+ * image at u0 = 10^-1.3, so the mean DSSIM is 0 at u0 and the search must
+ * land there (to well within its scan step). Also: the curve is the scan,
+ * sorted by u; every figure is a DSSIM (>= 0); the talk's u = 0.01 scores no
+ * better than the fit; the evaluation count is scan + golden section + 1. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "fitters/aperture_fit.h"
+#include "tests/check.h"
+
+enum { SIZE = 64 };
+static const double LOG10_U0 = -1.3;
+
+/* Smoothly varying inputs (a different pattern per `seed`), 0 on the border. */
+static void synthesise_inputs(so_pixel_inputs *in, int seed)
+{
+    size_t n = (size_t)SIZE * SIZE;
+    in->width = in->height = SIZE;
+    in->mask = calloc(6 * n, sizeof(float));
+    in->n_dot_v = in->mask + n, in->beta = in->mask + 2 * n, in->ao_cosine = in->mask + 3 * n;
+    in->ao_uniform = in->mask + 4 * n, in->roughness = in->mask + 5 * n;
+    for (int y = 2; y < SIZE - 2; ++y)
+        for (int x = 2; x < SIZE - 2; ++x) {
+            size_t p = (size_t)y * SIZE + x;
+            double s = (double)x / SIZE, t = (double)y / SIZE, w = 0.5 + 0.5 * sin(7.0 * s * t + seed);
+            in->mask[p] = 1.0f;
+            in->n_dot_v[p] = (float)(0.2 + 0.8 * t);
+            in->beta[p] = (float)(1.4 * w * s);
+            in->ao_cosine[p] = in->ao_uniform[p] = (float)(0.3 + 0.65 * (1.0 - s * w));
+            in->roughness[p] = (float)(0.15 + 0.8 * t * (0.5 + 0.5 * w));
+        }
+}
+
+static void synthesise_case(aperture_case *c, float *reference, int seed)
+{
+    synthesise_inputs(&c->inputs, seed);
+    so_variant v = {SO_VARIANT_CONE_EXACT, SO_APERTURE_PHONG_U, pow(10.0, LOG10_U0), SO_AO_COSINE, NULL};
+    so_approx_evaluate(&c->inputs, &v, reference);
+    c->reference = reference;
+    snprintf(c->name, sizeof c->name, "synthetic %d", seed);
+}
+
+static void check_curve(const aperture_fit *fit)
+{
+    CHECK(fit->curve_count == 96); /* log10 u from -12 to -0.125 by 1/8 */
+    for (int i = 0; i < fit->curve_count; ++i) {
+        CHECK(fit->curve_dssim[i] >= 0.0);
+        CHECK(fit->curve_dssim[i] >= fit->dssim);
+        if (i > 0)
+            CHECK(fit->curve_u[i] > fit->curve_u[i - 1]);
+    }
+    CHECK(fit->evaluations > fit->curve_count + 1);
+}
+
+int main(void)
+{
+    static float references[2][SIZE * SIZE];
+    aperture_case cases[2];
+    for (int i = 0; i < 2; ++i)
+        synthesise_case(&cases[i], references[i], i);
+    aperture_fit fit;
+    gt_error e;
+    CHECK(aperture_fit_run(cases, 2, 1, &fit, &e) == 0);
+    CHECK_NEAR(fit.log10_u, LOG10_U0, 0.01);
+    CHECK_NEAR(fit.u, pow(10.0, fit.log10_u), 1e-12);
+    CHECK(fit.dssim >= 0.0 && fit.dssim < 1e-4);
+    CHECK(fit.dssim_at_published > fit.dssim);
+    check_curve(&fit);
+    for (int i = 0; i < 2; ++i)
+        aperture_case_free(&cases[i]);
+    return check_report("test_aperture_fit");
+}
