@@ -14,7 +14,7 @@
 #include <string.h>
 
 #include "cli/all_stages.h"
-#include "cli/approx_io.h"
+#include "studies/gbuffer_input.h"
 #include "cli/fit_aperture.h"
 #include "cli/specular_occlusion_approx.h"
 #include "core/image_io.h"
