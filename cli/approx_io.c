@@ -1,4 +1,4 @@
-/* Input and output of `gtlab approx` techniques; see approx_io.h. */
+/* The command line of `gtlab approx` techniques; see approx_io.h. */
 #include "cli/approx_io.h"
 
 #include <getopt.h>
@@ -8,7 +8,6 @@
 
 #include "cli/cli.h"
 #include "core/exr_io.h"
-#include "core/reference_schema.h"
 
 const char approx_common_help[] =
     "  --gbuffer G.exr       input: an EXR with depth.Z, N.X, N.Y, N.Z and mask.A (from\n"
@@ -20,71 +19,6 @@ const char approx_common_help[] =
     "  -o, --output F.exr    output EXR: ao.V (and bent.X/Y/Z where the technique has\n"
     "                        them), mask.A, the header naming technique and parameters\n"
     "  -h, --help\n";
-
-ss_camera approx_ss_camera(const camera *cam)
-{
-    camera_view v = camera_view_from(cam);
-    ss_camera c = {v.forward, v.right, v.up, v.tan_half_yfov, v.aspect};
-    return c;
-}
-
-static int load_camera(const char *path, const char *camera_path, const image *img, camera *cam, gt_error *e)
-{
-    if (camera_path)
-        return camera_read_json(camera_path, cam, e);
-    const char *text = image_get_attribute(img, ATTR_CAMERA);
-    if (text)
-        return camera_parse_json(text, path, cam, e);
-    char sidecar[4096];
-    camera_sidecar_path(path, sidecar, sizeof sidecar);
-    FILE *f = fopen(sidecar, "rb");
-    if (!f)
-        return gt_error_set(e, path, "no camera: no gtlab.camera header, no %s; give --camera", sidecar);
-    fclose(f);
-    return camera_read_json(sidecar, cam, e);
-}
-
-int approx_load(const char *path, const char *camera_path, approx_input *in, gt_error *e)
-{
-    memset(in, 0, sizeof *in);
-    if (exr_read(path, &in->img, e) != 0)
-        return -1;
-    int rc = load_camera(path, camera_path, &in->img, &in->cam, e);
-    if (rc == 0 && (in->cam.width != in->img.width || in->cam.height != in->img.height))
-        rc = gt_error_set(e, camera_path ? camera_path : path, "camera is %dx%d but the G-buffer is %dx%d",
-                          in->cam.width, in->cam.height, in->img.width, in->img.height);
-    if (rc == 0)
-        rc = camera_validate(&in->cam, camera_path ? camera_path : path, e);
-    if (rc == 0)
-        rc = ss_gbuffer_from_image(&in->img, path, approx_ss_camera(&in->cam), &in->g, e);
-    if (rc != 0)
-        image_free(&in->img);
-    return rc;
-}
-
-void approx_input_free(approx_input *in) { image_free(&in->img); }
-
-int approx_output_init(const approx_input *in, const char *technique, const char *settings, image *out)
-{
-    if (image_init(out, in->img.width, in->img.height) != 0)
-        return -1;
-    float *mask = image_add_channel(out, CH_MASK);
-    int rc = mask ? 0 : -1;
-    if (mask)
-        memcpy(mask, in->g.mask, sizeof *mask * image_pixel_count(out));
-    rc |= image_set_attribute(out, ATTR_VERSION, GTLAB_VERSION);
-    rc |= image_set_attribute(out, ATTR_QUANTITY, QUANTITY_NAME_APPROX);
-    rc |= image_set_attribute(out, ATTR_TECHNIQUE, technique);
-    rc |= image_set_attribute(out, ATTR_SETTINGS, settings);
-    for (int k = 0; k < 2; ++k) {
-        const char *key = k ? ATTR_SCENE : ATTR_CAMERA, *value = image_get_attribute(&in->img, key);
-        if (value)
-            rc |= image_set_attribute(out, key, value);
-    }
-    if (rc != 0)
-        image_free(out);
-    return rc;
-}
 
 /* The options every technique takes. */
 typedef struct {

@@ -1,37 +1,16 @@
-/* What every `gtlab approx TECHNIQUE` shares: reading the G-buffer EXR and
- * its camera, the options common to every technique, and writing the result
- * (ao.V, optional bent.*, mask.A copied, header naming the technique and its
- * parameters) atomically. */
+/* What every `gtlab approx TECHNIQUE` shares on the command line: the options
+ * common to every technique, reading the G-buffer (studies/gbuffer_input.h)
+ * and writing the result (ao.V, optional bent.*, mask.A copied, header naming
+ * the technique and its parameters) atomically. */
 #ifndef GTLAB_CLI_APPROX_IO_H
 #define GTLAB_CLI_APPROX_IO_H
 
 #include <getopt.h>
 #include <stddef.h>
 
-#include "core/error.h"
 #include "core/image.h"
 #include "realtime/screen_space.h"
-#include "scene/camera.h"
-
-typedef struct {
-    image img;
-    ss_gbuffer g;
-    camera cam;
-} approx_input;
-
-/* The camera of a G-buffer as real-time code sees it. */
-ss_camera approx_ss_camera(const camera *cam);
-
-/* Reads `path` (an EXR with depth.Z, N.X/Y/Z and mask.A) and its camera:
- * camera_path if given, else the header's gtlab.camera, else the sidecar
- * <path>.camera.json. Returns 0, or -1 with e naming the file at fault. */
-int approx_load(const char *path, const char *camera_path, approx_input *in, gt_error *e);
-void approx_input_free(approx_input *in);
-
-/* A fresh output image of the input's size holding mask.A and the header
- * (gtlab.quantity = "approx", gtlab.technique, gtlab.settings, and the
- * input's gtlab.camera / gtlab.scene). Returns 0 or -1 when out of memory. */
-int approx_output_init(const approx_input *in, const char *technique, const char *settings, image *out);
+#include "studies/gbuffer_input.h"
 
 /* getopt_long entries of the common options (end the table with them). */
 #define APPROX_COMMON_OPTIONS                                                                                         \

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/approx_io.h"
+#include "studies/gbuffer_input.h"
 #include "cli/cli.h"
 #include "core/progress.h"
 #include "raytracer/reference_render.h"

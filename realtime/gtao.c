@@ -127,6 +127,9 @@ static const gtao_params presets[] = {
     {GTAO_COSINE, 64, 0, 1.0f, 0.25f, 256.0f, 0.0f, 0, 0, 0, 1, 0},  /* reference: every cell */
 };
 const char *const gtao_preset_names[] = {"low", "medium", "high", "ultra", "reference", NULL};
+_Static_assert(sizeof gtao_preset_names / sizeof gtao_preset_names[0] == GTAO_PRESET_COUNT + 1,
+               "gtao_preset_id follows gtao_preset_names");
+_Static_assert(sizeof presets / sizeof presets[0] == GTAO_PRESET_COUNT, "one preset per gtao_preset_id");
 
 int gtao_preset(const char *name, gtao_params *p)
 {

@@ -90,6 +90,15 @@ typedef struct {
  * no denoiser, exact maths). Radius and falloff are left to the caller. */
 int gtao_preset(const char *name, gtao_params *p);
 extern const char *const gtao_preset_names[]; /* NULL-terminated */
+/* The presets by index into gtao_preset_names. */
+typedef enum {
+    GTAO_PRESET_LOW,
+    GTAO_PRESET_MEDIUM,
+    GTAO_PRESET_HIGH,
+    GTAO_PRESET_ULTRA,
+    GTAO_PRESET_REFERENCE,
+    GTAO_PRESET_COUNT
+} gtao_preset_id;
 /* "weighting=cosine slices=1 ..." for headers and reports. */
 void gtao_params_text(const gtao_params *p, char *text, size_t size);
 

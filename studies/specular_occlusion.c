@@ -16,6 +16,7 @@
 #include "raytracer/specular_occlusion_integrator.h"
 #include "realtime/gtao.h"
 #include "scene/builtin_scenes.h"
+#include "scene/scene_loaders.h"
 #include "studies/specular_occlusion_inputs.h"
 
 enum { LUT_SIZES = 3, CASES_MAX = SO_STUDY_MAX_SCENES * SO_STUDY_ROUGHNESSES };

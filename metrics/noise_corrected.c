@@ -1,0 +1,23 @@
+/* Noise-corrected RMSE; see noise_corrected.h. */
+#include "metrics/noise_corrected.h"
+
+#include <math.h>
+
+#include "metrics/image_error.h"
+
+double noise_mean_variance(const float *stderr_plane, const float *mask, size_t count)
+{
+    double sum = 0;
+    size_t inside = 0;
+    for (size_t i = 0; stderr_plane && i < count; ++i)
+        if (metrics_in_mask(mask, i)) {
+            sum += (double)stderr_plane[i] * stderr_plane[i];
+            ++inside;
+        }
+    return inside ? sum / inside : 0.0;
+}
+
+double noise_corrected_rmse(double rmse, double mean_variance)
+{
+    return sqrt(fmax(rmse * rmse - mean_variance, 0.0));
+}

@@ -1,0 +1,70 @@
+/* The noise-corrected RMSE against closed forms: a reference made of the
+ * truth plus zero-mean noise of known variance, and an approximation off the
+ * truth by a known constant. */
+#include <math.h>
+
+#include "metrics/image_error.h"
+#include "metrics/noise_corrected.h"
+#include "tests/check.h"
+
+enum { W = 8, H = 4, N = W * H };
+
+/* Mean of the squared standard errors over the mask, ignoring the rest. */
+static void test_mean_variance(void)
+{
+    float se[N], mask[N];
+    double sum = 0.0;
+    int inside = 0;
+    for (int i = 0; i < N; ++i) {
+        mask[i] = i % 3 == 0 ? 0.0f : 1.0f;
+        se[i] = mask[i] != 0.0f ? 0.01f * (float)(i % 5 + 1) : 100.0f; /* outside: huge, must not count */
+        if (mask[i] != 0.0f) {
+            sum += (double)se[i] * se[i];
+            ++inside;
+        }
+    }
+    CHECK_NEAR(noise_mean_variance(se, mask, N), sum / inside, 1e-15);
+    CHECK(noise_mean_variance(NULL, mask, N) == 0.0);
+    for (int i = 0; i < N; ++i)
+        mask[i] = 0.0f;
+    CHECK(noise_mean_variance(se, mask, N) == 0.0);
+    float constant[N];
+    for (int i = 0; i < N; ++i)
+        constant[i] = 0.25f;
+    CHECK_NEAR(noise_mean_variance(constant, NULL, N), 0.0625, 1e-15);
+}
+
+/* r = t + n with n = +-sigma alternating (mean 0, variance sigma^2) and
+ * a = t + d: RMSE(a, r)^2 = d^2 + sigma^2, so the corrected RMSE is |d|. */
+static void check_recovers_offset(double d, double sigma)
+{
+    float truth[N], ref[N], approx[N], se[N];
+    for (int i = 0; i < N; ++i) {
+        truth[i] = 0.5f + (float)(i % 7) / 64.0f; /* dyadic: every figure exact */
+        ref[i] = (float)(truth[i] + (i % 2 ? sigma : -sigma));
+        approx[i] = (float)(truth[i] + d);
+        se[i] = (float)sigma;
+    }
+    image_error_stats st;
+    gt_error e;
+    CHECK(image_error_compute(approx, ref, NULL, W, H, "t", &st, &e) == 0);
+    CHECK_NEAR(st.rmse * st.rmse, d * d + sigma * sigma, 1e-12);
+    CHECK_NEAR(noise_corrected_rmse(st.rmse, noise_mean_variance(se, NULL, N)), fabs(d), 1e-6);
+}
+
+static void test_corrected_rmse(void)
+{
+    check_recovers_offset(0.125, 0.0625);
+    check_recovers_offset(-0.03125, 0.25);
+    check_recovers_offset(0.0, 0.125); /* the whole error is noise */
+    CHECK(noise_corrected_rmse(0.1, 0.02) == 0.0); /* below the noise: clamped */
+    CHECK_NEAR(noise_corrected_rmse(0.5, 0.0), 0.5, 1e-15);
+    CHECK_NEAR(noise_corrected_rmse(0.5, 0.09), 0.4, 1e-15);
+}
+
+int main(void)
+{
+    test_mean_variance();
+    test_corrected_rmse();
+    return check_report("metrics_noise_corrected");
+}
