@@ -1,12 +1,11 @@
 #define _GNU_SOURCE
 #include "cli/cli.h"
 
-#include <errno.h>
+#include "core/number_parse.h"
+
 #include <getopt.h>
-#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
-#include <stdlib.h>
 
 int cli_fail(const gt_error *e)
 {
@@ -33,19 +32,8 @@ int cli_usage_error(const char *verb)
 
 int cli_parse_int(const char *option, const char *text, long lo, long hi, long *out)
 {
-    char *end;
-    errno = 0;
-    long v = strtol(text, &end, 10);
-    if (errno || end == text || *end != '\0') {
-        cli_failf(option, "'%s' is not a whole number", text);
-        return -1;
-    }
-    if (v < lo || v > hi) {
-        cli_failf(option, "%ld is out of range [%ld, %ld]", v, lo, hi);
-        return -1;
-    }
-    *out = v;
-    return 0;
+    gt_error e;
+    return parse_whole_in(option, text, lo, hi, out, &e) != 0 ? (cli_fail(&e), -1) : 0;
 }
 
 int cli_parse_u32(const char *option, const char *text, uint32_t *out)
@@ -59,19 +47,8 @@ int cli_parse_u32(const char *option, const char *text, uint32_t *out)
 
 int cli_parse_double(const char *option, const char *text, double lo, double hi, double *out)
 {
-    char *end;
-    errno = 0;
-    double v = strtod(text, &end);
-    if (errno || end == text || *end != '\0' || !isfinite(v)) {
-        cli_failf(option, "'%s' is not a number", text);
-        return -1;
-    }
-    if (v < lo || v > hi) {
-        cli_failf(option, "%g is out of range [%g, %g]", v, lo, hi);
-        return -1;
-    }
-    *out = v;
-    return 0;
+    gt_error e;
+    return parse_real_in(option, text, lo, hi, out, &e) != 0 ? (cli_fail(&e), -1) : 0;
 }
 
 void cli_reset_getopt(void)

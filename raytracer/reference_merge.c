@@ -6,8 +6,7 @@
 #include <string.h>
 
 #include "core/mc_film.h"
-#include "raytracer/reference_render.h"
-#include "raytracer/specular_occlusion_integrator.h"
+#include "raytracer/reference_quantity.h"
 #include "core/reference_schema.h"
 
 typedef struct {
@@ -110,9 +109,10 @@ static int write_merged(const image *first, const mc_film *film, const sample_bl
     }
     if (mc_film_write_channels(film, image_channel_data(out, CH_MASK), out) != 0)
         return -1;
-    /* Ratio channels derive from the merged sums (specular occlusion). */
-    const char *quantity = image_get_attribute(first, ATTR_QUANTITY);
-    if (quantity && strcmp(quantity, "specular-occlusion") == 0 && specular_occlusion_write_ratios(out) != 0)
+    /* Derived channels (ratios) from the merged sums: the quantity's finish. */
+    const char *name = image_get_attribute(first, ATTR_QUANTITY);
+    reference_quantity quantity = name ? reference_quantity_find(name) : NULL;
+    if (quantity && quantity->finish && quantity->finish(out) != 0)
         return -1;
     for (int a = 0; a < first->attribute_count; ++a)
         if (image_set_attribute(out, first->attributes[a].key, first->attributes[a].value) != 0)

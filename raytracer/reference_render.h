@@ -9,20 +9,31 @@
 #include "core/sky_environment.h"
 #include "raytracer/gbuffer.h"
 #include "raytracer/multibounce_integrator.h"
+#include "raytracer/reference_quantity.h"
 #include "raytracer/render_loop.h"
 #include "raytracer/sphere_light_integrator.h"
 #include "scene/scene.h"
 
-typedef enum {
-    QUANTITY_GBUFFER,
-    QUANTITY_AO,
-    QUANTITY_MULTIBOUNCE,
-    QUANTITY_HEIGHTFIELD_AO,
-    QUANTITY_SPECULAR_OCCLUSION,
-    QUANTITY_SPHERE_LIGHT
-} reference_quantity;
+/* The built-in quantities (raytracer/<quantity>_quantity.c), by name for
+ * callers: `.quantity = QUANTITY_AO`. A quantity added later needs no macro
+ * here: reference_quantity_find("name") names it. */
+extern const reference_quantity_descriptor reference_quantity_gbuffer, reference_quantity_ao,
+    reference_quantity_multibounce, reference_quantity_heightfield_ao, reference_quantity_specular_occlusion,
+    reference_quantity_sphere_light;
+#define QUANTITY_GBUFFER (&reference_quantity_gbuffer)
+#define QUANTITY_AO (&reference_quantity_ao)
+#define QUANTITY_MULTIBOUNCE (&reference_quantity_multibounce)
+#define QUANTITY_HEIGHTFIELD_AO (&reference_quantity_heightfield_ao)
+#define QUANTITY_SPECULAR_OCCLUSION (&reference_quantity_specular_occlusion)
+#define QUANTITY_SPHERE_LIGHT (&reference_quantity_sphere_light)
 
-typedef struct {
+/* What to render. The fields after `normals` are the built-in quantities'
+ * settings; a quantity added later keeps its settings in its own struct,
+ * pointed at by `settings` (its descriptor's settings_size; its options fill
+ * it on the command line, a caller points it at its own struct), so adding a
+ * quantity changes nothing here. A zeroed request (quantity NULL) renders
+ * the G-buffer. */
+typedef struct reference_request {
     reference_quantity quantity;
     sampling_settings sampling;
     normal_mode normals;
@@ -31,12 +42,8 @@ typedef struct {
     sphere_light_settings sphere_light; /* sphere-light only: the light */
     float roughness;                  /* specular-occlusion only: perceptual roughness, < 0: the material's */
     environment_kind environment;     /* specular-occlusion only: sky adds the split-integral channels */
+    void *settings;                   /* a later quantity's own settings, or NULL */
 } reference_request;
-
-/* "gbuffer" / "ao" / "multibounce" / "heightfield-ao" / "specular-occlusion" /
- * "sphere-light" -> quantity; -1 if unknown. */
-int reference_quantity_parse(const char *name, reference_quantity *q);
-const char *reference_quantity_name(reference_quantity q);
 
 /* Renders into `out` (initialised here). scene_spec is recorded in the header. */
 int reference_render(const scene *s, const char *scene_spec, const camera *cam, const reference_request *req,

@@ -1,0 +1,86 @@
+/* `gtlab render multibounce`: GTAO's multi-bounce AO V'_d under a white dome
+ * for one or several albedos, or the scene's colours
+ * (raytracer/multibounce_integrator.h). */
+#include <stdlib.h>
+
+#include "core/reference_schema.h"
+#include "raytracer/reference_render.h"
+
+static int parse_albedo(reference_request *rq, const char *value, gt_error *e)
+{
+    return multibounce_parse_albedos(value, &rq->multibounce, e);
+}
+
+static int parse_bounces(reference_request *rq, const char *value, gt_error *e)
+{
+    return multibounce_parse_bounces(value, &rq->multibounce, e);
+}
+
+static const reference_option albedo_option = {
+    .name = "albedo",
+    .value = "A,B,...|scene",
+    .required = 1,
+    .hint = "grey albedos such as 0.1,0.5,0.9, or 'scene'",
+    .help = "grey albedos in [0, 1], all\n"
+            "rendered from the same paths in one pass, or 'scene': the\n"
+            "glTF base colours (textures included), coloured R, G, B",
+    .parse = parse_albedo,
+};
+
+static const reference_option bounces_option = {
+    .name = "bounces",
+    .value = "N|inf",
+    .help = "inter-reflections after the first hit\n"
+            "(0 gives V_d; default 4, as the GTAO talk); 'inf' ends paths\n"
+            "by Russian roulette instead (unbiased)",
+    .parse = parse_bounces,
+};
+
+static void set_defaults(reference_request *rq)
+{
+    rq->multibounce.bounces = 4; /* the GTAO talk's */
+}
+
+static int prepare(const reference_pass *pass, void **state, integrator *it, gt_error *e)
+{
+    multibounce_plan *plan = malloc(sizeof *plan);
+    if (!plan)
+        return gt_error_set(e, pass->scene_spec, "out of memory");
+    if (multibounce_plan_init(plan, &pass->req->multibounce, pass->req->normals, e) != 0) {
+        free(plan);
+        return -1;
+    }
+    if (pass->req->multibounce.scene_albedo)
+        multibounce_warn_albedo_range(pass->scene);
+    *state = plan;
+    *it = multibounce_integrator(pass->es, plan);
+    return 0;
+}
+
+/* gtlab.albedos, gtlab.bounces and gtlab.settings. */
+static int write_settings(const reference_request *rq, image *out)
+{
+    char albedos[512], bounces[16];
+    multibounce_albedos_text(&rq->multibounce, albedos, sizeof albedos);
+    multibounce_bounces_text(&rq->multibounce, bounces, sizeof bounces);
+    int rc = image_set_attribute(out, ATTR_ALBEDOS, albedos);
+    rc |= image_set_attribute(out, ATTR_BOUNCES, bounces);
+    rc |= reference_set_attributef(out, ATTR_SETTINGS, "albedos=%s bounces=%s target_stderr=%.9g", albedos, bounces,
+                                   rq->sampling.target_stderr);
+    return rc;
+}
+
+const reference_quantity_descriptor reference_quantity_multibounce = {
+    .name = "multibounce",
+    .help = "the G-buffer plus V'_d = L / albedo: the radiance of Lambertian\n"
+            "surfaces of that albedo under a uniform white dome of radiance 1,\n"
+            "divided by the albedo (GTAO's multi-bounce AO), and ao.V (V_d) of the\n"
+            "same pixels. Channels: multibounce.V (one albedo), multibounce_<a>.V\n"
+            "for each of several (e.g. multibounce_0.3.V), or multibounce.R/G/B with\n"
+            "--albedo scene; the header holds gtlab.albedos and gtlab.bounces",
+    .options = (const reference_option *const[]){&albedo_option, &bounces_option, NULL},
+    .set_defaults = set_defaults,
+    .prepare = prepare,
+    .release = free,
+    .write_settings = write_settings,
+};

@@ -1,0 +1,113 @@
+/* The quantities' command-line options, gathered from the registry, and
+ * their application to a request (reference_quantity.h). */
+#include "raytracer/reference_quantity.h"
+
+#include <stdio.h>
+
+#include "raytracer/reference_render.h"
+
+int reference_quantity_lists(reference_quantity q, const reference_option *option)
+{
+    for (const reference_option *const *o = q->options; o && *o; ++o)
+        if (*o == option)
+            return 1;
+    return 0;
+}
+
+/* The first quantity in the registry that lists the option. */
+static reference_quantity first_owner(const reference_option *option)
+{
+    for (int i = 0; i < reference_quantity_count(); ++i)
+        if (reference_quantity_lists(reference_quantity_at(i), option))
+            return reference_quantity_at(i);
+    return NULL;
+}
+
+/* Each option counts at its first owner, so a shared one appears once. */
+const reference_option *reference_option_at(int index)
+{
+    for (int i = 0; i < reference_quantity_count(); ++i) {
+        reference_quantity q = reference_quantity_at(i);
+        for (const reference_option *const *o = q->options; o && *o; ++o)
+            if (first_owner(*o) == q && index-- == 0)
+                return *o;
+    }
+    return NULL;
+}
+
+int reference_option_count(void)
+{
+    int count = 0;
+    while (reference_option_at(count))
+        ++count;
+    return count;
+}
+
+static int option_index(const reference_option *option)
+{
+    for (int i = 0; reference_option_at(i); ++i)
+        if (reference_option_at(i) == option)
+            return i;
+    return -1;
+}
+
+void reference_option_owners(const reference_option *option, const char *last_joint, char *text, size_t size)
+{
+    int owners = 0, listed = 0;
+    for (int i = 0; i < reference_quantity_count(); ++i)
+        owners += reference_quantity_lists(reference_quantity_at(i), option);
+    text[0] = '\0';
+    for (int i = 0; i < reference_quantity_count(); ++i)
+        if (reference_quantity_lists(reference_quantity_at(i), option))
+            reference_append_listed(text, size, listed++, owners, last_joint, reference_quantity_at(i)->name);
+}
+
+/* "--x: applies to a and b only" for the first given option q does not list. */
+static int refuse_foreign(reference_quantity q, const char *const *values, gt_error *e)
+{
+    for (int i = 0; reference_option_at(i); ++i) {
+        const reference_option *o = reference_option_at(i);
+        if (!values[i] || reference_quantity_lists(q, o))
+            continue;
+        char subject[128], owners[256];
+        snprintf(subject, sizeof subject, "--%s", o->name);
+        reference_option_owners(o, " and ", owners, sizeof owners);
+        return gt_error_set(e, subject, "applies to %s only", owners);
+    }
+    return 0;
+}
+
+/* "<subject>: q needs --a (hint) and --b" when a required option is missing. */
+static int require_options(reference_quantity q, const char *const *values, const char *subject, gt_error *e)
+{
+    int required = 0, missing = 0;
+    for (const reference_option *const *o = q->options; o && *o; ++o)
+        if ((*o)->required)
+            ++required, missing += !values[option_index(*o)];
+    if (!missing)
+        return 0;
+    char needs[512] = "";
+    int listed = 0;
+    for (const reference_option *const *o = q->options; o && *o; ++o) {
+        if (!(*o)->required)
+            continue;
+        char item[256];
+        snprintf(item, sizeof item, "--%s%s%s%s", (*o)->name, (*o)->hint ? " (" : "", (*o)->hint ? (*o)->hint : "",
+                 (*o)->hint ? ")" : "");
+        reference_append_listed(needs, sizeof needs, listed++, required, " and ", item);
+    }
+    return gt_error_set(e, subject, "%s needs %s", q->name, needs);
+}
+
+int reference_options_apply(reference_request *rq, const char *const *values, const char *subject, gt_error *e)
+{
+    reference_quantity q = rq->quantity;
+    if (refuse_foreign(q, values, e) != 0 || require_options(q, values, subject, e) != 0)
+        return -1;
+    for (const reference_option *const *o = q->options; o && *o; ++o) {
+        const char *value = values[option_index(*o)];
+        if (value && (*o)->parse(rq, (*o)->value ? value : NULL, e) != 0)
+            return -1;
+    }
+    return 0;
+}

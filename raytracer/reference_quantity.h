@@ -1,0 +1,118 @@
+/* A reference quantity of `gtlab render` as data (docs/render-quantities.md).
+ *
+ * Each quantity is one descriptor, defined in raytracer/<quantity>_quantity.c
+ * beside its integrator and listed by one line in the registry
+ * (raytracer/reference_quantities.c). reference_render() builds the Embree
+ * scene and the G-buffer, then calls the descriptor: `prepare` builds the
+ * integrator over the G-buffer, the shared sampling loop (render_loop.h)
+ * runs it, `finish` derives channels from the accumulated sums, and
+ * `write_settings` writes the quantity's header attributes. `gtlab render`
+ * builds its command line from the descriptors: the help, one long option
+ * per reference_option, and the refusal of another quantity's options.
+ *
+ * A quantity is named by the address of its descriptor (reference_quantity is
+ * a pointer): callers compare `req->quantity == QUANTITY_AO`. */
+#ifndef GTLAB_RAYTRACER_REFERENCE_QUANTITY_H
+#define GTLAB_RAYTRACER_REFERENCE_QUANTITY_H
+
+#include <stddef.h>
+
+#include "core/error.h"
+#include "core/image.h"
+#include "raytracer/embree_scene.h"
+#include "raytracer/gbuffer.h"
+#include "raytracer/render_loop.h"
+#include "scene/scene.h"
+
+struct reference_request; /* raytracer/reference_render.h */
+
+/* One command-line option of one or more quantities ("--max-distance D").
+ * An option object may be listed by several quantities (ao and heightfield-ao
+ * share --max-distance); `gtlab render` refuses it with any other quantity
+ * ("--max-distance: applies to ao and heightfield-ao only"). */
+typedef struct reference_option {
+    const char *name;     /* the long option without "--" */
+    const char *value;    /* the value's placeholder in the help ("D"), or NULL: a flag */
+    int required;         /* 1: the quantities listing it need it */
+    const char *hint;     /* with `required`: what to give, appended to the "needs" error, or NULL */
+    const char *help;     /* after "<quantities>: ", lines separated by '\n' */
+    /* Parses the value (NULL for a flag) into the request (its fields, or the
+     * quantity's settings block rq->settings). Errors name "--<name>". */
+    int (*parse)(struct reference_request *rq, const char *value, gt_error *e);
+} reference_option;
+
+/* What prepare builds on: the scene, its G-buffer and the request. */
+typedef struct reference_pass {
+    const scene *scene;
+    const char *scene_spec; /* for errors */
+    const camera *cam;
+    const embree_scene *es;
+    const gbuffer *gb;
+    const struct reference_request *req;
+} reference_pass;
+
+typedef struct reference_quantity_descriptor {
+    const char *name; /* the QUANTITY argument and the header's gtlab.quantity */
+    const char *help; /* the channels it writes, for --help; lines separated by '\n' */
+    const reference_option *const *options; /* its own options, NULL-terminated; NULL: none */
+    /* The settings block a quantity keeps outside reference_request: `gtlab
+     * render` allocates settings_size zeroed bytes as rq->settings before
+     * set_defaults and the options run (0: none, the settings live in
+     * reference_request's own fields). */
+    size_t settings_size;
+    /* The defaults of its settings before the options apply; NULL: zeros. */
+    void (*set_defaults)(struct reference_request *rq);
+    /* Validates the settings and builds the integrator over the G-buffer;
+     * *state (freed by release) holds what the integrator points at.
+     * NULL: the quantity is the G-buffer alone (no sampling, no spp/seed/
+     * sample-block header). */
+    int (*prepare)(const reference_pass *pass, void **state, integrator *it, gt_error *e);
+    void (*release)(void *state);
+    /* Channels derived from the accumulated ones, after rendering and after
+     * `gtlab merge` (specular_occlusion_write_ratios); NULL: none. Returns 0,
+     * or -1 when out of memory. */
+    int (*finish)(image *out);
+    /* gtlab.settings (for people) and the typed attributes of its settings;
+     * NULL: none. Returns 0, or -1 when out of memory. */
+    int (*write_settings)(const struct reference_request *rq, image *out);
+} reference_quantity_descriptor;
+
+typedef const reference_quantity_descriptor *reference_quantity;
+
+/* ---- The registry (raytracer/reference_quantities.c) ------------------- */
+int reference_quantity_count(void);
+reference_quantity reference_quantity_at(int index); /* 0 <= index < count, in registry order */
+/* The quantity of that name, or NULL. */
+reference_quantity reference_quantity_find(const char *name);
+/* name -> quantity; -1 if unknown (q unchanged). */
+int reference_quantity_parse(const char *name, reference_quantity *q);
+const char *reference_quantity_name(reference_quantity q); /* "unknown" for NULL */
+/* "gbuffer, ao, ... or sphere-light": every name, for messages. */
+void reference_quantity_names(char *text, size_t size);
+/* 1 if q lists the option. */
+int reference_quantity_lists(reference_quantity q, const reference_option *option);
+
+/* Every option of every quantity once, in registry order (the command line's
+ * quantity options; values[] below is indexed the same way). */
+int reference_option_count(void);
+const reference_option *reference_option_at(int index);
+/* The quantities that list the option, the last joined by last_joint:
+ * "ao and heightfield-ao" (" and "), "ao, heightfield-ao" (", "). */
+void reference_option_owners(const reference_option *option, const char *last_joint, char *text, size_t size);
+
+/* Applies command-line values to a request whose quantity is set:
+ * values[i] is the value of reference_option_at(i) ("" for a flag), or NULL
+ * when not given. Refuses an option the quantity does not list ("--x:
+ * applies to ... only"), then a missing required option ("<subject>: q needs
+ * --a and --b"), then parses its options in the quantity's order. */
+int reference_options_apply(struct reference_request *rq, const char *const *values, const char *subject,
+                            gt_error *e);
+
+/* ---- Helpers for the descriptors --------------------------------------- */
+/* Appends item i of n to the list in text: "a", ", b", ..., "<last_joint>z"
+ * (last_joint " and " or " or "). */
+void reference_append_listed(char *text, size_t size, int i, int n, const char *last_joint, const char *item);
+/* image_set_attribute with printf formatting (at most 1023 characters). */
+int reference_set_attributef(image *img, const char *key, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+
+#endif
