@@ -8,9 +8,9 @@
 
 #include "cli/all_stages.h"
 #include "cli/check_sphere_noh.h"
-#include "cli/fit_sphere_light.h"
 #include "cli/gnuplot_plot.h"
 #include "cli/report_table.h"
+#include "fitters/fit_sphere_light_outputs.h"
 #include "studies/sphere_light.h"
 
 #define COLUMNS(c) ((int)(sizeof c / sizeof c[0]))

@@ -1,6 +1,7 @@
 /* gtlab approx specular-occlusion: every specular-occlusion variant of the
  * GTSO talk (cone/cone, cone/lobe LUT) and its baselines on a G-buffer and
- * an AO / bent-normal image (realtime/specular_occlusion_screen.h). */
+ * an AO / bent-normal image (realtime/specular_occlusion_screen.h), from files
+ * to file by studies/specular_occlusion_approx.h. */
 #define _GNU_SOURCE
 #include <getopt.h>
 #include <omp.h>
@@ -8,9 +9,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "core/exr_io.h"
-#include "core/reference_schema.h"
-#include "studies/specular_occlusion_inputs.h"
+#include "studies/specular_occlusion_approx.h"
 
 static void print_help(void)
 {
@@ -96,28 +95,6 @@ static int parse_options(int argc, char **argv, approx_options *o)
     return 0;
 }
 
-/* The output: specocc.V, mask.A, the camera and the variant in the header. */
-static int write_output(const approx_options *o, const image *gbuffer, const so_pixel_inputs *in,
-                        const so_variant *v, gt_error *e)
-{
-    image out;
-    if (image_init(&out, in->width, in->height) != 0)
-        return gt_error_set(e, o->output, "out of memory");
-    float *vs = image_add_channel(&out, CH_SPECOCC), *mask = image_add_channel(&out, CH_MASK);
-    char label[128];
-    so_variant_label(v, label, sizeof label);
-    int rc = vs && mask ? 0 : gt_error_set(e, o->output, "out of memory");
-    if (rc == 0) {
-        so_approx_evaluate(in, v, vs);
-        memcpy(mask, in->mask, sizeof(float) * image_pixel_count(&out));
-        rc = image_set_attribute(&out, ATTR_APPROX, label) |
-             image_set_attribute(&out, ATTR_CAMERA, image_get_attribute(gbuffer, ATTR_CAMERA));
-        rc = rc ? gt_error_set(e, o->output, "out of memory") : exr_write(o->output, &out, e);
-    }
-    image_free(&out);
-    return rc;
-}
-
 int approx_specular_occlusion(int argc, char **argv)
 {
     approx_options o = {NULL, NULL, NULL, "lut", 0.01, -1.0, SO_AO_COSINE, 32, SO_LOBE_GGX};
@@ -128,34 +105,7 @@ int approx_specular_occlusion(int argc, char **argv)
     if (so_variant_parse(o.variant, &v) != 0)
         return cli_failf("--variant", "unknown variant '%s' (see --help)", o.variant);
     v.u = o.u, v.weighting = o.weighting;
+    so_approx_files files = {o.gbuffer, o.ao, o.output, o.roughness, (int)o.lut_size, o.lobe, omp_get_num_procs()};
     gt_error e;
-    image gbuffer, ao;
-    if (exr_read(o.gbuffer, &gbuffer, &e) != 0)
-        return cli_fail(&e);
-    if (o.roughness < 0.0)
-        o.roughness = so_reference_roughness(&gbuffer);
-    if (exr_read(o.ao, &ao, &e) != 0) {
-        image_free(&gbuffer);
-        return cli_fail(&e);
-    }
-    so_pixel_inputs in;
-    so_lut lut = {0};
-    int status = EXIT_OK;
-    if (so_inputs_from_images(&gbuffer, o.gbuffer, &ao, o.ao, o.roughness, &in, &e) != 0) {
-        status = cli_fail(&e);
-    } else if (v.weighting == SO_AO_UNIFORM && !in.ao_uniform) {
-        status = cli_failf(o.ao, "no ao.Vuniform channel, which --ao-weighting uniform needs");
-        so_inputs_free(&in);
-    } else {
-        if (v.kind == SO_VARIANT_LUT && so_lut_build(&lut, (int)o.lut_size, o.lobe, SO_AXES_ANGLES, omp_get_num_procs()) != 0)
-            status = cli_failf("approx specular-occlusion", "out of memory");
-        v.lut = &lut;
-        if (status == EXIT_OK && write_output(&o, &gbuffer, &in, &v, &e) != 0)
-            status = cli_fail(&e);
-        so_lut_free(&lut);
-        so_inputs_free(&in);
-    }
-    image_free(&gbuffer);
-    image_free(&ao);
-    return status;
+    return so_approx_from_files(&files, &v, &e) != 0 ? cli_fail(&e) : EXIT_OK;
 }

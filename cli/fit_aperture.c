@@ -13,7 +13,6 @@
 #include "cli/cli.h"
 #include "cli/gnuplot_plot.h"
 #include "core/atomic_file.h"
-#include "core/exr_io.h"
 #include "core/reference_schema.h"
 #include "studies/specular_occlusion_inputs.h"
 
@@ -135,22 +134,6 @@ int aperture_fit_plot(const aperture_fit *fit, const char *path, const char *tit
     return rc;
 }
 
-static int load_cases(const fit_options *o, image *refs, image *aos, aperture_case *cases, int *loaded, gt_error *e)
-{
-    for (int i = 0; i < o->reference_count; ++i) {
-        if (exr_read(o->references[i], &refs[i], e) != 0)
-            return -1;
-        if (exr_read(o->aos[i], &aos[i], e) != 0) {
-            image_free(&refs[i]);
-            return -1;
-        }
-        *loaded = i + 1;
-        if (aperture_case_from_images(&cases[i], &refs[i], o->references[i], &aos[i], o->aos[i], o->channel, e) != 0)
-            return -1;
-    }
-    return 0;
-}
-
 int fit_aperture(int argc, char **argv)
 {
     fit_options o = {.exact = 1, .channel = CH_SPECOCC};
@@ -164,7 +147,8 @@ int fit_aperture(int argc, char **argv)
     static aperture_case cases[MAX_CASES];
     int loaded = 0, status = EXIT_OK;
     aperture_fit fit;
-    if (load_cases(&o, refs, aos, cases, &loaded, &e) != 0 || aperture_fit_run(cases, loaded, o.exact, &fit, &e) != 0) {
+    if (aperture_cases_load(o.references, o.aos, o.reference_count, o.channel, refs, aos, cases, &loaded, &e) != 0 ||
+        aperture_fit_run(cases, loaded, o.exact, &fit, &e) != 0) {
         status = cli_fail(&e);
     } else {
         cJSON *j = aperture_fit_json(&fit, o.channel, o.exact);
@@ -178,10 +162,6 @@ int fit_aperture(int argc, char **argv)
                    fit.log10_u, fit.dssim, fit.dssim_at_published, fit.evaluations);
         free(text);
     }
-    for (int i = 0; i < loaded; ++i) {
-        aperture_case_free(&cases[i]);
-        image_free(&refs[i]);
-        image_free(&aos[i]);
-    }
+    aperture_cases_free(refs, aos, cases, loaded);
     return status;
 }

@@ -1,6 +1,7 @@
 /* gtlab fit multibounce: the GTAO multi-bounce cubic (Jimenez et al. 2016,
  * "Multiple Bounces" to "Shader Code") refitted to multi-bounce references;
- * the fits are fitters/fit_multibounce.h, the formula realtime/multibounce.h. */
+ * the data studies/multibounce_fit_input.h, the fits fitters/fit_multibounce.h,
+ * the formula realtime/multibounce.h. */
 #define _GNU_SOURCE
 #include <getopt.h>
 #include <stdio.h>
@@ -9,8 +10,8 @@
 
 #include "cli/cli.h"
 #include "core/atomic_file.h"
-#include "core/exr_io.h"
 #include "fitters/fit_multibounce.h"
+#include "studies/multibounce_fit_input.h"
 
 enum { MAX_FILES = 256 };
 
@@ -84,21 +85,6 @@ static void print_summary(const multibounce_data *d, const multibounce_analysis 
     }
 }
 
-static int load_files(const char *const *files, int count, multibounce_data *d, gt_error *e)
-{
-    for (int i = 0; i < count; ++i) {
-        image img;
-        if (exr_read(files[i], &img, e) != 0)
-            return -1;
-        int rc = multibounce_data_add_image(d, &img, files[i], e);
-        image_free(&img);
-        if (rc != 0)
-            return -1;
-    }
-    multibounce_data_weigh(d);
-    return 0;
-}
-
 /* The command line as one string, for the outputs' provenance. */
 static void command_text(int argc, char **argv, char *out, size_t size)
 {
@@ -168,7 +154,7 @@ int fit_multibounce(int argc, char **argv)
     int status = EXIT_OK;
     if (!a)
         status = cli_failf("fit multibounce", "out of memory");
-    else if (load_files(files, file_count, &d, &e) != 0 || multibounce_analyse(&d, a, &e) != 0 ||
+    else if (multibounce_fit_input_load(files, file_count, &d, &e) != 0 || multibounce_analyse(&d, a, &e) != 0 ||
              multibounce_write_outputs(&d, a, command, output, header, hlsl, glsl, &e) != 0)
         status = cli_fail(&e);
     else

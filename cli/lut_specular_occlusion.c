@@ -1,7 +1,6 @@
 /* gtlab lut specular-occlusion: the GTSO cone/lobe table
  * (luts/specular_occlusion_lut.h) in every format, with its accuracy. */
 #define _GNU_SOURCE
-#include <cjson/cJSON.h>
 #include <errno.h>
 #include <getopt.h>
 #include <omp.h>
@@ -11,10 +10,10 @@
 #include <sys/stat.h>
 
 #include "cli/cli.h"
-#include "core/atomic_file.h"
 #include "core/progress.h"
 #include "luts/lut_writers.h"
 #include "luts/specular_occlusion_lut.h"
+#include "luts/specular_occlusion_lut_writers.h"
 
 enum { INTERPOLATION_POINTS = 4096 };
 
@@ -95,27 +94,6 @@ static int parse_options(int argc, char **argv, lut_options *o)
     return 0;
 }
 
-static int write_json(const char *path, const so_lut *lut, double seconds, double max_interp, double rms_interp,
-                      gt_error *e)
-{
-    cJSON *o = cJSON_CreateObject();
-    cJSON_AddStringToObject(o, "table", "specular-occlusion");
-    cJSON_AddStringToObject(o, "lobe", so_lobe_name(lut->lobe));
-    cJSON_AddNumberToObject(o, "size", lut->size);
-    cJSON_AddStringToObject(o, "axes", so_lut_axes_name(lut->axes));
-    cJSON_AddStringToObject(o, "layout", so_lut_axes_description(lut->axes));
-    cJSON_AddNumberToObject(o, "max_quadrature_error_estimate", lut->max_error_estimate);
-    cJSON_AddNumberToObject(o, "interpolation_points", INTERPOLATION_POINTS);
-    cJSON_AddNumberToObject(o, "max_interpolation_error", max_interp);
-    cJSON_AddNumberToObject(o, "rms_interpolation_error", rms_interp);
-    cJSON_AddNumberToObject(o, "seconds", seconds);
-    char *text = cJSON_Print(o);
-    cJSON_Delete(o);
-    int rc = text ? atomic_write_text(path, text, e) : gt_error_set(e, path, "out of memory");
-    free(text);
-    return rc;
-}
-
 int lut_specular_occlusion(int argc, char **argv)
 {
     lut_options o = {32, SO_LOBE_GGX, SO_AXES_ANGLES, omp_get_num_procs(), NULL};
@@ -140,7 +118,7 @@ int lut_specular_occlusion(int argc, char **argv)
     gt_error e;
     int status = EXIT_OK;
     if (lut_write_all(o.dir, base, identifier, lut.data, (int)o.size, description, &e) != 0 ||
-        write_json(path, &lut, seconds, max_interp, rms_interp, &e) != 0)
+        so_lut_write_json(path, &lut, seconds, INTERPOLATION_POINTS, max_interp, rms_interp, &e) != 0)
         status = cli_fail(&e);
     else
         printf("%s/%s.{exr,png,h,json}: %ld^3 in %.2f s; quadrature error <= %.1e; trilinear error max %.2e, rms %.2e\n",

@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "core/exr_io.h"
 #include "core/reference_schema.h"
 #include "scene/camera.h"
 
@@ -74,4 +75,30 @@ int aperture_case_from_images(aperture_case *c, const image *reference, const ch
         return gt_error_set(e, what_reference, "no channel %s (not a specular-occlusion reference?)", channel);
     return so_inputs_from_images(reference, what_reference, ao, what_ao, so_reference_roughness(reference),
                                  &c->inputs, e);
+}
+
+int aperture_cases_load(const char *const *references, const char *const *ao_paths, int count, const char *channel,
+                        image *refs, image *aos, aperture_case *cases, int *loaded, gt_error *e)
+{
+    for (int i = 0; i < count; ++i) {
+        if (exr_read(references[i], &refs[i], e) != 0)
+            return -1;
+        if (exr_read(ao_paths[i], &aos[i], e) != 0) {
+            image_free(&refs[i]);
+            return -1;
+        }
+        *loaded = i + 1;
+        if (aperture_case_from_images(&cases[i], &refs[i], references[i], &aos[i], ao_paths[i], channel, e) != 0)
+            return -1;
+    }
+    return 0;
+}
+
+void aperture_cases_free(image *refs, image *aos, aperture_case *cases, int loaded)
+{
+    for (int i = 0; i < loaded; ++i) {
+        aperture_case_free(&cases[i]);
+        image_free(&refs[i]);
+        image_free(&aos[i]);
+    }
 }

@@ -29,4 +29,12 @@ double so_reference_roughness(const image *reference);
 int aperture_case_from_images(aperture_case *c, const image *reference, const char *what_reference, const image *ao,
                               const char *what_ao, const char *channel, gt_error *e);
 
+/* count (reference, AO) file pairs read into refs[i], aos[i] and made into
+ * cases[i] (aperture_case_from_images). *loaded counts the pairs read;
+ * aperture_cases_free releases them, also after a failure. Returns 0, or -1
+ * with e naming the file at fault. */
+int aperture_cases_load(const char *const *references, const char *const *ao_paths, int count, const char *channel,
+                        image *refs, image *aos, aperture_case *cases, int *loaded, gt_error *e);
+void aperture_cases_free(image *refs, image *aos, aperture_case *cases, int loaded);
+
 #endif

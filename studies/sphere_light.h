@@ -16,7 +16,7 @@
 
 #include <stdint.h>
 
-#include "fitters/fit_sphere_light.h"
+#include "fitters/fit_sphere_light_outputs.h"
 #include "studies/study.h"
 
 /* The folder below the output folder. */
@@ -60,39 +60,11 @@ int sphere_noh_study(const sphere_noh_sweep *sweep, const char *dir, sphere_noh_
 
 /* ---- The refit of Decima's radius reduction and normalisation ---- */
 
-typedef struct {
-    int train, test;     /* configurations fitted and held out */
-    uint32_t mc_samples; /* MIS samples per reference */
-    uint32_t seed;
-    int threads;
-} sphere_fit_settings;
-
-/* A fitted constant beside the talk's value. */
-typedef struct {
-    const char *name;
-    double value, stderr_, published;
-} sphere_fit_constant;
-
-/* A model's errors on the held-out configurations. */
-typedef struct {
-    const char *method, *key;
-    sphere_light_errors errors;
-} sphere_fit_errors_row;
-
-enum { SPHERE_FIT_KARIS, SPHERE_FIT_PUBLISHED, SPHERE_FIT_REFIT, SPHERE_FIT_MODELS };
-
-typedef struct {
-    sphere_light_fit_result fit;
-    sphere_fit_constant constants[SPHERE_FIT_PARAMS];
-    sphere_fit_errors_row held_out[SPHERE_FIT_MODELS];
-    double mean_reference_rel_stderr; /* mean stderr / (reference + floor) of the held-out set */
-    double seconds;
-} sphere_fit_outcome;
-
 /* Configurations drawn from a realistic distribution (roughness 0.05-1,
  * the sun's size to 30 deg, the light mostly near the mirror direction),
  * their Monte Carlo references, the fit (fitters/fit_sphere_light.h) and
- * the errors before and after on held-out configurations. Writes nothing. */
+ * the errors before and after on held-out configurations. Writes nothing
+ * (the settings, the outcome and its files: fitters/fit_sphere_light_outputs.h). */
 int sphere_fit_study(const sphere_fit_settings *s, sphere_fit_outcome *out, gt_error *e);
 
 /* ---- Error maps against the parameter-space reference ---- */

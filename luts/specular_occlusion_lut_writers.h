@@ -1,0 +1,16 @@
+/* The description of a GTSO cone/lobe table (specular_occlusion_lut.h) as
+ * JSON, beside the table's EXR/PNG/C files (lut_writers.h): lobe, size,
+ * axes and their layout, the quadrature error estimate, the trilinear
+ * interpolation error at `points` random points
+ * (so_lut_interpolation_error) and the seconds the build took. Written by
+ * `gtlab lut specular-occlusion`. */
+#ifndef GTLAB_LUTS_SPECULAR_OCCLUSION_LUT_WRITERS_H
+#define GTLAB_LUTS_SPECULAR_OCCLUSION_LUT_WRITERS_H
+
+#include "core/error.h"
+#include "luts/specular_occlusion_lut.h"
+
+int so_lut_write_json(const char *path, const so_lut *lut, double seconds, int points, double max_interp,
+                      double rms_interp, gt_error *e);
+
+#endif
