@@ -208,20 +208,35 @@ static double uniform01(unsigned long long *state)
     return (double)((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
 }
 
+/* The lookup's error at random point s (its own generator state). */
+static double interpolation_error_at(const so_lut *lut, unsigned seed, int s)
+{
+    unsigned long long state = ((unsigned long long)seed << 32) ^ (unsigned long long)s;
+    double t[3] = {uniform01(&state), uniform01(&state), uniform01(&state)}, av, beta, r;
+    so_lut_point(lut->axes, t, &av, &beta, &r);
+    double exact = so_cone_lobe(lut->lobe, av, beta, r, so_lobe_normaliser(lut->lobe, r), NULL);
+    return fabs(so_lut_lookup(lut, av, beta, r) - exact);
+}
+
+/* The points are evaluated in parallel, then summed in their order, so the
+ * RMS does not depend on the thread count (a reduction's order would). */
 void so_lut_interpolation_error(const so_lut *lut, int count, unsigned seed, int threads, double *max_error,
                                 double *rms_error)
 {
+    double *errors = malloc(sizeof *errors * (size_t)(count > 0 ? count : 1));
     double max_e = 0.0, sum_sq = 0.0;
-#pragma omp parallel for schedule(dynamic, 16) num_threads(threads) reduction(max : max_e) reduction(+ : sum_sq)
-    for (int s = 0; s < count; ++s) {
-        unsigned long long state = ((unsigned long long)seed << 32) ^ (unsigned long long)s;
-        double t[3] = {uniform01(&state), uniform01(&state), uniform01(&state)}, av, beta, r;
-        so_lut_point(lut->axes, t, &av, &beta, &r);
-        double exact = so_cone_lobe(lut->lobe, av, beta, r, so_lobe_normaliser(lut->lobe, r), NULL);
-        double e = fabs(so_lut_lookup(lut, av, beta, r) - exact);
-        max_e = fmax(max_e, e);
-        sum_sq += e * e;
+    if (!errors) {
+        *max_error = *rms_error = NAN;
+        return;
     }
+#pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
+    for (int s = 0; s < count; ++s)
+        errors[s] = interpolation_error_at(lut, seed, s);
+    for (int s = 0; s < count; ++s) {
+        max_e = fmax(max_e, errors[s]);
+        sum_sq += errors[s] * errors[s];
+    }
+    free(errors);
     *max_error = max_e;
     *rms_error = sqrt(sum_sq / count);
 }

@@ -151,8 +151,23 @@ static void test_monotone_and_lookup(void)
     }
 }
 
+/* The interpolation error does not depend on the thread count, bit for bit
+ * (the RMS is summed in the points' order, not a reduction's). */
+static void test_interpolation_error_thread_independent(void)
+{
+    so_lut lut;
+    CHECK(so_lut_build(&lut, 8, SO_LOBE_GGX, SO_AXES_ANGLES, 2) == 0);
+    double max1, rms1, max2, rms2;
+    so_lut_interpolation_error(&lut, 512, 1u, 1, &max1, &rms1);
+    so_lut_interpolation_error(&lut, 512, 1u, 2, &max2, &rms2);
+    CHECK(max1 == max2 && rms1 == rms2);
+    CHECK(rms1 > 0.0 && rms1 <= max1);
+    so_lut_free(&lut);
+}
+
 int main(void)
 {
+    test_interpolation_error_thread_independent();
     test_lobe_is_ggx();
     test_monotone_and_lookup();
     test_entries();
