@@ -2,19 +2,14 @@
  * "Achieving the Performance Target": half resolution, 1 direction per pixel,
  * 8 samples per direction, spatial and temporal denoisers), and the cost per
  * pixel of every preset next to the brute-force reference's and the
- * height-field Monte Carlo reference's, measured in one run. */
+ * height-field Monte Carlo reference's, measured in one run
+ * (studies/gtao_bench.h); here the options and the printing. */
 #include <getopt.h>
 #include <omp.h>
 #include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 
-#include "studies/gbuffer_input.h"
 #include "cli/cli.h"
-#include "core/progress.h"
-#include "raytracer/reference_render.h"
-#include "realtime/gtao.h"
-#include "scene/scene_loaders.h"
+#include "studies/gtao_bench.h"
 
 static void print_help(void)
 {
@@ -36,37 +31,21 @@ static void print_help(void)
            "  --repeats R    passes per figure (default 3)\n");
 }
 
-typedef struct {
-    image img;
-    ss_gbuffer g;
-    camera cam;
-} bench_gbuffer;
-
-static int render_gbuffer(const scene *s, int width, int height, int threads, bench_gbuffer *b, gt_error *e)
+static void print_report(const char *spec, int threads, const gtao_bench_result *r)
 {
-    if (scene_choose_camera(s, NULL, width, height, &b->cam, e) != 0)
-        return -1;
-    reference_request req = {.quantity = QUANTITY_GBUFFER, .sampling = {.threads = threads}, .normals = NORMAL_SHADING};
-    render_stats stats;
-    if (reference_render(s, s->name, &b->cam, &req, &b->img, &stats, e) != 0)
-        return -1;
-    return ss_gbuffer_from_image(&b->img, s->name, approx_ss_camera(&b->cam), &b->g, e);
+    printf("scene %s; GTAO at %dx%d (1920x1080 at half resolution): %s\n\n", spec, GTAO_BENCH_HALF_WIDTH,
+           GTAO_BENCH_HALF_HEIGHT, r->settings);
+    printf("%-44s %12s %12s\n", "per frame (GTAO + denoisers)", "1 thread", "threads");
+    printf("%-44s %9.2f ms %9.2f ms   (%d threads)\n\n", "talk's configuration", 1e3 * r->talk_seconds_1_thread,
+           1e3 * r->talk_seconds_threads, threads);
+    printf("cost per pixel, one frame on %dx%d, %d threads:\n", r->small_width, r->small_height, threads);
+    double reference_ns = r->preset_ns[GTAO_PRESET_REFERENCE];
+    for (int i = 0; i < GTAO_PRESET_COUNT; ++i)
+        printf("  GTAO %-12s %12.1f ns/pixel   %8.4f of the brute-force reference\n", gtao_preset_names[i],
+               r->preset_ns[i], r->preset_ns[i] / reference_ns);
+    printf("  height-field MC, %d spp %8.1f ns/pixel   %8.4f of the brute-force reference\n",
+           GTAO_BENCH_HEIGHTFIELD_SPP, r->heightfield_ns, r->heightfield_ns / reference_ns);
 }
-
-/* Best seconds per frame of p over `repeats` passes. */
-static double seconds_per_frame(const bench_gbuffer *b, const gtao_params *p, int repeats, float *ao)
-{
-    double best = 1e30;
-    for (int r = 0; r < repeats; ++r) {
-        double t0 = seconds_now();
-        gtao_render(&b->g, p, ao, NULL);
-        double t = (seconds_now() - t0) / p->frames;
-        best = t < best ? t : best;
-    }
-    return best;
-}
-
-static float bench_radius(const camera *cam) { return 0.25f * v3_length(v3_sub(cam->target, cam->position)); }
 
 int bench_gtao(int argc, char **argv)
 {
@@ -88,62 +67,9 @@ int bench_gtao(int argc, char **argv)
         }
     }
     gt_error e;
-    scene s;
-    if (scene_load(spec, &s, &e) != 0)
+    gtao_bench_result r;
+    if (gtao_bench_run(spec, (int)threads, (int)repeats, &r, &e) != 0)
         return cli_fail(&e);
-    bench_gbuffer half = {0}, small = {0};
-    int status = EXIT_OK;
-    float *ao = malloc(sizeof *ao * 960 * 540);
-    if (!ao || render_gbuffer(&s, 960, 540, (int)threads, &half, &e) != 0 ||
-        render_gbuffer(&s, 240, 136, (int)threads, &small, &e) != 0) {
-        status = ao ? cli_fail(&e) : EXIT_INTERNAL_ERROR;
-        goto done;
-    }
-    gtao_params talk;
-    gtao_preset("medium", &talk);
-    talk.radius = bench_radius(&half.cam);
-    talk.frames = 24;
-    char settings[512];
-    gtao_params_text(&talk, settings, sizeof settings);
-    printf("scene %s; GTAO at 960x540 (1920x1080 at half resolution): %s\n\n", spec, settings);
-    printf("%-44s %12s %12s\n", "per frame (GTAO + denoisers)", "1 thread", "threads");
-    omp_set_num_threads(1);
-    double one = seconds_per_frame(&half, &talk, (int)repeats, ao);
-    omp_set_num_threads((int)threads);
-    double many = seconds_per_frame(&half, &talk, (int)repeats, ao);
-    printf("%-44s %9.2f ms %9.2f ms   (%ld threads)\n\n", "talk's configuration", 1e3 * one, 1e3 * many, threads);
-
-    printf("cost per pixel, one frame on %dx%d, %ld threads:\n", small.g.width, small.g.height, threads);
-    double reference_ns = 0, ns[8];
-    int count = 0;
-    for (int i = 0; gtao_preset_names[i]; ++i, ++count) {
-        gtao_params p;
-        gtao_preset(gtao_preset_names[i], &p);
-        p.radius = bench_radius(&small.cam);
-        ns[i] = 1e9 * seconds_per_frame(&small, &p, (int)repeats, ao) / ((double)small.g.width * small.g.height);
-        if (strcmp(gtao_preset_names[i], "reference") == 0)
-            reference_ns = ns[i];
-    }
-    for (int i = 0; i < count; ++i)
-        printf("  GTAO %-12s %12.1f ns/pixel   %8.4f of the brute-force reference\n", gtao_preset_names[i], ns[i],
-               ns[i] / reference_ns);
-    reference_request req = {.quantity = QUANTITY_HEIGHTFIELD_AO, .sampling = {.spp = 64, .seed = 1, .threads = (int)threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
-    image hf;
-    render_stats stats;
-    double t0 = seconds_now();
-    if (reference_render(&s, spec, &small.cam, &req, &hf, &stats, &e) != 0) {
-        status = cli_fail(&e);
-        goto done;
-    }
-    double hf_ns = 1e9 * (seconds_now() - t0) / ((double)small.g.width * small.g.height);
-    image_free(&hf);
-    printf("  height-field MC, 64 spp %8.1f ns/pixel   %8.4f of the brute-force reference\n", hf_ns,
-           hf_ns / reference_ns);
-done:
-    free(ao);
-    image_free(&half.img);
-    image_free(&small.img);
-    scene_free(&s);
-    return status;
+    print_report(spec, (int)threads, &r);
+    return EXIT_OK;
 }

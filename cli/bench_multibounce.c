@@ -1,6 +1,7 @@
 /* gtlab bench multibounce: the multi-bounce reference's paths/s and rays/s
  * against raw Embree closest-hit queries, and N albedos in one pass against
- * N single-albedo renders (issue 3, "Performance"). */
+ * N single-albedo renders (issue 3, "Performance"; studies/multibounce_bench.h);
+ * here the options and the printing. */
 #define _GNU_SOURCE
 #include <getopt.h>
 #include <omp.h>
@@ -8,8 +9,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "raytracer/multibounce_throughput.h"
-#include "scene/scene_loaders.h"
+#include "studies/multibounce_bench.h"
 
 static void print_help(void)
 {
@@ -87,17 +87,10 @@ int bench_multibounce(int argc, char **argv)
     }
     if (optind < argc)
         return cli_failf("bench multibounce", "unexpected argument '%s'", argv[optind]);
-    scene s;
-    if (scene_load(spec, &s, &e) != 0)
-        return cli_fail(&e);
-    camera cam;
     multibounce_benchmark b;
-    int status = EXIT_OK;
-    if (scene_choose_camera(&s, NULL, (int)width, (int)height, &cam, &e) != 0 ||
-        multibounce_benchmark_run(&s, &cam, &settings, (int)spp, (int)threads, (int)repeats, &b, &e) != 0)
-        status = cli_fail(&e);
-    else
-        print_report(spec, &settings, &b);
-    scene_free(&s);
-    return status;
+    if (multibounce_bench_run(spec, (int)width, (int)height, &settings, (int)spp, (int)threads, (int)repeats, &b,
+                              &e) != 0)
+        return cli_fail(&e);
+    print_report(spec, &settings, &b);
+    return EXIT_OK;
 }

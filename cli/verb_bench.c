@@ -1,15 +1,16 @@
-/* gtlab bench: throughput figures and their ratios, measured in one run. */
+/* gtlab bench: throughput figures and their ratios, measured in one run
+ * (studies/ray_throughput.h, studies/specular_occlusion_bench.h); here the
+ * options, the dispatch to the techniques' benchmarks and the printing. */
 #define _GNU_SOURCE
 #include <getopt.h>
 #include <omp.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "cli/bench_specular_occlusion.h"
 #include "cli/cli.h"
 #include "cli/technique.h"
-#include "raytracer/ray_throughput.h"
-#include "scene/scene_loaders.h"
+#include "studies/ray_throughput.h"
+#include "studies/specular_occlusion_bench.h"
 
 static void print_help(void)
 {
@@ -39,18 +40,46 @@ static void print_help(void)
            "at 1920x1080 and every preset's cost per pixel), multibounce, fit, sphere-light.\n");
 }
 
-static void print_report(const char *scene_spec, const ray_benchmark *b)
+static void print_rays(const ray_throughput_result *r)
 {
-    printf("scene %s, %ld rays per pass, 1 and %d threads\n\n", scene_spec, b->rays_per_pass, b->threads);
+    const ray_throughput_row *gtlab = &r->rows[RAY_THROUGHPUT_GTLAB_ROW], *ratio = &r->rows[RAY_THROUGHPUT_RATIO_ROW];
+    printf("scene %s, %ld rays per pass, 1 and %d threads\n\n", r->scene, r->rays_per_pass, r->threads);
     printf("%-34s %14s %14s\n", "occlusion rays/s", "1 thread", "threads");
     for (int call = 0; call < RAW_CALL_COUNT; ++call)
-        printf("%-34s %14.4g %14.4g\n", raw_call_names[call], b->raw[0].by_call[call], b->raw[1].by_call[call]);
-    printf("%-34s %14.4g %14.4g\n", "Embree best (raw)", b->raw[0].best, b->raw[1].best);
-    printf("%-34s %14.4g %14.4g\n", "gtlab AO reference, end to end", b->gtlab_ao[0], b->gtlab_ao[1]);
-    printf("\n%-34s %14.3f %14.3f\n", "ratio gtlab / raw Embree", b->gtlab_ao[0] / b->raw[0].best,
-           b->gtlab_ao[1] / b->raw[1].best);
-    printf("%-34s %14s %14.3f\n", "speed-up threads / 1 thread (gtlab)", "", b->gtlab_ao[1] / b->gtlab_ao[0]);
-    printf("%-34s %14s %14.3f\n", "speed-up threads / 1 thread (raw)", "", b->raw[1].best / b->raw[0].best);
+        printf("%-34s %14.4g %14.4g\n", r->rows[call].name, r->rows[call].one_thread, r->rows[call].threads);
+    printf("%-34s %14.4g %14.4g\n", "Embree best (raw)", r->raw_best_1_thread, r->raw_best_threads);
+    printf("%-34s %14.4g %14.4g\n", "gtlab AO reference, end to end", gtlab->one_thread, gtlab->threads);
+    printf("\n%-34s %14.3f %14.3f\n", "ratio gtlab / raw Embree", ratio->one_thread, ratio->threads);
+    printf("%-34s %14s %14.3f\n", "speed-up threads / 1 thread (gtlab)", "", r->speedup_gtlab);
+    printf("%-34s %14s %14.3f\n", "speed-up threads / 1 thread (raw)", "", r->speedup_raw);
+}
+
+static void print_specular_occlusion(const char *spec, int repeats, const specular_occlusion_bench_result *r)
+{
+    printf("specular-occlusion reference on %s, %dx%d, %d spp, roughness %.1f (best of %d)\n", spec, r->width,
+           r->height, SPECOCC_BENCH_SPP, SPECOCC_BENCH_ROUGHNESS, repeats);
+    printf("%-34s %14s %14s\n", "", "1 thread", "threads");
+    printf("%-34s %14.3e %14.3e\n", "samples/s", r->samples_per_s[0], r->samples_per_s[1]);
+    printf("%-34s %14.3e %14.3e\n", "rays/s (one ray per sample above)", r->rays_per_s[0], r->rays_per_s[1]);
+    printf("%-34s %14s %14.3f\n", "speed-up threads / 1 thread", "", r->samples_per_s[1] / r->samples_per_s[0]);
+}
+
+/* `gtlab bench rays` or `gtlab bench specular-occlusion`, measured and printed. */
+static int run_named(int specular, const char *spec, int width, int height, int threads, int repeats)
+{
+    gt_error e;
+    if (specular) {
+        specular_occlusion_bench_result r;
+        if (specular_occlusion_bench_run(spec, width, height, threads, repeats, &r, &e) != 0)
+            return cli_fail(&e);
+        print_specular_occlusion(spec, repeats, &r);
+    } else {
+        ray_throughput_result r;
+        if (ray_throughput_measure(spec, width, height, threads, repeats, &r, &e) != 0)
+            return cli_fail(&e);
+        print_rays(&r);
+    }
+    return EXIT_OK;
 }
 
 int verb_bench(int argc, char **argv)
@@ -86,22 +115,5 @@ int verb_bench(int argc, char **argv)
     if (optind >= argc || (strcmp(argv[optind], "rays") != 0 && !specular))
         return cli_failf("bench", "name a benchmark: rays, specular-occlusion, gtao, multibounce, fit or sphere-light "
                                   "(see 'gtlab bench --help')");
-    gt_error e;
-    scene s;
-    if (scene_load(scene_spec, &s, &e) != 0)
-        return cli_fail(&e);
-    camera cam;
-    ray_benchmark b;
-    int status = EXIT_OK;
-    if (specular) {
-        if (scene_choose_camera(&s, NULL, (int)width, (int)height, &cam, &e) != 0 ||
-            bench_specular_occlusion(&s, scene_spec, &cam, (int)threads, (int)repeats, &e) != 0)
-            status = cli_fail(&e);
-    } else if (scene_choose_camera(&s, NULL, (int)width, (int)height, &cam, &e) != 0 ||
-        ray_benchmark_run(&s, &cam, (int)threads, (int)repeats, &b, &e) != 0)
-        status = cli_fail(&e);
-    else
-        print_report(scene_spec, &b);
-    scene_free(&s);
-    return status;
+    return run_named(specular, scene_spec, (int)width, (int)height, (int)threads, (int)repeats);
 }

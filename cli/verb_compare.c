@@ -4,19 +4,15 @@
 #define _GNU_SOURCE
 #include <cjson/cJSON.h>
 #include <getopt.h>
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli/cli.h"
-#include "core/reference_schema.h"
 #include "core/atomic_file.h"
 #include "core/exr_io.h"
 #include "core/image_io.h"
-#include "metrics/image_error.h"
 #include "metrics/image_pair.h"
-#include "metrics/ssim.h"
 
 #define HEATMAP_PERCENTILE 99.0 /* the heatmap's full scale */
 #define HEATMAP_PERCENTILE_TEXT "99th"
@@ -101,56 +97,32 @@ static int parse_options(int argc, char **argv, compare_options *o)
 }
 
 typedef struct {
-    image_error_stats error;
-    ssim_result ssim;
-    int has_floor_a, has_floor_b;
-    ssim_result floor_a, floor_b;
+    metrics_pair_figures figures;
     float heatmap_vmax;
     const char *heatmap_vmax_rule; /* how heatmap_vmax was chosen, for the reader */
 } compare_results;
 
-/* Whether img is a reference render holding the accumulators of `channel`. */
-static int is_reference_of(const image *img, const char *channel)
+static const char *scale_rule(metrics_heatmap_scale scale)
 {
-    char name[IMAGE_NAME_MAX];
-    return schema_channel_suffixed(channel, CH_SUFFIX_SUM, name) == 0 && image_find_channel(img, name) != NULL;
+    switch (scale) {
+    case HEATMAP_SCALE_PERCENTILE: return "the " HEATMAP_PERCENTILE_TEXT " percentile";
+    case HEATMAP_SCALE_MAXIMUM: return "the maximum, as the " HEATMAP_PERCENTILE_TEXT " percentile is 0";
+    default: return "arbitrary: the error is 0 everywhere";
+    }
 }
 
-/* The heatmap's values and mask: |A-B| inside the pair's mask, or the
- * per-window DSSIM at the valid centres inside it. Full scale: the chosen
- * percentile, or the maximum if that is 0, or 1 if every value is 0. */
-static int write_heatmap(const compare_options *o, const metrics_pair *pair, const float *ssim_map, float *vmax,
-                         const char **vmax_rule, gt_error *e)
+/* The heatmap (metrics_pair_heatmap) written as a PNG. */
+static int write_heatmap(const compare_options *o, const metrics_pair *pair, const float *ssim_map,
+                         compare_results *r, gt_error *e)
 {
-    size_t n = (size_t)pair->width * (size_t)pair->height;
-    float *values = malloc(sizeof *values * n), *mask = malloc(sizeof *mask * n);
-    int status = -1;
-    if (!values || !mask) {
-        gt_error_set(e, o->heatmap, "out of memory");
-        goto done;
-    }
-    for (size_t i = 0; i < n; ++i) {
-        int inside = pair->mask[i] != 0.0f && (!o->heatmap_dssim || !isnan(ssim_map[i]));
-        double v = o->heatmap_dssim ? (1.0 - ssim_map[i]) / 2.0 : fabs((double)pair->a[i] - (double)pair->b[i]);
-        values[i] = inside ? (float)v : 0.0f;
-        mask[i] = inside ? 1.0f : 0.0f;
-    }
-    *vmax_rule = "the " HEATMAP_PERCENTILE_TEXT " percentile";
-    if (metrics_percentile(values, mask, n, HEATMAP_PERCENTILE, o->heatmap, vmax, e) != 0)
-        goto done;
-    if (!(*vmax > 0.0f)) {
-        *vmax_rule = "the maximum, as the " HEATMAP_PERCENTILE_TEXT " percentile is 0";
-        if (metrics_percentile(values, mask, n, 100.0, o->heatmap, vmax, e) != 0)
-            goto done;
-    }
-    if (!(*vmax > 0.0f)) {
-        *vmax_rule = "arbitrary: the error is 0 everywhere";
-        *vmax = 1.0f;
-    }
-    status = image_write_heatmap(o->heatmap, values, mask, pair->width, pair->height, *vmax, HEATMAP_COLOUR_MAP, e);
-done:
-    free(values);
-    free(mask);
+    metrics_heatmap h;
+    if (metrics_pair_heatmap(pair, ssim_map, HEATMAP_PERCENTILE, o->heatmap, &h, e) != 0)
+        return -1;
+    r->heatmap_vmax = h.vmax;
+    r->heatmap_vmax_rule = scale_rule(h.scale);
+    int status = image_write_heatmap(o->heatmap, h.values, h.mask, pair->width, pair->height, h.vmax,
+                                     HEATMAP_COLOUR_MAP, e);
+    metrics_heatmap_free(&h);
     return status;
 }
 
@@ -161,24 +133,9 @@ static int measure(const compare_options *o, const image *a, const image *b, con
     float *ssim_map = NULL;
     if (o->heatmap && o->heatmap_dssim && !(ssim_map = malloc(sizeof *ssim_map * image_pixel_count(a))))
         return gt_error_set(e, o->a, "out of memory");
-    int status = -1;
-    if (image_error_compute(pair->a, pair->b, pair->mask, pair->width, pair->height, o->a, &r->error, e) != 0 ||
-        ssim_compute(pair->a, pair->b, pair->mask, pair->width, pair->height, o->a, ssim_map, &r->ssim, e) != 0)
-        goto done;
-    if (o->noise_floor) {
-        if (ssim_noise_floor(a, o->a, pair->channel, pair->mask, &r->floor_a, e) != 0)
-            goto done;
-        r->has_floor_a = 1;
-        if (is_reference_of(b, pair->channel)) {
-            if (ssim_noise_floor(b, o->b, pair->channel, pair->mask, &r->floor_b, e) != 0)
-                goto done;
-            r->has_floor_b = 1;
-        }
-    }
-    if (o->heatmap && write_heatmap(o, pair, ssim_map, &r->heatmap_vmax, &r->heatmap_vmax_rule, e) != 0)
-        goto done;
-    status = 0;
-done:
+    int status = metrics_pair_measure(pair, a, o->a, b, o->b, o->noise_floor, ssim_map, &r->figures, e);
+    if (status == 0 && o->heatmap)
+        status = write_heatmap(o, pair, ssim_map, r, e);
     free(ssim_map);
     return status;
 }
@@ -192,18 +149,18 @@ static void print_table(const compare_options *o, const metrics_pair *pair, cons
 {
     printf("A  %s\nB  %s\n", o->a, o->b);
     printf("channel %s, %dx%d: %zu pixels inside both masks, %zu SSIM window centres\n\n", pair->channel,
-           pair->width, pair->height, r->error.pixels, r->ssim.centres);
-    printf("  SSIM          %.6f\n", r->ssim.ssim);
-    printf("  DSSIM         %.6g\n", r->ssim.dssim);
-    printf("  RMSE          %.6g\n", r->error.rmse);
-    printf("  mean |A-B|    %.6g\n", r->error.mean_abs);
-    printf("  max |A-B|     %.6g at pixel (%d, %d)\n", r->error.max_abs, r->error.max_x, r->error.max_y);
-    printf("  mean A        %.6g\n", r->error.mean_a);
-    printf("  mean B        %.6g\n", r->error.mean_b);
-    if (r->has_floor_a)
-        printf("  noise floor   DSSIM %.6g between the even and odd samples of A\n", r->floor_a.dssim);
-    if (r->has_floor_b)
-        printf("                DSSIM %.6g between the even and odd samples of B\n", r->floor_b.dssim);
+           pair->width, pair->height, r->figures.error.pixels, r->figures.ssim.centres);
+    printf("  SSIM          %.6f\n", r->figures.ssim.ssim);
+    printf("  DSSIM         %.6g\n", r->figures.ssim.dssim);
+    printf("  RMSE          %.6g\n", r->figures.error.rmse);
+    printf("  mean |A-B|    %.6g\n", r->figures.error.mean_abs);
+    printf("  max |A-B|     %.6g at pixel (%d, %d)\n", r->figures.error.max_abs, r->figures.error.max_x, r->figures.error.max_y);
+    printf("  mean A        %.6g\n", r->figures.error.mean_a);
+    printf("  mean B        %.6g\n", r->figures.error.mean_b);
+    if (r->figures.has_floor_a)
+        printf("  noise floor   DSSIM %.6g between the even and odd samples of A\n", r->figures.floor_a.dssim);
+    if (r->figures.has_floor_b)
+        printf("                DSSIM %.6g between the even and odd samples of B\n", r->figures.floor_b.dssim);
     if (o->heatmap)
         printf("\nheatmap %s: %s, colour map %s, full scale %.6g (%s); black outside the mask\n", o->heatmap,
                heatmap_metric_name(o), HEATMAP_COLOUR_MAP, r->heatmap_vmax, r->heatmap_vmax_rule);
@@ -220,21 +177,21 @@ static char *results_json(const compare_options *o, const metrics_pair *pair, co
     cJSON_AddStringToObject(root, "channel", pair->channel);
     cJSON_AddNumberToObject(root, "width", pair->width);
     cJSON_AddNumberToObject(root, "height", pair->height);
-    cJSON_AddNumberToObject(root, "pixels", (double)r->error.pixels);
-    cJSON_AddNumberToObject(root, "ssim_window_centres", (double)r->ssim.centres);
-    cJSON_AddNumberToObject(root, "ssim", r->ssim.ssim);
-    cJSON_AddNumberToObject(root, "dssim", r->ssim.dssim);
-    cJSON_AddNumberToObject(root, "rmse", r->error.rmse);
-    cJSON_AddNumberToObject(root, "mean_abs", r->error.mean_abs);
-    cJSON_AddNumberToObject(root, "max_abs", r->error.max_abs);
-    const int at[2] = {r->error.max_x, r->error.max_y};
+    cJSON_AddNumberToObject(root, "pixels", (double)r->figures.error.pixels);
+    cJSON_AddNumberToObject(root, "ssim_window_centres", (double)r->figures.ssim.centres);
+    cJSON_AddNumberToObject(root, "ssim", r->figures.ssim.ssim);
+    cJSON_AddNumberToObject(root, "dssim", r->figures.ssim.dssim);
+    cJSON_AddNumberToObject(root, "rmse", r->figures.error.rmse);
+    cJSON_AddNumberToObject(root, "mean_abs", r->figures.error.mean_abs);
+    cJSON_AddNumberToObject(root, "max_abs", r->figures.error.max_abs);
+    const int at[2] = {r->figures.error.max_x, r->figures.error.max_y};
     cJSON_AddItemToObject(root, "max_abs_pixel", cJSON_CreateIntArray(at, 2));
-    cJSON_AddNumberToObject(root, "mean_a", r->error.mean_a);
-    cJSON_AddNumberToObject(root, "mean_b", r->error.mean_b);
-    if (r->has_floor_a)
-        cJSON_AddNumberToObject(root, "noise_floor_dssim", r->floor_a.dssim);
-    if (r->has_floor_b)
-        cJSON_AddNumberToObject(root, "noise_floor_dssim_b", r->floor_b.dssim);
+    cJSON_AddNumberToObject(root, "mean_a", r->figures.error.mean_a);
+    cJSON_AddNumberToObject(root, "mean_b", r->figures.error.mean_b);
+    if (r->figures.has_floor_a)
+        cJSON_AddNumberToObject(root, "noise_floor_dssim", r->figures.floor_a.dssim);
+    if (r->figures.has_floor_b)
+        cJSON_AddNumberToObject(root, "noise_floor_dssim_b", r->figures.floor_b.dssim);
     if (o->heatmap) {
         cJSON *h = cJSON_AddObjectToObject(root, "heatmap");
         cJSON_AddStringToObject(h, "path", o->heatmap);

@@ -127,3 +127,90 @@ void metrics_pair_free(metrics_pair *pair)
     free(pair->mask);
     memset(pair, 0, sizeof *pair);
 }
+
+int metrics_is_reference_of(const image *img, const char *channel)
+{
+    char name[IMAGE_NAME_MAX];
+    return schema_channel_suffixed(channel, CH_SUFFIX_SUM, name) == 0 && image_find_channel(img, name) != NULL;
+}
+
+static int measure_noise_floors(const metrics_pair *pair, const image *a, const char *what_a, const image *b,
+                                const char *what_b, metrics_pair_figures *out, gt_error *e)
+{
+    if (ssim_noise_floor(a, what_a, pair->channel, pair->mask, &out->floor_a, e) != 0)
+        return -1;
+    out->has_floor_a = 1;
+    if (!metrics_is_reference_of(b, pair->channel))
+        return 0;
+    if (ssim_noise_floor(b, what_b, pair->channel, pair->mask, &out->floor_b, e) != 0)
+        return -1;
+    out->has_floor_b = 1;
+    return 0;
+}
+
+int metrics_pair_measure(const metrics_pair *pair, const image *a, const char *what_a, const image *b,
+                         const char *what_b, int noise_floor, float *ssim_map, metrics_pair_figures *out,
+                         gt_error *e)
+{
+    memset(out, 0, sizeof *out);
+    if (image_error_compute(pair->a, pair->b, pair->mask, pair->width, pair->height, what_a, &out->error, e) != 0 ||
+        ssim_compute(pair->a, pair->b, pair->mask, pair->width, pair->height, what_a, ssim_map, &out->ssim, e) != 0)
+        return -1;
+    return noise_floor ? measure_noise_floors(pair, a, what_a, b, what_b, out, e) : 0;
+}
+
+/* Per pixel: |A-B|, or the window's DSSIM; 0 and outside where not defined. */
+static void heatmap_values(const metrics_pair *pair, const float *ssim_map, metrics_heatmap *h)
+{
+    size_t n = (size_t)pair->width * (size_t)pair->height;
+    for (size_t i = 0; i < n; ++i) {
+        int inside = pair->mask[i] != 0.0f && (!ssim_map || !isnan(ssim_map[i]));
+        double v = ssim_map ? (1.0 - ssim_map[i]) / 2.0 : fabs((double)pair->a[i] - (double)pair->b[i]);
+        h->values[i] = inside ? (float)v : 0.0f;
+        h->mask[i] = inside ? 1.0f : 0.0f;
+    }
+}
+
+/* The percentile, else the maximum, else 1 (see metrics_pair_heatmap). */
+static int heatmap_scale(metrics_heatmap *h, size_t n, double percentile, const char *what, gt_error *e)
+{
+    h->scale = HEATMAP_SCALE_PERCENTILE;
+    if (metrics_percentile(h->values, h->mask, n, percentile, what, &h->vmax, e) != 0)
+        return -1;
+    if (!(h->vmax > 0.0f)) {
+        h->scale = HEATMAP_SCALE_MAXIMUM;
+        if (metrics_percentile(h->values, h->mask, n, 100.0, what, &h->vmax, e) != 0)
+            return -1;
+    }
+    if (!(h->vmax > 0.0f)) {
+        h->scale = HEATMAP_SCALE_ARBITRARY;
+        h->vmax = 1.0f;
+    }
+    return 0;
+}
+
+int metrics_pair_heatmap(const metrics_pair *pair, const float *ssim_map, double percentile, const char *what,
+                         metrics_heatmap *out, gt_error *e)
+{
+    size_t n = (size_t)pair->width * (size_t)pair->height;
+    memset(out, 0, sizeof *out);
+    out->values = malloc(sizeof *out->values * n);
+    out->mask = malloc(sizeof *out->mask * n);
+    if (!out->values || !out->mask) {
+        metrics_heatmap_free(out);
+        return gt_error_set(e, what, "out of memory");
+    }
+    heatmap_values(pair, ssim_map, out);
+    if (heatmap_scale(out, n, percentile, what, e) != 0) {
+        metrics_heatmap_free(out);
+        return -1;
+    }
+    return 0;
+}
+
+void metrics_heatmap_free(metrics_heatmap *h)
+{
+    free(h->values);
+    free(h->mask);
+    h->values = h->mask = NULL;
+}

@@ -1,16 +1,15 @@
+/* Ray throughput; see ray_throughput.h. */
 #include "studies/ray_throughput.h"
 
 #include <string.h>
-
-#include "scene/scene_loaders.h"
 
 /* The table's rows: each raw call, gtlab's AO loop, and their ratio. */
 static void fill_rows(const ray_benchmark *b, ray_throughput_row *rows)
 {
     for (int call = 0; call < RAW_CALL_COUNT; ++call)
         rows[call] = (ray_throughput_row){raw_call_names[call], 0, b->raw[0].by_call[call], b->raw[1].by_call[call]};
-    rows[RAW_CALL_COUNT] = (ray_throughput_row){"gtlab AO reference", 0, b->gtlab_ao[0], b->gtlab_ao[1]};
-    rows[RAW_CALL_COUNT + 1] = (ray_throughput_row){"ratio gtlab / best raw", 1, b->gtlab_ao[0] / b->raw[0].best,
+    rows[RAY_THROUGHPUT_GTLAB_ROW] = (ray_throughput_row){"gtlab AO reference", 0, b->gtlab_ao[0], b->gtlab_ao[1]};
+    rows[RAY_THROUGHPUT_RATIO_ROW] = (ray_throughput_row){"ratio gtlab / best raw", 1, b->gtlab_ao[0] / b->raw[0].best,
                                                     b->gtlab_ao[1] / b->raw[1].best};
 }
 
@@ -28,21 +27,26 @@ static void fill_result(const ray_benchmark *b, ray_throughput_result *out)
     out->speedup_raw = b->raw[1].best / b->raw[0].best;
 }
 
-int ray_throughput_study(const study_context *ctx, ray_throughput_result *out, gt_error *e)
+int ray_throughput_measure(const char *spec, int width, int height, int threads, int repeats,
+                           ray_throughput_result *out, gt_error *e)
 {
     memset(out, 0, sizeof *out);
-    out->scene = "builtin:menger";
-    out->repeats = ctx->quality == QUALITY_PREVIEW ? 2 : 5;
+    out->scene = spec;
+    out->repeats = repeats;
     scene s;
-    if (scene_load(out->scene, &s, e) != 0)
-        return -1;
     camera cam;
+    if (study_load_view(spec, width, height, &s, &cam, e) != 0)
+        return -1;
     ray_benchmark b;
-    int rc = scene_choose_camera(&s, NULL, 256, 256, &cam, e);
-    if (rc == 0)
-        rc = ray_benchmark_run(&s, &cam, ctx->threads, out->repeats, &b, e);
+    int rc = ray_benchmark_run(&s, &cam, threads, repeats, &b, e);
     scene_free(&s);
     if (rc == 0)
         fill_result(&b, out);
     return rc;
+}
+
+int ray_throughput_study(const study_context *ctx, ray_throughput_result *out, gt_error *e)
+{
+    return ray_throughput_measure("builtin:menger", 256, 256, ctx->threads, ctx->quality == QUALITY_PREVIEW ? 2 : 5,
+                                  out, e);
 }

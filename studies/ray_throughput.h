@@ -30,6 +30,16 @@ typedef struct {
     double speedup_gtlab, speedup_raw;    /* `threads` threads over 1 */
 } ray_throughput_result;
 
+/* The row of gtlab's AO loop and that of its ratio to the best raw call. */
+enum { RAY_THROUGHPUT_GTLAB_ROW = RAW_CALL_COUNT, RAY_THROUGHPUT_RATIO_ROW = RAW_CALL_COUNT + 1 };
+
+/* The figures on scene `spec` seen by its default camera at width x height
+ * (`gtlab bench rays`); out->scene is spec. Returns 0, or -1 with e set. */
+int ray_throughput_measure(const char *spec, int width, int height, int threads, int repeats,
+                           ray_throughput_result *out, gt_error *e);
+
+/* The `throughput` stage: builtin:menger at 256x256, 2 passes (preview) or 5. */
+
 int ray_throughput_study(const study_context *ctx, ray_throughput_result *out, gt_error *e);
 
 #endif

@@ -10,6 +10,8 @@
 #include <stddef.h>
 
 #include "core/error.h"
+#include "scene/camera.h"
+#include "scene/scene.h"
 
 typedef enum { QUALITY_PREVIEW, QUALITY_PRODUCTION } study_quality;
 
@@ -21,5 +23,10 @@ typedef struct {
 
 /* "<output_dir>/<sub>" with the folder created. */
 int study_make_dir(const study_context *ctx, const char *sub, char *path, size_t size, gt_error *e);
+
+/* Scene `spec` (builtin:NAME or a glTF file) and its default camera for a
+ * width x height image, as the benchmarks measure on them. Returns 0 (free
+ * s with scene_free), or -1 with e set and nothing to free. */
+int study_load_view(const char *spec, int width, int height, scene *s, camera *cam, gt_error *e);
 
 #endif
