@@ -2,12 +2,12 @@
 #include "cli/approx_io.h"
 
 #include <getopt.h>
-#include <omp.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "cli/cli.h"
 #include "core/exr_io.h"
+#include "core/threads.h"
 
 const char approx_common_help[] =
     "  --gbuffer G.exr       input: an EXR with depth.Z, N.X, N.Y, N.Z and mask.A (from\n"
@@ -57,7 +57,7 @@ static int run(const approx_technique *t, const approx_common *c, const void *pa
     if (approx_load(c->gbuffer, c->camera, &in, &e) != 0)
         return cli_fail(&e);
     if (c->threads > 0)
-        omp_set_num_threads((int)c->threads);
+        threads_set((int)c->threads);
     image out = {0};
     int status = EXIT_OK;
     if (approx_output_init(&in, t->name, settings, &out) != 0 || t->compute(&in.g, params, &out) != 0) {

@@ -4,12 +4,12 @@
  * to file by studies/specular_occlusion_approx.h. */
 #define _GNU_SOURCE
 #include <getopt.h>
-#include <omp.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "cli/cli.h"
 #include "studies/specular_occlusion_approx.h"
+#include "core/threads.h"
 
 static void print_help(void)
 {
@@ -105,7 +105,7 @@ int approx_specular_occlusion(int argc, char **argv)
     if (so_variant_parse(o.variant, &v) != 0)
         return cli_failf("--variant", "unknown variant '%s' (see --help)", o.variant);
     v.u = o.u, v.weighting = o.weighting;
-    so_approx_files files = {o.gbuffer, o.ao, o.output, o.roughness, (int)o.lut_size, o.lobe, omp_get_num_procs()};
+    so_approx_files files = {o.gbuffer, o.ao, o.output, o.roughness, (int)o.lut_size, o.lobe, threads_default()};
     gt_error e;
     return so_approx_from_files(&files, &v, &e) != 0 ? cli_fail(&e) : EXIT_OK;
 }

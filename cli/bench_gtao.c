@@ -5,11 +5,11 @@
  * height-field Monte Carlo reference's, measured in one run
  * (studies/gtao_bench.h); here the options and the printing. */
 #include <getopt.h>
-#include <omp.h>
 #include <stdio.h>
 
 #include "cli/cli.h"
 #include "studies/gtao_bench.h"
+#include "core/threads.h"
 
 static void print_help(void)
 {
@@ -55,7 +55,7 @@ int bench_gtao(int argc, char **argv)
                                           {"help", no_argument, 0, 'h'},
                                           {0, 0, 0, 0}};
     const char *spec = "builtin:menger";
-    long threads = omp_get_num_procs(), repeats = 3;
+    long threads = threads_default(), repeats = 3;
     int c;
     while ((c = getopt_long(argc, argv, "h", longs, NULL)) != -1) {
         switch (c) {

@@ -4,12 +4,12 @@
  * here the options and the printing. */
 #define _GNU_SOURCE
 #include <getopt.h>
-#include <omp.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "cli/cli.h"
 #include "studies/multibounce_bench.h"
+#include "core/threads.h"
 
 static void print_help(void)
 {
@@ -59,7 +59,7 @@ int bench_multibounce(int argc, char **argv)
         {"threads", required_argument, 0, 't'}, {"repeats", required_argument, 0, 'r'},
         {"help", no_argument, 0, 'h'},          {0, 0, 0, 0}};
     const char *spec = "builtin:cornell";
-    long width = 128, height = 128, spp = 64, threads = omp_get_num_procs(), repeats = 2;
+    long width = 128, height = 128, spp = 64, threads = threads_default(), repeats = 2;
     multibounce_settings settings = {0};
     settings.bounces = 4;
     gt_error e;

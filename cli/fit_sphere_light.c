@@ -4,13 +4,13 @@
  * reference (studies/sphere_light.h), and writes the constants for an
  * engine: JSON, a C header, HLSL and GLSL (fitters/fit_sphere_light_outputs.h). */
 #include <getopt.h>
-#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 
 #include "cli/cli.h"
 #include "fitters/fit_sphere_light_outputs.h"
 #include "studies/sphere_light.h"
+#include "core/threads.h"
 
 static void print_outcome(const sphere_fit_settings *s, const sphere_fit_outcome *o)
 {
@@ -65,7 +65,7 @@ int fit_sphere_light(int argc, char **argv)
         {"seed", required_argument, 0, 'S'},   {"threads", required_argument, 0, 't'},
         {"help", no_argument, 0, 'h'},         {0, 0, 0, 0}};
     const char *output = NULL;
-    long train = 8000, test = 4000, samples = 1024, threads = omp_get_num_procs();
+    long train = 8000, test = 4000, samples = 1024, threads = threads_default();
     uint32_t seed = 1;
     int c;
     while ((c = getopt_long(argc, argv, "o:h", longs, NULL)) != -1) {

@@ -3,7 +3,6 @@
 #define _GNU_SOURCE
 #include <errno.h>
 #include <getopt.h>
-#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,6 +13,7 @@
 #include "luts/lut_writers.h"
 #include "luts/specular_occlusion_lut.h"
 #include "luts/specular_occlusion_lut_writers.h"
+#include "core/threads.h"
 
 enum { INTERPOLATION_POINTS = 4096 };
 
@@ -96,7 +96,7 @@ static int parse_options(int argc, char **argv, lut_options *o)
 
 int lut_specular_occlusion(int argc, char **argv)
 {
-    lut_options o = {32, SO_LOBE_GGX, SO_AXES_ANGLES, omp_get_num_procs(), NULL};
+    lut_options o = {32, SO_LOBE_GGX, SO_AXES_ANGLES, threads_default(), NULL};
     int parsed = parse_options(argc, argv, &o);
     if (parsed != 0)
         return parsed > 0 ? EXIT_OK : EXIT_USER_ERROR;

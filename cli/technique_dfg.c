@@ -3,7 +3,6 @@
 #define _GNU_SOURCE
 #include <errno.h>
 #include <getopt.h>
-#include <omp.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -13,6 +12,7 @@
 #include "cli/report_table.h"
 #include "cli/technique.h"
 #include "studies/dfg.h"
+#include "core/threads.h"
 
 static void print_help(void)
 {
@@ -38,7 +38,7 @@ static int lut_dfg(int argc, char **argv)
     static const struct option longs[] = {{"size", required_argument, 0, 'n'}, {"threads", required_argument, 0, 't'},
                                           {"output", required_argument, 0, 'o'}, {"help", no_argument, 0, 'h'},
                                           {0, 0, 0, 0}};
-    long size = DFG_FILAMENT_SIZE, threads = omp_get_num_procs();
+    long size = DFG_FILAMENT_SIZE, threads = threads_default();
     const char *dir = NULL;
     for (int c; (c = getopt_long(argc, argv, "o:h", longs, NULL)) != -1;) {
         switch (c) {

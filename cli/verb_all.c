@@ -3,7 +3,6 @@
 #define _GNU_SOURCE
 #include <errno.h>
 #include <getopt.h>
-#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,6 +13,7 @@
 #include "cli/technique.h"
 #include "core/atomic_file.h"
 #include "core/progress.h"
+#include "core/threads.h"
 
 enum { STAGE_MAX = 64 };
 
@@ -182,7 +182,7 @@ static int run_stages(all_context *ctx, const int selected[STAGE_MAX])
 int verb_all(int argc, char **argv)
 {
     stage_count = (int)technique_stages(stages, STAGE_MAX);
-    all_context ctx = {{"results", QUALITY_PREVIEW, omp_get_num_procs()}, NULL, NULL};
+    all_context ctx = {{"results", QUALITY_PREVIEW, threads_default()}, NULL, NULL};
     int selected[STAGE_MAX];
     for (int i = 0; i < STAGE_MAX; ++i)
         selected[i] = 1;

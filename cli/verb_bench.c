@@ -3,7 +3,6 @@
  * options, the dispatch to the techniques' benchmarks and the printing. */
 #define _GNU_SOURCE
 #include <getopt.h>
-#include <omp.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -11,6 +10,7 @@
 #include "cli/technique.h"
 #include "studies/ray_throughput.h"
 #include "studies/specular_occlusion_bench.h"
+#include "core/threads.h"
 
 static void print_help(void)
 {
@@ -98,7 +98,7 @@ int verb_bench(int argc, char **argv)
             return registered[i].run(argc - 1, argv + 1);
         }
     const char *scene_spec = "builtin:menger";
-    long width = 256, height = 256, threads = omp_get_num_procs(), repeats = 3;
+    long width = 256, height = 256, threads = threads_default(), repeats = 3;
     int c;
     while ((c = getopt_long(argc, argv, "h", longs, NULL)) != -1) {
         switch (c) {

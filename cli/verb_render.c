@@ -1,7 +1,6 @@
 /* gtlab render QUANTITY: a reference image rendered with Embree. */
 #define _GNU_SOURCE
 #include <getopt.h>
-#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,6 +10,7 @@
 #include "core/exr_io.h"
 #include "raytracer/reference_render.h"
 #include "scene/scene_loaders.h"
+#include "core/threads.h"
 
 enum { MAX_QUANTITY_OPTIONS = 64, FIRST_QUANTITY_OPTION = 256 };
 
@@ -212,7 +212,7 @@ int verb_render(int argc, char **argv)
     render_options o = {0};
     o.request.sampling.spp = 64;
     o.request.sampling.seed = 1;
-    o.request.sampling.threads = omp_get_num_procs();
+    o.request.sampling.threads = threads_default();
     int parsed = parse_options(argc, argv, &o);
     if (parsed != 0) {
         free(o.request.settings);
