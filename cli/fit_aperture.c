@@ -154,6 +154,8 @@ int fit_aperture(int argc, char **argv)
         cJSON *j = aperture_fit_json(&fit, o.channel, o.exact);
         char *text = cJSON_Print(j);
         cJSON_Delete(j);
+        if (!text)
+            gt_error_set(&e, o.output, "out of memory");
         if (!text || atomic_write_text(o.output, text, &e) != 0 ||
             (o.plot && aperture_fit_plot(&fit, o.plot, "GTSO gloss-to-aperture: DSSIM against u", &e) != 0))
             status = cli_fail(&e);
