@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "cli/fit_gtao_params.h"
+#include "report/gtao_params_json.h"
 #include "core/atomic_file.h"
 
 static void print_help(void)
@@ -32,50 +32,6 @@ static void print_help(void)
            "                    DSSIM) or rmse (per-pixel least squares)\n"
            "  -o, --output F    fit JSON: values, standard errors, scores before and after\n"
            "  -h, --help\n");
-}
-
-static cJSON *scores_json(const gtao_fit_result *r, int held_out)
-{
-    cJSON *list = cJSON_CreateArray();
-    for (int i = 0; i < r->score_count; ++i) {
-        const gtao_fit_score *x = &r->scores[i];
-        if (x->held_out != held_out)
-            continue;
-        cJSON *o = cJSON_CreateObject();
-        cJSON_AddStringToObject(o, "scene", x->scene);
-        cJSON_AddNumberToObject(o, "rmse_before", x->rmse_before);
-        cJSON_AddNumberToObject(o, "rmse_after", x->rmse_after);
-        cJSON_AddNumberToObject(o, "dssim_before", x->dssim_before);
-        cJSON_AddNumberToObject(o, "dssim_after", x->dssim_after);
-        cJSON_AddItemToArray(list, o);
-    }
-    return list;
-}
-
-cJSON *gtao_fit_json(const gtao_fit_request *rq, const gtao_fit_result *r)
-{
-    cJSON *root = cJSON_CreateObject();
-    cJSON_AddStringToObject(root, "problem", "gtao-params");
-    cJSON_AddStringToObject(root, "preset", rq->preset);
-    cJSON_AddStringToObject(root, "objective", gtao_fit_objective_names[rq->objective]);
-    cJSON_AddStringToObject(root, "train", rq->train);
-    cJSON_AddStringToObject(root, "test", rq->test);
-    cJSON *values = cJSON_AddObjectToObject(root, "values"), *errors = cJSON_AddObjectToObject(root, "standard_errors");
-    cJSON *starts = cJSON_AddObjectToObject(root, "start");
-    for (int k = 0; k < GTAO_FIT_PARAMS; ++k) {
-        cJSON_AddNumberToObject(values, gtao_fit_param_names[k], r->value[k]);
-        if (r->have_se)
-            cJSON_AddNumberToObject(errors, gtao_fit_param_names[k], r->se[k]);
-        else
-            cJSON_AddNullToObject(errors, gtao_fit_param_names[k]);
-        cJSON_AddNumberToObject(starts, gtao_fit_param_names[k], r->start[k]);
-    }
-    cJSON_AddBoolToObject(root, "converged", r->converged);
-    cJSON_AddNumberToObject(root, "iterations", r->iterations);
-    cJSON_AddNumberToObject(root, "objective_per_scene", r->objective_per_scene);
-    cJSON_AddItemToObject(root, "train_scores", scores_json(r, 0));
-    cJSON_AddItemToObject(root, "test_scores", scores_json(r, 1));
-    return root;
 }
 
 static void print_fit(const gtao_fit_request *rq, const gtao_fit_result *r)

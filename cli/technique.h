@@ -11,7 +11,7 @@
 
 #include <stddef.h>
 
-#include "cli/all_stages.h"
+#include "report/report_context.h" /* the context of a stage of `gtlab all` */
 #include "cli/subcommands.h"
 
 typedef enum { VERB_APPROX, VERB_FIT, VERB_LUT, VERB_CHECK, VERB_BENCH, VERB_KIND_COUNT } technique_verb;
@@ -20,7 +20,7 @@ typedef enum { VERB_APPROX, VERB_FIT, VERB_LUT, VERB_CHECK, VERB_BENCH, VERB_KIN
 typedef struct {
     const char *key;   /* --stages name */
     const char *title; /* progress line */
-    int (*run)(all_context *ctx, gt_error *e);
+    int (*run)(report_context *ctx, gt_error *e);
     const char *writes; /* the folder below the output folder other stages read, or NULL */
     const char *needs;  /* the key of a stage whose `writes` folder this one reads, or NULL */
 } all_stage;

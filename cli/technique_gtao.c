@@ -1,6 +1,9 @@
 /* GTAO (Jimenez et al. 2016) and its screen-space baselines HBAO and VO. */
+#include <stdio.h>
+
 #include "cli/cli.h"
 #include "cli/technique.h"
+#include "report/gtao_section.h"
 #include "studies/ao_references.h"
 
 static const cli_subcommand approximations[] = {
@@ -17,6 +20,16 @@ static const cli_subcommand benches[] = {
     {"gtao", bench_gtao, "GTAO at 1920x1080 in the talk's configuration, every preset's cost per pixel"},
     {NULL, NULL, NULL},
 };
+/* GTAO is scored against the AO stage's references (its `needs`). */
+static int all_stage_gtao(report_context *ctx, gt_error *e)
+{
+    char refs[4096];
+    snprintf(refs, sizeof refs, "%s/%s", ctx->study.output_dir, AO_REFERENCES_DIR);
+    gtao_validation_request rq = {refs};
+    static gtao_validation_result r;
+    return gtao_validation_study(&ctx->study, &rq, &r, e) != 0 ? -1 : gtao_section(ctx, &r, e);
+}
+
 static const all_stage stages[] = {
     {"gtao", "GTAO validation", all_stage_gtao, NULL, "ao"},
     {NULL, NULL, NULL, NULL, NULL},

@@ -1,6 +1,7 @@
 /* GTAO's multi-bounce approximation (Jimenez et al. 2016) and its refit. */
 #include "cli/cli.h"
 #include "cli/technique.h"
+#include "report/multibounce_section.h"
 
 static const cli_subcommand fits[] = {
     {"multibounce", fit_multibounce, "GTAO multi-bounce cubic (per albedo and joint in rho) vs multibounce renders"},
@@ -11,6 +12,12 @@ static const cli_subcommand benches[] = {
     {"fit", bench_fit, "a million-sample fit, 1- vs 1024-sample blocks"},
     {NULL, NULL, NULL},
 };
+static int all_stage_multibounce(report_context *ctx, gt_error *e)
+{
+    static multibounce_study_result r;
+    return multibounce_study(&ctx->study, &r, e) != 0 ? -1 : multibounce_section(ctx, &r, e);
+}
+
 static const all_stage stages[] = {
     {"multibounce", "multi-bounce refit", all_stage_multibounce, NULL, NULL},
     {NULL, NULL, NULL, NULL, NULL},

@@ -8,7 +8,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "cli/all_stages.h"
+#include "report/report_context.h"
 #include "cli/cli.h"
 #include "cli/technique.h"
 #include "core/atomic_file.h"
@@ -63,7 +63,7 @@ static int select_stages(const char *list, int selected[STAGE_MAX])
     return cli_failf("--stages", "no stage named in '%s'", list), -1;
 }
 
-static int write_summary(const all_context *ctx, gt_error *e)
+static int write_summary(const report_context *ctx, gt_error *e)
 {
     char path[4096];
     snprintf(path, sizeof path, "%s/summary.json", ctx->study.output_dir);
@@ -76,7 +76,7 @@ static int write_summary(const all_context *ctx, gt_error *e)
 }
 
 /* Parses the options into ctx and selected; 1 after --help, -1 after an error (printed). */
-static int parse_options(int argc, char **argv, all_context *ctx, int selected[STAGE_MAX], const char **stage_list)
+static int parse_options(int argc, char **argv, report_context *ctx, int selected[STAGE_MAX], const char **stage_list)
 {
     static const struct option longs[] = {{"quality", required_argument, 0, 'q'},
                                           {"output", required_argument, 0, 'o'},
@@ -126,7 +126,7 @@ static int stage_index(const char *key)
 
 /* Every selected stage's input is made earlier in this run or was made by an
  * earlier run into the same folder: checked before any work. */
-static int check_inputs(const all_context *ctx, const int selected[STAGE_MAX])
+static int check_inputs(const report_context *ctx, const int selected[STAGE_MAX])
 {
     for (int i = 0; i < stage_count; ++i) {
         if (!selected[i] || !stages[i]->needs)
@@ -146,7 +146,7 @@ static int check_inputs(const all_context *ctx, const int selected[STAGE_MAX])
 }
 
 /* The introduction: how the report was made. */
-static void introduce(all_context *ctx, const char *stage_list)
+static void introduce(report_context *ctx, const char *stage_list)
 {
     const char *quality = ctx->study.quality == QUALITY_PREVIEW ? "preview" : "production";
     cJSON_AddStringToObject(ctx->summary, "gtlab_version", GTLAB_VERSION);
@@ -162,7 +162,7 @@ static void introduce(all_context *ctx, const char *stage_list)
     report_findings_here(ctx->doc);
 }
 
-static int run_stages(all_context *ctx, const int selected[STAGE_MAX])
+static int run_stages(report_context *ctx, const int selected[STAGE_MAX])
 {
     gt_error e;
     for (int i = 0; i < stage_count; ++i) {
@@ -182,7 +182,7 @@ static int run_stages(all_context *ctx, const int selected[STAGE_MAX])
 int verb_all(int argc, char **argv)
 {
     stage_count = (int)technique_stages(stages, STAGE_MAX);
-    all_context ctx = {{"results", QUALITY_PREVIEW, threads_default()}, NULL, NULL};
+    report_context ctx = {{"results", QUALITY_PREVIEW, threads_default()}, NULL, NULL};
     int selected[STAGE_MAX];
     for (int i = 0; i < STAGE_MAX; ++i)
         selected[i] = 1;

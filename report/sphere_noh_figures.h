@@ -1,8 +1,8 @@
 /* The plots of the GetNoHSquared sweep (studies/sphere_light.h,
  * sphere_noh_study), shared by `gtlab check sphere-noh` and the sphere-light
  * stage of `gtlab all`. */
-#ifndef GTLAB_CLI_CHECK_SPHERE_NOH_H
-#define GTLAB_CLI_CHECK_SPHERE_NOH_H
+#ifndef GTLAB_REPORT_SPHERE_NOH_FIGURES_H
+#define GTLAB_REPORT_SPHERE_NOH_FIGURES_H
 
 #include "core/error.h"
 

@@ -1,4 +1,4 @@
-#include "cli/report_writer.h"
+#include "report/report_writer.h"
 
 #include <stdarg.h>
 #include <stdlib.h>

@@ -1,4 +1,4 @@
-/* `gtlab all` stage: the GTAO multi-bounce refit (Jimenez et al. 2016,
+/* Report section: the GTAO multi-bounce refit (Jimenez et al. 2016,
  * "Multiple Bounces" to "Shader Code"; issue 3; studies/multibounce.h)
  * rendered into the report: the fit's coefficients against the talk's, the
  * per-albedo cubics, the leave-one-scene-out table, what the data show, the
@@ -7,9 +7,9 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "cli/all_stages.h"
-#include "cli/gnuplot_plot.h"
-#include "cli/report_table.h"
+#include "report/multibounce_section.h"
+#include "report/gnuplot_plot.h"
+#include "report/report_table.h"
 #include "studies/multibounce.h"
 
 #define COLUMNS(c) (int)(sizeof(c) / sizeof((c)[0]))
@@ -162,7 +162,7 @@ static const report_column summary_columns[] = {
 
 /* The "multibounce" object: the study's figures, the joint linear
  * coefficients and their standard errors as arrays, and the renders. */
-static cJSON *add_summary(all_context *ctx, const multibounce_study_result *r)
+static cJSON *add_summary(report_context *ctx, const multibounce_study_result *r)
 {
     cJSON *o = report_object(ctx->summary, "multibounce", summary_columns, COLUMNS(summary_columns), r);
     double p[MULTIBOUNCE_COEFFICIENTS], se[MULTIBOUNCE_COEFFICIENTS];
@@ -179,7 +179,7 @@ static cJSON *add_summary(all_context *ctx, const multibounce_study_result *r)
 
 /* ---- Sections ------------------------------------------------------------------------------- */
 
-static void intro(all_context *ctx, const multibounce_study_result *r)
+static void intro(report_context *ctx, const multibounce_study_result *r)
 {
     report_heading(ctx->doc, 2, "Multi-bounce AO: references and the GTAO refit");
     report_paragraph(ctx->doc,
@@ -198,7 +198,7 @@ static void intro(all_context *ctx, const multibounce_study_result *r)
                      r->total_paths, r->total_rays, r->total_seconds);
 }
 
-static void fit_tables(all_context *ctx, const multibounce_study_result *r)
+static void fit_tables(report_context *ctx, const multibounce_study_result *r)
 {
     report_rows(ctx->doc, NULL, coefficient_columns, COLUMNS(coefficient_columns), r->coefficients,
                 sizeof r->coefficients[0], MULTIBOUNCE_COEFFICIENTS);
@@ -210,7 +210,7 @@ static void fit_tables(all_context *ctx, const multibounce_study_result *r)
                 r->heldout_rows);
 }
 
-static void findings(all_context *ctx, const multibounce_study_result *r)
+static void findings(report_context *ctx, const multibounce_study_result *r)
 {
     const multibounce_fit_summary *s = &r->fit;
     const multibounce_findings *f = &r->findings;
@@ -263,7 +263,7 @@ static void findings(all_context *ctx, const multibounce_study_result *r)
 
 /* ---- Figures -------------------------------------------------------------------------------- */
 
-static int plot_scatter(const all_context *ctx, const multibounce_study_result *r, gt_error *e)
+static int plot_scatter(const report_context *ctx, const multibounce_study_result *r, gt_error *e)
 {
     char points[4096], curves[4096], png[4096], script[16384];
     const char *out = ctx->study.output_dir;
@@ -288,7 +288,7 @@ static int plot_scatter(const all_context *ctx, const multibounce_study_result *
     return gnuplot_render(script, png, 1600, 850, e);
 }
 
-static int plot_coefficients(const all_context *ctx, gt_error *e)
+static int plot_coefficients(const report_context *ctx, gt_error *e)
 {
     char data[4096], png[4096], script[8192];
     snprintf(data, sizeof data, "%s/figures/%s", ctx->study.output_dir, MULTIBOUNCE_COEFFICIENTS_DATA);
@@ -310,7 +310,7 @@ static int plot_coefficients(const all_context *ctx, gt_error *e)
     return gnuplot_render(script, png, 1500, 500, e);
 }
 
-static void figures_section(all_context *ctx, const multibounce_study_result *r)
+static void figures_section(report_context *ctx, const multibounce_study_result *r)
 {
     if (!gnuplot_available()) {
         gt_warn("gtlab all", "gnuplot not found: multi-bounce plots skipped (Debian package gnuplot-nox)");
@@ -333,7 +333,7 @@ static void figures_section(all_context *ctx, const multibounce_study_result *r)
 
 /* ---- Validation and performance ------------------------------------------------------------ */
 
-static void validation_section(all_context *ctx, const multibounce_study_result *r, cJSON *summary)
+static void validation_section(report_context *ctx, const multibounce_study_result *r, cJSON *summary)
 {
     report_heading(ctx->doc, 3, "Validation against the references");
     report_paragraph(ctx->doc,
@@ -357,7 +357,7 @@ static void validation_section(all_context *ctx, const multibounce_study_result 
                      m->rmse_ours_held_out);
 }
 
-static void performance_section(all_context *ctx, const multibounce_performance *p)
+static void performance_section(report_context *ctx, const multibounce_performance *p)
 {
     report_heading(ctx->doc, 3, "Performance");
     report_paragraph(ctx->doc,
@@ -375,17 +375,15 @@ static void performance_section(all_context *ctx, const multibounce_performance 
                      p->fit_block, p->joint_fit_solve_seconds);
 }
 
-int all_stage_multibounce(all_context *ctx, gt_error *e)
+int multibounce_section(report_context *ctx, const multibounce_study_result *r, gt_error *e)
 {
-    static multibounce_study_result r;
-    if (multibounce_study(&ctx->study, &r, e) != 0)
-        return -1;
-    cJSON *summary = add_summary(ctx, &r);
-    intro(ctx, &r);
-    fit_tables(ctx, &r);
-    findings(ctx, &r);
-    figures_section(ctx, &r);
-    validation_section(ctx, &r, summary);
-    performance_section(ctx, &r.performance);
+    (void)e; /* a plot that fails is said in the report */
+    cJSON *summary = add_summary(ctx, r);
+    intro(ctx, r);
+    fit_tables(ctx, r);
+    findings(ctx, r);
+    figures_section(ctx, r);
+    validation_section(ctx, r, summary);
+    performance_section(ctx, &r->performance);
     return 0;
 }

@@ -1,4 +1,4 @@
-/* `gtlab all` stage: specular occlusion (studies/specular_occlusion.h),
+/* Report section: specular occlusion (studies/specular_occlusion.h),
  * rendered into the report: the cone/lobe LUT's axis parametrisations
  * compared by interpolation error, every real-time variant scored against
  * the references beside their noise floor (the main ones also on GTAO's
@@ -9,9 +9,9 @@
 #include <stddef.h>
 #include <stdio.h>
 
-#include "cli/all_stages.h"
-#include "cli/fit_aperture.h"
-#include "cli/report_table.h"
+#include "report/specular_occlusion_section.h"
+#include "report/aperture_fit_figures.h"
+#include "report/report_table.h"
 #include "studies/specular_occlusion.h"
 
 /* ---- the LUTs ------------------------------------------------------------------ */
@@ -25,7 +25,7 @@ static const report_column lut_columns[] = {
     REPORT_REAL("rms interp. error", "rms_interpolation_error", "%.3e", so_lut_row, rms_interpolation_error),
 };
 
-static void report_luts(all_context *ctx, const so_study_result *r, cJSON *json)
+static void report_luts(report_context *ctx, const so_study_result *r, cJSON *json)
 {
     report_paragraph(ctx->doc,
                      "The cone/lobe LUT (GGX lobe f_r cos at normal incidence, adaptive Gauss-Kronrod) at each size "
@@ -115,7 +115,7 @@ static void variants_json(const so_study_result *r, cJSON *json)
     }
 }
 
-static void report_scores(all_context *ctx, const so_study_result *r, cJSON *json)
+static void report_scores(report_context *ctx, const so_study_result *r, cJSON *json)
 {
     report_paragraph(ctx->doc,
                      "References: V_s = integral of V f_r cos / integral of f_r cos (GGX, no Fresnel, white dome, view "
@@ -146,7 +146,7 @@ static const report_column split_columns[] = {
 };
 
 /* The conclusion of the split table and its finding. */
-static void conclude_splits(all_context *ctx, const so_study_result *r)
+static void conclude_splits(report_context *ctx, const so_study_result *r)
 {
     double mean[2] = {0, 0}, floor = 0.0;
     for (int k = 0; k < SO_STUDY_ROUGHNESSES; ++k) {
@@ -170,7 +170,7 @@ static void conclude_splits(all_context *ctx, const so_study_result *r)
                    verdict, weight);
 }
 
-static void report_splits(all_context *ctx, const so_study_result *r, cJSON *json)
+static void report_splits(report_context *ctx, const so_study_result *r, cJSON *json)
 {
     report_paragraph(ctx->doc,
                      "Split integrals (the talk's 'Two Split' and 'Three Split' slides), from the same references "
@@ -187,7 +187,7 @@ static void report_splits(all_context *ctx, const so_study_result *r, cJSON *jso
 
 /* ---- the aperture fits --------------------------------------------------------- */
 
-static int report_fits(all_context *ctx, const so_study_result *r, cJSON *json, gt_error *e)
+static int report_fits(report_context *ctx, const so_study_result *r, cJSON *json, gt_error *e)
 {
     for (int d = 0; d < SO_STUDY_DEFINITIONS; ++d) {
         const so_aperture_row *f = &r->fits[d];
@@ -242,7 +242,7 @@ static void name_rows(const so_study_result *r, so_named_rows *n)
     n->lut32_on_gtao = row_of(r, SO_VARIANT_LUT, 0, 32, 1);
 }
 
-static void conclude_variants(all_context *ctx, const so_study_result *r, const so_named_rows *n)
+static void conclude_variants(report_context *ctx, const so_study_result *r, const so_named_rows *n)
 {
     const aperture_fit *gtso = &r->fits[0].fit, *d_only = &r->fits[1].fit, *phong = &r->fits[2].fit;
     report_paragraph(ctx->doc,
@@ -263,7 +263,7 @@ static void conclude_variants(all_context *ctx, const so_study_result *r, const 
                      gtso->dssim_at_published, d_only->u, phong->u, phong->dssim, phong->dssim_at_published);
 }
 
-static void conclude_inputs(all_context *ctx, const so_named_rows *n, double input_cost, double lut_gain)
+static void conclude_inputs(report_context *ctx, const so_named_rows *n, double input_cost, double lut_gain)
 {
     report_paragraph(ctx->doc,
                      "Fed by GTAO instead of the reference's AO and bent normal, the LUT 32^3 goes from mean DSSIM "
@@ -274,7 +274,7 @@ static void conclude_inputs(all_context *ctx, const so_named_rows *n, double inp
                      n->lagarde_on_gtao->mean_dssim, n->ao->mean_dssim, n->ao_on_gtao->mean_dssim, input_cost, lut_gain);
 }
 
-static void conclude(all_context *ctx, const so_study_result *r, cJSON *json)
+static void conclude(report_context *ctx, const so_study_result *r, cJSON *json)
 {
     so_named_rows n;
     name_rows(r, &n);
@@ -299,7 +299,7 @@ static void conclude(all_context *ctx, const so_study_result *r, cJSON *json)
 
 /* ---- figures ------------------------------------------------------------------- */
 
-static void add_figures(all_context *ctx, const so_study_result *r)
+static void add_figures(report_context *ctx, const so_study_result *r)
 {
     /* in the order of so_study_heatmap_rows */
     static const char *const shown[SO_STUDY_HEATMAPS] = {"AO as V_s", "Lagarde 2014", "cone/cone exact, exp2(-3.32 alpha^2)",
@@ -322,20 +322,17 @@ static void add_figures(all_context *ctx, const so_study_result *r)
     report_figures(ctx->doc, 3, p, c);
 }
 
-int all_stage_specular_occlusion(all_context *ctx, gt_error *e)
+int specular_occlusion_section(report_context *ctx, const so_study_result *r, gt_error *e)
 {
-    static so_study_result r;
-    if (specular_occlusion_study(&ctx->study, &r, e) != 0)
-        return -1;
     cJSON *json = cJSON_AddObjectToObject(ctx->summary, "specular_occlusion");
     report_heading(ctx->doc, 2, "Specular occlusion (GTSO)");
-    report_luts(ctx, &r, json);
-    report_scores(ctx, &r, json);
-    cJSON_AddNumberToObject(json, "reference_samples_per_second", r.reference_samples_per_second);
-    report_splits(ctx, &r, json);
-    if (report_fits(ctx, &r, json, e) != 0)
+    report_luts(ctx, r, json);
+    report_scores(ctx, r, json);
+    cJSON_AddNumberToObject(json, "reference_samples_per_second", r->reference_samples_per_second);
+    report_splits(ctx, r, json);
+    if (report_fits(ctx, r, json, e) != 0)
         return -1;
-    conclude(ctx, &r, json);
-    add_figures(ctx, &r);
+    conclude(ctx, r, json);
+    add_figures(ctx, r);
     return 0;
 }

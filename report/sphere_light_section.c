@@ -1,4 +1,4 @@
-/* `gtlab all` stage: GGX sphere lights (Decima, SIGGRAPH 2017; Karis 2013),
+/* Report section: GGX sphere lights (Decima, SIGGRAPH 2017; Karis 2013),
  * studies/sphere_light.h rendered into the report: the accuracy of
  * GetNoHSquared against brute force, the refit of Decima's constants, error
  * maps of Karis, Decima and Decima refit against the parameter-space Monte
@@ -6,10 +6,10 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "cli/all_stages.h"
-#include "cli/check_sphere_noh.h"
-#include "cli/gnuplot_plot.h"
-#include "cli/report_table.h"
+#include "report/sphere_light_section.h"
+#include "report/sphere_noh_figures.h"
+#include "report/gnuplot_plot.h"
+#include "report/report_table.h"
 #include "fitters/fit_sphere_light_outputs.h"
 #include "studies/sphere_light.h"
 
@@ -52,7 +52,7 @@ static const report_column noh_json_steps[] = {
     REPORT_STRING(NULL, "baseline", sphere_noh_row, baseline),
 };
 
-static void report_noh(all_context *ctx, const sphere_noh_sweep *sw, const sphere_noh_stats *st, cJSON *json)
+static void report_noh(report_context *ctx, const sphere_noh_sweep *sw, const sphere_noh_stats *st, cJSON *json)
 {
     report *doc = ctx->doc;
     const sphere_noh_row *r = st->rows;
@@ -125,7 +125,7 @@ static const report_column errors_json[] = {
     REPORT_REAL(NULL, "rms_log_error_stderr", NULL, sphere_light_errors, rms_stderr),
 };
 
-static void report_fit(all_context *ctx, const sphere_fit_settings *fs, const sphere_fit_outcome *o, cJSON *json)
+static void report_fit(report_context *ctx, const sphere_fit_settings *fs, const sphere_fit_outcome *o, cJSON *json)
 {
     report *doc = ctx->doc;
     report_heading(doc, 3, "Refit of Decima's radius reduction and normalisation");
@@ -210,7 +210,7 @@ static const report_column map_columns[] = {
     REPORT_REAL("Decima refit", "Decima refit", "%.4f", sphere_map_row, refit),
 };
 
-static void report_maps(all_context *ctx, const sphere_light_result *r, cJSON *json)
+static void report_maps(report_context *ctx, const sphere_light_result *r, cJSON *json)
 {
     report_heading(ctx->doc, 3, "Error maps against the Monte Carlo reference");
     report_paragraph(ctx->doc, "Each cell: mean |ln((approx + 0.01)/(reference + 0.01))| over 8 light positions "
@@ -261,7 +261,7 @@ static const report_column shadow_json[] = {
     REPORT_REAL(NULL, "share_of_pixels_darkened_over_10_percent", NULL, sphere_shadow_result, share_darkened),
 };
 
-static void report_scenes(all_context *ctx, const sphere_light_result *r, cJSON *json)
+static void report_scenes(report_context *ctx, const sphere_light_result *r, cJSON *json)
 {
     report *doc = ctx->doc;
     report_heading(doc, 3, "Scene renders: glossy floor at grazing view");
@@ -299,7 +299,7 @@ static const report_column cost_json[] = {
     REPORT_REAL(NULL, "ns_per_call_decima", NULL, sphere_cost, ns_decima),
 };
 
-static void report_cost(all_context *ctx, const sphere_cost *c, cJSON *json)
+static void report_cost(report_context *ctx, const sphere_cost *c, cJSON *json)
 {
     report *doc = ctx->doc;
     report_heading(doc, 3, "Cost of the Newton step");
@@ -328,7 +328,7 @@ static void report_cost(all_context *ctx, const sphere_cost *c, cJSON *json)
 
 /* ---- The stage ---- */
 
-static int write_files(all_context *ctx, const sphere_light_result *r, gt_error *e)
+static int write_files(report_context *ctx, const sphere_light_result *r, gt_error *e)
 {
     char dir[4096], fits[4096], json_path[8192];
     if (study_make_dir(&ctx->study, SPHERE_LIGHT_DIR, dir, sizeof dir, e) != 0 ||
@@ -344,17 +344,16 @@ static int write_files(all_context *ctx, const sphere_light_result *r, gt_error 
     return 0;
 }
 
-int all_stage_sphere_light(all_context *ctx, gt_error *e)
+int sphere_light_section(report_context *ctx, const sphere_light_result *r, gt_error *e)
 {
-    static sphere_light_result r;
-    if (sphere_light_study(&ctx->study, &r, e) != 0 || write_files(ctx, &r, e) != 0)
+    if (write_files(ctx, r, e) != 0)
         return -1;
     cJSON *json = cJSON_AddObjectToObject(ctx->summary, "sphere_light");
     report_heading(ctx->doc, 2, "GGX sphere lights (Decima 2017, Karis 2013)");
-    report_noh(ctx, &r.sweep, &r.noh, json);
-    report_fit(ctx, &r.fit_settings, &r.fit, json);
-    report_maps(ctx, &r, json);
-    report_scenes(ctx, &r, json);
-    report_cost(ctx, &r.cost, json);
+    report_noh(ctx, &r->sweep, &r->noh, json);
+    report_fit(ctx, &r->fit_settings, &r->fit, json);
+    report_maps(ctx, r, json);
+    report_scenes(ctx, r, json);
+    report_cost(ctx, &r->cost, json);
     return 0;
 }

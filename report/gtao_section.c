@@ -1,4 +1,4 @@
-/* `gtlab all` stage: GTAO, HBAO and volumetric obscurance against the
+/* Report section: GTAO, HBAO and volumetric obscurance against the
  * height-field and the 3-D AO references (studies/gtao_validation.h),
  * rendered into the report: per scene the variants' table, where the error
  * of the talk's configuration comes from and the heatmaps; the convergence
@@ -6,12 +6,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "cli/all_stages.h"
-#include "cli/fit_gtao_params.h"
-#include "cli/gnuplot_plot.h"
-#include "cli/report_table.h"
+#include "report/gtao_section.h"
+#include "report/gtao_params_json.h"
+#include "report/gnuplot_plot.h"
+#include "report/report_table.h"
 #include "core/atomic_file.h"
-#include "studies/ao_references.h"
 #include "studies/gtao_validation.h"
 
 static const report_column variant_columns[] = {
@@ -118,7 +117,7 @@ static void render_scene(report *doc, cJSON *list, const gtao_validation_scene *
 
 /* RMSE against slices x steps from the study's data file, solid against the
  * height field and dashed against the 3-D reference, one line per steps. */
-static int render_convergence(all_context *ctx, gt_error *e)
+static int render_convergence(report_context *ctx, gt_error *e)
 {
     char data[4096], png[4096], script[16384];
     snprintf(data, sizeof data, "%s/%s/%s", ctx->study.output_dir, GTAO_VALIDATION_DIR, GTAO_CONVERGENCE_DATA);
@@ -141,7 +140,7 @@ static int render_convergence(all_context *ctx, gt_error *e)
 
 /* The fit as gtao/params_fit.json (the format of `gtlab fit gtao-params`)
  * and as the summary's gtao_parameter_fit.parameter_fit. */
-static int write_fit(all_context *ctx, const gtao_validation_result *r, gt_error *e)
+static int write_fit(report_context *ctx, const gtao_validation_result *r, gt_error *e)
 {
     char path[4096];
     snprintf(path, sizeof path, "%s/%s/params_fit.json", ctx->study.output_dir, GTAO_VALIDATION_DIR);
@@ -177,20 +176,14 @@ static void render_fit(report *doc, const gtao_fit_request *rq, const gtao_fit_r
                    better, held_out, r->value[0], r->value[1], r->value[2]);
 }
 
-int all_stage_gtao(all_context *ctx, gt_error *e)
+int gtao_section(report_context *ctx, const gtao_validation_result *r, gt_error *e)
 {
-    char refs[4096];
-    snprintf(refs, sizeof refs, "%s/%s", ctx->study.output_dir, AO_REFERENCES_DIR);
-    gtao_validation_request rq = {refs};
-    static gtao_validation_result r;
-    if (gtao_validation_study(&ctx->study, &rq, &r, e) != 0)
-        return -1;
-    render_introduction(ctx->doc, &r);
+    render_introduction(ctx->doc, r);
     cJSON *list = cJSON_AddArrayToObject(ctx->summary, "gtao");
-    for (int i = 0; i < r.scene_count; ++i)
-        render_scene(ctx->doc, list, &r.scenes[i]);
-    if (render_convergence(ctx, e) != 0 || write_fit(ctx, &r, e) != 0)
+    for (int i = 0; i < r->scene_count; ++i)
+        render_scene(ctx->doc, list, &r->scenes[i]);
+    if (render_convergence(ctx, e) != 0 || write_fit(ctx, r, e) != 0)
         return -1;
-    render_fit(ctx->doc, &r.fit_request, &r.fit);
+    render_fit(ctx->doc, &r->fit_request, &r->fit);
     return 0;
 }

@@ -1,6 +1,6 @@
-/* cli/gnuplot_plot.c: a good script gives a PNG (and keeps its .gp script),
+/* report/gnuplot_plot.c: a good script gives a PNG (and keeps its .gp script),
  * a broken one gives an error naming the PNG and leaves no file behind. */
-#include "cli/gnuplot_plot.h"
+#include "report/gnuplot_plot.h"
 #include "tests/check.h"
 
 #include <dirent.h>

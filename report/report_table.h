@@ -17,7 +17,7 @@
 #include <cjson/cJSON.h>
 #include <stddef.h>
 
-#include "cli/report_writer.h"
+#include "report/report_writer.h"
 
 typedef enum {
     REPORT_COLUMN_TEXT,   /* char array */

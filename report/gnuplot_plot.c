@@ -1,6 +1,6 @@
 /* Plots through gnuplot; see gnuplot_plot.h. */
 #define _GNU_SOURCE
-#include "cli/gnuplot_plot.h"
+#include "report/gnuplot_plot.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,8 +1,9 @@
-/* gtlab fit aperture (fitters/aperture_fit.h: the GTSO talk's
- * gloss-to-aperture parameter u) and the renderings of a fit that the verb
- * and the `gtlab all` stage share: the fit as JSON, its curve as a plot. */
-#ifndef GTLAB_CLI_FIT_APERTURE_H
-#define GTLAB_CLI_FIT_APERTURE_H
+/* The renderings of a fit of the GTSO talk's gloss-to-aperture parameter u
+ * (fitters/aperture_fit.h) that `gtlab fit aperture` and the
+ * specular-occlusion section of `gtlab all` share: the fit as JSON, its curve
+ * as a plot. */
+#ifndef GTLAB_REPORT_APERTURE_FIT_FIGURES_H
+#define GTLAB_REPORT_APERTURE_FIT_FIGURES_H
 
 #include <cjson/cJSON.h>
 

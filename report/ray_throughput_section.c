@@ -1,10 +1,10 @@
-/* `gtlab all` stage: ray throughput of the AO reference against raw Embree,
+/* Report section: ray throughput of the AO reference against raw Embree,
  * measured in this run (studies/ray_throughput.h, the figures of `gtlab
  * bench rays`), rendered into the report and summary.json. */
 #include <stdio.h>
 
-#include "cli/all_stages.h"
-#include "cli/report_table.h"
+#include "report/ray_throughput_section.h"
+#include "report/report_table.h"
 #include "studies/ray_throughput.h"
 
 #define COLUMNS(c) (int)(sizeof(c) / sizeof((c)[0]))
@@ -44,8 +44,9 @@ static const report_column summary_columns[] = {
     REPORT_REAL(NULL, "speedup_gtlab", NULL, ray_throughput_result, speedup_gtlab),
 };
 
-static void render_section(all_context *ctx, const ray_throughput_result *r)
+int ray_throughput_section(report_context *ctx, const ray_throughput_result *r, gt_error *e)
 {
+    (void)e;
     report_heading(ctx->doc, 2, "Ray throughput");
     report_paragraph(ctx->doc,
                      "Occlusion rays per second on %s, the best of several passes: raw Embree calls on a prepared "
@@ -62,13 +63,5 @@ static void render_section(all_context *ctx, const ray_throughput_result *r)
                    "(%s).",
                    r->gtlab_ao_threads, r->threads, r->ratio_threads, r->scene);
     report_object(ctx->summary, "ray_throughput", summary_columns, COLUMNS(summary_columns), r);
-}
-
-int all_stage_ray_throughput(all_context *ctx, gt_error *e)
-{
-    ray_throughput_result r;
-    if (ray_throughput_study(&ctx->study, &r, e) != 0)
-        return -1;
-    render_section(ctx, &r);
     return 0;
 }

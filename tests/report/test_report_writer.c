@@ -1,8 +1,8 @@
-/* cli/report_writer.c: the report's Markdown and HTML say the same thing;
+/* report/report_writer.c: the report's Markdown and HTML say the same thing;
  * findings gathered while stages run land in one "At a glance" section right
  * after the introduction, before every stage's section; HTML special
  * characters are escaped; a report without findings has no such section. */
-#include "cli/report_writer.h"
+#include "report/report_writer.h"
 #include "tests/check.h"
 
 #include <stdlib.h>

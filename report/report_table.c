@@ -1,4 +1,4 @@
-#include "cli/report_table.h"
+#include "report/report_table.h"
 
 #include <stdint.h>
 #include <stdio.h>

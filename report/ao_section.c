@@ -1,10 +1,10 @@
-/* `gtlab all` stage: the AO and bent-normal references of every built-in
+/* Report section: the AO and bent-normal references of every built-in
  * scene (studies/ao_references.h), rendered into the report: a table of
  * their sampling, noise and noise floor, and their previews. */
 #include <stdio.h>
 
-#include "cli/all_stages.h"
-#include "cli/report_table.h"
+#include "report/ao_section.h"
+#include "report/report_table.h"
 #include "studies/ao_references.h"
 
 static void size_cell(const void *row, char *text, size_t size)
@@ -50,8 +50,9 @@ static void add_figures(report *doc, const ao_references_result *r)
     }
 }
 
-static void render_section(all_context *ctx, const ao_references_result *r)
+int ao_references_section(report_context *ctx, const ao_references_result *r, gt_error *e)
 {
+    (void)e;
     char stop[96] = "";
     const ao_references_request *rq = &r->request;
     if (rq->target_stderr > 0)
@@ -67,14 +68,5 @@ static void render_section(all_context *ctx, const ao_references_result *r)
     report_rows(ctx->doc, cJSON_AddArrayToObject(ctx->summary, "ao_references"), columns,
                 (int)(sizeof columns / sizeof columns[0]), r->rows, sizeof r->rows[0], r->count);
     add_figures(ctx->doc, r);
-}
-
-int all_stage_ao_references(all_context *ctx, gt_error *e)
-{
-    static ao_references_result r;
-    ao_references_request rq = ao_references_default_request(ctx->study.quality);
-    if (ao_references_study(&ctx->study, &rq, &r, e) != 0)
-        return -1;
-    render_section(ctx, &r);
     return 0;
 }

@@ -1,0 +1,54 @@
+/* The renderings of a gloss-to-aperture fit (fitters/aperture_fit.h) that
+ * `gtlab fit aperture` and the specular-occlusion section share. */
+#define _GNU_SOURCE
+#include "report/aperture_fit_figures.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "report/gnuplot_plot.h"
+
+cJSON *aperture_fit_json(const aperture_fit *fit, const char *channel, int exact)
+{
+    cJSON *j = cJSON_CreateObject();
+    cJSON_AddStringToObject(j, "problem", "aperture");
+    cJSON_AddStringToObject(j, "reference_channel", channel);
+    cJSON_AddStringToObject(j, "intersection", exact ? "exact" : "oat");
+    cJSON_AddStringToObject(j, "search", "scan of log10 u by 1/8 decade, then golden section to 1e-3");
+    cJSON_AddNumberToObject(j, "u", fit->u);
+    cJSON_AddNumberToObject(j, "log10_u", fit->log10_u);
+    cJSON_AddNumberToObject(j, "mean_dssim", fit->dssim);
+    cJSON_AddNumberToObject(j, "mean_dssim_at_talk_u_0.01", fit->dssim_at_published);
+    cJSON_AddNumberToObject(j, "evaluations", fit->evaluations);
+    cJSON *curve = cJSON_AddArrayToObject(j, "curve");
+    for (int i = 0; i < fit->curve_count; ++i) {
+        cJSON *p = cJSON_CreateObject();
+        cJSON_AddNumberToObject(p, "u", fit->curve_u[i]);
+        cJSON_AddNumberToObject(p, "mean_dssim", fit->curve_dssim[i]);
+        cJSON_AddItemToArray(curve, p);
+    }
+    return j;
+}
+
+/* The DSSIM-vs-u curve on a log axis, the fitted u marked; the points go
+ * inline as a gnuplot datablock so the kept .gp script reruns alone. */
+int aperture_fit_plot(const aperture_fit *fit, const char *path, const char *title, gt_error *e)
+{
+    char *script = NULL;
+    size_t size = 0;
+    FILE *mem = open_memstream(&script, &size);
+    if (!mem)
+        return gt_error_set(e, path, "out of memory");
+    fprintf(mem, "$curve << EOD\n");
+    for (int i = 0; i < fit->curve_count; ++i)
+        fprintf(mem, "%.9g %.9g\n", fit->curve_u[i], fit->curve_dssim[i]);
+    fprintf(mem,
+            "EOD\nset termoption noenhanced\nset title \"%s\"\nset xlabel 'u'\nset ylabel 'mean DSSIM vs reference'\n"
+            "set grid\nset logscale x\nset arrow from %.9g, graph 0 to %.9g, graph 1 nohead dt 2\n"
+            "set label 'fitted u' at %.9g, graph 0.95\nplot $curve using 1:2 with linespoints notitle\n",
+            title, fit->u, fit->u, fit->u);
+    fclose(mem);
+    int rc = gnuplot_render(script, path, 800, 500, e);
+    free(script);
+    return rc;
+}
