@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "core/output_set.h"
 
 typedef struct {
     const char *name;
@@ -32,6 +33,22 @@ static void print_help(FILE *out)
     fprintf(out, "\nErrors are one line on stderr; exit status 0 success, 1 bad input, 2 internal error.\n");
 }
 
+/* A verb's files are kept together or not at all (core/output_set.h):
+ * on failure or interruption none of them stays, and what they replaced
+ * is back. */
+static int run_verb(const verb *v, int argc, char **argv)
+{
+    output_set_install_signal_handlers();
+    output_set_begin();
+    int status = v->run(argc, argv);
+    gt_error e;
+    if (status != EXIT_OK)
+        output_set_abort();
+    else if (output_set_commit(&e) != 0)
+        gt_warn("gtlab", "%s", e.message);
+    return status;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2) {
@@ -49,7 +66,7 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < sizeof verbs / sizeof verbs[0]; ++i) {
         if (strcmp(argv[1], verbs[i].name) == 0) {
             cli_reset_getopt();
-            return verbs[i].run(argc - 1, argv + 1);
+            return run_verb(&verbs[i], argc - 1, argv + 1);
         }
     }
     fprintf(stderr, "gtlab: %s: unknown verb (see 'gtlab --help')\n", argv[1]);

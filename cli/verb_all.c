@@ -12,6 +12,7 @@
 #include "cli/cli.h"
 #include "cli/technique.h"
 #include "core/atomic_file.h"
+#include "core/output_set.h"
 #include "core/progress.h"
 #include "core/threads.h"
 
@@ -172,6 +173,10 @@ static int run_stages(report_context *ctx, const int selected[STAGE_MAX])
         double t0 = seconds_now();
         if (stages[i]->run(ctx, &e) != 0)
             return cli_fail(&e);
+        /* A finished stage keeps its files, whatever happens later. */
+        if (output_set_commit(&e) != 0)
+            gt_warn("gtlab all", "%s", e.message);
+        output_set_begin();
         fprintf(stderr, "gtlab all: %s done in %.1f s\n", stages[i]->title, seconds_now() - t0);
     }
     if (report_write(ctx->doc, ctx->study.output_dir, &e) != 0 || write_summary(ctx, &e) != 0)

@@ -1,6 +1,8 @@
 #define _POSIX_C_SOURCE 200809L
 #include "core/atomic_file.h"
 
+#include "core/output_set.h"
+
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
@@ -15,8 +17,12 @@ int atomic_file_begin(atomic_file *f, const char *path, gt_error *e)
     if (strlen(path) + 32 >= ATOMIC_PATH_MAX)
         return gt_error_set(e, path, "path too long");
     struct stat st;
-    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
+    int exists = stat(path, &st) == 0;
+    if (exists && S_ISDIR(st.st_mode))
         return gt_error_set(e, path, "cannot write: is a folder");
+    if (exists && !S_ISREG(st.st_mode))
+        return gt_error_set(e, path, "cannot write: exists and is not a regular file (a device, pipe or socket); "
+                                     "gtlab replaces only regular files");
     strcpy(f->final_path, path);
     const char *slash = strrchr(path, '/');
     int dir_len = slash ? (int)(slash - path + 1) : 0;
@@ -25,24 +31,28 @@ int atomic_file_begin(atomic_file *f, const char *path, gt_error *e)
     if (fd < 0)
         return gt_error_set(e, path, "cannot write: %s", strerror(errno));
     close(fd);
+    output_set_temporary_created(f->temp_path);
     return 0;
 }
 
 int atomic_file_commit(atomic_file *f, gt_error *e)
 {
-    if (rename(f->temp_path, f->final_path) != 0) {
+    if (output_set_rename_into_place(f->temp_path, f->final_path) != 0) {
         int err = errno;
-        unlink(f->temp_path);
+        atomic_file_abort(f);
         return gt_error_set(e, f->final_path, "cannot write: %s", strerror(err));
     }
+    output_set_temporary_gone(f->temp_path);
     f->temp_path[0] = '\0';
     return 0;
 }
 
 void atomic_file_abort(atomic_file *f)
 {
-    if (f->temp_path[0])
+    if (f->temp_path[0]) {
         unlink(f->temp_path);
+        output_set_temporary_gone(f->temp_path);
+    }
     f->temp_path[0] = '\0';
 }
 

@@ -1,7 +1,11 @@
 /* Outputs appear whole or not at all: every writer writes to a temporary file
  * beside the destination and renames it into place when complete (rename is
  * atomic within a folder on POSIX). The temporary name is
- * "<dir>/.<name>.tmp-<pid>" so a crash leaves only a hidden file. */
+ * "<dir>/.<name>.tmp-<pid>" so a crash leaves only a hidden file, and an
+ * interruption by a signal none (core/output_set.h: the files of one run are
+ * also kept or removed together). An existing destination that is not a
+ * regular file (a device such as /dev/null, a pipe, a socket) is refused,
+ * never replaced. */
 #ifndef GTLAB_CORE_ATOMIC_FILE_H
 #define GTLAB_CORE_ATOMIC_FILE_H
 

@@ -1,5 +1,7 @@
 #include "raytracer/embree_scene.h"
 
+#include "raytracer/embree_memory.h"
+
 #include <float.h>
 #include <math.h>
 #include <string.h>
@@ -30,13 +32,24 @@ static int add_mesh(embree_scene *es, const scene_mesh *m, unsigned id, gt_error
     return 0;
 }
 
+static uint64_t triangle_total(const scene *s)
+{
+    uint64_t n = 0;
+    for (int i = 0; i < s->mesh_count; ++i)
+        n += s->meshes[i].triangle_count;
+    return n;
+}
+
 int embree_scene_build(const scene *s, embree_scene *es, gt_error *e)
 {
     memset(es, 0, sizeof *es);
+    uint64_t triangles = triangle_total(s);
+    if (embree_check_memory(s->name, triangles, memory_available_bytes(), e) != 0)
+        return -1;
     es->source = s;
     es->device = rtcNewDevice(NULL);
     if (!es->device)
-        return gt_error_set(e, "embree", "cannot create a device (error %d)", (int)rtcGetDeviceError(NULL));
+        return gt_error_set(e, "embree", "cannot create a device: %s", embree_error_name(rtcGetDeviceError(NULL)));
     rtcSetDeviceErrorFunction(es->device, report_embree_error, NULL);
     es->rtc = rtcNewScene(es->device);
     rtcSetSceneFlags(es->rtc, RTC_SCENE_FLAG_ROBUST);
@@ -53,7 +66,8 @@ int embree_scene_build(const scene *s, embree_scene *es, gt_error *e)
     enum RTCError err = rtcGetDeviceError(es->device);
     if (err != RTC_ERROR_NONE) {
         embree_scene_release(es);
-        return gt_error_set(e, s->name, "Embree could not build the scene (error %d)", (int)err);
+        return gt_error_set(e, s->name, "Embree could not build the scene of %llu triangles: %s%s", (unsigned long long)triangles,
+                            embree_error_name(err), err == RTC_ERROR_OUT_OF_MEMORY ? " (simplify the scene or use a machine with more memory)" : "");
     }
     return 0;
 }

@@ -1,6 +1,7 @@
 /* G-buffer input and approximation output; see gbuffer_input.h. */
 #include "studies/gbuffer_input.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -30,6 +31,26 @@ static int load_camera(const char *path, const char *camera_path, const image *i
     return camera_read_json(sidecar, cam, e);
 }
 
+/* Every surface pixel (mask.A = 1) has a finite depth and normal, and
+ * mask.A itself is finite: a NaN would spread through the screen-space
+ * passes (GTAO's denoiser turns one into 16). The first offender is named. */
+static int check_finite(const ss_gbuffer *g, const char *path, gt_error *e)
+{
+    const char *names[4] = {CH_DEPTH, CH_N_X, CH_N_Y, CH_N_Z};
+    for (int y = 0; y < g->height; ++y)
+        for (int x = 0; x < g->width; ++x) {
+            size_t i = (size_t)y * (size_t)g->width + (size_t)x;
+            if (!isfinite(g->mask[i]))
+                return gt_error_set(e, path, "pixel (%d, %d): %s is %g", x, y, CH_MASK, g->mask[i]);
+            const float v[4] = {g->depth[i], g->normal[0][i], g->normal[1][i], g->normal[2][i]};
+            for (int k = 0; k < 4 && g->mask[i] > 0; ++k)
+                if (!isfinite(v[k]))
+                    return gt_error_set(e, path, "pixel (%d, %d): %s is %g on a surface pixel (%s = 1); a G-buffer "
+                                        "must be finite where it has a surface", x, y, names[k], v[k], CH_MASK);
+        }
+    return 0;
+}
+
 int approx_load(const char *path, const char *camera_path, approx_input *in, gt_error *e)
 {
     memset(in, 0, sizeof *in);
@@ -43,6 +64,8 @@ int approx_load(const char *path, const char *camera_path, approx_input *in, gt_
         rc = camera_validate(&in->cam, camera_path ? camera_path : path, e);
     if (rc == 0)
         rc = ss_gbuffer_from_image(&in->img, path, approx_ss_camera(&in->cam), &in->g, e);
+    if (rc == 0)
+        rc = check_finite(&in->g, path, e);
     if (rc != 0)
         image_free(&in->img);
     return rc;

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# All or nothing (core/output_set.h), end to end: an output onto a device is
+# refused and the device stays; an interrupted run exits 128 + signal, keeps
+# the previous outputs as they were and leaves no temporary or backup. (The
+# removal of temporaries and the roll-back themselves are proven in
+# tests/core/test_output_set.c, where the signal arrives at a known point.)
+gtlab=$1
+work=$2
+rm -rf "$work" && mkdir -p "$work"
+source "$(dirname "$0")/cli_test_lib.sh"
+
+# -o onto a character device.
+expect_error device "/dev/null: .*not a regular file" "" -- render gbuffer --scene builtin:plane --width 16 --height 16 -o /dev/null
+[ -c /dev/null ] && pass || fail "/dev/null is no longer a character device"
+
+# A previous render, then the same command interrupted: SIGINT and SIGTERM.
+out=$work/ao.exr
+expect_ok first-render render ao --scene builtin:plane --width 16 --height 16 --spp 4 -o "$out"
+before=$(md5sum "$out" "$work/ao.camera.json")
+# SIGTERM and SIGHUP (a background job of a script ignores SIGINT, and so
+# does gtlab then); the render must end within 30 s of the signal.
+for signal in TERM HUP; do
+  "$gtlab" render ao --scene builtin:menger --width 256 --height 256 --spp 1000000 -o "$out" >/dev/null 2>&1 &
+  pid=$!
+  sleep 1
+  kill -s "$signal" "$pid"
+  for _ in $(seq 300); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
+  if kill -0 "$pid" 2>/dev/null; then
+    kill -9 "$pid"
+    fail "SIG$signal: gtlab still running 30 s after the signal"
+  fi
+  wait "$pid"
+  status=$?
+  expected=$((128 + $(kill -l "$signal")))
+  [ "$status" -eq "$expected" ] && pass || fail "SIG$signal: exit status $status, expected $expected"
+  [ "$(md5sum "$out" "$work/ao.camera.json")" = "$before" ] && pass || fail "SIG$signal: the previous outputs changed"
+  hidden=$(ls -A "$work" | grep '^\.' || true)
+  [ -z "$hidden" ] && pass || fail "SIG$signal: left $hidden"
+done
+finish
