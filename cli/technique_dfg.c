@@ -23,7 +23,7 @@ static void print_help(void)
            "compensation (Kulla-Conty 2017, Fdez-Aguera 2019) divides by. x = n.v, y = perceptual\n"
            "roughness, sampled at texel centres as a GPU reads them (luts/dfg_lut.h).\n"
            "Writes DIR/dfg_N.exr (float A, B, E), .png (16-bit, R = A, G = B), .h (C array)\n"
-           "and .hlsl (the array and DFG(nv, roughness), the same bilinear lookup).\n"
+           "and .hlsl, .glsl (the array and DFG(nv, roughness), the same bilinear lookup).\n"
            "\n"
            "  --size N        %d..%d (default %d, Filament's choice)\n"
            "  --threads T     worker threads (default: all cores); the table does not depend on it\n"
@@ -58,7 +58,7 @@ static int lut_dfg(int argc, char **argv)
     gt_error e;
     if (dfg_write_table(dir, (int)size, (int)threads, &r, &e) != 0)
         return cli_fail(&e);
-    printf("%s/dfg_%ld.{exr,png,h,hlsl}: %ld^2 in %.2f s; quadrature error <= %.1e; smallest albedo E %.4f\n", dir,
+    printf("%s/dfg_%ld.{exr,png,h,hlsl,glsl}: %ld^2 in %.2f s; quadrature error <= %.1e; smallest albedo E %.4f\n", dir,
            size, size, r.build_seconds, r.max_error_estimate, r.e_min);
     return EXIT_OK;
 }
@@ -71,7 +71,7 @@ static int all_stage_dfg(report_context *ctx, gt_error *e)
 }
 
 static const cli_subcommand luts[] = {
-    {"dfg", lut_dfg, "split-sum DFG (Karis 2013): scale, bias, albedo vs n.v and roughness: EXR, PNG, C, HLSL"},
+    {"dfg", lut_dfg, "split-sum DFG (Karis 2013): scale, bias, albedo vs n.v and roughness: EXR, PNG, C, HLSL, GLSL"},
     {NULL, NULL, NULL},
 };
 static const all_stage stages[] = {

@@ -1,6 +1,7 @@
 /* The outputs of the GTAO multi-bounce refit (fit_multibounce.h): the JSON a
  * person or a script reads, and the C header and HLSL/GLSL functions an engine
  * takes, all generated from the fitted numbers and written atomically. */
+#define _GNU_SOURCE /* asprintf */
 #include "fitters/fit_multibounce.h"
 
 #include <cjson/cJSON.h>
@@ -9,6 +10,7 @@
 #include <string.h>
 
 #include "core/atomic_file.h"
+#include "realtime/multibounce_shader.h"
 
 static const char *const kWeighting =
     "each (scene, albedo) group of pixels carries the same total weight, so every scene and every albedo "
@@ -229,103 +231,74 @@ static char *analysis_json(const multibounce_data *d, const multibounce_analysis
     return text;
 }
 
-/* A float literal C, HLSL and GLSL (1.30 and later) all read: "1.0f", "-0.410470316f", "2e-05f". */
-static void float_literal(double v, char *out, size_t size)
-{
-    char digits[40];
-    snprintf(digits, sizeof digits, "%.9g", v);
-    snprintf(out, size, "%s%sf", digits, strpbrk(digits, ".e") ? "" : ".0");
-}
-
-/* Polynomial in the albedo of one coefficient, as source: "c0 + albedo * (c1 + albedo * (c2))". */
-static void rho_polynomial(const double *coef, int degree, char *out, size_t size)
-{
-    /* Horner: c0 + albedo * (c1 + albedo * (c2)) */
-    size_t used = 0;
-    out[0] = '\0';
-    for (int k = 0; k <= degree && used < size; ++k) {
-        char literal[48];
-        float_literal(coef[k], literal, sizeof literal);
-        used += (size_t)snprintf(out + used, size - used, k < degree ? "%s + albedo * (" : "%s", literal);
-    }
-    for (int k = 0; k < degree && used < size; ++k)
-        used += (size_t)snprintf(out + used, size - used, ")");
-}
-
-/* The three coefficient lines of a shader function, `type` float or float3. */
-static void coefficient_lines(const multibounce_model *m, const char *type, char *out, size_t size)
-{
-    char a[256], b[256], c[256];
-    rho_polynomial(m->a, m->degree, a, sizeof a);
-    rho_polynomial(m->b, m->degree, b, sizeof b);
-    rho_polynomial(m->c, m->degree, c, sizeof c);
-    snprintf(out, size, "    %s a = %s;\n    %s b = %s;\n    %s c = %s;\n", type, a, type, b, type, c);
-}
-
 static const char *const kFunctionSuffix[MB_JOINT_COUNT] = {"Linear", "Quadratic", "Anchored"};
 static const char *const kFunctionWhat[MB_JOINT_COUNT] = {
     "a, b, c linear in the albedo (the talk's form)", "a, b, c quadratic in the albedo",
     "anchored: V_d + V_d (1 - V_d) (albedo (p1 + q1 V_d) + albedo^2 (p2 + q2 V_d)), exact at albedo 0 and "
     "V_d = 0, 1"};
 
-/* One function per joint model: C (float albedo; vector_type NULL) or a
- * shading language (vector_type "float3" for HLSL, "vec3" for GLSL). The
- * shader form max(y, x) with y a vector and x a float is legal in both. */
-static int append_functions(const multibounce_analysis *a, const char *vector_type, char *text, size_t size, int used)
+/* Names and comments of the functions, one per joint model fitted. */
+typedef struct {
+    char names[MB_JOINT_COUNT][64], comments[MB_JOINT_COUNT][512];
+    multibounce_shader_function functions[MB_JOINT_COUNT];
+    int count;
+} generated_functions;
+
+/* The joint models as functions: in C gtlab_multibounce_linear etc., in a
+ * shader GTAOMultiBounce (the talk's linear form), GTAOMultiBounceQuadratic
+ * and GTAOMultiBounceAnchored. */
+static void list_functions(const multibounce_analysis *a, int c_names, generated_functions *g)
 {
+    g->count = 0;
     for (int j = 0; j < MB_JOINT_COUNT; ++j) {
         if (!a->has[j])
             continue;
-        char lines[1024];
-        coefficient_lines(&a->joint[j].model, vector_type ? vector_type : "float", lines, sizeof lines);
-        const char *note = j == (int)a->chosen ? " Preferred by the leave-one-scene-out test." : "";
-        if (vector_type)
-            used += snprintf(text + used, size - (size_t)used,
-                             "\n// %s; weighted RMSE %.3g on the data.%s\n"
-                             "%s GTAOMultiBounce%s(float visibility, %s albedo)\n{\n%s"
-                             "    float x = visibility;\n    return max(((x * a + b) * x + c) * x, x);\n}\n",
-                             kFunctionWhat[j], a->joint_err[j][1].rmse, note, vector_type,
-                             j == MB_JOINT_LINEAR ? "" : kFunctionSuffix[j], vector_type, lines);
+        multibounce_shader_function *f = &g->functions[g->count];
+        char *name = g->names[g->count], *comment = g->comments[g->count];
+        if (c_names)
+            snprintf(name, sizeof g->names[0], "gtlab_multibounce_%c%s", kFunctionSuffix[j][0] + 32,
+                     kFunctionSuffix[j] + 1);
         else
-            used += snprintf(text + used, size - (size_t)used,
-                             "\n/* %s; weighted RMSE %.3g on the data.%s */\n"
-                             "static inline float gtlab_multibounce_%c%s(float visibility, float albedo)\n{\n%s"
-                             "    float x = visibility, y = ((a * x + b) * x + c) * x;\n    return y > x ? y : x;\n}\n",
-                             kFunctionWhat[j], a->joint_err[j][1].rmse, note, kFunctionSuffix[j][0] + 32,
-                             kFunctionSuffix[j] + 1, lines);
+            snprintf(name, sizeof g->names[0], "GTAOMultiBounce%s", j == MB_JOINT_LINEAR ? "" : kFunctionSuffix[j]);
+        snprintf(comment, sizeof g->comments[0], "%s; weighted RMSE %.3g on the data.%s", kFunctionWhat[j],
+                 a->joint_err[j][1].rmse, j == (int)a->chosen ? " Preferred by the leave-one-scene-out test." : "");
+        *f = (multibounce_shader_function){.name = name, .comment = comment, .model = a->joint[j].model};
+        g->count++;
     }
-    return used;
 }
 
 static char *header_text(const multibounce_analysis *a, const char *command)
 {
-    size_t size = 16384;
-    char *text = malloc(size);
-    if (!text)
+    char *preamble = NULL;
+    if (asprintf(&preamble,
+                 "/* GTAO multi-bounce, refitted by gtlab %s:\n *   %s\n"
+                 " * V'_d = max(V_d, ((a V_d + b) V_d + c) V_d) with a, b, c polynomials in the albedo\n"
+                 " * (Jimenez et al. 2016). Generated file: edit the data, not the numbers. The formula is\n"
+                 " * realtime/multibounce.inc, the very text gtlab compiles as C, behind the definitions below. */\n",
+                 GTLAB_VERSION, command) < 0)
         return NULL;
-    int n = snprintf(text, size,
-                     "/* GTAO multi-bounce, refitted by gtlab %s:\n *   %s\n"
-                     " * V'_d = max(V_d, ((a V_d + b) V_d + c) V_d) with a, b, c polynomials in the albedo\n"
-                     " * (Jimenez et al. 2016). Generated file: edit the data, not the numbers. */\n"
-                     "#ifndef GTLAB_MULTIBOUNCE_FIT_H\n#define GTLAB_MULTIBOUNCE_FIT_H\n",
-                     GTLAB_VERSION, command);
-    n = append_functions(a, NULL, text, size, n);
-    snprintf(text + n, size - (size_t)n, "\n#endif\n");
+    generated_functions g;
+    list_functions(a, 1, &g);
+    char *text = multibounce_c_header_source(preamble, "GTLAB_MULTIBOUNCE_FIT_H", g.functions, g.count);
+    free(preamble);
     return text;
 }
 
-/* The shader functions; vector_type "float3" (HLSL) or "vec3" (GLSL). */
-static char *shader_text(const multibounce_analysis *a, const char *command, const char *vector_type)
+/* The shader functions, HLSL or GLSL. */
+static char *shader_text(const multibounce_analysis *a, const char *command, shader_language language)
 {
-    size_t size = 16384;
-    char *text = malloc(size);
-    if (!text)
+    char *preamble = NULL;
+    if (asprintf(&preamble,
+                 "// GTAO multi-bounce, refitted by gtlab %s:\n//   %s\n"
+                 "// Same form as GTAOMultiBounce (Jimenez et al. 2016), new coefficients. Generated file.\n"
+                 "// The formula is realtime/multibounce.inc, the very text gtlab compiles as C, behind the\n"
+                 "// definitions below.\n",
+                 GTLAB_VERSION, command) < 0)
         return NULL;
-    int n = snprintf(text, size,
-                     "// GTAO multi-bounce, refitted by gtlab %s:\n//   %s\n"
-                     "// Same form as GTAOMultiBounce (Jimenez et al. 2016), new coefficients. Generated file.\n",
-                     GTLAB_VERSION, command);
-    append_functions(a, vector_type, text, size, n);
+    generated_functions g;
+    list_functions(a, 0, &g);
+    char *text = multibounce_shader_source(language, preamble, g.functions, g.count);
+    free(preamble);
     return text;
 }
 
@@ -346,9 +319,9 @@ int multibounce_write_outputs(const multibounce_data *d, const multibounce_analy
         return -1;
     if (header_path && write_owned_text(header_path, header_text(a, command), e) != 0)
         return -1;
-    if (hlsl_path && write_owned_text(hlsl_path, shader_text(a, command, "float3"), e) != 0)
+    if (hlsl_path && write_owned_text(hlsl_path, shader_text(a, command, SHADER_HLSL), e) != 0)
         return -1;
-    if (glsl_path && write_owned_text(glsl_path, shader_text(a, command, "vec3"), e) != 0)
+    if (glsl_path && write_owned_text(glsl_path, shader_text(a, command, SHADER_GLSL), e) != 0)
         return -1;
     return 0;
 }

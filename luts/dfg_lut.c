@@ -1,6 +1,7 @@
 /* The split-sum DFG LUT (Karis 2013): the quadrature in GGX's own
- * coordinates, the table, its bilinear lookup and the interpolation-error
- * study. See the header for the integrals, the coordinates and the axes. */
+ * coordinates, the table, its bilinear lookup (luts/dfg_lut.inc, the text
+ * the generated shaders carry) and the interpolation-error study. See the
+ * header for the integrals, the coordinates and the axes. */
 #include "luts/dfg_lut.h"
 
 #include <math.h>
@@ -10,6 +11,8 @@
 #include "core/ggx.h"
 #include "core/quadrature.h"
 #include "core/vec3.h" /* M_PI */
+#include "luts/dfg_lut_c.h"
+#include "luts/dfg_lut.inc"
 
 enum { MAX_BREAKS = 64 };
 static const double OUTER_TOLERANCE = 1e-7; /* absolute, on A and on B */
@@ -220,29 +223,11 @@ void dfg_lut_free(dfg_lut *lut)
     lut->data = NULL, lut->error_estimate = NULL;
 }
 
-/* One axis of a clamp-to-edge bilinear fetch at texel centres (i + 0.5)/n. */
-static void axis_texels(float u, int n, int *i0, int *i1, float *w)
-{
-    float x = fminf(fmaxf(u, 0.0f), 1.0f) * (float)n - 0.5f, f = floorf(x);
-    int i = (int)f;
-    *w = x - f;
-    *i0 = i < 0 ? 0 : i > n - 1 ? n - 1 : i;
-    *i1 = i + 1 < 0 ? 0 : i + 1 > n - 1 ? n - 1 : i + 1;
-}
-
-static float lerpf(float a, float b, float w) { return a + w * (b - a); }
-
 void dfg_lut_sample(const dfg_lut *lut, float n_dot_v, float roughness, float out[3])
 {
-    int n = lut->size, i0, i1, j0, j1;
-    float wx, wy;
-    axis_texels(n_dot_v, n, &i0, &i1, &wx);
-    axis_texels(roughness, n, &j0, &j1, &wy);
-    const float *d = lut->data;
     for (int c = 0; c < DFG_CHANNELS; ++c) {
-        float top = lerpf(d[((size_t)j0 * n + i0) * 3 + c], d[((size_t)j0 * n + i1) * 3 + c], wx);
-        float bottom = lerpf(d[((size_t)j1 * n + i0) * 3 + c], d[((size_t)j1 * n + i1) * 3 + c], wx);
-        out[c] = lerpf(top, bottom, wy);
+        dfg_table table = {lut, c};
+        out[c] = dfg_lookup(table, n_dot_v, roughness);
     }
 }
 

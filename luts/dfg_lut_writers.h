@@ -6,8 +6,11 @@
  *   <base>.png   16-bit RGB: R = A, G = B, blue 0 (UE4's R16G16 layout)
  *   <base>.h     `static const float <identifier>[N*N*3]` and <IDENTIFIER>_SIZE
  *   <base>.hlsl  `static const float3 <identifier>[N*N]` and
- *                `float3 DFG(float nv, float roughness)`, the same bilinear
- *                clamp-to-edge fetch as dfg_lut_sample
+ *                `float3 DFG(float nv, float roughness)`: the bilinear
+ *                clamp-to-edge fetch of dfg_lut_sample, whose text
+ *                (luts/dfg_lut.inc) it carries behind a few definitions
+ *   <base>.glsl  the same as GLSL: `const vec3 <identifier>[N*N]` and
+ *                `vec3 DFG(float nv, float roughness)`.
  * Row 0 of the images is the smoothest roughness. All written atomically;
  * the same table gives byte-identical files. */
 #ifndef GTLAB_LUTS_DFG_LUT_WRITERS_H
@@ -16,11 +19,15 @@
 #include "core/error.h"
 #include "luts/dfg_lut.h"
 
+/* The text of luts/dfg_lut.inc, embedded by the build. */
+extern const char dfg_lut_inc_text[];
+
 int dfg_lut_write_exr(const char *path, const dfg_lut *lut, gt_error *e);
 int dfg_lut_write_png(const char *path, const dfg_lut *lut, gt_error *e);
 int dfg_lut_write_c_header(const char *path, const char *identifier, const dfg_lut *lut, gt_error *e);
 int dfg_lut_write_hlsl(const char *path, const char *identifier, const dfg_lut *lut, gt_error *e);
-/* All four as <dir>/<base>.{exr,png,h,hlsl}. */
+int dfg_lut_write_glsl(const char *path, const char *identifier, const dfg_lut *lut, gt_error *e);
+/* All five as <dir>/<base>.{exr,png,h,hlsl,glsl}. */
 int dfg_lut_write_all(const char *dir, const char *base, const char *identifier, const dfg_lut *lut, gt_error *e);
 
 #endif

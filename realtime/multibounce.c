@@ -1,9 +1,18 @@
 /* GTAO multi-bounce (Jimenez et al. 2016, "Multiple Bounces" to "Shader
  * Code"); see multibounce.h for the formula and the correction of the
- * slide's coefficient naming. */
+ * slide's coefficient naming. The formula itself is realtime/multibounce.inc,
+ * compiled here in double, and embedded in the generated shaders. */
 #include "realtime/multibounce.h"
 
 #include <math.h>
+
+/* The C dialect of realtime/multibounce.inc: double throughout, C's fmax for
+ * the max. */
+#define MB_FN static inline
+typedef double mb_real;
+typedef double mb_color;
+static inline double mb_max(double y, double x) { return fmax(x, y); }
+#include "realtime/multibounce.inc"
 
 multibounce_model multibounce_model_jimenez2016(void)
 {
@@ -15,13 +24,11 @@ multibounce_model multibounce_model_jimenez2016(void)
     return m;
 }
 
-/* sum_k coef[k] rho^k by Horner's rule. */
+/* sum_k coef[k] rho^k by Horner's rule (degree 0 .. MULTIBOUNCE_MAX_DEGREE = 2). */
 static double polynomial(const double *coef, int degree, double rho)
 {
-    double v = coef[degree];
-    for (int k = degree - 1; k >= 0; --k)
-        v = v * rho + coef[k];
-    return v;
+    return degree == 0 ? coef[0] : degree == 1 ? mb_rho_linear(coef[0], coef[1], rho)
+                                               : mb_rho_quadratic(coef[0], coef[1], coef[2], rho);
 }
 
 multibounce_cubic multibounce_cubic_at(const multibounce_model *model, double albedo)
@@ -33,8 +40,7 @@ multibounce_cubic multibounce_cubic_at(const multibounce_model *model, double al
 
 double multibounce_cubic_eval(const multibounce_cubic *cubic, double visibility)
 {
-    double x = visibility;
-    return ((cubic->a * x + cubic->b) * x + cubic->c) * x;
+    return mb_cubic(cubic->a, cubic->b, cubic->c, visibility);
 }
 
 void multibounce_cubic_basis(double visibility, double basis[3])
@@ -94,5 +100,5 @@ multibounce_model multibounce_model_anchored(const double p[MULTIBOUNCE_ANCHORED
 double gtao_multibounce(const multibounce_model *model, double visibility, double albedo)
 {
     multibounce_cubic c = multibounce_cubic_at(model, albedo);
-    return fmax(visibility, multibounce_cubic_eval(&c, visibility));
+    return mb_multibounce(c.a, c.b, c.c, visibility);
 }

@@ -9,7 +9,9 @@
  * Here the coefficients a, b, c may be polynomials of any degree up to
  * MULTIBOUNCE_MAX_DEGREE in the albedo rho (degree 1 is the talk's model;
  * degree 0 is one albedo's cubic), so the fitters, the tests and the
- * real-time code all evaluate this one formula. Correction to the talk's
+ * real-time code all evaluate this one formula. Its text is
+ * realtime/multibounce.inc, compiled here in double and embedded in the C
+ * header and HLSL/GLSL that realtime/multibounce_shader.h writes. Correction to the talk's
  * text: its slide writes "a = a0 + a1 rho" beside a Mathematica listing
  * {a, {x0 -> 2.0404, x1 -> -0.332404}}, which read that way would make
  * 2.0404 the constant term; the shader code (a = 2.0404 * albedo - 0.3324)

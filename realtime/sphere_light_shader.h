@@ -7,9 +7,8 @@
 #ifndef GTLAB_REALTIME_SPHERE_LIGHT_SHADER_H
 #define GTLAB_REALTIME_SPHERE_LIGHT_SHADER_H
 
+#include "realtime/shader_language.h"
 #include "realtime/sphere_light.h"
-
-typedef enum { SHADER_HLSL, SHADER_GLSL } shader_language;
 
 /* The text of realtime/sphere_light.inc, embedded by the build. */
 extern const char sphere_light_inc_text[];

@@ -77,7 +77,7 @@ int dfg_section(report_context *ctx, const dfg_result *r, gt_error *e)
                      "albedo that multiple-scattering energy compensation divides by (Kulla-Conty 2017). The %dx%d "
                      "table is computed by adaptive Gauss-Kronrod quadrature with an error bound of %.1e per texel "
                      "(tested against Monte Carlo and the mirror limit), and written as luts/dfg_%d.exr, .png, .h "
-                     "and .hlsl. Its smallest E is %.3f: single scattering loses up to %.0f%% of the energy. The "
+                     "and .hlsl, .glsl. Its smallest E is %.3f: single scattering loses up to %.0f%% of the energy. The "
                      "table below scores the bilinear lookup a GPU performs against the quadrature at %d random "
                      "(n.v, r), for each size; Filament ships %dx%d. 'Between centres' excludes the half-texel "
                      "borders, where clamp-to-edge makes the error first order in 1/N.",

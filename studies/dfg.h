@@ -4,7 +4,7 @@
  * as a function of the table's size, beside Filament's published choice of
  * 128 x 128 (a comparison, not an input: nothing here depends on it).
  *
- * Writes <output>/luts/dfg_<N>.{exr,png,h,hlsl} and <output>/luts/dfg_
+ * Writes <output>/luts/dfg_<N>.{exr,png,h,hlsl,glsl} and <output>/luts/dfg_
  * interpolation.dat (size, then max and RMS error of A, B, E over the square
  * and between the texel centres), the data of the report's plot. */
 #ifndef GTLAB_STUDIES_DFG_H
@@ -38,7 +38,7 @@ typedef struct {
  * Both write the 128 x 128 table. */
 dfg_request dfg_default_request(study_quality quality);
 
-/* Builds the size x size table and writes <dir>/dfg_<size>.{exr,png,h,hlsl}
+/* Builds the size x size table and writes <dir>/dfg_<size>.{exr,png,h,hlsl,glsl}
  * (`gtlab lut dfg` and the study): fills out's max_error_estimate,
  * build_seconds and e_min. */
 int dfg_write_table(const char *dir, int size, int threads, dfg_result *out, gt_error *e);

@@ -1,33 +1,78 @@
 // GTAO multi-bounce, refitted by gtlab 0.1.0:
 //   gtlab all --quality preview
 // Same form as GTAOMultiBounce (Jimenez et al. 2016), new coefficients. Generated file.
+// The formula is realtime/multibounce.inc, the very text gtlab compiles as C, behind the
+// definitions below.
+
+#define MB_FN
+#define mb_real float
+#define mb_color float3
+#define mb_max max
+
+/* GTAOMultiBounce (Jimenez et al. 2016, "Shader Code"; realtime/multibounce.h
+ * has the formula and the reading of the talk's coefficients), written once,
+ * in the common subset of C, HLSL and GLSL:
+ *     V'_d = max(V_d, ((a V_d + b) V_d + c) V_d),
+ * a, b, c polynomials in the albedo rho of degree 1 or 2.
+ * realtime/multibounce.c compiles this file as C in double (its dialect is at
+ * its top); the build embeds the very same text in the C header and the
+ * HLSL/GLSL functions gtlab writes (realtime/multibounce_shader.c: their
+ * dialects, float and float3/vec3), so the formula exists nowhere else.
+ *
+ * The dialect defines:
+ *   MB_FN              qualifiers of a function (C: static inline)
+ *   mb_real            a coefficient and the visibility (C: double; the generated code: float)
+ *   mb_color           the albedo and V'_d (C: double; shaders: float3/vec3)
+ *   mb_max(y, x)       the larger of a colour y and the visibility x (C: fmax(x, y)) */
+
+/* A coefficient linear in the albedo: k0 + k1 rho. */
+MB_FN mb_color mb_rho_linear(mb_real k0, mb_real k1, mb_color rho)
+{
+    return rho * k1 + k0;
+}
+
+/* A coefficient quadratic in the albedo, by Horner's rule: k0 + rho (k1 + rho k2). */
+MB_FN mb_color mb_rho_quadratic(mb_real k0, mb_real k1, mb_real k2, mb_color rho)
+{
+    return mb_rho_linear(k1, k2, rho) * rho + k0;
+}
+
+/* The cubic ((a x + b) x + c) x without the max: what the fits model. */
+MB_FN mb_color mb_cubic(mb_color a, mb_color b, mb_color c, mb_real x)
+{
+    return ((a * x + b) * x + c) * x;
+}
+
+/* GTAOMultiBounce: max(x, cubic(x)). The max keeps V'_d >= V_d, which the
+ * physics guarantees (a bounce only adds light) and a fitted cubic need not. */
+MB_FN mb_color mb_multibounce(mb_color a, mb_color b, mb_color c, mb_real x)
+{
+    return mb_max(mb_cubic(a, b, c, x), x);
+}
 
 // a, b, c linear in the albedo (the talk's form); weighted RMSE 0.0341 on the data.
 float3 GTAOMultiBounce(float visibility, float3 albedo)
 {
-    float3 a = -0.410470316f + albedo * (2.36853008f);
-    float3 b = 0.756915933f + albedo * (-5.29483633f);
-    float3 c = 0.649498611f + albedo * (2.93318053f);
-    float x = visibility;
-    return max(((x * a + b) * x + c) * x, x);
+    float3 a = mb_rho_linear(-0.410470316f, 2.36853008f, albedo);
+    float3 b = mb_rho_linear(0.756915933f, -5.29483633f, albedo);
+    float3 c = mb_rho_linear(0.649498611f, 2.93318053f, albedo);
+    return mb_multibounce(a, b, c, visibility);
 }
 
 // a, b, c quadratic in the albedo; weighted RMSE 0.0323 on the data.
 float3 GTAOMultiBounceQuadratic(float visibility, float3 albedo)
 {
-    float3 a = 0.117244771f + albedo * (-0.581452996f + albedo * (2.94645501f));
-    float3 b = -0.201069571f + albedo * (0.060403477f + albedo * (-5.34883497f));
-    float3 c = 1.08477146f + albedo * (0.499959653f + albedo * (2.43031066f));
-    float x = visibility;
-    return max(((x * a + b) * x + c) * x, x);
+    float3 a = mb_rho_quadratic(0.117244771f, -0.581452996f, 2.94645501f, albedo);
+    float3 b = mb_rho_quadratic(-0.201069571f, 0.060403477f, -5.34883497f, albedo);
+    float3 c = mb_rho_quadratic(1.08477146f, 0.499959653f, 2.43031066f, albedo);
+    return mb_multibounce(a, b, c, visibility);
 }
 
 // anchored: V_d + V_d (1 - V_d) (albedo (p1 + q1 V_d) + albedo^2 (p2 + q2 V_d)), exact at albedo 0 and V_d = 0, 1; weighted RMSE 0.0324 on the data. Preferred by the leave-one-scene-out test.
 float3 GTAOMultiBounceAnchored(float visibility, float3 albedo)
 {
-    float3 a = 0.0f + albedo * (0.0745902776f + albedo * (2.28996659f));
-    float3 b = 0.0f + albedo * (-0.991776622f + albedo * (-4.32745444f));
-    float3 c = 1.0f + albedo * (0.917186344f + albedo * (2.03748785f));
-    float x = visibility;
-    return max(((x * a + b) * x + c) * x, x);
+    float3 a = mb_rho_quadratic(0.0f, 0.0745902776f, 2.28996659f, albedo);
+    float3 b = mb_rho_quadratic(0.0f, -0.991776622f, -4.32745444f, albedo);
+    float3 c = mb_rho_quadratic(1.0f, 0.917186344f, 2.03748785f, albedo);
+    return mb_multibounce(a, b, c, visibility);
 }

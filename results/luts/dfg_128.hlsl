@@ -4098,22 +4098,86 @@ float3(0.32896778, 0.000149613072, 0.329117388), float3(0.327296972, 0.000136099
 float3(0.32238692, 9.98783435e-05, 0.322486788), float3(0.320783496, 8.91578893e-05, 0.320872635), float3(0.319196284, 7.90726335e-05, 0.319275349), float3(0.317625016, 6.95988638e-05, 0.317694604),
 float3(0.316069484, 6.07136135e-05, 0.316130191), float3(0.314529419, 5.23945964e-05, 0.314581811), float3(0.313004613, 4.46202102e-05, 0.313049227), float3(0.311494827, 3.73695257e-05, 0.311532199)
 };
-void DFGAxis(float u, out int i0, out int i1, out float w)
+
+/* DFG(nv, roughness) below is luts/dfg_lut.inc, the very text of gtlab's lookup dfg_lut_sample,
+ * behind these definitions. */
+#define DFG_LUT_SHADER
+#define DFG_FN
+#define dfg_floor floor
+#define dfg_float(i) float(i)
+#define dfg_int(x) int(x)
+#define dfg_table int
+#define dfg_table_size(t) DFG_LUT_SIZE
+#define dfg_texel(t, i, j) DFG_LUT[(j) * DFG_LUT_SIZE + (i)]
+struct dfg_axis
 {
-    float x = saturate(u) * float(DFG_LUT_SIZE) - 0.5, f = floor(x);
-    w = x - f;
-    i0 = clamp(int(f), 0, DFG_LUT_SIZE - 1);
-    i1 = clamp(int(f) + 1, 0, DFG_LUT_SIZE - 1);
+    int i0, i1;
+    float w;
+};
+#define dfg_saturate saturate
+#define dfg_value float3
+
+/* The bilinear, clamp-to-edge lookup of the split-sum DFG table (luts/dfg_lut.h:
+ * the axes; texel centres at (i + 0.5)/N, as a GPU samples the texture),
+ * written once, in the common subset of C, HLSL and GLSL.
+ * luts/dfg_lut.c compiles this file as C (luts/dfg_lut_c.h: its dialect,
+ * one channel at a time) for dfg_lut_sample; the build embeds the very same
+ * text after the table in the shaders luts/dfg_lut_writers.c writes (their
+ * dialect: float3/vec3 texels of the array written before it), so the
+ * lookup exists nowhere else.
+ *
+ * The dialect defines:
+ *   DFG_FN                    qualifiers of a function (C: static inline)
+ *   dfg_value                 a texel (C: one channel, float; shaders: float3/vec3)
+ *   dfg_table                 the table (C: the LUT and a channel; shaders:
+ *                             a placeholder int, the table being the array)
+ *   dfg_table_size(t)         N
+ *   dfg_texel(t, i, j)        texel i (n.v) of row j (roughness)
+ *   dfg_saturate, dfg_floor, dfg_float(i), dfg_int(x), and the type dfg_axis */
+
+/* A texel index clamped to [0, n - 1]: clamp-to-edge. */
+DFG_FN int dfg_clamp_index(int i, int n)
+{
+    return i < 0 ? 0 : (i > n - 1 ? n - 1 : i);
 }
 
-/* (A, B, E) at (n.v, perceptual roughness): specular = (F0 * A + B) * prefiltered * (1 + F0 * (1 / E - 1)). */
-float3 DFG(float nv, float roughness)
+/* One axis of the fetch: u clamped to [0, 1], x = u n - 0.5 in texel
+ * units; the texels i0 = floor(x) and i1 = i0 + 1 (each clamped) and the
+ * weight x - floor(x) of i1. */
+DFG_FN dfg_axis dfg_axis_at(float u, int n)
 {
-    int i0, i1, j0, j1;
-    float wx, wy;
-    DFGAxis(nv, i0, i1, wx);
-    DFGAxis(roughness, j0, j1, wy);
-    float3 top = lerp(DFG_LUT[j0 * DFG_LUT_SIZE + i0], DFG_LUT[j0 * DFG_LUT_SIZE + i1], wx);
-    float3 bottom = lerp(DFG_LUT[j1 * DFG_LUT_SIZE + i0], DFG_LUT[j1 * DFG_LUT_SIZE + i1], wx);
-    return lerp(top, bottom, wy);
+    float x = dfg_saturate(u) * dfg_float(n) - 0.5f;
+    float f = dfg_floor(x);
+    dfg_axis axis;
+    axis.i0 = dfg_clamp_index(dfg_int(f), n);
+    axis.i1 = dfg_clamp_index(dfg_int(f) + 1, n);
+    axis.w = x - f;
+    return axis;
 }
+
+/* a + w (b - a). */
+DFG_FN dfg_value dfg_lerp(dfg_value a, dfg_value b, float w)
+{
+    return a + w * (b - a);
+}
+
+/* The table at (n.v, perceptual roughness): along n.v on the two rows
+ * around the roughness, then between the rows. */
+DFG_FN dfg_value dfg_lookup(dfg_table table, float n_dot_v, float roughness)
+{
+    int n = dfg_table_size(table);
+    dfg_axis x = dfg_axis_at(n_dot_v, n);
+    dfg_axis y = dfg_axis_at(roughness, n);
+    dfg_value top = dfg_lerp(dfg_texel(table, x.i0, y.i0), dfg_texel(table, x.i1, y.i0), x.w);
+    dfg_value bottom = dfg_lerp(dfg_texel(table, x.i0, y.i1), dfg_texel(table, x.i1, y.i1), x.w);
+    return dfg_lerp(top, bottom, y.w);
+}
+
+#ifdef DFG_LUT_SHADER
+/* (A, B, E) at (n.v, perceptual roughness), from the shader's one table:
+ * specular = (F0 * A + B) * prefiltered * (1 + F0 * (1 / E - 1)). */
+dfg_value DFG(float nv, float roughness)
+{
+    return dfg_lookup(0, nv, roughness);
+}
+#endif
