@@ -1,6 +1,7 @@
 /* `gtlab scene list` prints every built-in scene with its exact geometry;
  * `gtlab scene write NAME -o F.glb` writes one as a real binary glTF, so any
- * other renderer can be run on exactly the geometry gtlab's references saw. */
+ * other renderer can be run on exactly the geometry gtlab's references saw;
+ * `gtlab scene info SCENE` says what gtlab made of a scene file. */
 #define _GNU_SOURCE
 #include <getopt.h>
 #include <stdio.h>
@@ -10,6 +11,7 @@
 #include "cli/cli.h"
 #include "scene/builtin_scenes.h"
 #include "scene/gltf_writer.h"
+#include "scene/scene_loaders.h"
 
 static const char list_usage[] =
     "usage: gtlab scene list\n"
@@ -52,6 +54,54 @@ static int scene_list(int argc, char **argv)
         putchar('\n');
         print_scene(builtin_scene_at(i));
     }
+    return EXIT_OK;
+}
+
+static const char info_usage[] =
+    "usage: gtlab scene info SCENE\n"
+    "  What gtlab reads from a .gltf/.glb file or builtin:NAME: its meshes (one per glTF\n"
+    "  primitive, in world space) with their triangles, vertices and material, and whether\n"
+    "  each had normals; a primitive without NORMAL is flat-shaded (glTF 2.0, \"Meshes\"):\n"
+    "  each triangle gets its own vertices and its face normal.\n";
+
+static void print_info(const scene *s)
+{
+    vec3 lo, hi;
+    scene_bounds(s, &lo, &hi);
+    printf("%s: %llu triangles in %d mesh%s, %d material%s, %d texture%s, %s\n", s->name,
+           (unsigned long long)scene_triangle_count(s), s->mesh_count, s->mesh_count == 1 ? "" : "es",
+           s->material_count, s->material_count == 1 ? "" : "s", s->texture_count, s->texture_count == 1 ? "" : "s",
+           s->has_camera ? "a camera" : "no camera (an automatic view is used)");
+    printf("bounds: (%g, %g, %g) to (%g, %g, %g)\n", lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
+    int flat = 0;
+    for (int i = 0; i < s->mesh_count; ++i) {
+        const scene_mesh *m = &s->meshes[i];
+        flat += m->flat;
+        printf("  mesh %d: %u triangles, %u vertices, material %d, %s\n", i, m->triangle_count, m->vertex_count,
+               m->material, m->flat ? "no normals: flat-shaded (face normals)" : "normals");
+    }
+    if (flat)
+        printf("%d of %d meshes had no normals and are flat-shaded, as glTF 2.0 requires\n", flat, s->mesh_count);
+}
+
+static int scene_info(int argc, char **argv)
+{
+    static const struct option options[] = {{"help", no_argument, NULL, 'h'}, {NULL, 0, NULL, 0}};
+    int c = getopt_long(argc, argv, "h", options, NULL);
+    if (c == 'h') {
+        fputs(info_usage, stdout);
+        return EXIT_OK;
+    }
+    if (c != -1)
+        return cli_usage_error("scene");
+    if (optind != argc - 1)
+        return cli_failf("scene info", "expected one scene: a .gltf/.glb file or builtin:NAME");
+    scene s;
+    gt_error e;
+    if (scene_load(argv[optind], &s, &e) != 0)
+        return cli_fail(&e);
+    print_info(&s);
+    scene_free(&s);
     return EXIT_OK;
 }
 
@@ -105,12 +155,15 @@ int verb_scene(int argc, char **argv)
         return scene_list(argc - 1, argv + 1);
     if (argc >= 2 && strcmp(argv[1], "write") == 0)
         return scene_write(argc - 1, argv + 1);
+    if (argc >= 2 && strcmp(argv[1], "info") == 0)
+        return scene_info(argc - 1, argv + 1);
     if (argc == 2 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
         fputs(list_usage, stdout);
         fputs(write_usage, stdout);
+        fputs(info_usage, stdout);
         return EXIT_OK;
     }
     if (argc < 2)
-        return cli_failf("scene", "expected 'list' or 'write' (see 'gtlab scene --help')");
+        return cli_failf("scene", "expected 'list', 'write' or 'info' (see 'gtlab scene --help')");
     return cli_failf("scene", "unknown subcommand '%s' (see 'gtlab scene --help')", argv[1]);
 }

@@ -568,6 +568,23 @@ int attribute(const tinygltf::Primitive &prim, const char *name)
     return it == prim.attributes.end() ? -1 : it->second;
 }
 
+/* A primitive without normals is flat-shaded (glTF 2.0, "Meshes"): every
+ * triangle gets its own three vertices, so each can carry the face normal. */
+void unweld(Primitive &p)
+{
+    std::vector<float> positions, texcoords;
+    positions.reserve(3 * p.indices.size());
+    for (uint32_t i : p.indices) {
+        positions.insert(positions.end(), &p.positions[3 * (size_t)i], &p.positions[3 * (size_t)i] + 3);
+        if (!p.texcoords.empty())
+            texcoords.insert(texcoords.end(), &p.texcoords[2 * (size_t)i], &p.texcoords[2 * (size_t)i] + 2);
+    }
+    for (size_t k = 0; k < p.indices.size(); ++k)
+        p.indices[k] = (uint32_t)k;
+    p.positions.swap(positions);
+    p.texcoords.swap(texcoords);
+}
+
 int read_primitive(Loader &L, const std::string &what, const tinygltf::Primitive &prim, Primitive &out)
 {
     const int position = attribute(prim, "POSITION");
@@ -589,7 +606,11 @@ int read_primitive(Loader &L, const std::string &what, const tinygltf::Primitive
     if (texcoord >= 0 &&
         read_float_attribute(L, what, "TEXCOORD_0", texcoord, TINYGLTF_TYPE_VEC2, false, vertex_count, out.texcoords))
         return -1;
-    return read_indices(L, what, prim, vertex_count, out.indices);
+    if (read_indices(L, what, prim, vertex_count, out.indices) != 0)
+        return -1;
+    if (out.normals.empty())
+        unweld(out);
+    return 0;
 }
 
 /* Counts normals that cannot be used at all (zero or degenerate after the
@@ -639,7 +660,12 @@ int add_world_mesh(Loader &L, const std::string &what, const Primitive &p, const
         dst[2] = mirrored ? src[1] : src[2];
     }
     if (p.normals.empty()) {
-        scene_mesh_compute_normals(m);
+        /* Flat: the world-space triangles' face normals, normalised as a
+         * file's normals are, so a file that carries these normals loads to
+         * the same bits. */
+        scene_mesh_compute_flat_normals(m);
+        const std::vector<float> face(m->normals, m->normals + 3 * (size_t)vertex_count);
+        transform_normals(mat4_identity(), face, m);
     } else if (mat4_det3(world) == 0.0) {
         gt_warn(L.path, "%s: its node transform is singular (flattens the mesh); normals recomputed", what.c_str());
         scene_mesh_compute_normals(m);

@@ -71,8 +71,9 @@ void write_mesh(tinygltf::Model &model, const scene_mesh *m)
             pa.maxValues[(size_t)k] = std::max(pa.maxValues[(size_t)k], (double)m->positions[3 * v + (uint32_t)k]);
         }
     prim.attributes["POSITION"] = position;
-    prim.attributes["NORMAL"] = add_accessor(model, m->normals, m->vertex_count, TINYGLTF_TYPE_VEC3,
-                                             TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TARGET_ARRAY_BUFFER);
+    if (m->normals) /* none: the reader shades the primitive flat */
+        prim.attributes["NORMAL"] = add_accessor(model, m->normals, m->vertex_count, TINYGLTF_TYPE_VEC3,
+                                                 TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TARGET_ARRAY_BUFFER);
     if (m->texcoords)
         prim.attributes["TEXCOORD_0"] = add_accessor(model, m->texcoords, m->vertex_count, TINYGLTF_TYPE_VEC2,
                                                      TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TARGET_ARRAY_BUFFER);

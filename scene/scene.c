@@ -97,6 +97,22 @@ void scene_mesh_compute_normals(scene_mesh *m)
     }
 }
 
+void scene_mesh_compute_flat_normals(scene_mesh *m)
+{
+    for (uint32_t t = 0; t < m->triangle_count; ++t) {
+        const uint32_t *idx = &m->indices[3 * t];
+        vec3 a = v3_load(&m->positions[3 * idx[0]]);
+        vec3 b = v3_load(&m->positions[3 * idx[1]]);
+        vec3 c = v3_load(&m->positions[3 * idx[2]]);
+        vec3 n = v3_cross(v3_sub(b, a), v3_sub(c, a));
+        float len = v3_length(n);
+        n = len > 0.0f ? v3_scale(n, 1.0f / len) : v3(0.0f, 1.0f, 0.0f);
+        for (int k = 0; k < 3; ++k)
+            v3_store(&m->normals[3 * idx[k]], n);
+    }
+    m->flat = 1;
+}
+
 int scene_validate(const scene *s, const char *what, gt_error *e)
 {
     if (scene_triangle_count(s) == 0)

@@ -31,6 +31,8 @@ typedef struct {
     float *texcoords;  /* 2 * vertex_count, or NULL */
     uint32_t *indices; /* 3 * triangle_count, each < vertex_count */
     int material;      /* index into materials, or -1 for the default material */
+    int flat;          /* 1: the glTF primitive had no NORMAL; each triangle has its own three
+                        * vertices, their normal the face's (glTF 2.0, "Meshes": flat shading) */
 } scene_mesh;
 
 typedef struct {
@@ -59,6 +61,11 @@ scene_mesh *scene_add_mesh(scene *s, uint32_t vertex_count, uint32_t triangle_co
 int scene_add_material(scene *s, scene_material m);
 /* Computes area-weighted vertex normals from the triangles. */
 void scene_mesh_compute_normals(scene_mesh *m);
+/* Sets every vertex's normal to its triangle's face normal, normalize((b - a)
+ * x (c - a)) (+Y for a degenerate triangle), and marks the mesh flat. For a
+ * mesh whose triangles share no vertex (the glTF reader unwelds a primitive
+ * without normals first); a shared vertex takes its last triangle's. */
+void scene_mesh_compute_flat_normals(scene_mesh *m);
 /* Checks finite positions and normals and in-range indices. */
 int scene_validate(const scene *s, const char *what, gt_error *e);
 void scene_free(scene *s);

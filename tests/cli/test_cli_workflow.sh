@@ -47,6 +47,13 @@ expect_ok render-glb render ao --scene "$work/sop.glb" --width 48 --height 48 --
 run compare "$work/b.exr" "$work/g.exr" --json
 json_is max_abs == 0 "$work/stdout" && pass || fail "glb render differs from built-in: $(cat "$work/stdout")"
 
+# scene info: a primitive without normals (Debian's assimp Cameras.gltf) is
+# said to be flat-shaded; a built-in scene's meshes have normals.
+expect_ok scene-info-flat scene info /usr/share/assimp/models/glTF2/cameras/Cameras.gltf
+grep -q "mesh 0: 2 triangles, 6 vertices, .*no normals: flat-shaded" "$work/stdout" && pass || fail "scene info: $(cat "$work/stdout")"
+expect_ok scene-info-builtin scene info builtin:sphere-on-plane
+grep -q "flat" "$work/stdout" && fail "scene info builtin: $(cat "$work/stdout")" || pass
+
 # compare: identical files, heatmap, noise floor.
 run compare "$work/t1.exr" "$work/t1.exr" --json --noise-floor --heatmap "$work/heat.png"
 json_is ssim == 1 "$work/stdout" && pass || fail "self-compare SSIM is not 1: $(cat "$work/stdout")"
