@@ -9,7 +9,7 @@ packages=(
   build-essential cmake pkg-config
   libembree-dev libopenexr-dev libopenimageio-dev openimageio-tools
   libceres-dev libeigen3-dev libtinygltf-dev libstb-dev nlohmann-json3-dev libcjson-dev python3-imath
-  assimp-testmodels gnuplot-nox glslang-tools
+  libssl-dev assimp-testmodels gnuplot-nox glslang-tools
 )
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }

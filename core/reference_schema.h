@@ -120,6 +120,7 @@
 #define ATTR_VERSION "gtlab.version"     /* the gtlab version that wrote the file */
 #define ATTR_QUANTITY "gtlab.quantity"   /* "ao", "gbuffer", ..., "approx" */
 #define ATTR_SCENE "gtlab.scene"         /* the scene spec ("builtin:boxes", a path) */
+#define ATTR_SCENE_HASH "gtlab.scene_hash" /* SHA-256 of the loaded scene (scene/scene_hash.h) */
 #define ATTR_CAMERA "gtlab.camera"       /* the camera as JSON (scene/camera.h) */
 #define ATTR_NORMAL "gtlab.normal"       /* "shading" or "geometric" */
 #define ATTR_SETTINGS "gtlab.settings"   /* the integrator's options, for people to read */

@@ -45,8 +45,12 @@ static int blocks_overlap(const sample_block *a, const sample_block *b)
 /* The attributes that must agree for a merge to make sense. */
 static int check_compatible(const image *first, const image *other, const char *name, gt_error *e)
 {
-    static const char *const keys[] = {ATTR_QUANTITY, ATTR_SCENE, ATTR_CAMERA, ATTR_SETTINGS,
-                                       ATTR_NORMAL};
+    /* The scene by its content hash: one file under two paths is one scene,
+     * two files of one name are two. Files written before the hash was
+     * recorded compare by their spec. */
+    const int by_hash = image_get_attribute(first, ATTR_SCENE_HASH) || image_get_attribute(other, ATTR_SCENE_HASH);
+    const char *const keys[] = {ATTR_QUANTITY, by_hash ? ATTR_SCENE_HASH : ATTR_SCENE, ATTR_CAMERA, ATTR_SETTINGS,
+                                ATTR_NORMAL};
     if (first->width != other->width || first->height != other->height)
         return gt_error_set(e, name, "size %dx%d differs from the first input's %dx%d", other->width, other->height,
                             first->width, first->height);

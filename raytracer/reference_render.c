@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "core/reference_schema.h"
+#include "scene/scene_hash.h"
 
 int reference_set_attributef(image *img, const char *key, const char *fmt, ...)
 {
@@ -24,13 +25,17 @@ static reference_quantity quantity_of(const reference_request *req)
     return req->quantity ? req->quantity : QUANTITY_GBUFFER;
 }
 
-/* Version, quantity, scene, camera and normals; for a sampled quantity the
+/* Version, quantity, scene (its spec and content hash), camera and normals; for a sampled quantity the
  * sampling (spp, seed, sample blocks) and the quantity's own settings. */
-static int write_header(const char *scene_spec, const camera *cam, const reference_request *req, image *img)
+static int write_header(const scene *s, const char *scene_spec, const camera *cam, const reference_request *req,
+                        image *img)
 {
     reference_quantity q = quantity_of(req);
-    char *camera_json = camera_to_json(cam);
+    char *camera_json = camera_to_json(cam), hash[SCENE_HASH_HEX];
     int rc = camera_json ? 0 : -1;
+    rc |= scene_content_hash(s, hash);
+    if (rc == 0)
+        rc |= image_set_attribute(img, ATTR_SCENE_HASH, hash);
     rc |= image_set_attribute(img, ATTR_VERSION, GTLAB_VERSION);
     rc |= image_set_attribute(img, ATTR_QUANTITY, q->name);
     rc |= image_set_attribute(img, ATTR_SCENE, scene_spec);
@@ -93,7 +98,7 @@ int reference_render(const scene *s, const char *scene_spec, const camera *cam, 
     reference_pass pass = {s, scene_spec, cam, &es, &gb, req};
     if (rc == 0 && quantity_of(req)->prepare)
         rc = render_quantity(&pass, out, stats, e);
-    if (rc == 0 && write_header(scene_spec, cam, req, out) != 0)
+    if (rc == 0 && write_header(s, scene_spec, cam, req, out) != 0)
         rc = gt_error_set(e, scene_spec, "out of memory for the header");
     gbuffer_free(&gb);
     embree_scene_release(&es);

@@ -37,4 +37,15 @@ for signal in TERM HUP; do
   hidden=$(ls -A "$work" | grep '^\.' || true)
   [ -z "$hidden" ] && pass || fail "SIG$signal: left $hidden"
 done
+# Scene identity is the content (gtlab.scene_hash): two different scenes
+# written as s.glb in two folders and rendered from there do not merge; one
+# scene reached by two paths does.
+mkdir -p "$work/a" "$work/b"
+printf '{"position":[3,4,5],"target":[0,0,0],"up":[0,1,0],"yfov_deg":45,"width":16,"height":16}' >"$work/cam.json"
+"$gtlab" scene write plane -o "$work/a/s.glb" >/dev/null && "$gtlab" scene write corner -o "$work/b/s.glb" >/dev/null || fail "scene write"
+(cd "$work/a" && "$gtlab" render ao --scene s.glb --camera ../cam.json --spp 4 -o ../p1.exr >/dev/null 2>&1) || fail "render a"
+(cd "$work/b" && "$gtlab" render ao --scene s.glb --camera ../cam.json --spp 4 --sample-offset 4 -o ../p2.exr >/dev/null 2>&1) || fail "render b"
+expect_error two-scenes-one-name "p2.exr: its gtlab.scene_hash differs" "$work/m.exr" -- merge "$work/p1.exr" "$work/p2.exr" -o "$work/m.exr"
+expect_ok render-one-path render ao --scene "$work/a/s.glb" --camera "$work/cam.json" --spp 4 --sample-offset 4 -o "$work/p3.exr"
+expect_ok one-scene-two-paths merge "$work/p1.exr" "$work/p3.exr" -o "$work/m.exr"
 finish
