@@ -58,7 +58,7 @@ static void print_help(void)
            "  --target-stderr E     stop a pixel once the standard error of its first channel\n"
            "                        (ao.V; multibounce: the first multibounce channel;\n"
            "                        specular-occlusion: specocc_occluded.V) is <= E\n"
-           "                        (checked at 16, 32, 64, ... samples)\n");
+           "                        (checked at 64, 128, 256, ... samples)\n");
     for (int i = 0; i < reference_option_count(); ++i)
         print_option_help(reference_option_at(i));
     printf("  --normal shading|geometric   normal the hemisphere is built on (default shading)\n"

@@ -1,14 +1,24 @@
 /* Per-pixel Monte Carlo accumulation with exact, order-independent sums.
  *
- * Every sample value v of a quantity is rounded onto a fixed grid of spacing
- * 2^(E-24) (E = the quantity's scale exponent, |v| <= 2^E expected), and its
- * square onto 2^(2E-24). Sums of grid values are integers in grid units, which
- * a double holds exactly below 2^53: the sums do not depend on the order of
- * addition. So a render split into blocks of samples (--sample-offset) and
- * merged gives the same bits as the whole render, and a long render can be
- * resumed. The rounding (2^-25 relative at most) is far below Monte Carlo
- * noise. Exactness holds for up to 2^29 samples per pixel in memory, and up to
- * 2^24 in the EXR file, where each sum is kept as two floats (hi + lo).
+ * Means. Every sample value v of a quantity is rounded onto a fixed grid of
+ * spacing 2^(E-24) (E = the quantity's scale exponent, |v| <= 2^E expected).
+ * Sums of grid values are integers in grid units, which a double holds
+ * exactly below 2^53: the sums do not depend on the order of addition. So a
+ * render split into blocks of samples (--sample-offset) and merged gives the
+ * same bits as the whole render, and a long render can be resumed. The
+ * rounding moves a mean by at most 2^(E-25), far below Monte Carlo noise
+ * where values are near 2^E (it is absolute, not relative to the pixel).
+ *
+ * Standard errors. The samples and their squares are also summed at each
+ * pixel's own scale (core/moment_sums.h: exact, order-independent, every
+ * sample rounded by at most 2^-48 of the pixel's largest), and the variance
+ * comes from those sums, within 2^-45 of the square of the pixel's largest
+ * sample: a dim pixel's standard error does not depend on how bright the
+ * rest of the image is. (The grid served both until issue 23: squares below
+ * the grid of squares 2^(2E-24) vanished, and dim pixels reported 0.)
+ *
+ * Exactness holds for up to 2^29 samples per pixel in memory, and up to 2^24
+ * in the EXR file, where each sum or limb is kept as two floats (hi + lo).
  *
  * Samples are also summed separately over even sample indices, so the two
  * halves of a render (even and odd samples) give the reference's noise floor.
@@ -20,6 +30,7 @@
 
 #include "core/error.h"
 #include "core/image.h"
+#include "core/moment_sums.h"
 
 #define MC_FILM_MAX_QUANTITIES 64
 
@@ -30,9 +41,9 @@ typedef struct {
 
 #define MC_FILM_MAX_NORMALIZED 4
 
-/* A quantity's rounding grids: 2^(E-24) for samples, 2^(2E-24) for squares. */
+/* A quantity's rounding grid for its mean: 2^(E-24). */
 typedef struct {
-    double step, inverse_step, square_step, inverse_square_step;
+    double step, inverse_step;
 } mc_grid;
 
 typedef struct {
@@ -40,8 +51,12 @@ typedef struct {
     int quantity_count;
     mc_quantity *quantities;
     mc_grid grids[MC_FILM_MAX_QUANTITIES];
-    double *sum, *sum_sq, *sum_even; /* [quantity * pixels + pixel] */
+    double *sum, *sum_even;          /* on the grid, [quantity * pixels + pixel] */
+    moment_sums *moments;            /* at the pixel's scale, [quantity * pixels + pixel] */
     uint32_t *count, *count_even;    /* [pixel] */
+    /* 0 for a film read from a file written before issue 23 (its squares
+     * were summed on the grid): means only, no standard errors, no merge. */
+    int has_moments;
     /* Layers whose .X .Y .Z means are written normalised (bent normals). */
     int normalized_count;
     char normalized[MC_FILM_MAX_NORMALIZED][IMAGE_NAME_MAX];
@@ -55,7 +70,8 @@ int mc_film_normalize_layer(mc_film *film, const char *layer);
 /* One pixel's sums while it is being sampled, kept together (and on the
  * stack) rather than scattered over the film's planes. */
 typedef struct {
-    double sum[MC_FILM_MAX_QUANTITIES], sum_sq[MC_FILM_MAX_QUANTITIES], sum_even[MC_FILM_MAX_QUANTITIES];
+    double sum[MC_FILM_MAX_QUANTITIES], sum_even[MC_FILM_MAX_QUANTITIES];
+    moment_sums moments[MC_FILM_MAX_QUANTITIES];
     uint32_t count, count_even;
 } mc_pixel;
 
@@ -78,13 +94,15 @@ void mc_film_add_sample(mc_film *film, int pixel, uint32_t sample_index, const f
 
 double mc_film_mean(const mc_film *film, int quantity, int pixel);
 /* Standard error of the mean, sqrt(s^2 / n) with the unbiased sample
- * variance s^2; +infinity with fewer than 2 samples. */
+ * variance s^2 of the pixel's moment sums; +infinity with fewer than 2
+ * samples, NaN when unknown (a NaN sample, or a film without moments). */
 double mc_film_stderr(const mc_film *film, int quantity, int pixel);
 
-/* Adds the channels "Q", "Q.stderr", the accumulators "Q.sum", "Q.sum_lo",
- * "Q.sumsq", "Q.sumsq_lo", "Q.sumeven", "Q.sumeven_lo" of every quantity,
- * and CH_SPP, CH_SPP_EVEN; and the attributes ATTR_NORMALIZED and
- * ATTR_EXPONENTS, so a film read back accumulates on the same grid. Pixels with
+/* Adds the channels "Q", "Q.stderr", the grid sums "Q.sum", "Q.sum_lo",
+ * "Q.sumeven", "Q.sumeven_lo", and the moment sums "Q.peak" and
+ * "Q.m<moment>_<limb>[lo]" (CH_SUFFIX_LIMB_FMT) of every quantity, and
+ * CH_SPP, CH_SPP_EVEN; and the attributes ATTR_NORMALIZED and ATTR_EXPONENTS,
+ * so a film read back accumulates on the same grid. Pixels with
  * mask[pixel] == 0 (background; mask may be NULL) get 0 in Q and Q.stderr. */
 int mc_film_write_channels(const mc_film *film, const float *mask, image *img);
 /* Means of one half of the samples only (half 0: even indices, 1: odd) into
@@ -92,9 +110,16 @@ int mc_film_write_channels(const mc_film *film, const float *mask, image *img);
 int mc_film_write_half_means(const mc_film *film, int half, image *img);
 
 /* Rebuilds a film from the accumulator channels of an image written by
- * mc_film_write_channels. `what` names the file for errors. */
+ * mc_film_write_channels. `what` names the file for errors. A file written
+ * before issue 23 (grid sums of squares "Q.sumsq", no moment sums) is read
+ * with has_moments = 0: its means and halves are right, its sums of squares
+ * are not kept. */
 int mc_film_read_channels(const image *img, const char *what, mc_film *film, gt_error *e);
-/* dst += src (same size and quantities). Exact. */
+/* 0 when the film has moment sums, else -1 with e naming `what`: a file
+ * written before issue 23, whose standard errors cannot be rebuilt. */
+int mc_film_check_moments(const mc_film *film, const char *what, gt_error *e);
+/* dst += src (same size and quantities). Exact. Refuses films without
+ * moment sums (mc_film_check_moments), naming the file. */
 int mc_film_merge(mc_film *dst, const mc_film *src, const char *what, gt_error *e);
 
 #endif

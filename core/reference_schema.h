@@ -8,8 +8,9 @@
  * Channels are "layer.channel" (OpenEXR's layer convention, so viewers group
  * them): a scalar quantity is "<layer>.V", a vector one "<layer>.X/Y/Z", a
  * colour "<layer>.R/G/B". Every Monte Carlo quantity Q also has "Q.stderr"
- * (its standard error) and the exact accumulators "Q.sum", "Q.sum_lo", ...
- * (core/mc_film.h) from which partial renders merge bit for bit.
+ * (its standard error) and the exact accumulators "Q.sum", "Q.sum_lo",
+ * "Q.peak", "Q.m1_0", ... (core/mc_film.h) from which partial renders merge
+ * bit for bit.
  *
  * Header attributes are EXR string attributes (OpenEXR's string type keeps
  * every viewer able to show them); numbers are written as text by the typed
@@ -48,12 +49,19 @@
 #define CH_SPP_EVEN "spp.Neven"  /* of which even-indexed (the noise-floor halves) */
 #define CH_LAYER_SPP "spp"       /* their layer */
 #define CH_SUFFIX_STDERR "stderr" /* "Q.stderr": standard error of Q's mean */
-#define CH_SUFFIX_SUM "sum"      /* exact accumulators: see core/mc_film.h */
+#define CH_SUFFIX_SUM "sum"      /* exact accumulators on the quantity's grid: see core/mc_film.h */
 #define CH_SUFFIX_SUM_LO "sum_lo"
-#define CH_SUFFIX_SUMSQ "sumsq"
-#define CH_SUFFIX_SUMSQ_LO "sumsq_lo"
 #define CH_SUFFIX_SUMEVEN "sumeven"
 #define CH_SUFFIX_SUMEVEN_LO "sumeven_lo"
+/* Moment sums at the pixel's scale (core/moment_sums.h), what Q.stderr comes
+ * from: the largest |sample|, and limb k of the sum of samples (moment 1) or
+ * of their squares (moment 2) as hi + lo floats, "Q.m1_0", "Q.m1_0lo", ... */
+#define CH_SUFFIX_PEAK "peak"
+#define CH_SUFFIX_LIMB_FMT "m%d_%d%s" /* moment (1, 2), limb (0 .. 2), "" or CH_SUFFIX_LIMB_LO */
+#define CH_SUFFIX_LIMB_LO "lo"
+/* Files written before issue 23 summed squares on the grid instead: read for
+ * their means, refused for merges (their standard errors were wrong). */
+#define CH_SUFFIX_SUMSQ_LEGACY "sumsq"
 
 /* ---- Ambient occlusion (render ao, heightfield-ao, approx gtao/hbao/vo) -- */
 #define CH_AO "ao.V"               /* cosine-weighted visibility V_d */

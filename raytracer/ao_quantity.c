@@ -51,7 +51,8 @@ const reference_quantity_descriptor reference_quantity_ao = {
     .name = "ao",
     .help = "the G-buffer plus ao.V (cosine AO), ao.Vuniform (uniform AO),\n"
             "bent.X/Y/Z (bent normal), each with .stderr and the exact\n"
-            "accumulators (.sum, .sumsq, .sumeven) that 'gtlab merge' combines",
+            "accumulators (.sum, .sumeven, .peak, .m1_*, .m2_*) that 'gtlab merge'\n"
+            "combines",
     .options = (const reference_option *const[]){&reference_option_max_distance, NULL},
     .set_defaults = ao_quantity_set_defaults,
     .prepare = prepare,

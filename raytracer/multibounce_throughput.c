@@ -76,7 +76,7 @@ static int time_render(const embree_scene *es, const gbuffer *gb, const multibou
     if (multibounce_plan_init(&plan, settings, NORMAL_SHADING, e) != 0)
         return -1;
     integrator it = multibounce_integrator(es, &plan);
-    sampling_settings ss = {spp, 0, 1, 0.0, threads};
+    sampling_settings ss = {.spp = spp, .seed = 1, .threads = threads};
     mc_film film;
     if (render_estimates(gb, &it, &ss, &film, stats, e) != 0)
         return -1;

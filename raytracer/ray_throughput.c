@@ -144,7 +144,7 @@ static int measure_gtlab(const embree_scene *es, const gbuffer *gb, int threads,
 {
     ao_settings settings = {INFINITY};
     integrator it = ao_integrator(es, &settings);
-    sampling_settings ss = {GTLAB_SPP, 0, 1, 0.0, threads};
+    sampling_settings ss = {.spp = GTLAB_SPP, .seed = 1, .threads = threads};
     *rays_per_s = 0.0;
     for (int k = 0; k < repeats; ++k) {
         mc_film film;

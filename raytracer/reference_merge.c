@@ -148,6 +148,11 @@ int reference_merge(const image *inputs, const char *const *names, int count, im
         free(blocks);
         return -1;
     }
+    if (mc_film_check_moments(&total, names[0], e) != 0) {
+        mc_film_free(&total);
+        free(blocks);
+        return -1;
+    }
     int rc = add_blocks(&inputs[0], names[0], blocks, &block_count, e);
     for (int i = 1; i < count && rc == 0; ++i) {
         mc_film part;

@@ -1,14 +1,25 @@
 #include "raytracer/render_loop.h"
 
+#include <math.h>
+
 #include "core/progress.h"
 
-enum { MAX_QUANTITIES = MC_FILM_MAX_QUANTITIES, MIN_ADAPTIVE_SPP = 16 };
+enum { MAX_QUANTITIES = MC_FILM_MAX_QUANTITIES, MIN_ADAPTIVE_SPP = 64 };
 
+static int adaptive(const sampling_settings *ss) { return ss->target_stderr > 0.0 || ss->target_rel_stderr > 0.0; }
+
+/* The stop rule at a checkpoint (a power of two >= MIN_ADAPTIVE_SPP): the
+ * standard error of quantity 0 within the absolute target, or within the
+ * relative one of the mean (the moment sums' mean, precise however dim the
+ * pixel). */
 static int reached_target(const mc_pixel *acc, int taken, const sampling_settings *ss)
 {
-    if (ss->target_stderr <= 0.0 || taken < MIN_ADAPTIVE_SPP || (taken & (taken - 1)) != 0)
+    if (!adaptive(ss) || taken < MIN_ADAPTIVE_SPP || (taken & (taken - 1)) != 0)
         return 0;
-    return mc_pixel_stderr(acc, 0) <= ss->target_stderr;
+    double err = mc_pixel_stderr(acc, 0);
+    double mean = moment_sums_total(&acc->moments[0]) / taken;
+    return (ss->target_stderr > 0.0 && err <= ss->target_stderr) ||
+           (ss->target_rel_stderr > 0.0 && err <= ss->target_rel_stderr * fabs(mean));
 }
 
 /* The next batch: up to SAMPLE_BATCH samples, ending at the next checkpoint
@@ -16,7 +27,7 @@ static int reached_target(const mc_pixel *acc, int taken, const sampling_setting
 static int batch_size(int taken, const sampling_settings *ss)
 {
     int count = ss->spp - taken < SAMPLE_BATCH ? ss->spp - taken : SAMPLE_BATCH;
-    if (ss->target_stderr > 0.0) {
+    if (adaptive(ss)) {
         int to_checkpoint = taken < MIN_ADAPTIVE_SPP ? MIN_ADAPTIVE_SPP - taken : taken;
         count = count < to_checkpoint ? count : to_checkpoint;
     }

@@ -3,10 +3,16 @@
  * pixel's Owen-scrambled Sobol' sequence, ask the integrator for one sample of
  * each quantity, and accumulate them exactly (core/mc_film.h).
  *
- * Stop rule: with target_stderr > 0 a pixel stops at the first power-of-two
- * sample count >= 16 at which the standard error of quantity 0 is at most the
- * target (or at spp). Checking only at powers of two keeps each pixel's sample
- * set a complete (0, m, 2)-net.
+ * Stop rule: with target_stderr > 0 (or target_rel_stderr > 0) a pixel stops
+ * at the first power-of-two sample count >= 64 at which the standard error of
+ * quantity 0 is at most the target (or the relative target times the mean's
+ * magnitude), or at spp. Checking only at powers of two keeps each pixel's
+ * sample set a complete (0, m, 2)-net. The first check waits for 64 samples
+ * (docs/decisions.md, "Stop rule"): fewer estimate the variance too poorly
+ * where rare samples carry the integral (a penumbra seen through 16 samples
+ * that all missed the light reports a standard error of 0). The standard
+ * error is each pixel's own (core/moment_sums.h), so the rule does not
+ * depend on how bright other pixels are.
  *
  * Determinism: a pixel's samples depend only on (seed, pixel, index), and each
  * pixel is accumulated by one thread in index order, so the output is
@@ -64,7 +70,7 @@ void sample_pair_points(const sample_pair_seeds *s, uint32_t first, int count, f
 /* Samples are drawn in batches so an integrator can trace them together (one
  * Embree stream call) and derive its per-pair scramble seeds once. With a
  * target standard error, batches are cut to end on the stop rule's
- * checkpoints (powers of two from 16). */
+ * checkpoints (powers of two from 64). */
 enum { SAMPLE_BATCH = 64 };
 
 typedef struct integrator {
@@ -87,6 +93,7 @@ typedef struct {
     uint32_t seed;
     double target_stderr;   /* 0: off */
     int threads;
+    double target_rel_stderr; /* relative to |mean|; 0: off (either target met stops the pixel) */
 } sampling_settings;
 
 typedef struct {

@@ -23,8 +23,9 @@ int sphere_light_plan_init(sphere_light_plan *plan, const sphere_light_settings 
     plan->eye = eye;
     /* Samples are of the order of the normal illuminance pi sin^2(sigma) L_e
      * at the closest point of the scene; 4x that bounds the diffuse ones
-     * and keeps the film's grid fine (larger specular samples take the
-     * film's exact scalar path). */
+     * and keeps the grid of the means fine (larger specular samples take the
+     * film's exact scalar path). The grid rounds a mean by 2^(E-25) at most,
+     * absolutely; the standard errors do not depend on it (core/mc_film.h). */
     vec3 lo, hi;
     scene_bounds(s, &lo, &hi);
     vec3 nearest = v3_min(v3_max(light->position, lo), hi);

@@ -46,6 +46,13 @@ static int parse_shadows(reference_request *rq, const char *value, gt_error *e)
     return 0;
 }
 
+/* A relative target suits a quantity spanning decades: an absolute one is
+ * met at once by dim pixels and late by bright ones. */
+static int parse_target_rel(reference_request *rq, const char *value, gt_error *e)
+{
+    return parse_real_in("--target-rel-stderr", value, 0.0, 1.0, &rq->sampling.target_rel_stderr, e);
+}
+
 static const reference_option position_option = {
     .name = "light-position", .value = "X,Y,Z", .required = 1, .help = "the light's centre", .parse = parse_position};
 static const reference_option radius_option = {
@@ -57,6 +64,15 @@ static const reference_option shadows_option = {
     .help = "the scene's geometry blocks the light (one\n"
             "occlusion ray per light-carrying sample direction)",
     .parse = parse_shadows,
+};
+
+static const reference_option target_rel_option = {
+    .name = "target-rel-stderr",
+    .value = "R",
+    .help = "stop a pixel once the standard error of sphere.R\n"
+            "is <= R times its mean (checked as --target-stderr;\n"
+            "with both, the first met stops it)",
+    .parse = parse_target_rel,
 };
 
 static void set_defaults(reference_request *rq)
@@ -82,7 +98,8 @@ static int write_settings(const reference_request *rq, image *out)
 {
     char light[512];
     sphere_light_settings_text(&rq->sphere_light, light, sizeof light);
-    return reference_set_attributef(out, ATTR_SETTINGS, "%s target_stderr=%.9g", light, rq->sampling.target_stderr);
+    return reference_set_attributef(out, ATTR_SETTINGS, "%s target_stderr=%.9g target_rel_stderr=%.9g", light,
+                                    rq->sampling.target_stderr, rq->sampling.target_rel_stderr);
 }
 
 const reference_quantity_descriptor reference_quantity_sphere_light = {
@@ -92,7 +109,7 @@ const reference_quantity_descriptor reference_quantity_sphere_light = {
             "Schlick Fresnel), integrated exactly over the light (MIS); unshadowed\n"
             "like the real-time approximations unless --shadows",
     .options = (const reference_option *const[]){&position_option, &radius_option, &radiance_option, &shadows_option,
-                                                 NULL},
+                                                 &target_rel_option, NULL},
     .set_defaults = set_defaults,
     .prepare = prepare,
     .release = free,

@@ -72,7 +72,8 @@ static int second_part(int i) { return !first_part(i); }
 static int same_accumulators(const mc_film *a, const mc_film *b)
 {
     size_t n = (size_t)PIXELS * QUANTITIES;
-    return memcmp(a->sum, b->sum, n * sizeof(double)) == 0 && memcmp(a->sum_sq, b->sum_sq, n * sizeof(double)) == 0 &&
+    return memcmp(a->sum, b->sum, n * sizeof(double)) == 0 &&
+           memcmp(a->moments, b->moments, n * sizeof(moment_sums)) == 0 &&
            memcmp(a->sum_even, b->sum_even, n * sizeof(double)) == 0 &&
            memcmp(a->count, b->count, PIXELS * sizeof(uint32_t)) == 0 &&
            memcmp(a->count_even, b->count_even, PIXELS * sizeof(uint32_t)) == 0;
@@ -173,7 +174,9 @@ static void test_batches_equal_single_samples(void)
 
 /* (b) Mean and standard error against the direct computation, to 1e-6 of
  * the pixel's statistical scale (the film rounds samples onto a grid of
- * 2^(E-24), far below the noise but not below every mean, which may be near 0). */
+ * 2^(E-24) for the means, far below the noise but not below every mean,
+ * which may be near 0; the standard errors come from the moment sums,
+ * tests/core/test_moment_sums.c). */
 static void test_mean_and_stderr(void)
 {
     mc_film film;
@@ -238,8 +241,8 @@ static void test_exr_round_trip(void)
             continue;
         CHECK_MSG(memcmp(&film.sum[q * np], &back.sum[r * np], np * sizeof(double)) == 0, "%s sums",
                   film.quantities[q].name);
-        CHECK_MSG(memcmp(&film.sum_sq[q * np], &back.sum_sq[r * np], np * sizeof(double)) == 0, "%s squared sums",
-                  film.quantities[q].name);
+        CHECK_MSG(memcmp(&film.moments[q * np], &back.moments[r * np], np * sizeof(moment_sums)) == 0,
+                  "%s moment sums", film.quantities[q].name);
         CHECK_MSG(memcmp(&film.sum_even[q * np], &back.sum_even[r * np], np * sizeof(double)) == 0, "%s even sums",
                   film.quantities[q].name);
     }
@@ -417,6 +420,67 @@ static void test_bad_images(void)
     mc_film_free(&good);
 }
 
+/* A copy of img without the moment-sum channels and with grid sums of
+ * squares instead: the layout gtlab wrote before issue 23. */
+static void make_legacy(const image *img, image *old)
+{
+    image_init(old, img->width, img->height);
+    for (int c = 0; c < img->channel_count; ++c) {
+        const char *name = img->channels[c].name, *dot = strrchr(name, '.');
+        if (strcmp(dot, ".peak") == 0 || strncmp(dot, ".m1_", 4) == 0 || strncmp(dot, ".m2_", 4) == 0)
+            continue;
+        memcpy(image_add_channel(old, name), img->channels[c].data, sizeof(float) * PIXELS);
+        if (strcmp(dot, ".sum") == 0) {
+            char sq[128];
+            snprintf(sq, sizeof sq, "%.*s.sumsq", (int)(dot - name), name);
+            image_add_channel(old, sq);
+        }
+    }
+    for (int a = 0; a < img->attribute_count; ++a)
+        image_set_attribute(old, img->attributes[a].key, img->attributes[a].value);
+}
+
+/* (g) Files written before issue 23 still give their means and halves, but
+ * have no standard errors to rebuild: merging them is refused, naming the
+ * file. Corrupt moment channels are refused. */
+static void test_legacy_and_corrupt_moments(void)
+{
+    mc_film film;
+    init_film(&film);
+    add_in_order(&film, 0, NULL);
+    image img, old;
+    image_init(&img, W, H);
+    mc_film_write_channels(&film, NULL, &img);
+    make_legacy(&img, &old);
+    gt_error e;
+    mc_film legacy;
+    CHECK_MSG(mc_film_read_channels(&old, "old.exr", &legacy, &e) == 0, "%s", e.message);
+    CHECK(legacy.has_moments == 0 && isnan(mc_film_stderr(&legacy, 0, 3)));
+    CHECK(memcmp(legacy.sum, film.sum, sizeof(double) * PIXELS * QUANTITIES) == 0);
+    image half;
+    image_init(&half, W, H);
+    CHECK(mc_film_write_half_means(&legacy, 0, &half) == 0);
+    CHECK_NEAR(image_channel_data(&half, "ao.V")[3], (double)direct(3, 0, 0).mean, 1e-6);
+    image_free(&half);
+    CHECK(mc_film_merge(&film, &legacy, "old.exr", &e) == -1 && strstr(e.message, "old.exr") == e.message);
+    CHECK_MSG(strstr(e.message, "render it again") != NULL, "%s", e.message);
+    CHECK(mc_film_merge(&legacy, &film, "new.exr", &e) == -1);
+    mc_film_free(&legacy);
+    image_free(&old);
+
+    mc_film back;
+    float *limb = image_channel_data(&img, "big.V.m2_1lo");
+    float kept = limb[2];
+    limb[2] += 0.5f;
+    CHECK(mc_film_read_channels(&img, "limb.exr", &back, &e) == -1 && strstr(e.message, "limb.exr") == e.message);
+    CHECK_MSG(strstr(e.message, "big.V.m2_1") != NULL, "%s", e.message);
+    limb[2] = kept;
+    image_channel_data(&img, "bent.Y.peak")[1] = -1.0f;
+    CHECK(mc_film_read_channels(&img, "peak.exr", &back, &e) == -1 && strstr(e.message, "peak.exr") == e.message);
+    image_free(&img);
+    mc_film_free(&film);
+}
+
 int main(void)
 {
     make_samples();
@@ -427,5 +491,6 @@ int main(void)
     test_resume_from_file();
     test_half_means_and_normalised_layer();
     test_bad_images();
+    test_legacy_and_corrupt_moments();
     return check_report("test_mc_film");
 }

@@ -1,6 +1,7 @@
 /* Bit-identical renders whatever the thread count; partial renders over
  * disjoint sample blocks merge into exactly the full render (also through
- * EXR files); the stop rule stops only at powers of two with the target met;
+ * EXR files); the stop rule stops only at powers of two >= 64 with the target
+ * met;
  * overlapping blocks are refused. */
 #include <math.h>
 #include <string.h>
@@ -113,7 +114,7 @@ static void test_stop_rule(void)
         if (mask[i] == 0.0f)
             continue;
         int count = (int)n[i];
-        int power_of_two = count >= 16 && (count & (count - 1)) == 0;
+        int power_of_two = count >= 64 && (count & (count - 1)) == 0;
         if (count < 1024) {
             stopped_early++;
             bad += !power_of_two || !(err[i] <= target);
