@@ -166,7 +166,16 @@ void mc_film_add_sample(mc_film *film, int pixel, uint32_t sample_index, const f
 double mc_film_mean(const mc_film *film, int quantity, int pixel)
 {
     uint32_t n = film->count[pixel];
-    return n ? film->sum[(size_t)quantity * pixel_count(film) + (size_t)pixel] / n : 0.0;
+    size_t i = (size_t)quantity * pixel_count(film) + (size_t)pixel;
+    if (n == 0)
+        return 0.0;
+    /* Precise relative to the pixel's own peak (issue 23); the quantity's
+     * grid (relative to the brightest pixel) only for a film read from a
+     * file written before, or a pixel whose sums are unknown (a NaN sample
+     * stays visible). */
+    if (film->has_moments && isfinite(film->moments[i].peak))
+        return moment_sums_total(&film->moments[i]) / n;
+    return film->sum[i] / n;
 }
 
 double mc_film_stderr(const mc_film *film, int quantity, int pixel)
@@ -205,6 +214,12 @@ int mc_film_merge(mc_film *dst, const mc_film *src, const char *what, gt_error *
                                 src->quantities[q].name, src->quantities[q].scale_exponent,
                                 dst->quantities[q].scale_exponent);
     }
+    for (size_t p = 0; p < pixel_count(dst); ++p)
+        if ((double)dst->count[p] + (double)src->count[p] > MC_FILM_MAX_COUNT)
+            return gt_error_set(e, what,
+                                "pixel %zu would hold %.0f samples, more than %.0f (2^29), the range in which "
+                                "gtlab's sums stay exact: merge fewer parts into one file",
+                                p, (double)dst->count[p] + (double)src->count[p], MC_FILM_MAX_COUNT);
     size_t n = pixel_count(dst) * (size_t)dst->quantity_count;
     for (size_t i = 0; i < n; ++i) {
         dst->sum[i] += src->sum[i];

@@ -33,6 +33,12 @@
 #include "core/moment_sums.h"
 
 #define MC_FILM_MAX_QUANTITIES 64
+/* The most samples a pixel may hold: 2^29, the range in which every sum
+ * stays an exact integer in a double (a sample adds at most 2^24 units of
+ * its quantity's grid, and at most 2^23 to a moment-sum limb,
+ * core/moment_sums.h). Files store counts exactly to 2^32 (spp.N +
+ * spp.Nlo); a merge beyond this is refused. */
+#define MC_FILM_MAX_COUNT 536870912.0
 
 typedef struct {
     char name[IMAGE_NAME_MAX]; /* channel name of the mean, e.g. CH_AO (core/reference_schema.h) */
@@ -92,6 +98,10 @@ void mc_film_add_pixel(mc_film *film, int pixel, const mc_pixel *acc);
 /* Adds one sample straight into the film (mc_pixel_add_sample + mc_film_add_pixel). */
 void mc_film_add_sample(mc_film *film, int pixel, uint32_t sample_index, const float *values);
 
+/* The mean of quantity q's samples at the pixel, from its moment sums:
+ * within 2^-48 P of the exact mean, P the pixel's own largest |sample|,
+ * however dim it is next to the image's brightest (the grid sums, relative to the brightest,
+ * for a film without moments). 0 before any sample. */
 double mc_film_mean(const mc_film *film, int quantity, int pixel);
 /* Standard error of the mean, sqrt(s^2 / n) with the unbiased sample
  * variance s^2 of the pixel's moment sums; +infinity with fewer than 2

@@ -127,11 +127,12 @@ int mc_film_write_channels(const mc_film *film, const float *mask, image *img)
         }
     }
     float *n = image_add_channel(img, CH_SPP), *n_even = image_add_channel(img, CH_SPP_EVEN);
-    if (!n || !n_even)
+    float *n_lo = image_add_channel(img, CH_SPP_LO), *n_even_lo = image_add_channel(img, CH_SPP_EVEN_LO);
+    if (!n || !n_even || !n_lo || !n_even_lo)
         return -1;
     for (size_t p = 0; p < np; ++p) {
-        n[p] = (float)film->count[p];
-        n_even[p] = (float)film->count_even[p];
+        split_hi_lo((double)film->count[p], &n[p], &n_lo[p]);
+        split_hi_lo((double)film->count_even[p], &n_even[p], &n_even_lo[p]);
     }
     normalize_layers(film, img, 1);
     char layers[MC_FILM_MAX_NORMALIZED * IMAGE_NAME_MAX] = "";
@@ -179,8 +180,14 @@ static const float *required_channel(const image *img, const char *quantity, con
     return data;
 }
 
-/* A count the file can hold exactly: a whole number in [0, 2^24]. */
-static int valid_count(float n) { return n >= 0.0f && n <= 16777216.0f && n == floorf(n); }
+/* A count as hi + lo (lo absent in files written before: hi alone, exact to
+ * 2^24): a whole number in [0, MC_FILM_MAX_COUNT], or -1. */
+static double count_of(const float *hi, const float *lo, size_t p)
+{
+    double n = (double)hi[p] + (lo ? (double)lo[p] : 0.0);
+    int whole = n >= 0.0 && n <= MC_FILM_MAX_COUNT && n == floor(n) && (lo || hi[p] <= 16777216.0f);
+    return whole ? n : -1.0;
+}
 
 /* Restores each quantity's scale exponent from the header ("name:E ..."). */
 static int read_exponents(const image *img, const char *what, mc_quantity *quantities, int count, gt_error *e)
@@ -307,11 +314,15 @@ static int read_counts(const image *img, const char *what, mc_film *film, gt_err
     const float *n = image_channel_data(img, CH_SPP), *n_even = image_channel_data(img, CH_SPP_EVEN);
     if (!n || !n_even)
         return gt_error_set(e, what, "channels %s and %s are missing", CH_SPP, CH_SPP_EVEN);
+    const float *n_lo = image_channel_data(img, CH_SPP_LO), *n_even_lo = image_channel_data(img, CH_SPP_EVEN_LO);
+    if (!n_lo != !n_even_lo)
+        return gt_error_set(e, what, "one of the channels %s and %s is missing", CH_SPP_LO, CH_SPP_EVEN_LO);
     for (size_t p = 0; p < pixel_count(film); ++p) {
-        if (!valid_count(n[p]) || !valid_count(n_even[p]) || n_even[p] > n[p])
+        double count = count_of(n, n_lo, p), even = count_of(n_even, n_even_lo, p);
+        if (count < 0.0 || even < 0.0 || even > count)
             return gt_error_set(e, what, "invalid sample counts in %s / %s at pixel %zu", CH_SPP, CH_SPP_EVEN, p);
-        film->count[p] = (uint32_t)n[p];
-        film->count_even[p] = (uint32_t)n_even[p];
+        film->count[p] = (uint32_t)count;
+        film->count_even[p] = (uint32_t)even;
     }
     return 0;
 }

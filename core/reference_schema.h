@@ -47,6 +47,8 @@
 /* ---- Monte Carlo bookkeeping (core/mc_film.h) --------------------------- */
 #define CH_SPP "spp.N"           /* samples taken in the pixel */
 #define CH_SPP_EVEN "spp.Neven"  /* of which even-indexed (the noise-floor halves) */
+#define CH_SPP_LO "spp.Nlo"      /* count - spp.N exactly: spp.N is the count rounded to */
+#define CH_SPP_EVEN_LO "spp.Nevenlo" /* a float, for people; hi + lo is exact to 2^32 */
 #define CH_LAYER_SPP "spp"       /* their layer */
 #define CH_SUFFIX_STDERR "stderr" /* "Q.stderr": standard error of Q's mean */
 #define CH_SUFFIX_SUM "sum"      /* exact accumulators on the quantity's grid: see core/mc_film.h */
@@ -146,6 +148,8 @@
 /* real */
 #define ATTR_LUT_ERROR "gtlab.lut.error" /* a LUT's largest quadrature error estimate */
 #define ATTR_ROUGHNESS "gtlab.roughness" /* specular occlusion: the fixed roughness, absent: the materials' */
+#define ATTR_TARGET_STDERR "gtlab.target_stderr"         /* --target-stderr; absent: none */
+#define ATTR_TARGET_REL_STDERR "gtlab.target_rel_stderr" /* --target-rel-stderr; absent: none */
 
 /* Values of ATTR_QUANTITY written by other than a reference integrator. */
 #define QUANTITY_NAME_APPROX "approx"

@@ -42,6 +42,27 @@ static int blocks_overlap(const sample_block *a, const sample_block *b)
     return a->seed == b->seed && a->begin < b->end && b->begin < a->end;
 }
 
+/* An adaptive render (--target-stderr, --target-rel-stderr) stops each
+ * pixel when its own samples say so: parts stop at other points than one
+ * render would, so their merge would equal no adaptive render. Refused. */
+static int check_not_adaptive(const image *img, const char *name, gt_error *e)
+{
+    static const char *const keys[2] = {ATTR_TARGET_STDERR, ATTR_TARGET_REL_STDERR};
+    for (int k = 0; k < 2; ++k) {
+        double target;
+        int found = schema_get_real(img, keys[k], name, &target, e);
+        if (found < 0)
+            return -1;
+        if (found && target > 0.0)
+            return gt_error_set(e, name,
+                                "rendered with a stopping target (%s = %g): each pixel stopped by its own samples, so "
+                                "merged parts would differ from one adaptive render; merge parts rendered without a "
+                                "target (--spp only)",
+                                keys[k], target);
+    }
+    return 0;
+}
+
 /* The attributes that must agree for a merge to make sense. */
 static int check_compatible(const image *first, const image *other, const char *name, gt_error *e)
 {
@@ -153,10 +174,14 @@ int reference_merge(const image *inputs, const char *const *names, int count, im
         free(blocks);
         return -1;
     }
-    int rc = add_blocks(&inputs[0], names[0], blocks, &block_count, e);
+    int rc = check_not_adaptive(&inputs[0], names[0], e);
+    if (rc == 0)
+        rc = add_blocks(&inputs[0], names[0], blocks, &block_count, e);
     for (int i = 1; i < count && rc == 0; ++i) {
         mc_film part;
         rc = check_compatible(&inputs[0], &inputs[i], names[i], e);
+        if (rc == 0)
+            rc = check_not_adaptive(&inputs[i], names[i], e);
         if (rc == 0)
             rc = add_blocks(&inputs[i], names[i], blocks, &block_count, e);
         if (rc == 0 && (rc = mc_film_read_channels(&inputs[i], names[i], &part, e)) == 0) {

@@ -50,6 +50,10 @@ static int write_header(const scene *s, const char *scene_spec, const camera *ca
     rc |= reference_set_attributef(img, ATTR_SEED, "%" PRIu32, ss->seed);
     rc |= reference_set_attributef(img, ATTR_BLOCKS, "%" PRIu32 ":%" PRIu32 "+%d", ss->seed, ss->sample_offset,
                                    ss->spp);
+    if (ss->target_stderr > 0.0)
+        rc |= schema_set_real(img, ATTR_TARGET_STDERR, ss->target_stderr);
+    if (ss->target_rel_stderr > 0.0)
+        rc |= schema_set_real(img, ATTR_TARGET_REL_STDERR, ss->target_rel_stderr);
     if (q->write_settings)
         rc |= q->write_settings(req, img);
     return rc;

@@ -48,4 +48,9 @@ printf '{"position":[3,4,5],"target":[0,0,0],"up":[0,1,0],"yfov_deg":45,"width":
 expect_error two-scenes-one-name "p2.exr: its gtlab.scene_hash differs" "$work/m.exr" -- merge "$work/p1.exr" "$work/p2.exr" -o "$work/m.exr"
 expect_ok render-one-path render ao --scene "$work/a/s.glb" --camera "$work/cam.json" --spp 4 --sample-offset 4 -o "$work/p3.exr"
 expect_ok one-scene-two-paths merge "$work/p1.exr" "$work/p3.exr" -o "$work/m.exr"
+# Adaptive parts (--target-stderr) do not merge: their stop points differ
+# from one adaptive render's.
+expect_ok adaptive-1 render ao --scene builtin:plane --width 16 --height 16 --spp 128 --target-stderr 0.01 -o "$work/t1.exr"
+expect_ok adaptive-2 render ao --scene builtin:plane --width 16 --height 16 --spp 128 --sample-offset 128 --target-stderr 0.01 -o "$work/t2.exr"
+expect_error adaptive-merge "t1.exr: rendered with a stopping target" "$work/tm.exr" -- merge "$work/t1.exr" "$work/t2.exr" -o "$work/tm.exr"
 finish
