@@ -53,26 +53,26 @@ MB_FN mb_color mb_multibounce(mb_color a, mb_color b, mb_color c, mb_real x)
 // a, b, c linear in the albedo (the talk's form); weighted RMSE 0.0341 on the data.
 float3 GTAOMultiBounce(float visibility, float3 albedo)
 {
-    float3 a = mb_rho_linear(-0.410470316f, 2.36853008f, albedo);
-    float3 b = mb_rho_linear(0.756915933f, -5.29483633f, albedo);
-    float3 c = mb_rho_linear(0.649498611f, 2.93318053f, albedo);
+    float3 a = mb_rho_linear(-0.410470332f, 2.36853008f, albedo);
+    float3 b = mb_rho_linear(0.756915962f, -5.29483635f, albedo);
+    float3 c = mb_rho_linear(0.649498598f, 2.93318054f, albedo);
     return mb_multibounce(a, b, c, visibility);
 }
 
 // a, b, c quadratic in the albedo; weighted RMSE 0.0323 on the data.
 float3 GTAOMultiBounceQuadratic(float visibility, float3 albedo)
 {
-    float3 a = mb_rho_quadratic(0.117244771f, -0.581452996f, 2.94645501f, albedo);
-    float3 b = mb_rho_quadratic(-0.201069571f, 0.060403477f, -5.34883497f, albedo);
-    float3 c = mb_rho_quadratic(1.08477146f, 0.499959653f, 2.43031066f, albedo);
+    float3 a = mb_rho_quadratic(0.117244758f, -0.581453003f, 2.94645502f, albedo);
+    float3 b = mb_rho_quadratic(-0.201069532f, 0.0604034042f, -5.34883491f, albedo);
+    float3 c = mb_rho_quadratic(1.08477144f, 0.49995973f, 2.43031059f, albedo);
     return mb_multibounce(a, b, c, visibility);
 }
 
 // anchored: V_d + V_d (1 - V_d) (albedo (p1 + q1 V_d) + albedo^2 (p2 + q2 V_d)), exact at albedo 0 and V_d = 0, 1; weighted RMSE 0.0324 on the data. Preferred by the leave-one-scene-out test.
 float3 GTAOMultiBounceAnchored(float visibility, float3 albedo)
 {
-    float3 a = mb_rho_quadratic(0.0f, 0.0745902776f, 2.28996659f, albedo);
-    float3 b = mb_rho_quadratic(0.0f, -0.991776622f, -4.32745444f, albedo);
-    float3 c = mb_rho_quadratic(1.0f, 0.917186344f, 2.03748785f, albedo);
+    float3 a = mb_rho_quadratic(0.0f, 0.0745902261f, 2.28996663f, albedo);
+    float3 b = mb_rho_quadratic(0.0f, -0.991776541f, -4.32745451f, albedo);
+    float3 c = mb_rho_quadratic(1.0f, 0.917186315f, 2.03748788f, albedo);
     return mb_multibounce(a, b, c, visibility);
 }
