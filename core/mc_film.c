@@ -217,8 +217,8 @@ int mc_film_merge(mc_film *dst, const mc_film *src, const char *what, gt_error *
     for (size_t p = 0; p < pixel_count(dst); ++p)
         if ((double)dst->count[p] + (double)src->count[p] > MC_FILM_MAX_COUNT)
             return gt_error_set(e, what,
-                                "pixel %zu would hold %.0f samples, more than %.0f (2^29), the range in which "
-                                "gtlab's sums stay exact: merge fewer parts into one file",
+                                "pixel %zu would hold %.0f samples, more than %.0f (2^24), the range in which "
+                                "gtlab's files keep their sums exact: merge fewer parts into one file",
                                 p, (double)dst->count[p] + (double)src->count[p], MC_FILM_MAX_COUNT);
     size_t n = pixel_count(dst) * (size_t)dst->quantity_count;
     for (size_t i = 0; i < n; ++i) {

@@ -33,12 +33,12 @@
 #include "core/moment_sums.h"
 
 #define MC_FILM_MAX_QUANTITIES 64
-/* The most samples a pixel may hold: 2^29, the range in which every sum
- * stays an exact integer in a double (a sample adds at most 2^24 units of
- * its quantity's grid, and at most 2^23 to a moment-sum limb,
- * core/moment_sums.h). Files store counts exactly to 2^32 (spp.N +
- * spp.Nlo); a merge beyond this is refused. */
-#define MC_FILM_MAX_COUNT 536870912.0
+/* The most samples a pixel may hold: 2^24. A sample adds up to 2^24 units
+ * of its quantity's grid, and a file keeps each sum as two floats (hi + lo,
+ * 48 bits): exact up to 2^48 units, so up to 2^24 samples at the grid's
+ * top. Counts themselves are stored exactly to 2^32 (spp.N + spp.Nlo); a
+ * merge beyond 2^24 is refused rather than rounded. */
+#define MC_FILM_MAX_COUNT 16777216.0
 
 typedef struct {
     char name[IMAGE_NAME_MAX]; /* channel name of the mean, e.g. CH_AO (core/reference_schema.h) */
