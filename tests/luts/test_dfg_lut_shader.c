@@ -13,6 +13,7 @@
 #include "luts/dfg_lut.h"
 #include "luts/dfg_lut_writers.h"
 #include "tests/check.h"
+#include "tests/source_text.h"
 
 /* ---- The shaders' half of the .inc as C: the shaders' dialect (luts/dfg_lut_writers.c)
  * with the table DFG_LUT a global array, one channel at a time ---- */
@@ -41,20 +42,6 @@ static inline float dfg_saturate(float u) { return fminf(fmaxf(u, 0.0f), 1.0f); 
 static const char *const kShaderTableAccess[] = {"#define dfg_table_size(t) DFG_LUT_SIZE\n",
                                                  "#define dfg_texel(t, i, j) DFG_LUT[(j) * DFG_LUT_SIZE + (i)]\n"};
 
-static char *read_text(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    char *text = NULL;
-    size_t size = 0;
-    if (!f)
-        return NULL;
-    FILE *mem = open_memstream(&text, &size);
-    for (int c; (c = fgetc(f)) != EOF;)
-        fputc(c, mem);
-    fclose(mem);
-    fclose(f);
-    return text;
-}
 
 /* A DFG_LUT_SIZE^2 table of arbitrary values in [0, 1). */
 static void arbitrary_table(dfg_lut *lut)
@@ -170,15 +157,7 @@ static void test_no_second_copy(void)
 {
     static const char *const files[] = {"luts/dfg_lut.c", "luts/dfg_lut_writers.c"};
     static const char *const prints[] = {"lerp", "floor(", "floorf(", "DFGAxis", "i0 ="};
-    for (size_t f = 0; f < sizeof files / sizeof files[0]; ++f) {
-        char path[4096];
-        snprintf(path, sizeof path, "%s/%s", GTLAB_SOURCE_DIR, files[f]);
-        char *text = read_text(path);
-        CHECK_MSG(text != NULL, "%s", path);
-        for (size_t p = 0; text && p < sizeof prints / sizeof prints[0]; ++p)
-            CHECK_MSG(strstr(text, prints[p]) == NULL, "%s spells '%s'", files[f], prints[p]);
-        free(text);
-    }
+    check_no_file_spells(files, sizeof files / sizeof files[0], prints, sizeof prints / sizeof prints[0]);
 }
 
 int main(void)

@@ -13,21 +13,8 @@
 #include "realtime/multibounce.h"
 #include "realtime/multibounce_shader.h"
 #include "tests/check.h"
+#include "tests/source_text.h"
 
-static char *read_text(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    char *text = NULL;
-    size_t size = 0;
-    if (!f)
-        return NULL;
-    FILE *mem = open_memstream(&text, &size);
-    for (int c; (c = fgetc(f)) != EOF;)
-        fputc(c, mem);
-    fclose(mem);
-    fclose(f);
-    return text;
-}
 
 /* The models the tests generate: the talk's (linear), a quadratic, the anchored form. */
 enum { MODELS = 3, GRID_X = 133, GRID_RHO = 69 };
@@ -227,15 +214,7 @@ static void test_no_second_copy(void)
     static const char *const files[] = {"realtime/multibounce.c", "realtime/multibounce_shader.c",
                                         "fitters/fit_multibounce_outputs.c"};
     static const char *const prints[] = {"* x + b", "* x + c", "x * a", "albedo * ("};
-    for (size_t f = 0; f < sizeof files / sizeof files[0]; ++f) {
-        char path[4096];
-        snprintf(path, sizeof path, "%s/%s", GTLAB_SOURCE_DIR, files[f]);
-        char *text = read_text(path);
-        CHECK_MSG(text != NULL, "%s", path);
-        for (size_t p = 0; text && p < sizeof prints / sizeof prints[0]; ++p)
-            CHECK_MSG(strstr(text, prints[p]) == NULL, "%s spells '%s'", files[f], prints[p]);
-        free(text);
-    }
+    check_no_file_spells(files, sizeof files / sizeof files[0], prints, sizeof prints / sizeof prints[0]);
 }
 
 int main(void)

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "tests/check.h"
+#include "tests/source_text.h"
 #include "realtime/sphere_light.h"
 #include "realtime/sphere_light_shader.h"
 
@@ -22,20 +23,6 @@
 #include "realtime/sphere_light_c.h"
 #include "realtime/sphere_light.inc"
 
-static char *read_text(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    char *text = NULL;
-    size_t size = 0;
-    if (!f)
-        return NULL;
-    FILE *mem = open_memstream(&text, &size);
-    for (int c; (c = fgetc(f)) != EOF;)
-        fputc(c, mem);
-    fclose(mem);
-    fclose(f);
-    return text;
-}
 
 static void test_embedded_text_is_the_file(void)
 {
@@ -104,15 +91,7 @@ static void test_no_second_copy(void)
                                         "cli/fit_sphere_light.c", "studies/sphere_light.c"};
     static const char *const prints[] = {"NoLVTr", "no_b * d0", "0.25f * s", "norm_scale * radius_over_distance",
                                          "rsqrt(", "GetGGXVisibility"};
-    for (size_t f = 0; f < sizeof files / sizeof files[0]; ++f) {
-        char path[4096];
-        snprintf(path, sizeof path, "%s/%s", GTLAB_SOURCE_DIR, files[f]);
-        char *text = read_text(path);
-        CHECK_MSG(text != NULL, "%s", path);
-        for (size_t p = 0; text && p < sizeof prints / sizeof prints[0]; ++p)
-            CHECK_MSG(strstr(text, prints[p]) == NULL, "%s spells '%s'", files[f], prints[p]);
-        free(text);
-    }
+    check_no_file_spells(files, sizeof files / sizeof files[0], prints, sizeof prints / sizeof prints[0]);
 }
 
 int main(void)
