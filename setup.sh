@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Sets up a fresh Debian 12 machine for gtlab: installs the Debian packages it
 # builds against, then configures and builds into ./build (Release with debug
-# info). Safe to run again.
+# info). Safe to run again. clang, its libFuzzer runtime (libclang-rt-14-dev),
+# its OpenMP (libomp-dev) and LLVM's tools (llvm) are for the fuzz build and
+# the recursion audit (tests/fuzz, tests/audit).
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -10,6 +12,7 @@ packages=(
   libembree-dev libopenexr-dev libopenimageio-dev openimageio-tools
   libceres-dev libeigen3-dev libtinygltf-dev libstb-dev nlohmann-json3-dev libcjson-dev python3-imath
   libssl-dev assimp-testmodels gnuplot-nox glslang-tools
+  clang libclang-rt-14-dev libomp-dev llvm
 )
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }

@@ -28,6 +28,16 @@
 /* Largest image accepted on read, in pixels: a corrupt header must not make
  * us allocate terabytes. */
 #define EXR_MAX_PIXELS ((int64_t)1 << 28)
+/* ... and all its channels together, in floats (4 GiB): a header of a few
+ * KB must not claim twenty channels of 2^28 pixels. The fuzz build lowers
+ * it (libFuzzer's convention FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION), so
+ * that inputs claiming the maximum do not spend the fuzzer's time and memory
+ * on zeros; the code that checks it is the same. */
+#ifdef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION
+#define EXR_MAX_FLOATS ((int64_t)1 << 24)
+#else
+#define EXR_MAX_FLOATS ((int64_t)1 << 30)
+#endif
 
 /* OpenEXR reports problems through a callback, whose default prints to
  * stderr; library code must not print. The callback gets no pointer of ours
@@ -324,6 +334,13 @@ static int add_channels(exr_const_context_t ctxt, image *img, const char *path, 
     return 0;
 }
 
+/* The number of channels of part 0 (0 when the list cannot be read). */
+static int64_t channel_count(exr_const_context_t ctxt)
+{
+    const exr_attr_chlist_t *list = NULL;
+    return exr_get_channels(ctxt, 0, &list) == EXR_ERR_SUCCESS && list ? list->num_channels : 0;
+}
+
 /* Reads part 0 of an open file into img (which it initialises). */
 static int read_part(exr_const_context_t ctxt, const char *path, image *img, gt_error *e)
 {
@@ -345,6 +362,13 @@ static int read_part(exr_const_context_t ctxt, const char *path, image *img, gt_
     if (data_width <= 0 || data_height <= 0 || data_width * data_height > EXR_MAX_PIXELS)
         return gt_error_set(e, path, "unsupported EXR data window of %lld x %lld pixels", (long long)data_width,
                             (long long)data_height);
+    /* The image, and the largest decoded chunk (within the data window). */
+    const int64_t channels = channel_count(ctxt);
+    if (channels * width * height > EXR_MAX_FLOATS || channels * data_width * data_height > EXR_MAX_FLOATS)
+        return gt_error_set(e, path, "EXR image of %lld x %lld pixels (data window %lld x %lld) and %lld channels "
+                            "is larger than gtlab reads (%lld floats)", (long long)width, (long long)height,
+                            (long long)data_width, (long long)data_height, (long long)channels,
+                            (long long)EXR_MAX_FLOATS);
     if (image_init(img, (int)width, (int)height) != 0)
         return gt_error_set(e, path, "out of memory");
     if (add_channels(ctxt, img, path, e) != 0 || read_string_attributes(ctxt, img, path, e) != 0)
@@ -359,13 +383,14 @@ static int read_part(exr_const_context_t ctxt, const char *path, image *img, gt_
     return 0;
 }
 
-int exr_read(const char *path, image *img, gt_error *e)
+/* Reads the file OpenEXR opens with `init` (from its path, or through
+ * init's read functions) into img. */
+static int read_with(const exr_context_initializer_t *init, const char *path, image *img, gt_error *e)
 {
     memset(img, 0, sizeof *img);
     exr_message[0] = '\0';
-    exr_context_initializer_t init = quiet_initializer();
     exr_context_t ctxt = NULL;
-    exr_result_t rv = exr_start_read(&ctxt, path, &init);
+    exr_result_t rv = exr_start_read(&ctxt, path, init);
     if (rv != EXR_ERR_SUCCESS) {
         exr_finish(&ctxt);
         return exr_error(e, path, rv == EXR_ERR_FILE_ACCESS ? "cannot open" : "not a readable EXR file", rv);
@@ -377,4 +402,46 @@ int exr_read(const char *path, image *img, gt_error *e)
     if (result != 0)
         image_free(img);
     return result;
+}
+
+int exr_read(const char *path, image *img, gt_error *e)
+{
+    exr_context_initializer_t init = quiet_initializer();
+    return read_with(&init, path, img, e);
+}
+
+/* ------------------------------------------------------- reading memory */
+
+typedef struct {
+    const unsigned char *bytes;
+    size_t size;
+} exr_memory;
+
+/* OpenEXR's read callback (pread semantics): a short count at the end. */
+static int64_t memory_read(exr_const_context_t ctxt, void *user_data, void *buffer, uint64_t size, uint64_t offset,
+                           exr_stream_error_func_ptr_t error_cb)
+{
+    (void)ctxt, (void)error_cb;
+    const exr_memory *m = user_data;
+    if (offset >= m->size)
+        return 0;
+    const uint64_t n = size < m->size - offset ? size : m->size - offset;
+    memcpy(buffer, m->bytes + offset, (size_t)n);
+    return (int64_t)n;
+}
+
+static int64_t memory_size(exr_const_context_t ctxt, void *user_data)
+{
+    (void)ctxt;
+    return (int64_t)((const exr_memory *)user_data)->size;
+}
+
+int exr_read_memory(const void *bytes, size_t size, const char *name, image *img, gt_error *e)
+{
+    exr_memory m = {bytes, size};
+    exr_context_initializer_t init = quiet_initializer();
+    init.user_data = &m;
+    init.read_fn = memory_read;
+    init.size_fn = memory_size;
+    return read_with(&init, name, img, e);
 }

@@ -16,5 +16,8 @@ int exr_write(const char *path, const image *img, gt_error *e);
  * attribute of the first part. Scanline and tiled files. Returns 0, or -1 with
  * e = "<path>: <problem>" (missing file, not an EXR, truncated, ...). */
 int exr_read(const char *path, image *img, gt_error *e);
+/* The same from a file's bytes in memory; `name` stands for the file in
+ * messages. */
+int exr_read_memory(const void *bytes, size_t size, const char *name, image *img, gt_error *e);
 
 #endif

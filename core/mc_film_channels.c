@@ -189,6 +189,22 @@ static double count_of(const float *hi, const float *lo, size_t p)
     return whole ? n : -1.0;
 }
 
+/* The exponent E of "name:E" at text: an optional sign and digits, ended by
+ * a space or the end, within [-64, 64]. Returns 0, or -1 (no overflow: at
+ * most three digits are read). */
+static int exponent_at(const char *text, int *out)
+{
+    const int negative = *text == '-';
+    const char *p = text + (negative || *text == '+');
+    int v = 0, digits = 0;
+    for (; *p >= '0' && *p <= '9' && digits < 3; ++p, ++digits)
+        v = 10 * v + (*p - '0');
+    if (digits == 0 || (*p != ' ' && *p != '\0') || v > 64)
+        return -1;
+    *out = negative ? -v : v;
+    return 0;
+}
+
 /* Restores each quantity's scale exponent from the header ("name:E ..."). */
 static int read_exponents(const image *img, const char *what, mc_quantity *quantities, int count, gt_error *e)
 {
@@ -201,7 +217,7 @@ static int read_exponents(const image *img, const char *what, mc_quantity *quant
         int found = 0;
         while ((at = strstr(at, quantities[q].name)) != NULL) {
             int starts_token = at == text || at[-1] == ' ';
-            if (starts_token && at[len] == ':' && sscanf(at + len + 1, "%d", &quantities[q].scale_exponent) == 1) {
+            if (starts_token && at[len] == ':' && exponent_at(at + len + 1, &quantities[q].scale_exponent) == 0) {
                 found = 1;
                 break;
             }

@@ -9,8 +9,9 @@ int parse_whole_in(const char *subject, const char *text, long lo, long hi, long
     char *end;
     errno = 0;
     long v = strtol(text, &end, 10);
+    gt_quoted q;
     if (errno || end == text || *end != '\0')
-        return gt_error_set(e, subject, "'%s' is not a whole number", text);
+        return gt_error_set(e, subject, "'%s' is not a whole number", gt_quote(text, &q));
     if (v < lo || v > hi)
         return gt_error_set(e, subject, "%ld is out of range [%ld, %ld]", v, lo, hi);
     *out = v;
@@ -22,8 +23,9 @@ int parse_real_in(const char *subject, const char *text, double lo, double hi, d
     char *end;
     errno = 0;
     double v = strtod(text, &end);
+    gt_quoted q;
     if (errno || end == text || *end != '\0' || !isfinite(v))
-        return gt_error_set(e, subject, "'%s' is not a number", text);
+        return gt_error_set(e, subject, "'%s' is not a number", gt_quote(text, &q));
     if (v < lo || v > hi)
         return gt_error_set(e, subject, "%g is out of range [%g, %g]", v, lo, hi);
     *out = v;

@@ -39,8 +39,9 @@ int schema_get_int(const image *img, const char *key, const char *what, long *va
     char *end;
     errno = 0;
     long v = strtol(text, &end, 10);
+    gt_quoted q;
     if (end == text || *end != '\0' || errno != 0)
-        return gt_error_set(e, what, "header attribute %s is not an integer: '%s'", key, text);
+        return gt_error_set(e, what, "header attribute %s is not an integer: '%s'", key, gt_quote(text, &q));
     *value = v;
     return 1;
 }
@@ -52,8 +53,9 @@ int schema_get_real(const image *img, const char *key, const char *what, double 
         return 0;
     char *end;
     double v = strtod(text, &end);
+    gt_quoted q;
     if (end == text || *end != '\0' || !isfinite(v))
-        return gt_error_set(e, what, "header attribute %s is not a finite number: '%s'", key, text);
+        return gt_error_set(e, what, "header attribute %s is not a finite number: '%s'", key, gt_quote(text, &q));
     *value = v;
     return 1;
 }

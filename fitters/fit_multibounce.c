@@ -29,8 +29,9 @@ int multibounce_data_scene(multibounce_data *d, const char *name, gt_error *e)
     for (int i = 0; i < d->scene_count; ++i)
         if (strcmp(d->scenes[i], name) == 0)
             return i;
+    gt_quoted q;
     if (d->scene_count == MBFIT_MAX_SCENES)
-        return gt_error_set(e, name, "more than %d scenes", MBFIT_MAX_SCENES);
+        return gt_error_set(e, gt_quote(name, &q), "more than %d scenes", MBFIT_MAX_SCENES);
     snprintf(d->scenes[d->scene_count], MBFIT_NAME_MAX, "%s", name);
     return d->scene_count++;
 }
@@ -133,17 +134,19 @@ static int parse_albedo_list(const char *text, const char *path, char tokens[][3
             break;
         size_t n = strcspn(p, " ");
         char *end;
+        gt_quoted q;
         if (*count == MBFIT_MAX_ALBEDOS || n >= 32)
-            return gt_error_set(e, path, "gtlab.albedos '%s' is not a list of albedos", text);
+            return gt_error_set(e, path, "%s '%s' is not a list of albedos", ATTR_ALBEDOS, gt_quote(text, &q));
         memcpy(tokens[*count], p, n);
         tokens[*count][n] = '\0';
         albedos[*count] = strtof(tokens[*count], &end);
         if (*end != '\0' || !(albedos[*count] >= 0.0f && albedos[*count] <= 1.0f))
-            return gt_error_set(e, path, "gtlab.albedos '%s' is not a list of albedos in [0, 1]", text);
+            return gt_error_set(e, path, "%s '%s' is not a list of albedos in [0, 1]", ATTR_ALBEDOS,
+                                gt_quote(text, &q));
         ++*count;
         p += n;
     }
-    return *count ? 0 : gt_error_set(e, path, "gtlab.albedos is empty");
+    return *count ? 0 : gt_error_set(e, path, "%s is empty", ATTR_ALBEDOS);
 }
 
 static int check_header(multibounce_data *d, const image *img, const char *path, gt_error *e)
@@ -151,15 +154,18 @@ static int check_header(multibounce_data *d, const image *img, const char *path,
     const char *quantity = image_get_attribute(img, ATTR_QUANTITY);
     const char *albedos = image_get_attribute(img, ATTR_ALBEDOS);
     const char *bounces = image_get_attribute(img, ATTR_BOUNCES);
+    gt_quoted q;
     if (!quantity || strcmp(quantity, "multibounce") != 0 || !albedos || !bounces)
         return gt_error_set(e, path, "no multibounce channels (not made by 'gtlab render multibounce'%s%s)",
-                            quantity ? "; it holds " : "", quantity ? quantity : "");
+                            quantity ? "; it holds " : "", quantity ? gt_quote(quantity, &q) : "");
     if (strcmp(albedos, "scene") == 0)
         return gt_error_set(e, path, "coloured render (--albedo scene); the fit needs grey albedos "
                                      "(--albedo 0.1,0.2,...)");
+    if (strlen(bounces) >= sizeof d->bounces)
+        return gt_error_set(e, path, "%s '%s' is not a bounce count", ATTR_BOUNCES, gt_quote(bounces, &q));
     if (d->bounces[0] && strcmp(d->bounces, bounces) != 0)
-        return gt_error_set(e, path, "rendered with --bounces %s, but %s with --bounces %s", bounces, d->files[0],
-                            d->bounces);
+        return gt_error_set(e, path, "rendered with --bounces %s, but %s with --bounces %s", gt_quote(bounces, &q),
+                            d->files[0], d->bounces);
     snprintf(d->bounces, sizeof d->bounces, "%s", bounces);
     return 0;
 }

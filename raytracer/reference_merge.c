@@ -7,35 +7,8 @@
 
 #include "core/mc_film.h"
 #include "raytracer/reference_quantity.h"
+#include "raytracer/sample_blocks.h"
 #include "core/reference_schema.h"
-
-typedef struct {
-    uint32_t seed;
-    uint64_t begin, end;
-} sample_block;
-
-enum { MAX_BLOCKS = 1024 };
-
-/* Parses "seed:offset+count ..." into blocks; returns their number or -1. */
-static int parse_blocks(const char *text, sample_block *blocks, int capacity)
-{
-    int n = 0;
-    while (text && *text) {
-        unsigned long seed;
-        unsigned long long offset, count;
-        int used;
-        if (sscanf(text, " %lu:%llu+%llu%n", &seed, &offset, &count, &used) != 3 || n >= capacity)
-            return -1;
-        blocks[n].seed = (uint32_t)seed;
-        blocks[n].begin = offset;
-        blocks[n].end = offset + count;
-        ++n;
-        text += used;
-        while (*text == ' ')
-            ++text;
-    }
-    return n;
-}
 
 static int blocks_overlap(const sample_block *a, const sample_block *b)
 {
@@ -83,26 +56,35 @@ static int check_compatible(const image *first, const image *other, const char *
     return 0;
 }
 
-/* Adds the input's blocks to the list, refusing any that overlaps: those
+/* Adds one block to the list, refusing it if it overlaps one there: those
  * samples would be counted twice. */
+static int add_block(const sample_block *b, const char *name, sample_block *all, int *count, gt_error *e)
+{
+    for (int j = 0; j < *count; ++j)
+        if (blocks_overlap(b, &all[j]))
+            return gt_error_set(e, name,
+                                "samples %" PRIu64 "..%" PRIu64 " of seed %" PRIu32
+                                " are already in an earlier input: they would be counted twice",
+                                b->begin, b->end - 1, b->seed);
+    if (*count >= SAMPLE_BLOCKS_MAX)
+        return gt_error_set(e, name, "too many sample blocks");
+    all[(*count)++] = *b;
+    return 0;
+}
+
+/* Adds the input's blocks (its header attribute, read by
+ * raytracer/sample_blocks.h) to the list. */
 static int add_blocks(const image *img, const char *name, sample_block *all, int *count, gt_error *e)
 {
-    sample_block mine[MAX_BLOCKS];
-    int n = parse_blocks(image_get_attribute(img, ATTR_BLOCKS), mine, MAX_BLOCKS);
-    if (n <= 0)
-        return gt_error_set(e, name, "header attribute %s is missing or malformed", ATTR_BLOCKS);
-    for (int i = 0; i < n; ++i) {
-        for (int j = 0; j < *count; ++j)
-            if (blocks_overlap(&mine[i], &all[j]))
-                return gt_error_set(e, name,
-                                    "samples %" PRIu64 "..%" PRIu64 " of seed %" PRIu32
-                                    " are already in an earlier input: they would be counted twice",
-                                    mine[i].begin, mine[i].end - 1, mine[i].seed);
-        if (*count >= MAX_BLOCKS)
-            return gt_error_set(e, name, "too many sample blocks");
-        all[(*count)++] = mine[i];
-    }
-    return 0;
+    sample_block *mine = malloc(sizeof *mine * SAMPLE_BLOCKS_MAX);
+    int n = 0;
+    if (!mine)
+        return gt_error_set(e, name, "out of memory");
+    int rc = sample_blocks_parse(image_get_attribute(img, ATTR_BLOCKS), name, mine, SAMPLE_BLOCKS_MAX, &n, e);
+    for (int i = 0; rc == 0 && i < n; ++i)
+        rc = add_block(&mine[i], name, all, count, e);
+    free(mine);
+    return rc;
 }
 
 /* Channels that the film writes and so must not be copied from the input. */
@@ -142,17 +124,16 @@ static int write_merged(const image *first, const mc_film *film, const sample_bl
     for (int a = 0; a < first->attribute_count; ++a)
         if (image_set_attribute(out, first->attributes[a].key, first->attributes[a].value) != 0)
             return -1;
-    char text[MAX_BLOCKS * 40] = "";
+    /* At most 1024 blocks of at most 2^32 samples: the total fits. */
     uint64_t spp = 0;
-    size_t len = 0;
-    for (int i = 0; i < block_count; ++i) {
-        len += (size_t)snprintf(text + len, sizeof text - len, "%s%" PRIu32 ":%" PRIu64 "+%" PRIu64, i ? " " : "",
-                                blocks[i].seed, blocks[i].begin, blocks[i].end - blocks[i].begin);
+    for (int i = 0; i < block_count; ++i)
         spp += blocks[i].end - blocks[i].begin;
-    }
     char spp_text[32];
     snprintf(spp_text, sizeof spp_text, "%" PRIu64, spp);
-    return image_set_attribute(out, ATTR_BLOCKS, text) | image_set_attribute(out, ATTR_SPP, spp_text);
+    char *text = sample_blocks_format(blocks, block_count);
+    int rc = text ? image_set_attribute(out, ATTR_BLOCKS, text) | image_set_attribute(out, ATTR_SPP, spp_text) : -1;
+    free(text);
+    return rc;
 }
 
 int reference_merge(const image *inputs, const char *const *names, int count, image *out, gt_error *e)
@@ -160,7 +141,7 @@ int reference_merge(const image *inputs, const char *const *names, int count, im
     memset(out, 0, sizeof *out);
     if (count < 1)
         return gt_error_set(e, "merge", "no inputs");
-    sample_block *blocks = malloc(sizeof *blocks * MAX_BLOCKS);
+    sample_block *blocks = malloc(sizeof *blocks * SAMPLE_BLOCKS_MAX);
     mc_film total;
     if (!blocks)
         return gt_error_set(e, "merge", "out of memory");

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "core/atomic_file.h"
+#include "core/json_check.h"
 #include "core/hemisphere_sampling.h"
 
 static const float degrees_per_radian = (float)(180.0 / M_PI);
@@ -94,13 +95,9 @@ static int read_size(const cJSON *root, const char *key, int *out, const char *w
     return 0;
 }
 
-int camera_parse_json(const char *text, const char *what, camera *cam, gt_error *e)
+/* The camera of a cJSON object. */
+static int camera_from_json(const cJSON *root, const char *what, camera *cam, gt_error *e)
 {
-    cJSON *root = cJSON_Parse(text);
-    if (!root || !cJSON_IsObject(root)) {
-        cJSON_Delete(root);
-        return gt_error_set(e, what, "not a JSON object (camera JSON expected)");
-    }
     camera c;
     c.up = v3(0.0f, 1.0f, 0.0f);
     double yfov_deg = 0.0;
@@ -115,7 +112,6 @@ int camera_parse_json(const char *text, const char *what, camera *cam, gt_error 
         rc = read_size(root, "width", &c.width, what, e);
     if (rc == 0)
         rc = read_size(root, "height", &c.height, what, e);
-    cJSON_Delete(root);
     if (rc != 0)
         return rc;
     c.yfov = (float)yfov_deg / degrees_per_radian;
@@ -125,19 +121,60 @@ int camera_parse_json(const char *text, const char *what, camera *cam, gt_error 
     return 0;
 }
 
+/* text[0, length) has passed the JSON gate and text[length] is a NUL. */
+static int camera_parse_checked(const char *text, size_t length, const char *what, camera *cam, gt_error *e)
+{
+    const size_t bom = json_bom_length(text, length);
+    /* With the NUL in the length, as cJSON wants for require_null_terminated. */
+    cJSON *root = cJSON_ParseWithLengthOpts(text + bom, length - bom + 1, NULL, 1);
+    int rc = root && cJSON_IsObject(root) ? camera_from_json(root, what, cam, e)
+                                          : gt_error_set(e, what, "not a JSON object (camera JSON expected)");
+    cJSON_Delete(root);
+    return rc;
+}
+
+int camera_parse_json_bytes(const char *text, size_t length, const char *what, camera *cam, gt_error *e)
+{
+    if (json_check(text, length, json_limits_cjson, what, e) != 0)
+        return -1;
+    char *copy = malloc(length + 1);
+    if (!copy)
+        return gt_error_set(e, what, "out of memory");
+    memcpy(copy, text, length);
+    copy[length] = '\0';
+    int rc = camera_parse_checked(copy, length, what, cam, e);
+    free(copy);
+    return rc;
+}
+
+int camera_parse_json(const char *text, const char *what, camera *cam, gt_error *e)
+{
+    const size_t length = strlen(text);
+    if (json_check(text, length, json_limits_cjson, what, e) != 0)
+        return -1;
+    return camera_parse_checked(text, length, what, cam, e);
+}
+
 int camera_read_json(const char *path, camera *cam, gt_error *e)
 {
     FILE *f = fopen(path, "rb");
     if (!f)
         return gt_error_set(e, path, "cannot open: %s", strerror(errno));
-    char text[65536];
-    size_t n = fread(text, 1, sizeof text - 1, f);
+    enum { max_size = 65536 };
+    char *text = malloc(max_size);
+    if (!text) {
+        fclose(f);
+        return gt_error_set(e, path, "out of memory");
+    }
+    size_t n = fread(text, 1, max_size - 1, f);
     int too_long = !feof(f);
     fclose(f);
-    if (too_long)
-        return gt_error_set(e, path, "camera JSON larger than 64 KiB");
     text[n] = '\0';
-    return camera_parse_json(text, path, cam, e);
+    /* All n bytes: a NUL inside the file is an error, not the end. */
+    int rc = too_long ? gt_error_set(e, path, "camera JSON larger than 64 KiB")
+                      : camera_parse_json_bytes(text, n, path, cam, e);
+    free(text);
+    return rc;
 }
 
 static cJSON *vec3_json(vec3 v)

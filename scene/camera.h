@@ -4,6 +4,8 @@
 #ifndef GTLAB_SCENE_CAMERA_H
 #define GTLAB_SCENE_CAMERA_H
 
+#include <stddef.h>
+
 #include "core/error.h"
 #include "core/vec3.h"
 
@@ -36,6 +38,10 @@ float camera_depth(const camera_view *view, vec3 p);
  * "up" defaults to [0,1,0]. Errors name the file and the bad key. */
 int camera_read_json(const char *path, camera *cam, gt_error *e);
 int camera_parse_json(const char *text, const char *what, camera *cam, gt_error *e);
+/* The same for text[0, length), which need not end in a NUL (a NUL inside
+ * is an error). Every camera JSON passes the JSON gate (core/json_check.h)
+ * before cJSON parses it. */
+int camera_parse_json_bytes(const char *text, size_t length, const char *what, camera *cam, gt_error *e);
 /* The JSON text (malloc'd, free()) and an atomic write of it. */
 char *camera_to_json(const camera *cam);
 int camera_write_json(const char *path, const camera *cam, gt_error *e);

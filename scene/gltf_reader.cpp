@@ -10,6 +10,8 @@
  * Reference: the glTF 2.0 specification (Khronos, version 2.0.1), sections
  * "Nodes and Hierarchy", "Transformations", "Accessors", "Meshes",
  * "Materials", "Cameras" and "GLB File Format Specification". */
+#include <nlohmann/json.hpp>
+#include <stb/stb_image.h>
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -27,6 +29,8 @@
 #include <vector>
 
 extern "C" {
+#include "core/json_check.h"
+#include "scene/glb_container.h"
 #include "scene/gltf_reader.h"
 }
 
@@ -121,6 +125,31 @@ bool mat4_is_finite(const Mat4 &a)
 
 /* ------------------------------------------------------------ small helpers */
 
+/* Input that tinygltf quotes in its messages ("Got \"<type>\"") is cut to
+ * GT_QUOTE_MAX characters, as gtlab's own messages cut it (core/error.h), and
+ * so is any run of text without spaces. */
+std::string shorten_quotes(const std::string &text)
+{
+    std::string out;
+    size_t run = 0;        /* characters since the last space or quote */
+    bool quoted = false;   /* inside "..." */
+    bool cut = false;      /* the current run or quote has been cut */
+    for (char c : text) {
+        const bool boundary = c == '"' || (!quoted && c == ' ');
+        if (boundary) {
+            quoted = c == '"' ? !quoted : quoted;
+            run = 0, cut = false;
+        } else if ((c & 0xC0) != 0x80 && ++run > GT_QUOTE_MAX) {
+            if (!cut)
+                out += "...";
+            cut = true;
+        }
+        if (!cut || boundary)
+            out += c;
+    }
+    return out;
+}
+
 /* tinygltf's messages are multi-line and may quote a whole data: URI; the
  * CLI prints errors as one short line. */
 std::string one_line(const std::string &text)
@@ -143,18 +172,15 @@ std::string one_line(const std::string &text)
         if (end - begin > keep)
             out.replace(begin + keep, end - begin - keep, "...");
     }
-    return out;
+    return shorten_quotes(out);
 }
 
 /* A name from the file, fit for a one-line message: control characters
- * replaced, long names cut. */
-std::string printable(const std::string &name, size_t max_length = 100)
+ * replaced, long names cut (gt_quote). */
+std::string printable(const std::string &name)
 {
-    std::string out = name.substr(0, max_length);
-    for (char &c : out)
-        if (std::iscntrl((unsigned char)c))
-            c = '?';
-    return name.size() > max_length ? out + "..." : out;
+    gt_quoted q;
+    return gt_quote(name.c_str(), &q);
 }
 
 /* [offset, offset + length) lies inside [0, size), without overflow. */
@@ -265,6 +291,37 @@ int read_whole_file(const char *path, std::vector<unsigned char> &bytes, gt_erro
     return 0;
 }
 
+/* Largest texture side gtlab decodes: a crafted header cannot make the
+ * decoder allocate gigabytes for one image. (Lower in the fuzz build, see
+ * cmake/gtlab_fuzz.cmake, so that such headers cost the fuzzer no time.) */
+#ifdef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION
+const int max_texture_side = 1024;
+#else
+const int max_texture_side = 16384;
+#endif
+
+/* Whether the encoded image is one gtlab hands to stb_image: PNG or JPEG
+ * (the only image formats of core glTF 2.0, "Images"), of a sane size by its
+ * header. Otherwise *why says what it is not. */
+bool image_decodable(const unsigned char *bytes, int size, std::string *why)
+{
+    static const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    static const unsigned char jpeg[3] = {0xff, 0xd8, 0xff};
+    const bool is_png = size >= 8 && std::memcmp(bytes, png, 8) == 0;
+    const bool is_jpeg = size >= 3 && std::memcmp(bytes, jpeg, 3) == 0;
+    int width = 0, height = 0, components = 0;
+    if (!is_png && !is_jpeg)
+        *why = "is neither PNG nor JPEG";
+    else if (!stbi_info_from_memory(bytes, size, &width, &height, &components))
+        *why = std::string("has a broken ") + (is_png ? "PNG" : "JPEG") + " header";
+    else if (width > max_texture_side || height > max_texture_side)
+        *why = "is " + std::to_string(width) + "x" + std::to_string(height) + " pixels, larger than gtlab reads (" +
+               std::to_string(max_texture_side) + " per side)";
+    else
+        return true;
+    return false;
+}
+
 /* tinygltf's image callback. It runs while the model is parsed, after the
  * buffers and bufferViews: an image stored in a bufferView is checked to lie
  * inside its buffer (tinygltf does not check the extent), then decoded to
@@ -285,39 +342,126 @@ bool load_image(tinygltf::Image *image, const int index, std::string *err, std::
         }
     }
     std::string why;
-    if (!tinygltf::LoadImageData(image, index, &why, warn, req_width, req_height, bytes, size, nullptr))
+    if (!image_decodable(bytes, size, &why))
+        L->image_problem[index] = "cannot be decoded (it " + why + ")";
+    else if (!tinygltf::LoadImageData(image, index, &why, warn, req_width, req_height, bytes, size, nullptr))
         L->image_problem[index] = "cannot be decoded (" + one_line(why) + ")";
     return true;
 }
 
-int parse_file(Loader &L)
+/* The extensions that store data gtlab cannot decode (issue 30 adds the
+ * first three), with what they hold. */
+const std::map<std::string, const char *> &data_extensions()
 {
-    std::vector<unsigned char> bytes;
-    if (read_whole_file(L.path, bytes, L.e) != 0)
+    static const std::map<std::string, const char *> contents = {
+        {"KHR_draco_mesh_compression", "Draco-compressed meshes"},
+        {"EXT_meshopt_compression", "meshoptimizer-compressed buffers"},
+        {"KHR_mesh_quantization", "quantized vertex attributes"},
+        {"KHR_texture_basisu", "Basis Universal textures"},
+        {"EXT_texture_webp", "WebP textures"},
+    };
+    return contents;
+}
+
+/* An extension's name for a message, with what it holds when known. */
+std::string extension_with_content(const std::string &name)
+{
+    auto it = data_extensions().find(name);
+    return printable(name) + (it != data_extensions().end() ? std::string(" (") + it->second + ")" : "");
+}
+
+/* "the glTF extension A (what it holds)" or "the glTF extensions A, B and 2 more". */
+std::string extension_list(const std::vector<std::string> &names)
+{
+    const size_t shown = std::min<size_t>(names.size(), 3);
+    std::string out = names.size() > 1 ? "the glTF extensions " : "the glTF extension ";
+    for (size_t i = 0; i < shown; ++i)
+        out += (i ? ", " : "") + extension_with_content(names[i]);
+    if (names.size() > shown)
+        out += " and " + std::to_string(names.size() - shown) + " more";
+    return out;
+}
+
+/* gtlab reads no glTF extension yet: every required one refuses the file. */
+int refuse_required_extensions(Loader &L, const std::vector<std::string> &required)
+{
+    if (required.empty())
+        return 0;
+    return L.fail("requires %s, which gtlab does not support", extension_list(required).c_str());
+}
+
+/* The strings of the top-level array `key` of the JSON text, which
+ * json_check has accepted (so parsing cannot fail or recurse deeply). */
+std::vector<std::string> top_level_strings(const unsigned char *json, size_t length, const char *key)
+{
+    std::vector<std::string> names;
+    const nlohmann::json doc = nlohmann::json::parse(json, json + length, nullptr, false);
+    if (!doc.is_object())
+        return names;
+    auto it = doc.find(key);
+    if (it == doc.end() || !it->is_array())
+        return names;
+    for (const auto &v : *it)
+        if (v.is_string())
+            names.push_back(v.get<std::string>());
+    return names;
+}
+
+/* tinygltf refused the file. An unsupported required extension is the
+ * reason to give (tinygltf reports a Draco file as "accessor[0] invalid
+ * bufferView"); else its own message, naming any extension the file uses
+ * whose data gtlab cannot decode (it may be why). */
+int fail_tinygltf(Loader &L, bool binary, const unsigned char *json, size_t json_length, const std::string &err)
+{
+    if (refuse_required_extensions(L, top_level_strings(json, json_length, "extensionsRequired")) != 0)
         return -1;
-    const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    std::string reason = err.empty() ? "no reason given" : one_line(err);
+    std::vector<std::string> used = top_level_strings(json, json_length, "extensionsUsed");
+    used.erase(std::remove_if(used.begin(), used.end(),
+                              [](const std::string &name) { return data_extensions().count(name) == 0; }),
+               used.end());
+    if (!used.empty())
+        reason += "; the file uses " + extension_list(used) + ", which gtlab does not support";
+    return L.fail("%s: %s", binary ? "cannot load binary glTF" : "cannot load glTF", reason.c_str());
+}
+
+/* The JSON of the file (all of a .gltf, the JSON chunk of a .glb) must pass
+ * the JSON gate (core/json_check.h) before tinygltf's recursive parser sees
+ * it, and a GLB's chunks must lie inside the file. */
+int check_container(Loader &L, const unsigned char *bytes, size_t size, bool binary, const unsigned char **json,
+                    size_t *json_length)
+{
     if (!binary && has_extension(L.path, ".glb"))
         return L.fail("not a binary glTF file (no \"glTF\" magic; empty or truncated?)");
-    if (bytes.size() > UINT32_MAX)
+    if (size > UINT32_MAX)
         return L.fail("file too large for glTF (4 GiB or more)");
+    glb_chunks chunks = {bytes, nullptr, size, 0};
+    if (binary && glb_split(bytes, size, L.path, &chunks, L.e) != 0)
+        return -1;
+    *json = chunks.json;
+    *json_length = chunks.json_length;
+    return json_check(reinterpret_cast<const char *>(*json), *json_length, json_limits_gltf, L.path, L.e);
+}
 
+int parse_bytes(Loader &L, const unsigned char *bytes, size_t size, const std::string &base_dir)
+{
+    const bool binary = glb_has_magic(bytes, size);
+    const unsigned char *json = nullptr;
+    size_t json_length = 0;
+    if (check_container(L, bytes, size, binary, &json, &json_length) != 0)
+        return -1;
     tinygltf::TinyGLTF gltf;
     gltf.SetImageLoader(load_image, &L);
     std::string err, warn;
-    const std::string base_dir = directory_of(L.path);
-    const unsigned int size = (unsigned int)bytes.size();
-    bool ok = binary ? gltf.LoadBinaryFromMemory(&L.model, &err, &warn, bytes.data(), size, base_dir)
-                     : gltf.LoadASCIIFromString(&L.model, &err, &warn, reinterpret_cast<const char *>(bytes.data()),
-                                                size, base_dir);
+    const unsigned int n = (unsigned int)size;
+    bool ok = binary ? gltf.LoadBinaryFromMemory(&L.model, &err, &warn, bytes, n, base_dir)
+                     : gltf.LoadASCIIFromString(&L.model, &err, &warn, reinterpret_cast<const char *>(bytes), n,
+                                                base_dir);
     if (!ok)
-        return L.fail("%s: %s", binary ? "cannot load binary glTF" : "cannot load glTF",
-                      err.empty() ? "no reason given" : one_line(err).c_str());
+        return fail_tinygltf(L, binary, json, json_length, err);
     /* tinygltf's warnings are about images it could not read; those that
      * matter (images a material uses) are reported by convert_texture. */
-    if (!L.model.extensionsRequired.empty())
-        return L.fail("requires the glTF extension %s, which is not supported",
-                      printable(L.model.extensionsRequired[0]).c_str());
-    return 0;
+    return refuse_required_extensions(L, L.model.extensionsRequired);
 }
 
 /* The node graph must be a forest (glTF 2.0 "Nodes and Hierarchy": "the node hierarchy
@@ -905,33 +1049,57 @@ int flatten(Loader &L)
     return 0;
 }
 
-int load(Loader &L)
+int load(Loader &L, const unsigned char *bytes, size_t size, const std::string &base_dir)
 {
-    if (parse_file(L) != 0 || check_node_graph(L) != 0 || convert_materials(L) != 0 || flatten(L) != 0)
+    if (parse_bytes(L, bytes, size, base_dir) != 0 || check_node_graph(L) != 0 || convert_materials(L) != 0 ||
+        flatten(L) != 0)
         return -1;
     return scene_validate(L.s, L.path, L.e);
 }
 
+int load_guarded(const unsigned char *bytes, size_t size, const char *name, const std::string &base_dir, scene *s,
+                 gt_error *e)
+{
+    int rc;
+    try {
+        Loader L;
+        L.path = name;
+        L.e = e;
+        L.s = s;
+        const char *slash = std::strrchr(name, '/');
+        std::snprintf(s->name, sizeof s->name, "%s", slash ? slash + 1 : name);
+        rc = load(L, bytes, size, base_dir);
+    } catch (const std::bad_alloc &) {
+        rc = gt_error_set(e, name, "out of memory");
+    } catch (const std::exception &x) { /* tinygltf throws on some malformed input */
+        rc = gt_error_set(e, name, "cannot load glTF: malformed data (%s)", printable(x.what()).c_str());
+    }
+    return rc;
+}
+
 } // namespace
+
+extern "C" int gltf_load_memory(const void *bytes, size_t size, const char *name, const char *base_dir, scene *s,
+                                gt_error *e)
+{
+    std::memset(s, 0, sizeof *s);
+    int rc = load_guarded(static_cast<const unsigned char *>(bytes), size, name, base_dir ? base_dir : "", s, e);
+    if (rc != 0)
+        scene_free(s);
+    return rc;
+}
 
 extern "C" int gltf_load(const char *path, scene *s, gt_error *e)
 {
     std::memset(s, 0, sizeof *s);
     int rc;
     try {
-        Loader L;
-        L.path = path;
-        L.e = e;
-        L.s = s;
-        const char *slash = std::strrchr(path, '/');
-        std::snprintf(s->name, sizeof s->name, "%s", slash ? slash + 1 : path);
-        rc = load(L);
+        std::vector<unsigned char> bytes;
+        rc = read_whole_file(path, bytes, e);
+        if (rc == 0)
+            rc = gltf_load_memory(bytes.data(), bytes.size(), path, directory_of(path).c_str(), s, e);
     } catch (const std::bad_alloc &) {
         rc = gt_error_set(e, path, "out of memory");
-    } catch (const std::exception &x) { /* tinygltf throws on some malformed input */
-        rc = gt_error_set(e, path, "cannot load glTF: malformed data (%s)", x.what());
     }
-    if (rc != 0)
-        scene_free(s);
     return rc;
 }

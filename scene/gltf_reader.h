@@ -13,9 +13,16 @@
 #ifndef GTLAB_SCENE_GLTF_READER_H
 #define GTLAB_SCENE_GLTF_READER_H
 
+#include <stddef.h>
+
 #include "core/error.h"
 #include "scene/scene.h"
 
 int gltf_load(const char *path, scene *s, gt_error *e);
+/* The same from the file's bytes in memory: `name` stands for the file in
+ * messages (and ".glb" at its end asks for a binary file, as for a path);
+ * external buffers and images are looked up in base_dir. */
+int gltf_load_memory(const void *bytes, size_t size, const char *name, const char *base_dir, scene *s,
+                     gt_error *e);
 
 #endif

@@ -10,11 +10,23 @@ static float srgb_to_linear(float c)
 
 static int wrap(int i, int n) { return ((i % n) + n) % n; }
 
+/* A texture coordinate as the lookup takes it. Beyond 2^16, where REPEAT
+ * makes whole periods irrelevant, only its fraction is kept (exactly: the
+ * fraction of a float is a float), so pixel positions stay far inside int's
+ * range for any texture gtlab loads (16384 texels a side at most); a
+ * non-finite one (interpolated from huge ones) reads as 0. */
+static float lookup_coordinate(float u)
+{
+    if (!isfinite(u))
+        return 0.0f;
+    return fabsf(u) < 65536.0f ? u : u - floorf(u);
+}
+
 /* Bilinear lookup of channel values (0..1) with REPEAT wrapping; glTF uv (0,0)
  * is the top-left of the image, the first row stored. */
 static void texture_bilinear(const scene_texture *t, const float uv[2], float out[4])
 {
-    float x = uv[0] * (float)t->width - 0.5f, y = uv[1] * (float)t->height - 0.5f;
+    float x = lookup_coordinate(uv[0]) * (float)t->width - 0.5f, y = lookup_coordinate(uv[1]) * (float)t->height - 0.5f;
     float fx = floorf(x), fy = floorf(y);
     float wx = x - fx, wy = y - fy;
     int x0 = (int)fx, y0 = (int)fy;

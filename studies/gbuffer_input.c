@@ -56,6 +56,11 @@ int approx_load(const char *path, const char *camera_path, approx_input *in, gt_
     memset(in, 0, sizeof *in);
     if (exr_read(path, &in->img, e) != 0)
         return -1;
+    return approx_from_image(path, camera_path, in, e);
+}
+
+int approx_from_image(const char *path, const char *camera_path, approx_input *in, gt_error *e)
+{
     int rc = load_camera(path, camera_path, &in->img, &in->cam, e);
     if (rc == 0 && (in->cam.width != in->img.width || in->cam.height != in->img.height))
         rc = gt_error_set(e, camera_path ? camera_path : path, "camera is %dx%d but the G-buffer is %dx%d",

@@ -26,6 +26,9 @@ ss_camera approx_ss_camera(const camera *cam);
  * camera_path if given, else the header's gtlab.camera, else the sidecar
  * <path>.camera.json. Returns 0, or -1 with e naming the file at fault. */
 int approx_load(const char *path, const char *camera_path, approx_input *in, gt_error *e);
+/* The same for in->img, already read from `path`; in takes it over (and
+ * frees it on failure). */
+int approx_from_image(const char *path, const char *camera_path, approx_input *in, gt_error *e);
 void approx_input_free(approx_input *in);
 
 /* A fresh output image of the input's size holding mask.A and the header

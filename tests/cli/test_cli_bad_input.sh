@@ -83,7 +83,7 @@ expect_error normal-mode "--normal: 'bumpy'" "$out" -- render ao --scene builtin
 
 # Camera JSON.
 printf '{"position":[0,1,5],"target":[0,0' >"$work/cam-malformed.json"
-expect_error camera-malformed "cam-malformed.json: not a JSON object" "$out" -- render ao --scene builtin:plane --camera "$work/cam-malformed.json" -o "$out"
+expect_error camera-malformed "cam-malformed.json: JSON text ends early" "$out" -- render ao --scene builtin:plane --camera "$work/cam-malformed.json" -o "$out"
 printf '{"position":[0,1,5],"target":[0,0,0],"yfov_deg":45,"width":64}' >"$work/cam-no-height.json"
 expect_error camera-missing-key 'cam-no-height.json: camera JSON lacks "height"' "$out" -- render ao --scene builtin:plane --camera "$work/cam-no-height.json" -o "$out"
 printf '{"position":[0,1,5],"target":[0,1,5],"yfov_deg":45,"width":64,"height":64}' >"$work/cam-degenerate.json"

@@ -383,7 +383,7 @@ static void check_crafted_errors(void)
     const char *invalid = tmp_path("invalid-json.gltf");
     const char text[] = "{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [";
     CHECK(write_bytes(invalid, text, sizeof text - 1) == 0);
-    expect_error(invalid, "cannot load glTF");
+    expect_error(invalid, "JSON text ends early: an array or object is not closed at line 1, column 41");
 
     const char *not_array = tmp_path("scenes-not-objects.gltf");
     const char text2[] = "{\"asset\":{\"version\":\"2.0\"},\"scenes\":[1,2]}";
@@ -392,7 +392,7 @@ static void check_crafted_errors(void)
 
     const char *empty = tmp_path("empty.gltf");
     CHECK(write_bytes(empty, "", 0) == 0);
-    expect_error(empty, "cannot load glTF");
+    expect_error(empty, "JSON text ends where a value was expected");
 
     expect_error(tmp_path("does-not-exist.gltf"), "cannot open");
     expect_error(check_tmp_dir(), "cannot read");
@@ -478,7 +478,7 @@ static void check_glb(void)
         CHECK(printed[0] == '\0');
     }
     CHECK(all_failed);
-    expect_error(path, "cannot load binary glTF"); /* the last one, one byte short */
+    expect_error(path, "bytes but the file has"); /* the last one, one byte short: "(truncated?)" */
     free(glb);
 
     const char *json_as_glb = tmp_path("json.glb");

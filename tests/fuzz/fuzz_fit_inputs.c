@@ -1,0 +1,39 @@
+/* Fuzz target "fit_inputs": an EXR file (the input is its bytes) as each
+ * fit reads its inputs before fitting: a multi-bounce reference
+ * (`gtlab fit multibounce --data`, fitters/fit_multibounce.h), a
+ * specular-occlusion reference with its AO (`gtlab fit aperture`; here the
+ * same file is both, studies/specular_occlusion_inputs.h), and a G-buffer
+ * with its camera (`gtlab fit gtao-params` and `gtlab approx`,
+ * studies/gbuffer_input.h). The fits themselves run on what these accept. */
+#include "core/exr_io.h"
+#include "core/reference_schema.h"
+#include "fitters/aperture_fit.h"
+#include "fitters/fit_multibounce.h"
+#include "fuzz_target.h"
+#include "studies/gbuffer_input.h"
+#include "studies/specular_occlusion_inputs.h"
+
+static void read_as_fit_inputs(const image *img)
+{
+    gt_error e;
+    static multibounce_data d;
+    multibounce_data_init(&d);
+    (void)multibounce_data_add_image(&d, img, "fuzz.exr", &e);
+    multibounce_data_free(&d);
+    aperture_case c;
+    (void)aperture_case_from_images(&c, img, "fuzz.exr", img, "fuzz.exr", CH_SPECOCC, &e);
+    aperture_case_free(&c); /* it starts by clearing c: freeing after a failure is safe */
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    approx_input in;
+    gt_error e;
+    if (exr_read_memory(data, size, "/nonexistent-gtlab-fuzz/fuzz.exr", &in.img, &e) != 0)
+        return 0;
+    read_as_fit_inputs(&in.img);
+    /* approx_from_image takes the image over (and frees it on failure). */
+    if (approx_from_image("/nonexistent-gtlab-fuzz/fuzz.exr", NULL, &in, &e) == 0)
+        approx_input_free(&in);
+    return 0;
+}

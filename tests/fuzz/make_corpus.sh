@@ -1,0 +1,97 @@
+#!/usr/bin/env bash
+# Rebuilds the seed corpus of the fuzz targets (tests/fuzz/corpus/<target>/)
+# from gtlab itself and small hand-written files: usage
+#   tests/fuzz/make_corpus.sh build/cli/gtlab
+# Every seed is small (a few KB at most). The corpus is committed; run this
+# only to change it.
+set -euo pipefail
+gtlab=$(realpath "$1")
+here=$(cd "$(dirname "$0")" && pwd)
+corpus=$here/corpus
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+rm -rf "$corpus"
+mkdir -p "$corpus"/{json,camera,gltf,exr,merge,fit_inputs}
+
+# Renders at 4x4 pixels: every kind of EXR the fits and merge read.
+cd "$work"
+"$gtlab" render gbuffer --scene builtin:boxes --width 4 --height 4 -o g.exr >/dev/null
+"$gtlab" render ao --scene builtin:boxes --width 4 --height 4 --spp 4 -o ao.exr >/dev/null
+"$gtlab" render multibounce --scene builtin:corner --albedo 0.2,0.8 --width 4 --height 4 --spp 4 -o mb.exr >/dev/null
+"$gtlab" render specular-occlusion --scene builtin:boxes --roughness 0.5 --width 4 --height 4 --spp 4 -o so.exr >/dev/null
+oiiotool so.exr ao.exr --chappend -o so_ao.exr
+oiiotool g.exr -d half --tile 2 2 -o g_half_tiled.exr
+cp g.exr ao.exr mb.exr so.exr g_half_tiled.exr "$corpus/exr/"
+cp g.exr mb.exr so_ao.exr "$corpus/fit_inputs/"
+cp ao.camera.json "$corpus/camera/written.json"
+cp ao.camera.json "$corpus/json/camera.json"
+
+# glTF: a built-in scene as gtlab writes it, and hand-written files.
+"$gtlab" scene write plane -o "$corpus/gltf/plane.glb" >/dev/null
+# A triangle (three VEC3 floats each), base64 in a data: URI.
+triangle=AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA
+# A 1x1 RGBA PNG.
+png=iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mP8z8BQDwAEhQGAhKmMIQAAAABJRU5ErkJggg==
+cat >"$corpus/gltf/triangle.gltf" <<JSON
+{"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
+ "nodes":[{"children":[1],"translation":[1,0,0]},{"mesh":0,"rotation":[0,0,0.7071068,0.7071068],"scale":[2,2,2]}],
+ "meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1,"material":0}]}],
+ "materials":[{"pbrMetallicRoughness":{"baseColorFactor":[0.5,0.5,0.5,1],"baseColorTexture":{"index":0}}}],
+ "textures":[{"source":0}],"images":[{"uri":"data:image/png;base64,$png"}],
+ "buffers":[{"byteLength":42,"uri":"data:application/octet-stream;base64,${triangle}AAABAAIA"}],
+ "bufferViews":[{"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":6}],
+ "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},
+              {"bufferView":1,"componentType":5123,"count":3,"type":"SCALAR"}]}
+JSON
+cat >"$corpus/gltf/camera-matrix.gltf" <<JSON
+{"asset":{"version":"2.0"},"extensionsUsed":["KHR_materials_unlit"],
+ "nodes":[{"camera":0,"matrix":[1,0,0,0,0,1,0,0,0,0,1,0,0,1,5,1]},{"mesh":0}],
+ "cameras":[{"type":"perspective","perspective":{"yfov":0.8,"aspectRatio":1.5,"znear":0.1}}],
+ "meshes":[{"primitives":[{"attributes":{"POSITION":0,"NORMAL":0,"TEXCOORD_0":1},"mode":4}]}],
+ "buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,$triangle"}],
+ "bufferViews":[{"buffer":0,"byteLength":36,"byteStride":12}],
+ "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},
+              {"bufferView":0,"componentType":5126,"count":3,"type":"VEC2"}]}
+JSON
+cp "$corpus/gltf/triangle.gltf" "$corpus/json/gltf.json"
+# A GLB whose BIN chunk holds the triangle, its indices and the PNG texture.
+python3 - "$corpus/gltf/textured.glb" "$triangle" "$png" <<'PY'
+import base64, json, struct, sys
+positions, png = base64.b64decode(sys.argv[2]), base64.b64decode(sys.argv[3])
+texcoords = struct.pack("<6f", 0, 0, 1, 0, 0, 1)
+indices = struct.pack("<3H", 0, 1, 2) + b"\0\0"
+bin_ = positions + texcoords + indices + png
+bin_ += b"\0" * (-len(bin_) % 4)
+offsets = [0, 36, 60, 68]
+doc = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+       "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}, "indices": 2, "material": 0}]}],
+       "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0},
+                                               "metallicRoughnessTexture": {"index": 0}}}],
+       "textures": [{"source": 0}], "images": [{"bufferView": 3, "mimeType": "image/png"}],
+       "buffers": [{"byteLength": len(bin_)}],
+       "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 24},
+                       {"buffer": 0, "byteOffset": 60, "byteLength": 6}, {"buffer": 0, "byteOffset": 68, "byteLength": len(png)}],
+       "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                     {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC2"},
+                     {"bufferView": 2, "componentType": 5123, "count": 3, "type": "SCALAR"}]}
+text = json.dumps(doc, separators=(",", ":")).encode()
+text += b" " * (-len(text) % 4)
+glb = struct.pack("<4sII", b"glTF", 2, 12 + 8 + len(text) + 8 + len(bin_))
+glb += struct.pack("<II", len(text), 0x4E4F534A) + text + struct.pack("<II", len(bin_), 0x004E4942) + bin_
+open(sys.argv[1], "wb").write(glb)
+PY
+
+# JSON and camera JSON written by hand.
+printf '{"position":[0,1,5],"target":[0,0,0],"up":[0,1,0],"yfov_deg":45,"width":64,"height":48}' >"$corpus/camera/full.json"
+printf '\xef\xbb\xbf{"position":[1e1,-2.5E-1,0.0],"target":[0,0,0],"yfov_deg":30.5,"width":1,"height":65536}\n' >"$corpus/camera/bom.json"
+printf '[true,false,null,-0,1.5e300,"\\u00e9\\ud83d\\ude00\\n",{"a":{"b":[[]]}}]' >"$corpus/json/values.json"
+printf '{"k\xc3\xa9y":"\xe2\x82\xac\xf0\x9f\x98\x80","":[ 1 , 2 ]}\r\n' >"$corpus/json/utf8.json"
+
+# Merge edits (fuzz_merge.c).
+printf '' >"$corpus/merge/unchanged.txt"
+printf 'gtlab.sample_blocks=7:0+2 9:2+2\n--\ngtlab.sample_blocks=7:4+4\n' >"$corpus/merge/blocks.txt"
+printf -- '--\ngtlab.sample_blocks=7:2+4\n' >"$corpus/merge/overlap.txt"
+printf -- '-gtlab.scale_exponents\n--\n!spp.N\n' >"$corpus/merge/missing.txt"
+printf -- '@spp.N=3:1e9\n@ao.V.sum=0:nan\n--\ngtlab.scale_exponents=ao.V:99 bent.X:-3\ngtlab.quantity=gbuffer\n' >"$corpus/merge/values.txt"
+printf -- 'gtlab.sample_blocks=4294967295:18446744073709551615+18446744073709551615 1:2+3\n' >"$corpus/merge/huge.txt"
+ls -la "$corpus"/*
