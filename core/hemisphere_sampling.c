@@ -80,3 +80,16 @@ void sample_hemisphere_batch(const float *restrict u0, const float *restrict u1,
         uniform[k] = uniform_from_disc(x, y);
     }
 }
+
+#if defined(__x86_64__) && defined(__GNUC__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+void sample_cosine_hemisphere_batch(const float *restrict u0, const float *restrict u1, int count,
+                                    vec3 *restrict cosine)
+{
+    for (int k = 0; k < count; ++k) {
+        float x, y;
+        concentric_disc(u0[k], u1[k], &x, &y);
+        cosine[k] = cosine_from_disc(x, y);
+    }
+}

@@ -23,6 +23,11 @@ vec3 sample_uniform_hemisphere(const float u[2]);
 void sample_hemisphere_batch(const float *restrict u0, const float *restrict u1, int count, vec3 *restrict cosine,
                              vec3 *restrict uniform);
 
+/* Cosine-weighted directions only, for `count` points: the same values as
+ * sample_cosine_hemisphere. */
+void sample_cosine_hemisphere_batch(const float *restrict u0, const float *restrict u1, int count,
+                                    vec3 *restrict cosine);
+
 /* Shirley-Chiu concentric map of [0,1)^2 onto the unit disc. */
 void sample_concentric_disc(const float u[2], float *x, float *y);
 

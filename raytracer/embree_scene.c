@@ -87,7 +87,27 @@ static vec3 barycentric_vec3(const float *data, const uint32_t *tri, float u, fl
     return v3_add(v3_scale(a, 1.0f - u - v), v3_add(v3_scale(b, u), v3_scale(c, v)));
 }
 
-static void fill_surface(const embree_scene *es, const struct RTCRayHit *rh, vec3 d, surface_hit *hit)
+/* The shading normal interpolated from the vertices, unit, on ng's side (ng
+ * where the interpolation vanishes). */
+static vec3 shading_normal(const scene_mesh *m, const uint32_t *tri, float u, float v, vec3 ng)
+{
+    vec3 ns = barycentric_vec3(m->normals, tri, u, v);
+    float ns_len = v3_length(ns);
+    ns = ns_len > 0.0f ? v3_scale(ns, 1.0f / ns_len) : ng;
+    return v3_dot(ns, ng) < 0.0f ? v3_neg(ns) : ns;
+}
+
+static void texcoords(const scene_mesh *m, const uint32_t *tri, float u, float v, float uv[2])
+{
+    uv[0] = uv[1] = 0.0f;
+    if (!m->texcoords)
+        return;
+    const float *t0 = &m->texcoords[2 * tri[0]], *t1 = &m->texcoords[2 * tri[1]], *t2 = &m->texcoords[2 * tri[2]];
+    for (int k = 0; k < 2; ++k)
+        uv[k] = (1.0f - u - v) * t0[k] + u * t1[k] + v * t2[k];
+}
+
+void embree_surface_at(const embree_scene *es, const struct RTCRayHit *rh, unsigned parts, surface_hit *hit)
 {
     const scene_mesh *m = &es->source->meshes[rh->hit.geomID];
     const uint32_t *tri = &m->indices[3 * rh->hit.primID];
@@ -97,21 +117,13 @@ static void fill_surface(const embree_scene *es, const struct RTCRayHit *rh, vec
     hit->t = rh->ray.tfar;
     hit->p = barycentric_vec3(m->positions, tri, u, v);
     vec3 ng = v3_normalize(v3(rh->hit.Ng_x, rh->hit.Ng_y, rh->hit.Ng_z));
-    if (v3_dot(ng, d) > 0.0f)
+    if (v3_dot(ng, v3(rh->ray.dir_x, rh->ray.dir_y, rh->ray.dir_z)) > 0.0f)
         ng = v3_neg(ng);
-    vec3 ns = barycentric_vec3(m->normals, tri, u, v);
-    float ns_len = v3_length(ns);
-    ns = ns_len > 0.0f ? v3_scale(ns, 1.0f / ns_len) : ng;
-    if (v3_dot(ns, ng) < 0.0f)
-        ns = v3_neg(ns);
     hit->ng = ng;
-    hit->ns = ns;
+    hit->ns = parts & SURFACE_SHADING_NORMAL ? shading_normal(m, tri, u, v, ng) : ng;
     hit->uv[0] = hit->uv[1] = 0.0f;
-    if (m->texcoords) {
-        const float *t0 = &m->texcoords[2 * tri[0]], *t1 = &m->texcoords[2 * tri[1]], *t2 = &m->texcoords[2 * tri[2]];
-        for (int k = 0; k < 2; ++k)
-            hit->uv[k] = (1.0f - u - v) * t0[k] + u * t1[k] + v * t2[k];
-    }
+    if (parts & SURFACE_TEXCOORDS)
+        texcoords(m, tri, u, v, hit->uv);
 }
 
 int embree_closest_hit(const embree_scene *es, vec3 o, vec3 d, float t_max, surface_hit *hit)
@@ -125,8 +137,22 @@ int embree_closest_hit(const embree_scene *es, vec3 o, vec3 d, float t_max, surf
     rtcIntersect1(es->rtc, &context, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID)
         return 0;
-    fill_surface(es, &rh, d, hit);
+    embree_surface_at(es, &rh, SURFACE_ALL, hit);
     return 1;
+}
+
+void embree_closest_hit_stream(const embree_scene *es, struct RTCRayHit *rays, unsigned count)
+{
+    if (count == 0)
+        return;
+    for (unsigned i = 0; i < count; ++i) {
+        rays[i].hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rays[i].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    }
+    struct RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    rtcIntersect1M(es->rtc, &context, rays, count, sizeof(struct RTCRayHit));
 }
 
 vec3 offset_ray_origin(vec3 p, vec3 ng)

@@ -35,6 +35,19 @@ void embree_scene_release(embree_scene *es);
 /* Closest hit along o + t d, t in (0, t_max]. Returns 1 and fills hit, or 0. */
 int embree_closest_hit(const embree_scene *es, vec3 o, vec3 d, float t_max, surface_hit *hit);
 
+/* The parts of a surface_hit a caller may skip: embree_surface_at always
+ * fills p, ng, t, mesh and triangle, and ns and uv only when asked (else ns
+ * is ng and uv is 0). What it fills has the same bits as embree_closest_hit's. */
+enum { SURFACE_SHADING_NORMAL = 1u, SURFACE_TEXCOORDS = 2u, SURFACE_ALL = 3u };
+
+/* The surface of a hit that Embree found (rh->hit.geomID valid). */
+void embree_surface_at(const embree_scene *es, const struct RTCRayHit *rh, unsigned parts, surface_hit *hit);
+
+/* Closest hits of a stream of incoherent rays, in one Embree call
+ * (rtcIntersect1M): afterwards rays[i].hit.geomID is RTC_INVALID_GEOMETRY_ID
+ * where ray i found nothing. The rays' hit fields need no initialisation. */
+void embree_closest_hit_stream(const embree_scene *es, struct RTCRayHit *rays, unsigned count);
+
 /* The origin for rays leaving surface point p on the side of ng (unit, facing
  * the outgoing side): p pushed along ng by a distance proportional to p's
  * magnitude, above the rounding error of p, so no ray restarts below the
