@@ -323,8 +323,10 @@ static int add_channels(exr_const_context_t ctxt, image *img, const char *path, 
         return gt_error_set(e, path, "EXR file has no channels");
     for (int c = 0; c < list->num_channels; ++c) {
         const exr_attr_chlist_entry_t *entry = &list->entries[c];
+        gt_quoted q;
         if (entry->x_sampling != 1 || entry->y_sampling != 1)
-            return gt_error_set(e, path, "channel %s is subsampled, which is not supported", entry->name.str);
+            return gt_error_set(e, path, "channel %s is subsampled, which is not supported",
+                                gt_quote(entry->name.str, &q));
         if (strlen(entry->name.str) >= IMAGE_NAME_MAX)
             return gt_error_set(e, path, "channel name %.40s... is too long (at most %d characters)",
                                 entry->name.str, IMAGE_NAME_MAX - 1);
