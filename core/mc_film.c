@@ -16,11 +16,11 @@ int mc_film_init(mc_film *film, int width, int height, const mc_quantity *quanti
     film->quantity_count = quantity_count;
     size_t n = pixel_count(film) * (size_t)quantity_count;
     film->quantities = malloc(sizeof *quantities * (size_t)quantity_count);
-    film->sum = calloc(n, sizeof(double));
-    film->sum_even = calloc(n, sizeof(double));
+    film->sum = calloc(n, sizeof(int64_t));
+    film->sum_even = calloc(n, sizeof(int64_t));
     film->moments = calloc(n, sizeof(moment_sums)); /* all zero: cleared sums */
-    film->count = calloc(pixel_count(film), sizeof(uint32_t));
-    film->count_even = calloc(pixel_count(film), sizeof(uint32_t));
+    film->count = calloc(pixel_count(film), sizeof(uint64_t));
+    film->count_even = calloc(pixel_count(film), sizeof(uint64_t));
     film->has_moments = 1;
     if (!film->quantities || !film->sum || !film->sum_even || !film->moments || !film->count || !film->count_even) {
         mc_film_free(film);
@@ -54,14 +54,29 @@ int mc_film_normalize_layer(mc_film *film, const char *layer)
     return 0;
 }
 
-/* v rounded to the nearest multiple of the grid spacing `step` = 2^k, given
- * inverse_step = 2^-k. Multiplying by powers of two is exact, and rint rounds
- * to the nearest integer (ties to even). */
-static double round_to_grid(double v, double step, double inverse_step) { return rint(v * inverse_step) * step; }
+int64_t mc_grid_units(double v, const mc_grid *g)
+{
+    double units = rint(v * g->inverse_step); /* exact: a power of two, then ties to even */
+    return fabs(units) < 0x1p53 ? (int64_t)units : MC_GRID_SUM_UNKNOWN; /* a NaN fails the test */
+}
+
+int64_t mc_grid_sum_add(int64_t a, int64_t b)
+{
+    if (a == MC_GRID_SUM_UNKNOWN || b == MC_GRID_SUM_UNKNOWN)
+        return MC_GRID_SUM_UNKNOWN;
+    if ((b > 0 && a > INT64_MAX - b) || (b < 0 && a <= INT64_MIN - b))
+        return MC_GRID_SUM_UNKNOWN;
+    return a + b;
+}
+
+double mc_grid_sum_value(int64_t units, const mc_grid *g)
+{
+    return units == MC_GRID_SUM_UNKNOWN ? NAN : (double)units * g->step;
+}
 
 void mc_pixel_clear(mc_pixel *acc, const mc_film *film)
 {
-    size_t n = sizeof(double) * (size_t)film->quantity_count;
+    size_t n = sizeof(int64_t) * (size_t)film->quantity_count;
     memset(acc->sum, 0, n);
     memset(acc->sum_even, 0, n);
     for (int q = 0; q < film->quantity_count; ++q)
@@ -75,17 +90,17 @@ void mc_pixel_add_sample(mc_pixel *acc, const mc_film *film, uint32_t sample_ind
 }
 
 /* The grid sums of one quantity over a run of samples (sum, sum of the
- * even-indexed samples; the run's first sample is even iff first_even).
- * Every value is rounded onto the grid (exact IEEE arithmetic), so the sums
- * are exact whatever the order or the split into runs. In the usual case
- * (|v| < 2^25 grid steps) they are kept as integers in grid units, which
- * lets the compiler vectorise them (AVX2 where the CPU has it); otherwise as
- * doubles, scalar. Both give the same bits. */
+ * even-indexed samples; the run's first sample is even iff first_even), in
+ * grid units. Every value is rounded onto the grid (exact IEEE arithmetic),
+ * so the sums are exact whatever the order or the split into runs. In the
+ * usual case (|v| < 2^25 grid steps) the loop is plain integer sums, which
+ * the compiler vectorises (AVX2 where the CPU has it); otherwise each value
+ * is checked (mc_grid_units). Both give the same bits. */
 #if defined(__x86_64__) && defined(__GNUC__)
 __attribute__((target_clones("avx2", "default")))
 #endif
 static void sum_run(const float *restrict column, int count, int first_even, float peak, const mc_grid *g,
-                    double sums[2])
+                    int64_t sums[2])
 {
     const int odd_parity = first_even ? 1 : 0; /* k & 1 of the odd-indexed samples */
     if ((double)peak * g->inverse_step < 0x1p25) {
@@ -98,15 +113,14 @@ static void sum_run(const float *restrict column, int count, int first_even, flo
             sum += (int32_t)n;
             sum_even += (k & 1) == odd_parity ? 0 : (int32_t)n;
         }
-        sums[0] = (double)sum * g->step;
-        sums[1] = (double)sum_even * g->step;
+        sums[0] = sum, sums[1] = sum_even;
         return;
     }
-    sums[0] = sums[1] = 0.0;
+    sums[0] = sums[1] = 0;
     for (int k = 0; k < count; ++k) {
-        double v = round_to_grid(column[k], g->step, g->inverse_step);
-        sums[0] += v;
-        sums[1] += (k & 1) == odd_parity ? 0.0 : v;
+        int64_t units = mc_grid_units(column[k], g);
+        sums[0] = mc_grid_sum_add(sums[0], units);
+        sums[1] = (k & 1) == odd_parity ? sums[1] : mc_grid_sum_add(sums[1], units);
     }
 }
 
@@ -117,24 +131,24 @@ void mc_pixel_add_samples(mc_pixel *acc, const mc_film *film, uint32_t first_ind
     for (int q = 0; q < film->quantity_count; ++q) {
         const float *column = &values[q * stride];
         float peak = moment_sums_run_peak(column, count); /* a NaN compares above 2^25: the scalar path */
-        double sums[2];
+        int64_t sums[2];
         sum_run(column, count, first_even, peak, &film->grids[q], sums);
-        acc->sum[q] += sums[0];
-        acc->sum_even[q] += sums[1];
+        acc->sum[q] = mc_grid_sum_add(acc->sum[q], sums[0]);
+        acc->sum_even[q] = mc_grid_sum_add(acc->sum_even[q], sums[1]);
         moment_sums_add_run(&acc->moments[q], column, count, peak);
     }
-    acc->count += (uint32_t)count;
-    acc->count_even += (uint32_t)(first_even ? count + 1 : count) / 2;
+    acc->count += (uint64_t)count;
+    acc->count_even += (uint64_t)(first_even ? count + 1 : count) / 2;
 }
 
 /* sqrt(s^2 / n) with the unbiased sample variance s^2 of the moment sums
  * (a rounding below 0 is a variance of 0). */
-static double standard_error(const moment_sums *m, uint32_t n)
+static double standard_error(const moment_sums *m, uint64_t n)
 {
     if (n < 2)
         return INFINITY;
     double variance = moment_sums_variance(m, n);
-    return isnan(variance) ? NAN : sqrt(fmax(variance, 0.0) / n);
+    return isnan(variance) ? NAN : sqrt(fmax(variance, 0.0) / (double)n);
 }
 
 double mc_pixel_stderr(const mc_pixel *acc, int quantity)
@@ -147,8 +161,8 @@ void mc_film_add_pixel(mc_film *film, int pixel, const mc_pixel *acc)
     size_t np = pixel_count(film);
     for (int q = 0; q < film->quantity_count; ++q) {
         size_t i = (size_t)q * np + (size_t)pixel;
-        film->sum[i] += acc->sum[q];
-        film->sum_even[i] += acc->sum_even[q];
+        film->sum[i] = mc_grid_sum_add(film->sum[i], acc->sum[q]);
+        film->sum_even[i] = mc_grid_sum_add(film->sum_even[i], acc->sum_even[q]);
         moment_sums_merge(&film->moments[i], &acc->moments[q]);
     }
     film->count[pixel] += acc->count;
@@ -165,7 +179,7 @@ void mc_film_add_sample(mc_film *film, int pixel, uint32_t sample_index, const f
 
 double mc_film_mean(const mc_film *film, int quantity, int pixel)
 {
-    uint32_t n = film->count[pixel];
+    double n = (double)film->count[pixel];
     size_t i = (size_t)quantity * pixel_count(film) + (size_t)pixel;
     if (n == 0)
         return 0.0;
@@ -175,7 +189,7 @@ double mc_film_mean(const mc_film *film, int quantity, int pixel)
      * stays visible). */
     if (film->has_moments && isfinite(film->moments[i].peak))
         return moment_sums_total(&film->moments[i]) / n;
-    return film->sum[i] / n;
+    return mc_grid_sum_value(film->sum[i], &film->grids[quantity]) / n;
 }
 
 double mc_film_stderr(const mc_film *film, int quantity, int pixel)
@@ -217,13 +231,13 @@ int mc_film_merge(mc_film *dst, const mc_film *src, const char *what, gt_error *
     for (size_t p = 0; p < pixel_count(dst); ++p)
         if ((double)dst->count[p] + (double)src->count[p] > MC_FILM_MAX_COUNT)
             return gt_error_set(e, what,
-                                "pixel %zu would hold %.0f samples, more than %.0f (2^24), the range in which "
-                                "gtlab's files keep their sums exact: merge fewer parts into one file",
+                                "pixel %zu would hold %.0f samples, more than %.0f (2^32), the range in which "
+                                "gtlab keeps its sums exact: merge fewer parts into one file",
                                 p, (double)dst->count[p] + (double)src->count[p], MC_FILM_MAX_COUNT);
     size_t n = pixel_count(dst) * (size_t)dst->quantity_count;
     for (size_t i = 0; i < n; ++i) {
-        dst->sum[i] += src->sum[i];
-        dst->sum_even[i] += src->sum_even[i];
+        dst->sum[i] = mc_grid_sum_add(dst->sum[i], src->sum[i]);
+        dst->sum_even[i] = mc_grid_sum_add(dst->sum_even[i], src->sum_even[i]);
         moment_sums_merge(&dst->moments[i], &src->moments[i]);
     }
     for (size_t p = 0; p < pixel_count(dst); ++p) {

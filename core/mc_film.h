@@ -17,8 +17,12 @@
  * rest of the image is. (The grid served both until issue 23: squares below
  * the grid of squares 2^(2E-24) vanished, and dim pixels reported 0.)
  *
- * Exactness holds for up to 2^29 samples per pixel in memory, and up to 2^24
- * in the EXR file, where each sum or limb is kept as two floats (hi + lo).
+ * Every sum is a 64-bit integer (grid units, or the moment sums' limbs):
+ * exact for up to MC_FILM_MAX_COUNT = 2^32 samples per pixel, in memory and
+ * in the EXR file, where each is kept as two floats (hi + lo, 48 bits) and,
+ * when some pixel needs more, a third ("lo2", 72 bits). A grid sum that a
+ * sample's value could not keep exact (NaN, infinite, or beyond 2^53 grid
+ * steps) is unknown, MC_GRID_SUM_UNKNOWN, and so stays through every merge.
  *
  * Samples are also summed separately over even sample indices, so the two
  * halves of a render (even and odd samples) give the reference's noise floor.
@@ -33,12 +37,14 @@
 #include "core/moment_sums.h"
 
 #define MC_FILM_MAX_QUANTITIES 64
-/* The most samples a pixel may hold: 2^24. A sample adds up to 2^24 units
- * of its quantity's grid, and a file keeps each sum as two floats (hi + lo,
- * 48 bits): exact up to 2^48 units, so up to 2^24 samples at the grid's
- * top. Counts themselves are stored exactly to 2^32 (spp.N + spp.Nlo); a
- * merge beyond 2^24 is refused rather than rounded. */
-#define MC_FILM_MAX_COUNT 16777216.0
+/* The most samples a pixel may hold: 2^32. A sample adds at most 2^23 to a
+ * moment limb and at most 2^25 units to a grid sum in the usual case, so
+ * 2^32 samples stay within 2^63 (int64_t); counts are 64-bit integers, and
+ * in a file hi + lo floats (exact to 2^48). A merge beyond is refused rather
+ * than rounded. */
+#define MC_FILM_MAX_COUNT 4294967296.0
+/* A grid sum that is not a whole number of units below 2^63: see above. */
+#define MC_GRID_SUM_UNKNOWN INT64_MIN
 
 typedef struct {
     char name[IMAGE_NAME_MAX]; /* channel name of the mean, e.g. CH_AO (core/reference_schema.h) */
@@ -52,14 +58,22 @@ typedef struct {
     double step, inverse_step;
 } mc_grid;
 
+/* v in units of the grid, rounded to the nearest (ties to even); unknown
+ * when not finite or beyond 2^53 units. */
+int64_t mc_grid_units(double v, const mc_grid *g);
+/* a + b, unknown when either is or the sum would leave the int64 range. */
+int64_t mc_grid_sum_add(int64_t a, int64_t b);
+/* The value of a grid sum, NaN when unknown. */
+double mc_grid_sum_value(int64_t units, const mc_grid *g);
+
 typedef struct {
     int width, height;
     int quantity_count;
     mc_quantity *quantities;
     mc_grid grids[MC_FILM_MAX_QUANTITIES];
-    double *sum, *sum_even;          /* on the grid, [quantity * pixels + pixel] */
+    int64_t *sum, *sum_even;         /* in grid units, [quantity * pixels + pixel] */
     moment_sums *moments;            /* at the pixel's scale, [quantity * pixels + pixel] */
-    uint32_t *count, *count_even;    /* [pixel] */
+    uint64_t *count, *count_even;    /* [pixel] */
     /* 0 for a film read from a file written before issue 23 (its squares
      * were summed on the grid): means only, no standard errors, no merge. */
     int has_moments;
@@ -76,9 +90,9 @@ int mc_film_normalize_layer(mc_film *film, const char *layer);
 /* One pixel's sums while it is being sampled, kept together (and on the
  * stack) rather than scattered over the film's planes. */
 typedef struct {
-    double sum[MC_FILM_MAX_QUANTITIES], sum_even[MC_FILM_MAX_QUANTITIES];
+    int64_t sum[MC_FILM_MAX_QUANTITIES], sum_even[MC_FILM_MAX_QUANTITIES]; /* grid units */
     moment_sums moments[MC_FILM_MAX_QUANTITIES];
-    uint32_t count, count_even;
+    uint64_t count, count_even;
 } mc_pixel;
 
 void mc_pixel_clear(mc_pixel *acc, const mc_film *film);
@@ -111,7 +125,8 @@ double mc_film_stderr(const mc_film *film, int quantity, int pixel);
 /* Adds the channels "Q", "Q.stderr", the grid sums "Q.sum", "Q.sum_lo",
  * "Q.sumeven", "Q.sumeven_lo", and the moment sums "Q.peak" and
  * "Q.m<moment>_<limb>[lo]" (CH_SUFFIX_LIMB_FMT) of every quantity, and
- * CH_SPP, CH_SPP_EVEN; and the attributes ATTR_NORMALIZED and ATTR_EXPONENTS,
+ * CH_SPP, CH_SPP_EVEN with their lo parts; a sum's third part ("<lo>2",
+ * CH_SUFFIX_THIRD_PART) only when some pixel needs it; and the attributes ATTR_NORMALIZED and ATTR_EXPONENTS,
  * so a film read back accumulates on the same grid. Pixels with
  * mask[pixel] == 0 (background; mask may be NULL) get 0 in Q and Q.stderr. */
 int mc_film_write_channels(const mc_film *film, const float *mask, image *img);

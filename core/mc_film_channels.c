@@ -7,6 +7,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static size_t pixel_count(const mc_film *film) { return (size_t)film->width * (size_t)film->height; }
@@ -60,12 +61,69 @@ static void normalize_layers(const mc_film *film, image *img, int with_stderr)
     }
 }
 
-/* v as hi + lo floats: exact for an integer below 2^48 (hi keeps 24 bits,
- * the rest is an integer below 2^23). */
-static void split_hi_lo(double v, float *hi, float *lo)
+/* "<quantity>.<suffix>" into name. */
+static void suffixed_name(char name[2 * IMAGE_NAME_MAX], const char *quantity, const char *suffix)
 {
-    *hi = (float)v;
-    *lo = (float)(v - (double)*hi);
+    snprintf(name, 2 * IMAGE_NAME_MAX, "%.63s.%.63s", quantity, suffix);
+}
+
+/* Known sums and counts stay below 2^62 in magnitude (core/mc_film.h): a
+ * float of one converts back to an int64_t without overflow. */
+#define EXACT_LIMIT 0x1p62
+
+/* An integer v (|v| < 2^62) as three floats, hi + lo + lo2 = v exactly, hi
+ * the nearest float to v: each takes the next 24 bits of what is left. An
+ * unknown grid sum is NaN, 0, 0. */
+static void split_exact(int64_t v, float part[3])
+{
+    if (v == MC_GRID_SUM_UNKNOWN) {
+        part[0] = NAN, part[1] = part[2] = 0.0f;
+        return;
+    }
+    part[0] = (float)v;
+    int64_t rest = v - (int64_t)part[0];
+    part[1] = (float)rest;
+    part[2] = (float)(rest - (int64_t)part[1]);
+}
+
+/* Writes units[0 .. np) times `scale` (a power of two, so exact) as the
+ * channels hi_name and lo_name, and lo_name + CH_SUFFIX_THIRD_PART when
+ * some pixel needs a third float. */
+static int write_exact(image *img, const char *hi_name, const char *lo_name, const int64_t *units, size_t np,
+                       double scale)
+{
+    float *hi = image_add_channel(img, hi_name), *lo = image_add_channel(img, lo_name);
+    if (!hi || !lo)
+        return -1;
+    int needs_third = 0;
+    for (size_t p = 0; p < np; ++p) {
+        float part[3];
+        split_exact(units[p], part);
+        hi[p] = (float)(part[0] * scale), lo[p] = (float)(part[1] * scale);
+        needs_third |= part[2] != 0.0f;
+    }
+    if (!needs_third)
+        return 0;
+    char name[2 * IMAGE_NAME_MAX + 4];
+    snprintf(name, sizeof name, "%s%s", lo_name, CH_SUFFIX_THIRD_PART);
+    float *third = image_add_channel(img, name);
+    if (!third)
+        return -1;
+    for (size_t p = 0; p < np; ++p) {
+        float part[3];
+        split_exact(units[p], part);
+        third[p] = (float)(part[2] * scale);
+    }
+    return 0;
+}
+
+static int write_suffixed_exact(image *img, const char *quantity, const char *hi_suffix, const char *lo_suffix,
+                                const int64_t *units, size_t np, double scale)
+{
+    char hi_name[2 * IMAGE_NAME_MAX], lo_name[2 * IMAGE_NAME_MAX];
+    suffixed_name(hi_name, quantity, hi_suffix);
+    suffixed_name(lo_name, quantity, lo_suffix);
+    return write_exact(img, hi_name, lo_name, units, np, scale);
 }
 
 /* "<quantity>.m<moment>_<limb>[lo]": limb `limb` of the sum of samples
@@ -75,14 +133,14 @@ static void limb_suffix(int moment, int limb, int lo, char suffix[16])
     snprintf(suffix, 16, CH_SUFFIX_LIMB_FMT, moment, limb, lo ? CH_SUFFIX_LIMB_LO : "");
 }
 
-static double limb_of(const moment_sums *m, int moment, int limb)
+static int64_t limb_of(const moment_sums *m, int moment, int limb)
 {
     return moment == 1 ? m->sum[limb] : m->sum_sq[limb];
 }
 
-/* Quantity q's moment sums: "Q.peak" and every limb as hi + lo (a limb is an
- * integer within 2^47 for up to 2^24 samples, so the pair is exact). */
-static int write_moments(const mc_film *film, int q, image *img)
+/* Quantity q's moment sums: "Q.peak" and every limb, exactly (write_exact).
+ * `units` is scratch space for np values. */
+static int write_moments(const mc_film *film, int q, image *img, int64_t *units)
 {
     size_t np = pixel_count(film);
     const moment_sums *m = &film->moments[(size_t)q * np];
@@ -96,44 +154,58 @@ static int write_moments(const mc_film *film, int q, image *img)
             char hi_suffix[16], lo_suffix[16];
             limb_suffix(moment, k, 0, hi_suffix);
             limb_suffix(moment, k, 1, lo_suffix);
-            float *hi = add_suffixed(img, film->quantities[q].name, hi_suffix);
-            float *lo = add_suffixed(img, film->quantities[q].name, lo_suffix);
-            if (!hi || !lo)
-                return -1;
             for (size_t p = 0; p < np; ++p)
-                split_hi_lo(limb_of(&m[p], moment, k), &hi[p], &lo[p]);
+                units[p] = limb_of(&m[p], moment, k);
+            if (write_suffixed_exact(img, film->quantities[q].name, hi_suffix, lo_suffix, units, np, 1.0) != 0)
+                return -1;
         }
     return 0;
 }
 
-int mc_film_write_channels(const mc_film *film, const float *mask, image *img)
+/* Quantity q's channels: mean, standard error, grid sums, moment sums. */
+static int write_quantity(const mc_film *film, int q, const float *mask, image *img, int64_t *units)
 {
     size_t np = pixel_count(film);
-    for (int q = 0; q < film->quantity_count; ++q) {
-        const char *name = film->quantities[q].name;
-        float *mean = image_add_channel(img, name);
-        float *err = add_suffixed(img, name, CH_SUFFIX_STDERR);
-        float *s = add_suffixed(img, name, CH_SUFFIX_SUM), *s_lo = add_suffixed(img, name, CH_SUFFIX_SUM_LO);
-        float *se = add_suffixed(img, name, CH_SUFFIX_SUMEVEN), *se_lo = add_suffixed(img, name, CH_SUFFIX_SUMEVEN_LO);
-        if (!mean || !err || !s || !s_lo || !se || !se_lo || write_moments(film, q, img) != 0)
-            return -1;
-        for (size_t p = 0; p < np; ++p) {
-            size_t i = (size_t)q * np + p;
-            int background = mask && mask[p] == 0.0f;
-            mean[p] = background ? 0.0f : (float)mc_film_mean(film, q, (int)p);
-            err[p] = background ? 0.0f : (float)mc_film_stderr(film, q, (int)p);
-            split_hi_lo(film->sum[i], &s[p], &s_lo[p]);
-            split_hi_lo(film->sum_even[i], &se[p], &se_lo[p]);
-        }
-    }
-    float *n = image_add_channel(img, CH_SPP), *n_even = image_add_channel(img, CH_SPP_EVEN);
-    float *n_lo = image_add_channel(img, CH_SPP_LO), *n_even_lo = image_add_channel(img, CH_SPP_EVEN_LO);
-    if (!n || !n_even || !n_lo || !n_even_lo)
+    const char *name = film->quantities[q].name;
+    const int64_t *sum = &film->sum[(size_t)q * np], *sum_even = &film->sum_even[(size_t)q * np];
+    float *mean = image_add_channel(img, name);
+    float *err = add_suffixed(img, name, CH_SUFFIX_STDERR);
+    double step = film->grids[q].step;
+    if (!mean || !err ||
+        write_suffixed_exact(img, name, CH_SUFFIX_SUM, CH_SUFFIX_SUM_LO, sum, np, step) != 0 ||
+        write_suffixed_exact(img, name, CH_SUFFIX_SUMEVEN, CH_SUFFIX_SUMEVEN_LO, sum_even, np, step) != 0 ||
+        write_moments(film, q, img, units) != 0)
         return -1;
     for (size_t p = 0; p < np; ++p) {
-        split_hi_lo((double)film->count[p], &n[p], &n_lo[p]);
-        split_hi_lo((double)film->count_even[p], &n_even[p], &n_even_lo[p]);
+        int background = mask && mask[p] == 0.0f;
+        mean[p] = background ? 0.0f : (float)mc_film_mean(film, q, (int)p);
+        err[p] = background ? 0.0f : (float)mc_film_stderr(film, q, (int)p);
     }
+    return 0;
+}
+
+static int write_counts(const mc_film *film, image *img, int64_t *units)
+{
+    size_t np = pixel_count(film);
+    for (size_t p = 0; p < np; ++p)
+        units[p] = (int64_t)film->count[p];
+    if (write_exact(img, CH_SPP, CH_SPP_LO, units, np, 1.0) != 0)
+        return -1;
+    for (size_t p = 0; p < np; ++p)
+        units[p] = (int64_t)film->count_even[p];
+    return write_exact(img, CH_SPP_EVEN, CH_SPP_EVEN_LO, units, np, 1.0);
+}
+
+int mc_film_write_channels(const mc_film *film, const float *mask, image *img)
+{
+    int64_t *units = malloc(sizeof *units * pixel_count(film));
+    int rc = units ? 0 : -1;
+    for (int q = 0; q < film->quantity_count && rc == 0; ++q)
+        rc = write_quantity(film, q, mask, img, units);
+    rc = rc == 0 ? write_counts(film, img, units) : -1;
+    free(units);
+    if (rc != 0)
+        return -1;
     normalize_layers(film, img, 1);
     char layers[MC_FILM_MAX_NORMALIZED * IMAGE_NAME_MAX] = "";
     for (int l = 0; l < film->normalized_count; ++l) {
@@ -159,10 +231,11 @@ int mc_film_write_half_means(const mc_film *film, int half, image *img)
             return -1;
         for (size_t p = 0; p < np; ++p) {
             size_t i = (size_t)q * np + p;
-            double n_even = film->count_even[p], n_odd = (double)film->count[p] - n_even;
-            double sum_odd = film->sum[i] - film->sum_even[i];
+            double n_even = (double)film->count_even[p], n_odd = (double)film->count[p] - n_even;
+            double sum = mc_grid_sum_value(film->sum[i], &film->grids[q]);
+            double sum_even = mc_grid_sum_value(film->sum_even[i], &film->grids[q]);
             double n = half == 0 ? n_even : n_odd;
-            mean[p] = n > 0 ? (float)((half == 0 ? film->sum_even[i] : sum_odd) / n) : 0.0f;
+            mean[p] = n > 0 ? (float)((half == 0 ? sum_even : sum - sum_even) / n) : 0.0f;
         }
     }
     normalize_layers(film, img, 0);
@@ -254,42 +327,88 @@ static int find_quantities(const image *img, const char *what, mc_quantity quant
     return count;
 }
 
-static int read_grid_sums(const image *img, const char *what, mc_film *film, int q, gt_error *e)
+/* A part of an exact sum in units (part * inverse_scale): a whole number
+ * below 2^62, or -1. */
+static int part_units(float part, double inverse_scale, int64_t *units)
 {
-    const char *qn = film->quantities[q].name;
-    const float *s = required_channel(img, qn, CH_SUFFIX_SUM, what, e);
-    const float *s_lo = s ? required_channel(img, qn, CH_SUFFIX_SUM_LO, what, e) : NULL;
-    const float *se = s_lo ? required_channel(img, qn, CH_SUFFIX_SUMEVEN, what, e) : NULL;
-    const float *se_lo = se ? required_channel(img, qn, CH_SUFFIX_SUMEVEN_LO, what, e) : NULL;
-    if (!se_lo)
+    double u = (double)part * inverse_scale;
+    if (!(u == floor(u) && fabs(u) < EXACT_LIMIT))
         return -1;
-    size_t np = pixel_count(film);
-    for (size_t p = 0; p < np; ++p) {
-        film->sum[(size_t)q * np + p] = (double)s[p] + (double)s_lo[p];
-        film->sum_even[(size_t)q * np + p] = (double)se[p] + (double)se_lo[p];
-    }
+    *units = (int64_t)u;
     return 0;
 }
 
-/* Limb k of moment `moment` of quantity q, from its hi + lo channels: whole
- * numbers, or the file is corrupt. */
-static int read_limb(const image *img, const char *what, mc_film *film, int q, int moment, int k, gt_error *e)
+/* The sum hi + lo + lo2 of a pixel in units, as written by write_exact: a
+ * whole number below 2^62, MC_GRID_SUM_UNKNOWN for a NaN hi when
+ * allow_unknown (whatever the other parts), or -1. */
+static int exact_units(const float *const part[3], size_t p, double inverse_scale, int allow_unknown,
+                       int64_t *units)
+{
+    if (allow_unknown && isnan(part[0][p])) {
+        *units = MC_GRID_SUM_UNKNOWN;
+        return 0;
+    }
+    int64_t u[3] = {0, 0, 0};
+    for (int k = 0; k < 3; ++k)
+        if (part[k] && part_units(part[k][p], inverse_scale, &u[k]) != 0)
+            return -1;
+    int64_t total = u[0] + u[1] + u[2]; /* each below 2^62: no overflow */
+    if (total <= -(int64_t)EXACT_LIMIT || total >= (int64_t)EXACT_LIMIT)
+        return -1;
+    *units = total;
+    return 0;
+}
+
+/* Reads "Q.<hi_suffix>", "Q.<lo_suffix>" and, if present, its third part
+ * into units[0 .. np): whole numbers of 1 / inverse_scale, or the file is
+ * corrupt. */
+static int read_exact(const image *img, const char *what, const char *quantity, const char *hi_suffix,
+                      const char *lo_suffix, double inverse_scale, int allow_unknown, int64_t *units, size_t np,
+                      gt_error *e)
+{
+    const float *part[3] = {required_channel(img, quantity, hi_suffix, what, e), NULL, NULL};
+    part[1] = part[0] ? required_channel(img, quantity, lo_suffix, what, e) : NULL;
+    if (!part[1])
+        return -1;
+    char third[2 * IMAGE_NAME_MAX + 4];
+    snprintf(third, sizeof third, "%.63s.%.63s%s", quantity, lo_suffix, CH_SUFFIX_THIRD_PART);
+    part[2] = image_channel_data(img, third);
+    for (size_t p = 0; p < np; ++p)
+        if (exact_units(part, p, inverse_scale, allow_unknown, &units[p]) != 0)
+            return gt_error_set(e, what, "channel %s.%s at pixel %zu is not a whole number of units below 2^62",
+                                quantity, hi_suffix, p);
+    return 0;
+}
+
+static int read_grid_sums(const image *img, const char *what, mc_film *film, int q, gt_error *e)
+{
+    size_t np = pixel_count(film);
+    const char *qn = film->quantities[q].name;
+    double inverse_step = film->grids[q].inverse_step;
+    return read_exact(img, what, qn, CH_SUFFIX_SUM, CH_SUFFIX_SUM_LO, inverse_step, 1, &film->sum[(size_t)q * np],
+                      np, e) |
+           read_exact(img, what, qn, CH_SUFFIX_SUMEVEN, CH_SUFFIX_SUMEVEN_LO, inverse_step, 1,
+                      &film->sum_even[(size_t)q * np], np, e);
+}
+
+/* Limb k of moment `moment` of quantity q, exact (read_exact), and within
+ * what the pixel's samples can sum: each adds a digit within 2^23. */
+static int read_limb(const image *img, const char *what, mc_film *film, int q, int moment, int k, int64_t *units,
+                     gt_error *e)
 {
     char hi_suffix[16], lo_suffix[16];
     limb_suffix(moment, k, 0, hi_suffix);
     limb_suffix(moment, k, 1, lo_suffix);
     const char *qn = film->quantities[q].name;
-    const float *hi = required_channel(img, qn, hi_suffix, what, e);
-    const float *lo = hi ? required_channel(img, qn, lo_suffix, what, e) : NULL;
-    if (!lo)
-        return -1;
     size_t np = pixel_count(film);
+    if (read_exact(img, what, qn, hi_suffix, lo_suffix, 1.0, 0, units, np, e) != 0)
+        return -1;
     for (size_t p = 0; p < np; ++p) {
-        double limb = (double)hi[p] + (double)lo[p];
-        if (!(limb == floor(limb) && fabs(limb) < 0x1p53))
-            return gt_error_set(e, what, "channel %s.%s at pixel %zu is not a whole number", qn, hi_suffix, p);
+        if ((double)llabs(units[p]) > 0x1p23 * (double)film->count[p])
+            return gt_error_set(e, what, "channel %s.%s at pixel %zu holds more than %.0f samples can sum", qn,
+                                hi_suffix, p, (double)film->count[p]);
         moment_sums *m = &film->moments[(size_t)q * np + p];
-        *(moment == 1 ? &m->sum[k] : &m->sum_sq[k]) = limb;
+        *(moment == 1 ? &m->sum[k] : &m->sum_sq[k]) = units[p];
     }
     return 0;
 }
@@ -306,11 +425,13 @@ static int read_moments(const image *img, const char *what, mc_film *film, int q
                                 CH_SUFFIX_PEAK, p);
         film->moments[(size_t)q * np + p].peak = peak[p];
     }
-    for (int moment = 1; moment <= 2; ++moment)
-        for (int k = 0; k < MOMENT_LIMBS; ++k)
-            if (read_limb(img, what, film, q, moment, k, e) != 0)
-                return -1;
-    return 0;
+    int64_t *units = malloc(sizeof *units * np);
+    int rc = units ? 0 : gt_error_set(e, what, "out of memory");
+    for (int moment = 1; moment <= 2 && rc == 0; ++moment)
+        for (int k = 0; k < MOMENT_LIMBS && rc == 0; ++k)
+            rc = read_limb(img, what, film, q, moment, k, units, e);
+    free(units);
+    return rc;
 }
 
 /* A file written before issue 23: squares summed on the grid ("Q.sumsq"),
@@ -337,8 +458,8 @@ static int read_counts(const image *img, const char *what, mc_film *film, gt_err
         double count = count_of(n, n_lo, p), even = count_of(n_even, n_even_lo, p);
         if (count < 0.0 || even < 0.0 || even > count)
             return gt_error_set(e, what, "invalid sample counts in %s / %s at pixel %zu", CH_SPP, CH_SPP_EVEN, p);
-        film->count[p] = (uint32_t)count;
-        film->count_even[p] = (uint32_t)even;
+        film->count[p] = (uint64_t)count;
+        film->count_even[p] = (uint64_t)even;
     }
     return 0;
 }
@@ -357,13 +478,15 @@ static void read_normalized(const image *img, mc_film *film)
 static int read_accumulators(const image *img, const char *what, mc_film *film, gt_error *e)
 {
     film->has_moments = !is_legacy(img, film->quantities[0].name);
+    if (read_counts(img, what, film, e) != 0)
+        return -1;
     for (int q = 0; q < film->quantity_count; ++q) {
         if (read_grid_sums(img, what, film, q, e) != 0)
             return -1;
         if (film->has_moments && read_moments(img, what, film, q, e) != 0)
             return -1;
     }
-    return read_counts(img, what, film, e);
+    return 0;
 }
 
 int mc_film_read_channels(const image *img, const char *what, mc_film *film, gt_error *e)

@@ -73,11 +73,11 @@ static float power_of_two_f(int k)
 /* Moves limbs from the window whose top is `from` to the one whose top is
  * `to` (>= from). The terms' digits above `from` are 0, and dropping the
  * lowest limbs rounds every term at the new bottom. */
-static void raise_window(double limb[MOMENT_LIMBS], int from, int to)
+static void raise_window(int64_t limb[MOMENT_LIMBS], int from, int to)
 {
     int shift = to - from;
     for (int k = MOMENT_LIMBS - 1; k >= 0 && shift > 0; --k)
-        limb[k] = k >= shift ? limb[k - shift] : 0.0;
+        limb[k] = k >= shift ? limb[k - shift] : 0;
 }
 
 /* Sets the peak to `peak` (>= the current one), moving both windows; a
@@ -144,10 +144,10 @@ static void term_digits_double(const float *restrict values, int count, int squa
     digits[0] = d0, digits[1] = d1, digits[2] = d2;
 }
 
-static void add_limbs(double limb[MOMENT_LIMBS], const int32_t digits[MOMENT_LIMBS])
+static void add_limbs(int64_t limb[MOMENT_LIMBS], const int32_t digits[MOMENT_LIMBS])
 {
     for (int k = 0; k < MOMENT_LIMBS; ++k)
-        limb[k] += (double)digits[k];
+        limb[k] += digits[k];
 }
 
 void moment_sums_add_run(moment_sums *m, const float *values, int count, float run_peak)
@@ -181,13 +181,14 @@ void moment_sums_merge(moment_sums *dst, const moment_sums *src)
     }
 }
 
-/* sum_k limb[k] 2^(24 (top - k)), each product exact, summed from the
- * smallest: within 2^-52 of the sum's magnitude. */
-static double limbs_value(const double limb[MOMENT_LIMBS], int top)
+/* sum_k limb[k] 2^(24 (top - k)), each product exact (below 2^53 a limb
+ * is a double exactly; beyond, it is rounded by 2^-53 of itself), summed
+ * from the smallest: within 2^-52 of the sum's magnitude. */
+static double limbs_value(const int64_t limb[MOMENT_LIMBS], int top)
 {
     double value = 0.0;
     for (int k = MOMENT_LIMBS - 1; k >= 0; --k)
-        value += limb[k] * power_of_two(MOMENT_DIGIT_BITS * (top - k));
+        value += (double)limb[k] * power_of_two(MOMENT_DIGIT_BITS * (top - k));
     return value;
 }
 
@@ -200,13 +201,13 @@ double moment_sums_total(const moment_sums *m)
     return limbs_value(m->sum, window_top(m->peak));
 }
 
-double moment_sums_variance(const moment_sums *m, uint32_t n)
+double moment_sums_variance(const moment_sums *m, uint64_t n)
 {
     if (!isfinite(m->peak) || n < 2)
         return NAN;
     if (m->peak == 0.0)
         return 0.0;
-    double peak = m->peak, count = n;
+    double peak = m->peak, count = (double)n;
     double s1 = limbs_value(m->sum, window_top(peak)), s2 = limbs_value(m->sum_sq, window_top(peak * peak));
     return (count * s2 - s1 * s1) / (count * (count - 1.0));
 }

@@ -19,8 +19,8 @@
  * R_b(x) 2^(24 b), x rounded to the nearest multiple of 2^(24 b). A sum
  * whose terms have peak P (the largest |x|; P = f 2^e with f in [1/2, 1))
  * keeps three limbs, the sums of the terms' digits at positions
- * top = floor(e / 24), top - 1 and b = top - 2: integers below 2^53 for up
- * to 2^30 terms, so exact in doubles and in any order. A larger peak moves
+ * top = floor(e / 24), top - 1 and b = top - 2: 64-bit integers, within
+ * 2^63 for up to 2^40 terms, so exact and the same in any order. A larger peak moves
  * the window up by dropping the lowest limbs, which is exactly rounding each
  * term at the new bottom. So the limbs always hold
  *
@@ -52,7 +52,7 @@
 
 typedef struct {
     double peak; /* largest |v| added (a float): 0 before any non-zero sample; NaN or inf once one was */
-    double sum[MOMENT_LIMBS], sum_sq[MOMENT_LIMBS]; /* limbs of sum v (peak P) and of sum v^2 (peak P^2) */
+    int64_t sum[MOMENT_LIMBS], sum_sq[MOMENT_LIMBS]; /* limbs of sum v (peak P) and of sum v^2 (peak P^2) */
 } moment_sums;
 
 void moment_sums_clear(moment_sums *m);
@@ -70,6 +70,6 @@ double moment_sums_total(const moment_sums *m);
 /* The unbiased sample variance of the n samples added (n >= 2), from the
  * exact sums (error within 2^-45 peak^2; it may be that far below 0); NaN
  * when the sums are unknown. */
-double moment_sums_variance(const moment_sums *m, uint32_t n);
+double moment_sums_variance(const moment_sums *m, uint64_t n);
 
 #endif

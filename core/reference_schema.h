@@ -61,6 +61,10 @@
 #define CH_SUFFIX_PEAK "peak"
 #define CH_SUFFIX_LIMB_FMT "m%d_%d%s" /* moment (1, 2), limb (0 .. 2), "" or CH_SUFFIX_LIMB_LO */
 #define CH_SUFFIX_LIMB_LO "lo"
+/* A third float, "<lo channel>2" ("Q.sum_lo2", "Q.m1_0lo2"), written only
+ * when some pixel's sum needs more than hi + lo's 48 bits (more than 2^24
+ * samples): hi + lo + lo2 is exact to 2^72. Absent, it is 0. */
+#define CH_SUFFIX_THIRD_PART "2"
 /* Files written before issue 23 summed squares on the grid instead: read for
  * their means, refused for merges (their standard errors were wrong). */
 #define CH_SUFFIX_SUMSQ_LEGACY "sumsq"

@@ -72,11 +72,11 @@ static int second_part(int i) { return !first_part(i); }
 static int same_accumulators(const mc_film *a, const mc_film *b)
 {
     size_t n = (size_t)PIXELS * QUANTITIES;
-    return memcmp(a->sum, b->sum, n * sizeof(double)) == 0 &&
+    return memcmp(a->sum, b->sum, n * sizeof(int64_t)) == 0 &&
            memcmp(a->moments, b->moments, n * sizeof(moment_sums)) == 0 &&
-           memcmp(a->sum_even, b->sum_even, n * sizeof(double)) == 0 &&
-           memcmp(a->count, b->count, PIXELS * sizeof(uint32_t)) == 0 &&
-           memcmp(a->count_even, b->count_even, PIXELS * sizeof(uint32_t)) == 0;
+           memcmp(a->sum_even, b->sum_even, n * sizeof(int64_t)) == 0 &&
+           memcmp(a->count, b->count, PIXELS * sizeof(uint64_t)) == 0 &&
+           memcmp(a->count_even, b->count_even, PIXELS * sizeof(uint64_t)) == 0;
 }
 
 /* Direct statistics of pixel p, quantity q over the samples with
@@ -239,15 +239,15 @@ static void test_exr_round_trip(void)
         CHECK_MSG(r >= 0, "quantity %s lost", film.quantities[q].name);
         if (r < 0)
             continue;
-        CHECK_MSG(memcmp(&film.sum[q * np], &back.sum[r * np], np * sizeof(double)) == 0, "%s sums",
+        CHECK_MSG(memcmp(&film.sum[q * np], &back.sum[r * np], np * sizeof(int64_t)) == 0, "%s sums",
                   film.quantities[q].name);
         CHECK_MSG(memcmp(&film.moments[q * np], &back.moments[r * np], np * sizeof(moment_sums)) == 0,
                   "%s moment sums", film.quantities[q].name);
-        CHECK_MSG(memcmp(&film.sum_even[q * np], &back.sum_even[r * np], np * sizeof(double)) == 0, "%s even sums",
+        CHECK_MSG(memcmp(&film.sum_even[q * np], &back.sum_even[r * np], np * sizeof(int64_t)) == 0, "%s even sums",
                   film.quantities[q].name);
     }
-    CHECK(memcmp(film.count, back.count, np * sizeof(uint32_t)) == 0);
-    CHECK(memcmp(film.count_even, back.count_even, np * sizeof(uint32_t)) == 0);
+    CHECK(memcmp(film.count, back.count, np * sizeof(uint64_t)) == 0);
+    CHECK(memcmp(film.count_even, back.count_even, np * sizeof(uint64_t)) == 0);
     CHECK(back.normalized_count == 1 && strcmp(back.normalized[0], "bent") == 0);
 
     /* Every channel the read-back film writes (means, normalised means,
@@ -456,7 +456,7 @@ static void test_legacy_and_corrupt_moments(void)
     mc_film legacy;
     CHECK_MSG(mc_film_read_channels(&old, "old.exr", &legacy, &e) == 0, "%s", e.message);
     CHECK(legacy.has_moments == 0 && isnan(mc_film_stderr(&legacy, 0, 3)));
-    CHECK(memcmp(legacy.sum, film.sum, sizeof(double) * PIXELS * QUANTITIES) == 0);
+    CHECK(memcmp(legacy.sum, film.sum, sizeof(int64_t) * PIXELS * QUANTITIES) == 0);
     image half;
     image_init(&half, W, H);
     CHECK(mc_film_write_half_means(&legacy, 0, &half) == 0);
@@ -481,11 +481,13 @@ static void test_legacy_and_corrupt_moments(void)
     mc_film_free(&film);
 }
 
-/* (h) Sample counts as large as a film may hold stay exact through files
- * (spp.N + spp.Nlo, exact where spp.N alone is a rounded float):
- * 2^23 + 1 and 2^23 - 1 samples merge into 2^24, written and read back; a
- * merge past MC_FILM_MAX_COUNT (2^24) is refused, naming the file, and
- * leaves the film as it was. */
+/* (h) Sample counts as large as a film may hold stay exact in memory and
+ * through files (issue 22): 2^24 and 2^24 - 1 samples merge into exactly
+ * 2^25 - 1, written, read back and merged again; and a pixel doubled by
+ * merging it with itself up to 2^32 samples keeps every sum exact (their
+ * third float, "lo2", appears only then), its mean and half means exactly,
+ * its standard error the closed form's; a merge past MC_FILM_MAX_COUNT
+ * (2^32) is refused, naming the file, and leaves the film as it was. */
 static void add_constant_samples(mc_film *film, uint32_t first, uint32_t count)
 {
     enum { RUN = 4096 };
@@ -502,37 +504,126 @@ static void add_constant_samples(mc_film *film, uint32_t first, uint32_t count)
     mc_film_add_pixel(film, 0, &acc);
 }
 
-static int through_file(const mc_film *film, mc_film *back)
+/* film written and read back into *back; the image is kept in *img when
+ * img is not NULL. */
+static int through_file(const mc_film *film, mc_film *back, image *kept)
 {
     image img;
     gt_error e;
-    image_init(&img, 1, 1);
+    image_init(&img, film->width, film->height);
     int rc = mc_film_write_channels(film, NULL, &img) == 0 ? mc_film_read_channels(&img, "counts.exr", back, &e) : -1;
-    image_free(&img);
+    if (rc != 0)
+        fprintf(stderr, "through_file: %s\n", e.message);
+    if (kept)
+        *kept = img;
+    else
+        image_free(&img);
     return rc;
 }
 
-static void test_large_counts(void)
+static void test_counts_beyond_2_24(void)
 {
     static const mc_quantity one[1] = {{"v.V", 0}};
-    mc_film a, b, c, a_back, b_back, merged_back;
+    mc_film a, b, a_back, b_back, merged_back, twice;
     gt_error e;
     mc_film_init(&a, 1, 1, one, 1);
     mc_film_init(&b, 1, 1, one, 1);
-    mc_film_init(&c, 1, 1, one, 1);
-    add_constant_samples(&a, 0, (1u << 23) + 1);
-    add_constant_samples(&b, (1u << 23) + 1, (1u << 23) - 1);
-    add_constant_samples(&c, 1u << 24, 1);
-    CHECK(through_file(&a, &a_back) == 0 && through_file(&b, &b_back) == 0);
+    add_constant_samples(&a, 0, 1u << 24);
+    add_constant_samples(&b, 1u << 24, (1u << 24) - 1);
+    CHECK(through_file(&a, &a_back, NULL) == 0 && through_file(&b, &b_back, NULL) == 0);
     CHECK(mc_film_merge(&a_back, &b_back, "b.exr", &e) == 0);
-    CHECK(through_file(&a_back, &merged_back) == 0);
-    CHECK_MSG(merged_back.count[0] == 1u << 24, "%u", merged_back.count[0]);
+    CHECK(through_file(&a_back, &merged_back, NULL) == 0);
+    CHECK_MSG(merged_back.count[0] == (1u << 25) - 1, "%.0f", (double)merged_back.count[0]);
+    CHECK(merged_back.count_even[0] == 1u << 24);
     CHECK(mc_film_mean(&merged_back, 0, 0) == mc_film_mean(&a_back, 0, 0));
-    CHECK(mc_film_merge(&merged_back, &c, "big.exr", &e) == -1);
-    CHECK_MSG(strstr(e.message, "big.exr: ") == e.message && strstr(e.message, "2^24"), "%s", e.message);
-    CHECK(merged_back.count[0] == 1u << 24); /* untouched */
-    mc_film *films[6] = {&a, &b, &c, &a_back, &b_back, &merged_back};
+    CHECK(through_file(&merged_back, &twice, NULL) == 0);
+    CHECK(mc_film_merge(&twice, &merged_back, "again.exr", &e) == 0 && twice.count[0] == (1u << 26) - 2);
+    mc_film *films[6] = {&a, &b, &a_back, &b_back, &merged_back, &twice};
     for (int i = 0; i < 6; ++i)
+        mc_film_free(films[i]);
+}
+
+static int has_channel(const image *img, const char *name) { return image_channel_data(img, name) != NULL; }
+
+/* A film of the two samples, index 0 and 1. */
+static void two_samples(mc_film *film, const float sample[2])
+{
+    static const mc_quantity one[1] = {{"v.V", 0}};
+    mc_film_init(film, 1, 1, one, 1);
+    mc_film_add_sample(film, 0, 0, &sample[0]);
+    mc_film_add_sample(film, 0, 1, &sample[1]);
+}
+
+/* film += copy of itself through a file, `times` times: 2^times as many samples. */
+static void double_through_files(mc_film *film, int times)
+{
+    gt_error e;
+    for (int k = 0; k < times; ++k) {
+        mc_film copy;
+        CHECK(through_file(film, &copy, NULL) == 0 && mc_film_merge(film, &copy, "copy.exr", &e) == 0);
+        mc_film_free(&copy);
+    }
+}
+
+static void test_counts_to_2_32(void)
+{
+    const float sample[2] = {1.0f - 0x1p-22f, 0.3f};
+    mc_film film, back;
+    gt_error e;
+    two_samples(&film, sample);
+    double_through_files(&film, 31);
+    CHECK(film.count[0] == 1ull << 32 && film.count_even[0] == 1ull << 31);
+    CHECK(through_file(&film, &back, NULL) == 0 && back.count[0] == 1ull << 32);
+    double mean = ((double)sample[0] + (double)sample[1]) / 2.0, n = 0x1p32, half = (sample[0] - sample[1]) / 2.0;
+    CHECK_MSG(mc_film_mean(&back, 0, 0) == mean, "%.17g vs %.17g", mc_film_mean(&back, 0, 0), mean);
+    double stderr_closed = sqrt(n / (n - 1.0) * half * half / n); /* s^2 = n/(n-1) ((a-b)/2)^2 */
+    CHECK_NEAR(mc_film_stderr(&back, 0, 0), stderr_closed, 1e-9 * stderr_closed);
+    image halves;
+    image_init(&halves, 1, 1);
+    CHECK(mc_film_write_half_means(&back, 0, &halves) == 0);
+    float even_mean = (float)mc_grid_sum_value(mc_grid_units(sample[0], &film.grids[0]), &film.grids[0]);
+    CHECK(image_channel_data(&halves, "v.V")[0] == even_mean);
+    image_free(&halves);
+    mc_film extra;
+    two_samples(&extra, sample);
+    CHECK(mc_film_merge(&back, &extra, "big.exr", &e) == -1);
+    CHECK_MSG(strstr(e.message, "big.exr: ") == e.message && strstr(e.message, "2^32"), "%s", e.message);
+    CHECK(back.count[0] == 1ull << 32); /* untouched */
+    mc_film_free(&film), mc_film_free(&back), mc_film_free(&extra);
+}
+
+/* 0x55555555 copies of two samples (2863311530 samples): sums of about 54
+ * significant bits, beyond hi + lo's 48 (and a double's 53 for the squares'
+ * limbs), stay exact through a file in their third float, which ordinary
+ * films do not carry. */
+static void test_sums_beyond_48_bits(void)
+{
+    static const mc_quantity one[1] = {{"v.V", 0}};
+    const float sample[2] = {1.0f - 0x1p-22f, 0.3f};
+    const int64_t times = 0x55555555; /* alternate bits: no short hi + lo */
+    mc_film power, total, back;
+    gt_error e;
+    two_samples(&power, sample);
+    mc_film_init(&total, 1, 1, one, 1);
+    image img;
+    CHECK(through_file(&power, &back, &img) == 0 && !has_channel(&img, "v.V.sum_lo2"));
+    image_free(&img), mc_film_free(&back);
+    int64_t units = power.sum[0];
+    for (int k = 0; k < 31; ++k) {
+        if (times >> k & 1)
+            CHECK(mc_film_merge(&total, &power, "power.exr", &e) == 0);
+        double_through_files(&power, 1);
+    }
+    CHECK(total.count[0] == 2 * (uint64_t)times && total.sum[0] == units * times);
+    CHECK(through_file(&total, &back, &img) == 0);
+    CHECK(has_channel(&img, "v.V.sum_lo2") && has_channel(&img, "v.V.m1_1lo2"));
+    CHECK(back.sum[0] == total.sum[0] && back.sum_even[0] == total.sum_even[0]);
+    CHECK(memcmp(back.moments, total.moments, sizeof(moment_sums)) == 0);
+    double mean = ((double)sample[0] + (double)sample[1]) / 2.0;
+    CHECK_NEAR(mc_film_mean(&back, 0, 0), mean, 0x1p-48);
+    image_free(&img);
+    mc_film *films[3] = {&power, &total, &back};
+    for (int i = 0; i < 3; ++i)
         mc_film_free(films[i]);
 }
 
@@ -547,6 +638,8 @@ int main(void)
     test_half_means_and_normalised_layer();
     test_bad_images();
     test_legacy_and_corrupt_moments();
-    test_large_counts();
+    test_counts_beyond_2_24();
+    test_counts_to_2_32();
+    test_sums_beyond_48_bits();
     return check_report("test_mc_film");
 }

@@ -159,10 +159,10 @@ static int window_top_of(double peak)
 }
 
 /* sum_k limb[k] 2^(24 (2 - k)): the limbs' value in units of 2^(24 b). */
-static int128 limbs_in_bottom_units(const double limb[MOMENT_LIMBS])
+static int128 limbs_in_bottom_units(const int64_t limb[MOMENT_LIMBS])
 {
     const int128 digit = (int128)1 << 24;
-    return ((int128)(int64_t)limb[0] * digit + (int128)(int64_t)limb[1]) * digit + (int128)(int64_t)limb[2];
+    return ((int128)limb[0] * digit + (int128)limb[1]) * digit + (int128)limb[2];
 }
 
 static void test_limbs_exact(void)
