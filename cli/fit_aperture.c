@@ -33,6 +33,9 @@ static void print_help(void)
            "                      (specocc_d.V, the talk's older GGX D-weighted definition) or\n"
            "                      phong (specocc_phong.V, Phong-NDF-weighted, as the talk fitted)\n"
            "  --intersection I    exact (default) or oat (Oat 2007's approximation)\n"
+           "  --cone C            talk (default: a_s = theta_m, the sampled half-vector's angle, as\n"
+           "                      the talk) or reflected (a_s = 2 theta_m, the cone of reflected\n"
+           "                      directions holding the same share of the lobe; docs/decisions.md)\n"
            "  --plot F.png        the DSSIM-vs-u curve (gnuplot)\n"
            "  -o, --output F.json u, its DSSIM, the DSSIM at the talk's u = 0.01, and the curve\n"
            "  -h, --help\n");
@@ -41,6 +44,7 @@ static void print_help(void)
 typedef struct {
     const char *references[MAX_CASES], *aos[MAX_CASES], *output, *plot;
     int reference_count, ao_count, exact;
+    so_aperture_mapping mapping;
     const char *channel;
 } fit_options;
 
@@ -48,7 +52,7 @@ static int parse_options(int argc, char **argv, fit_options *o)
 {
     static const struct option longs[] = {{"reference", required_argument, 0, 'r'}, {"ao", required_argument, 0, 'a'},
                                           {"definition", required_argument, 0, 'd'}, {"intersection", required_argument, 0, 'i'},
-                                          {"plot", required_argument, 0, 'p'},      {"output", required_argument, 0, 'o'},
+                                          {"cone", required_argument, 0, 'c'},      {"plot", required_argument, 0, 'p'},      {"output", required_argument, 0, 'o'},
                                           {"help", no_argument, 0, 'h'},            {0, 0, 0, 0}};
     int c;
     while ((c = getopt_long(argc, argv, "o:h", longs, NULL)) != -1) {
@@ -72,6 +76,11 @@ static int parse_options(int argc, char **argv, fit_options *o)
             else if (strcmp(optarg, "oat") == 0) o->exact = 0;
             else return cli_failf("--intersection", "'%s' is neither exact nor oat", optarg), -1;
             break;
+        case 'c':
+            if (strcmp(optarg, "talk") == 0) o->mapping = SO_APERTURE_PHONG_U;
+            else if (strcmp(optarg, "reflected") == 0) o->mapping = SO_APERTURE_PHONG_U_REFLECTED;
+            else return cli_failf("--cone", "'%s' is neither talk nor reflected", optarg), -1;
+            break;
         case 'p': o->plot = optarg; break;
         case 'o': o->output = optarg; break;
         case 'h': print_help(); return 1;
@@ -89,7 +98,7 @@ static int parse_options(int argc, char **argv, fit_options *o)
 
 int fit_aperture(int argc, char **argv)
 {
-    fit_options o = {.exact = 1, .channel = CH_SPECOCC};
+    fit_options o = {.exact = 1, .mapping = SO_APERTURE_PHONG_U, .channel = CH_SPECOCC};
     int parsed = parse_options(argc, argv, &o);
     if (parsed != 0)
         return parsed > 0 ? EXIT_OK : EXIT_USER_ERROR;
@@ -101,7 +110,7 @@ int fit_aperture(int argc, char **argv)
     int loaded = 0, status = EXIT_OK;
     aperture_fit fit;
     if (aperture_cases_load(o.references, o.aos, o.reference_count, o.channel, refs, aos, cases, &loaded, &e) != 0 ||
-        aperture_fit_run(cases, loaded, o.exact, &fit, &e) != 0) {
+        aperture_fit_run(cases, loaded, o.mapping, o.exact, &fit, &e) != 0) {
         status = cli_fail(&e);
     } else {
         cJSON *j = aperture_fit_json(&fit, o.channel, o.exact);
@@ -110,7 +119,7 @@ int fit_aperture(int argc, char **argv)
         if (!text)
             gt_error_set(&e, o.output, "out of memory");
         if (!text || atomic_write_text(o.output, text, &e) != 0 ||
-            (o.plot && aperture_fit_plot(&fit, o.plot, "GTSO gloss-to-aperture: DSSIM against u", &e) != 0))
+            (o.plot && aperture_fit_plot(&fit, 1, o.plot, "GTSO gloss-to-aperture: DSSIM against u", &e) != 0))
             status = cli_fail(&e);
         else
             printf("u = %.4g (log10 u = %.3f): mean DSSIM %.5f; at the talk's u = 0.01: %.5f (%d evaluations)\n", fit.u,

@@ -13,13 +13,14 @@ void aperture_case_free(aperture_case *c) { so_inputs_free(&c->inputs); }
 typedef struct {
     const aperture_case *cases;
     int count, exact;
+    so_aperture_mapping mapping;
     float *scratch;
     aperture_fit *fit;
 } objective;
 
 static double mean_dssim(objective *o, double log10_u, gt_error *e, int *failed)
 {
-    so_variant v = {o->exact ? SO_VARIANT_CONE_EXACT : SO_VARIANT_CONE_OAT, SO_APERTURE_PHONG_U, pow(10.0, log10_u),
+    so_variant v = {o->exact ? SO_VARIANT_CONE_EXACT : SO_VARIANT_CONE_OAT, o->mapping, pow(10.0, log10_u),
                     SO_AO_COSINE, NULL};
     double total = 0.0;
     for (int i = 0; i < o->count; ++i) {
@@ -95,16 +96,21 @@ static void search(objective *o, aperture_fit *out, gt_error *e, int *failed)
     if (values[best] < f) /* the scan point itself was better than the bracket's interior */
         x = SCAN_LO + best * SCAN_STEP, f = values[best];
     out->log10_u = x, out->u = pow(10.0, x), out->dssim = f;
+    out->at_range_edge = x <= SCAN_LO + SCAN_STEP || x >= SCAN_HI - SCAN_STEP;
     out->dssim_at_published = mean_dssim(o, -2.0, e, failed);
 }
 
-int aperture_fit_run(const aperture_case *cases, int count, int exact, aperture_fit *out, gt_error *e)
+int aperture_fit_run(const aperture_case *cases, int count, so_aperture_mapping mapping, int exact, aperture_fit *out,
+                     gt_error *e)
 {
+    if (!so_aperture_takes_u(mapping))
+        return gt_error_set(e, "fit aperture", "the mapping %s has no parameter u", so_aperture_name(mapping));
     memset(out, 0, sizeof *out);
+    out->mapping = mapping;
     size_t largest = 0;
     for (int i = 0; i < count; ++i)
         largest = fmax(largest, (size_t)cases[i].inputs.width * cases[i].inputs.height);
-    objective o = {cases, count, exact, malloc(sizeof(float) * largest), out};
+    objective o = {cases, count, exact, mapping, malloc(sizeof(float) * largest), out};
     if (!o.scratch)
         return gt_error_set(e, "fit aperture", "out of memory");
     int failed = 0;

@@ -31,15 +31,20 @@ void aperture_case_free(aperture_case *c);
 enum { APERTURE_CURVE_MAX = 128 };
 
 typedef struct {
+    so_aperture_mapping mapping; /* the cone u parametrises */
     double u, log10_u, dssim;
+    int at_range_edge;         /* the minimum lies within a scan step of the range's ends: the search ran off */
     double dssim_at_published; /* at the talk's u = 0.01, for comparison */
     int curve_count;
     double curve_u[APERTURE_CURVE_MAX], curve_dssim[APERTURE_CURVE_MAX]; /* sorted by u */
     int evaluations;
 } aperture_fit;
 
-/* The search; `exact`: exact cap intersection, else Oat's. Returns 0, or -1
- * with e (out of memory, or a case SSIM cannot score). */
-int aperture_fit_run(const aperture_case *cases, int count, int exact, aperture_fit *out, gt_error *e);
+/* The search for the u of `mapping` (one that so_aperture_takes_u: the
+ * talk's SO_APERTURE_PHONG_U, or SO_APERTURE_PHONG_U_REFLECTED); `exact`:
+ * exact cap intersection, else Oat's. Returns 0, or -1 with e (out of
+ * memory, or a case SSIM cannot score). */
+int aperture_fit_run(const aperture_case *cases, int count, so_aperture_mapping mapping, int exact, aperture_fit *out,
+                     gt_error *e);
 
 #endif

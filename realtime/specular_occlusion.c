@@ -23,9 +23,14 @@ double so_phong_exponent(double alpha) { return phong_exponent(alpha); }
 
 const char *so_aperture_name(so_aperture_mapping m)
 {
-    static const char *const names[SO_APERTURE_COUNT] = {"drobot", "uludag", "phong-u", "exp2-alpha",
-                                                         "exp2-perceptual"};
+    static const char *const names[SO_APERTURE_COUNT] = {"drobot",     "uludag",          "phong-u",
+                                                         "exp2-alpha", "exp2-perceptual", "phong-u-reflected"};
     return (int)m >= 0 && m < SO_APERTURE_COUNT ? names[m] : "unknown";
+}
+
+int so_aperture_takes_u(so_aperture_mapping m)
+{
+    return m == SO_APERTURE_PHONG_U || m == SO_APERTURE_PHONG_U_REFLECTED;
 }
 
 double so_reflection_cos_aperture(so_aperture_mapping m, double roughness, double u)
@@ -37,6 +42,7 @@ double so_reflection_cos_aperture(so_aperture_mapping m, double roughness, doubl
     case SO_APERTURE_PHONG_U: return pow(u, 1.0 / (p + 2.0));
     case SO_APERTURE_EXP2_ALPHA: return exp2(-3.32193 * alpha * alpha);
     case SO_APERTURE_EXP2_PERCEPTUAL: return exp2(-3.32193 * roughness * roughness);
+    case SO_APERTURE_PHONG_U_REFLECTED: return cos(fmin(M_PI, 2.0 * acos(pow(u, 1.0 / (p + 2.0)))));
     default: return 1.0;
     }
 }

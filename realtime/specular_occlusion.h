@@ -39,12 +39,26 @@ typedef enum {
     SO_APERTURE_PHONG_U,         /* a_s = arccos(u^(1 / (p + 2))) = arccos(u^(alpha^2 / 2)) (the talk; u given) */
     SO_APERTURE_EXP2_ALPHA,      /* cos a_s = 2^(-3.32193 r^2), r = alpha (the talk's u = 0.01, r as it defines r) */
     SO_APERTURE_EXP2_PERCEPTUAL, /* cos a_s = 2^(-3.32193 r^2), r = perceptual roughness (engines' other reading) */
+    SO_APERTURE_PHONG_U_REFLECTED, /* a_s = 2 arccos(u^(1 / (p + 2))): the same u, as a cone of reflected
+                                      directions (see below; u given) */
     SO_APERTURE_COUNT
 } so_aperture_mapping;
 
+/* Walter et al.'s eq. 31 samples the microfacet normal m: a fraction u of
+ * the Phong lobe's (cosine-weighted) normals lies outside the cone
+ * cos theta_m = u^(1 / (p + 2)) about the normal. The talk takes theta_m as
+ * the reflection cone's aperture; but the light direction is the mirror of
+ * the view about m, which turns 2 theta_m away from the reflection vector
+ * when m turns theta_m away from the normal (exactly so at normal incidence:
+ * the half-vector's Jacobian). The cone of reflected directions holding the
+ * same share 1 - u of the lobe is then about 2 theta_m wide, as Drobot's
+ * a_s = 2 sqrt(2 / (p + 2)) = 2 alpha is. SO_APERTURE_PHONG_U_REFLECTED is
+ * that cone; SO_APERTURE_PHONG_U the talk's (docs/decisions.md, "The
+ * gloss-to-aperture search ran off its range"). */
+int so_aperture_takes_u(so_aperture_mapping m);
 const char *so_aperture_name(so_aperture_mapping m);
 /* cos a_s for a perceptual roughness (u: the Phong-importance parameter,
- * used by SO_APERTURE_PHONG_U only). a_s is clamped to [0, pi]. */
+ * used by the mappings so_aperture_takes_u). a_s is clamped to [0, pi]. */
 double so_reflection_cos_aperture(so_aperture_mapping m, double roughness, double u);
 
 /* Oat and Sander 2007 ("Ambient Aperture Lighting", listing 1): the

@@ -98,8 +98,8 @@ void so_variant_label(const so_variant *v, char *text, size_t size)
         snprintf(text, size, "lut-%s-%d", v->lut ? so_lobe_name(v->lut->lobe) : "?", v->lut ? v->lut->size : 0);
         break;
     default:
-        if (v->mapping == SO_APERTURE_PHONG_U)
-            snprintf(text, size, "%s:phong-u=%.4g", cone, v->u);
+        if (so_aperture_takes_u(v->mapping))
+            snprintf(text, size, "%s:%s=%.4g", cone, so_aperture_name(v->mapping), v->u);
         else
             snprintf(text, size, "%s:%s", cone, so_aperture_name(v->mapping));
     }

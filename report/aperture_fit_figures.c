@@ -14,10 +14,12 @@ cJSON *aperture_fit_json(const aperture_fit *fit, const char *channel, int exact
     cJSON_AddStringToObject(j, "problem", "aperture");
     cJSON_AddStringToObject(j, "reference_channel", channel);
     cJSON_AddStringToObject(j, "intersection", exact ? "exact" : "oat");
+    cJSON_AddStringToObject(j, "cone", so_aperture_name(fit->mapping));
     cJSON_AddStringToObject(j, "search", "scan of log10 u by 1/8 decade, then golden section to 1e-3");
     cJSON_AddNumberToObject(j, "u", fit->u);
     cJSON_AddNumberToObject(j, "log10_u", fit->log10_u);
     cJSON_AddNumberToObject(j, "mean_dssim", fit->dssim);
+    cJSON_AddBoolToObject(j, "at_range_edge", fit->at_range_edge);
     cJSON_AddNumberToObject(j, "mean_dssim_at_talk_u_0.01", fit->dssim_at_published);
     cJSON_AddNumberToObject(j, "evaluations", fit->evaluations);
     cJSON *curve = cJSON_AddArrayToObject(j, "curve");
@@ -30,23 +32,31 @@ cJSON *aperture_fit_json(const aperture_fit *fit, const char *channel, int exact
     return j;
 }
 
-/* The DSSIM-vs-u curve on a log axis, the fitted u marked; the points go
- * inline as a gnuplot datablock so the kept .gp script reruns alone. */
-int aperture_fit_plot(const aperture_fit *fit, const char *path, const char *title, gt_error *e)
+/* The DSSIM-vs-u curves of fits[0 .. count) on a log axis, each fitted u
+ * marked; the points go inline as gnuplot datablocks so the kept .gp script
+ * reruns alone. */
+int aperture_fit_plot(const aperture_fit *fits, int count, const char *path, const char *title, gt_error *e)
 {
     char *script = NULL;
     size_t size = 0;
     FILE *mem = open_memstream(&script, &size);
     if (!mem)
         return gt_error_set(e, path, "out of memory");
-    fprintf(mem, "$curve << EOD\n");
-    for (int i = 0; i < fit->curve_count; ++i)
-        fprintf(mem, "%.9g %.9g\n", fit->curve_u[i], fit->curve_dssim[i]);
+    for (int k = 0; k < count; ++k) {
+        fprintf(mem, "$curve%d << EOD\n", k);
+        for (int i = 0; i < fits[k].curve_count; ++i)
+            fprintf(mem, "%.9g %.9g\n", fits[k].curve_u[i], fits[k].curve_dssim[i]);
+        fprintf(mem, "EOD\nset arrow from %.9g, graph 0 to %.9g, graph 1 nohead dt 2 lc %d\n", fits[k].u, fits[k].u,
+                k + 1);
+    }
     fprintf(mem,
-            "EOD\nset termoption noenhanced\nset title \"%s\"\nset xlabel 'u'\nset ylabel 'mean DSSIM vs reference'\n"
-            "set grid\nset logscale x\nset arrow from %.9g, graph 0 to %.9g, graph 1 nohead dt 2\n"
-            "set label 'fitted u' at %.9g, graph 0.95\nplot $curve using 1:2 with linespoints notitle\n",
-            title, fit->u, fit->u, fit->u);
+            "set termoption noenhanced\nset title \"%s\"\nset xlabel 'u'\nset ylabel 'mean DSSIM vs reference'\n"
+            "set grid\nset logscale x\nset key top left\nplot ",
+            title);
+    for (int k = 0; k < count; ++k)
+        fprintf(mem, "%s$curve%d using 1:2 with linespoints lc %d title 'cone %s (dashed: fitted u)'", k ? ", " : "",
+                k, k + 1, so_aperture_name(fits[k].mapping));
+    fprintf(mem, "\n");
     fclose(mem);
     int rc = gnuplot_render(script, path, 800, 500, e);
     free(script);

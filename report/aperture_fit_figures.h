@@ -9,8 +9,9 @@
 
 #include "fitters/aperture_fit.h"
 
-/* The fit as JSON (u, DSSIM, DSSIM at the talk's u, the curve), and the curve as a PNG plot. */
+/* The fit as JSON (cone, u, DSSIM, DSSIM at the talk's u, the curve). */
 cJSON *aperture_fit_json(const aperture_fit *fit, const char *channel, int exact);
-int aperture_fit_plot(const aperture_fit *fit, const char *path, const char *title, gt_error *e);
+/* The curves of fits[0 .. count) in one PNG plot, each fitted u marked. */
+int aperture_fit_plot(const aperture_fit *fits, int count, const char *path, const char *title, gt_error *e);
 
 #endif

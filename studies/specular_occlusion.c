@@ -394,13 +394,14 @@ static void average(const so_state *st, so_study_result *out)
     out->reference_samples_per_second = st->renders ? st->samples_per_second_sum / st->renders : 0.0;
 }
 
-/* The gloss-to-aperture fit (exact intersection) against each definition. */
+/* The gloss-to-aperture fits (exact intersection) against each definition. */
 static int fit_apertures(so_state *st, gt_error *e)
 {
     for (int d = 0; d < SO_STUDY_DEFINITIONS; ++d) {
         so_aperture_row *row = &st->out->fits[d];
         row->name = definition_names[d], row->channel = definition_channels[d];
-        if (aperture_fit_run(st->cases[d], st->case_count, 1, &row->fit, e) != 0)
+        if (aperture_fit_run(st->cases[d], st->case_count, SO_APERTURE_PHONG_U, 1, &row->fit, e) != 0 ||
+            aperture_fit_run(st->cases[d], st->case_count, SO_APERTURE_PHONG_U_REFLECTED, 1, &row->reflected, e) != 0)
             return -1;
     }
     return 0;

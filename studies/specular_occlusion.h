@@ -22,7 +22,8 @@
  *  - the two- and three-split approximations against the split ground
  *    truth, and the truth's own half-sample noise floor;
  *  - the gloss-to-aperture fit of u (fitters/aperture_fit.h, exact cap
- *    intersection) against each reference definition.
+ *    intersection) against each reference definition, for the talk's cone
+ *    and for the cone of reflected directions.
  *
  * Writes <output>/figures/specocc_ref_<scene>.png (V_s at r = 0.5) and
  * specocc_err_<scene>_<k>.png, |error| heatmaps (0 to 0.5) at r = 0.5 of the
@@ -73,11 +74,13 @@ typedef struct {
     double noise_floor; /* DSSIM of split_truth.V's halves */
 } so_split_row;
 
-/* The gloss-to-aperture fit against one reference definition. */
+/* The gloss-to-aperture fit against one reference definition, with the
+ * talk's cone (a_s = theta_m, SO_APERTURE_PHONG_U) and with the cone of
+ * reflected directions (a_s = 2 theta_m, SO_APERTURE_PHONG_U_REFLECTED). */
 typedef struct {
     const char *name;    /* "gtso", "d_only", "phong" */
     const char *channel; /* specocc.V, specocc_d.V, specocc_phong.V */
-    aperture_fit fit;
+    aperture_fit fit, reflected;
 } so_aperture_row;
 
 typedef struct {
