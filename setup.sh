@@ -13,6 +13,7 @@ packages=(
   libceres-dev libeigen3-dev libtinygltf-dev libstb-dev nlohmann-json3-dev libcjson-dev python3-imath
   libssl-dev assimp-testmodels gnuplot-nox glslang-tools
   clang libclang-rt-14-dev libomp-dev llvm
+  libsquish-dev
 )
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }

@@ -147,7 +147,7 @@ void so_lut_point(so_lut_axes axes, const double t[3], double *alpha_v, double *
 
 int so_lut_build(so_lut *lut, int size, so_lobe lobe, so_lut_axes axes, int threads)
 {
-    lut->size = size, lut->lobe = lobe, lut->axes = axes, lut->max_error_estimate = 0.0;
+    lut->size = size, lut->lobe = lobe, lut->axes = axes, lut->max_error_estimate = 0.0, lut->bc4 = 0;
     lut->data = malloc(sizeof *lut->data * (size_t)size * (size_t)size * (size_t)size);
     double *normalisers = malloc(sizeof *normalisers * (size_t)size);
     if (!lut->data || !normalisers) {

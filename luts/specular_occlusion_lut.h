@@ -61,12 +61,19 @@ typedef struct {
     so_lut_axes axes;
     float *data; /* size^3 */
     double max_error_estimate; /* the largest quadrature error estimate of an entry */
+    int bc4;                   /* 1: the entries as shipped, decoded from BC4 (so_lut_bc4) */
 } so_lut;
 
 /* Fills a table (OpenMP, `threads` workers; the result does not depend on
  * it). Returns 0, or -1 when out of memory. */
 int so_lut_build(so_lut *lut, int size, so_lobe lobe, so_lut_axes axes, int threads);
 void so_lut_free(so_lut *lut);
+/* The table as the talk ships it (slide "Final Specular Visibility
+ * Calculation": "32x32x32 BC4 ... (8-bit)"): each roughness slice, a 2-D
+ * a_v x beta texture, BC4-compressed (luts/bc4_codec.h) and decoded back;
+ * dst gets the decoded entries and bc4 = 1. Returns 0, or -1 when out of
+ * memory. */
+int so_lut_bc4(const so_lut *src, so_lut *dst);
 /* Trilinear interpolation at (a_v, beta, r), coordinates clamped to [0, 1]. */
 double so_lut_lookup(const so_lut *lut, double alpha_v, double beta, double roughness);
 
