@@ -19,7 +19,7 @@
 #include "scene/scene_loaders.h"
 #include "studies/specular_occlusion_inputs.h"
 
-enum { LUT_SIZES = 3, CASES_MAX = SO_STUDY_MAX_SCENES * SO_STUDY_ROUGHNESSES };
+enum { LUT_SIZES = 3, BC4_SIZES = 2, CASES_MAX = SO_STUDY_MAX_SCENES * SO_STUDY_ROUGHNESSES };
 static const char *const definition_channels[SO_STUDY_DEFINITIONS] = {CH_SPECOCC, CH_SPECOCC_D, CH_SPECOCC_PHONG};
 static const char *const definition_names[SO_STUDY_DEFINITIONS] = {"gtso", "d_only", "phong"};
 static const float roughness_values[SO_STUDY_ROUGHNESSES] = {0.25f, 0.5f, 0.8f};
@@ -32,7 +32,7 @@ typedef struct {
     const study_context *ctx;
     so_study_result *out;
     char figures[2048];
-    so_lut luts[LUT_SIZES], lut_cosines;
+    so_lut luts[LUT_SIZES], lut_cosines, bc4[BC4_SIZES]; /* bc4[s]: luts[s] as shipped */
     so_variant variants[SO_STUDY_MAX_VARIANTS];
     int heatmaps[SO_STUDY_HEATMAPS];
     double dssim[SO_STUDY_MAX_VARIANTS][SO_STUDY_ROUGHNESSES], rmse[SO_STUDY_MAX_VARIANTS][SO_STUDY_ROUGHNESSES];
@@ -54,9 +54,17 @@ int so_study_find(const so_study_result *r, so_variant_kind kind, so_aperture_ma
         const so_variant_row *v = &r->variants[i];
         int cone = kind == SO_VARIANT_CONE_EXACT || kind == SO_VARIANT_CONE_OAT, lut = kind == SO_VARIANT_LUT;
         if (v->kind == kind && v->on_gtao == on_gtao && (!cone || v->mapping == mapping) &&
-            (!lut || (v->lut_size == lut_size && v->lut_axes == lut_axes)))
+            (!lut || (v->lut_size == lut_size && v->lut_axes == lut_axes && !v->lut_bc4)))
             return i;
     }
+    return -1;
+}
+
+int so_study_find_bc4(const so_study_result *r, int lut_size)
+{
+    for (int i = 0; i < r->variant_count; ++i)
+        if (r->variants[i].lut_bc4 && r->variants[i].lut_size == lut_size && !r->variants[i].on_gtao)
+            return i;
     return -1;
 }
 
@@ -77,15 +85,19 @@ static void add_variant(so_state *st, const char *text, const so_lut *lut, int o
     v->lut = lut;
     row->kind = v->kind, row->mapping = v->mapping, row->weighting = v->weighting, row->on_gtao = on_gtao;
     row->lut_size = lut ? lut->size : 0, row->lut_axes = lut ? lut->axes : SO_AXES_ANGLES;
+    row->lut_bc4 = lut ? lut->bc4 : 0;
     so_variant_label(v, row->label, sizeof row->label);
     if (lut && lut->axes == SO_AXES_COSINES)
         strcat(row->label, "-cosines");
+    if (lut && lut->bc4)
+        strcat(row->label, "-bc4");
     if (on_gtao)
         strcat(row->label, " on GTAO");
 }
 
 /* ao, lagarde, 4 cone-exact, 4 cone-oat, the LUTs (16, 32, [64], 32
- * cosines), then ao, lagarde, cone-exact:exp2-alpha and lut 32 on GTAO. */
+ * cosines, 16 and 32 BC4), then ao, lagarde, cone-exact:exp2-alpha and lut
+ * 32 on GTAO. */
 static void setup_variants(so_state *st)
 {
     static const char *const cones[] = {"drobot", "uludag", "exp2-alpha", "exp2-perceptual"};
@@ -101,6 +113,8 @@ static void setup_variants(so_state *st)
         if (st->luts[s].data)
             add_variant(st, "lut", &st->luts[s], 0);
     add_variant(st, "lut", &st->lut_cosines, 0);
+    for (int s = 0; s < BC4_SIZES; ++s)
+        add_variant(st, "lut", &st->bc4[s], 0);
     add_variant(st, "ao", NULL, 1);
     add_variant(st, "lagarde", NULL, 1);
     add_variant(st, "cone-exact:exp2-alpha", NULL, 1);
@@ -119,7 +133,21 @@ static int build_lut(so_state *st, so_lut *lut, int size, so_lut_axes axes, so_l
     row->seconds = seconds_now() - t0;
     so_lut_interpolation_error(lut, st->out->lut_points, 1u, st->ctx->threads, &row->max_interpolation_error,
                                &row->rms_interpolation_error);
-    row->size = size, row->axes = axes, row->axes_name = so_lut_axes_name(axes);
+    row->size = size, row->axes = axes, row->axes_name = so_lut_axes_name(axes), row->format = "float";
+    row->quadrature_error = lut->max_error_estimate;
+    return 0;
+}
+
+/* The table `src` as shipped in BC4 into lut, measured into row. */
+static int ship_lut_bc4(so_state *st, const so_lut *src, so_lut *lut, so_lut_row *row, gt_error *e)
+{
+    double t0 = seconds_now();
+    if (so_lut_bc4(src, lut) != 0)
+        return gt_error_set(e, "specular-occlusion LUT", "out of memory");
+    row->seconds = seconds_now() - t0;
+    so_lut_interpolation_error(lut, st->out->lut_points, 1u, st->ctx->threads, &row->max_interpolation_error,
+                               &row->rms_interpolation_error);
+    row->size = lut->size, row->axes = lut->axes, row->axes_name = so_lut_axes_name(lut->axes), row->format = "BC4";
     row->quadrature_error = lut->max_error_estimate;
     return 0;
 }
@@ -141,6 +169,9 @@ static int build_luts(so_state *st, gt_error *e)
             if (lut == &scratch)
                 so_lut_free(&scratch);
         }
+    for (int s = 0; s < BC4_SIZES; ++s) /* 16 and 32, as the talk ships them */
+        if (ship_lut_bc4(st, &st->luts[s], &st->bc4[s], &st->out->luts[st->out->lut_count++], e) != 0)
+            return -1;
     return 0;
 }
 
@@ -411,6 +442,8 @@ static void free_state(so_state *st)
 {
     for (int s = 0; s < LUT_SIZES; ++s)
         so_lut_free(&st->luts[s]);
+    for (int s = 0; s < BC4_SIZES; ++s)
+        so_lut_free(&st->bc4[s]);
     so_lut_free(&st->lut_cosines);
     for (int d = 0; d < SO_STUDY_DEFINITIONS; ++d)
         for (int i = 0; i < st->case_count; ++i) {

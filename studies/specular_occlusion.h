@@ -12,8 +12,9 @@
  *
  * Computed:
  *  - the cone/lobe LUT (GGX) at sizes 16, 32 (and 64 in production) in both
- *    axis parametrisations: generation time, quadrature error estimate and
- *    trilinear interpolation error at random points;
+ *    axis parametrisations, and 16 and 32 (angles) as shipped in BC4:
+ *    generation time, quadrature error estimate and trilinear interpolation
+ *    error at random points;
  *  - every variant (realtime/specular_occlusion_screen.h) scored per
  *    roughness by DSSIM and RMSE against specocc.V, means over the scenes;
  *    the main ones again on GTAO's inputs;
@@ -40,7 +41,7 @@ enum {
     SO_STUDY_ROUGHNESSES = 3,
     SO_STUDY_MAX_SCENES = 16,
     SO_STUDY_MAX_VARIANTS = 20,
-    SO_STUDY_MAX_LUTS = 6,
+    SO_STUDY_MAX_LUTS = 8,
     SO_STUDY_DEFINITIONS = 3, /* the reference definitions the aperture is fitted to */
     SO_STUDY_HEATMAPS = 4
 };
@@ -52,6 +53,7 @@ typedef struct {
     so_ao_weighting weighting;
     int lut_size;                /* SO_VARIANT_LUT: entries per axis */
     so_lut_axes lut_axes;        /* SO_VARIANT_LUT */
+    int lut_bc4;                 /* SO_VARIANT_LUT: the table as shipped, BC4 (so_lut_bc4) */
     int on_gtao;                 /* fed by GTAO's AO and bent normal instead of the reference's */
     char label[64];              /* for display: "cone-exact:exp2-alpha", "lut-ggx-32 on GTAO" */
     double dssim[SO_STUDY_ROUGHNESSES], rmse[SO_STUDY_ROUGHNESSES]; /* means over the scenes */
@@ -63,7 +65,8 @@ typedef struct {
     int size;
     so_lut_axes axes;
     const char *axes_name; /* so_lut_axes_name(axes) */
-    double seconds;        /* generation */
+    const char *format;    /* "float" or "BC4" (decoded from BC4 as shipped) */
+    double seconds;        /* generation (BC4: encoding and decoding) */
     double quadrature_error, max_interpolation_error, rms_interpolation_error;
 } so_lut_row;
 
@@ -105,6 +108,8 @@ int specular_occlusion_study(const study_context *ctx, so_study_result *out, gt_
  * mapping for the cone variants only), or -1. */
 int so_study_find(const so_study_result *r, so_variant_kind kind, so_aperture_mapping mapping, int lut_size,
                   so_lut_axes lut_axes, int on_gtao);
+/* The row of the BC4 table of `lut_size` (angles, reference inputs), or -1. */
+int so_study_find_bc4(const so_study_result *r, int lut_size);
 
 /* The rows of the heatmaps k = 0..3: AO, Lagarde, cone/cone exact with
  * exp2(-3.32 alpha^2), the LUT 32^3 (angles), all on the reference's inputs. */
