@@ -30,13 +30,19 @@ static void to_screen(const camera_view *v, vec3 c, float *x, float *y)
 /* Depth of pixel j's surface (its tangent plane) along the eye ray through
  * screen point (x, y), clamped to its neighbourhood's depths
  * (core/heightfield_model.h). */
+/* The eye ray through screen point (x, y), scaled to unit depth along the axis. */
+static vec3 eye_ray(const camera_view *v, float x, float y)
+{
+    float sx = (2.0f * x / (float)v->width - 1.0f) * v->tan_half_yfov * v->aspect;
+    float sy = (1.0f - 2.0f * y / (float)v->height) * v->tan_half_yfov;
+    return v3_add(v->forward, v3_add(v3_scale(v->right, sx), v3_scale(v->up, sy)));
+}
+
 static float surface_depth(const heightfield_settings *hs, long j, float x, float y)
 {
     const camera_view *v = &hs->gb->view;
     const surface_hit *h = &hs->gb->hits[j];
-    float sx = (2.0f * x / (float)v->width - 1.0f) * v->tan_half_yfov * v->aspect;
-    float sy = (1.0f - 2.0f * y / (float)v->height) * v->tan_half_yfov;
-    vec3 w = v3_add(v->forward, v3_add(v3_scale(v->right, sx), v3_scale(v->up, sy)));
+    vec3 w = eye_ray(v, x, y);
     float nw = v3_dot(h->ng, w);
     float depth = v3_dot(h->ng, v3_sub(h->p, v->origin)) / nw;
     if (!(fabsf(nw) >= HEIGHTFIELD_MIN_FACING * v3_length(w) && depth > 0.0f))
@@ -241,6 +247,49 @@ int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d)
         tau = cell_exit;
     }
     return 1;
+}
+
+/* cos of the angle from v of the height field's surface at screen point
+ * (x, y), seen from p; -2 where nothing counts (off the image, background,
+ * the start pixel, beyond max_distance). */
+static float surface_cos_angle(const heightfield_settings *hs, vec3 p, vec3 v, float x, float y, int x0, int y0)
+{
+    const camera_view *view = &hs->gb->view;
+    int px = (int)floorf(x), py = (int)floorf(y);
+    if (px < 0 || py < 0 || px >= view->width || py >= view->height || (px == x0 && py == y0))
+        return -2.0f;
+    long j = (long)py * view->width + px;
+    if (!hs->gb->mask[j])
+        return -2.0f;
+    vec3 q = v3_add(view->origin, v3_scale(eye_ray(view, x, y), surface_depth(hs, j, x, y)));
+    vec3 d = v3_sub(q, p);
+    float length = v3_length(d);
+    return length > 0.0f && length <= hs->max_distance ? v3_dot(d, v) / length : -2.0f;
+}
+
+float heightfield_horizon(const heightfield_settings *hs, vec3 p, vec3 v, vec3 s)
+{
+    const camera_view *view = &hs->gb->view;
+    vec3 c0 = to_camera(view, p), c1 = to_camera(view, v3_add(p, v3_scale(s, 1e-3f * c0.z)));
+    float x0, y0, x1, y1;
+    to_screen(view, c0, &x0, &y0);
+    to_screen(view, c1, &x1, &y1);
+    float length = hypotf(x1 - x0, y1 - y0), best = -1.0f;
+    if (!(length > 0.0f) || !(c0.z > 0.0f))
+        return (float)M_PI;
+    float dx = (x1 - x0) / length, dy = (y1 - y0) / length;
+    int xs = (int)floorf(x0), ys = (int)floorf(y0);
+    const float eps = 1e-3f;
+    for (float tau = 0.0f;;) {
+        int cx = (int)floorf(x0 + (tau + eps) * dx), cy = (int)floorf(y0 + (tau + eps) * dy);
+        if (cx < 0 || cy < 0 || cx >= view->width || cy >= view->height)
+            break;
+        float exit = fmaxf(fminf(boundary(x0, dx, cx, 1), boundary(y0, dy, cy, 1)), tau + eps);
+        best = fmaxf(best, surface_cos_angle(hs, p, v, x0 + (tau + eps) * dx, y0 + (tau + eps) * dy, xs, ys));
+        best = fmaxf(best, surface_cos_angle(hs, p, v, x0 + (exit - eps) * dx, y0 + (exit - eps) * dy, xs, ys));
+        tau = exit;
+    }
+    return best > -1.0f ? acosf(fminf(best, 1.0f)) : (float)M_PI;
 }
 
 /* Per sample one cosine- and one uniform-distributed direction from the same
