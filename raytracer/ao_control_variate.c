@@ -32,7 +32,7 @@ static void pixel_horizons(const heightfield_settings *hs, const surface_hit *hi
     h->v = v;
     frame f = slice_horizons_frame(h);
     for (int k = 0; k < SLICE_HORIZON_SIDES; ++k)
-        theta[k] = heightfield_horizon(hs, hit->p, v, slice_horizons_side(&f, k));
+        theta[k] = heightfield_horizon(hs, hit->p, hit->ns, v, slice_horizons_side(&f, k));
     slice_horizons_init(h, v, hit->ns, theta);
 }
 
