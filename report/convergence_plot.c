@@ -38,13 +38,20 @@ int convergence_plot(const ao_convergence_result *r, const char *dir, gt_error *
                      "threads; RMSE 1e-6 stands for 0)'\n"
                      "set logscale xy\nset xlabel 'seconds'\nset ylabel 'RMSE'\nset key bottom left\nset grid\n",
                      rows, columns, r->request.width, r->request.height, r->request.threads);
-    for (int i = 0; i < r->scene_count && n < (int)sizeof script - 512; ++i)
+    for (int i = 0; i < r->scene_count && n < (int)sizeof script - 512; ++i) {
+        const ao_convergence_scene *s = &r->scenes[i];
+        char title[160];
+        if (s->kind[CONVERGENCE_PLAIN] == TARGET_AT_FIRST && s->kind[CONVERGENCE_CV] == TARGET_AT_FIRST)
+            snprintf(title, sizeof title, "%s: both below RMSE %.3g at the first render", s->scene, r->request.target);
+        else
+            snprintf(title, sizeof title, "%s: control variate %.2fx faster to RMSE %.3g", s->scene, s->speedup,
+                     r->request.target);
         n += snprintf(script + n, sizeof script - (size_t)n,
-                      "set title '%s: %.2fx faster to RMSE %.3g'\n"
+                      "set title '%s'\n"
                       "plot '%s' index %d using 2:3 with linespoints title 'plain', "
                       "'' index %d using 2:3 with linespoints title 'control variate', %g with lines dt 2 notitle\n",
-                      r->scenes[i].scene, r->scenes[i].speedup, r->request.target, data, 2 * i, 2 * i + 1,
-                      r->request.target);
+                      title, data, 2 * i, 2 * i + 1, r->request.target);
+    }
     snprintf(script + n, sizeof script - (size_t)n, "unset multiplot\n");
     return gnuplot_render(script, png, 1200, 400 * rows, e);
 }

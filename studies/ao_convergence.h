@@ -22,6 +22,9 @@
 #include "core/error.h"
 
 enum { AO_CONVERGENCE_MAX_POINTS = 16, AO_CONVERGENCE_MAX_SCENES = 16, AO_CONVERGENCE_FIRST_SPP = 16 };
+/* Each render of a series is timed this many times, the best kept (the
+ * machine may be shared). */
+enum { AO_CONVERGENCE_PASSES = 2 };
 
 typedef enum { CONVERGENCE_PLAIN, CONVERGENCE_CV, CONVERGENCE_MODES } convergence_mode;
 
