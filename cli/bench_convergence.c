@@ -65,30 +65,42 @@ static void print_result(const ao_convergence_result *r)
            worst >= 1.0 ? worst : 1.0 / worst, worst >= 1.0 ? "slower" : "faster");
 }
 
+/* One option into the request; 0, or an exit status. */
+static int parse_option(int c, const char *arg, ao_convergence_request *rq, const char **dir)
+{
+    long v = 0;
+    switch (c) {
+    case 'o': *dir = arg; return 0;
+    case 'W': return cli_parse_int("--width", arg, 8, 4096, &v) ? EXIT_USER_ERROR : (rq->width = (int)v, 0);
+    case 'H': return cli_parse_int("--height", arg, 8, 4096, &v) ? EXIT_USER_ERROR : (rq->height = (int)v, 0);
+    case 't': return cli_parse_int("--threads", arg, 1, 1024, &v) ? EXIT_USER_ERROR : (rq->threads = (int)v, 0);
+    case 'R':
+        return cli_parse_int("--reference-spp", arg, 16, 1 << 20, &v) ? EXIT_USER_ERROR
+                                                                       : (rq->reference_spp = (int)v, 0);
+    case 'M': return cli_parse_int("--max-spp", arg, 16, 1 << 20, &v) ? EXIT_USER_ERROR : (rq->max_spp = (int)v, 0);
+    case 'T': return cli_parse_double("--target", arg, 1e-6, 1.0, &rq->target) ? EXIT_USER_ERROR : 0;
+    default: return cli_usage_error("bench convergence");
+    }
+}
+
 int bench_convergence(int argc, char **argv)
 {
     static const struct option longs[] = {
-        {"width", required_argument, 0, 'W'},         {"height", required_argument, 0, 'H'},
-        {"threads", required_argument, 0, 't'},       {"reference-spp", required_argument, 0, 'R'},
-        {"max-spp", required_argument, 0, 'M'},       {"target", required_argument, 0, 'T'},
-        {"help", no_argument, 0, 'h'},                {0, 0, 0, 0}};
+        {"width", required_argument, 0, 'W'},   {"height", required_argument, 0, 'H'},
+        {"threads", required_argument, 0, 't'}, {"reference-spp", required_argument, 0, 'R'},
+        {"max-spp", required_argument, 0, 'M'}, {"target", required_argument, 0, 'T'},
+        {"help", no_argument, 0, 'h'},          {0, 0, 0, 0}};
     ao_convergence_request rq = ao_convergence_default_request(threads_default());
     const char *dir = "bench_convergence";
-    long value;
-    double target;
     int c;
     while ((c = getopt_long(argc, argv, "ho:", longs, NULL)) != -1) {
-        switch (c) {
-        case 'o': dir = optarg; break;
-        case 'W': if (cli_parse_int("--width", optarg, 8, 4096, &value)) return EXIT_USER_ERROR; rq.width = (int)value; break;
-        case 'H': if (cli_parse_int("--height", optarg, 8, 4096, &value)) return EXIT_USER_ERROR; rq.height = (int)value; break;
-        case 't': if (cli_parse_int("--threads", optarg, 1, 1024, &value)) return EXIT_USER_ERROR; rq.threads = (int)value; break;
-        case 'R': if (cli_parse_int("--reference-spp", optarg, 16, 1 << 20, &value)) return EXIT_USER_ERROR; rq.reference_spp = (int)value; break;
-        case 'M': if (cli_parse_int("--max-spp", optarg, 16, 1 << 20, &value)) return EXIT_USER_ERROR; rq.max_spp = (int)value; break;
-        case 'T': if (cli_parse_double("--target", optarg, 1e-6, 1.0, &target)) return EXIT_USER_ERROR; rq.target = target; break;
-        case 'h': print_help(); return EXIT_OK;
-        default: return cli_usage_error("bench convergence");
+        if (c == 'h') {
+            print_help();
+            return EXIT_OK;
         }
+        int status = parse_option(c, optarg, &rq, &dir);
+        if (status != 0)
+            return status;
     }
     if (optind < argc)
         return cli_failf("bench convergence", "unexpected argument '%s'", argv[optind]);

@@ -14,7 +14,8 @@
 
 static void print_help(void)
 {
-    printf("usage: gtlab bench rays|specular-occlusion|gtao|multibounce|fit|sphere-light|convergence [options]\n"
+    printf("usage: gtlab bench rays|specular-occlusion|gtao|multibounce|fit|sphere-light|convergence\n"
+           "       [options]\n"
            "       (gtlab bench NAME --help for gtao, multibounce, fit, sphere-light and convergence)\n\n"
            "usage: gtlab bench rays|specular-occlusion [--scene S] [--width W] [--height H] [--threads T] [--repeats R]\n"
            "\n"
@@ -114,7 +115,7 @@ int verb_bench(int argc, char **argv)
     }
     int specular = optind < argc && strcmp(argv[optind], "specular-occlusion") == 0;
     if (optind >= argc || (strcmp(argv[optind], "rays") != 0 && !specular))
-        return cli_failf("bench", "name a benchmark: rays, specular-occlusion, gtao, multibounce, fit, sphere-light or convergence "
-                                  "(see 'gtlab bench --help')");
+        return cli_failf("bench", "name a benchmark: rays, specular-occlusion, gtao, multibounce, fit, sphere-light "
+                                  "or convergence (see 'gtlab bench --help')");
     return run_named(specular, scene_spec, (int)width, (int)height, (int)threads, (int)repeats);
 }

@@ -30,19 +30,13 @@ static void to_screen(const camera_view *v, vec3 c, float *x, float *y)
 /* Depth of pixel j's surface (its tangent plane) along the eye ray through
  * screen point (x, y), clamped to its neighbourhood's depths
  * (core/heightfield_model.h). */
-/* The eye ray through screen point (x, y), scaled to unit depth along the axis. */
-static vec3 eye_ray(const camera_view *v, float x, float y)
-{
-    float sx = (2.0f * x / (float)v->width - 1.0f) * v->tan_half_yfov * v->aspect;
-    float sy = (1.0f - 2.0f * y / (float)v->height) * v->tan_half_yfov;
-    return v3_add(v->forward, v3_add(v3_scale(v->right, sx), v3_scale(v->up, sy)));
-}
-
 static float surface_depth(const heightfield_settings *hs, long j, float x, float y)
 {
     const camera_view *v = &hs->gb->view;
     const surface_hit *h = &hs->gb->hits[j];
-    vec3 w = eye_ray(v, x, y);
+    float sx = (2.0f * x / (float)v->width - 1.0f) * v->tan_half_yfov * v->aspect;
+    float sy = (1.0f - 2.0f * y / (float)v->height) * v->tan_half_yfov;
+    vec3 w = v3_add(v->forward, v3_add(v3_scale(v->right, sx), v3_scale(v->up, sy)));
     float nw = v3_dot(h->ng, w);
     float depth = v3_dot(h->ng, v3_sub(h->p, v->origin)) / nw;
     if (!(fabsf(nw) >= HEIGHTFIELD_MIN_FACING * v3_length(w) && depth > 0.0f))

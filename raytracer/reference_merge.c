@@ -41,7 +41,8 @@ static int check_not_adaptive(const image *img, const char *name, gt_error *e)
  * written before the control variate). */
 static int check_same_control_variate(const image *first, const image *other, const char *name, gt_error *e)
 {
-    const char *a = image_get_attribute(first, ATTR_CONTROL_VARIATE), *b = image_get_attribute(other, ATTR_CONTROL_VARIATE);
+    const char *a = image_get_attribute(first, ATTR_CONTROL_VARIATE);
+    const char *b = image_get_attribute(other, ATTR_CONTROL_VARIATE);
     a = a ? a : "none";
     b = b ? b : "none";
     if (strcmp(a, b) != 0)

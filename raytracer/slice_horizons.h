@@ -25,13 +25,14 @@
  * where T = U it is a/2 + beta U / 2 (C at the edge), whose beta atan(beta / a)
  * integrates by parts to elementary functions (slice_horizons.c); each bin
  * is cut where U(psi) crosses h_k (beta(psi) = -a cot h_k, solved in closed
- * form) and at the antiderivatives' seam. So G is exact to rounding (1e-15),
- * and an open hemisphere gives exactly 1.
+ * form) and at the antiderivatives' seam. So G is exact up to rounding, and
+ * an open hemisphere gives exactly 1.
  *
  * An AO sample V(w) of either estimator then becomes V(w) - beta (g(w) - G),
  * with the same mean for any beta fixed independently of the sample and,
  * where the depth buffer describes the occluders (beta = 1), almost no
- * variance. A pixel whose normal faces away from the eye (a <= 0) gets
+ * variance (beta here is the coefficient, not beta(psi) above). A pixel
+ * whose normal faces away from the eye (a <= 1e-3) gets
  * g = 1, G = 1: its samples are left as they are. */
 #ifndef GTLAB_RAYTRACER_SLICE_HORIZONS_H
 #define GTLAB_RAYTRACER_SLICE_HORIZONS_H

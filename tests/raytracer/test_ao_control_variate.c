@@ -158,7 +158,8 @@ static void test_hidden_occluder(void)
     snprintf(s.name, sizeof s.name, "floor under a hidden ceiling");
     CHECK(add_quad(&s, 0.0f, 1.0f) == 0 && add_quad(&s, 1.5f, -1.0f) == 0);
     /* Looking down 22 degrees, 20 degrees half-field: the ceiling stays out of view. */
-    camera cam = {v3(0.0f, 1.2f, 2.0f), v3(0.0f, 0.0f, -1.0f), v3(0.0f, 1.0f, 0.0f), 40.0f * (float)M_PI / 180.0f, 32, 32};
+    camera cam = {v3(0.0f, 1.2f, 2.0f), v3(0.0f, 0.0f, -1.0f), v3(0.0f, 1.0f, 0.0f), 40.0f * (float)M_PI / 180.0f,
+                  32, 32};
     image plain = render(&s, &cam, AO_CONTROL_VARIATE_NONE, 256, 0, 5, 2);
     image cv = render(&s, &cam, AO_CONTROL_VARIATE_HEIGHTFIELD, 256, 0, 6, 2);
     const float *mask = image_channel_data(&plain, CH_MASK);

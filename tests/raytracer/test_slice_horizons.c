@@ -66,7 +66,8 @@ static void test_side_integrals(void)
             n = v3_normalize(v3_add(n, v3_scale(v, 1.1f - v3_dot(n, v))));
         integrand_ctx c = {n, frame_from_normal(v), 0.3 + 2.6 * rnd(), 0.0, 0};
         int k = (int)(rnd() * SLICE_HORIZON_SIDES);
-        double cosine, uniform, lo = 2.0 * M_PI * k / SLICE_HORIZON_SIDES, hi = 2.0 * M_PI * (k + 1) / SLICE_HORIZON_SIDES;
+        double cosine, uniform, lo = 2.0 * M_PI * k / SLICE_HORIZON_SIDES;
+        double hi = 2.0 * M_PI * (k + 1) / SLICE_HORIZON_SIDES;
         slice_horizons_side_integrals(n, &c.f, c.h, k, &cosine, &uniform);
         /* The reference splits psi finely: its inner integrand has kinks in psi. */
         double ref_cos = 0.0, ref_uni = 0.0;
