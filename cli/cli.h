@@ -27,6 +27,7 @@ int bench_multibounce(int argc, char **argv);
 int bench_fit(int argc, char **argv);
 int bench_sphere_light(int argc, char **argv);
 int bench_gtao(int argc, char **argv);
+int bench_convergence(int argc, char **argv);
 
 /* Subcommands in their own files (cli/<verb>_<name>.c), dispatched by
  * verb_fit.c, verb_check.c, verb_lut.c and verb_approx.c. */

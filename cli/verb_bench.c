@@ -14,8 +14,9 @@
 
 static void print_help(void)
 {
-    printf("usage: gtlab bench rays|specular-occlusion|gtao|multibounce|fit|sphere-light [options]\n"
-           "       (gtlab bench NAME --help for gtao, multibounce, fit and sphere-light)\n\n"
+    printf("usage: gtlab bench rays|specular-occlusion|gtao|multibounce|fit|sphere-light|convergence\n"
+           "       [options]\n"
+           "       (gtlab bench NAME --help for gtao, multibounce, fit, sphere-light and convergence)\n\n"
            "usage: gtlab bench rays|specular-occlusion [--scene S] [--width W] [--height H] [--threads T] [--repeats R]\n"
            "\n"
            "Measures, in one run, on the same scene, camera and machine:\n"
@@ -37,7 +38,8 @@ static void print_help(void)
            "  --repeats R    passes per figure (default 3)\n"
            "\n"
            "Other benchmarks, each with --help: gtlab bench gtao (GTAO in the talk's configuration\n"
-           "at 1920x1080 and every preset's cost per pixel), multibounce, fit, sphere-light.\n");
+           "at 1920x1080 and every preset's cost per pixel), multibounce, fit, sphere-light,\n"
+           "convergence (AO time to RMSE 0.01, plain against the height-field control variate).\n");
 }
 
 static void print_rays(const ray_throughput_result *r)
@@ -113,7 +115,7 @@ int verb_bench(int argc, char **argv)
     }
     int specular = optind < argc && strcmp(argv[optind], "specular-occlusion") == 0;
     if (optind >= argc || (strcmp(argv[optind], "rays") != 0 && !specular))
-        return cli_failf("bench", "name a benchmark: rays, specular-occlusion, gtao, multibounce, fit or sphere-light "
-                                  "(see 'gtlab bench --help')");
+        return cli_failf("bench", "name a benchmark: rays, specular-occlusion, gtao, multibounce, fit, sphere-light "
+                                  "or convergence (see 'gtlab bench --help')");
     return run_named(specular, scene_spec, (int)width, (int)height, (int)threads, (int)repeats);
 }

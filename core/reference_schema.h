@@ -146,6 +146,7 @@
 #define ATTR_TECHNIQUE "gtlab.technique" /* approx output: the technique */
 #define ATTR_APPROX "gtlab.approx"       /* approx specular-occlusion: the variant's label */
 #define ATTR_LUT "gtlab.lut"             /* a LUT's axes and parametrisation */
+#define ATTR_CONTROL_VARIATE "gtlab.control_variate" /* ao: "none" or "heightfield"; absent: none */
 /* integer */
 #define ATTR_SPP "gtlab.spp"
 #define ATTR_SEED "gtlab.seed"

@@ -12,11 +12,23 @@
 #define GTLAB_RAYTRACER_AO_INTEGRATOR_H
 
 #include "raytracer/render_loop.h"
+#include "raytracer/slice_horizons.h"
 
 typedef struct {
     float max_distance; /* V = 1 beyond it; INFINITY for none */
+    /* Per G-buffer pixel, the horizons of the height-field control variate
+     * (raytracer/ao_control_variate.h): ao.V and ao.Vuniform samples become
+     * V - g + G. NULL: plain sampling. */
+    const slice_horizons *control_variate;
 } ao_settings;
 
 integrator ao_integrator(const embree_scene *es, const ao_settings *settings);
+
+/* Traces the AO rays of samples first_index .. first_index + count - 1
+ * (count <= SAMPLE_BATCH) from dimension pair `pair` into rays[0 .. 2 count)
+ * (cosine, uniform, cosine, ...; afterwards tfar < 0 where blocked or below
+ * the geometric surface); returns the number of rays traced. */
+int ao_trace_batch(const embree_scene *es, const pixel_context *px, float max_distance, uint32_t pair,
+                   uint32_t first_index, int count, struct RTCRay *rays);
 
 #endif

@@ -25,9 +25,26 @@ const reference_option reference_option_max_distance = {
     .parse = parse_max_distance,
 };
 
+static int parse_control_variate(reference_request *rq, const char *value, gt_error *e)
+{
+    if (ao_control_variate_parse(value, &rq->control_variate) != 0)
+        return gt_error_set(e, "--control-variate", "'%s' is not none or heightfield", value);
+    return 0;
+}
+
+static const reference_option option_control_variate = {
+    .name = "control-variate",
+    .value = "CV",
+    .help = "none (default) or heightfield: each\nsample's height-field visibility g\n"
+            "from the depth buffer's horizons as\na control variate, V - g + exact \\int g\n"
+            "(ao.V and ao.Vuniform; unbiased)",
+    .parse = parse_control_variate,
+};
+
 void ao_quantity_set_defaults(reference_request *rq)
 {
     rq->max_distance = INFINITY;
+    rq->control_variate = AO_CONTROL_VARIATE_NONE;
 }
 
 int ao_quantity_write_settings(const reference_request *rq, image *out)
@@ -36,15 +53,42 @@ int ao_quantity_write_settings(const reference_request *rq, image *out)
                                     rq->sampling.target_stderr);
 }
 
+/* ao's settings and, always, its sampling mode: merge compares it. */
+static int write_settings(const reference_request *rq, image *out)
+{
+    return ao_quantity_write_settings(rq, out) |
+           image_set_attribute(out, ATTR_CONTROL_VARIATE, ao_control_variate_name(rq->control_variate));
+}
+
+typedef struct {
+    ao_settings settings;
+    ao_control_variate_field field;
+} ao_state;
+
 static int prepare(const reference_pass *pass, void **state, integrator *it, gt_error *e)
 {
-    ao_settings *ao = malloc(sizeof *ao);
+    ao_state *ao = calloc(1, sizeof *ao);
     if (!ao)
         return gt_error_set(e, pass->scene_spec, "out of memory");
-    ao->max_distance = pass->req->max_distance;
+    ao->settings.max_distance = pass->req->max_distance;
+    if (pass->req->control_variate == AO_CONTROL_VARIATE_HEIGHTFIELD) {
+        if (ao_control_variate_build(&ao->field, pass->es, pass->gb, pass->req->max_distance,
+                                     pass->req->sampling.threads) != 0) {
+            free(ao);
+            return gt_error_set(e, pass->scene_spec, "out of memory for the control variate's horizons");
+        }
+        ao->settings.control_variate = ao->field.pixels;
+    }
     *state = ao;
-    *it = ao_integrator(pass->es, ao);
+    *it = ao_integrator(pass->es, &ao->settings);
     return 0;
+}
+
+static void release(void *state)
+{
+    ao_state *ao = state;
+    ao_control_variate_free(&ao->field);
+    free(ao);
 }
 
 const reference_quantity_descriptor reference_quantity_ao = {
@@ -53,9 +97,9 @@ const reference_quantity_descriptor reference_quantity_ao = {
             "bent.X/Y/Z (bent normal), each with .stderr and the exact\n"
             "accumulators (.sum, .sumeven, .peak, .m1_*, .m2_*) that 'gtlab merge'\n"
             "combines",
-    .options = (const reference_option *const[]){&reference_option_max_distance, NULL},
+    .options = (const reference_option *const[]){&reference_option_max_distance, &option_control_variate, NULL},
     .set_defaults = ao_quantity_set_defaults,
     .prepare = prepare,
-    .release = free,
-    .write_settings = ao_quantity_write_settings,
+    .release = release,
+    .write_settings = write_settings,
 };

@@ -243,6 +243,48 @@ int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d)
     return 1;
 }
 
+/* cos of the in-slice angle from v of the surface seen at pixel (x, y)'s
+ * centre, seen from p: its offset d projected on the slice's plane (v, s).
+ * -2 where nothing counts: off the image, background, beyond max_distance,
+ * and on or below p's tangent plane (n . d <= 0), where the solid behind a
+ * point (away from the eye, so down) cannot reach the hemisphere. */
+static float centre_cos_angle(const heightfield_settings *hs, vec3 p, vec3 n, vec3 v, vec3 s, int x, int y)
+{
+    const camera_view *view = &hs->gb->view;
+    if (x < 0 || y < 0 || x >= view->width || y >= view->height)
+        return -2.0f;
+    long j = (long)y * view->width + x;
+    if (!hs->gb->mask[j])
+        return -2.0f;
+    vec3 d = v3_sub(hs->gb->hits[j].p, p);
+    float length = v3_length(d), dv = v3_dot(d, v), ds = v3_dot(d, s);
+    if (!(v3_dot(n, d) > 1e-4f * length) || !(ds > 0.0f) || !(length <= hs->max_distance))
+        return -2.0f;
+    return dv / sqrtf(dv * dv + ds * ds);
+}
+
+float heightfield_horizon(const heightfield_settings *hs, vec3 p, vec3 n, vec3 v, vec3 s)
+{
+    const camera_view *view = &hs->gb->view;
+    vec3 c0 = to_camera(view, p), c1 = to_camera(view, v3_add(p, v3_scale(s, 1e-3f * c0.z)));
+    float x0, y0, x1, y1;
+    to_screen(view, c0, &x0, &y0);
+    to_screen(view, c1, &x1, &y1);
+    float length = hypotf(x1 - x0, y1 - y0), best = -1.0f;
+    if (!(length > 0.0f) || !(c0.z > 0.0f))
+        return (float)M_PI;
+    float dx = (x1 - x0) / length, dy = (y1 - y0) / length;
+    int steps = (int)(hypotf((float)view->width, (float)view->height) + 1.0f);
+    for (int k = 1; k <= steps; ++k) {
+        int x = (int)floorf(x0 + (float)k * dx), y = (int)floorf(y0 + (float)k * dy);
+        if (x < 0 || y < 0 || x >= view->width || y >= view->height)
+            break;
+        float c = centre_cos_angle(hs, p, n, v, s, x, y);
+        best = c > best ? c : best;
+    }
+    return best > -1.0f ? acosf(best < 1.0f ? best : 1.0f) : (float)M_PI;
+}
+
 /* Per sample one cosine- and one uniform-distributed direction from the same
  * 2-D point (as ao_integrator.c); a direction below the geometric surface is
  * blocked by the surface itself. */

@@ -38,6 +38,18 @@ void heightfield_settings_free(heightfield_settings *hs);
  * height field (exposed for tests). */
 int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d);
 
+/* The horizon of the half-slice of p that leaves it along s (unit, s . v = 0,
+ * v the unit vector from p to the eye), for the hemisphere of n: the
+ * smallest angle from v, within the slice's plane, of the surface points
+ * seen at the centres of the pixels one pixel apart along the screen
+ * half-line p + t s projects to, out to the image's edge. Points on or below
+ * p's tangent plane, beyond max_distance, or on background pixels do not
+ * count. A direction of that half-plane at angle theta from v passes behind
+ * the height field about when theta exceeds it (the centres stand for each
+ * pixel's planar piece: a cheap horizon for the control variate, not the
+ * exact one of heightfield_unoccluded). pi when nothing is found. */
+float heightfield_horizon(const heightfield_settings *hs, vec3 p, vec3 n, vec3 v, vec3 s);
+
 integrator heightfield_ao_integrator(const heightfield_settings *settings);
 
 #endif

@@ -36,6 +36,22 @@ static int check_not_adaptive(const image *img, const char *name, gt_error *e)
     return 0;
 }
 
+/* Plain samples V and corrected ones V - g + G estimate the same mean with
+ * other variances: one render is one or the other. Absent means none (files
+ * written before the control variate). */
+static int check_same_control_variate(const image *first, const image *other, const char *name, gt_error *e)
+{
+    const char *a = image_get_attribute(first, ATTR_CONTROL_VARIATE);
+    const char *b = image_get_attribute(other, ATTR_CONTROL_VARIATE);
+    a = a ? a : "none";
+    b = b ? b : "none";
+    if (strcmp(a, b) != 0)
+        return gt_error_set(e, name, "its %s is %s, the first input's %s: plain and control-variate samples do not "
+                                     "merge into one render",
+                            ATTR_CONTROL_VARIATE, b, a);
+    return 0;
+}
+
 /* The attributes that must agree for a merge to make sense. */
 static int check_compatible(const image *first, const image *other, const char *name, gt_error *e)
 {
@@ -53,7 +69,7 @@ static int check_compatible(const image *first, const image *other, const char *
         if (!a || !b || strcmp(a, b) != 0)
             return gt_error_set(e, name, "its %s differs from the first input's: not parts of one render", keys[k]);
     }
-    return 0;
+    return check_same_control_variate(first, other, name, e);
 }
 
 /* Adds one block to the list, refusing it if it overlaps one there: those

@@ -7,6 +7,7 @@
 
 #include "core/image.h"
 #include "core/sky_environment.h"
+#include "raytracer/ao_control_variate.h"
 #include "raytracer/gbuffer.h"
 #include "raytracer/multibounce_integrator.h"
 #include "raytracer/reference_quantity.h"
@@ -38,6 +39,7 @@ typedef struct reference_request {
     sampling_settings sampling;
     normal_mode normals;
     float max_distance;               /* ao and heightfield-ao; INFINITY: none */
+    ao_control_variate control_variate; /* ao only: none (plain sampling) or heightfield */
     multibounce_settings multibounce; /* multibounce only: albedos, bounces */
     sphere_light_settings sphere_light; /* sphere-light only: the light */
     float roughness;                  /* specular-occlusion only: perceptual roughness, < 0: the material's */

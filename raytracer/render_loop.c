@@ -39,14 +39,17 @@ pixel_context pixel_context_prepare(const surface_hit *surface, uint32_t seed)
     pixel_context px = {surface,
                         frame_from_normal(surface->ns),
                         offset_ray_origin(surface->p, surface->ng),
-                        {hash_combine(seed, 0u), hash_combine(seed, 1u)}};
+                        {hash_combine(seed, 0u), hash_combine(seed, 1u)},
+                        -1};
     return px;
 }
 
 pixel_context pixel_context_at(const gbuffer *gb, int pixel, uint32_t seed)
 {
     uint32_t x = (uint32_t)(pixel % gb->width), y = (uint32_t)(pixel / gb->width);
-    return pixel_context_prepare(&gb->hits[pixel], pixel_seed(seed, x, y));
+    pixel_context px = pixel_context_prepare(&gb->hits[pixel], pixel_seed(seed, x, y));
+    px.pixel = pixel;
+    return px;
 }
 
 void sample_pair_points(const sample_pair_seeds *s, uint32_t first, int count, float *u0, float *u1)

@@ -34,6 +34,7 @@ typedef struct {
     frame shading;   /* orthonormal frame about the shading normal */
     vec3 ray_origin; /* the surface point lifted off the surface (offset_ray_origin) */
     uint32_t half_seed[2]; /* seeds of the even- and odd-sample sequences */
+    int pixel;             /* row-major G-buffer index (pixel_context_at), or -1 */
 } pixel_context;
 
 /* The context of a pixel whose sequence seed is pixel_seed(seed, x, y). */

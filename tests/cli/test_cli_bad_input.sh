@@ -77,6 +77,8 @@ mkdir -p "$work/a-folder"
 expect_error output-is-folder "a-folder: cannot write: is a folder" "" -- render ao --scene builtin:plane -o "$work/a-folder"
 expect_error unknown-builtin "builtin:teapot: unknown built-in scene" "$out" -- render ao --scene builtin:teapot -o "$out"
 expect_error unknown-quantity "unknown quantity 'fog'" "$out" -- render fog --scene builtin:plane -o "$out"
+expect_error bad-control-variate "--control-variate: 'gtao' is not none or heightfield" "$out" -- render ao --scene builtin:plane --control-variate gtao -o "$out"
+expect_error control-variate-not-ao "--control-variate: applies to ao only" "$out" -- render heightfield-ao --scene builtin:plane --control-variate heightfield -o "$out"
 expect_error unknown-verb "frobnicate: unknown verb" "" -- frobnicate
 expect_error unknown-option "render: invalid usage" "$out" -- render ao --scene builtin:plane --colour red -o "$out"
 expect_error normal-mode "--normal: 'bumpy'" "$out" -- render ao --scene builtin:plane --normal bumpy -o "$out"

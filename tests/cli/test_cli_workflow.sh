@@ -40,6 +40,18 @@ for channel in ao.V ao.V.stderr ao.Vuniform bent.X; do
   json_is max_abs == 0 "$work/stdout" && pass || fail "merged $channel differs from the whole: $(cat "$work/stdout" "$work/stderr")"
 done
 
+# The control variate's halves merge into its whole render; a plain half
+# and a control-variate half do not merge (one line naming the file).
+expect_ok cv-whole render ao "${common[@]}" --control-variate heightfield -o "$work/cv.exr"
+expect_ok cv-half-1 render ao "${common[@]}" --spp 16 --control-variate heightfield -o "$work/cv1.exr"
+expect_ok cv-half-2 render ao "${common[@]}" --spp 16 --sample-offset 16 --control-variate heightfield -o "$work/cv2.exr"
+expect_ok cv-merge merge "$work/cv1.exr" "$work/cv2.exr" -o "$work/cv_merged.exr"
+for channel in ao.V ao.V.stderr ao.Vuniform bent.X; do
+  run compare "$work/cv.exr" "$work/cv_merged.exr" --channel $channel --json
+  json_is max_abs == 0 "$work/stdout" && pass || fail "merged control-variate $channel differs: $(cat "$work/stdout" "$work/stderr")"
+done
+expect_error cv-mixed "h1.exr: its gtlab.control_variate is none" "$work/mixed.exr" -- merge "$work/cv2.exr" "$work/h1.exr" -o "$work/mixed.exr"
+
 # A built-in scene written as .glb renders as the built-in does.
 expect_ok scene-write scene write sphere-on-plane -o "$work/sop.glb"
 expect_ok render-builtin render ao --scene builtin:sphere-on-plane --width 48 --height 48 --spp 16 -o "$work/b.exr"
