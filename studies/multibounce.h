@@ -23,6 +23,7 @@
 #include <stdint.h>
 
 #include "fitters/fit_multibounce.h"
+#include "fitters/fit_multibounce_constrained.h"
 #include "studies/study.h"
 
 #define MULTIBOUNCE_STUDY_DIR "multibounce" /* the references, below the output folder */
@@ -125,6 +126,31 @@ typedef struct {
     double joint_fit_solve_seconds;
 } multibounce_performance;
 
+/* The shader's clamp max(V_d, cubic) (issue 25, item 4): where it binds,
+ * and the cubic refitted so that it never needs it (f >= V_d and f(1) = 1
+ * by construction: fitters/fit_multibounce_constrained.h) against the
+ * unconstrained refit, leave one scene out. */
+enum { MULTIBOUNCE_CLAMP_GRID = 1000 }; /* the (V_d, rho) grid: V_d = i/N, i = 1..N; rho = j/N, j = 0..N */
+
+typedef struct {
+    char scene[MBFIT_NAME_MAX];
+    double rmse_unconstrained, rmse_constrained; /* fitted without the scene, scored on it */
+} multibounce_clamp_heldout_row;
+
+typedef struct {
+    /* where the cubic falls below V_d, so that the max binds */
+    double domain_fraction_talk, domain_fraction_ours;    /* of the grid over (0, 1] x [0, 1] */
+    double domain_fraction_talk_rho0;                     /* of the grid's row rho = 0 */
+    double pixel_fraction_talk, pixel_fraction_ours;      /* weighted samples, below by > MBFIT_BELOW_MARGIN */
+    /* the constrained refit on all the data */
+    double corner[MULTIBOUNCE_CONSTRAINED_PARAMETERS];    /* g at (V_d, rho) = (0,0), (0,1), (1,0), (1,1) */
+    double coefficients[MULTIBOUNCE_COEFFICIENTS];        /* the same cubic as a0 a1 b0 b1 c0 c1 */
+    double rmse_constrained, rmse_unconstrained;          /* the latter with the max */
+    int heldout_count;
+    multibounce_clamp_heldout_row heldout[MULTIBOUNCE_STUDY_SCENES];
+    double heldout_mean_difference, heldout_difference_se; /* constrained - unconstrained, over the scenes */
+} multibounce_clamp;
+
 typedef struct {
     /* the references */
     int bounces, spp, width, height;
@@ -144,6 +170,7 @@ typedef struct {
     multibounce_validation_row validation[MULTIBOUNCE_STUDY_SCENES * MULTIBOUNCE_STUDY_ALBEDOS];
     multibounce_validation_row validation_mean; /* over the rows, scene "mean" */
     multibounce_performance performance;
+    multibounce_clamp clamp;
 } multibounce_study_result;
 
 int multibounce_study(const study_context *ctx, multibounce_study_result *out, gt_error *e);

@@ -27,4 +27,8 @@ int multibounce_validate(const multibounce_state *st, const char *const *scenes,
 int multibounce_write_plot_data(const multibounce_data *d, const multibounce_analysis *a, const char *figures,
                                 gt_error *e);
 
+/* out->clamp from the data and their analysis (multibounce_clamp.c). */
+int multibounce_study_clamp(const multibounce_data *d, const multibounce_analysis *a, multibounce_clamp *out,
+                            gt_error *e);
+
 #endif

@@ -1,0 +1,14 @@
+/* The multi-bounce section's parts kept in their own files: the
+ * measurements of the talk's shortcuts and assumptions (issue 25), each a
+ * subsection, an object of the section's summary.json object and rows of
+ * the claims table. Internal to report/. */
+#ifndef GTLAB_REPORT_MULTIBOUNCE_SECTION_PARTS_H
+#define GTLAB_REPORT_MULTIBOUNCE_SECTION_PARTS_H
+
+#include "report/report_context.h"
+#include "studies/multibounce.h"
+
+/* The shader's clamp (item 4; multibounce_clamp_section.c). */
+void multibounce_clamp_section(report_context *ctx, const multibounce_study_result *r, cJSON *summary);
+
+#endif
