@@ -11,4 +11,7 @@
 /* The shader's clamp (item 4; multibounce_clamp_section.c). */
 void multibounce_clamp_section(report_context *ctx, const multibounce_study_result *r, cJSON *summary);
 
+/* The bounce count (item 3; multibounce_bounces_section.c). */
+void multibounce_bounces_section(report_context *ctx, const multibounce_study_result *r, cJSON *summary);
+
 #endif

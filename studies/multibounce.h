@@ -151,6 +151,38 @@ typedef struct {
     double heldout_mean_difference, heldout_difference_se; /* constrained - unconstrained, over the scenes */
 } multibounce_clamp;
 
+/* The bounce count (issue 25, item 3): the published a, b, c were fitted
+ * to 4-bounce references; the same scenes, camera and samples rendered at
+ * 1, 2, 4 and unlimited inter-reflections (Russian roulette,
+ * raytracer/multibounce_integrator.h: unbiased but for paths cut after
+ * 1024 bounces), the joint linear refit of each, and how far the talk's
+ * curve is from each refit. */
+enum { MULTIBOUNCE_BOUNCE_COUNTS = 4 };
+#define MULTIBOUNCE_DISTANCE_ALBEDO_MIN 0.1 /* the distance's albedo range: the talk's, 0.1 to 0.9 */
+#define MULTIBOUNCE_DISTANCE_ALBEDO_MAX 0.9
+
+typedef struct {
+    char bounces[8];                               /* "1", "2", "4", "inf" */
+    double coefficients[MULTIBOUNCE_COEFFICIENTS]; /* joint linear refit: a0 a1 b0 b1 c0 c1 */
+    double jackknife_se[MULTIBOUNCE_COEFFICIENTS]; /* over scenes */
+    double rmse_refit, rmse_talk, rmse_v_d;        /* on these references' samples (models with the max) */
+    double mean_gain;                              /* weighted mean of V'_d - V_d: the light the bounces add */
+    /* RMS over the grid V_d = i/100, rho = 0.1 .. 0.9 (step 0.01) of the
+     * talk's curve minus the refit's (both with the max), and its jackknife s.e. */
+    double talk_distance, talk_distance_se;
+    double render_seconds;                         /* of the extra renders (0 for the study's own 4) */
+} multibounce_bounce_row;
+
+typedef struct {
+    multibounce_bounce_row rows[MULTIBOUNCE_BOUNCE_COUNTS];
+    int closest;                                   /* the row whose refit the talk's curve is closest to */
+    /* distance at 4 bounces minus the least distance at the other counts,
+     * with its jackknife standard error: <= 0 when 4 bounces match best */
+    double four_minus_best_other, four_minus_best_other_se;
+    int best_other;                                /* the row of that least distance */
+    int path_limit;                                /* bounces after which "inf" cuts a path */
+} multibounce_bounce_study;
+
 typedef struct {
     /* the references */
     int bounces, spp, width, height;
@@ -171,6 +203,7 @@ typedef struct {
     multibounce_validation_row validation_mean; /* over the rows, scene "mean" */
     multibounce_performance performance;
     multibounce_clamp clamp;
+    multibounce_bounce_study bounce_counts;
 } multibounce_study_result;
 
 int multibounce_study(const study_context *ctx, multibounce_study_result *out, gt_error *e);

@@ -5,6 +5,7 @@
 #define GTLAB_STUDIES_MULTIBOUNCE_PARTS_H
 
 #include "raytracer/multibounce_integrator.h"
+#include "raytracer/reference_render.h"
 #include "studies/multibounce.h"
 
 typedef struct {
@@ -30,5 +31,10 @@ int multibounce_write_plot_data(const multibounce_data *d, const multibounce_ana
 /* out->clamp from the data and their analysis (multibounce_clamp.c). */
 int multibounce_study_clamp(const multibounce_data *d, const multibounce_analysis *a, multibounce_clamp *out,
                             gt_error *e);
+
+/* out->bounce_counts: renders scenes[0..MULTIBOUNCE_STUDY_SCENES) as `req`
+ * but for the bounce count, reuses st->data for 4 (multibounce_bounces.c). */
+int multibounce_study_bounces(const study_context *ctx, const reference_request *req, const multibounce_state *st,
+                              const char *const *scenes, multibounce_bounce_study *out, gt_error *e);
 
 #endif
