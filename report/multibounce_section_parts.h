@@ -14,4 +14,7 @@ void multibounce_clamp_section(report_context *ctx, const multibounce_study_resu
 /* The bounce count (item 3; multibounce_bounces_section.c). */
 void multibounce_bounces_section(report_context *ctx, const multibounce_study_result *r, cJSON *summary);
 
+/* f on GTAO's V_d (item 5; multibounce_gtao_section.c). */
+void multibounce_gtao_section(report_context *ctx, const multibounce_study_result *r, cJSON *summary);
+
 #endif

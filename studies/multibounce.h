@@ -183,6 +183,27 @@ typedef struct {
     int path_limit;                                /* bounces after which "inf" cuts a path */
 } multibounce_bounce_study;
 
+/* "Agnostic to the source of AO" (issue 25, item 5): the talk's f applied
+ * to GTAO's V_d (presets low to ultra, one frame, unbounded radius, run on
+ * each reference's own G-buffer) and to the reference V_d (even-sample
+ * half), both scored against the reference V'_d (odd half) over every scene
+ * and albedo (each weighted equally). GTAO's share of the final squared
+ * error is 1 - MSE(f(reference V_d)) / MSE(f(GTAO V_d)). */
+enum { MULTIBOUNCE_GTAO_PRESETS = 4 };
+
+typedef struct {
+    char preset[16];
+    double rmse_gtao_input;      /* f(GTAO V_d) against V'_d */
+    double rmse_reference_input; /* f(reference V_d) against V'_d */
+    double rmse_gtao_v_d;        /* GTAO's V_d against the reference V_d (even half) */
+    double gtao_share, gtao_share_se;   /* jackknife over scenes */
+    double difference, difference_se;   /* rmse_gtao_input - rmse_reference_input; jackknife */
+} multibounce_gtao_row;
+
+typedef struct {
+    multibounce_gtao_row rows[MULTIBOUNCE_GTAO_PRESETS];
+} multibounce_gtao_study;
+
 typedef struct {
     /* the references */
     int bounces, spp, width, height;
@@ -204,6 +225,7 @@ typedef struct {
     multibounce_performance performance;
     multibounce_clamp clamp;
     multibounce_bounce_study bounce_counts;
+    multibounce_gtao_study gtao_input;
 } multibounce_study_result;
 
 int multibounce_study(const study_context *ctx, multibounce_study_result *out, gt_error *e);

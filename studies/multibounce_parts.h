@@ -37,4 +37,9 @@ int multibounce_study_clamp(const multibounce_data *d, const multibounce_analysi
 int multibounce_study_bounces(const study_context *ctx, const reference_request *req, const multibounce_state *st,
                               const char *const *scenes, multibounce_bounce_study *out, gt_error *e);
 
+/* out->gtao_input: GTAO run on the G-buffer of each reference written to
+ * <output>/MULTIBOUNCE_STUDY_DIR/<scene>.exr (multibounce_gtao.c). */
+int multibounce_study_gtao(const study_context *ctx, const multibounce_state *st, const char *const *scenes,
+                           multibounce_gtao_study *out, gt_error *e);
+
 #endif
