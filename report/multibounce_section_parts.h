@@ -17,4 +17,7 @@ void multibounce_bounces_section(report_context *ctx, const multibounce_study_re
 /* f on GTAO's V_d (item 5; multibounce_gtao_section.c). */
 void multibounce_gtao_section(report_context *ctx, const multibounce_study_result *r, cJSON *summary);
 
+/* The premise, albedo contrast (item 1; multibounce_contrast_section.c). */
+void multibounce_contrast_section(report_context *ctx, const multibounce_study_result *r, cJSON *summary);
+
 #endif

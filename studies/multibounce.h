@@ -204,6 +204,36 @@ typedef struct {
     multibounce_gtao_row rows[MULTIBOUNCE_GTAO_PRESETS];
 } multibounce_gtao_study;
 
+/* The model's premise, "neighbouring albedos ~ the albedo of the current
+ * point" (issue 25, item 1): per-object-albedo references (--albedo scene,
+ * 4 bounces, the study's cameras and samples) of scenes whose floor and
+ * objects differ in albedo, against the study's uniform references at each
+ * pixel's own albedo (same paths, so V_d is the same to the bit): the
+ * premise's error alone, the talk's f on both, and a correction a shader can
+ * afford, rho_eff = rho + w (mean rho over a screen neighbourhood - rho),
+ * w fitted (closed-form least squares) and held out by scene. */
+enum { MULTIBOUNCE_CONTRAST_SCENES = 3, MULTIBOUNCE_CONTRASTS = 4 };
+
+typedef struct {
+    char scene[MULTIBOUNCE_STUDY_NAME];
+    double floor_albedo, object_albedo;
+    double premise_rms_object, premise_rms_floor; /* RMS of V'_d(contrast) - V'_d(uniform, own albedo) */
+    double rmse_contrast, rmse_uniform;  /* f(V_d, own albedo) against V'_d of the contrast / uniform scene */
+    double rmse_corrected_held_out;      /* f(V_d, rho_eff), w fitted without the scene */
+} multibounce_contrast_row;
+
+typedef struct {
+    int count;
+    multibounce_contrast_row rows[MULTIBOUNCE_CONTRAST_SCENES * MULTIBOUNCE_CONTRASTS];
+    int radius_px;                       /* the neighbourhood: (2 r + 1)^2 pixels */
+    double weight;                       /* w fitted on every scene */
+    double weight_held_out[MULTIBOUNCE_CONTRAST_SCENES];
+    /* means over the rows, and the jackknife over scenes */
+    double mean_rmse_contrast, mean_rmse_uniform, mean_rmse_corrected;
+    double premise_cost, premise_cost_se;       /* mean rmse_contrast - rmse_uniform */
+    double correction_gain, correction_gain_se; /* mean rmse_corrected_held_out - rmse_contrast */
+} multibounce_contrast_study;
+
 typedef struct {
     /* the references */
     int bounces, spp, width, height;
@@ -226,6 +256,7 @@ typedef struct {
     multibounce_clamp clamp;
     multibounce_bounce_study bounce_counts;
     multibounce_gtao_study gtao_input;
+    multibounce_contrast_study contrast;
 } multibounce_study_result;
 
 int multibounce_study(const study_context *ctx, multibounce_study_result *out, gt_error *e);

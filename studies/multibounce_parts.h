@@ -42,4 +42,10 @@ int multibounce_study_bounces(const study_context *ctx, const reference_request 
 int multibounce_study_gtao(const study_context *ctx, const multibounce_state *st, const char *const *scenes,
                            multibounce_gtao_study *out, gt_error *e);
 
+/* out->contrast (multibounce_contrast.c); the uniform references are
+ * st's scenes `scenes` at albedos `albedos` (their count MULTIBOUNCE_STUDY_ALBEDOS). */
+int multibounce_study_contrast(const study_context *ctx, const reference_request *req, const multibounce_state *st,
+                               const char *const *scenes, const float *albedos, multibounce_contrast_study *out,
+                               gt_error *e);
+
 #endif
