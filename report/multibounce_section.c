@@ -389,6 +389,7 @@ int multibounce_section(report_context *ctx, const multibounce_study_result *r, 
     multibounce_bounces_section(ctx, r, summary);
     multibounce_gtao_section(ctx, r, summary);
     multibounce_contrast_section(ctx, r, summary);
+    multibounce_colour_section(ctx, r, summary);
     performance_section(ctx, &r->performance);
     return 0;
 }

@@ -20,4 +20,7 @@ void multibounce_gtao_section(report_context *ctx, const multibounce_study_resul
 /* The premise, albedo contrast (item 1; multibounce_contrast_section.c). */
 void multibounce_contrast_section(report_context *ctx, const multibounce_study_result *r, cJSON *summary);
 
+/* Colour (item 2; multibounce_colour_section.c). */
+void multibounce_colour_section(report_context *ctx, const multibounce_study_result *r, cJSON *summary);
+
 #endif

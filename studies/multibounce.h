@@ -234,6 +234,30 @@ typedef struct {
     double correction_gain, correction_gain_se; /* mean rmse_corrected_held_out - rmse_contrast */
 } multibounce_contrast_study;
 
+/* Colour (issue 25, item 2): per-object coloured albedo references
+ * (--albedo scene, 4 bounces), the talk's f per channel, f(V_d, rho_c),
+ * against multibounce.R/G/B; DSSIM per channel and of the luminance (Rec.
+ * 709 weights) of rho_c V'_c, the shaded result, with the noise floors;
+ * beside it f with one grey albedo (the luminance of rho) in every channel. */
+enum { MULTIBOUNCE_COLOUR_SCENES = 3 };
+#define MULTIBOUNCE_LUMINANCE_R 0.2126 /* Rec. 709 / sRGB luminance weights */
+#define MULTIBOUNCE_LUMINANCE_G 0.7152
+#define MULTIBOUNCE_LUMINANCE_B 0.0722
+
+typedef struct {
+    char scene[MULTIBOUNCE_STUDY_NAME];
+    double dssim_channel[3], noise_floor_dssim_channel[3];         /* R, G, B of V'_c */
+    double dssim_luminance, noise_floor_dssim_luminance;          /* of sum_c w_c rho_c V'_c */
+    double dssim_luminance_grey;                                  /* f with the luminance of rho in every channel */
+    double rmse_luminance, rmse_luminance_grey;
+} multibounce_colour_row;
+
+typedef struct {
+    multibounce_colour_row rows[MULTIBOUNCE_COLOUR_SCENES];
+    double mean_dssim_luminance, mean_dssim_luminance_se; /* over the scenes (s.d. / sqrt(scenes)) */
+    double mean_noise_floor_dssim_luminance, mean_dssim_luminance_grey;
+} multibounce_colour_study;
+
 typedef struct {
     /* the references */
     int bounces, spp, width, height;
@@ -257,6 +281,7 @@ typedef struct {
     multibounce_bounce_study bounce_counts;
     multibounce_gtao_study gtao_input;
     multibounce_contrast_study contrast;
+    multibounce_colour_study colour;
 } multibounce_study_result;
 
 int multibounce_study(const study_context *ctx, multibounce_study_result *out, gt_error *e);

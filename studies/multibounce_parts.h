@@ -48,4 +48,8 @@ int multibounce_study_contrast(const study_context *ctx, const reference_request
                                const char *const *scenes, const float *albedos, multibounce_contrast_study *out,
                                gt_error *e);
 
+/* out->colour (multibounce_colour.c). */
+int multibounce_study_colour(const study_context *ctx, const reference_request *req, multibounce_colour_study *out,
+                             gt_error *e);
+
 #endif
