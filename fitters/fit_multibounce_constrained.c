@@ -36,6 +36,103 @@ static int constrained_residuals(void *user, const double *params, double *resid
     return 0;
 }
 
+/* ---- The starting point: the exact optimum over the corner values ------------------ */
+
+/* The form is linear in the corner values G = s^2 >= 0: V'_d - x = phi . G
+ * with phi_k = x (1 - x) B_k(x, rho). So the fit is non-negative least
+ * squares in 4 unknowns, solved exactly by trying every support (the
+ * optimum is the unconstrained optimum on its support, feasible, and of
+ * least cost among the feasible ones). Ceres then starts at s = sqrt(G), a
+ * stationary point of the squared form, and confirms it. */
+typedef struct {
+    double m[MULTIBOUNCE_CONSTRAINED_PARAMETERS][MULTIBOUNCE_CONSTRAINED_PARAMETERS];
+    double v[MULTIBOUNCE_CONSTRAINED_PARAMETERS];
+} normal_equations;
+
+static void accumulate_normal_equations(const multibounce_data *d, normal_equations *n)
+{
+    memset(n, 0, sizeof *n);
+    const double unit[MULTIBOUNCE_CONSTRAINED_PARAMETERS] = {1.0, 1.0, 1.0, 1.0};
+    for (size_t i = 0; i < d->count; ++i) {
+        const multibounce_sample *sample = &d->samples[i];
+        double phi[MULTIBOUNCE_CONSTRAINED_PARAMETERS];
+        constrained_gradient(unit, sample->visibility, sample->albedo, phi); /* 2 phi at s = 1 */
+        const double t = (double)sample->multibounce - sample->visibility;
+        for (int j = 0; j < MULTIBOUNCE_CONSTRAINED_PARAMETERS; ++j) {
+            n->v[j] += sample->weight * 0.5 * phi[j] * t;
+            for (int k = 0; k < MULTIBOUNCE_CONSTRAINED_PARAMETERS; ++k)
+                n->m[j][k] += sample->weight * 0.25 * phi[j] * phi[k];
+        }
+    }
+}
+
+/* Solves the equations restricted to the corners in `support` (a bit set) by
+ * Gauss-Jordan elimination with partial pivoting; 0, or -1 when singular. */
+static int solve_support(const normal_equations *n, unsigned support, double *g)
+{
+    int idx[MULTIBOUNCE_CONSTRAINED_PARAMETERS], m = 0;
+    double a[MULTIBOUNCE_CONSTRAINED_PARAMETERS][MULTIBOUNCE_CONSTRAINED_PARAMETERS + 1];
+    for (int k = 0; k < MULTIBOUNCE_CONSTRAINED_PARAMETERS; ++k)
+        if (support & (1u << k))
+            idx[m++] = k;
+    for (int r = 0; r < m; ++r) {
+        for (int c = 0; c < m; ++c)
+            a[r][c] = n->m[idx[r]][idx[c]];
+        a[r][m] = n->v[idx[r]];
+    }
+    for (int c = 0; c < m; ++c) {
+        int pivot = c;
+        for (int r = c + 1; r < m; ++r)
+            pivot = fabs(a[r][c]) > fabs(a[pivot][c]) ? r : pivot;
+        if (!(fabs(a[pivot][c]) > 1e-300))
+            return -1;
+        for (int k = 0; k <= m; ++k) {
+            double swap = a[c][k];
+            a[c][k] = a[pivot][k];
+            a[pivot][k] = swap;
+        }
+        for (int r = 0; r < m; ++r)
+            for (int k = m; k >= c && r != c; --k)
+                a[r][k] -= a[r][c] / a[c][c] * a[c][k];
+    }
+    memset(g, 0, sizeof(double) * MULTIBOUNCE_CONSTRAINED_PARAMETERS);
+    for (int r = 0; r < m; ++r)
+        g[idx[r]] = a[r][m] / a[r][r];
+    return 0;
+}
+
+/* G^T M G - 2 G . v: the cost up to a constant. */
+static double support_cost(const normal_equations *n, const double *g)
+{
+    double cost = 0.0;
+    for (int j = 0; j < MULTIBOUNCE_CONSTRAINED_PARAMETERS; ++j) {
+        cost -= 2.0 * g[j] * n->v[j];
+        for (int k = 0; k < MULTIBOUNCE_CONSTRAINED_PARAMETERS; ++k)
+            cost += g[j] * n->m[j][k] * g[k];
+    }
+    return cost;
+}
+
+/* s = sqrt(G) of the non-negative least-squares optimum. */
+static void exact_start(const multibounce_data *d, double *s)
+{
+    normal_equations n;
+    accumulate_normal_equations(d, &n);
+    double best[MULTIBOUNCE_CONSTRAINED_PARAMETERS] = {0}, best_cost = 0.0;
+    for (unsigned support = 1; support < (1u << MULTIBOUNCE_CONSTRAINED_PARAMETERS); ++support) {
+        double g[MULTIBOUNCE_CONSTRAINED_PARAMETERS];
+        int feasible = solve_support(&n, support, g) == 0;
+        for (int k = 0; k < MULTIBOUNCE_CONSTRAINED_PARAMETERS; ++k)
+            feasible &= g[k] >= 0.0;
+        if (feasible && support_cost(&n, g) < best_cost) {
+            best_cost = support_cost(&n, g);
+            memcpy(best, g, sizeof best);
+        }
+    }
+    for (int k = 0; k < MULTIBOUNCE_CONSTRAINED_PARAMETERS; ++k)
+        s[k] = sqrt(best[k]);
+}
+
 static void finish_fit(const double *s, multibounce_constrained_fit *out)
 {
     memcpy(out->s, s, sizeof out->s);
@@ -53,8 +150,8 @@ int multibounce_fit_constrained(const multibounce_data *d, multibounce_constrain
     constrained_block *blocks = malloc(block_count * sizeof *blocks);
     if (!blocks)
         return gt_error_set(e, "multibounce fit", "out of memory");
-    /* Away from s = 0, where every derivative of s^2 vanishes. */
-    double s[MULTIBOUNCE_CONSTRAINED_PARAMETERS] = {0.5, 0.5, 0.5, 0.5};
+    double s[MULTIBOUNCE_CONSTRAINED_PARAMETERS];
+    exact_start(d, s);
     gt_fit_options options = gt_fit_default_options();
     options.linear_solver = GT_FIT_DENSE_NORMAL_CHOLESKY;
     options.max_iterations = 200;

@@ -115,6 +115,16 @@ static void test_constraints_hold_on_violating_data(void)
     }
     CHECK_NEAR(a.mean_difference, mean, 1e-15);
     CHECK(a.difference_se > 0.0);
+    /* The optimum: no feasible point nearby (any s is feasible) fits better. */
+    const double best = multibounce_constrained_rmse(&d, a.fit.s);
+    int optimal = 1;
+    for (int trial = 0; trial < 64; ++trial) {
+        double s[4];
+        for (int k = 0; k < 4; ++k)
+            s[k] = a.fit.s[k] + 0.05 * gaussian(7000u + 4u * (uint64_t)trial + (uint64_t)k);
+        optimal &= multibounce_constrained_rmse(&d, s) >= best - 1e-12;
+    }
+    CHECK_MSG(optimal, "a perturbed parameter vector fits better than the fit");
     multibounce_data_free(&d);
 }
 
