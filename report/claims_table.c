@@ -98,6 +98,12 @@ void claims_table_render(const claims_table *t, report *doc, cJSON *summary)
                      "when the interval lies where the claim holds, refuted when it lies wholly outside, not "
                      "significant when it straddles the boundary.",
                      CLAIM_Z);
+    int verdicts[3] = {0};
+    for (int i = 0; i < t->count; ++i)
+        verdicts[t->rows[i].verdict]++;
+    report_finding(doc, "Claims of the talks",
+                   "%d measured (table at the end): %d reproduced, %d refuted, %d not significant at 95%%.",
+                   t->count, verdicts[CLAIM_REPRODUCED], verdicts[CLAIM_REFUTED], verdicts[CLAIM_NOT_SIGNIFICANT]);
     cJSON *list = cJSON_AddArrayToObject(summary, "claims");
     report_rows(doc, list, kColumns, (int)(sizeof kColumns / sizeof kColumns[0]), t->rows, sizeof t->rows[0],
                 t->count);

@@ -55,8 +55,9 @@ const char *claim_verdict_name(claim_verdict v);
  * or a full one (CLAIMS_MAX rows) ignores it. */
 void claims_table_add(claims_table *t, const claim *c);
 
-/* The table in the report (heading "Claims of the talks") and the array
- * "claims" in summary; nothing when the table is empty. */
+/* The table in the report (heading "Claims of the talks"), a line counting
+ * the verdicts in its "At a glance" list, and the array "claims" in
+ * summary; nothing when the table is empty. */
 void claims_table_render(const claims_table *t, report *doc, cJSON *summary);
 
 #endif

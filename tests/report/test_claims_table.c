@@ -96,6 +96,8 @@ int main(void)
     claims_table_render(&t, &doc, summary);
     test_summary(&t, summary);
     test_table(&t, doc.md);
+    CHECK(doc.findings_md && strstr(doc.findings_md, "3 measured (table at the end): 1 reproduced, 1 refuted, 1 not "
+                                                     "significant"));
     report_free(&doc);
     cJSON_Delete(summary);
     return check_report("test_claims_table");
