@@ -179,6 +179,7 @@ static int run_stages(report_context *ctx, const int selected[STAGE_MAX])
         output_set_begin();
         fprintf(stderr, "gtlab all: %s done in %.1f s\n", stages[i]->title, seconds_now() - t0);
     }
+    claims_table_render(ctx->claims, ctx->doc, ctx->summary);
     if (report_write(ctx->doc, ctx->study.output_dir, &e) != 0 || write_summary(ctx, &e) != 0)
         return cli_fail(&e);
     return EXIT_OK;
@@ -187,7 +188,8 @@ static int run_stages(report_context *ctx, const int selected[STAGE_MAX])
 int verb_all(int argc, char **argv)
 {
     stage_count = (int)technique_stages(stages, STAGE_MAX);
-    report_context ctx = {{"results", QUALITY_PREVIEW, threads_default()}, NULL, NULL};
+    static claims_table claims;
+    report_context ctx = {{"results", QUALITY_PREVIEW, threads_default()}, NULL, NULL, &claims};
     int selected[STAGE_MAX];
     for (int i = 0; i < STAGE_MAX; ++i)
         selected[i] = 1;

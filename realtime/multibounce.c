@@ -97,6 +97,31 @@ multibounce_model multibounce_model_anchored(const double p[MULTIBOUNCE_ANCHORED
     return m;
 }
 
+double multibounce_constrained_g(const double s[MULTIBOUNCE_CONSTRAINED_PARAMETERS], double visibility,
+                                 double albedo)
+{
+    const double x = visibility, r = albedo;
+    return (1.0 - x) * ((1.0 - r) * s[0] * s[0] + r * s[1] * s[1]) + x * ((1.0 - r) * s[2] * s[2] + r * s[3] * s[3]);
+}
+
+double multibounce_constrained_eval(const double s[MULTIBOUNCE_CONSTRAINED_PARAMETERS], double visibility,
+                                    double albedo)
+{
+    const double x = visibility;
+    return x + x * (1.0 - x) * multibounce_constrained_g(s, x, albedo);
+}
+
+multibounce_model multibounce_model_constrained(const double s[MULTIBOUNCE_CONSTRAINED_PARAMETERS])
+{
+    /* x (1 - x)(P + (R - P) x) = P x + (R - 2P) x^2 + (P - R) x^3, P = P0 + (P1 - P0) rho, R likewise. */
+    const double p0 = s[0] * s[0], p1 = s[1] * s[1], r0 = s[2] * s[2], r1 = s[3] * s[3];
+    multibounce_model m = {.degree = 1,
+                           .a = {p0 - r0, (p1 - p0) - (r1 - r0)},
+                           .b = {r0 - 2.0 * p0, (r1 - r0) - 2.0 * (p1 - p0)},
+                           .c = {1.0 + p0, p1 - p0}};
+    return m;
+}
+
 double gtao_multibounce(const multibounce_model *model, double visibility, double albedo)
 {
     multibounce_cubic c = multibounce_cubic_at(model, albedo);

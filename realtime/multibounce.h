@@ -69,6 +69,30 @@ void multibounce_model_gradient(int degree, double visibility, double albedo, do
 enum { MULTIBOUNCE_ANCHORED_PARAMETERS = 4 };
 multibounce_model multibounce_model_anchored(const double p[MULTIBOUNCE_ANCHORED_PARAMETERS]);
 
+/* The constrained form (gtlab's; issue 25, item 4): the talk's model (a, b,
+ * c linear in rho) restricted to the cubics with V'_d(1) = 1 and
+ * V'_d >= V_d for every V_d and rho in [0, 1], so that the shader's
+ * max(V_d, .) never binds. Every such cubic is
+ *     V'_d = V_d + V_d (1 - V_d) g(V_d, rho),
+ * g bilinear in (V_d, rho) with non-negative values at the four corners of
+ * the unit square (a bilinear g is >= 0 on the square iff it is at the
+ * corners), and conversely. Written with the corner values as squares,
+ *     g = (1-x)(1-rho) s00^2 + (1-x) rho s01^2 + x (1-rho) s10^2 + x rho s11^2,
+ * the constraints hold for any s by construction: x (1 - x) g >= 0, and the
+ * term vanishes at x = 1 (exactly, in floating point too). With P(rho) =
+ * g(0, rho), R(rho) = g(1, rho): a = P - R, b = R - 2P, c = 1 + P.
+ * s = {s00, s01, s10, s11}. */
+enum { MULTIBOUNCE_CONSTRAINED_PARAMETERS = 4 };
+/* g(x, rho) of the form above. */
+double multibounce_constrained_g(const double s[MULTIBOUNCE_CONSTRAINED_PARAMETERS], double visibility,
+                                 double albedo);
+/* V'_d = x + x (1 - x) g(x, rho): the form in which the constraints are exact. */
+double multibounce_constrained_eval(const double s[MULTIBOUNCE_CONSTRAINED_PARAMETERS], double visibility,
+                                    double albedo);
+/* The same cubic as a degree-1 model (a, b, c linear in rho; equal to the
+ * form above up to rounding). */
+multibounce_model multibounce_model_constrained(const double s[MULTIBOUNCE_CONSTRAINED_PARAMETERS]);
+
 /* GTAOMultiBounce(visibility, albedo) of the talk with any coefficients:
  * max(x, cubic(x)). The max keeps V'_d >= V_d, which the physics guarantees
  * (a bounce only adds light) and a fitted cubic need not. */

@@ -8,6 +8,7 @@
 #include <stdio.h>
 
 #include "report/multibounce_section.h"
+#include "report/multibounce_section_parts.h"
 #include "report/gnuplot_plot.h"
 #include "report/report_table.h"
 #include "studies/multibounce.h"
@@ -384,6 +385,11 @@ int multibounce_section(report_context *ctx, const multibounce_study_result *r, 
     findings(ctx, r);
     figures_section(ctx, r);
     validation_section(ctx, r, summary);
+    multibounce_clamp_section(ctx, r, summary);
+    multibounce_bounces_section(ctx, r, summary);
+    multibounce_gtao_section(ctx, r, summary);
+    multibounce_contrast_section(ctx, r, summary);
+    multibounce_colour_section(ctx, r, summary);
     performance_section(ctx, &r->performance);
     return 0;
 }

@@ -15,6 +15,7 @@
 #include <cjson/cJSON.h>
 
 #include "core/error.h"
+#include "report/claims_table.h"
 #include "report/report_writer.h"
 #include "studies/study.h"
 
@@ -22,6 +23,7 @@ typedef struct {
     study_context study; /* output folder, quality, threads: what the studies saw */
     report *doc;
     cJSON *summary; /* summary.json: one member per section */
+    claims_table *claims; /* the talks' claims the sections measured (NULL: not gathered) */
 } report_context;
 
 #endif

@@ -3,7 +3,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
-enum { CELL_MAX = 128, COLUMNS_MAX = 32 };
+enum { CELL_MAX = 512, COLUMNS_MAX = 32 };
 
 static const void *field(const void *row, const report_column *c) { return (const char *)row + c->offset; }
 

@@ -23,6 +23,7 @@
 #include <stdint.h>
 
 #include "fitters/fit_multibounce.h"
+#include "fitters/fit_multibounce_constrained.h"
 #include "studies/study.h"
 
 #define MULTIBOUNCE_STUDY_DIR "multibounce" /* the references, below the output folder */
@@ -125,6 +126,138 @@ typedef struct {
     double joint_fit_solve_seconds;
 } multibounce_performance;
 
+/* The shader's clamp max(V_d, cubic) (issue 25, item 4): where it binds,
+ * and the cubic refitted so that it never needs it (f >= V_d and f(1) = 1
+ * by construction: fitters/fit_multibounce_constrained.h) against the
+ * unconstrained refit, leave one scene out. */
+enum { MULTIBOUNCE_CLAMP_GRID = 1000 }; /* the (V_d, rho) grid: V_d = i/N, i = 1..N; rho = j/N, j = 0..N */
+
+typedef struct {
+    char scene[MBFIT_NAME_MAX];
+    double rmse_unconstrained, rmse_constrained; /* fitted without the scene, scored on it */
+} multibounce_clamp_heldout_row;
+
+typedef struct {
+    /* where the cubic falls below V_d, so that the max binds */
+    double domain_fraction_talk, domain_fraction_ours;    /* of the grid over (0, 1] x [0, 1] */
+    double domain_fraction_talk_rho0;                     /* of the grid's row rho = 0 */
+    double pixel_fraction_talk, pixel_fraction_ours;      /* weighted samples, below by > MBFIT_BELOW_MARGIN */
+    /* the constrained refit on all the data */
+    double corner[MULTIBOUNCE_CONSTRAINED_PARAMETERS];    /* g at (V_d, rho) = (0,0), (0,1), (1,0), (1,1) */
+    double coefficients[MULTIBOUNCE_COEFFICIENTS];        /* the same cubic as a0 a1 b0 b1 c0 c1 */
+    double rmse_constrained, rmse_unconstrained;          /* the latter with the max */
+    int heldout_count;
+    multibounce_clamp_heldout_row heldout[MULTIBOUNCE_STUDY_SCENES];
+    double heldout_mean_difference, heldout_difference_se; /* constrained - unconstrained, over the scenes */
+} multibounce_clamp;
+
+/* The bounce count (issue 25, item 3): the published a, b, c were fitted
+ * to 4-bounce references; the same scenes, camera and samples rendered at
+ * 1, 2, 4 and unlimited inter-reflections (Russian roulette,
+ * raytracer/multibounce_integrator.h: unbiased but for paths cut after
+ * 1024 bounces), the joint linear refit of each, and how far the talk's
+ * curve is from each refit. */
+enum { MULTIBOUNCE_BOUNCE_COUNTS = 4 };
+#define MULTIBOUNCE_DISTANCE_ALBEDO_MIN 0.1 /* the distance's albedo range: the talk's, 0.1 to 0.9 */
+#define MULTIBOUNCE_DISTANCE_ALBEDO_MAX 0.9
+
+typedef struct {
+    char bounces[8];                               /* "1", "2", "4", "inf" */
+    double coefficients[MULTIBOUNCE_COEFFICIENTS]; /* joint linear refit: a0 a1 b0 b1 c0 c1 */
+    double jackknife_se[MULTIBOUNCE_COEFFICIENTS]; /* over scenes */
+    double rmse_refit, rmse_talk, rmse_v_d;        /* on these references' samples (models with the max) */
+    double mean_gain;                              /* weighted mean of V'_d - V_d: the light the bounces add */
+    /* RMS over the grid V_d = i/100, rho = 0.1 .. 0.9 (step 0.01) of the
+     * talk's curve minus the refit's (both with the max), and its jackknife s.e. */
+    double talk_distance, talk_distance_se;
+    double render_seconds;                         /* of the extra renders (0 for the study's own 4) */
+} multibounce_bounce_row;
+
+typedef struct {
+    multibounce_bounce_row rows[MULTIBOUNCE_BOUNCE_COUNTS];
+    int closest;                                   /* the row whose refit the talk's curve is closest to */
+    /* distance at 4 bounces minus the least distance at the other counts,
+     * with its jackknife standard error: <= 0 when 4 bounces match best */
+    double four_minus_best_other, four_minus_best_other_se;
+    int best_other;                                /* the row of that least distance */
+    int path_limit;                                /* bounces after which "inf" cuts a path */
+} multibounce_bounce_study;
+
+/* "Agnostic to the source of AO" (issue 25, item 5): the talk's f applied
+ * to GTAO's V_d (presets low to ultra, one frame, unbounded radius, run on
+ * each reference's own G-buffer) and to the reference V_d (even-sample
+ * half), both scored against the reference V'_d (odd half) over every scene
+ * and albedo (each weighted equally). GTAO's share of the final squared
+ * error is 1 - MSE(f(reference V_d)) / MSE(f(GTAO V_d)). */
+enum { MULTIBOUNCE_GTAO_PRESETS = 4 };
+
+typedef struct {
+    char preset[16];
+    double rmse_gtao_input;      /* f(GTAO V_d) against V'_d */
+    double rmse_reference_input; /* f(reference V_d) against V'_d */
+    double rmse_gtao_v_d;        /* GTAO's V_d against the reference V_d (even half) */
+    double gtao_share, gtao_share_se;   /* jackknife over scenes */
+    double difference, difference_se;   /* rmse_gtao_input - rmse_reference_input; jackknife */
+} multibounce_gtao_row;
+
+typedef struct {
+    multibounce_gtao_row rows[MULTIBOUNCE_GTAO_PRESETS];
+} multibounce_gtao_study;
+
+/* The model's premise, "neighbouring albedos ~ the albedo of the current
+ * point" (issue 25, item 1): per-object-albedo references (--albedo scene,
+ * 4 bounces, the study's cameras and samples) of scenes whose floor and
+ * objects differ in albedo, against the study's uniform references at each
+ * pixel's own albedo (same paths, so V_d is the same to the bit): the
+ * premise's error alone, the talk's f on both, and a correction a shader can
+ * afford, rho_eff = rho + w (mean rho over a screen neighbourhood - rho),
+ * w fitted (closed-form least squares) and held out by scene. */
+enum { MULTIBOUNCE_CONTRAST_SCENES = 3, MULTIBOUNCE_CONTRASTS = 4 };
+
+typedef struct {
+    char scene[MULTIBOUNCE_STUDY_NAME];
+    double floor_albedo, object_albedo;
+    double premise_rms_object, premise_rms_floor; /* RMS of V'_d(contrast) - V'_d(uniform, own albedo) */
+    double rmse_contrast, rmse_uniform;  /* f(V_d, own albedo) against V'_d of the contrast / uniform scene */
+    double rmse_corrected_held_out;      /* f(V_d, rho_eff), w fitted without the scene */
+} multibounce_contrast_row;
+
+typedef struct {
+    int count;
+    multibounce_contrast_row rows[MULTIBOUNCE_CONTRAST_SCENES * MULTIBOUNCE_CONTRASTS];
+    int radius_px;                       /* the neighbourhood: (2 r + 1)^2 pixels */
+    double weight;                       /* w fitted on every scene */
+    double weight_held_out[MULTIBOUNCE_CONTRAST_SCENES];
+    /* means over the rows, and the jackknife over scenes */
+    double mean_rmse_contrast, mean_rmse_uniform, mean_rmse_corrected;
+    double premise_cost, premise_cost_se;       /* mean rmse_contrast - rmse_uniform */
+    double correction_gain, correction_gain_se; /* mean rmse_corrected_held_out - rmse_contrast */
+} multibounce_contrast_study;
+
+/* Colour (issue 25, item 2): per-object coloured albedo references
+ * (--albedo scene, 4 bounces), the talk's f per channel, f(V_d, rho_c),
+ * against multibounce.R/G/B; DSSIM per channel and of the luminance (Rec.
+ * 709 weights) of rho_c V'_c, the shaded result, with the noise floors;
+ * beside it f with one grey albedo (the luminance of rho) in every channel. */
+enum { MULTIBOUNCE_COLOUR_SCENES = 3 };
+#define MULTIBOUNCE_LUMINANCE_R 0.2126 /* Rec. 709 / sRGB luminance weights */
+#define MULTIBOUNCE_LUMINANCE_G 0.7152
+#define MULTIBOUNCE_LUMINANCE_B 0.0722
+
+typedef struct {
+    char scene[MULTIBOUNCE_STUDY_NAME];
+    double dssim_channel[3], noise_floor_dssim_channel[3];         /* R, G, B of V'_c */
+    double dssim_luminance, noise_floor_dssim_luminance;          /* of sum_c w_c rho_c V'_c */
+    double dssim_luminance_grey;                                  /* f with the luminance of rho in every channel */
+    double rmse_luminance, rmse_luminance_grey;
+} multibounce_colour_row;
+
+typedef struct {
+    multibounce_colour_row rows[MULTIBOUNCE_COLOUR_SCENES];
+    double mean_dssim_luminance, mean_dssim_luminance_se; /* over the scenes (s.d. / sqrt(scenes)) */
+    double mean_noise_floor_dssim_luminance, mean_dssim_luminance_grey;
+} multibounce_colour_study;
+
 typedef struct {
     /* the references */
     int bounces, spp, width, height;
@@ -144,6 +277,11 @@ typedef struct {
     multibounce_validation_row validation[MULTIBOUNCE_STUDY_SCENES * MULTIBOUNCE_STUDY_ALBEDOS];
     multibounce_validation_row validation_mean; /* over the rows, scene "mean" */
     multibounce_performance performance;
+    multibounce_clamp clamp;
+    multibounce_bounce_study bounce_counts;
+    multibounce_gtao_study gtao_input;
+    multibounce_contrast_study contrast;
+    multibounce_colour_study colour;
 } multibounce_study_result;
 
 int multibounce_study(const study_context *ctx, multibounce_study_result *out, gt_error *e);

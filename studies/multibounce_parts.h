@@ -5,6 +5,7 @@
 #define GTLAB_STUDIES_MULTIBOUNCE_PARTS_H
 
 #include "raytracer/multibounce_integrator.h"
+#include "raytracer/reference_render.h"
 #include "studies/multibounce.h"
 
 typedef struct {
@@ -26,5 +27,29 @@ int multibounce_validate(const multibounce_state *st, const char *const *scenes,
  * (multibounce_plot_data.c). */
 int multibounce_write_plot_data(const multibounce_data *d, const multibounce_analysis *a, const char *figures,
                                 gt_error *e);
+
+/* out->clamp from the data and their analysis (multibounce_clamp.c). */
+int multibounce_study_clamp(const multibounce_data *d, const multibounce_analysis *a, multibounce_clamp *out,
+                            gt_error *e);
+
+/* out->bounce_counts: renders scenes[0..MULTIBOUNCE_STUDY_SCENES) as `req`
+ * but for the bounce count, reuses st->data for 4 (multibounce_bounces.c). */
+int multibounce_study_bounces(const study_context *ctx, const reference_request *req, const multibounce_state *st,
+                              const char *const *scenes, multibounce_bounce_study *out, gt_error *e);
+
+/* out->gtao_input: GTAO run on the G-buffer of each reference written to
+ * <output>/MULTIBOUNCE_STUDY_DIR/<scene>.exr (multibounce_gtao.c). */
+int multibounce_study_gtao(const study_context *ctx, const multibounce_state *st, const char *const *scenes,
+                           multibounce_gtao_study *out, gt_error *e);
+
+/* out->contrast (multibounce_contrast.c); the uniform references are
+ * st's scenes `scenes` at albedos `albedos` (their count MULTIBOUNCE_STUDY_ALBEDOS). */
+int multibounce_study_contrast(const study_context *ctx, const reference_request *req, const multibounce_state *st,
+                               const char *const *scenes, const float *albedos, multibounce_contrast_study *out,
+                               gt_error *e);
+
+/* out->colour (multibounce_colour.c). */
+int multibounce_study_colour(const study_context *ctx, const reference_request *req, multibounce_colour_study *out,
+                             gt_error *e);
 
 #endif

@@ -554,6 +554,34 @@ static void test_settings(void)
     CHECK(strcmp(plan.quantities[2].name, "ao.V") == 0);
 }
 
+/* Issue 25: a per-object-albedo reference (--albedo scene) of a scene whose
+ * materials all have one grey albedo is bit-identical to the single-albedo
+ * reference at that albedo: the Cornell box (three materials) made all
+ * 0.73, at 4 and unlimited bounces, 1 and 2 threads. */
+static void test_equal_albedos_reduce_to_grey(void)
+{
+    scene s;
+    camera cam;
+    load("builtin:cornell", 24, &s, &cam);
+    for (int m = 0; m < s.material_count; ++m)
+        for (int c = 0; c < 3; ++c)
+            s.materials[m].base_color[c] = 0.73f;
+    const int bounces[2] = {4, MULTIBOUNCE_UNLIMITED};
+    for (int b = 0; b < 2; ++b) {
+        image coloured = render(&s, &cam, scene_albedo(bounces[b]), (sampling){16, 0, 5, 1 + b});
+        image single = render(&s, &cam, grey(bounces[b], 1, (const float[]){0.73f}), (sampling){16, 0, 5, 2 - b});
+        CHECK(covered_pixels(&single) > 300);
+        CHECK(channels_identical(&coloured, "ao.V", &single, "ao.V"));
+        const char *const rgb[3] = CH_MULTIBOUNCE_RGB;
+        for (int c = 0; c < 3; ++c)
+            CHECK_MSG(channels_identical(&coloured, rgb[c], &single, CH_MULTIBOUNCE), "bounces %d: %s", bounces[b],
+                      rgb[c]);
+        image_free(&coloured);
+        image_free(&single);
+    }
+    scene_free(&s);
+}
+
 int main(void)
 {
     test_settings();
@@ -563,5 +591,6 @@ int main(void)
     test_roulette_matches_fixed_depth();
     test_shared_paths();
     test_determinism_and_merge();
+    test_equal_albedos_reduce_to_grey();
     return check_report("test_multibounce");
 }
