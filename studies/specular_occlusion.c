@@ -36,6 +36,8 @@ typedef struct {
     so_variant variants[SO_STUDY_MAX_VARIANTS];
     int heatmaps[SO_STUDY_HEATMAPS];
     double dssim[SO_STUDY_MAX_VARIANTS][SO_STUDY_ROUGHNESSES], rmse[SO_STUDY_MAX_VARIANTS][SO_STUDY_ROUGHNESSES];
+    double case_dssim[SO_STUDY_MAX_VARIANTS][CASES_MAX]; /* per scored case, for paired differences */
+    int scored;
     double floor_dssim[SO_STUDY_ROUGHNESSES];
     double split_dssim[2][SO_STUDY_ROUGHNESSES], split_rmse[2][SO_STUDY_ROUGHNESSES], split_floor[SO_STUDY_ROUGHNESSES];
     aperture_case cases[SO_STUDY_DEFINITIONS][CASES_MAX];
@@ -287,9 +289,12 @@ static int score_variants(so_state *st, const aperture_case *c, const so_pixel_i
     int rc = approx ? 0 : gt_error_set(e, what, "out of memory");
     for (int v = 0; v < st->out->variant_count && rc == 0; ++v) {
         so_approx_evaluate(st->out->variants[v].on_gtao ? on_gtao : in, &st->variants[v], approx);
+        double before = st->dssim[v][ri];
         rc = add_scores(c->reference, approx, in->mask, in->width, in->height, what, &st->dssim[v][ri],
                         &st->rmse[v][ri], e);
+        st->case_dssim[v][st->scored] = st->dssim[v][ri] - before;
     }
+    st->scored++;
     free(approx);
     return rc;
 }
@@ -403,6 +408,23 @@ static int run_scene(so_state *st, const builtin_scene *b, gt_error *e)
 /* ---- the results --------------------------------------------------------------- */
 
 /* The sums over the scenes as means. */
+/* Variant a's DSSIM minus variant b's, paired over the scored cases. */
+static so_paired_difference paired_difference(const so_state *st, int a, int b)
+{
+    so_paired_difference d = {NAN, NAN, st->scored};
+    if (a < 0 || b < 0 || st->scored < 2)
+        return d;
+    double sum = 0.0, sum_sq = 0.0;
+    for (int i = 0; i < st->scored; ++i) {
+        double x = st->case_dssim[a][i] - st->case_dssim[b][i];
+        sum += x, sum_sq += x * x;
+    }
+    d.mean = sum / st->scored;
+    double variance = fmax(0.0, (sum_sq - st->scored * d.mean * d.mean) / (st->scored - 1));
+    d.standard_error = sqrt(variance / st->scored);
+    return d;
+}
+
 static void average(const so_state *st, so_study_result *out)
 {
     int n = out->scene_count;
@@ -423,6 +445,11 @@ static void average(const so_state *st, so_study_result *out)
         s->noise_floor = st->split_floor[k] / n;
     }
     out->reference_samples_per_second = st->renders ? st->samples_per_second_sum / st->renders : 0.0;
+    out->noise_floor_mean = 0.0;
+    for (int k = 0; k < SO_STUDY_ROUGHNESSES; ++k)
+        out->noise_floor_mean += out->noise_floor_dssim[k] / SO_STUDY_ROUGHNESSES;
+    out->bc4_16_cost = paired_difference(st, so_study_find_bc4(out, 16),
+                                         so_study_find(out, SO_VARIANT_LUT, 0, 32, SO_AXES_ANGLES, 0));
 }
 
 /* The gloss-to-aperture fits (exact intersection) against each definition. */

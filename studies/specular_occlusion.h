@@ -86,6 +86,13 @@ typedef struct {
     aperture_fit fit, reflected;
 } so_aperture_row;
 
+/* A paired difference of mean DSSIM between two variants over the cases
+ * (scene x roughness): its mean and the mean's standard error. */
+typedef struct {
+    double mean, standard_error;
+    int cases;
+} so_paired_difference;
+
 typedef struct {
     int size, spp;  /* of every reference (square images) */
     int lut_points; /* random points of the interpolation error */
@@ -97,6 +104,8 @@ typedef struct {
     int variant_count;
     so_variant_row variants[SO_STUDY_MAX_VARIANTS];
     double noise_floor_dssim[SO_STUDY_ROUGHNESSES]; /* of specocc.V, means over the scenes */
+    double noise_floor_mean;                        /* their mean over the roughnesses */
+    so_paired_difference bc4_16_cost;               /* DSSIM of lut 16^3 BC4 minus lut 32^3 float, per case */
     so_split_row splits[SO_STUDY_ROUGHNESSES];
     so_aperture_row fits[SO_STUDY_DEFINITIONS]; /* gtso, d_only, phong */
     double reference_samples_per_second;        /* mean over the specular-occlusion renders */
