@@ -30,9 +30,16 @@
 
 extern "C" {
 #include "core/json_check.h"
+#include "scene/accessor_decode.h"
+#include "scene/draco_decode.h"
 #include "scene/glb_container.h"
+#include "scene/gltf_json_prepass.h"
 #include "scene/gltf_reader.h"
+#include "scene/meshopt_decode.h"
+#include "scene/primitive_topology.h"
+#include "scene/vertex_pose.h"
 }
+#include <set>
 
 namespace {
 
@@ -262,6 +269,12 @@ struct Loader {
     std::vector<int> image_texture;   /* glTF image -> scene texture, -1 = not yet */
     std::vector<bool> warned_mode;    /* per mesh: non-triangle primitive reported */
     bool warned_orthographic = false;
+    std::vector<Mat4> world;          /* per node: global transform, once world_known */
+    std::vector<char> world_known;
+    bool quantization = false;        /* KHR_mesh_quantization is in extensionsUsed */
+    bool quantized_primitive = false, morphed_primitive = false; /* of the primitive being read */
+    std::set<int> sparse_seen;        /* sparse accessors read */
+    gltf_report *report;
 
     int fail(const char *fmt, ...) __attribute__((format(printf, 2, 3)))
     {
@@ -349,16 +362,21 @@ bool load_image(tinygltf::Image *image, const int index, std::string *err, std::
     return true;
 }
 
-/* The extensions that store data gtlab cannot decode (issue 30 adds the
- * first three), with what they hold. */
+/* The extensions gtlab reads: a file may require them. */
+bool supported_extension(const std::string &name)
+{
+    return name == "KHR_mesh_quantization" || name == "EXT_meshopt_compression" ||
+           name == "KHR_draco_mesh_compression";
+}
+
+/* Extensions that store data gtlab cannot decode, with what they hold. */
 const std::map<std::string, const char *> &data_extensions()
 {
     static const std::map<std::string, const char *> contents = {
-        {"KHR_draco_mesh_compression", "Draco-compressed meshes"},
-        {"EXT_meshopt_compression", "meshoptimizer-compressed buffers"},
-        {"KHR_mesh_quantization", "quantized vertex attributes"},
         {"KHR_texture_basisu", "Basis Universal textures"},
         {"EXT_texture_webp", "WebP textures"},
+        {"EXT_mesh_gpu_instancing", "instanced meshes"},
+        {"KHR_meshopt_compression", "meshoptimizer-compressed buffers, ratified form"},
     };
     return contents;
 }
@@ -382,9 +400,10 @@ std::string extension_list(const std::vector<std::string> &names)
     return out;
 }
 
-/* gtlab reads no glTF extension yet: every required one refuses the file. */
-int refuse_required_extensions(Loader &L, const std::vector<std::string> &required)
+/* A required extension gtlab does not read refuses the file. */
+int refuse_required_extensions(Loader &L, std::vector<std::string> required)
 {
+    required.erase(std::remove_if(required.begin(), required.end(), supported_extension), required.end());
     if (required.empty())
         return 0;
     return L.fail("requires %s, which gtlab does not support", extension_list(required).c_str());
@@ -407,14 +426,10 @@ std::vector<std::string> top_level_strings(const unsigned char *json, size_t len
     return names;
 }
 
-/* tinygltf refused the file. An unsupported required extension is the
- * reason to give (tinygltf reports a Draco file as "accessor[0] invalid
- * bufferView"); else its own message, naming any extension the file uses
- * whose data gtlab cannot decode (it may be why). */
+/* tinygltf refused the file: its own message, naming any extension the file
+ * uses whose data gtlab cannot decode (it may be why). */
 int fail_tinygltf(Loader &L, bool binary, const unsigned char *json, size_t json_length, const std::string &err)
 {
-    if (refuse_required_extensions(L, top_level_strings(json, json_length, "extensionsRequired")) != 0)
-        return -1;
     std::string reason = err.empty() ? "no reason given" : one_line(err);
     std::vector<std::string> used = top_level_strings(json, json_length, "extensionsUsed");
     used.erase(std::remove_if(used.begin(), used.end(),
@@ -443,13 +458,66 @@ int check_container(Loader &L, const unsigned char *bytes, size_t size, bool bin
     return json_check(reinterpret_cast<const char *>(*json), *json_length, json_limits_gltf, L.path, L.e);
 }
 
+/* The file as tinygltf is given it, in `out`, when the JSON prepass
+ * (gltf_json_prepass.h) rewrote it; out stays empty when the file is fine
+ * as it is. */
+int prepare_for_tinygltf(Loader &L, const unsigned char *bytes, size_t size, bool binary, const unsigned char *json,
+                         size_t json_length, std::vector<unsigned char> &out)
+{
+    char *text = nullptr;
+    size_t length = 0;
+    const int rc = gltf_json_prepass(json, json_length, &text, &length);
+    if (rc <= 0)
+        return rc < 0 ? L.fail("out of memory") : 0;
+    if (!binary) {
+        out.assign(text, text + length);
+        std::free(text);
+        return 0;
+    }
+    glb_chunks chunks;
+    glb_split(bytes, size, L.path, &chunks, L.e); /* it succeeded in check_container */
+    chunks.json = reinterpret_cast<unsigned char *>(text);
+    chunks.json_length = length;
+    size_t joined_size = 0;
+    unsigned char *joined = glb_join(&chunks, &joined_size);
+    std::free(text);
+    if (!joined)
+        return L.fail("out of memory");
+    out.assign(joined, joined + joined_size);
+    std::free(joined);
+    return 0;
+}
+
+/* Defined with the accessors, below. */
+int decode_meshopt_views(Loader &L);
+
+/* The file's extensionsUsed, for the report; KHR_mesh_quantization among
+ * them lets accessors hold its integer types. */
+void note_extensions_used(Loader &L)
+{
+    std::string list;
+    for (const std::string &name : L.model.extensionsUsed) {
+        list += (list.empty() ? "" : ", ") + printable(name);
+        L.quantization = L.quantization || name == "KHR_mesh_quantization";
+    }
+    std::snprintf(L.report->extensions_used, sizeof L.report->extensions_used, "%s", list.c_str());
+}
+
 int parse_bytes(Loader &L, const unsigned char *bytes, size_t size, const std::string &base_dir)
 {
     const bool binary = glb_has_magic(bytes, size);
     const unsigned char *json = nullptr;
     size_t json_length = 0;
-    if (check_container(L, bytes, size, binary, &json, &json_length) != 0)
+    if (check_container(L, bytes, size, binary, &json, &json_length) != 0 ||
+        refuse_required_extensions(L, top_level_strings(json, json_length, "extensionsRequired")) != 0)
         return -1;
+    std::vector<unsigned char> prepared;
+    if (prepare_for_tinygltf(L, bytes, size, binary, json, json_length, prepared) != 0)
+        return -1;
+    if (!prepared.empty()) {
+        bytes = prepared.data();
+        size = prepared.size();
+    }
     tinygltf::TinyGLTF gltf;
     gltf.SetImageLoader(load_image, &L);
     std::string err, warn;
@@ -461,7 +529,10 @@ int parse_bytes(Loader &L, const unsigned char *bytes, size_t size, const std::s
         return fail_tinygltf(L, binary, json, json_length, err);
     /* tinygltf's warnings are about images it could not read; those that
      * matter (images a material uses) are reported by convert_texture. */
-    return refuse_required_extensions(L, L.model.extensionsRequired);
+    if (refuse_required_extensions(L, L.model.extensionsRequired) != 0)
+        return -1;
+    note_extensions_used(L);
+    return decode_meshopt_views(L);
 }
 
 /* The node graph must be a forest (glTF 2.0 "Nodes and Hierarchy": "the node hierarchy
@@ -539,177 +610,277 @@ int node_local_matrix(Loader &L, int index, Mat4 *out)
 
 /* ------------------------------------------------------------- accessors */
 
-/* A checked window onto an accessor's elements: element i starts at
- * base + i * stride and all count elements lie inside the buffer. */
+/* A checked window onto count elements of element_size bytes: element i
+ * starts at base + i * stride and all of them lie inside the buffer. */
 struct AccessorView {
     const unsigned char *base;
     size_t stride, count;
-    int component_type;
 };
 
-int view_accessor(Loader &L, const std::string &what, const char *role, int index, AccessorView *v)
+/* Largest accessor gtlab materialises (bytes): an accessor without a
+ * bufferView (all zeros but for its sparse values) has a count no buffer
+ * bounds. (Lower in the fuzz build, as max_texture_side.) */
+#ifdef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION
+const uint64_t max_accessor_bytes = (uint64_t)1 << 24;
+#else
+const uint64_t max_accessor_bytes = (uint64_t)1 << 32;
+#endif
+
+/* The bufferView `view_index` at byte `offset` holds count elements
+ * (tightly packed, or at the view's byteStride when use_stride). */
+int view_elements(Loader &L, const std::string &what, const char *role, int view_index, size_t offset, size_t count,
+                  size_t element_size, bool use_stride, AccessorView *v)
 {
     const tinygltf::Model &m = L.model;
-    if (index < 0 || (size_t)index >= m.accessors.size())
-        return L.fail("%s: %s accessor %d does not exist", what.c_str(), role, index);
-    const tinygltf::Accessor &a = m.accessors[(size_t)index];
-    if (a.sparse.isSparse)
-        return L.fail("%s: %s accessor %d is sparse, which is not supported", what.c_str(), role, index);
-    const int components = tinygltf::GetNumComponentsInType((uint32_t)a.type);
-    const int component_size = tinygltf::GetComponentSizeInBytes((uint32_t)a.componentType);
-    if (components <= 0 || component_size <= 0)
-        return L.fail("%s: %s accessor %d has an unknown type", what.c_str(), role, index);
-    const size_t element_size = (size_t)components * (size_t)component_size;
-
-    v->count = a.count;
-    v->component_type = a.componentType;
-    v->stride = element_size;
-    /* Without a bufferView an accessor is all zeros, meaningful only with
-     * sparse data or an extension (Draco), neither of which is supported. */
-    if (a.bufferView < 0)
-        return L.fail("%s: %s accessor %d has no bufferView", what.c_str(), role, index);
-    if ((size_t)a.bufferView >= m.bufferViews.size())
-        return L.fail("%s: %s accessor %d: bufferView %d does not exist", what.c_str(), role, index, a.bufferView);
-    const tinygltf::BufferView &view = m.bufferViews[(size_t)a.bufferView];
+    if (view_index < 0 || (size_t)view_index >= m.bufferViews.size())
+        return L.fail("%s: %s: bufferView %d does not exist", what.c_str(), role, view_index);
+    const tinygltf::BufferView &view = m.bufferViews[(size_t)view_index];
     if (view.buffer < 0 || (size_t)view.buffer >= m.buffers.size())
-        return L.fail("%s: %s accessor %d: bufferView %d: buffer %d does not exist", what.c_str(), role, index,
-                      a.bufferView, view.buffer);
+        return L.fail("%s: %s: bufferView %d: buffer %d does not exist", what.c_str(), role, view_index, view.buffer);
     const tinygltf::Buffer &buffer = m.buffers[(size_t)view.buffer];
     if (!range_inside(view.byteOffset, view.byteLength, buffer.data.size()))
-        return L.fail("%s: bufferView %d (bytes %zu + %zu) exceeds buffer %d (%zu bytes)", what.c_str(),
-                      a.bufferView, view.byteOffset, view.byteLength, view.buffer, buffer.data.size());
-    if (view.byteStride != 0) {
+        return L.fail("%s: bufferView %d (bytes %zu + %zu) exceeds buffer %d (%zu bytes)", what.c_str(), view_index,
+                      view.byteOffset, view.byteLength, view.buffer, buffer.data.size());
+    v->stride = element_size;
+    v->count = count;
+    if (use_stride && view.byteStride != 0) {
         if (view.byteStride < element_size)
             return L.fail("%s: bufferView %d: byteStride %zu is smaller than a %s element (%zu bytes)", what.c_str(),
-                          a.bufferView, view.byteStride, role, element_size);
+                          view_index, view.byteStride, role, element_size);
         v->stride = view.byteStride;
     }
-    /* The last element ends at byteOffset + (count - 1) * stride + element_size. */
-    const bool fits = a.count == 0 ||
-                      (range_inside(a.byteOffset, element_size, view.byteLength) &&
-                       (a.count - 1) <= (view.byteLength - a.byteOffset - element_size) / v->stride);
+    /* The last element ends at offset + (count - 1) * stride + element_size. */
+    const bool fits = count == 0 || (range_inside(offset, element_size, view.byteLength) &&
+                                     (count - 1) <= (view.byteLength - offset - element_size) / v->stride);
     if (!fits)
-        return L.fail("%s: %s accessor %d (%zu elements from byte %zu, stride %zu) exceeds bufferView %d (%zu bytes)",
-                      what.c_str(), role, index, a.count, a.byteOffset, v->stride, a.bufferView, view.byteLength);
-    v->base = buffer.data.data() + view.byteOffset + a.byteOffset;
+        return L.fail("%s: %s (%zu elements from byte %zu, stride %zu) exceeds bufferView %d (%zu bytes)",
+                      what.c_str(), role, count, offset, v->stride, view_index, view.byteLength);
+    v->base = buffer.data.data() + view.byteOffset + offset;
     return 0;
 }
 
-/* Checks the accessor's type and component type against what the role allows. */
-int expect_type(Loader &L, const std::string &what, const char *role, int index, int type, bool float_only)
+size_t element_size_of(const tinygltf::Accessor &a)
+{
+    const int components = tinygltf::GetNumComponentsInType((uint32_t)a.type);
+    return components > 0 ? (size_t)components * (size_t)gltf_component_size(a.componentType) : 0;
+}
+
+/* Sparse substitution (glTF 2.0, "Sparse Accessors"): `count` strictly
+ * increasing indices, each < the accessor's count, and as many values
+ * replacing those elements of `elements`. */
+int apply_sparse(Loader &L, const std::string &what, const std::string &role, const tinygltf::Accessor &a,
+                 size_t element_size, std::vector<unsigned char> &elements)
+{
+    const auto &sp = a.sparse;
+    const int index_type = sp.indices.componentType;
+    if (index_type != GLTF_UNSIGNED_BYTE && index_type != GLTF_UNSIGNED_SHORT && index_type != GLTF_UNSIGNED_INT)
+        return L.fail("%s: %s: sparse indices are %s; expected unsigned byte/short/int", what.c_str(), role.c_str(),
+                      component_type_name(index_type));
+    if (sp.count < 0 || (size_t)sp.count > a.count)
+        return L.fail("%s: %s: sparse count %d exceeds the accessor's %zu elements", what.c_str(), role.c_str(),
+                      sp.count, a.count);
+    AccessorView iv, vv;
+    const std::string sparse_role = role + " sparse";
+    if (view_elements(L, what, sparse_role.c_str(), sp.indices.bufferView, (size_t)sp.indices.byteOffset,
+                      (size_t)sp.count, (size_t)gltf_component_size(index_type), false, &iv) != 0 ||
+        view_elements(L, what, sparse_role.c_str(), sp.values.bufferView, (size_t)sp.values.byteOffset,
+                      (size_t)sp.count, element_size, false, &vv) != 0)
+        return -1;
+    for (size_t k = 0; k < (size_t)sp.count; ++k) {
+        const uint32_t i = gltf_component_uint(iv.base + k * iv.stride, 0, index_type);
+        if (i >= a.count || (k > 0 && i <= gltf_component_uint(iv.base + (k - 1) * iv.stride, 0, index_type)))
+            return L.fail("%s: %s: sparse index %u (entry %zu) is out of range or not increasing", what.c_str(),
+                          role.c_str(), i, k);
+        std::memcpy(&elements[i * element_size], vv.base + k * vv.stride, element_size);
+    }
+    return 0;
+}
+
+/* The accessor's elements, tightly packed, with any sparse substitution
+ * applied; an accessor without a bufferView starts as zeros. */
+int accessor_elements(Loader &L, const std::string &what, const char *role, int index,
+                      std::vector<unsigned char> &elements)
 {
     const tinygltf::Accessor &a = L.model.accessors[(size_t)index];
-    const bool ok_component = a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
-                              (!float_only && a.normalized &&
-                               (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                                a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT));
-    if (a.type != type || !ok_component)
-        return L.fail("%s: %s accessor %d is %s %s; expected %s %s", what.c_str(), role, index,
-                      component_type_name(a.componentType), type_name(a.type),
-                      float_only ? "float" : "float or normalized unsigned byte/short", type_name(type));
+    const size_t element_size = element_size_of(a);
+    const std::string name = std::string(role) + " accessor " + std::to_string(index);
+    if (element_size == 0)
+        return L.fail("%s: %s has an unknown type", what.c_str(), name.c_str());
+    if (a.bufferView < 0 && !a.sparse.isSparse)
+        return L.fail("%s: %s has no bufferView (and no sparse data)", what.c_str(), name.c_str());
+    AccessorView v = {nullptr, element_size, a.count};
+    if (a.bufferView >= 0 &&
+        view_elements(L, what, name.c_str(), a.bufferView, a.byteOffset, a.count, element_size, true, &v) != 0)
+        return -1;
+    if ((uint64_t)a.count > max_accessor_bytes / element_size)
+        return L.fail("%s: %s has %zu elements, more than gtlab reads", what.c_str(), name.c_str(), a.count);
+    elements.assign(a.count * element_size, 0);
+    for (size_t i = 0; v.base && i < a.count; ++i)
+        std::memcpy(&elements[i * element_size], v.base + i * v.stride, element_size);
+    if (!a.sparse.isSparse)
+        return 0;
+    L.sparse_seen.insert(index);
+    return apply_sparse(L, what, name, a, element_size, elements);
+}
+
+/* Component types an accessor role accepts: bit (1 << k) of type_flag(). */
+enum : unsigned {
+    F32 = 1u << 0, I8 = 1u << 1, I8N = 1u << 2, U8 = 1u << 3, U8N = 1u << 4,
+    I16 = 1u << 5, I16N = 1u << 6, U16 = 1u << 7, U16N = 1u << 8, U32 = 1u << 9
+};
+
+unsigned type_flag(int component_type, bool normalized)
+{
+    switch (component_type) {
+    case GLTF_FLOAT: return F32;
+    case GLTF_BYTE: return normalized ? I8N : I8;
+    case GLTF_UNSIGNED_BYTE: return normalized ? U8N : U8;
+    case GLTF_SHORT: return normalized ? I16N : I16;
+    case GLTF_UNSIGNED_SHORT: return normalized ? U16N : U16;
+    case GLTF_UNSIGNED_INT: return normalized ? 0u : (unsigned)U32;
+    default: return 0;
+    }
+}
+
+/* "float or normalized unsigned byte" for a set of flags. */
+std::string flags_text(unsigned flags)
+{
+    static const char *names[] = {"float", "byte", "normalized byte", "unsigned byte", "normalized unsigned byte",
+                                  "short", "normalized short", "unsigned short", "normalized unsigned short",
+                                  "unsigned int"};
+    std::string out;
+    for (int k = 0; k < 10; ++k)
+        if (flags & (1u << k))
+            out += (out.empty() ? "" : " or ") + std::string(names[k]);
+    return out;
+}
+
+/* What a role accepts: core glTF 2.0 ("Meshes", attribute table), and with
+ * KHR_mesh_quantization (declared in extensionsUsed) its additions. */
+struct RoleTypes {
+    const char *name;
+    int type;
+    unsigned core, quantized;
+};
+
+const RoleTypes role_position = {"POSITION", TINYGLTF_TYPE_VEC3, F32, I8 | I8N | U8 | U8N | I16 | I16N | U16 | U16N};
+const RoleTypes role_normal = {"NORMAL", TINYGLTF_TYPE_VEC3, F32, I8N | I16N};
+const RoleTypes role_texcoord = {"TEXCOORD_0", TINYGLTF_TYPE_VEC2, F32 | U8N | U16N, I8 | I8N | U8 | I16 | I16N | U16};
+const RoleTypes role_target_position = {"POSITION target", TINYGLTF_TYPE_VEC3, F32, I8 | I8N | I16 | I16N};
+const RoleTypes role_target_normal = {"NORMAL target", TINYGLTF_TYPE_VEC3, F32, I8N | I16N};
+const RoleTypes role_weights = {"WEIGHTS", TINYGLTF_TYPE_VEC4, F32 | U8N | U16N, 0};
+const RoleTypes role_joints = {"JOINTS", TINYGLTF_TYPE_VEC4, U8 | U16, 0};
+const RoleTypes role_indices = {"indices", TINYGLTF_TYPE_SCALAR, U8 | U16 | U32, 0};
+const RoleTypes role_bind_matrices = {"inverseBindMatrices", TINYGLTF_TYPE_MAT4, F32, 0};
+
+/* Checks that accessor `index` exists and has a type the role accepts. */
+int expect_type(Loader &L, const std::string &what, const RoleTypes &role, int index)
+{
+    if (index < 0 || (size_t)index >= L.model.accessors.size())
+        return L.fail("%s: %s accessor %d does not exist", what.c_str(), role.name, index);
+    const tinygltf::Accessor &a = L.model.accessors[(size_t)index];
+    const unsigned allowed = role.core | (L.quantization ? role.quantized : 0u);
+    const unsigned flag = type_flag(a.componentType, a.normalized);
+    if (a.type == role.type && (flag & allowed))
+        return 0;
+    const bool hint = !L.quantization && (flag & role.quantized);
+    return L.fail("%s: %s accessor %d is %s%s %s; expected %s %s%s", what.c_str(), role.name, index,
+                  a.normalized ? "normalized " : "", component_type_name(a.componentType), type_name(a.type),
+                  flags_text(allowed).c_str(), type_name(role.type),
+                  hint ? " (KHR_mesh_quantization allows it, but the file does not declare it)" : "");
+}
+
+/* The accessor as floats (accessor_decode.h), components per element in *n. */
+int read_floats(Loader &L, const std::string &what, const RoleTypes &role, int index, std::vector<float> &out)
+{
+    std::vector<unsigned char> bytes;
+    if (expect_type(L, what, role, index) != 0 || accessor_elements(L, what, role.name, index, bytes) != 0)
+        return -1;
+    const tinygltf::Accessor &a = L.model.accessors[(size_t)index];
+    const int n = tinygltf::GetNumComponentsInType((uint32_t)a.type);
+    const size_t element_size = element_size_of(a);
+    out.resize(a.count * (size_t)n);
+    for (size_t i = 0; i < a.count; ++i)
+        for (int k = 0; k < n; ++k) {
+            const float value = gltf_component_float(&bytes[i * element_size], k, a.componentType, a.normalized);
+            if (!std::isfinite(value))
+                return L.fail("%s: %s %zu is not finite", what.c_str(), role.name, i);
+            out[i * (size_t)n + (size_t)k] = value;
+        }
+    if (role.quantized && type_flag(a.componentType, a.normalized) != F32)
+        L.quantized_primitive = true;
     return 0;
 }
 
-/* Component k of element i as float; normalized integers map to [0, 1]. */
-float read_component(const AccessorView &v, size_t i, int k)
+/* The accessor as unsigned integers (indices, joints). */
+int read_uints(Loader &L, const std::string &what, const RoleTypes &role, int index, std::vector<uint32_t> &out)
 {
-    const unsigned char *p = v.base + i * v.stride;
-    switch (v.component_type) {
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return p[k] / 255.0f;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-        uint16_t u;
-        std::memcpy(&u, p + 2 * k, 2);
-        return u / 65535.0f;
-    }
-    default: {
-        float f;
-        std::memcpy(&f, p + 4 * k, 4);
-        return f;
-    }
-    }
+    std::vector<unsigned char> bytes;
+    if (expect_type(L, what, role, index) != 0 || accessor_elements(L, what, role.name, index, bytes) != 0)
+        return -1;
+    const tinygltf::Accessor &a = L.model.accessors[(size_t)index];
+    const int n = tinygltf::GetNumComponentsInType((uint32_t)a.type);
+    const size_t element_size = element_size_of(a);
+    out.resize(a.count * (size_t)n);
+    for (size_t i = 0; i < a.count; ++i)
+        for (int k = 0; k < n; ++k)
+            out[i * (size_t)n + (size_t)k] = gltf_component_uint(&bytes[i * element_size], k, a.componentType);
+    return 0;
 }
 
-uint32_t read_index(const AccessorView &v, size_t i)
-{
-    const unsigned char *p = v.base + i * v.stride;
-    switch (v.component_type) {
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return p[0];
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-        uint16_t u;
-        std::memcpy(&u, p, 2);
-        return u;
-    }
-    default: {
-        uint32_t u;
-        std::memcpy(&u, p, 4);
-        return u;
-    }
-    }
-}
-
-/* One triangle primitive in its mesh's local space. */
+/* One triangle primitive in its mesh's local space (or, skinned, in world
+ * space), as a triangle list. */
 struct Primitive {
     std::vector<float> positions, normals, texcoords;
     std::vector<uint32_t> indices;
+    std::vector<uint32_t> joints; /* influences per vertex, each set of JOINTS_n/WEIGHTS_n adds 4 */
+    std::vector<float> weights;
+    int influences = 0;
+    bool skinned = false;
 };
-
-int read_float_attribute(Loader &L, const std::string &what, const char *role, int index, int type,
-                         bool float_only, size_t expected_count, std::vector<float> &out)
-{
-    AccessorView v;
-    if (view_accessor(L, what, role, index, &v) != 0 || expect_type(L, what, role, index, type, float_only) != 0)
-        return -1;
-    if (v.count != expected_count)
-        return L.fail("%s: %s has %zu elements but POSITION has %zu", what.c_str(), role, v.count, expected_count);
-    const int n = tinygltf::GetNumComponentsInType((uint32_t)type);
-    out.resize(v.count * (size_t)n);
-    for (size_t i = 0; i < v.count; ++i)
-        for (int k = 0; k < n; ++k) {
-            const float value = read_component(v, i, k);
-            if (!std::isfinite(value))
-                return L.fail("%s: %s %zu is not finite", what.c_str(), role, i);
-            out[i * (size_t)n + (size_t)k] = value;
-        }
-    return 0;
-}
-
-int read_indices(Loader &L, const std::string &what, const tinygltf::Primitive &prim, size_t vertex_count,
-                 std::vector<uint32_t> &out)
-{
-    if (prim.indices < 0) { /* non-indexed: vertices 0, 1, 2, ... */
-        if (vertex_count % 3 != 0)
-            return L.fail("%s: %zu vertices without indices is not a whole number of triangles", what.c_str(),
-                          vertex_count);
-        out.resize(vertex_count);
-        for (size_t i = 0; i < vertex_count; ++i)
-            out[i] = (uint32_t)i;
-        return 0;
-    }
-    AccessorView v;
-    if (view_accessor(L, what, "indices", prim.indices, &v) != 0)
-        return -1;
-    const tinygltf::Accessor &a = L.model.accessors[(size_t)prim.indices];
-    if (a.type != TINYGLTF_TYPE_SCALAR || (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-                                           a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-                                           a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
-        return L.fail("%s: indices accessor %d is %s %s; expected unsigned byte/short/int SCALAR", what.c_str(),
-                      prim.indices, component_type_name(a.componentType), type_name(a.type));
-    if (v.count % 3 != 0)
-        return L.fail("%s: %zu indices is not a whole number of triangles", what.c_str(), v.count);
-    out.resize(v.count);
-    for (size_t i = 0; i < v.count; ++i) {
-        out[i] = read_index(v, i);
-        if (out[i] >= vertex_count)
-            return L.fail("%s: index %u (entry %zu) is out of range (%zu vertices)", what.c_str(), out[i], i,
-                          vertex_count);
-    }
-    return 0;
-}
 
 int attribute(const tinygltf::Primitive &prim, const char *name)
 {
     auto it = prim.attributes.find(name);
     return it == prim.attributes.end() ? -1 : it->second;
+}
+
+/* A vertex attribute with one element per vertex. */
+int read_vertex_floats(Loader &L, const std::string &what, const RoleTypes &role, int index, size_t vertex_count,
+                       std::vector<float> &out)
+{
+    if (read_floats(L, what, role, index, out) != 0)
+        return -1;
+    const size_t n = (size_t)tinygltf::GetNumComponentsInType((uint32_t)role.type);
+    if (out.size() != vertex_count * n)
+        return L.fail("%s: %s has %zu elements but POSITION has %zu", what.c_str(), role.name, out.size() / n,
+                      vertex_count);
+    return 0;
+}
+
+/* The primitive's vertex sequence (its indices, or 0, 1, 2, ... without),
+ * made a triangle list by its mode (primitive_topology.h). */
+int read_indices(Loader &L, const std::string &what, const tinygltf::Primitive &prim, size_t vertex_count,
+                 std::vector<uint32_t> &out)
+{
+    std::vector<uint32_t> sequence;
+    if (prim.indices < 0) {
+        sequence.resize(vertex_count);
+        for (size_t i = 0; i < vertex_count; ++i)
+            sequence[i] = (uint32_t)i;
+    } else if (read_uints(L, what, role_indices, prim.indices, sequence) != 0) {
+        return -1;
+    }
+    for (size_t i = 0; i < sequence.size(); ++i)
+        if (sequence[i] >= vertex_count)
+            return L.fail("%s: index %u (entry %zu) is out of range (%zu vertices)", what.c_str(), sequence[i], i,
+                          vertex_count);
+    if (prim.mode == TINYGLTF_MODE_TRIANGLES && sequence.size() % 3 != 0)
+        return L.fail("%s: %zu %s is not a whole number of triangles", what.c_str(), sequence.size(),
+                      prim.indices < 0 ? "vertices without indices" : "indices");
+    out.resize(3 * gltf_mode_triangle_count(prim.mode, sequence.size()));
+    gltf_triangulate(prim.mode, sequence.size(), sequence.data(), out.data());
+    return 0;
 }
 
 /* A primitive without normals is flat-shaded (glTF 2.0, "Meshes"): every
@@ -729,29 +900,335 @@ void unweld(Primitive &p)
     p.texcoords.swap(texcoords);
 }
 
-int read_primitive(Loader &L, const std::string &what, const tinygltf::Primitive &prim, Primitive &out)
+/* ---------------------------------------------------- extension objects */
+
+/* o[key] when o is an object holding it, else a null Value. */
+const tinygltf::Value &member(const tinygltf::Value &o, const char *key)
+{
+    static const tinygltf::Value null_value;
+    return o.IsObject() && o.Has(key) ? o.Get(key) : null_value;
+}
+
+/* o[key] as a whole number in [0, 2^53), or `absent` when missing; -1 when
+ * present but not such a number. */
+int64_t member_count(const tinygltf::Value &o, const char *key, int64_t absent)
+{
+    const tinygltf::Value &v = member(o, key);
+    if (v.Type() == tinygltf::NULL_TYPE)
+        return absent;
+    const double d = v.IsNumber() ? v.GetNumberAsDouble() : -1.0;
+    return d >= 0.0 && d < 9007199254740992.0 && d == std::floor(d) ? (int64_t)d : -1;
+}
+
+std::string member_string(const tinygltf::Value &o, const char *key, const char *absent)
+{
+    const tinygltf::Value &v = member(o, key);
+    return v.IsString() ? v.Get<std::string>() : v.Type() == tinygltf::NULL_TYPE ? absent : "(not a string)";
+}
+
+const tinygltf::Value *extension(const tinygltf::ExtensionMap &extensions, const char *name)
+{
+    auto it = extensions.find(name);
+    return it == extensions.end() ? nullptr : &it->second;
+}
+
+/* ----------------------------------------------------------- meshopt views */
+
+/* One bufferView carrying EXT_meshopt_compression (meshopt_decode.h),
+ * decoded from its compressed range into a buffer of its own; the view then
+ * points there and is read like any other. */
+int decode_meshopt_view(Loader &L, size_t index, const tinygltf::Value &ext)
+{
+    const std::string what = std::string(L.path) + ": bufferView " + std::to_string(index);
+    const int64_t buffer = member_count(ext, "buffer", -1), offset = member_count(ext, "byteOffset", 0),
+                  length = member_count(ext, "byteLength", -1), stride = member_count(ext, "byteStride", -1),
+                  count = member_count(ext, "count", -1);
+    if (buffer < 0 || (size_t)buffer >= L.model.buffers.size() || offset < 0 || length < 0 || stride <= 0 ||
+        count < 0)
+        return gt_error_set(L.e, what.c_str(), "EXT_meshopt_compression: buffer, byteOffset, byteLength, "
+                                               "byteStride or count is missing or invalid");
+    const std::vector<unsigned char> &source = L.model.buffers[(size_t)buffer].data;
+    if (!range_inside((uint64_t)offset, (uint64_t)length, source.size()))
+        return gt_error_set(L.e, what.c_str(), "EXT_meshopt_compression: bytes %lld + %lld exceed buffer %lld (%zu bytes)",
+                            (long long)offset, (long long)length, (long long)buffer, source.size());
+    if ((uint64_t)count > max_accessor_bytes / (uint64_t)stride)
+        return gt_error_set(L.e, what.c_str(), "EXT_meshopt_compression: %lld elements of %lld bytes, more than gtlab reads",
+                            (long long)count, (long long)stride);
+    const std::string mode = member_string(ext, "mode", ""), filter = member_string(ext, "filter", "NONE");
+    const meshopt_view v = {(size_t)count, (size_t)stride, mode.c_str(), filter.c_str()};
+    tinygltf::Buffer decoded;
+    decoded.data.resize(v.count * v.stride);
+    if (meshopt_decode_view(&v, source.data() + offset, (size_t)length, decoded.data.data(), what.c_str(), L.e) != 0)
+        return -1;
+    L.model.buffers.push_back(std::move(decoded));
+    tinygltf::BufferView &view = L.model.bufferViews[index];
+    view.buffer = (int)L.model.buffers.size() - 1;
+    view.byteOffset = 0;
+    view.byteLength = v.count * v.stride;
+    ++L.report->meshopt_views;
+    return 0;
+}
+
+int decode_meshopt_views(Loader &L)
+{
+    for (size_t i = 0; i < L.model.bufferViews.size(); ++i) {
+        const tinygltf::Value *ext = extension(L.model.bufferViews[i].extensions, "EXT_meshopt_compression");
+        if (ext && decode_meshopt_view(L, i, *ext) != 0)
+            return -1;
+    }
+    return 0;
+}
+
+/* ---------------------------------------------------------- Draco primitives */
+
+/* The Draco attribute named `name` in the extension's attributes as
+ * `components` floats per vertex; absent is fine (out stays empty). */
+int read_draco_floats(Loader &L, const std::string &what, const draco_geometry *g, const tinygltf::Value &ext,
+                      const char *name, int components, std::vector<float> &out)
+{
+    const int64_t id = member_count(member(ext, "attributes"), name, -2);
+    if (id == -2)
+        return 0;
+    if (id < 0 || id > INT32_MAX)
+        return L.fail("%s: KHR_draco_mesh_compression: attribute %s has no valid id", what.c_str(), name);
+    out.resize((size_t)draco_geometry_vertex_count(g) * (size_t)components);
+    const std::string where = std::string(L.path) + ": " + what;
+    return draco_geometry_attribute(g, (int)id, components, out.data(), where.c_str(), L.e) != 0 ? -1 : 0;
+}
+
+int read_draco_geometry(Loader &L, const std::string &what, const draco_geometry *g, const tinygltf::Value &ext,
+                        Primitive &out)
+{
+    if (read_draco_floats(L, what, g, ext, "POSITION", 3, out.positions) != 0 ||
+        read_draco_floats(L, what, g, ext, "NORMAL", 3, out.normals) != 0 ||
+        read_draco_floats(L, what, g, ext, "TEXCOORD_0", 2, out.texcoords) != 0)
+        return -1;
+    if (out.positions.empty())
+        return L.fail("%s: KHR_draco_mesh_compression: no POSITION attribute", what.c_str());
+    for (float v : out.positions)
+        if (!std::isfinite(v))
+            return L.fail("%s: KHR_draco_mesh_compression: a decoded POSITION is not finite", what.c_str());
+    out.indices.resize(3 * (size_t)draco_geometry_triangle_count(g));
+    draco_geometry_indices(g, out.indices.data());
+    const size_t vertex_count = out.positions.size() / 3;
+    for (uint32_t i : out.indices)
+        if (i >= vertex_count)
+            return L.fail("%s: KHR_draco_mesh_compression: index %u is out of range (%zu vertices)", what.c_str(),
+                          i, vertex_count);
+    return 0;
+}
+
+/* KHR_draco_mesh_compression: the primitive's geometry is the Draco mesh in
+ * the extension's bufferView (always a triangle list once decoded). */
+int read_draco_attributes(Loader &L, const std::string &what, const tinygltf::Primitive &prim,
+                          const tinygltf::Value &ext, Primitive &out)
+{
+    if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != TINYGLTF_MODE_TRIANGLE_STRIP)
+        return L.fail("%s: KHR_draco_mesh_compression on mode %d (%s)", what.c_str(), prim.mode,
+                      mode_name(prim.mode));
+    const int64_t view_index = member_count(ext, "bufferView", -1);
+    if (view_index < 0 || (size_t)view_index >= L.model.bufferViews.size())
+        return L.fail("%s: KHR_draco_mesh_compression: bufferView %lld does not exist", what.c_str(),
+                      (long long)view_index);
+    AccessorView v;
+    const size_t length = L.model.bufferViews[(size_t)view_index].byteLength;
+    if (view_elements(L, what, "Draco data", (int)view_index, 0, length, 1, false, &v) != 0)
+        return -1;
+    draco_geometry *g = nullptr;
+    const std::string where = std::string(L.path) + ": " + what;
+    if (draco_geometry_decode(v.base, length, &g, where.c_str(), L.e) != 0)
+        return -1;
+    const int rc = read_draco_geometry(L, what, g, ext, out);
+    draco_geometry_free(g);
+    L.report->draco_primitives += rc == 0;
+    return rc;
+}
+
+/* -------------------------------------------------------------- primitives */
+
+/* POSITION, NORMAL, TEXCOORD_0 and the triangles from the accessors. */
+int read_accessor_attributes(Loader &L, const std::string &what, const tinygltf::Primitive &prim, Primitive &out)
 {
     const int position = attribute(prim, "POSITION");
     if (position < 0)
         return L.fail("%s: no POSITION attribute", what.c_str());
-    AccessorView v;
-    if (view_accessor(L, what, "POSITION", position, &v) != 0)
+    if (read_floats(L, what, role_position, position, out.positions) != 0)
         return -1;
-    const size_t vertex_count = v.count;
+    const size_t vertex_count = out.positions.size() / 3;
     if (vertex_count > UINT32_MAX / 3)
         return L.fail("%s: too many vertices (%zu)", what.c_str(), vertex_count);
-    if (read_float_attribute(L, what, "POSITION", position, TINYGLTF_TYPE_VEC3, true, vertex_count, out.positions))
-        return -1;
     const int normal = attribute(prim, "NORMAL");
-    if (normal >= 0 &&
-        read_float_attribute(L, what, "NORMAL", normal, TINYGLTF_TYPE_VEC3, true, vertex_count, out.normals))
+    if (normal >= 0 && read_vertex_floats(L, what, role_normal, normal, vertex_count, out.normals) != 0)
         return -1;
     const int texcoord = attribute(prim, "TEXCOORD_0");
-    if (texcoord >= 0 &&
-        read_float_attribute(L, what, "TEXCOORD_0", texcoord, TINYGLTF_TYPE_VEC2, false, vertex_count, out.texcoords))
+    if (texcoord >= 0 && read_vertex_floats(L, what, role_texcoord, texcoord, vertex_count, out.texcoords) != 0)
         return -1;
-    if (read_indices(L, what, prim, vertex_count, out.indices) != 0)
+    return read_indices(L, what, prim, vertex_count, out.indices);
+}
+
+/* Morph targets (glTF 2.0, "Morph Targets"): the node's weights, else the
+ * mesh's, times each target's POSITION and NORMAL displacements. */
+int apply_morph_targets(Loader &L, const std::string &what, const tinygltf::Node &node, const tinygltf::Mesh &mesh,
+                        const tinygltf::Primitive &prim, Primitive &out)
+{
+    const std::vector<double> &weights = !node.weights.empty() ? node.weights : mesh.weights;
+    if (prim.targets.empty() || weights.empty())
+        return 0;
+    if (weights.size() != prim.targets.size())
+        return L.fail("%s: %zu morph weights for %zu morph targets", what.c_str(), weights.size(),
+                      prim.targets.size());
+    const size_t vertex_count = out.positions.size() / 3;
+    for (size_t t = 0; t < prim.targets.size(); ++t) {
+        if (!std::isfinite(weights[t]))
+            return L.fail("%s: morph weight %zu is not finite", what.c_str(), t);
+        if (weights[t] == 0.0)
+            continue;
+        std::vector<float> delta;
+        const auto &target = prim.targets[t];
+        auto p = target.find("POSITION"), n = target.find("NORMAL");
+        if (p != target.end() && (read_vertex_floats(L, what, role_target_position, p->second, vertex_count, delta) != 0))
+            return -1;
+        pose_morph_add(out.positions.data(), delta.data(), (float)weights[t], delta.size());
+        if (n != target.end() && !out.normals.empty()) {
+            if (read_vertex_floats(L, what, role_target_normal, n->second, vertex_count, delta) != 0)
+                return -1;
+            pose_morph_add(out.normals.data(), delta.data(), (float)weights[t], delta.size());
+        }
+        L.morphed_primitive = true;
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------------- skins */
+
+/* The node's global transform (parents' transforms times its own), computed
+ * once per node by walking up to the first known ancestor (no recursion). */
+int world_of(Loader &L, int node, Mat4 *out)
+{
+    std::vector<int> chain;
+    for (int at = node; at >= 0 && !L.world_known[(size_t)at]; at = L.parent[(size_t)at])
+        chain.push_back(at);
+    for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+        Mat4 local;
+        if (node_local_matrix(L, *it, &local) != 0)
+            return -1;
+        const int parent = L.parent[(size_t)*it];
+        L.world[(size_t)*it] = parent >= 0 ? mat4_mul(L.world[(size_t)parent], local) : local;
+        if (!mat4_is_finite(L.world[(size_t)*it]))
+            return L.fail("node %d: world transform overflows", *it);
+        L.world_known[(size_t)*it] = 1;
+    }
+    *out = L.world[(size_t)node];
+    return 0;
+}
+
+/* J_j = G_j * IBM_j for every joint of the skin (vertex_pose.h). */
+int joint_matrices(Loader &L, const std::string &what, const tinygltf::Skin &skin, std::vector<double> &out)
+{
+    std::vector<float> inverse_bind;
+    if (skin.inverseBindMatrices >= 0 &&
+        read_floats(L, what, role_bind_matrices, skin.inverseBindMatrices, inverse_bind) != 0)
         return -1;
+    if (!inverse_bind.empty() && inverse_bind.size() != 16 * skin.joints.size())
+        return L.fail("%s: skin has %zu joints but %zu inverse bind matrices", what.c_str(), skin.joints.size(),
+                      inverse_bind.size() / 16);
+    out.resize(16 * skin.joints.size());
+    for (size_t j = 0; j < skin.joints.size(); ++j) {
+        Mat4 global, bind = mat4_identity();
+        const int joint = skin.joints[j];
+        if (joint < 0 || (size_t)joint >= L.model.nodes.size())
+            return L.fail("%s: skin joint %zu: node %d does not exist", what.c_str(), j, joint);
+        if (world_of(L, joint, &global) != 0)
+            return -1;
+        if (!inverse_bind.empty())
+            std::copy(&inverse_bind[16 * j], &inverse_bind[16 * j] + 16, bind.m);
+        const Mat4 m = mat4_mul(global, bind);
+        std::copy(m.m, m.m + 16, &out[16 * j]);
+    }
+    return 0;
+}
+
+/* JOINTS_n / WEIGHTS_n for n = 0, 1, ...: 4 influences per set and vertex,
+ * interleaved per vertex in out.joints / out.weights. */
+int read_influences(Loader &L, const std::string &what, const tinygltf::Primitive &prim, size_t joint_count,
+                    Primitive &out)
+{
+    const size_t vertex_count = out.positions.size() / 3;
+    std::vector<std::vector<uint32_t>> joints;
+    std::vector<std::vector<float>> weights;
+    for (int set = 0;; ++set) {
+        const std::string j = "JOINTS_" + std::to_string(set), w = "WEIGHTS_" + std::to_string(set);
+        const int ji = attribute(prim, j.c_str()), wi = attribute(prim, w.c_str());
+        if (ji < 0 && wi < 0)
+            break;
+        joints.emplace_back();
+        weights.emplace_back();
+        if (ji < 0 || wi < 0)
+            return L.fail("%s: %s without %s", what.c_str(), ji < 0 ? w.c_str() : j.c_str(),
+                          ji < 0 ? j.c_str() : w.c_str());
+        if (read_uints(L, what, role_joints, ji, joints.back()) != 0 ||
+            read_vertex_floats(L, what, role_weights, wi, vertex_count, weights.back()) != 0)
+            return -1;
+        if (joints.back().size() != 4 * vertex_count)
+            return L.fail("%s: %s has %zu elements but POSITION has %zu", what.c_str(), j.c_str(),
+                          joints.back().size() / 4, vertex_count);
+    }
+    out.influences = 4 * (int)joints.size();
+    out.joints.resize(vertex_count * (size_t)out.influences);
+    out.weights.resize(out.joints.size());
+    for (size_t v = 0; v < vertex_count; ++v)
+        for (size_t s = 0; s < joints.size(); ++s)
+            for (size_t k = 0; k < 4; ++k) {
+                const size_t at = v * (size_t)out.influences + 4 * s + k;
+                out.joints[at] = joints[s][4 * v + k];
+                out.weights[at] = weights[s][4 * v + k];
+                if (out.joints[at] >= joint_count)
+                    return L.fail("%s: JOINTS_%zu %zu names joint %u (the skin has %zu)", what.c_str(), s, v,
+                                  out.joints[at], joint_count);
+            }
+    return 0;
+}
+
+/* Skins in the default pose (vertex_pose.h): the vertices go to world space
+ * by their joints; the skinned node's own transform is not applied. */
+int apply_skin(Loader &L, const std::string &what, const tinygltf::Node &node, const tinygltf::Primitive &prim,
+               Primitive &out)
+{
+    if (node.skin < 0)
+        return 0;
+    if ((size_t)node.skin >= L.model.skins.size())
+        return L.fail("%s: skin %d does not exist", what.c_str(), node.skin);
+    const tinygltf::Skin &skin = L.model.skins[(size_t)node.skin];
+    if (read_influences(L, what, prim, skin.joints.size(), out) != 0)
+        return -1;
+    if (out.influences == 0) {
+        gt_warn(L.path, "%s: its node has a skin but it has no JOINTS_0/WEIGHTS_0; drawn unskinned", what.c_str());
+        return 0;
+    }
+    std::vector<double> matrices;
+    if (joint_matrices(L, what, skin, matrices) != 0)
+        return -1;
+    pose_skin_vertices(matrices.data(), out.joints.data(), out.weights.data(), out.influences,
+                       out.positions.size() / 3, out.positions.data(), out.normals.empty() ? nullptr : out.normals.data());
+    out.skinned = true;
+    return 0;
+}
+
+/* One primitive: its geometry (Draco or accessors), morphed, skinned, and
+ * unwelded when it has no normals. */
+int read_primitive(Loader &L, const std::string &what, const tinygltf::Node &node, const tinygltf::Mesh &mesh,
+                   const tinygltf::Primitive &prim, Primitive &out)
+{
+    L.quantized_primitive = L.morphed_primitive = false;
+    const tinygltf::Value *draco = extension(prim.extensions, "KHR_draco_mesh_compression");
+    if ((draco ? read_draco_attributes(L, what, prim, *draco, out) : read_accessor_attributes(L, what, prim, out)) != 0 ||
+        apply_morph_targets(L, what, node, mesh, prim, out) != 0 || apply_skin(L, what, node, prim, out) != 0)
+        return -1;
+    gltf_report *r = L.report;
+    r->quantized_primitives += L.quantized_primitive;
+    r->morphed_primitives += L.morphed_primitive;
+    r->skinned_primitives += out.skinned;
+    r->primitives_without_normals += out.normals.empty();
     if (out.normals.empty())
         unweld(out);
     return 0;
@@ -927,6 +1404,8 @@ int convert_materials(Loader &L)
 
 /* ------------------------------------------------------------- traversal */
 
+/* Triangle primitives (modes 4-6) become meshes; points and lines are
+ * skipped with a warning (once per mesh). */
 int add_node_meshes(Loader &L, int node_index, const Mat4 &world)
 {
     const tinygltf::Node &node = L.model.nodes[(size_t)node_index];
@@ -940,7 +1419,9 @@ int add_node_meshes(Loader &L, int node_index, const Mat4 &world)
         const std::string what = "mesh " + std::to_string(node.mesh) +
                                  (mesh.name.empty() ? "" : " (" + printable(mesh.name) + ")") + " primitive " +
                                  std::to_string(p);
-        if (prim.mode != TINYGLTF_MODE_TRIANGLES) {
+        if (prim.mode >= 0 && prim.mode < 7)
+            ++L.report->primitives_by_mode[prim.mode];
+        if (!gltf_mode_has_triangles(prim.mode)) {
             if (!L.warned_mode[(size_t)node.mesh])
                 gt_warn(L.path, "%s: mode %d (%s) is not triangles; skipped", what.c_str(), prim.mode,
                         mode_name(prim.mode));
@@ -950,7 +1431,8 @@ int add_node_meshes(Loader &L, int node_index, const Mat4 &world)
         if (prim.material < -1 || prim.material >= (int)L.model.materials.size())
             return L.fail("%s: material %d does not exist", what.c_str(), prim.material);
         Primitive data;
-        if (read_primitive(L, what, prim, data) != 0 || add_world_mesh(L, what, data, world, prim.material) != 0)
+        if (read_primitive(L, what, node, mesh, prim, data) != 0 ||
+            add_world_mesh(L, what, data, data.skinned ? mat4_identity() : world, prim.material) != 0)
             return -1;
     }
     return 0;
@@ -1027,22 +1509,19 @@ int flatten(Loader &L)
     if (scene_roots(L, roots) != 0)
         return -1;
     L.warned_mode.assign(L.model.meshes.size(), false);
-    std::vector<Mat4> world(L.model.nodes.size());
+    L.world.assign(L.model.nodes.size(), mat4_identity());
+    L.world_known.assign(L.model.nodes.size(), 0);
     std::vector<int> stack(roots.rbegin(), roots.rend());
     while (!stack.empty()) {
         const int index = stack.back();
         stack.pop_back();
-        Mat4 local;
-        if (node_local_matrix(L, index, &local) != 0)
+        Mat4 world;
+        if (world_of(L, index, &world) != 0)
             return -1;
-        const int parent = L.parent[(size_t)index];
-        world[(size_t)index] = parent >= 0 ? mat4_mul(world[(size_t)parent], local) : local;
-        if (!mat4_is_finite(world[(size_t)index]))
-            return L.fail("node %d: world transform overflows", index);
         const tinygltf::Node &node = L.model.nodes[(size_t)index];
-        if (add_node_meshes(L, index, world[(size_t)index]) != 0)
+        if (add_node_meshes(L, index, world) != 0)
             return -1;
-        if (node.camera >= 0 && !L.s->has_camera && set_camera(L, index, world[(size_t)index]) != 0)
+        if (node.camera >= 0 && !L.s->has_camera && set_camera(L, index, world) != 0)
             return -1;
         stack.insert(stack.end(), node.children.rbegin(), node.children.rend());
     }
@@ -1058,7 +1537,7 @@ int load(Loader &L, const unsigned char *bytes, size_t size, const std::string &
 }
 
 int load_guarded(const unsigned char *bytes, size_t size, const char *name, const std::string &base_dir, scene *s,
-                 gt_error *e)
+                 gltf_report *report, gt_error *e)
 {
     int rc;
     try {
@@ -1066,9 +1545,11 @@ int load_guarded(const unsigned char *bytes, size_t size, const char *name, cons
         L.path = name;
         L.e = e;
         L.s = s;
+        L.report = report;
         const char *slash = std::strrchr(name, '/');
         std::snprintf(s->name, sizeof s->name, "%s", slash ? slash + 1 : name);
         rc = load(L, bytes, size, base_dir);
+        report->sparse_accessors = (int)L.sparse_seen.size();
     } catch (const std::bad_alloc &) {
         rc = gt_error_set(e, name, "out of memory");
     } catch (const std::exception &x) { /* tinygltf throws on some malformed input */
@@ -1077,19 +1558,29 @@ int load_guarded(const unsigned char *bytes, size_t size, const char *name, cons
     return rc;
 }
 
-} // namespace
-
-extern "C" int gltf_load_memory(const void *bytes, size_t size, const char *name, const char *base_dir, scene *s,
-                                gt_error *e)
+int load_memory(const void *bytes, size_t size, const char *name, const char *base_dir, scene *s,
+                gltf_report *report, gt_error *e)
 {
+    gltf_report unused;
+    report = report ? report : &unused;
+    std::memset(report, 0, sizeof *report);
     std::memset(s, 0, sizeof *s);
-    int rc = load_guarded(static_cast<const unsigned char *>(bytes), size, name, base_dir ? base_dir : "", s, e);
+    int rc = load_guarded(static_cast<const unsigned char *>(bytes), size, name, base_dir ? base_dir : "", s, report,
+                          e);
     if (rc != 0)
         scene_free(s);
     return rc;
 }
 
-extern "C" int gltf_load(const char *path, scene *s, gt_error *e)
+} // namespace
+
+extern "C" int gltf_load_memory(const void *bytes, size_t size, const char *name, const char *base_dir, scene *s,
+                                gt_error *e)
+{
+    return load_memory(bytes, size, name, base_dir, s, nullptr, e);
+}
+
+extern "C" int gltf_load_report(const char *path, scene *s, gltf_report *report, gt_error *e)
 {
     std::memset(s, 0, sizeof *s);
     int rc;
@@ -1097,9 +1588,14 @@ extern "C" int gltf_load(const char *path, scene *s, gt_error *e)
         std::vector<unsigned char> bytes;
         rc = read_whole_file(path, bytes, e);
         if (rc == 0)
-            rc = gltf_load_memory(bytes.data(), bytes.size(), path, directory_of(path).c_str(), s, e);
+            rc = load_memory(bytes.data(), bytes.size(), path, directory_of(path).c_str(), s, report, e);
     } catch (const std::bad_alloc &) {
         rc = gt_error_set(e, path, "out of memory");
     }
     return rc;
+}
+
+extern "C" int gltf_load(const char *path, scene *s, gt_error *e)
+{
+    return gltf_load_report(path, s, nullptr, e);
 }

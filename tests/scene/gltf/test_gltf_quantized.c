@@ -1,0 +1,57 @@
+/* KHR_mesh_quantization as gltfpack writes it (its default output; made here
+ * at run time from assimp-testmodels' 2CylinderEngine.glb) against gltfpack's
+ * -noq output of the same model (plain floats, same vertices in the same
+ * order). gltfpack rounds positions to 14-bit integers over the scene's
+ * largest bounding-box side L (one grid for the scene, whose step
+ * s = L / (2^14 - 1) the node transforms carry) and normals to 8-bit
+ * normalized integers; the bounds of gltf_equivalence.h follow: every vertex
+ * within (sqrt(3) / 2) s plus float rounding of the world transform (4 ulp
+ * of the largest coordinate), every unit normal within sqrt(3) / 127, and
+ * the AO image mean within 4 paired standard errors plus the geometric term. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "gltf_equivalence.h"
+#include "gltf_test_files.h"
+#include "scene/gltf_reader.h"
+#include "tests/check.h"
+
+#define ENGINE "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb"
+
+int main(void)
+{
+    struct stat st;
+    if (stat(ENGINE, &st) != 0) {
+        printf("test_gltf_quantized: %s not installed (assimp-testmodels); skipped\n", ENGINE);
+        return check_report("test_gltf_quantized");
+    }
+    char plain_path[4096], quantized_path[4096];
+    snprintf(plain_path, sizeof plain_path, "%s", tmp_path("engine_noq.glb"));
+    snprintf(quantized_path, sizeof quantized_path, "%s", tmp_path("engine_q.glb"));
+    const int rc = run_gltfpack(ENGINE, plain_path, "-noq");
+    if (rc == 1) {
+        printf("test_gltf_quantized: gltfpack is not installed (Debian package gltfpack; setup.sh installs it); "
+               "skipped\n");
+        return check_report("test_gltf_quantized");
+    }
+    CHECK(rc == 0 && run_gltfpack(ENGINE, quantized_path, "") == 0);
+    scene plain, quantized;
+    gltf_report report;
+    gt_error e;
+    CHECK_MSG(gltf_load(plain_path, &plain, &e) == 0, "%s", e.message);
+    CHECK_MSG(gltf_load_report(quantized_path, &quantized, &report, &e) == 0, "%s", e.message);
+    CHECK(report.quantized_primitives > 0 && strstr(report.extensions_used, "KHR_mesh_quantization"));
+    vec3 lo, hi;
+    scene_bounds(&plain, &lo, &hi);
+    const double side = fmax(fmax(hi.x - lo.x, hi.y - lo.y), hi.z - lo.z);
+    const double largest = fmax(fmax(fmax(fabs(lo.x), fabs(hi.x)), fmax(fabs(lo.y), fabs(hi.y))), fmax(fabs(lo.z), fabs(hi.z)));
+    const double step = side / 16383.0;
+    const double bound = sqrt(3.0) / 2.0 * step + 4.0 * largest * 0x1p-23;
+    check_same_geometry(&plain, &quantized, bound, sqrt(3.0) / 127.0, "quantized");
+    check_same_ao(&plain, &quantized, bound, "quantized");
+    scene_free(&plain);
+    scene_free(&quantized);
+    return check_report("test_gltf_quantized");
+}
