@@ -55,6 +55,12 @@ float gltf_component_float(const unsigned char *p, int k, int component_type, in
     }
 }
 
+float gltf_component_unit(int component_type, int normalized)
+{
+    static const unsigned char one[4] = {1, 0, 0, 0};
+    return component_type == GLTF_FLOAT ? 0.0f : gltf_component_float(one, 0, component_type, normalized);
+}
+
 uint32_t gltf_component_uint(const unsigned char *p, int k, int component_type)
 {
     switch (component_type) {

@@ -28,6 +28,10 @@ int gltf_component_size(int component_type);
 /* Component k of the element at p, as the float it stands for. */
 float gltf_component_float(const unsigned char *p, int k, int component_type, int normalized);
 
+/* The float one integer step stands for: 1 unnormalized, 1 / 127, 1 / 255,
+ * 1 / 32767 or 1 / 65535 normalized; 0 for float. */
+float gltf_component_unit(int component_type, int normalized);
+
 /* An unsigned integer component (indices, joints, sparse indices). */
 uint32_t gltf_component_uint(const unsigned char *p, int k, int component_type);
 

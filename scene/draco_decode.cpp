@@ -1,5 +1,6 @@
 /* KHR_draco_mesh_compression through libdraco: the thin C++ adapter behind
  * scene/draco_decode.h. */
+#include <draco/attributes/attribute_quantization_transform.h>
 #include <draco/compression/decode.h>
 
 #include <memory>
@@ -11,6 +12,8 @@ extern "C" {
 
 struct draco_geometry {
     std::unique_ptr<draco::Mesh> mesh;
+    const unsigned char *bytes; /* the encoded mesh (the caller's, alive as long as this) */
+    size_t size;
 };
 
 extern "C" int draco_geometry_decode(const unsigned char *bytes, size_t size, draco_geometry **out, const char *what,
@@ -27,7 +30,7 @@ extern "C" int draco_geometry_decode(const unsigned char *bytes, size_t size, dr
                                 decoded.status().error_msg());
         if (!decoded.value())
             return gt_error_set(e, what, "KHR_draco_mesh_compression: the Draco data holds no triangle mesh");
-        *out = new draco_geometry{std::move(decoded).value()};
+        *out = new draco_geometry{std::move(decoded).value(), bytes, size};
         return 0;
     } catch (const std::bad_alloc &) {
         return gt_error_set(e, what, "out of memory");
@@ -66,6 +69,27 @@ extern "C" int draco_geometry_attribute(const draco_geometry *g, int id, int com
             return gt_error_set(e, what, "KHR_draco_mesh_compression: Draco attribute %d does not convert to float",
                                 id);
     return 0;
+}
+
+/* The decoder applies the quantization transform and drops its parameters;
+ * decoded again without applying it to positions, the attribute keeps them. */
+extern "C" double draco_geometry_step(const draco_geometry *g, int id)
+{
+    try {
+        draco::DecoderBuffer buffer;
+        buffer.Init(reinterpret_cast<const char *>(g->bytes), g->size);
+        draco::Decoder decoder;
+        decoder.SetSkipAttributeTransform(draco::GeometryAttribute::POSITION);
+        auto raw = decoder.DecodeMeshFromBuffer(&buffer);
+        const draco::PointAttribute *a =
+            raw.ok() && raw.value() && id >= 0 ? raw.value()->GetAttributeByUniqueId((uint32_t)id) : nullptr;
+        draco::AttributeQuantizationTransform q;
+        if (!a || !q.InitFromAttribute(*a) || q.quantization_bits() <= 0 || q.quantization_bits() > 30)
+            return 0.0;
+        return (double)q.range() / (double)((1u << q.quantization_bits()) - 1u);
+    } catch (const std::bad_alloc &) {
+        return 0.0;
+    }
 }
 
 extern "C" void draco_geometry_free(draco_geometry *g)

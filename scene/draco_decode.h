@@ -16,7 +16,8 @@
 typedef struct draco_geometry draco_geometry;
 
 /* Decodes a Draco triangle mesh. Returns 0 and *out (free with
- * draco_geometry_free), or -1 with e = "<what>: <problem>". */
+ * draco_geometry_free; bytes must outlive it), or -1 with
+ * e = "<what>: <problem>". */
 int draco_geometry_decode(const unsigned char *bytes, size_t size, draco_geometry **out, const char *what,
                           gt_error *e);
 uint32_t draco_geometry_vertex_count(const draco_geometry *g);
@@ -28,6 +29,9 @@ void draco_geometry_indices(const draco_geometry *g, uint32_t *out);
  * no such attribute or it has fewer components. */
 int draco_geometry_attribute(const draco_geometry *g, int id, int components, float *out, const char *what,
                              gt_error *e);
+/* The grid step Draco quantized attribute `id` to, range / (2^bits - 1)
+ * (in the attribute's units), or 0 when it was stored unquantized. */
+double draco_geometry_step(const draco_geometry *g, int id);
 void draco_geometry_free(draco_geometry *g);
 
 #endif

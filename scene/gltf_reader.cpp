@@ -122,6 +122,18 @@ void mat4_cofactor3(const Mat4 &a, double cof[9])
         }
 }
 
+/* The largest length of the images of the unit axes: how much the
+ * transform stretches a short distance at most, for a transform without
+ * shear (rotation times scale, as TRS nodes are). */
+double mat4_largest_scale(const Mat4 &a)
+{
+    double largest = 0.0;
+    for (int c = 0; c < 3; ++c)
+        largest = std::max(largest, std::sqrt(a.m[4 * c] * a.m[4 * c] + a.m[4 * c + 1] * a.m[4 * c + 1] +
+                                              a.m[4 * c + 2] * a.m[4 * c + 2]));
+    return largest;
+}
+
 bool mat4_is_finite(const Mat4 &a)
 {
     for (double v : a.m)
@@ -273,6 +285,7 @@ struct Loader {
     std::vector<char> world_known;
     bool quantization = false;        /* KHR_mesh_quantization is in extensionsUsed */
     bool quantized_primitive = false, morphed_primitive = false; /* of the primitive being read */
+    double position_step = 0.0;       /* of the primitive being read, in its local units */
     std::set<int> sparse_seen;        /* sparse accessors read */
     gltf_report *report;
 
@@ -809,6 +822,8 @@ int read_floats(Loader &L, const std::string &what, const RoleTypes &role, int i
         }
     if (role.quantized && type_flag(a.componentType, a.normalized) != F32)
         L.quantized_primitive = true;
+    if (&role == &role_position && a.componentType != GLTF_FLOAT) /* the integer unit, normalized or not */
+        L.position_step = gltf_component_unit(a.componentType, a.normalized);
     return 0;
 }
 
@@ -1039,6 +1054,7 @@ int read_draco_attributes(Loader &L, const std::string &what, const tinygltf::Pr
     if (draco_geometry_decode(v.base, length, &g, where.c_str(), L.e) != 0)
         return -1;
     const int rc = read_draco_geometry(L, what, g, ext, out);
+    L.position_step = draco_geometry_step(g, (int)member_count(member(ext, "attributes"), "POSITION", -1));
     draco_geometry_free(g);
     L.report->draco_primitives += rc == 0;
     return rc;
@@ -1220,6 +1236,7 @@ int read_primitive(Loader &L, const std::string &what, const tinygltf::Node &nod
                    const tinygltf::Primitive &prim, Primitive &out)
 {
     L.quantized_primitive = L.morphed_primitive = false;
+    L.position_step = 0.0;
     const tinygltf::Value *draco = extension(prim.extensions, "KHR_draco_mesh_compression");
     if ((draco ? read_draco_attributes(L, what, prim, *draco, out) : read_accessor_attributes(L, what, prim, out)) != 0 ||
         apply_morph_targets(L, what, node, mesh, prim, out) != 0 || apply_skin(L, what, node, prim, out) != 0)
@@ -1431,9 +1448,12 @@ int add_node_meshes(Loader &L, int node_index, const Mat4 &world)
         if (prim.material < -1 || prim.material >= (int)L.model.materials.size())
             return L.fail("%s: material %d does not exist", what.c_str(), prim.material);
         Primitive data;
-        if (read_primitive(L, what, node, mesh, prim, data) != 0 ||
-            add_world_mesh(L, what, data, data.skinned ? mat4_identity() : world, prim.material) != 0)
+        if (read_primitive(L, what, node, mesh, prim, data) != 0)
             return -1;
+        const Mat4 placed = data.skinned ? mat4_identity() : world;
+        if (add_world_mesh(L, what, data, placed, prim.material) != 0)
+            return -1;
+        L.report->position_step = std::max(L.report->position_step, L.position_step * mat4_largest_scale(placed));
     }
     return 0;
 }

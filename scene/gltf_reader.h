@@ -37,6 +37,9 @@ typedef struct {
     int morphed_primitives;         /* morph targets applied with a non-zero weight */
     int skinned_primitives;         /* posed by a skin (default pose) */
     int primitives_without_normals; /* flat-shaded */
+    double position_step;           /* the largest quantization step of a position, in world units (the
+                                     * integer unit, or Draco's grid step, times the node's largest
+                                     * axis scale); 0 when every position is a float */
     char extensions_used[512];      /* the file's extensionsUsed, ", "-separated */
 } gltf_report;
 

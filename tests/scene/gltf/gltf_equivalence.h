@@ -22,7 +22,8 @@
  * gltfpack is not installed (the caller skips, saying so), -1 on failure. */
 int run_gltfpack(const char *in, const char *out, const char *flags);
 
-/* The vertices of b against a's, mesh by mesh in order: at most
+/* The vertices of b against a's, mesh by mesh in order, with the same
+ * triangles (each up to a rotation of its corners): at most
  * position_bound apart and normals at most normal_bound apart (a normal_bound
  * < 0 skips normals). Returns the largest position distance seen. */
 double check_same_geometry(const scene *a, const scene *b, double position_bound, double normal_bound,
