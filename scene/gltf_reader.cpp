@@ -1238,6 +1238,9 @@ int read_primitive(Loader &L, const std::string &what, const tinygltf::Node &nod
     L.quantized_primitive = L.morphed_primitive = false;
     L.position_step = 0.0;
     const tinygltf::Value *draco = extension(prim.extensions, "KHR_draco_mesh_compression");
+    if (draco && (node.skin >= 0 || !prim.targets.empty()))
+        return L.fail("%s: KHR_draco_mesh_compression with %s is not supported", what.c_str(),
+                      node.skin >= 0 ? "a skin" : "morph targets");
     if ((draco ? read_draco_attributes(L, what, prim, *draco, out) : read_accessor_attributes(L, what, prim, out)) != 0 ||
         apply_morph_targets(L, what, node, mesh, prim, out) != 0 || apply_skin(L, what, node, prim, out) != 0)
         return -1;
