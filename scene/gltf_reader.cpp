@@ -37,6 +37,7 @@ extern "C" {
 #include "scene/gltf_reader.h"
 #include "scene/meshopt_decode.h"
 #include "scene/primitive_topology.h"
+#include "scene/uv_transform.h"
 #include "scene/vertex_pose.h"
 }
 #include <set>
@@ -287,6 +288,7 @@ struct Loader {
     bool quantized_primitive = false, morphed_primitive = false; /* of the primitive being read */
     double position_step = 0.0;       /* of the primitive being read, in its local units */
     std::set<int> sparse_seen;        /* sparse accessors read */
+    std::vector<uv_transform> material_uv; /* per material: KHR_texture_transform, baked into texcoords */
     gltf_report *report;
 
     int fail(const char *fmt, ...) __attribute__((format(printf, 2, 3)))
@@ -379,7 +381,7 @@ bool load_image(tinygltf::Image *image, const int index, std::string *err, std::
 bool supported_extension(const std::string &name)
 {
     return name == "KHR_mesh_quantization" || name == "EXT_meshopt_compression" ||
-           name == "KHR_draco_mesh_compression";
+           name == "KHR_draco_mesh_compression" || name == "KHR_texture_transform";
 }
 
 /* Extensions that store data gtlab cannot decode, with what they hold. */
@@ -1287,8 +1289,11 @@ int add_world_mesh(Loader &L, const std::string &what, const Primitive &p, const
     m->material = material;
     for (uint32_t i = 0; i < vertex_count; ++i)
         v3_store(&m->positions[3 * (size_t)i], mat4_point(world, &p.positions[3 * (size_t)i]));
-    if (!p.texcoords.empty())
+    if (!p.texcoords.empty()) {
         std::copy(p.texcoords.begin(), p.texcoords.end(), m->texcoords);
+        if (material >= 0)
+            uv_transform_apply(&L.material_uv[(size_t)material], m->texcoords, vertex_count);
+    }
     /* A mirroring transform (det < 0) turns counter-clockwise triangles
      * clockwise; swapping two corners keeps the geometric normal on the side
      * of the transformed shading normals. */
@@ -1396,10 +1401,68 @@ int convert_texture(Loader &L, int material, const char *slot, const tinygltf::T
     return 0;
 }
 
+/* o[key] as `n` numbers (a number when n is 1), or `fallback` when absent. */
+bool member_numbers(const tinygltf::Value &o, const char *key, int n, const double *fallback, double *out)
+{
+    const tinygltf::Value &v = member(o, key);
+    std::copy(fallback, fallback + n, out);
+    if (v.Type() == tinygltf::NULL_TYPE)
+        return true;
+    if (n == 1 && v.IsNumber()) {
+        out[0] = v.GetNumberAsDouble();
+        return true;
+    }
+    if (n == 1 || !v.IsArray() || v.ArrayLen() != (size_t)n)
+        return false;
+    for (int k = 0; k < n; ++k) {
+        if (!v.Get(k).IsNumber())
+            return false;
+        out[k] = v.Get(k).GetNumberAsDouble();
+    }
+    return true;
+}
+
+/* The slot's KHR_texture_transform (identity without one). */
+int texture_transform(Loader &L, int material, const char *slot, const tinygltf::TextureInfo &info, uv_transform *out)
+{
+    *out = uv_transform_identity();
+    const tinygltf::Value *ext = extension(info.extensions, "KHR_texture_transform");
+    if (!ext)
+        return 0;
+    static const double zero[2] = {0, 0}, one[2] = {1, 1};
+    double offset[2], rotation, scale[2];
+    if (!member_numbers(*ext, "offset", 2, zero, offset) || !member_numbers(*ext, "rotation", 1, zero, &rotation) ||
+        !member_numbers(*ext, "scale", 2, one, scale))
+        return L.fail("material %d: %s: KHR_texture_transform has an offset, rotation or scale that is not numbers",
+                      material, slot);
+    if (member_count(*ext, "texCoord", 0) != 0)
+        gt_warn(L.path, "material %d: %s: KHR_texture_transform selects another TEXCOORD set (only TEXCOORD_0 is "
+                        "read); its transform is applied to TEXCOORD_0", material, slot);
+    *out = uv_transform_from_khr(offset, rotation, scale);
+    return 0;
+}
+
+/* A mesh has one set of texture coordinates, so a material's textures must
+ * share their transform: the base colour texture's wins, with a warning. */
+int material_uv_transform(Loader &L, int material, const tinygltf::PbrMetallicRoughness &pbr, uv_transform *out)
+{
+    uv_transform color, mr;
+    if (texture_transform(L, material, "baseColorTexture", pbr.baseColorTexture, &color) != 0 ||
+        texture_transform(L, material, "metallicRoughnessTexture", pbr.metallicRoughnessTexture, &mr) != 0)
+        return -1;
+    const bool both = pbr.baseColorTexture.index >= 0 && pbr.metallicRoughnessTexture.index >= 0;
+    if (both && !uv_transform_equal(&color, &mr))
+        gt_warn(L.path, "material %d: its textures have different KHR_texture_transform; using baseColorTexture's",
+                material);
+    *out = pbr.baseColorTexture.index >= 0 ? color : mr;
+    return 0;
+}
+
 /* glTF materials become scene materials with the same indices. */
 int convert_materials(Loader &L)
 {
     L.image_texture.assign(L.model.images.size(), -1);
+    L.material_uv.assign(L.model.materials.size(), uv_transform_identity());
     for (size_t i = 0; i < L.model.materials.size(); ++i) {
         const tinygltf::PbrMetallicRoughness &pbr = L.model.materials[i].pbrMetallicRoughness;
         scene_material sm = scene_default_material();
@@ -1414,7 +1477,8 @@ int convert_materials(Loader &L)
         sm.roughness = (float)pbr.roughnessFactor;
         if (convert_texture(L, (int)i, "baseColorTexture", pbr.baseColorTexture, &sm.base_color_texture) != 0 ||
             convert_texture(L, (int)i, "metallicRoughnessTexture", pbr.metallicRoughnessTexture,
-                            &sm.metallic_roughness_texture) != 0)
+                            &sm.metallic_roughness_texture) != 0 ||
+            material_uv_transform(L, (int)i, pbr, &L.material_uv[i]) != 0)
             return -1;
         if (scene_add_material(L.s, sm) < 0)
             return L.fail("out of memory");

@@ -10,7 +10,8 @@
  * attributes of KHR_mesh_quantization (accessor_decode.h), morph targets and
  * skins in their default pose (vertex_pose.h), bufferViews compressed with
  * EXT_meshopt_compression (meshopt_decode.h), primitives compressed with
- * KHR_draco_mesh_compression (draco_decode.h), base-colour and
+ * KHR_draco_mesh_compression (draco_decode.h), KHR_texture_transform baked
+ * into TEXCOORD_0 (uv_transform.h), base-colour and
  * metallic-roughness factors and textures, and the first perspective camera
  * met in the hierarchy. A file that requires any other extension is refused
  * naming it, before anything else is read. Every problem that would make the render wrong is an

@@ -6,7 +6,10 @@
  *  - sparse accessors: POSITION's element 1 replaced by sparse values, and
  *    TEXCOORD_0 without a bufferView (zeros) but for a sparse element 2;
  *  - the same file without KHR_mesh_quantization in extensionsUsed is
- *    refused, naming the extension. */
+ *    refused, naming the extension;
+ *  - KHR_texture_transform, on the extension's own example (offset [0, 1],
+ *    rotation pi/2, scale [0.5, 0.5]: the lower-left quadrant of the image,
+ *    rotated): uv (u, v) -> (v / 2, 1 - u / 2), baked into TEXCOORD_0. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -32,6 +35,13 @@ static const buffer_layout data = {
     {{-128, 0, 0, 0}, {0, 127, 0, 0}, {0, 64, -64, 0}},
     {1, 0, 0, 0}, {10, -20, 30, 0}, {2, 0, 0, 0}, {0.25f, 0.75f}};
 
+/* A 1x1 PNG texture with the spec's example transform. */
+static const char textured[] =
+    "\"materials\":[{\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":0,\"extensions\":"
+    "{\"KHR_texture_transform\":{\"offset\":[0,1],\"rotation\":1.57079632679,\"scale\":[0.5,0.5]}}}}}],"
+    "\"textures\":[{\"source\":0}],\"images\":[{\"uri\":\"data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAf"
+    "FcSJAAAADUlEQVR42mP8z8BQDwAEhQGAhKmMIQAAAABJRU5ErkJggg==\"}],";
+
 static const char *write_file(const char *name, const char *extensions)
 {
     char *uri = data_uri(&data, sizeof data);
@@ -39,7 +49,7 @@ static const char *write_file(const char *name, const char *extensions)
     snprintf(json, sizeof json,
              "{\"asset\":{\"version\":\"2.0\"},%s\"scenes\":[{\"nodes\":[0]}],"
              "\"nodes\":[{\"mesh\":0,\"scale\":[0.5,0.5,0.5],\"translation\":[1,0,0]}],"
-             "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0,\"NORMAL\":1,\"TEXCOORD_0\":2}}]}],"
+             "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0,\"NORMAL\":1,\"TEXCOORD_0\":2}%s}]}],"
              "\"buffers\":[{\"byteLength\":%zu,\"uri\":\"%s\"}],"
              "\"bufferViews\":[{\"buffer\":0,\"byteLength\":24,\"byteStride\":8},"
              "{\"buffer\":0,\"byteOffset\":24,\"byteLength\":12,\"byteStride\":4},"
@@ -50,7 +60,7 @@ static const char *write_file(const char *name, const char *extensions)
              "{\"bufferView\":1,\"componentType\":5120,\"normalized\":true,\"count\":3,\"type\":\"VEC3\"},"
              "{\"componentType\":5126,\"count\":3,\"type\":\"VEC2\","
              "\"sparse\":{\"count\":1,\"indices\":{\"bufferView\":4,\"componentType\":5121},\"values\":{\"bufferView\":5}}}]}",
-             extensions, sizeof data, uri);
+             extensions, strstr(extensions, "KHR_texture_transform") ? ",\"material\":0" : "", sizeof data, uri);
     free(uri);
     const char *path = tmp_path(name);
     CHECK(write_bytes(path, json, strlen(json)) == 0);
@@ -86,8 +96,23 @@ static void check_loaded(const scene *s)
     CHECK(memcmp(m->texcoords, uv, sizeof uv) == 0);
 }
 
+static void check_texture_transform(void)
+{
+    char extensions[2048];
+    snprintf(extensions, sizeof extensions, "\"extensionsUsed\":[\"KHR_mesh_quantization\",\"KHR_texture_transform\"],%s",
+             textured);
+    scene s;
+    gt_error e;
+    CHECK_MSG(gltf_load(write_file("texture_transform.gltf", extensions), &s, &e) == 0, "%s", e.message);
+    const float uv[6] = {0, 1, 0, 1, 0.375f, 0.875f};
+    for (int i = 0; i < 6 && s.mesh_count == 1; ++i)
+        CHECK_NEAR(s.meshes[0].texcoords[i], uv[i], 1e-7);
+    scene_free(&s);
+}
+
 int main(void)
 {
+    check_texture_transform();
     check_formulas();
     scene s;
     gltf_report r;

@@ -67,7 +67,7 @@ static const expectation table[] = {
     {"glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf", 12, NULL, "morphed 0"}, /* weights 0 */
     {"issue_3269/texcoord_crash.gltf", 10, NULL, NULL},
     {"simple_skin/simple_skin.gltf", 8, NULL, "skinned 1"},
-    {"textureTransform/TextureTransformTest.gltf", 24, NULL, NULL}, /* KHR_texture_transform used, not required */
+    {"textureTransform/TextureTransformTest.gltf", 24, NULL, NULL}, /* KHR_texture_transform applied */
     {"wrongTypes/badArray.gltf", 0, no_triangles, NULL},
     {"wrongTypes/badExtension.gltf", 12, NULL, NULL},
     {"wrongTypes/badNumber.gltf", 12, NULL, NULL},

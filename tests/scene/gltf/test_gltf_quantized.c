@@ -7,7 +7,11 @@
  * normalized integers; the bounds of gltf_equivalence.h follow: every vertex
  * within (sqrt(3) / 2) s plus float rounding of the world transform (4 ulp
  * of the largest coordinate), every unit normal within sqrt(3) / 127, and
- * the AO image mean within 4 paired standard errors plus the geometric term. */
+ * the AO image mean within 4 paired standard errors plus the geometric term.
+ * Texture coordinates (BoxTextured, the same way): gltfpack rounds them to
+ * 12 bits over their range R per axis and stores the scale in a
+ * KHR_texture_transform, so each lies within R / (2 (2^12 - 1)) (plus 4 ulp)
+ * of the -noq file's once the transform is applied. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -19,6 +23,35 @@
 #include "tests/check.h"
 
 #define ENGINE "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb"
+#define BOX "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb"
+
+static void check_texcoords(void)
+{
+    char plain_path[4096], quantized_path[4096];
+    snprintf(plain_path, sizeof plain_path, "%s", tmp_path("box_noq.glb"));
+    snprintf(quantized_path, sizeof quantized_path, "%s", tmp_path("box_q.glb"));
+    CHECK(run_gltfpack(BOX, plain_path, "-noq") == 0 && run_gltfpack(BOX, quantized_path, "") == 0);
+    scene plain, quantized;
+    gt_error e;
+    if (gltf_load(plain_path, &plain, &e) != 0 || gltf_load(quantized_path, &quantized, &e) != 0) {
+        CHECK_MSG(0, "%s", e.message);
+        return;
+    }
+    const scene_mesh *a = &plain.meshes[0], *b = &quantized.meshes[0];
+    CHECK(a->texcoords && b->texcoords && a->vertex_count == b->vertex_count);
+    for (int k = 0; k < 2 && a->texcoords && b->texcoords && a->vertex_count == b->vertex_count; ++k) {
+        float lo = INFINITY, hi = -INFINITY, worst = 0.0f;
+        for (uint32_t v = 0; v < a->vertex_count; ++v)
+            lo = fminf(lo, a->texcoords[2 * v + k]), hi = fmaxf(hi, a->texcoords[2 * v + k]);
+        for (uint32_t v = 0; v < a->vertex_count; ++v)
+            worst = fmaxf(worst, fabsf(a->texcoords[2 * v + k] - b->texcoords[2 * v + k]));
+        const double bound = (hi - lo) / (2.0 * 4095.0) + 4.0 * fmax(fabs(lo), fabs(hi)) * 0x1p-23;
+        printf("texcoord %d: at most %.3g apart (bound %.3g)\n", k, worst, bound);
+        CHECK(worst <= bound);
+    }
+    scene_free(&plain);
+    scene_free(&quantized);
+}
 
 int main(void)
 {
@@ -51,6 +84,7 @@ int main(void)
     const double bound = sqrt(3.0) / 2.0 * step + 4.0 * largest * 0x1p-23;
     check_same_geometry(&plain, &quantized, bound, sqrt(3.0) / 127.0, "quantized");
     check_same_ao(&plain, &quantized, bound, "quantized");
+    check_texcoords();
     scene_free(&plain);
     scene_free(&quantized);
     return check_report("test_gltf_quantized");
