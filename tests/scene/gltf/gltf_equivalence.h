@@ -22,16 +22,24 @@
  * gltfpack is not installed (the caller skips, saying so), -1 on failure. */
 int run_gltfpack(const char *in, const char *out, const char *flags);
 
+/* Each check prints what it measured and every failure, and returns the
+ * number of failures (0: equivalent). */
+
 /* The vertices of b against a's, mesh by mesh in order, with the same
  * triangles (each up to a rotation of its corners): at most
  * position_bound apart and normals at most normal_bound apart (a normal_bound
- * < 0 skips normals). Returns the largest position distance seen. */
-double check_same_geometry(const scene *a, const scene *b, double position_bound, double normal_bound,
-                           const char *what);
+ * < 0 skips normals). */
+int check_same_geometry(const scene *a, const scene *b, double position_bound, double normal_bound, const char *what);
+
+/* For files on the same position grid whose codec reorders vertices: every
+ * vertex of b lies at the position bits of a vertex of a (mesh by mesh), with
+ * a normal at most normal_bound from one of those, and the meshes have as
+ * many triangles. */
+int check_same_vertex_sets(const scene *a, const scene *b, double normal_bound, const char *what);
 
 /* Renders AO of both with a's camera (64 x 48, same seed) and checks
  * |mean(a) - mean(b)| <= 4 SE + d / f (above) for vertices displaced by at
  * most `displacement`. Prints the numbers. */
-void check_same_ao(const scene *a, const scene *b, double displacement, const char *what);
+int check_same_ao(const scene *a, const scene *b, double displacement, const char *what);
 
 #endif

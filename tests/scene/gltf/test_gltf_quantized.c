@@ -82,8 +82,8 @@ int main(void)
     const double largest = fmax(fmax(fmax(fabs(lo.x), fabs(hi.x)), fmax(fabs(lo.y), fabs(hi.y))), fmax(fabs(lo.z), fabs(hi.z)));
     const double step = side / 16383.0;
     const double bound = sqrt(3.0) / 2.0 * step + 4.0 * largest * 0x1p-23;
-    check_same_geometry(&plain, &quantized, bound, sqrt(3.0) / 127.0, "quantized");
-    check_same_ao(&plain, &quantized, bound, "quantized");
+    CHECK(check_same_geometry(&plain, &quantized, bound, sqrt(3.0) / 127.0, "quantized") == 0);
+    CHECK(check_same_ao(&plain, &quantized, bound, "quantized") == 0);
     check_texcoords();
     scene_free(&plain);
     scene_free(&quantized);
