@@ -12,6 +12,7 @@ packages=(
   libembree-dev libopenexr-dev libopenimageio-dev openimageio-tools
   libceres-dev libeigen3-dev libtinygltf-dev libstb-dev nlohmann-json3-dev libcjson-dev python3-imath
   libssl-dev assimp-testmodels gnuplot-nox glslang-tools
+  libdraco-dev libmeshoptimizer-dev gltfpack
   clang libclang-rt-14-dev libomp-dev llvm
   libsquish-dev
 )

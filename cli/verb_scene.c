@@ -10,6 +10,7 @@
 
 #include "cli/cli.h"
 #include "scene/builtin_scenes.h"
+#include "scene/gltf_reader.h"
 #include "scene/gltf_writer.h"
 #include "scene/scene_loaders.h"
 
@@ -62,7 +63,11 @@ static const char info_usage[] =
     "  What gtlab reads from a .gltf/.glb file or builtin:NAME: its meshes (one per glTF\n"
     "  primitive, in world space) with their triangles, vertices and material, and whether\n"
     "  each had normals; a primitive without NORMAL is flat-shaded (glTF 2.0, \"Meshes\"):\n"
-    "  each triangle gets its own vertices and its face normal.\n";
+    "  each triangle gets its own vertices and its face normal. For a glTF file, also how it\n"
+    "  was read: the extensions it uses, its primitives by mode (strips and fans become\n"
+    "  triangles; points and lines are skipped), quantized and compressed data (with the\n"
+    "  largest position quantization step in world units), sparse accessors, morph targets\n"
+    "  and skins applied in their default pose, and primitives without normals.\n";
 
 static void print_info(const scene *s)
 {
@@ -84,6 +89,32 @@ static void print_info(const scene *s)
         printf("%d of %d meshes had no normals and are flat-shaded, as glTF 2.0 requires\n", flat, s->mesh_count);
 }
 
+static void print_report(const gltf_report *r)
+{
+    const int *mode = r->primitives_by_mode;
+    printf("glTF extensions used: %s\n", r->extensions_used[0] ? r->extensions_used : "none");
+    printf("primitives: %d triangle lists, %d triangle strips, %d triangle fans; %d points/lines primitives skipped\n",
+           mode[4], mode[5], mode[6], mode[0] + mode[1] + mode[2] + mode[3]);
+    printf("quantized (KHR_mesh_quantization): %d primitives; Draco-compressed: %d primitives; "
+           "meshopt-compressed: %d bufferViews\n",
+           r->quantized_primitives, r->draco_primitives, r->meshopt_views);
+    if (r->position_step > 0.0)
+        printf("positions quantized to a grid of at most %.6g world units\n", r->position_step);
+    printf("sparse accessors: %d; morph targets applied: %d primitives; skinned (default pose): %d primitives; "
+           "without normals (flat-shaded): %d primitives\n",
+           r->sparse_accessors, r->morphed_primitives, r->skinned_primitives, r->primitives_without_normals);
+}
+
+/* builtin:NAME through the loader table, any other spec as a glTF file
+ * with the reader's report. */
+static int load_for_info(const char *spec, scene *s, gltf_report *r, int *is_gltf, gt_error *e)
+{
+    *is_gltf = strncmp(spec, "builtin:", 8) != 0;
+    if (!*is_gltf)
+        return scene_load(spec, s, e);
+    return gltf_load_report(spec, s, r, e);
+}
+
 static int scene_info(int argc, char **argv)
 {
     static const struct option options[] = {{"help", no_argument, NULL, 'h'}, {NULL, 0, NULL, 0}};
@@ -98,9 +129,13 @@ static int scene_info(int argc, char **argv)
         return cli_failf("scene info", "expected one scene: a .gltf/.glb file or builtin:NAME");
     scene s;
     gt_error e;
-    if (scene_load(argv[optind], &s, &e) != 0)
+    gltf_report report;
+    int is_gltf;
+    if (load_for_info(argv[optind], &s, &report, &is_gltf, &e) != 0)
         return cli_fail(&e);
     print_info(&s);
+    if (is_gltf)
+        print_report(&report);
     scene_free(&s);
     return EXIT_OK;
 }

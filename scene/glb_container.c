@@ -4,6 +4,7 @@
 #include "scene/glb_container.h"
 
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define GLB_HEADER 12u
@@ -73,4 +74,41 @@ int glb_split(const unsigned char *bytes, size_t size, const char *what, glb_chu
     out->bin = bytes + bin_offset + CHUNK_HEADER;
     out->bin_length = (size_t)bin_length;
     return 0;
+}
+
+static void write_u32le(unsigned char *p, uint32_t v)
+{
+    for (int i = 0; i < 4; ++i)
+        p[i] = (unsigned char)(v >> (8 * i));
+}
+
+/* One chunk at p: header, data, then padding to 4 bytes with `pad`. */
+static size_t write_chunk(unsigned char *p, uint32_t type, const unsigned char *data, size_t length, unsigned char pad)
+{
+    const size_t padded = (length + 3) & ~(size_t)3;
+    write_u32le(p, (uint32_t)padded);
+    write_u32le(p + 4, type);
+    memcpy(p + CHUNK_HEADER, data, length);
+    memset(p + CHUNK_HEADER + length, pad, padded - length);
+    return CHUNK_HEADER + padded;
+}
+
+unsigned char *glb_join(const glb_chunks *chunks, size_t *out_size)
+{
+    const uint64_t json_padded = ((uint64_t)chunks->json_length + 3) & ~(uint64_t)3;
+    const uint64_t bin_padded = ((uint64_t)chunks->bin_length + 3) & ~(uint64_t)3;
+    const uint64_t size = GLB_HEADER + CHUNK_HEADER + json_padded + (chunks->bin ? CHUNK_HEADER + bin_padded : 0);
+    if (size > UINT32_MAX)
+        return NULL;
+    unsigned char *out = malloc((size_t)size);
+    if (!out)
+        return NULL;
+    memcpy(out, "glTF", 4);
+    write_u32le(out + 4, 2);
+    write_u32le(out + 8, (uint32_t)size);
+    size_t at = GLB_HEADER + write_chunk(out + GLB_HEADER, CHUNK_JSON, chunks->json, chunks->json_length, ' ');
+    if (chunks->bin)
+        write_chunk(out + at, CHUNK_BIN, chunks->bin, chunks->bin_length, 0);
+    *out_size = (size_t)size;
+    return out;
 }

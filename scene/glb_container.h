@@ -26,4 +26,9 @@ int glb_has_magic(const unsigned char *bytes, size_t size);
  * file has 300 (truncated?)"). */
 int glb_split(const unsigned char *bytes, size_t size, const char *what, glb_chunks *out, gt_error *e);
 
+/* The GLB file of the chunks (JSON padded with spaces, BIN with zeros, to 4
+ * bytes): malloc'd, its size in *out_size; NULL when out of memory or 4 GiB
+ * or more. */
+unsigned char *glb_join(const glb_chunks *chunks, size_t *out_size);
+
 #endif

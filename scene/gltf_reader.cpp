@@ -1,5 +1,9 @@
 /* glTF 2.0 in through tinygltf: the thin C++ adapter behind
  * scene/gltf_reader.h (the writer is gltf_writer.cpp; the two share no code).
+ * This file parses (the JSON gate, the prepass, tinygltf), checks the node
+ * tree, converts materials and walks the scene; accessor data is read in
+ * gltf_accessors.cpp and a primitive's geometry in gltf_primitive.cpp, with
+ * the shared parts in gltf_loader.hpp.
  *
  * tinygltf parses the JSON, the buffers (external, data: URI, GLB chunk) and
  * decodes images with stb_image, but it validates little of what the indices
@@ -31,97 +35,12 @@
 extern "C" {
 #include "core/json_check.h"
 #include "scene/glb_container.h"
-#include "scene/gltf_reader.h"
+#include "scene/gltf_json_prepass.h"
+#include "scene/primitive_topology.h"
 }
+#include "scene/gltf_loader.hpp"
 
-namespace {
-
-/* ---------------------------------------------------------------- matrices */
-
-/* 4x4 affine transform, column-major as glTF stores it: m[4 * column + row]. */
-struct Mat4 {
-    double m[16];
-};
-
-Mat4 mat4_identity()
-{
-    Mat4 r = {{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}};
-    return r;
-}
-
-Mat4 mat4_mul(const Mat4 &a, const Mat4 &b)
-{
-    Mat4 r;
-    for (int c = 0; c < 4; ++c)
-        for (int row = 0; row < 4; ++row) {
-            double sum = 0.0;
-            for (int k = 0; k < 4; ++k)
-                sum += a.m[4 * k + row] * b.m[4 * c + k];
-            r.m[4 * c + row] = sum;
-        }
-    return r;
-}
-
-/* T * R * S (glTF 2.0 "Transformations"), R from the unit quaternion (x, y, z, w). */
-Mat4 mat4_trs(const double t[3], const double q[4], const double s[3])
-{
-    const double x = q[0], y = q[1], z = q[2], w = q[3];
-    const double rot[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
-                              {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
-                              {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}};
-    Mat4 r = mat4_identity();
-    for (int c = 0; c < 3; ++c)
-        for (int row = 0; row < 3; ++row)
-            r.m[4 * c + row] = rot[row][c] * s[c];
-    for (int row = 0; row < 3; ++row)
-        r.m[12 + row] = t[row];
-    return r;
-}
-
-vec3 mat4_point(const Mat4 &a, const float p[3])
-{
-    double r[3];
-    for (int row = 0; row < 3; ++row)
-        r[row] = a.m[row] * p[0] + a.m[4 + row] * p[1] + a.m[8 + row] * p[2] + a.m[12 + row];
-    return v3((float)r[0], (float)r[1], (float)r[2]);
-}
-
-vec3 mat4_direction(const Mat4 &a, double x, double y, double z)
-{
-    double r[3];
-    for (int row = 0; row < 3; ++row)
-        r[row] = a.m[row] * x + a.m[4 + row] * y + a.m[8 + row] * z;
-    return v3((float)r[0], (float)r[1], (float)r[2]);
-}
-
-double mat4_det3(const Mat4 &a)
-{
-    const double *m = a.m;
-    return m[0] * (m[5] * m[10] - m[9] * m[6]) - m[4] * (m[1] * m[10] - m[9] * m[2]) +
-           m[8] * (m[1] * m[6] - m[5] * m[2]);
-}
-
-/* The cofactor matrix of the upper 3x3 part, cof(A) = det(A) A^-T: normals
- * transform by the inverse transpose, and the cofactor form needs no division
- * (the length is renormalised anyway; the sign of det is applied by the caller).
- * Returned as a 3x3 column-major array. */
-void mat4_cofactor3(const Mat4 &a, double cof[9])
-{
-    auto e = [&a](int row, int col) { return a.m[4 * col + row]; };
-    for (int row = 0; row < 3; ++row)
-        for (int col = 0; col < 3; ++col) {
-            const int r0 = (row + 1) % 3, r1 = (row + 2) % 3, c0 = (col + 1) % 3, c1 = (col + 2) % 3;
-            cof[3 * col + row] = e(r0, c0) * e(r1, c1) - e(r0, c1) * e(r1, c0);
-        }
-}
-
-bool mat4_is_finite(const Mat4 &a)
-{
-    for (double v : a.m)
-        if (!std::isfinite(v))
-            return false;
-    return true;
-}
+namespace gltf_detail {
 
 /* ------------------------------------------------------------ small helpers */
 
@@ -252,28 +171,6 @@ const char *type_name(int type)
     }
 }
 
-struct Loader {
-    const char *path;
-    gt_error *e;
-    scene *s;
-    tinygltf::Model model;
-    std::vector<int> parent;          /* per node, -1 for a root */
-    std::map<int, std::string> image_problem; /* why an image has no pixels */
-    std::vector<int> image_texture;   /* glTF image -> scene texture, -1 = not yet */
-    std::vector<bool> warned_mode;    /* per mesh: non-triangle primitive reported */
-    bool warned_orthographic = false;
-
-    int fail(const char *fmt, ...) __attribute__((format(printf, 2, 3)))
-    {
-        char problem[768];
-        va_list ap;
-        va_start(ap, fmt);
-        std::vsnprintf(problem, sizeof problem, fmt, ap);
-        va_end(ap);
-        return gt_error_set(e, path, "%s", problem);
-    }
-};
-
 int read_whole_file(const char *path, std::vector<unsigned char> &bytes, gt_error *e)
 {
     FILE *f = std::fopen(path, "rb");
@@ -349,16 +246,21 @@ bool load_image(tinygltf::Image *image, const int index, std::string *err, std::
     return true;
 }
 
-/* The extensions that store data gtlab cannot decode (issue 30 adds the
- * first three), with what they hold. */
+/* The extensions gtlab reads: a file may require them. */
+bool supported_extension(const std::string &name)
+{
+    return name == "KHR_mesh_quantization" || name == "EXT_meshopt_compression" ||
+           name == "KHR_draco_mesh_compression" || name == "KHR_texture_transform";
+}
+
+/* Extensions that store data gtlab cannot decode, with what they hold. */
 const std::map<std::string, const char *> &data_extensions()
 {
     static const std::map<std::string, const char *> contents = {
-        {"KHR_draco_mesh_compression", "Draco-compressed meshes"},
-        {"EXT_meshopt_compression", "meshoptimizer-compressed buffers"},
-        {"KHR_mesh_quantization", "quantized vertex attributes"},
         {"KHR_texture_basisu", "Basis Universal textures"},
         {"EXT_texture_webp", "WebP textures"},
+        {"EXT_mesh_gpu_instancing", "instanced meshes"},
+        {"KHR_meshopt_compression", "meshoptimizer-compressed buffers, ratified form"},
     };
     return contents;
 }
@@ -382,9 +284,10 @@ std::string extension_list(const std::vector<std::string> &names)
     return out;
 }
 
-/* gtlab reads no glTF extension yet: every required one refuses the file. */
-int refuse_required_extensions(Loader &L, const std::vector<std::string> &required)
+/* A required extension gtlab does not read refuses the file. */
+int refuse_required_extensions(Loader &L, std::vector<std::string> required)
 {
+    required.erase(std::remove_if(required.begin(), required.end(), supported_extension), required.end());
     if (required.empty())
         return 0;
     return L.fail("requires %s, which gtlab does not support", extension_list(required).c_str());
@@ -407,14 +310,10 @@ std::vector<std::string> top_level_strings(const unsigned char *json, size_t len
     return names;
 }
 
-/* tinygltf refused the file. An unsupported required extension is the
- * reason to give (tinygltf reports a Draco file as "accessor[0] invalid
- * bufferView"); else its own message, naming any extension the file uses
- * whose data gtlab cannot decode (it may be why). */
+/* tinygltf refused the file: its own message, naming any extension the file
+ * uses whose data gtlab cannot decode (it may be why). */
 int fail_tinygltf(Loader &L, bool binary, const unsigned char *json, size_t json_length, const std::string &err)
 {
-    if (refuse_required_extensions(L, top_level_strings(json, json_length, "extensionsRequired")) != 0)
-        return -1;
     std::string reason = err.empty() ? "no reason given" : one_line(err);
     std::vector<std::string> used = top_level_strings(json, json_length, "extensionsUsed");
     used.erase(std::remove_if(used.begin(), used.end(),
@@ -443,13 +342,63 @@ int check_container(Loader &L, const unsigned char *bytes, size_t size, bool bin
     return json_check(reinterpret_cast<const char *>(*json), *json_length, json_limits_gltf, L.path, L.e);
 }
 
+/* The file as tinygltf is given it, in `out`, when the JSON prepass
+ * (gltf_json_prepass.h) rewrote it; out stays empty when the file is fine
+ * as it is. */
+int prepare_for_tinygltf(Loader &L, const unsigned char *bytes, size_t size, bool binary, const unsigned char *json,
+                         size_t json_length, std::vector<unsigned char> &out)
+{
+    char *text = nullptr;
+    size_t length = 0;
+    const int rc = gltf_json_prepass(json, json_length, &text, &length);
+    if (rc <= 0)
+        return rc < 0 ? L.fail("out of memory") : 0;
+    if (!binary) {
+        out.assign(text, text + length);
+        std::free(text);
+        return 0;
+    }
+    glb_chunks chunks;
+    glb_split(bytes, size, L.path, &chunks, L.e); /* it succeeded in check_container */
+    chunks.json = reinterpret_cast<unsigned char *>(text);
+    chunks.json_length = length;
+    size_t joined_size = 0;
+    unsigned char *joined = glb_join(&chunks, &joined_size);
+    std::free(text);
+    if (!joined)
+        return L.fail("out of memory");
+    out.assign(joined, joined + joined_size);
+    std::free(joined);
+    return 0;
+}
+
+/* The file's extensionsUsed, for the report; KHR_mesh_quantization among
+ * them lets accessors hold its integer types. */
+void note_extensions_used(Loader &L)
+{
+    std::string list;
+    for (const std::string &name : L.model.extensionsUsed) {
+        list += (list.empty() ? "" : ", ") + printable(name);
+        L.quantization = L.quantization || name == "KHR_mesh_quantization";
+    }
+    std::snprintf(L.report->extensions_used, sizeof L.report->extensions_used, "%s", list.c_str());
+}
+
 int parse_bytes(Loader &L, const unsigned char *bytes, size_t size, const std::string &base_dir)
 {
     const bool binary = glb_has_magic(bytes, size);
     const unsigned char *json = nullptr;
     size_t json_length = 0;
-    if (check_container(L, bytes, size, binary, &json, &json_length) != 0)
+    if (check_container(L, bytes, size, binary, &json, &json_length) != 0 ||
+        refuse_required_extensions(L, top_level_strings(json, json_length, "extensionsRequired")) != 0)
         return -1;
+    std::vector<unsigned char> prepared;
+    if (prepare_for_tinygltf(L, bytes, size, binary, json, json_length, prepared) != 0)
+        return -1;
+    if (!prepared.empty()) {
+        bytes = prepared.data();
+        size = prepared.size();
+    }
     tinygltf::TinyGLTF gltf;
     gltf.SetImageLoader(load_image, &L);
     std::string err, warn;
@@ -461,7 +410,10 @@ int parse_bytes(Loader &L, const unsigned char *bytes, size_t size, const std::s
         return fail_tinygltf(L, binary, json, json_length, err);
     /* tinygltf's warnings are about images it could not read; those that
      * matter (images a material uses) are reported by convert_texture. */
-    return refuse_required_extensions(L, L.model.extensionsRequired);
+    if (refuse_required_extensions(L, L.model.extensionsRequired) != 0)
+        return -1;
+    note_extensions_used(L);
+    return decode_meshopt_views(L);
 }
 
 /* The node graph must be a forest (glTF 2.0 "Nodes and Hierarchy": "the node hierarchy
@@ -537,226 +489,6 @@ int node_local_matrix(Loader &L, int index, Mat4 *out)
     return 0;
 }
 
-/* ------------------------------------------------------------- accessors */
-
-/* A checked window onto an accessor's elements: element i starts at
- * base + i * stride and all count elements lie inside the buffer. */
-struct AccessorView {
-    const unsigned char *base;
-    size_t stride, count;
-    int component_type;
-};
-
-int view_accessor(Loader &L, const std::string &what, const char *role, int index, AccessorView *v)
-{
-    const tinygltf::Model &m = L.model;
-    if (index < 0 || (size_t)index >= m.accessors.size())
-        return L.fail("%s: %s accessor %d does not exist", what.c_str(), role, index);
-    const tinygltf::Accessor &a = m.accessors[(size_t)index];
-    if (a.sparse.isSparse)
-        return L.fail("%s: %s accessor %d is sparse, which is not supported", what.c_str(), role, index);
-    const int components = tinygltf::GetNumComponentsInType((uint32_t)a.type);
-    const int component_size = tinygltf::GetComponentSizeInBytes((uint32_t)a.componentType);
-    if (components <= 0 || component_size <= 0)
-        return L.fail("%s: %s accessor %d has an unknown type", what.c_str(), role, index);
-    const size_t element_size = (size_t)components * (size_t)component_size;
-
-    v->count = a.count;
-    v->component_type = a.componentType;
-    v->stride = element_size;
-    /* Without a bufferView an accessor is all zeros, meaningful only with
-     * sparse data or an extension (Draco), neither of which is supported. */
-    if (a.bufferView < 0)
-        return L.fail("%s: %s accessor %d has no bufferView", what.c_str(), role, index);
-    if ((size_t)a.bufferView >= m.bufferViews.size())
-        return L.fail("%s: %s accessor %d: bufferView %d does not exist", what.c_str(), role, index, a.bufferView);
-    const tinygltf::BufferView &view = m.bufferViews[(size_t)a.bufferView];
-    if (view.buffer < 0 || (size_t)view.buffer >= m.buffers.size())
-        return L.fail("%s: %s accessor %d: bufferView %d: buffer %d does not exist", what.c_str(), role, index,
-                      a.bufferView, view.buffer);
-    const tinygltf::Buffer &buffer = m.buffers[(size_t)view.buffer];
-    if (!range_inside(view.byteOffset, view.byteLength, buffer.data.size()))
-        return L.fail("%s: bufferView %d (bytes %zu + %zu) exceeds buffer %d (%zu bytes)", what.c_str(),
-                      a.bufferView, view.byteOffset, view.byteLength, view.buffer, buffer.data.size());
-    if (view.byteStride != 0) {
-        if (view.byteStride < element_size)
-            return L.fail("%s: bufferView %d: byteStride %zu is smaller than a %s element (%zu bytes)", what.c_str(),
-                          a.bufferView, view.byteStride, role, element_size);
-        v->stride = view.byteStride;
-    }
-    /* The last element ends at byteOffset + (count - 1) * stride + element_size. */
-    const bool fits = a.count == 0 ||
-                      (range_inside(a.byteOffset, element_size, view.byteLength) &&
-                       (a.count - 1) <= (view.byteLength - a.byteOffset - element_size) / v->stride);
-    if (!fits)
-        return L.fail("%s: %s accessor %d (%zu elements from byte %zu, stride %zu) exceeds bufferView %d (%zu bytes)",
-                      what.c_str(), role, index, a.count, a.byteOffset, v->stride, a.bufferView, view.byteLength);
-    v->base = buffer.data.data() + view.byteOffset + a.byteOffset;
-    return 0;
-}
-
-/* Checks the accessor's type and component type against what the role allows. */
-int expect_type(Loader &L, const std::string &what, const char *role, int index, int type, bool float_only)
-{
-    const tinygltf::Accessor &a = L.model.accessors[(size_t)index];
-    const bool ok_component = a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
-                              (!float_only && a.normalized &&
-                               (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                                a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT));
-    if (a.type != type || !ok_component)
-        return L.fail("%s: %s accessor %d is %s %s; expected %s %s", what.c_str(), role, index,
-                      component_type_name(a.componentType), type_name(a.type),
-                      float_only ? "float" : "float or normalized unsigned byte/short", type_name(type));
-    return 0;
-}
-
-/* Component k of element i as float; normalized integers map to [0, 1]. */
-float read_component(const AccessorView &v, size_t i, int k)
-{
-    const unsigned char *p = v.base + i * v.stride;
-    switch (v.component_type) {
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return p[k] / 255.0f;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-        uint16_t u;
-        std::memcpy(&u, p + 2 * k, 2);
-        return u / 65535.0f;
-    }
-    default: {
-        float f;
-        std::memcpy(&f, p + 4 * k, 4);
-        return f;
-    }
-    }
-}
-
-uint32_t read_index(const AccessorView &v, size_t i)
-{
-    const unsigned char *p = v.base + i * v.stride;
-    switch (v.component_type) {
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return p[0];
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-        uint16_t u;
-        std::memcpy(&u, p, 2);
-        return u;
-    }
-    default: {
-        uint32_t u;
-        std::memcpy(&u, p, 4);
-        return u;
-    }
-    }
-}
-
-/* One triangle primitive in its mesh's local space. */
-struct Primitive {
-    std::vector<float> positions, normals, texcoords;
-    std::vector<uint32_t> indices;
-};
-
-int read_float_attribute(Loader &L, const std::string &what, const char *role, int index, int type,
-                         bool float_only, size_t expected_count, std::vector<float> &out)
-{
-    AccessorView v;
-    if (view_accessor(L, what, role, index, &v) != 0 || expect_type(L, what, role, index, type, float_only) != 0)
-        return -1;
-    if (v.count != expected_count)
-        return L.fail("%s: %s has %zu elements but POSITION has %zu", what.c_str(), role, v.count, expected_count);
-    const int n = tinygltf::GetNumComponentsInType((uint32_t)type);
-    out.resize(v.count * (size_t)n);
-    for (size_t i = 0; i < v.count; ++i)
-        for (int k = 0; k < n; ++k) {
-            const float value = read_component(v, i, k);
-            if (!std::isfinite(value))
-                return L.fail("%s: %s %zu is not finite", what.c_str(), role, i);
-            out[i * (size_t)n + (size_t)k] = value;
-        }
-    return 0;
-}
-
-int read_indices(Loader &L, const std::string &what, const tinygltf::Primitive &prim, size_t vertex_count,
-                 std::vector<uint32_t> &out)
-{
-    if (prim.indices < 0) { /* non-indexed: vertices 0, 1, 2, ... */
-        if (vertex_count % 3 != 0)
-            return L.fail("%s: %zu vertices without indices is not a whole number of triangles", what.c_str(),
-                          vertex_count);
-        out.resize(vertex_count);
-        for (size_t i = 0; i < vertex_count; ++i)
-            out[i] = (uint32_t)i;
-        return 0;
-    }
-    AccessorView v;
-    if (view_accessor(L, what, "indices", prim.indices, &v) != 0)
-        return -1;
-    const tinygltf::Accessor &a = L.model.accessors[(size_t)prim.indices];
-    if (a.type != TINYGLTF_TYPE_SCALAR || (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-                                           a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-                                           a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
-        return L.fail("%s: indices accessor %d is %s %s; expected unsigned byte/short/int SCALAR", what.c_str(),
-                      prim.indices, component_type_name(a.componentType), type_name(a.type));
-    if (v.count % 3 != 0)
-        return L.fail("%s: %zu indices is not a whole number of triangles", what.c_str(), v.count);
-    out.resize(v.count);
-    for (size_t i = 0; i < v.count; ++i) {
-        out[i] = read_index(v, i);
-        if (out[i] >= vertex_count)
-            return L.fail("%s: index %u (entry %zu) is out of range (%zu vertices)", what.c_str(), out[i], i,
-                          vertex_count);
-    }
-    return 0;
-}
-
-int attribute(const tinygltf::Primitive &prim, const char *name)
-{
-    auto it = prim.attributes.find(name);
-    return it == prim.attributes.end() ? -1 : it->second;
-}
-
-/* A primitive without normals is flat-shaded (glTF 2.0, "Meshes"): every
- * triangle gets its own three vertices, so each can carry the face normal. */
-void unweld(Primitive &p)
-{
-    std::vector<float> positions, texcoords;
-    positions.reserve(3 * p.indices.size());
-    for (uint32_t i : p.indices) {
-        positions.insert(positions.end(), &p.positions[3 * (size_t)i], &p.positions[3 * (size_t)i] + 3);
-        if (!p.texcoords.empty())
-            texcoords.insert(texcoords.end(), &p.texcoords[2 * (size_t)i], &p.texcoords[2 * (size_t)i] + 2);
-    }
-    for (size_t k = 0; k < p.indices.size(); ++k)
-        p.indices[k] = (uint32_t)k;
-    p.positions.swap(positions);
-    p.texcoords.swap(texcoords);
-}
-
-int read_primitive(Loader &L, const std::string &what, const tinygltf::Primitive &prim, Primitive &out)
-{
-    const int position = attribute(prim, "POSITION");
-    if (position < 0)
-        return L.fail("%s: no POSITION attribute", what.c_str());
-    AccessorView v;
-    if (view_accessor(L, what, "POSITION", position, &v) != 0)
-        return -1;
-    const size_t vertex_count = v.count;
-    if (vertex_count > UINT32_MAX / 3)
-        return L.fail("%s: too many vertices (%zu)", what.c_str(), vertex_count);
-    if (read_float_attribute(L, what, "POSITION", position, TINYGLTF_TYPE_VEC3, true, vertex_count, out.positions))
-        return -1;
-    const int normal = attribute(prim, "NORMAL");
-    if (normal >= 0 &&
-        read_float_attribute(L, what, "NORMAL", normal, TINYGLTF_TYPE_VEC3, true, vertex_count, out.normals))
-        return -1;
-    const int texcoord = attribute(prim, "TEXCOORD_0");
-    if (texcoord >= 0 &&
-        read_float_attribute(L, what, "TEXCOORD_0", texcoord, TINYGLTF_TYPE_VEC2, false, vertex_count, out.texcoords))
-        return -1;
-    if (read_indices(L, what, prim, vertex_count, out.indices) != 0)
-        return -1;
-    if (out.normals.empty())
-        unweld(out);
-    return 0;
-}
-
 /* Counts normals that cannot be used at all (zero or degenerate after the
  * transform); those make the whole primitive's normals be recomputed. */
 size_t transform_normals(const Mat4 &world, const std::vector<float> &in, scene_mesh *m)
@@ -790,8 +522,11 @@ int add_world_mesh(Loader &L, const std::string &what, const Primitive &p, const
     m->material = material;
     for (uint32_t i = 0; i < vertex_count; ++i)
         v3_store(&m->positions[3 * (size_t)i], mat4_point(world, &p.positions[3 * (size_t)i]));
-    if (!p.texcoords.empty())
+    if (!p.texcoords.empty()) {
         std::copy(p.texcoords.begin(), p.texcoords.end(), m->texcoords);
+        if (material >= 0)
+            uv_transform_apply(&L.material_uv[(size_t)material], m->texcoords, vertex_count);
+    }
     /* A mirroring transform (det < 0) turns counter-clockwise triangles
      * clockwise; swapping two corners keeps the geometric normal on the side
      * of the transformed shading normals. */
@@ -899,10 +634,47 @@ int convert_texture(Loader &L, int material, const char *slot, const tinygltf::T
     return 0;
 }
 
+/* The slot's KHR_texture_transform (identity without one). */
+int texture_transform(Loader &L, int material, const char *slot, const tinygltf::TextureInfo &info, uv_transform *out)
+{
+    *out = uv_transform_identity();
+    const tinygltf::Value *ext = extension(info.extensions, "KHR_texture_transform");
+    if (!ext)
+        return 0;
+    static const double zero[2] = {0, 0}, one[2] = {1, 1};
+    double offset[2], rotation, scale[2];
+    if (!member_numbers(*ext, "offset", 2, zero, offset) || !member_numbers(*ext, "rotation", 1, zero, &rotation) ||
+        !member_numbers(*ext, "scale", 2, one, scale))
+        return L.fail("material %d: %s: KHR_texture_transform has an offset, rotation or scale that is not numbers",
+                      material, slot);
+    if (member_count(*ext, "texCoord", 0) != 0)
+        gt_warn(L.path, "material %d: %s: KHR_texture_transform selects another TEXCOORD set (only TEXCOORD_0 is "
+                        "read); its transform is applied to TEXCOORD_0", material, slot);
+    *out = uv_transform_from_khr(offset, rotation, scale);
+    return 0;
+}
+
+/* A mesh has one set of texture coordinates, so a material's textures must
+ * share their transform: the base colour texture's wins, with a warning. */
+int material_uv_transform(Loader &L, int material, const tinygltf::PbrMetallicRoughness &pbr, uv_transform *out)
+{
+    uv_transform color, mr;
+    if (texture_transform(L, material, "baseColorTexture", pbr.baseColorTexture, &color) != 0 ||
+        texture_transform(L, material, "metallicRoughnessTexture", pbr.metallicRoughnessTexture, &mr) != 0)
+        return -1;
+    const bool both = pbr.baseColorTexture.index >= 0 && pbr.metallicRoughnessTexture.index >= 0;
+    if (both && !uv_transform_equal(&color, &mr))
+        gt_warn(L.path, "material %d: its textures have different KHR_texture_transform; using baseColorTexture's",
+                material);
+    *out = pbr.baseColorTexture.index >= 0 ? color : mr;
+    return 0;
+}
+
 /* glTF materials become scene materials with the same indices. */
 int convert_materials(Loader &L)
 {
     L.image_texture.assign(L.model.images.size(), -1);
+    L.material_uv.assign(L.model.materials.size(), uv_transform_identity());
     for (size_t i = 0; i < L.model.materials.size(); ++i) {
         const tinygltf::PbrMetallicRoughness &pbr = L.model.materials[i].pbrMetallicRoughness;
         scene_material sm = scene_default_material();
@@ -917,7 +689,8 @@ int convert_materials(Loader &L)
         sm.roughness = (float)pbr.roughnessFactor;
         if (convert_texture(L, (int)i, "baseColorTexture", pbr.baseColorTexture, &sm.base_color_texture) != 0 ||
             convert_texture(L, (int)i, "metallicRoughnessTexture", pbr.metallicRoughnessTexture,
-                            &sm.metallic_roughness_texture) != 0)
+                            &sm.metallic_roughness_texture) != 0 ||
+            material_uv_transform(L, (int)i, pbr, &L.material_uv[i]) != 0)
             return -1;
         if (scene_add_material(L.s, sm) < 0)
             return L.fail("out of memory");
@@ -927,6 +700,8 @@ int convert_materials(Loader &L)
 
 /* ------------------------------------------------------------- traversal */
 
+/* Triangle primitives (modes 4-6) become meshes; points and lines are
+ * skipped with a warning (once per mesh). */
 int add_node_meshes(Loader &L, int node_index, const Mat4 &world)
 {
     const tinygltf::Node &node = L.model.nodes[(size_t)node_index];
@@ -940,7 +715,9 @@ int add_node_meshes(Loader &L, int node_index, const Mat4 &world)
         const std::string what = "mesh " + std::to_string(node.mesh) +
                                  (mesh.name.empty() ? "" : " (" + printable(mesh.name) + ")") + " primitive " +
                                  std::to_string(p);
-        if (prim.mode != TINYGLTF_MODE_TRIANGLES) {
+        if (prim.mode >= 0 && prim.mode < 7)
+            ++L.report->primitives_by_mode[prim.mode];
+        if (!gltf_mode_has_triangles(prim.mode)) {
             if (!L.warned_mode[(size_t)node.mesh])
                 gt_warn(L.path, "%s: mode %d (%s) is not triangles; skipped", what.c_str(), prim.mode,
                         mode_name(prim.mode));
@@ -950,8 +727,12 @@ int add_node_meshes(Loader &L, int node_index, const Mat4 &world)
         if (prim.material < -1 || prim.material >= (int)L.model.materials.size())
             return L.fail("%s: material %d does not exist", what.c_str(), prim.material);
         Primitive data;
-        if (read_primitive(L, what, prim, data) != 0 || add_world_mesh(L, what, data, world, prim.material) != 0)
+        if (read_primitive(L, what, node, mesh, prim, data) != 0)
             return -1;
+        const Mat4 placed = data.skinned ? mat4_identity() : world;
+        if (add_world_mesh(L, what, data, placed, prim.material) != 0)
+            return -1;
+        L.report->position_step = std::max(L.report->position_step, L.position_step * mat4_largest_scale(placed));
     }
     return 0;
 }
@@ -1027,22 +808,19 @@ int flatten(Loader &L)
     if (scene_roots(L, roots) != 0)
         return -1;
     L.warned_mode.assign(L.model.meshes.size(), false);
-    std::vector<Mat4> world(L.model.nodes.size());
+    L.world.assign(L.model.nodes.size(), mat4_identity());
+    L.world_known.assign(L.model.nodes.size(), 0);
     std::vector<int> stack(roots.rbegin(), roots.rend());
     while (!stack.empty()) {
         const int index = stack.back();
         stack.pop_back();
-        Mat4 local;
-        if (node_local_matrix(L, index, &local) != 0)
+        Mat4 world;
+        if (world_of(L, index, &world) != 0)
             return -1;
-        const int parent = L.parent[(size_t)index];
-        world[(size_t)index] = parent >= 0 ? mat4_mul(world[(size_t)parent], local) : local;
-        if (!mat4_is_finite(world[(size_t)index]))
-            return L.fail("node %d: world transform overflows", index);
         const tinygltf::Node &node = L.model.nodes[(size_t)index];
-        if (add_node_meshes(L, index, world[(size_t)index]) != 0)
+        if (add_node_meshes(L, index, world) != 0)
             return -1;
-        if (node.camera >= 0 && !L.s->has_camera && set_camera(L, index, world[(size_t)index]) != 0)
+        if (node.camera >= 0 && !L.s->has_camera && set_camera(L, index, world) != 0)
             return -1;
         stack.insert(stack.end(), node.children.rbegin(), node.children.rend());
     }
@@ -1058,7 +836,7 @@ int load(Loader &L, const unsigned char *bytes, size_t size, const std::string &
 }
 
 int load_guarded(const unsigned char *bytes, size_t size, const char *name, const std::string &base_dir, scene *s,
-                 gt_error *e)
+                 gltf_report *report, gt_error *e)
 {
     int rc;
     try {
@@ -1066,9 +844,11 @@ int load_guarded(const unsigned char *bytes, size_t size, const char *name, cons
         L.path = name;
         L.e = e;
         L.s = s;
+        L.report = report;
         const char *slash = std::strrchr(name, '/');
         std::snprintf(s->name, sizeof s->name, "%s", slash ? slash + 1 : name);
         rc = load(L, bytes, size, base_dir);
+        report->sparse_accessors = (int)L.sparse_seen.size();
     } catch (const std::bad_alloc &) {
         rc = gt_error_set(e, name, "out of memory");
     } catch (const std::exception &x) { /* tinygltf throws on some malformed input */
@@ -1077,19 +857,33 @@ int load_guarded(const unsigned char *bytes, size_t size, const char *name, cons
     return rc;
 }
 
-} // namespace
-
-extern "C" int gltf_load_memory(const void *bytes, size_t size, const char *name, const char *base_dir, scene *s,
-                                gt_error *e)
+int load_memory(const void *bytes, size_t size, const char *name, const char *base_dir, scene *s,
+                gltf_report *report, gt_error *e)
 {
+    gltf_report unused;
+    report = report ? report : &unused;
+    std::memset(report, 0, sizeof *report);
     std::memset(s, 0, sizeof *s);
-    int rc = load_guarded(static_cast<const unsigned char *>(bytes), size, name, base_dir ? base_dir : "", s, e);
+    int rc = load_guarded(static_cast<const unsigned char *>(bytes), size, name, base_dir ? base_dir : "", s, report,
+                          e);
     if (rc != 0)
         scene_free(s);
     return rc;
 }
 
-extern "C" int gltf_load(const char *path, scene *s, gt_error *e)
+} // namespace gltf_detail
+
+using gltf_detail::directory_of;
+using gltf_detail::load_memory;
+using gltf_detail::read_whole_file;
+
+extern "C" int gltf_load_memory(const void *bytes, size_t size, const char *name, const char *base_dir, scene *s,
+                                gt_error *e)
+{
+    return load_memory(bytes, size, name, base_dir, s, nullptr, e);
+}
+
+extern "C" int gltf_load_report(const char *path, scene *s, gltf_report *report, gt_error *e)
 {
     std::memset(s, 0, sizeof *s);
     int rc;
@@ -1097,9 +891,14 @@ extern "C" int gltf_load(const char *path, scene *s, gt_error *e)
         std::vector<unsigned char> bytes;
         rc = read_whole_file(path, bytes, e);
         if (rc == 0)
-            rc = gltf_load_memory(bytes.data(), bytes.size(), path, directory_of(path).c_str(), s, e);
+            rc = load_memory(bytes.data(), bytes.size(), path, directory_of(path).c_str(), s, report, e);
     } catch (const std::bad_alloc &) {
         rc = gt_error_set(e, path, "out of memory");
     }
     return rc;
+}
+
+extern "C" int gltf_load(const char *path, scene *s, gt_error *e)
+{
+    return gltf_load_report(path, s, nullptr, e);
 }

@@ -7,7 +7,7 @@
 # into one module, and LLVM's call graph is split into strongly connected
 # components: a component of two functions or more, or one with a self-loop,
 # is a recursion. Calls through function pointers are not in that graph; the
-# C++ adapters (four files) are audited by reading (docs/design.md, "Input
+# C++ adapters (eight files) are audited by reading (docs/design.md, "Input
 # is hostile"). Run by .ci/run (about a minute on 2 cores):
 #   tests/audit/no_recursion.sh BUILD_DIR
 set -euo pipefail

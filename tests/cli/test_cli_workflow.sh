@@ -66,6 +66,17 @@ grep -q "mesh 0: 2 triangles, 6 vertices, .*no normals: flat-shaded" "$work/stdo
 expect_ok scene-info-builtin scene info builtin:sphere-on-plane
 grep -q "flat" "$work/stdout" && fail "scene info builtin: $(cat "$work/stdout")" || pass
 
+# scene info says how a glTF file was read (issue 30): strips, Draco with its
+# position grid step, skins in the default pose.
+models=/usr/share/assimp/models/glTF2
+expect_ok scene-info-strip scene info "$models/glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_04.gltf"
+grep -q "^primitives: 0 triangle lists, 1 triangle strips, 0 triangle fans" "$work/stdout" && pass || fail "scene info strip: $(cat "$work/stdout")"
+expect_ok scene-info-draco scene info "$models/draco/2CylinderEngine.gltf"
+grep -q "^glTF extensions used: KHR_draco_mesh_compression$" "$work/stdout" && grep -q "Draco-compressed: 115 primitives" "$work/stdout" &&
+  grep -q "^positions quantized to a grid of at most" "$work/stdout" && pass || fail "scene info draco: $(cat "$work/stdout")"
+expect_ok scene-info-skin scene info "$models/simple_skin/simple_skin.gltf"
+grep -q "skinned (default pose): 1 primitives; without normals (flat-shaded): 1 primitives" "$work/stdout" && pass || fail "scene info skin: $(cat "$work/stdout")"
+
 # compare: identical files, heatmap, noise floor.
 run compare "$work/t1.exr" "$work/t1.exr" --json --noise-floor --heatmap "$work/heat.png"
 json_is ssim == 1 "$work/stdout" && pass || fail "self-compare SSIM is not 1: $(cat "$work/stdout")"

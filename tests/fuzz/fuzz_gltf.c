@@ -1,7 +1,10 @@
 /* Fuzz target "gltf": glTF and GLB files (the input is the file's bytes)
  * through the loader gtlab renders from: the GLB container, the JSON gate,
- * tinygltf, gtlab's checks of every index and byte range, images, the
- * flattening of the node tree and scene_validate (scene/gltf_reader.h).
+ * the JSON prepass, tinygltf, gtlab's checks of every index and byte range,
+ * images, sparse and quantized accessors, strips and fans, morph targets and
+ * skins, the EXT_meshopt_compression and KHR_draco_mesh_compression decoders
+ * (seeds: plane-meshopt.glb, draco.glb, strip-sparse.gltf, morph-skin.gltf),
+ * the flattening of the node tree and scene_validate (scene/gltf_reader.h).
  * External buffers and images are looked up in a folder that does not
  * exist. What loads is then used as a render would use it: its bounds, the
  * automatic camera framing them, and each mesh's material at its

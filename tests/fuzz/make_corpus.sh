@@ -81,6 +81,68 @@ glb += struct.pack("<II", len(text), 0x4E4F534A) + text + struct.pack("<II", len
 open(sys.argv[1], "wb").write(glb)
 PY
 
+# Issue 30: what real pipelines write. gltfpack's quantized (default) and
+# meshopt-compressed (-c, with a fallback buffer without data) forms of the
+# plane; one Draco primitive of assimp-testmodels' 2CylinderEngine in a GLB
+# of its own; and hand-written strip, fan, sparse, morph and skin files.
+gltfpack -i "$corpus/gltf/plane.glb" -o "$corpus/gltf/plane-quantized.glb" >/dev/null
+gltfpack -i "$corpus/gltf/plane.glb" -o "$corpus/gltf/plane-meshopt.glb" -c >/dev/null
+python3 - "$corpus/gltf/draco.glb" /usr/share/assimp/models/glTF2/draco/2CylinderEngine.gltf <<'PY'
+import json, os, struct, sys
+src = json.load(open(sys.argv[2]))
+data = open(os.path.join(os.path.dirname(sys.argv[2]), src["buffers"][0]["uri"]), "rb").read()
+def draco_view(p):
+    return src["bufferViews"][p["extensions"]["KHR_draco_mesh_compression"]["bufferView"]]
+prim = min((p for m in src["meshes"] for p in m["primitives"]), key=lambda p: draco_view(p)["byteLength"])
+view = draco_view(prim)
+bin_ = data[view.get("byteOffset", 0):view.get("byteOffset", 0) + view["byteLength"]]
+bin_ += b"\0" * (-len(bin_) % 4)
+ext = dict(prim["extensions"]["KHR_draco_mesh_compression"], bufferView=0)
+names = sorted(ext["attributes"])
+accessors = [{k: v for k, v in src["accessors"][prim["attributes"][n]].items() if k != "bufferView"} for n in names]
+accessors.append({k: v for k, v in src["accessors"][prim["indices"]].items() if k != "bufferView"})
+doc = {"asset": {"version": "2.0"}, "extensionsUsed": ["KHR_draco_mesh_compression"],
+       "extensionsRequired": ["KHR_draco_mesh_compression"], "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+       "meshes": [{"primitives": [{"attributes": {n: i for i, n in enumerate(names)}, "indices": len(names),
+                                   "extensions": {"KHR_draco_mesh_compression": ext}}]}],
+       "accessors": accessors, "bufferViews": [{"buffer": 0, "byteLength": view["byteLength"]}],
+       "buffers": [{"byteLength": len(bin_)}]}
+text = json.dumps(doc, separators=(",", ":")).encode()
+text += b" " * (-len(text) % 4)
+glb = struct.pack("<4sII", b"glTF", 2, 12 + 8 + len(text) + 8 + len(bin_))
+glb += struct.pack("<II", len(text), 0x4E4F534A) + text + struct.pack("<II", len(bin_), 0x004E4942) + bin_
+open(sys.argv[1], "wb").write(glb)
+PY
+# Four vertices (a unit square, z = 0), then indices 0 1 2 3, a joint set
+# (0 0 0 0) and a weight set (1 0 0 0) per vertex, and an identity matrix.
+square=AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAACAPwAAgD8AAAAAAAABAAIAAwA=
+cat >"$corpus/gltf/strip-sparse.gltf" <<JSON
+{"asset":{"version":"2.0"},"nodes":[{"mesh":0},{"mesh":1,"translation":[2,0,0]}],
+ "meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1,"mode":5}]},
+           {"primitives":[{"attributes":{"POSITION":2},"mode":6}]}],
+ "buffers":[{"byteLength":56,"uri":"data:application/octet-stream;base64,$square"}],
+ "bufferViews":[{"buffer":0,"byteLength":48},{"buffer":0,"byteOffset":48,"byteLength":8}],
+ "accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3"},
+              {"bufferView":1,"componentType":5123,"count":4,"type":"SCALAR"},
+              {"bufferView":0,"componentType":5126,"count":4,"type":"VEC3",
+               "sparse":{"count":1,"indices":{"bufferView":1,"byteOffset":6,"componentType":5123},"values":{"bufferView":0}}}]}
+JSON
+cat >"$corpus/gltf/morph-skin.gltf" <<JSON
+{"asset":{"version":"2.0"},"scenes":[{"nodes":[0,1,2]}],
+ "nodes":[{"mesh":0,"weights":[0.5]},{"mesh":1,"skin":0},{"rotation":[0,0,0.7071068,0.7071068]}],
+ "skins":[{"joints":[2]}],
+ "meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1,"mode":5,"targets":[{"POSITION":0}]}],"weights":[1]},
+           {"primitives":[{"attributes":{"POSITION":0,"JOINTS_0":2,"WEIGHTS_0":3},"indices":1,"mode":5}]}],
+ "buffers":[{"byteLength":56,"uri":"data:application/octet-stream;base64,$square"}],
+ "bufferViews":[{"buffer":0,"byteLength":48},{"buffer":0,"byteOffset":48,"byteLength":8}],
+ "accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3"},
+              {"bufferView":1,"componentType":5123,"count":4,"type":"SCALAR"},
+              {"componentType":5121,"count":4,"type":"VEC4",
+               "sparse":{"count":1,"indices":{"bufferView":1,"componentType":5123},"values":{"bufferView":0}}},
+              {"componentType":5126,"count":4,"type":"VEC4",
+               "sparse":{"count":1,"indices":{"bufferView":1,"componentType":5123},"values":{"bufferView":0}}}]}
+JSON
+
 # JSON and camera JSON written by hand.
 printf '{"position":[0,1,5],"target":[0,0,0],"up":[0,1,0],"yfov_deg":45,"width":64,"height":48}' >"$corpus/camera/full.json"
 printf '\xef\xbb\xbf{"position":[1e1,-2.5E-1,0.0],"target":[0,0,0],"yfov_deg":30.5,"width":1,"height":65536}\n' >"$corpus/camera/bom.json"

@@ -304,7 +304,7 @@ static void check_crafted_errors(void)
                   "{\"buffer\":0,\"byteOffset\":36,\"byteLength\":6}]"},
         {.file = "sparse.gltf",
          .accessors = "[{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\",\"sparse\":{\"count\":1,"
-                      "\"indices\":{\"bufferView\":1,\"componentType\":5123},\"values\":{\"bufferView\":0}}},"
+                      "\"indices\":{\"bufferView\":1,\"componentType\":5126},\"values\":{\"bufferView\":0}}},"
                       "{\"bufferView\":1,\"componentType\":5123,\"count\":3,\"type\":\"SCALAR\"}]"},
         {.file = "two-indices.gltf",
          .accessors = "[{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\"},"
@@ -313,8 +313,8 @@ static void check_crafted_errors(void)
         {.file = "short-bin.gltf",
          .buffers = "[{\"byteLength\":4400,\"uri\":\"data:application/octet-stream;base64,AAAA\"}]"},
         {.file = "extension-required.gltf",
-         .extra = "\"extensionsUsed\":[\"KHR_draco_mesh_compression\"],"
-                  "\"extensionsRequired\":[\"KHR_draco_mesh_compression\"]"},
+         .extra = "\"extensionsUsed\":[\"KHR_texture_basisu\"],"
+                  "\"extensionsRequired\":[\"KHR_texture_basisu\"]"},
         {.file = "bad-yfov.gltf", .scenes = "\"scenes\":[{\"nodes\":[0,1]}]", .nodes = "[{\"mesh\":0},{\"camera\":0}]",
          .extra = "\"cameras\":[{\"type\":\"perspective\",\"perspective\":{\"yfov\":4,\"znear\":0.1}}]"},
         {.file = "camera-missing.gltf", .scenes = "\"scenes\":[{\"nodes\":[0,1]}]",
@@ -353,11 +353,11 @@ static void check_crafted_errors(void)
         "bufferView 5 does not exist",
         "has no bufferView",
         "byteStride 8 is smaller",
-        "sparse, which is not supported",
+        "POSITION accessor 0: sparse indices are float; expected unsigned byte/short/int",
         "2 indices is not a whole number of triangles",
         "nothere.bin",
         "cannot load glTF",
-        "KHR_draco_mesh_compression",
+        "requires the glTF extension KHR_texture_basisu (Basis Universal textures), which gtlab does not support",
         "yfov 4 is not in (0, pi)",
         "camera 2 does not exist",
         "texture 4 does not exist",
@@ -500,6 +500,58 @@ static void check_glb(void)
     expect_error(write_crafted_glb(&too_long), "cannot load binary glTF");
 }
 
+/* The decoders of issue 30 on broken data: meshopt views and Draco
+ * primitives, morph weights, skins, and a required extension named before a
+ * broken accessor. */
+#define MESHOPT_VIEW(ext) "[{\"buffer\":0,\"byteOffset\":0,\"byteLength\":36,\"extensions\":{\"EXT_meshopt_compression\":" ext "}}," \
+                          "{\"buffer\":0,\"byteOffset\":36,\"byteLength\":6}]"
+#define DRACO_MESH(ext) "[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"extensions\":{\"KHR_draco_mesh_compression\":" ext "}}]}]"
+
+static void check_decoder_errors(void)
+{
+    const crafted cases[] = {
+        {.file = "meshopt-mode.gltf",
+         .views = MESHOPT_VIEW("{\"buffer\":0,\"byteLength\":36,\"byteStride\":12,\"count\":3,\"mode\":\"FOO\"}")},
+        {.file = "meshopt-stride.gltf",
+         .views = MESHOPT_VIEW("{\"buffer\":0,\"byteLength\":36,\"byteStride\":6,\"count\":3,\"mode\":\"ATTRIBUTES\"}")},
+        {.file = "meshopt-garbage.gltf",
+         .views = MESHOPT_VIEW("{\"buffer\":0,\"byteLength\":36,\"byteStride\":12,\"count\":3,\"mode\":\"ATTRIBUTES\"}")},
+        {.file = "meshopt-range.gltf",
+         .views = MESHOPT_VIEW("{\"buffer\":0,\"byteOffset\":40,\"byteLength\":36,\"byteStride\":12,\"count\":3,"
+                               "\"mode\":\"ATTRIBUTES\"}")},
+        {.file = "meshopt-filter.gltf",
+         .views = MESHOPT_VIEW("{\"buffer\":0,\"byteLength\":36,\"byteStride\":12,\"count\":3,\"mode\":\"ATTRIBUTES\","
+                               "\"filter\":\"QUATERNION\"}")},
+        {.file = "draco-garbage.gltf", .meshes = DRACO_MESH("{\"bufferView\":0,\"attributes\":{\"POSITION\":0}}")},
+        {.file = "draco-view.gltf", .meshes = DRACO_MESH("{\"bufferView\":9,\"attributes\":{\"POSITION\":0}}")},
+        {.file = "draco-skin.gltf", .meshes = DRACO_MESH("{\"bufferView\":0,\"attributes\":{\"POSITION\":0}}"),
+         .nodes = "[{\"mesh\":0,\"skin\":0}]", .extra = "\"skins\":[{\"joints\":[0]}]"},
+        {.file = "morph-weights.gltf",
+         .meshes = "[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":1,\"targets\":[{\"POSITION\":0}]}],"
+                   "\"weights\":[1,1]}]"},
+        {.file = "skin-missing.gltf", .nodes = "[{\"mesh\":0,\"skin\":3}]"},
+        {.file = "required-first.gltf", .extra = "\"extensionsRequired\":[\"EXT_texture_webp\"]",
+         .accessors = "[{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\"},"
+                      "{\"bufferView\":77,\"componentType\":5123,\"count\":3,\"type\":\"SCALAR\"}]"},
+    };
+    const char *problems[] = {
+        "bufferView 0: EXT_meshopt_compression: unknown mode \"FOO\"",
+        "bufferView 0: EXT_meshopt_compression: ATTRIBUTES byteStride 6 is not a multiple of 4",
+        "bufferView 0: EXT_meshopt_compression: ATTRIBUTES data does not decode",
+        "bufferView 0: EXT_meshopt_compression: bytes 40 + 36 exceed buffer 0",
+        "bufferView 0: EXT_meshopt_compression: filter QUATERNION with byteStride 12",
+        "mesh 0 primitive 0: KHR_draco_mesh_compression: the Draco data does not decode",
+        "mesh 0 primitive 0: KHR_draco_mesh_compression: bufferView 9 does not exist",
+        "mesh 0 primitive 0: KHR_draco_mesh_compression with a skin is not supported",
+        "mesh 0 primitive 0: 2 morph weights for 1 morph targets",
+        "mesh 0 primitive 0: skin 3 does not exist",
+        "requires the glTF extension EXT_texture_webp (WebP textures), which gtlab does not support",
+    };
+    _Static_assert(sizeof cases / sizeof cases[0] == sizeof problems / sizeof problems[0], "one problem per case");
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i)
+        expect_error(write_crafted(&cases[i]), problems[i]);
+}
+
 int main(void)
 {
     struct stat st;
@@ -512,6 +564,7 @@ int main(void)
                ASSIMP);
     }
     check_crafted_errors();
+    check_decoder_errors();
     check_crafted_warnings();
     check_glb();
     return check_report("test_gltf_bad_input");
