@@ -30,21 +30,9 @@ static const double kLuminance[3] = {MULTIBOUNCE_LUMINANCE_R, MULTIBOUNCE_LUMINA
 
 static int load_colour_scene(const colour_scene *c, const char *spec, scene *s, gt_error *e)
 {
-    if (scene_load(spec, s, e) != 0)
-        return -1;
     if (!c->recolour)
-        return 0;
-    scene_material floor = *scene_mesh_material(s, &s->meshes[0]), objects = floor;
-    memcpy(floor.base_color, c->floor, sizeof c->floor);
-    memcpy(objects.base_color, c->objects, sizeof c->objects);
-    int f = scene_add_material(s, floor), o = scene_add_material(s, objects);
-    if (f < 0 || o < 0) {
-        scene_free(s);
-        return gt_error_set(e, spec, "out of memory");
-    }
-    for (int m = 0; m < s->mesh_count; ++m)
-        s->meshes[m].material = m == 0 ? f : o;
-    return 0;
+        return scene_load(spec, s, e);
+    return multibounce_load_two_albedo_scene(spec, c->floor, c->objects, s, e);
 }
 
 static int render_colour(const study_context *ctx, const reference_request *base, const colour_scene *c,

@@ -55,21 +55,9 @@ static double talk_f(double x, double rho, int with_max)
 /* `spec` with its floor (mesh 0) of albedo floor_albedo and every other mesh of object_albedo. */
 static int load_contrast_scene(const char *spec, float floor_albedo, float object_albedo, scene *s, gt_error *e)
 {
-    if (scene_load(spec, s, e) != 0)
-        return -1;
-    scene_material floor = *scene_mesh_material(s, &s->meshes[0]), objects = floor;
-    for (int c = 0; c < 3; ++c) {
-        floor.base_color[c] = floor_albedo;
-        objects.base_color[c] = object_albedo;
-    }
-    int f = scene_add_material(s, floor), o = scene_add_material(s, objects);
-    if (f < 0 || o < 0) {
-        scene_free(s);
-        return gt_error_set(e, spec, "out of memory");
-    }
-    for (int m = 0; m < s->mesh_count; ++m)
-        s->meshes[m].material = m == 0 ? f : o;
-    return 0;
+    const float floor_rgb[3] = {floor_albedo, floor_albedo, floor_albedo};
+    const float objects_rgb[3] = {object_albedo, object_albedo, object_albedo};
+    return multibounce_load_two_albedo_scene(spec, floor_rgb, objects_rgb, s, e);
 }
 
 /* The per-object-albedo reference of one contrast scene, as the study renders its own. */

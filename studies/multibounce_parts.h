@@ -48,6 +48,12 @@ int multibounce_study_contrast(const study_context *ctx, const reference_request
                                const char *const *scenes, const float *albedos, multibounce_contrast_study *out,
                                gt_error *e);
 
+/* `spec` loaded with its floor (mesh 0) of base colour floor_rgb and every
+ * other mesh of objects_rgb: two new materials copied from the floor's
+ * (multibounce_two_albedos.c; the contrast and colour scenes). */
+int multibounce_load_two_albedo_scene(const char *spec, const float floor_rgb[3], const float objects_rgb[3],
+                                      scene *s, gt_error *e);
+
 /* out->colour (multibounce_colour.c). */
 int multibounce_study_colour(const study_context *ctx, const reference_request *req, multibounce_colour_study *out,
                              gt_error *e);

@@ -17,25 +17,7 @@
 static const double kTruth[3] = {2.0404 * 0.5 - 0.3324, -4.7951 * 0.5 + 0.6417, 2.7552 * 0.5 + 0.6903};
 static const double kSigma = 0.01;
 
-/* ---- deterministic Gaussian noise: Box-Muller on a fixed-seed hash ---- */
-
-static uint64_t splitmix64(uint64_t z)
-{
-    z += 0x9E3779B97F4A7C15ull;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-
-/* Uniform in (0, 1): 53 random bits, offset by half a step. */
-static double uniform01(uint64_t key) { return ((double)(splitmix64(key) >> 11) + 0.5) * 0x1p-53; }
-
-static double gaussian(uint64_t seed, uint64_t i)
-{
-    double u1 = uniform01(seed * 0x100000000ull + 2 * i);
-    double u2 = uniform01(seed * 0x100000000ull + 2 * i + 1);
-    return sqrt(-2.0 * log(u1)) * cos(6.283185307179586 * u2) /* 2 pi u2 */;
-}
+#include "tests/test_noise.h"
 
 /* ---- the cubic model as residual blocks of one sample ---- */
 

@@ -11,19 +11,7 @@
 #include <stdint.h>
 #include <string.h>
 
-static uint64_t splitmix64(uint64_t z)
-{
-    z += 0x9E3779B97F4A7C15ull;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-static double uniform01(uint64_t key) { return ((double)(splitmix64(key) >> 11) + 0.5) * 0x1p-53; }
-static double gaussian(uint64_t i)
-{
-    double u1 = uniform01(2 * i), u2 = uniform01(2 * i + 1);
-    return sqrt(-2.0 * log(u1)) * cos(6.283185307179586 * u2);
-}
+#include "tests/test_noise.h"
 
 static const float kAlbedos[7] = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.7f, 0.9f};
 
@@ -41,7 +29,7 @@ static void synthesise(multibounce_data *d, double (*truth)(double, double), int
             int ai = multibounce_data_albedo(d, kAlbedos[a], &e);
             for (int i = 0; i < per_group; ++i) {
                 double v = (i + 0.5) / per_group;
-                double y = truth(v, kAlbedos[a]) + sigma * gaussian((uint64_t)(s * 7 + a) * 1000003u + i);
+                double y = truth(v, kAlbedos[a]) + sigma * gaussian(0, (uint64_t)(s * 7 + a) * 1000003u + i);
                 multibounce_data_push(d, si, ai, (float)v, (float)y, &e);
             }
         }
@@ -121,7 +109,7 @@ static void test_constraints_hold_on_violating_data(void)
     for (int trial = 0; trial < 64; ++trial) {
         double s[4];
         for (int k = 0; k < 4; ++k)
-            s[k] = a.fit.s[k] + 0.05 * gaussian(7000u + 4u * (uint64_t)trial + (uint64_t)k);
+            s[k] = a.fit.s[k] + 0.05 * gaussian(0, 7000u + 4u * (uint64_t)trial + (uint64_t)k);
         optimal &= multibounce_constrained_rmse(&d, s) >= best - 1e-12;
     }
     CHECK_MSG(optimal, "a perturbed parameter vector fits better than the fit");
