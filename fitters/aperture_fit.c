@@ -10,6 +10,32 @@ static const double SCAN_LO = -12.0, SCAN_HI = -0.05, SCAN_STEP = 0.125, GOLDEN_
 
 void aperture_case_free(aperture_case *c) { so_inputs_free(&c->inputs); }
 
+const char *aperture_region_name(aperture_region r)
+{
+    static const char *const names[APERTURE_REGIONS] = {"grazing", "occluded", "open"};
+    return (int)r >= 0 && r < APERTURE_REGIONS ? names[r] : "unknown";
+}
+
+static aperture_region region_of(const so_pixel_inputs *in, size_t p)
+{
+    if (in->n_dot_v[p] < APERTURE_GRAZING_NV)
+        return APERTURE_GRAZING;
+    return in->ao_cosine[p] < APERTURE_OCCLUDED_AO ? APERTURE_OCCLUDED : APERTURE_OPEN;
+}
+
+/* Adds the squared errors of one case's surface pixels to their regions. */
+static void add_region_errors(const so_pixel_inputs *in, const float *reference, const float *approx,
+                              double squares[APERTURE_REGIONS], long counts[APERTURE_REGIONS])
+{
+    for (size_t p = 0; p < (size_t)in->width * in->height; ++p) {
+        if (in->mask[p] == 0.0f)
+            continue;
+        aperture_region r = region_of(in, p);
+        double d = (double)approx[p] - reference[p];
+        squares[r] += d * d, counts[r]++;
+    }
+}
+
 typedef struct {
     const aperture_case *cases;
     int count, exact;
@@ -18,8 +44,12 @@ typedef struct {
     aperture_fit *fit;
 } objective;
 
-static double mean_dssim(objective *o, double log10_u, gt_error *e, int *failed)
+/* The mean DSSIM over the cases at u = 10^log10_u; with `curve` >= 0 also
+ * the regions' RMSE at that scan point. */
+static double mean_dssim_at(objective *o, double log10_u, int curve, gt_error *e, int *failed)
 {
+    double squares[APERTURE_REGIONS] = {0};
+    long counts[APERTURE_REGIONS] = {0};
     so_variant v = {o->exact ? SO_VARIANT_CONE_EXACT : SO_VARIANT_CONE_OAT, o->mapping, pow(10.0, log10_u),
                     SO_AO_COSINE, NULL};
     double total = 0.0;
@@ -33,9 +63,20 @@ static double mean_dssim(objective *o, double log10_u, gt_error *e, int *failed)
             return NAN;
         }
         total += r.dssim;
+        if (curve >= 0)
+            add_region_errors(in, o->cases[i].reference, o->scratch, squares, counts);
+    }
+    for (int k = 0; k < APERTURE_REGIONS && curve >= 0; ++k) {
+        o->fit->curve_region_rmse[k][curve] = counts[k] ? sqrt(squares[k] / counts[k]) : NAN;
+        o->fit->region_pixels[k] = counts[k];
     }
     o->fit->evaluations++;
     return total / o->count;
+}
+
+static double mean_dssim(objective *o, double log10_u, gt_error *e, int *failed)
+{
+    return mean_dssim_at(o, log10_u, -1, e, failed);
 }
 
 static void add_point(aperture_fit *fit, double log10_u, double dssim)
@@ -57,12 +98,24 @@ static int scan(objective *o, double *values, int *count, gt_error *e, int *fail
     int best = 0;
     *count = (int)floor((SCAN_HI - SCAN_LO) / SCAN_STEP + 1e-9) + 1;
     for (int i = 0; i < *count && !*failed; ++i) {
-        values[i] = mean_dssim(o, SCAN_LO + i * SCAN_STEP, e, failed);
+        values[i] = mean_dssim_at(o, SCAN_LO + i * SCAN_STEP, i, e, failed);
         add_point(o->fit, SCAN_LO + i * SCAN_STEP, values[i]);
         if (values[i] < values[best])
             best = i;
     }
     return best;
+}
+
+/* Each region's lowest RMSE along the scan. */
+static void region_minima(aperture_fit *fit)
+{
+    for (int k = 0; k < APERTURE_REGIONS; ++k) {
+        int best = 0;
+        for (int i = 1; i < fit->curve_count; ++i)
+            if (fit->curve_region_rmse[k][i] < fit->curve_region_rmse[k][best])
+                best = i;
+        fit->region_best_u[k] = fit->curve_u[best];
+    }
 }
 
 /* Golden-section search for the minimum in [a, b] to GOLDEN_TOLERANCE: the
@@ -89,6 +142,7 @@ static void search(objective *o, aperture_fit *out, gt_error *e, int *failed)
 {
     double values[APERTURE_CURVE_MAX], x, f;
     int count, best = scan(o, values, &count, e, failed);
+    region_minima(out);
     double a = SCAN_LO + fmax(best - 1, 0) * SCAN_STEP, b = SCAN_LO + fmin(best + 1, count - 1) * SCAN_STEP;
     golden_section(o, a, b, &x, &f, e, failed);
     if (*failed)

@@ -30,6 +30,16 @@ void aperture_case_free(aperture_case *c);
 
 enum { APERTURE_CURVE_MAX = 128 };
 
+/* Where the cone/cone model is scored apart along the scan (issue 26: is
+ * the search driven by one kind of pixel?): grazing views, n.v below
+ * APERTURE_GRAZING_NV, where the reflection cone dips below the surface's
+ * horizon, which the reference never counts as occluded; occluded pixels,
+ * cosine AO below APERTURE_OCCLUDED_AO (and not grazing); and open ones. */
+typedef enum { APERTURE_GRAZING, APERTURE_OCCLUDED, APERTURE_OPEN, APERTURE_REGIONS } aperture_region;
+#define APERTURE_GRAZING_NV 0.3
+#define APERTURE_OCCLUDED_AO 0.8
+const char *aperture_region_name(aperture_region r);
+
 typedef struct {
     so_aperture_mapping mapping; /* the cone u parametrises */
     double u, log10_u, dssim;
@@ -37,6 +47,10 @@ typedef struct {
     double dssim_at_published; /* at the talk's u = 0.01, for comparison */
     int curve_count;
     double curve_u[APERTURE_CURVE_MAX], curve_dssim[APERTURE_CURVE_MAX]; /* sorted by u */
+    /* RMSE of V_s per region at each scan point, pooled over the cases' pixels */
+    double curve_region_rmse[APERTURE_REGIONS][APERTURE_CURVE_MAX];
+    long region_pixels[APERTURE_REGIONS];
+    double region_best_u[APERTURE_REGIONS]; /* the scan point of each region's lowest RMSE */
     int evaluations;
 } aperture_fit;
 

@@ -13,5 +13,7 @@
 cJSON *aperture_fit_json(const aperture_fit *fit, const char *channel, int exact);
 /* The curves of fits[0 .. count) in one PNG plot, each fitted u marked. */
 int aperture_fit_plot(const aperture_fit *fits, int count, const char *path, const char *title, gt_error *e);
+/* The RMSE of each region (fitters/aperture_fit.h) against u, as a PNG plot. */
+int aperture_fit_region_plot(const aperture_fit *fit, const char *path, const char *title, gt_error *e);
 
 #endif

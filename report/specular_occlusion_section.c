@@ -201,6 +201,10 @@ static int report_fits(report_context *ctx, const so_study_result *r, cJSON *jso
         const aperture_fit both[2] = {f->fit, f->reflected};
         if (aperture_fit_plot(both, 2, path, title, e) != 0)
             return -1;
+        snprintf(path, sizeof path, "%s/figures/aperture_regions_%s.png", ctx->study.output_dir, f->name);
+        snprintf(title, sizeof title, "cone/cone (exact, the talk's cone) vs %s: RMSE per region against u", f->channel);
+        if (aperture_fit_region_plot(&f->fit, path, title, e) != 0)
+            return -1;
         snprintf(key, sizeof key, "aperture_fit_%s", f->name);
         cJSON_AddItemToObject(json, key, aperture_fit_json(&f->fit, f->channel, 1));
         snprintf(key, sizeof key, "aperture_fit_%s_reflected", f->name);
@@ -269,6 +273,26 @@ static const char *decades_from_talk(const so_study_result *r)
     return text;
 }
 
+/* Where each kind of pixel would put u (the talk's cone, GTSO's V_s). */
+static void conclude_regions(report_context *ctx, const aperture_fit *f)
+{
+    double lo = INFINITY, hi = -INFINITY;
+    for (int k = 0; k < APERTURE_REGIONS; ++k)
+        lo = fmin(lo, log10(f->region_best_u[k])), hi = fmax(hi, log10(f->region_best_u[k]));
+    char spread[160];
+    snprintf(spread, sizeof spread,
+             hi - lo > 1.0 ? "The regions' optima span %.1f decades: no single u of this parametrisation serves them all."
+                           : "The regions' optima agree within %.1f decades.",
+             hi - lo);
+    report_paragraph(ctx->doc,
+                     "Per region (RMSE of V_s along the same scan, the talk's cone against GTSO's V_s, figures "
+                     "below): the lowest RMSE is at u = %.3g on grazing pixels (n.v < %.2g, %ld pixels), u = %.3g on "
+                     "occluded ones (cosine AO < %.2g, %ld) and u = %.3g on open ones (%ld). %s",
+                     f->region_best_u[APERTURE_GRAZING], APERTURE_GRAZING_NV, f->region_pixels[APERTURE_GRAZING],
+                     f->region_best_u[APERTURE_OCCLUDED], APERTURE_OCCLUDED_AO, f->region_pixels[APERTURE_OCCLUDED],
+                     f->region_best_u[APERTURE_OPEN], f->region_pixels[APERTURE_OPEN], spread);
+}
+
 /* The gloss-to-aperture fits: the talk's cone against the cone of reflected
  * directions (realtime/specular_occlusion.h), every word chosen by the data. */
 static void conclude_fits(report_context *ctx, const so_study_result *r)
@@ -300,6 +324,7 @@ static void conclude_fits(report_context *ctx, const so_study_result *r)
                                  "not what the data disagree with; see docs/decisions.md."
                                : "Neither search runs off its range here.",
                      talk_edge > 0 && reflected_edge == 0 ? decades_from_talk(r) : "");
+    conclude_regions(ctx, &g->fit);
 }
 
 /* The talk's "16^3 BC4 still acceptable", against the float 32^3 table and
@@ -407,6 +432,11 @@ static void add_figures(report_context *ctx, const so_study_result *r)
                         "reflected directions",
                         "against the D-only V_s (GGX D)", "against the Phong V_s (the talk's fit)"};
     report_figures(ctx->doc, 3, p, c);
+    const char *rp[3] = {"figures/aperture_regions_gtso.png", "figures/aperture_regions_d_only.png",
+                         "figures/aperture_regions_phong.png"};
+    const char *rc[3] = {"the talk's cone against GTSO's V_s, RMSE per region (dashed: each region's lowest)",
+                         "against the D-only V_s", "against the Phong V_s"};
+    report_figures(ctx->doc, 3, rp, rc);
 }
 
 int specular_occlusion_section(report_context *ctx, const so_study_result *r, gt_error *e)

@@ -71,6 +71,24 @@ static void check_curve(const aperture_fit *fit)
     CHECK(fit->evaluations > fit->curve_count + 1);
 }
 
+/* The regions partition the cases' surface pixels; without noise each
+ * region's RMSE is lowest at a scan point next to the synthesised u. */
+static void check_regions(const aperture_fit *fit, const aperture_case *cases, double log10_u)
+{
+    long surface = 0, counted = 0;
+    for (int i = 0; i < 2; ++i)
+        for (int p = 0; p < SIZE * SIZE; ++p)
+            surface += cases[i].inputs.mask[p] != 0.0f;
+    for (int k = 0; k < APERTURE_REGIONS; ++k) {
+        counted += fit->region_pixels[k];
+        CHECK(fit->region_pixels[k] > 0);
+        if (!isnan(log10_u))
+            CHECK_MSG(fabs(log10(fit->region_best_u[k]) - log10_u) <= 0.125, "%s: lowest RMSE at log10 u %.3f",
+                      aperture_region_name((aperture_region)k), log10(fit->region_best_u[k]));
+    }
+    CHECK(counted == surface);
+}
+
 static void recover(so_aperture_mapping mapping, double log10_u, double noise, double tolerance)
 {
     static float references[2][SIZE * SIZE];
@@ -87,6 +105,7 @@ static void recover(so_aperture_mapping mapping, double log10_u, double noise, d
     CHECK(fit.dssim >= 0.0 && (noise > 0.0 || fit.dssim < 1e-4));
     CHECK(fit.dssim_at_published >= fit.dssim);
     check_curve(&fit);
+    check_regions(&fit, cases, noise == 0.0 ? log10_u : NAN);
     for (int i = 0; i < 2; ++i)
         aperture_case_free(&cases[i]);
 }
