@@ -74,6 +74,16 @@ double so_cone_cone(double cos_av, double cos_as, double beta, int exact)
     return clamp01(inter / cap);
 }
 
+double so_cone_cone_above_horizon(double cos_av, double cos_as, double beta, double n_dot_v)
+{
+    double av = acos(fmax(-1.0, fmin(1.0, cos_av))), as = acos(fmax(-1.0, fmin(1.0, cos_as)));
+    double theta_r = acos(fmax(-1.0, fmin(1.0, n_dot_v)));
+    double above = spherical_cap_intersection(as, 0.5 * M_PI, theta_r);
+    if (above <= 0.0) /* a mirror, or a cone wholly below the surface */
+        return beta <= av ? 1.0 : 0.0;
+    return clamp01(spherical_cap_intersection(av, as, beta) / above);
+}
+
 double so_lagarde(double n_dot_v, double ao, double alpha)
 {
     return clamp01(pow(fmax(n_dot_v + ao, 0.0), exp2(-16.0 * alpha - 1.0)) - 1.0 + ao);

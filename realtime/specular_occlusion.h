@@ -70,6 +70,15 @@ double so_cap_intersection_oat(double a1, double a2, double gamma);
 /* Cone/cone V_s for cos a_v, cos a_s and beta (radians). */
 double so_cone_cone(double cos_av, double cos_as, double beta, int exact);
 
+/* Not the talk's: cone/cone V_s normalised by the part of the reflection
+ * cone above the surface, Omega(a_v, a_s, beta) / Omega(a_s, pi/2, theta_r),
+ * theta_r = angle(R, n) = acos(n.v) (R mirrors v about n), exact caps. The
+ * reference never counts directions below the surface as occluded (they are
+ * not in its lobe); the talk's ratio divides by the whole cone and so
+ * darkens open surfaces wherever the cone reaches below the horizon (issue
+ * 26, docs/decisions.md). On an open surface (a_v = pi/2 about n) it is 1. */
+double so_cone_cone_above_horizon(double cos_av, double cos_as, double beta, double n_dot_v);
+
 /* Lagarde and de Rousiers 2014, "Moving Frostbite to PBR", listing 26:
  * saturate((n.v + ao)^(2^(-16 alpha - 1)) - 1 + ao), with alpha = roughness^2
  * (Frostbite's "roughness" is GGX alpha). */

@@ -65,6 +65,8 @@ static int parse_cone(const char *text, so_variant *v)
         v->kind = SO_VARIANT_CONE_EXACT, mapping = text + 11;
     else if (strncmp(text, "cone-oat:", 9) == 0)
         v->kind = SO_VARIANT_CONE_OAT, mapping = text + 9;
+    else if (strncmp(text, "cone-horizon:", 13) == 0)
+        v->kind = SO_VARIANT_CONE_HORIZON, mapping = text + 13;
     else
         return -1;
     for (int m = 0; m < SO_APERTURE_COUNT; ++m)
@@ -90,7 +92,9 @@ int so_variant_parse(const char *text, so_variant *v)
 
 void so_variant_label(const so_variant *v, char *text, size_t size)
 {
-    const char *cone = v->kind == SO_VARIANT_CONE_EXACT ? "cone-exact" : "cone-oat";
+    const char *cone = v->kind == SO_VARIANT_CONE_EXACT ? "cone-exact"
+                       : v->kind == SO_VARIANT_CONE_OAT ? "cone-oat"
+                                                         : "cone-horizon";
     switch (v->kind) {
     case SO_VARIANT_AO: snprintf(text, size, "ao"); break;
     case SO_VARIANT_LAGARDE: snprintf(text, size, "lagarde"); break;
@@ -113,6 +117,9 @@ double so_approx_pixel(const so_pixel_inputs *in, const so_variant *v, size_t p)
     case SO_VARIANT_AO: return ao;
     case SO_VARIANT_LAGARDE: return so_lagarde(in->n_dot_v[p], in->ao_cosine[p], r * r);
     case SO_VARIANT_LUT: return so_lut_lookup(v->lut, acos(cos_av), in->beta[p], r);
+    case SO_VARIANT_CONE_HORIZON:
+        return so_cone_cone_above_horizon(cos_av, so_reflection_cos_aperture(v->mapping, r, v->u), in->beta[p],
+                                          in->n_dot_v[p]);
     default:
         return so_cone_cone(cos_av, so_reflection_cos_aperture(v->mapping, r, v->u), in->beta[p],
                             v->kind == SO_VARIANT_CONE_EXACT);

@@ -43,7 +43,14 @@ typedef struct {
 int so_inputs_compute(const so_screen_buffers *b, vec3 eye, double roughness, so_pixel_inputs *in);
 void so_inputs_free(so_pixel_inputs *in);
 
-typedef enum { SO_VARIANT_AO, SO_VARIANT_LAGARDE, SO_VARIANT_CONE_EXACT, SO_VARIANT_CONE_OAT, SO_VARIANT_LUT } so_variant_kind;
+typedef enum {
+    SO_VARIANT_AO,
+    SO_VARIANT_LAGARDE,
+    SO_VARIANT_CONE_EXACT,
+    SO_VARIANT_CONE_OAT,
+    SO_VARIANT_LUT,
+    SO_VARIANT_CONE_HORIZON /* exact caps, normalised above the horizon (so_cone_cone_above_horizon) */
+} so_variant_kind;
 
 typedef struct {
     so_variant_kind kind;

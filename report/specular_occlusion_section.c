@@ -358,6 +358,23 @@ static void conclude_bc4(report_context *ctx, const so_study_result *r, const so
     claims_table_add(ctx->claims, &c);
 }
 
+/* The cone/cone ratio normalised above the horizon (not the talk's) against
+ * the talk's, both with exp2(-3.32 alpha^2) and exact caps. */
+static void conclude_horizon(report_context *ctx, const so_study_result *r, const so_named_rows *n)
+{
+    int h = so_study_find(r, SO_VARIANT_CONE_HORIZON, SO_APERTURE_EXP2_ALPHA, 0, 0, 0);
+    if (h < 0)
+        return;
+    const so_variant_row *horizon = &r->variants[h], *talk = n->exp2_alpha;
+    const int last = SO_STUDY_ROUGHNESSES - 1;
+    report_paragraph(ctx->doc,
+                     "Normalised by the part of the reflection cone above the surface (cone-horizon, not the talk's: "
+                     "the reference never counts directions below the surface as occluded, the talk's ratio divides "
+                     "by the whole cone), cone/cone with exp2(-3.32193 alpha^2) moves from mean DSSIM %.4f to %.4f, "
+                     "and its RMSE at r = %.2f from %.3f to %.3f.",
+                     talk->mean_dssim, horizon->mean_dssim, r->roughness[last], talk->rmse[last], horizon->rmse[last]);
+}
+
 static void conclude_variants(report_context *ctx, const so_study_result *r, const so_named_rows *n)
 {
     report_paragraph(ctx->doc,
@@ -370,6 +387,7 @@ static void conclude_variants(report_context *ctx, const so_study_result *r, con
                      n->exp2_alpha->mean_dssim <= n->exp2_perceptual->mean_dssim ? "alpha (= perceptual roughness squared)"
                                                                                  : "perceptual roughness",
                      n->exp2_alpha->mean_dssim, n->exp2_perceptual->mean_dssim);
+    conclude_horizon(ctx, r, n);
     conclude_bc4(ctx, r, n);
     conclude_fits(ctx, r);
 }

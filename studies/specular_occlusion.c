@@ -54,7 +54,8 @@ int so_study_find(const so_study_result *r, so_variant_kind kind, so_aperture_ma
 {
     for (int i = 0; i < r->variant_count; ++i) {
         const so_variant_row *v = &r->variants[i];
-        int cone = kind == SO_VARIANT_CONE_EXACT || kind == SO_VARIANT_CONE_OAT, lut = kind == SO_VARIANT_LUT;
+        int cone = kind == SO_VARIANT_CONE_EXACT || kind == SO_VARIANT_CONE_OAT || kind == SO_VARIANT_CONE_HORIZON;
+        int lut = kind == SO_VARIANT_LUT;
         if (v->kind == kind && v->on_gtao == on_gtao && (!cone || v->mapping == mapping) &&
             (!lut || (v->lut_size == lut_size && v->lut_axes == lut_axes && !v->lut_bc4)))
             return i;
@@ -98,7 +99,7 @@ static void add_variant(so_state *st, const char *text, const so_lut *lut, int o
 }
 
 /* ao, lagarde, 4 cone-exact, 4 cone-oat, the LUTs (16, 32, [64], 32
- * cosines, 16 and 32 BC4), then ao, lagarde, cone-exact:exp2-alpha and lut
+ * cosines), 2 cone-horizon (not the talk's), the LUTs 16 and 32 in BC4, then ao, lagarde, cone-exact:exp2-alpha and lut
  * 32 on GTAO. */
 static void setup_variants(so_state *st)
 {
@@ -115,6 +116,8 @@ static void setup_variants(so_state *st)
         if (st->luts[s].data)
             add_variant(st, "lut", &st->luts[s], 0);
     add_variant(st, "lut", &st->lut_cosines, 0);
+    add_variant(st, "cone-horizon:exp2-alpha", NULL, 0);
+    add_variant(st, "cone-horizon:exp2-perceptual", NULL, 0);
     for (int s = 0; s < BC4_SIZES; ++s)
         add_variant(st, "lut", &st->bc4[s], 0);
     add_variant(st, "ao", NULL, 1);

@@ -40,7 +40,7 @@
 enum {
     SO_STUDY_ROUGHNESSES = 3,
     SO_STUDY_MAX_SCENES = 16,
-    SO_STUDY_MAX_VARIANTS = 20,
+    SO_STUDY_MAX_VARIANTS = 24,
     SO_STUDY_MAX_LUTS = 8,
     SO_STUDY_DEFINITIONS = 3, /* the reference definitions the aperture is fitted to */
     SO_STUDY_HEATMAPS = 4

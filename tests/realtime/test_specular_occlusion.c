@@ -114,11 +114,40 @@ static void test_cone_cone(void)
     CHECK(so_lagarde(0.5, 0.6, 0.1) < so_lagarde(0.5, 0.7, 0.1));
 }
 
+/* The cone/cone ratio normalised above the horizon: exactly 1 on an open
+ * surface (visibility cone the hemisphere about n, so beta = theta_r) for
+ * every aperture and view, where the talk's ratio falls below 1 once the
+ * cone reaches under the horizon; the talk's ratio itself wherever the
+ * reflection cone lies wholly above the surface (theta_r + a_s <= pi/2). */
+static void test_cone_cone_above_horizon(void)
+{
+    double worst_open = 0.0, worst_above = 0.0, talk_open_min = 1.0;
+    for (int i = 1; i < 40; ++i)
+        for (int j = 1; j < 40; ++j) {
+            double as = 0.5 * M_PI * i / 40.0, theta_r = 0.5 * M_PI * j / 40.0, n_dot_v = cos(theta_r);
+            double open = so_cone_cone_above_horizon(0.0, cos(as), theta_r, n_dot_v);
+            worst_open = fmax(worst_open, fabs(open - 1.0));
+            talk_open_min = fmin(talk_open_min, so_cone_cone(0.0, cos(as), theta_r, 1));
+            if (theta_r + as <= 0.5 * M_PI)
+                for (int k = 0; k <= 10; ++k) {
+                    double av = 0.5 * M_PI * k / 10.0, beta = 0.3 * k / 10.0;
+                    worst_above = fmax(worst_above, fabs(so_cone_cone_above_horizon(cos(av), cos(as), beta, n_dot_v) -
+                                                         so_cone_cone(cos(av), cos(as), beta, 1)));
+                }
+        }
+    /* 1e-7: where the cone is tangent to the horizon (on the grid) acos near
+     * +-1 turns the caps' rounding of 1e-16 into 1e-8 */
+    CHECK_MSG(worst_open < 1e-7, "open surface: %.3g from 1", worst_open);
+    CHECK_MSG(worst_above < 1e-7, "cone above the horizon: %.3g from the talk's ratio", worst_above);
+    CHECK(talk_open_min < 0.6); /* what it corrects: the talk's ratio darkens open surfaces */
+}
+
 int main(void)
 {
     test_visibility_aperture();
     test_reflection_apertures();
     test_oat();
     test_cone_cone();
+    test_cone_cone_above_horizon();
     return check_report("test_specular_occlusion");
 }
