@@ -12,6 +12,7 @@
 #include "report/specular_occlusion_section.h"
 #include "report/aperture_fit_figures.h"
 #include "report/claims_table.h"
+#include "report/specular_occlusion_section_parts.h"
 #include "report/report_table.h"
 #include "studies/specular_occlusion.h"
 
@@ -468,6 +469,7 @@ int specular_occlusion_section(report_context *ctx, const so_study_result *r, gt
     if (report_fits(ctx, r, json, e) != 0)
         return -1;
     conclude(ctx, r, json);
+    so_rankings_section(ctx, r, json);
     add_figures(ctx, r);
     return 0;
 }

@@ -18,6 +18,7 @@
 #include "scene/builtin_scenes.h"
 #include "scene/scene_loaders.h"
 #include "studies/specular_occlusion_inputs.h"
+#include "studies/specular_occlusion_rankings.h"
 
 enum { LUT_SIZES = 3, BC4_SIZES = 2, CASES_MAX = SO_STUDY_MAX_SCENES * SO_STUDY_ROUGHNESSES };
 static const char *const definition_channels[SO_STUDY_DEFINITIONS] = {CH_SPECOCC, CH_SPECOCC_D, CH_SPECOCC_PHONG};
@@ -37,6 +38,9 @@ typedef struct {
     int heatmaps[SO_STUDY_HEATMAPS];
     double dssim[SO_STUDY_MAX_VARIANTS][SO_STUDY_ROUGHNESSES], rmse[SO_STUDY_MAX_VARIANTS][SO_STUDY_ROUGHNESSES];
     double case_dssim[SO_STUDY_MAX_VARIANTS][CASES_MAX]; /* per scored case, for paired differences */
+    so_lut lut_phong;                              /* the talk's setting's cone/lobe table, 32^3 angles */
+    so_ranking_scores ranking[SO_SETTINGS];        /* the rankings' variants in each setting */
+    double silhouette_fraction_sum;
     int scored;
     double floor_dssim[SO_STUDY_ROUGHNESSES];
     double split_dssim[2][SO_STUDY_ROUGHNESSES], split_rmse[2][SO_STUDY_ROUGHNESSES], split_floor[SO_STUDY_ROUGHNESSES];
@@ -177,6 +181,11 @@ static int build_luts(so_state *st, gt_error *e)
     for (int s = 0; s < BC4_SIZES; ++s) /* 16 and 32, as the talk ships them */
         if (ship_lut_bc4(st, &st->luts[s], &st->bc4[s], &st->out->luts[st->out->lut_count++], e) != 0)
             return -1;
+    /* the talk's setting: its comparisons used Phong lobes */
+    if (so_lut_build(&st->lut_phong, 32, SO_LOBE_PHONG, SO_AXES_ANGLES, st->ctx->threads) != 0)
+        return gt_error_set(e, "specular-occlusion LUT", "out of memory");
+    so_ranking_scores_init(&st->ranking[SO_SETTING_TALK], &st->lut_phong);
+    so_ranking_scores_init(&st->ranking[SO_SETTING_GTSO], &st->luts[1]);
     return 0;
 }
 
@@ -302,6 +311,28 @@ static int score_variants(so_state *st, const aperture_case *c, const so_pixel_i
     return rc;
 }
 
+/* The rankings' variants in both settings on the latest case, by region. */
+static int score_rankings(so_state *st, const image *ref, const char *what, int ri, gt_error *e)
+{
+    static const int definition[SO_SETTINGS] = {2, 0}; /* the talk's: Phong V_s; GTSO's V_s */
+    so_regions regions;
+    if (so_regions_from_reference(ref, what, &regions, e) != 0)
+        return -1;
+    long surface = regions.pixels[SO_REGION_SILHOUETTE] + regions.pixels[SO_REGION_INTERIOR];
+    st->silhouette_fraction_sum += surface ? (double)regions.pixels[SO_REGION_SILHOUETTE] / surface : 0.0;
+    int rc = 0, i = st->case_count - 1;
+    for (int k = 0; k < SO_SETTINGS && rc == 0; ++k) {
+        const aperture_case *c = &st->cases[definition[k]][i];
+        double floor = 0.0;
+        rc = so_ranking_scores_add(&st->ranking[k], &c->inputs, c->reference, &regions, what, e);
+        if (rc == 0)
+            rc = ratio_noise_floor(ref, what, definition_channels[definition[k]], &floor, e);
+        st->ranking[k].floor_sum[ri] += floor;
+    }
+    so_regions_free(&regions);
+    return rc;
+}
+
 /* Scores every variant on one reference, with the AO reference's or GTAO's
  * AO and bent normal, its noise floor and split integrals; keeps its fit
  * cases; at r = 0.5 writes the heatmaps. */
@@ -316,6 +347,8 @@ static int score(so_state *st, const image *ref, const image *ao, const image *g
         return -1;
     int rc = score_variants(st, c, &on_gtao, what, ri, e);
     so_inputs_free(&on_gtao);
+    if (rc == 0)
+        rc = score_rankings(st, ref, what, ri, e);
     double floor = 0.0;
     if (rc == 0)
         rc = ratio_noise_floor(ref, what, CH_SPECOCC, &floor, e);
@@ -411,21 +444,26 @@ static int run_scene(so_state *st, const builtin_scene *b, gt_error *e)
 /* ---- the results --------------------------------------------------------------- */
 
 /* The sums over the scenes as means. */
-/* Variant a's DSSIM minus variant b's, paired over the scored cases. */
+/* Variant a's DSSIM minus variant b's, paired over the scenes. */
 static so_paired_difference paired_difference(const so_state *st, int a, int b)
 {
-    so_paired_difference d = {NAN, NAN, st->scored};
-    if (a < 0 || b < 0 || st->scored < 2)
-        return d;
-    double sum = 0.0, sum_sq = 0.0;
-    for (int i = 0; i < st->scored; ++i) {
-        double x = st->case_dssim[a][i] - st->case_dssim[b][i];
-        sum += x, sum_sq += x * x;
+    so_paired_difference none = {NAN, NAN, 0};
+    return a < 0 || b < 0 ? none
+                          : so_paired_over_scenes(st->case_dssim[a], st->case_dssim[b], 1, st->out->scene_count, -1);
+}
+
+/* The talk's rankings (items 2 and 3) in both settings. */
+static void rank(const so_state *st, so_rankings *k)
+{
+    static const char *const names[SO_SETTINGS] = {"talk", "gtso"};
+    static const int definition[SO_SETTINGS] = {2, 0};
+    static const so_lobe lobes[SO_SETTINGS] = {SO_LOBE_PHONG, SO_LOBE_GGX};
+    k->silhouette_fraction = st->scored ? st->silhouette_fraction_sum / st->scored : NAN;
+    for (int i = 0; i < SO_SETTINGS; ++i) {
+        so_ranking_setting *s = &k->settings[i];
+        so_ranking_setting_compute(&st->ranking[i], st->out->scene_count, s);
+        s->name = names[i], s->reference = definition_channels[definition[i]], s->lobe = so_lobe_name(lobes[i]);
     }
-    d.mean = sum / st->scored;
-    double variance = fmax(0.0, (sum_sq - st->scored * d.mean * d.mean) / (st->scored - 1));
-    d.standard_error = sqrt(variance / st->scored);
-    return d;
 }
 
 static void average(const so_state *st, so_study_result *out)
@@ -453,6 +491,7 @@ static void average(const so_state *st, so_study_result *out)
         out->noise_floor_mean += out->noise_floor_dssim[k] / SO_STUDY_ROUGHNESSES;
     out->bc4_16_cost = paired_difference(st, so_study_find_bc4(out, 16),
                                          so_study_find(out, SO_VARIANT_LUT, 0, 32, SO_AXES_ANGLES, 0));
+    rank(st, &out->rankings);
 }
 
 /* The gloss-to-aperture fits (exact intersection) against each definition. */
@@ -475,6 +514,7 @@ static void free_state(so_state *st)
     for (int s = 0; s < BC4_SIZES; ++s)
         so_lut_free(&st->bc4[s]);
     so_lut_free(&st->lut_cosines);
+    so_lut_free(&st->lut_phong);
     for (int d = 0; d < SO_STUDY_DEFINITIONS; ++d)
         for (int i = 0; i < st->case_count; ++i) {
             aperture_case_free(&st->cases[d][i]);

@@ -86,12 +86,54 @@ typedef struct {
     aperture_fit fit, reflected;
 } so_aperture_row;
 
-/* A paired difference of mean DSSIM between two variants over the cases
- * (scene x roughness): its mean and the mean's standard error. */
+/* A paired difference between two variants' scores: its mean over the
+ * scenes and the mean's standard error (from the spread of the per-scene
+ * differences), and how many scenes it pairs. */
 typedef struct {
     double mean, standard_error;
     int cases;
 } so_paired_difference;
+
+/* The silhouette region (metrics/silhouette_region.h) of every reference:
+ * surface pixels within SO_SILHOUETTE_RADIUS pixels of a depth jump of more
+ * than SO_SILHOUETTE_JUMP of the view distance, or of the background. */
+typedef enum { SO_REGION_SILHOUETTE, SO_REGION_INTERIOR, SO_REGIONS } so_region;
+enum { SO_SILHOUETTE_RADIUS = 3 };
+#define SO_SILHOUETTE_JUMP 0.1
+
+/* One variant within a region: DSSIM (window centres in the region) and
+ * mean signed error approximation - reference (negative: too dark). */
+typedef struct {
+    double dssim, bias;
+} so_region_score;
+
+/* The rankings the talk states (issue 26, items 2 and 3) in one setting:
+ * each a paired difference "a minus b" over the scenes (each scene's mean
+ * over the roughnesses, so the standard error counts scenes, not correlated
+ * cases), except the gloss bands, paired over the scenes at one roughness.
+ * "cone" is cone/cone with exact caps and the talk's cone cos a_s =
+ * 2^(-3.32193 alpha^2) (u = 0.01), "lobe" the cone/lobe LUT 32^3 (angles) of
+ * the setting's lobe. */
+typedef struct {
+    const char *name;      /* "talk" or "gtso" */
+    const char *reference; /* the channel scored against: specocc_phong.V or specocc.V */
+    const char *lobe;      /* so_lobe_name of the cone/lobe LUT */
+    so_region_score cone[SO_REGIONS], lobe_score[SO_REGIONS]; /* means over the cases */
+    so_paired_difference cone_minus_ao, cone_minus_lagarde; /* DSSIM over the whole mask */
+    so_paired_difference lobe_minus_cone[SO_REGIONS];       /* DSSIM */
+    so_paired_difference lobe_minus_cone_bias[SO_REGIONS];  /* mean signed error */
+    so_paired_difference talk_minus_drobot[SO_STUDY_ROUGHNESSES]; /* DSSIM, cone/cone exp2-alpha minus drobot */
+    double noise_floor_dssim[SO_STUDY_ROUGHNESSES];         /* of the reference channel, means over the scenes */
+} so_ranking_setting;
+
+/* The talk's setting (its comparisons "were done using Phong": the Phong
+ * V_s, the Phong lobe in the LUT) and GTSO's (GGX f_r, the GGX LUT). */
+typedef enum { SO_SETTING_TALK, SO_SETTING_GTSO, SO_SETTINGS } so_setting;
+
+typedef struct {
+    double silhouette_fraction; /* of the surface pixels, mean over the cases */
+    so_ranking_setting settings[SO_SETTINGS];
+} so_rankings;
 
 typedef struct {
     int size, spp;  /* of every reference (square images) */
@@ -105,7 +147,8 @@ typedef struct {
     so_variant_row variants[SO_STUDY_MAX_VARIANTS];
     double noise_floor_dssim[SO_STUDY_ROUGHNESSES]; /* of specocc.V, means over the scenes */
     double noise_floor_mean;                        /* their mean over the roughnesses */
-    so_paired_difference bc4_16_cost;               /* DSSIM of lut 16^3 BC4 minus lut 32^3 float, per case */
+    so_paired_difference bc4_16_cost;               /* DSSIM of lut 16^3 BC4 minus lut 32^3 float, over scenes */
+    so_rankings rankings;
     so_split_row splits[SO_STUDY_ROUGHNESSES];
     so_aperture_row fits[SO_STUDY_DEFINITIONS]; /* gtso, d_only, phong */
     double reference_samples_per_second;        /* mean over the specular-occlusion renders */

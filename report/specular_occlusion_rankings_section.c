@@ -1,0 +1,152 @@
+/* The rankings the GTSO talk states, with their significance (issue 26,
+ * items 2 and 3): each a paired difference over the scenes
+ * (studies/specular_occlusion.h, so_rankings), a row of a table, of
+ * summary.json and of the claims table. */
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+
+#include "report/claims_table.h"
+#include "report/specular_occlusion_section_parts.h"
+
+#define SOURCE "Jimenez 2016, Specular Occlusion"
+#define CONE "cone/cone (exact caps, cos a_s = 2^(-3.32193 alpha^2))"
+
+/* One line of the table: what is compared, where, and the difference in
+ * each setting (the offset of the so_paired_difference in so_ranking_setting). */
+typedef struct {
+    const char *key, *comparison, *scope;
+    size_t offset;
+} ranking_line;
+
+static const so_paired_difference *difference(const so_ranking_setting *s, const ranking_line *l)
+{
+    return (const so_paired_difference *)((const char *)s + l->offset);
+}
+
+static const char *significance(const so_paired_difference *d)
+{
+    if (isnan(d->standard_error))
+        return "too few scenes";
+    return fabs(d->mean) > CLAIM_Z * d->standard_error ? "significant" : "not significant";
+}
+
+static void add_line(report *doc, cJSON *json, const so_rankings *k, const ranking_line *l)
+{
+    char text[SO_SETTINGS][48];
+    const char *cells[2 + 2 * SO_SETTINGS] = {l->comparison, l->scope};
+    cJSON *o = cJSON_AddObjectToObject(json, l->key);
+    for (int i = 0; i < SO_SETTINGS; ++i) {
+        const so_paired_difference *d = difference(&k->settings[i], l);
+        snprintf(text[i], sizeof text[i], "%+.5f +- %.5f", d->mean, d->standard_error);
+        cells[2 + 2 * i] = text[i], cells[3 + 2 * i] = significance(d);
+        cJSON *setting = cJSON_AddObjectToObject(o, k->settings[i].name);
+        cJSON_AddNumberToObject(setting, "mean", d->mean);
+        cJSON_AddNumberToObject(setting, "standard_error", d->standard_error);
+        cJSON_AddNumberToObject(setting, "scenes", d->cases);
+    }
+    report_table_row(doc, cells);
+}
+
+#define AT(field) offsetof(so_ranking_setting, field)
+
+static void rankings_table(report *doc, const so_rankings *k, cJSON *json)
+{
+    static const char *const headers[6] = {"a minus b", "where", "talk's setting (Phong)", "at 95%", "GTSO (GGX f_r)",
+                                           "at 95%"};
+    static const ranking_line lines[] = {
+        {"cone_minus_ao", "cone/cone - AO as V_s", "DSSIM, all pixels", AT(cone_minus_ao)},
+        {"cone_minus_lagarde", "cone/cone - Lagarde 2014", "DSSIM, all pixels", AT(cone_minus_lagarde)},
+        {"lobe_minus_cone_silhouette", "cone/lobe LUT 32^3 - cone/cone", "DSSIM, silhouette",
+         AT(lobe_minus_cone[SO_REGION_SILHOUETTE])},
+        {"lobe_minus_cone_interior", "cone/lobe LUT 32^3 - cone/cone", "DSSIM, interior",
+         AT(lobe_minus_cone[SO_REGION_INTERIOR])},
+        {"lobe_minus_cone_bias_silhouette", "cone/lobe LUT 32^3 - cone/cone", "signed error, silhouette",
+         AT(lobe_minus_cone_bias[SO_REGION_SILHOUETTE])},
+        {"lobe_minus_cone_bias_interior", "cone/lobe LUT 32^3 - cone/cone", "signed error, interior",
+         AT(lobe_minus_cone_bias[SO_REGION_INTERIOR])},
+        {"talk_minus_drobot_r025", "talk's cone - Drobot 2014", "DSSIM at r = 0.25 (Phong p = 510)",
+         AT(talk_minus_drobot[0])},
+        {"talk_minus_drobot_r05", "talk's cone - Drobot 2014", "DSSIM at r = 0.5 (p = 30)", AT(talk_minus_drobot[1])},
+        {"talk_minus_drobot_r08", "talk's cone - Drobot 2014", "DSSIM at r = 0.8 (p = 2.9)", AT(talk_minus_drobot[2])},
+    };
+    report_table_begin(doc, 6, headers);
+    for (size_t i = 0; i < sizeof lines / sizeof lines[0]; ++i)
+        add_line(doc, json, k, &lines[i]);
+    report_table_end(doc);
+}
+
+static void add_claim(report_context *ctx, const char *statement, const char *quantity, const so_paired_difference *d,
+                      double low, double high)
+{
+    claim c = {.source = SOURCE, .figure = d->mean, .standard_error = d->standard_error, .low = low, .high = high};
+    snprintf(c.statement, sizeof c.statement, "%s", statement);
+    snprintf(c.quantity, sizeof c.quantity, "%s; Phong V_s and Phong lobes, as the talk compared", quantity);
+    claims_table_add(ctx->claims, &c);
+}
+
+/* The claims, judged in the talk's own setting. */
+static void rankings_claims(report_context *ctx, const so_ranking_setting *t)
+{
+    const int last = SO_STUDY_ROUGHNESSES - 1;
+    add_claim(ctx, "cone/cone matches the reference more closely than AO used as specular occlusion",
+              "DSSIM of " CONE " minus AO's, paired over the scenes; holds below 0", &t->cone_minus_ao, -INFINITY,
+              0.0);
+    add_claim(ctx, "cone/cone matches the reference more closely than Lagarde 2014",
+              "DSSIM of " CONE " minus Lagarde's, paired over the scenes; holds below 0", &t->cone_minus_lagarde,
+              -INFINITY, 0.0);
+    add_claim(ctx, "cone/lobe substantially improves on cone/cone's overdarkening near the silhouette (as DSSIM)",
+              "DSSIM of the cone/lobe LUT 32^3 minus cone/cone's, window centres within 3 pixels of a silhouette, "
+              "paired over the scenes; holds below 0",
+              &t->lobe_minus_cone[SO_REGION_SILHOUETTE], -INFINITY, 0.0);
+    add_claim(ctx, "cone/lobe substantially improves on cone/cone's overdarkening near the silhouette (as darkening)",
+              "mean signed error (approximation - reference) of the cone/lobe LUT 32^3 minus cone/cone's, pixels "
+              "within 3 pixels of a silhouette, paired over the scenes; holds above 0 (less dark)",
+              &t->lobe_minus_cone_bias[SO_REGION_SILHOUETTE], 0.0, INFINITY);
+    add_claim(ctx, "the gloss-to-aperture mapping is more accurate than Drobot 2014 for smaller gloss values",
+              "DSSIM of cone/cone with the talk's cone minus with Drobot's at r = 0.8 (Phong p = 2.9), paired over "
+              "the scenes; holds below 0",
+              &t->talk_minus_drobot[last], -INFINITY, 0.0);
+    add_claim(ctx, "the gloss-to-aperture mapping is similar to Drobot 2014 (glossy surfaces)",
+              "DSSIM of cone/cone with the talk's cone minus with Drobot's at r = 0.25 (p = 510); holds within the "
+              "reference's noise floor at that roughness",
+              &t->talk_minus_drobot[0], -t->noise_floor_dssim[0], t->noise_floor_dssim[0]);
+}
+
+static void conclude(report *doc, const so_rankings *k)
+{
+    for (int i = 0; i < SO_SETTINGS; ++i) {
+        const so_ranking_setting *s = &k->settings[i];
+        const so_region_score *cs = &s->cone[SO_REGION_SILHOUETTE], *ls = &s->lobe_score[SO_REGION_SILHOUETTE];
+        const so_region_score *ci = &s->cone[SO_REGION_INTERIOR], *li = &s->lobe_score[SO_REGION_INTERIOR];
+        report_paragraph(doc,
+                         "Against %s (cone/lobe with the %s lobe): near silhouettes cone/cone's mean signed error is "
+                         "%+.4f and cone/lobe's %+.4f (DSSIM %.4f and %.4f); in the interior %+.4f and %+.4f (DSSIM "
+                         "%.4f and %.4f). Negative is too dark.",
+                         s->reference, s->lobe, cs->bias, ls->bias, cs->dssim, ls->dssim, ci->bias, li->bias, ci->dssim,
+                         li->dssim);
+    }
+}
+
+void so_rankings_section(report_context *ctx, const so_study_result *r, cJSON *summary)
+{
+    const so_rankings *k = &r->rankings;
+    cJSON *json = cJSON_AddObjectToObject(summary, "rankings");
+    report_heading(ctx->doc, 3, "The talk's rankings, with their significance");
+    report_paragraph(ctx->doc,
+                     "Each row is a mean over the scenes of variant a's score minus variant b's (negative: a is "
+                     "closer to the reference), +- its standard error from the spread over the scenes (each scene's "
+                     "mean over the three roughnesses; the pixels and roughnesses of one scene are not independent, "
+                     "the scenes are). The talk's setting is its own (\"all the previous comparisons were done using "
+                     "Phong\"): the Phong V_s as reference and the Phong lobe in the cone/lobe table; GTSO's is the "
+                     "GGX f_r of the rest of this section. cone/cone is " CONE ". The silhouette region (%.0f%% of "
+                     "the surface pixels) holds the surface pixels within %d pixels of the background or of a jump "
+                     "in view distance of more than %.0f%%; the interior, the rest. The talk's images show a character's "
+                     "silhouettes against a background; the built-in scenes are other geometry, so a verdict here "
+                     "speaks for them, not for its images.",
+                     100.0 * k->silhouette_fraction, SO_SILHOUETTE_RADIUS, 100.0 * SO_SILHOUETTE_JUMP);
+    rankings_table(ctx->doc, k, json);
+    cJSON_AddNumberToObject(json, "silhouette_fraction", k->silhouette_fraction);
+    conclude(ctx->doc, k);
+    rankings_claims(ctx, &k->settings[SO_SETTING_TALK]);
+}
