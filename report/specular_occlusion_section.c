@@ -470,6 +470,7 @@ int specular_occlusion_section(report_context *ctx, const so_study_result *r, gt
         return -1;
     conclude(ctx, r, json);
     so_rankings_section(ctx, r, json);
+    so_cone_view_section(ctx, r, json);
     add_figures(ctx, r);
     return 0;
 }

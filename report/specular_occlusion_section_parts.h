@@ -14,4 +14,8 @@
  * specular_occlusion_rankings_section.c). */
 void so_rankings_section(report_context *ctx, const so_study_result *r, cJSON *summary);
 
+/* The visibility cone and the dropped view angle (items 1 and 5;
+ * specular_occlusion_cone_view_section.c). */
+void so_cone_view_section(report_context *ctx, const so_study_result *r, cJSON *summary);
+
 #endif

@@ -40,6 +40,7 @@ typedef struct {
     double case_dssim[SO_STUDY_MAX_VARIANTS][CASES_MAX]; /* per scored case, for paired differences */
     so_lut lut_phong;                              /* the talk's setting's cone/lobe table, 32^3 angles */
     so_ranking_scores ranking[SO_SETTINGS];        /* the rankings' variants in each setting */
+    so_cone_view_scores cone_view;
     double silhouette_fraction_sum;
     int scored;
     double floor_dssim[SO_STUDY_ROUGHNESSES];
@@ -186,6 +187,7 @@ static int build_luts(so_state *st, gt_error *e)
         return gt_error_set(e, "specular-occlusion LUT", "out of memory");
     so_ranking_scores_init(&st->ranking[SO_SETTING_TALK], &st->lut_phong);
     so_ranking_scores_init(&st->ranking[SO_SETTING_GTSO], &st->luts[1]);
+    st->cone_view.lut = &st->luts[1], st->cone_view.strata = 24;
     return 0;
 }
 
@@ -333,6 +335,18 @@ static int score_rankings(so_state *st, const image *ref, const char *what, int 
     return rc;
 }
 
+/* The visibility cone and the dropped dimension on the latest case. */
+static int score_cone_view(so_state *st, const image *ref, const image *ao, const char *what, int ri, gt_error *e)
+{
+    const aperture_case *c = &st->cases[0][st->case_count - 1];
+    so_screen_buffers b;
+    vec3 eye;
+    if (so_buffers_from_images(ref, what, ao, what, &b, &eye, e) != 0)
+        return -1;
+    return so_cone_view_add(&st->cone_view, &b, eye, &c->inputs, c->reference,
+                            schema_stderr_data(ref, CH_SPECOCC), ri, what, e);
+}
+
 /* Scores every variant on one reference, with the AO reference's or GTAO's
  * AO and bent normal, its noise floor and split integrals; keeps its fit
  * cases; at r = 0.5 writes the heatmaps. */
@@ -349,6 +363,8 @@ static int score(so_state *st, const image *ref, const image *ao, const image *g
     so_inputs_free(&on_gtao);
     if (rc == 0)
         rc = score_rankings(st, ref, what, ri, e);
+    if (rc == 0)
+        rc = score_cone_view(st, ref, ao, what, ri, e);
     double floor = 0.0;
     if (rc == 0)
         rc = ratio_noise_floor(ref, what, CH_SPECOCC, &floor, e);
@@ -459,6 +475,7 @@ static void rank(const so_state *st, so_rankings *k)
     static const int definition[SO_SETTINGS] = {2, 0};
     static const so_lobe lobes[SO_SETTINGS] = {SO_LOBE_PHONG, SO_LOBE_GGX};
     k->silhouette_fraction = st->scored ? st->silhouette_fraction_sum / st->scored : NAN;
+    so_cone_view_compute(&st->cone_view, st->out->scene_count, &st->out->cone_view);
     for (int i = 0; i < SO_SETTINGS; ++i) {
         so_ranking_setting *s = &k->settings[i];
         so_ranking_setting_compute(&st->ranking[i], st->out->scene_count, s);

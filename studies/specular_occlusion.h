@@ -135,6 +135,28 @@ typedef struct {
     so_ranking_setting settings[SO_SETTINGS];
 } so_rankings;
 
+/* The visibility cone against the real visibility, and the dimension the
+ * 3-D table drops (issue 26, items 1 and 5), on the reference inputs: with
+ * V_s^cone the GGX V_s whose visibility is the AO's cone (cosine AO, bent
+ * normal) at the pixel's actual view (luts/cone_visibility_view.h),
+ *   visibility  V_s^cone vs the reference specocc.V: the cone's own error;
+ *   dropped     the cone/lobe LUT 32^3 vs V_s^cone: its lobe taken at normal
+ *               incidence (no n.v axis) and its interpolation;
+ *   total       the LUT vs the reference.
+ * RMSEs against the reference have its noise taken out
+ * (metrics/noise_corrected.h). Per roughness: means over the scenes; per
+ * n.v band: pooled over the scenes' pixels. */
+enum { SO_NV_BANDS = 3 }; /* n.v in [0, 0.3), [0.3, 0.6), [0.6, 1] */
+typedef struct {
+    int strata; /* of V_s^cone's stratified estimate, per axis */
+    double visibility_rmse[SO_STUDY_ROUGHNESSES], dropped_rmse[SO_STUDY_ROUGHNESSES],
+        total_rmse[SO_STUDY_ROUGHNESSES];
+    double dropped_rmse_band[SO_STUDY_ROUGHNESSES][SO_NV_BANDS];
+    long band_pixels[SO_NV_BANDS];
+    so_paired_difference visibility;               /* visibility RMSE (minus 0), over the scenes */
+    so_paired_difference dropped_minus_visibility; /* dropped RMSE minus visibility RMSE, over the scenes */
+} so_cone_view_result;
+
 typedef struct {
     int size, spp;  /* of every reference (square images) */
     int lut_points; /* random points of the interpolation error */
@@ -149,6 +171,7 @@ typedef struct {
     double noise_floor_mean;                        /* their mean over the roughnesses */
     so_paired_difference bc4_16_cost;               /* DSSIM of lut 16^3 BC4 minus lut 32^3 float, over scenes */
     so_rankings rankings;
+    so_cone_view_result cone_view;
     so_split_row splits[SO_STUDY_ROUGHNESSES];
     so_aperture_row fits[SO_STUDY_DEFINITIONS]; /* gtso, d_only, phong */
     double reference_samples_per_second;        /* mean over the specular-occlusion renders */

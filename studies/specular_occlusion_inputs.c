@@ -46,11 +46,10 @@ static int ao_channels(const image *ao, const char *what, so_screen_buffers *b, 
     return 0;
 }
 
-int so_inputs_from_images(const image *gbuffer, const char *what_gbuffer, const image *ao, const char *what_ao,
-                          double roughness, so_pixel_inputs *in, gt_error *e)
+int so_buffers_from_images(const image *gbuffer, const char *what_gbuffer, const image *ao, const char *what_ao,
+                           so_screen_buffers *b, vec3 *eye, gt_error *e)
 {
-    so_screen_buffers b;
-    if (gbuffer_channels(gbuffer, what_gbuffer, &b, e) != 0 || ao_channels(ao, what_ao, &b, e) != 0)
+    if (gbuffer_channels(gbuffer, what_gbuffer, b, e) != 0 || ao_channels(ao, what_ao, b, e) != 0)
         return -1;
     if (ao->width != gbuffer->width || ao->height != gbuffer->height)
         return gt_error_set(e, what_ao, "size %dx%d differs from the G-buffer's %dx%d", ao->width, ao->height,
@@ -61,7 +60,18 @@ int so_inputs_from_images(const image *gbuffer, const char *what_gbuffer, const 
         return gt_error_set(e, what_gbuffer, "no gtlab.camera header attribute (not a gtlab G-buffer?)");
     if (camera_parse_json(camera_json, what_gbuffer, &cam, e) != 0)
         return -1;
-    if (so_inputs_compute(&b, cam.position, roughness, in) != 0)
+    *eye = cam.position;
+    return 0;
+}
+
+int so_inputs_from_images(const image *gbuffer, const char *what_gbuffer, const image *ao, const char *what_ao,
+                          double roughness, so_pixel_inputs *in, gt_error *e)
+{
+    so_screen_buffers b;
+    vec3 eye;
+    if (so_buffers_from_images(gbuffer, what_gbuffer, ao, what_ao, &b, &eye, e) != 0)
+        return -1;
+    if (so_inputs_compute(&b, eye, roughness, in) != 0)
         return gt_error_set(e, what_gbuffer, "out of memory");
     return 0;
 }

@@ -19,6 +19,11 @@
 int so_inputs_from_images(const image *gbuffer, const char *what_gbuffer, const image *ao, const char *what_ao,
                           double roughness, so_pixel_inputs *in, gt_error *e);
 
+/* The buffers so_inputs_from_images reads (pointers into the images) and
+ * the eye position of the G-buffer's camera. Returns 0, or -1 with e. */
+int so_buffers_from_images(const image *gbuffer, const char *what_gbuffer, const image *ao, const char *what_ao,
+                           so_screen_buffers *b, vec3 *eye, gt_error *e);
+
 /* The roughness a specular-occlusion reference was rendered with (its
  * gtlab.roughness attribute), or -1 when it used the materials'. */
 double so_reference_roughness(const image *reference);

@@ -44,6 +44,22 @@ int so_ranking_scores_add(so_ranking_scores *s, const so_pixel_inputs *in, const
 /* The setting's rankings from its scores over `scenes` scenes. */
 void so_ranking_setting_compute(const so_ranking_scores *s, int scenes, so_ranking_setting *out);
 
+/* The per-case sums of so_cone_view_result (specular_occlusion_cone_view.c). */
+typedef struct {
+    const so_lut *lut; /* the GGX 32^3 angles table (not owned) */
+    int strata, cases;
+    double visibility[SO_RANK_CASES], dropped[SO_RANK_CASES], total[SO_RANK_CASES]; /* RMSE per case */
+    double band_sq[SO_STUDY_ROUGHNESSES][SO_NV_BANDS];
+    long band_count[SO_STUDY_ROUGHNESSES][SO_NV_BANDS];
+} so_cone_view_scores;
+
+/* One more case: the reference V_s (`reference`, its standard errors
+ * `reference_stderr`) of the G-buffer and AO buffers b seen from eye. */
+int so_cone_view_add(so_cone_view_scores *s, const so_screen_buffers *b, vec3 eye, const so_pixel_inputs *in,
+                     const float *reference, const float *reference_stderr, int roughness_index, const char *what,
+                     gt_error *e);
+void so_cone_view_compute(const so_cone_view_scores *s, int scenes, so_cone_view_result *out);
+
 /* a minus b over `scenes` scenes of per-case scores (case = scene *
  * SO_STUDY_ROUGHNESSES + roughness index, `stride` doubles apart): each
  * scene's mean over the roughnesses (roughness < 0) or its value at one
