@@ -36,6 +36,16 @@ void claims_table_add(claims_table *t, const claim *c)
     row->verdict_name = claim_verdict_name(row->verdict);
 }
 
+void claims_table_add_figure(claims_table *t, const char *source, const char *statement, const char *quantity,
+                             double figure, double standard_error, double low, double high)
+{
+    claim c = {.figure = figure, .standard_error = standard_error, .low = low, .high = high};
+    snprintf(c.source, sizeof c.source, "%s", source);
+    snprintf(c.statement, sizeof c.statement, "%s", statement);
+    snprintf(c.quantity, sizeof c.quantity, "%s", quantity);
+    claims_table_add(t, &c);
+}
+
 /* "x ± s" with 3 significant digits ("x" alone for an exact figure). */
 static void figure_cell(const void *row, char *text, size_t size)
 {

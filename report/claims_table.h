@@ -54,6 +54,9 @@ const char *claim_verdict_name(claim_verdict v);
 /* Appends a copy of c with its interval and verdict computed; a NULL table
  * or a full one (CLAIMS_MAX rows) ignores it. */
 void claims_table_add(claims_table *t, const claim *c);
+/* The same from its parts (texts truncated to CLAIM_TEXT - 1 characters). */
+void claims_table_add_figure(claims_table *t, const char *source, const char *statement, const char *quantity,
+                             double figure, double standard_error, double low, double high);
 
 /* The table in the report (heading "Claims of the talks"), a line counting
  * the verdicts in its "At a glance" list, and the array "claims" in

@@ -67,26 +67,19 @@ static void band_table(report *doc, const so_study_result *r, cJSON *json)
 
 static void cone_view_claims(report_context *ctx, const so_cone_view_result *c)
 {
-    claim vis = {.source = "Jimenez 2016, Specular Occlusion",
-                 .statement = "using a cone visibility is still a very good match to the ground truth",
-                 .quantity = "RMSE of V_s with the AO's visibility cone (GGX f_r at the actual view) against the "
-                             "reference V_s, the reference's noise taken out, mean over the scenes; holds below 0.05 "
-                             "(gtlab's reading of a very good match)",
-                 .figure = c->visibility.mean,
-                 .standard_error = c->visibility.standard_error,
-                 .low = -INFINITY,
-                 .high = SO_GOOD_MATCH_RMSE};
-    claims_table_add(ctx->claims, &vis);
-    claim drop = {.source = "Jimenez 2016, Specular Occlusion",
-                  .statement = "V_s is baked into a 3-D table of (a_v, beta, r): the view angle can be dropped",
-                  .quantity = "RMSE of the 32^3 table against V_s^cone (dropped n.v and interpolation) minus the "
-                              "visibility cone's own RMSE, paired over the scenes; holds below 0 (the table costs "
-                              "less than the cone it stands on)",
-                  .figure = c->dropped_minus_visibility.mean,
-                  .standard_error = c->dropped_minus_visibility.standard_error,
-                  .low = -INFINITY,
-                  .high = 0.0};
-    claims_table_add(ctx->claims, &drop);
+    claims_table_add_figure(ctx->claims, "Jimenez 2016, Specular Occlusion",
+                            "using a cone visibility is still a very good match to the ground truth",
+                            "RMSE of V_s with the AO's visibility cone (GGX f_r at the actual view) against the "
+                            "reference V_s, the reference's noise taken out, mean over the scenes; holds below 0.05 "
+                            "(gtlab's reading of a very good match)",
+                            c->visibility.mean, c->visibility.standard_error, -INFINITY, SO_GOOD_MATCH_RMSE);
+    claims_table_add_figure(ctx->claims, "Jimenez 2016, Specular Occlusion",
+                            "V_s is baked into a 3-D table of (a_v, beta, r): the view angle can be dropped",
+                            "RMSE of the 32^3 table against V_s^cone (dropped n.v and interpolation) minus the "
+                            "visibility cone's own RMSE, paired over the scenes; holds below 0 (the table costs less "
+                            "than the cone it stands on)",
+                            c->dropped_minus_visibility.mean, c->dropped_minus_visibility.standard_error, -INFINITY,
+                            0.0);
 }
 
 void so_cone_view_section(report_context *ctx, const so_study_result *r, cJSON *summary)

@@ -79,10 +79,9 @@ static void rankings_table(report *doc, const so_rankings *k, cJSON *json)
 static void add_claim(report_context *ctx, const char *statement, const char *quantity, const so_paired_difference *d,
                       double low, double high)
 {
-    claim c = {.source = SOURCE, .figure = d->mean, .standard_error = d->standard_error, .low = low, .high = high};
-    snprintf(c.statement, sizeof c.statement, "%s", statement);
-    snprintf(c.quantity, sizeof c.quantity, "%s; Phong V_s and Phong lobes, as the talk compared", quantity);
-    claims_table_add(ctx->claims, &c);
+    char text[CLAIM_TEXT];
+    snprintf(text, sizeof text, "%s; Phong V_s and Phong lobes, as the talk compared", quantity);
+    claims_table_add_figure(ctx->claims, SOURCE, statement, text, d->mean, d->standard_error, low, high);
 }
 
 /* The claims, judged in the talk's own setting. */
