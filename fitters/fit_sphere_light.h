@@ -29,9 +29,13 @@ typedef struct {
     double reference_stderr;
 } sphere_light_sample;
 
-typedef enum { SPHERE_MODEL_KARIS, SPHERE_MODEL_DECIMA } sphere_light_model;
+typedef enum {
+    SPHERE_MODEL_KARIS,
+    SPHERE_MODEL_DECIMA,
+    SPHERE_MODEL_DECIMA_HORIZON /* Decima with the terminator mended (decima_sphere_ggx_horizon_local) */
+} sphere_light_model;
 
-/* The residual of one sample under a model (k used by DECIMA only). */
+/* The residual of one sample under a model (k used by the DECIMA models only). */
 double sphere_light_residual(sphere_light_model model, const decima_sphere_constants *k,
                              const sphere_light_sample *s);
 

@@ -114,6 +114,20 @@ float decima_sphere_ggx_local(vec3 v, vec3 lc, float sin_sigma, float alpha, con
     return decima_sphere_ggx(lc.z, v.z, v_dot_l, l_dot_h, sin_sigma, alpha, 1.0f, k, newton_steps);
 }
 
+float decima_sphere_ggx_horizon_local(vec3 v, vec3 lc, float sin_sigma, float alpha, const decima_sphere_constants *k,
+                                      int newton_steps)
+{
+    float sin_sigma_sq = sin_sigma * sin_sigma;
+    if (lc.z * lc.z > sin_sigma_sq) /* the whole cap above (or below) the horizon: the talk's */
+        return decima_sphere_ggx_local(v, lc, sin_sigma, alpha, k, newton_steps);
+    float form_factor = sphere_illuminance_frostbite(lc.z, sin_sigma) / ((float)M_PI * sin_sigma_sq);
+    float lifted = fmaxf(lc.z, 1e-4f);
+    float v_dot_l = v3_dot(v, lc);
+    float l_dot_h = sqrtf(fmaxf(0.0f, 0.5f + 0.5f * v_dot_l));
+    return decima_sphere_ggx(lifted, v.z, v_dot_l, l_dot_h, sin_sigma, alpha, 1.0f, k, newton_steps) / lifted *
+           form_factor;
+}
+
 float sphere_illuminance_frostbite(float cos_theta, float sin_sigma)
 {
     float sin_sigma_sq = sin_sigma * sin_sigma;

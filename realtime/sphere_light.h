@@ -106,6 +106,19 @@ float decima_sphere_ggx(float n_dot_l, float n_dot_v, float v_dot_l, float l_dot
 float decima_sphere_ggx_local(vec3 v, vec3 lc, float sin_sigma, float alpha, const decima_sphere_constants *k,
                               int newton_steps);
 
+/* Not the talk's: the same with its admitted error near the terminator
+ * mended (issue 26, item 8). The talk multiplies by saturate(n.lc), the
+ * centre's cosine, which is 0 once the centre sinks below the horizon
+ * though part of the cap is still above it. Here that factor is the cap's
+ * horizon-clipped form factor, sphere_illuminance_frostbite(n.lc, sin sigma)
+ * / (pi sin^2 sigma), which equals n.lc while the whole cap is above the
+ * horizon (so away from the terminator this is the talk's value up to float
+ * rounding) and falls smoothly to 0 as the cap sets; D, visibility and the
+ * normalisation are evaluated with n.lc lifted to at least 1e-4. One extra
+ * branch and, in the straddling band only, Frostbite's acos/atan. */
+float decima_sphere_ggx_horizon_local(vec3 v, vec3 lc, float sin_sigma, float alpha, const decima_sphere_constants *k,
+                                      int newton_steps);
+
 /* ---- Lambert: illuminance of a sphere of unit radiance ---- */
 
 /* Lagarde & de Rousiers 2014, "Moving Frostbite to PBR", listing 7

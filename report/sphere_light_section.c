@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "report/sphere_light_section_parts.h"
 #include "report/sphere_light_section.h"
 #include "report/sphere_noh_figures.h"
 #include "report/gnuplot_plot.h"
@@ -355,5 +356,6 @@ int sphere_light_section(report_context *ctx, const sphere_light_result *r, gt_e
     report_maps(ctx, r, json);
     report_scenes(ctx, r, json);
     report_cost(ctx, &r->cost, json);
+    sphere_terminator_section(ctx, &r->terminator, json);
     return 0;
 }

@@ -330,5 +330,7 @@ int sphere_light_study(const study_context *ctx, sphere_light_result *out, gt_er
     if (sphere_scenes_study(ctx, dir, &out->fit.fit.constants, out->scenes, &out->shadows, e) != 0)
         return -1;
     sphere_cost_study(preview ? 1L << 20 : 1L << 22, 3, &out->cost);
-    return 0;
+    return sphere_terminator_study(preview ? 2000 : 20000, preview ? 512u : 1024u, &out->terminator) != 0
+               ? gt_error_set(e, "sphere light", "out of memory")
+               : 0;
 }

@@ -134,6 +134,30 @@ typedef struct {
 
 void sphere_cost_study(long count, int repeats, sphere_cost *out);
 
+/* ---- Near the terminator (issue 26, item 8) ---- */
+
+/* The talk: "N.L is not adjusted ... zero intensity when the centre of the
+ * area light is on the horizon". Configurations of the realistic
+ * distribution's roughness, size and n.v with the light's centre in the band
+ * where the cap straddles the horizon (elevation uniform in [-sigma,
+ * sigma]), and for comparison just above it ([sigma, 3 sigma]), azimuth on
+ * the reflection's side (within 90 degrees of the mirror azimuth). Errors
+ * are the fit's residual ln((model + 0.01)/(reference + 0.01)): the talk's
+ * Decima (published constants, one step) and the mended form
+ * (decima_sphere_ggx_horizon_local). Means over the configurations, each
+ * with the standard error of that mean. */
+typedef struct {
+    int configurations;   /* per band */
+    uint32_t samples;     /* MIS samples per reference */
+    double share_centre_below; /* of the straddling band: centre below the horizon, where the talk gives 0 */
+    double talk_signed, talk_signed_se;     /* straddling band: mean residual (negative: too dark) */
+    double talk_abs, talk_abs_se, fixed_abs, fixed_abs_se; /* straddling band: mean |residual| */
+    double gain, gain_se;                   /* talk's |residual| minus the mended one's, paired */
+    double above_abs, above_abs_se;         /* the talk's mean |residual| just above the band */
+} sphere_terminator_result;
+
+int sphere_terminator_study(int configurations, uint32_t samples, sphere_terminator_result *out);
+
 /* ---- The whole stage ---- */
 
 typedef struct {
@@ -147,6 +171,7 @@ typedef struct {
     sphere_scene_row scenes[SPHERE_SCENES];
     sphere_shadow_result shadows;
     sphere_cost cost;
+    sphere_terminator_result terminator;
 } sphere_light_result;
 
 int sphere_light_study(const study_context *ctx, sphere_light_result *out, gt_error *e);

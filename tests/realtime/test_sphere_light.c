@@ -242,8 +242,43 @@ static void test_representative_diffuse(void)
     CHECK(sphere_illuminance_representative((float)cos(2.0), 0.1f) == 0.0f); /* cap wholly below */
 }
 
+/* The terminator fix (decima_sphere_ggx_horizon_local): bit for bit the
+ * talk's while the whole cap is above the horizon; across the band the cap
+ * straddles it is positive where the talk's is 0 (centre on or below the
+ * horizon), continuous where the band begins, and 0 once the cap has set. */
+static void test_terminator_fix(void)
+{
+    const decima_sphere_constants k = decima_sphere_published();
+    for (int i = 0; i < 300; ++i) {
+        double sin_sigma = 0.005 + 0.4 * uniform01((uint32_t)i, 11), sigma = asin(sin_sigma);
+        double rough = 0.1 + 0.9 * uniform01((uint32_t)i, 12), nv = 0.05 + 0.9 * uniform01((uint32_t)i, 13);
+        double above = (M_PI / 2 - sigma) * 0.999 * uniform01((uint32_t)i, 14);
+        sphere_light_config c = sphere_light_config_make(nv, above, M_PI * uniform01((uint32_t)i, 15), sin_sigma, rough);
+        float talk = decima_sphere_ggx_local(c.v, c.lc, (float)sin_sigma, (float)c.alpha, &k, 1);
+        CHECK(decima_sphere_ggx_horizon_local(c.v, c.lc, (float)sin_sigma, (float)c.alpha, &k, 1) == talk);
+        /* where the band begins (lc.z = sin sigma) the form factor is the cosine: the two agree */
+        double edge = M_PI / 2 - sigma, phi = M_PI * (0.6 + 0.4 * uniform01((uint32_t)i, 16));
+        for (int side = -1; side <= 1; side += 2) {
+            sphere_light_config e = sphere_light_config_make(nv, edge + side * 1e-6, phi, sin_sigma, rough);
+            double fix = decima_sphere_ggx_horizon_local(e.v, e.lc, (float)sin_sigma, (float)e.alpha, &k, 1);
+            double plain = decima_sphere_ggx_local(e.v, e.lc, (float)sin_sigma, (float)e.alpha, &k, 1);
+            CHECK_MSG(fabs(fix - plain) <= 1e-3 * fabs(plain) + 1e-7, "edge: %g vs %g (sin sigma %g)", fix, plain,
+                      sin_sigma);
+        }
+        /* centre on the horizon: the talk gives 0, the cap is half up */
+        sphere_light_config h = sphere_light_config_make(nv, M_PI / 2, phi, sin_sigma, rough);
+        h.lc.z = 0.0f;
+        CHECK(decima_sphere_ggx_local(h.v, h.lc, (float)sin_sigma, (float)h.alpha, &k, 1) == 0.0f);
+        CHECK(decima_sphere_ggx_horizon_local(h.v, h.lc, (float)sin_sigma, (float)h.alpha, &k, 1) > 0.0f);
+        /* the cap set: 0 */
+        sphere_light_config set = sphere_light_config_make(nv, M_PI / 2 + sigma * 1.001, phi, sin_sigma, rough);
+        CHECK(decima_sphere_ggx_horizon_local(set.v, set.lc, (float)sin_sigma, (float)set.alpha, &k, 1) == 0.0f);
+    }
+}
+
 int main(void)
 {
+    test_terminator_fix();
     test_newton_step_is_newton();
     test_matches_rotated_vector();
     test_bounded_by_brute_force();

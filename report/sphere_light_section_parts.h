@@ -1,0 +1,16 @@
+/* The sphere-light section's parts kept in their own files: the talk's
+ * statements it measures (issue 26), each a subsection, an object of the
+ * section's summary.json object and rows of the claims table. Internal to
+ * report/. */
+#ifndef GTLAB_REPORT_SPHERE_LIGHT_SECTION_PARTS_H
+#define GTLAB_REPORT_SPHERE_LIGHT_SECTION_PARTS_H
+
+#include <cjson/cJSON.h>
+
+#include "report/report_context.h"
+#include "studies/sphere_light.h"
+
+/* Near the terminator (item 8; sphere_light_terminator_section.c). */
+void sphere_terminator_section(report_context *ctx, const sphere_terminator_result *t, cJSON *summary);
+
+#endif
