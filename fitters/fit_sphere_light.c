@@ -11,7 +11,9 @@ double sphere_light_residual(sphere_light_model model, const decima_sphere_const
 {
     double value = model == SPHERE_MODEL_KARIS ? karis_sphere_ggx(s->v, s->lc, s->sin_sigma, s->alpha)
                    : model == SPHERE_MODEL_DECIMA
-                       ? decima_sphere_ggx_local(s->v, s->lc, s->sin_sigma, s->alpha, k, 1)
+                       ? decima_sphere_ggx_local_radii(s->v, s->lc, s->sin_sigma,
+                                                       s->norm_radius > 0.0f ? s->norm_radius : s->sin_sigma,
+                                                       s->alpha, k, 1)
                        : decima_sphere_ggx_horizon_local(s->v, s->lc, s->sin_sigma, s->alpha, k, 1);
     return log((value + SPHERE_FIT_FLOOR) / (s->reference + SPHERE_FIT_FLOOR));
 }

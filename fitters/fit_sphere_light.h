@@ -27,6 +27,8 @@ typedef struct {
     float sin_sigma, alpha; /* R / d and GGX alpha */
     double reference;       /* L_spec / (pi sin^2 sigma) from the MC reference */
     double reference_stderr;
+    float norm_radius;      /* the normalisation's light_radius under another reading of the appendix
+                               (issue 26, item 7); 0: sin_sigma, gtlab's reading */
 } sphere_light_sample;
 
 typedef enum {

@@ -106,12 +106,19 @@ float decima_sphere_ggx(float n_dot_l, float n_dot_v, float v_dot_l, float l_dot
     return sl_decima_sphere_ggx(n_dot_l, n_dot_v, v_dot_l, l_dot_h, radius_over_distance, alpha, f0, *k, newton_steps);
 }
 
-float decima_sphere_ggx_local(vec3 v, vec3 lc, float sin_sigma, float alpha, const decima_sphere_constants *k,
-                              int newton_steps)
+float decima_sphere_ggx_local_radii(vec3 v, vec3 lc, float sin_sigma, float norm_radius, float alpha,
+                                    const decima_sphere_constants *k, int newton_steps)
 {
     float v_dot_l = v3_dot(v, lc);
     float l_dot_h = sqrtf(fmaxf(0.0f, 0.5f + 0.5f * v_dot_l)); /* h = (v + l)/|v + l| */
-    return decima_sphere_ggx(lc.z, v.z, v_dot_l, l_dot_h, sin_sigma, alpha, 1.0f, k, newton_steps);
+    return sl_decima_sphere_ggx_radii(lc.z, v.z, v_dot_l, l_dot_h, sin_sigma, norm_radius, alpha, 1.0f, *k,
+                                      newton_steps);
+}
+
+float decima_sphere_ggx_local(vec3 v, vec3 lc, float sin_sigma, float alpha, const decima_sphere_constants *k,
+                              int newton_steps)
+{
+    return decima_sphere_ggx_local_radii(v, lc, sin_sigma, sin_sigma, alpha, k, newton_steps);
 }
 
 float decima_sphere_ggx_horizon_local(vec3 v, vec3 lc, float sin_sigma, float alpha, const decima_sphere_constants *k,

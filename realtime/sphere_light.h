@@ -105,6 +105,11 @@ float decima_sphere_ggx(float n_dot_l, float n_dot_v, float v_dot_l, float l_dot
 /* The same from local-frame vectors (n = +z), white specular (F0 = 1). */
 float decima_sphere_ggx_local(vec3 v, vec3 lc, float sin_sigma, float alpha, const decima_sphere_constants *k,
                               int newton_steps);
+/* The same with the normalisation's light_radius given: another reading of
+ * the appendix (issue 26, item 7), e.g. tan(sigma) or the radius as a
+ * length; norm_radius = sin_sigma is decima_sphere_ggx_local. */
+float decima_sphere_ggx_local_radii(vec3 v, vec3 lc, float sin_sigma, float norm_radius, float alpha,
+                                    const decima_sphere_constants *k, int newton_steps);
 
 /* Not the talk's: the same with its admitted error near the terminator
  * mended (issue 26, item 8). The talk multiplies by saturate(n.lc), the

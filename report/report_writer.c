@@ -108,13 +108,24 @@ void report_paragraph(report *r, const char *fmt, ...)
     html(r, "</p>\n");
 }
 
+/* A Markdown table cell: a '|' inside it would end the cell, so it is
+ * written "\|" (GitHub-flavoured Markdown's escape). */
+static void md_cell(report *r, const char *text)
+{
+    char one[2] = {0, 0};
+    for (const char *c = text; *c; ++c) {
+        one[0] = *c;
+        md(r, *c == '|' ? "\\|" : one);
+    }
+}
+
 static void table_row(report *r, const char *const *cells, const char *cell_tag)
 {
     md(r, "|");
     html(r, "<tr>");
     for (int c = 0; c < r->table_columns; ++c) {
         md(r, " ");
-        md(r, cells[c]);
+        md_cell(r, cells[c]);
         md(r, " |");
         html(r, "<");
         html(r, cell_tag);

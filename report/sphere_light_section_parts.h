@@ -13,4 +13,7 @@
 /* Near the terminator (item 8; sphere_light_terminator_section.c). */
 void sphere_terminator_section(report_context *ctx, const sphere_terminator_result *t, cJSON *summary);
 
+/* The normalisation's units (item 7; sphere_light_units_section.c). */
+void sphere_units_section(report_context *ctx, const sphere_units_result *u, cJSON *summary);
+
 #endif

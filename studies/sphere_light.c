@@ -34,7 +34,7 @@ static double uniform01(uint32_t seed, uint32_t i, uint32_t k)
  * uniform choice would fill the data with dark configurations), otherwise
  * cosine-distributed over the hemisphere; always 1 deg or more above the
  * horizon (Decima's term is 0 once the centre is below). */
-static sphere_light_config realistic_config(uint32_t seed, uint32_t i)
+sphere_light_config sphere_light_realistic_config(uint32_t seed, uint32_t i)
 {
     double roughness = 0.05 + 0.95 * uniform01(seed, i, 0);
     double sin_sigma = SUN_SIN_SIGMA * pow(MAX_SIN_SIGMA / SUN_SIN_SIGMA, uniform01(seed, i, 1));
@@ -48,14 +48,13 @@ static sphere_light_config realistic_config(uint32_t seed, uint32_t i)
     return sphere_light_config_make(n_dot_v, theta, 2.0 * M_PI * u5, sin_sigma, roughness);
 }
 
-/* A configuration with its reference, as radiance per unit normal illuminance. */
-static sphere_light_sample reference_sample(const sphere_light_config *c, uint32_t samples, uint32_t seed)
+sphere_light_sample sphere_light_reference_sample(const sphere_light_config *c, uint32_t samples, uint32_t seed)
 {
     sphere_light_estimate est;
     sphere_light_reference(c, samples, seed, &est);
     double e_perp = sphere_light_normal_illuminance(c->sin_sigma);
     sphere_light_sample s = {c->v, c->lc, (float)c->sin_sigma, (float)c->alpha, est.spec / e_perp,
-                             est.spec_stderr / e_perp};
+                             est.spec_stderr / e_perp, 0.0f};
     return s;
 }
 
@@ -70,8 +69,8 @@ static int make_samples(uint32_t seed, uint32_t first, int count, uint32_t mc_sa
     progress_begin(&bar, "sphere-light references", count);
 #pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
     for (int i = 0; i < count; ++i) {
-        sphere_light_config c = realistic_config(seed, first + (uint32_t)i);
-        s[i] = reference_sample(&c, mc_samples, hash_combine(seed ^ 0x9e3779b9u, first + (uint32_t)i));
+        sphere_light_config c = sphere_light_realistic_config(seed, first + (uint32_t)i);
+        s[i] = sphere_light_reference_sample(&c, mc_samples, hash_combine(seed ^ 0x9e3779b9u, first + (uint32_t)i));
         progress_advance(&bar, 1);
     }
     progress_end(&bar);
@@ -154,7 +153,7 @@ static void cell_errors(const sphere_map_row *m, double x, double sin_sigma, uin
     for (int o = 0; o < SPHERE_MAP_OFFSETS; ++o) {
         double delta = offset_delta[o] * (ggx_alpha(roughness) + asin(sin_sigma));
         sphere_light_config c = sphere_light_config_near_mirror(n_dot_v, delta, offset_psi[o], sin_sigma, roughness);
-        sphere_light_sample s = reference_sample(&c, samples, hash_combine(seed, (uint32_t)o));
+        sphere_light_sample s = sphere_light_reference_sample(&c, samples, hash_combine(seed, (uint32_t)o));
         err[0] += fabs(sphere_light_residual(SPHERE_MODEL_KARIS, NULL, &s)) / SPHERE_MAP_OFFSETS;
         err[1] += fabs(sphere_light_residual(SPHERE_MODEL_DECIMA, &published, &s)) / SPHERE_MAP_OFFSETS;
         err[2] += fabs(sphere_light_residual(SPHERE_MODEL_DECIMA, refit, &s)) / SPHERE_MAP_OFFSETS;
@@ -330,7 +329,8 @@ int sphere_light_study(const study_context *ctx, sphere_light_result *out, gt_er
     if (sphere_scenes_study(ctx, dir, &out->fit.fit.constants, out->scenes, &out->shadows, e) != 0)
         return -1;
     sphere_cost_study(preview ? 1L << 20 : 1L << 22, 3, &out->cost);
-    return sphere_terminator_study(preview ? 2000 : 20000, preview ? 512u : 1024u, &out->terminator) != 0
-               ? gt_error_set(e, "sphere light", "out of memory")
-               : 0;
+    if (sphere_terminator_study(preview ? 2000 : 20000, preview ? 512u : 1024u, &out->terminator) != 0)
+        return gt_error_set(e, "sphere light", "out of memory");
+    return sphere_units_study(preview ? 800 : 8000, preview ? 400 : 4000, preview ? 512u : 1024u, ctx->threads,
+                              &out->units, e);
 }

@@ -25,11 +25,7 @@ static sphere_light_sample draw(uint32_t i, double lo, double hi, uint32_t sampl
     double elevation = sigma * (lo + (hi - lo) * unit(i, 3));
     double azimuth = M_PI * (0.5 + unit(i, 4));
     sphere_light_config c = sphere_light_config_make(n_dot_v, 0.5 * M_PI - elevation, azimuth, sin_sigma, roughness);
-    sphere_light_estimate est;
-    sphere_light_reference(&c, samples, hash_combine(TERMINATOR_SEED, i), &est);
-    double e_perp = sphere_light_normal_illuminance(sin_sigma);
-    sphere_light_sample s = {c.v, c.lc, (float)sin_sigma, (float)c.alpha, est.spec / e_perp, est.spec_stderr / e_perp};
-    return s;
+    return sphere_light_reference_sample(&c, samples, hash_combine(TERMINATOR_SEED, i));
 }
 
 /* Mean and standard error of the mean of x[0..n). */

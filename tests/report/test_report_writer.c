@@ -85,8 +85,29 @@ static void test_no_findings_no_section(void)
     report_free(&r);
 }
 
+/* A '|' inside a table cell is escaped in Markdown (it would split the
+ * cell) and left as it is in HTML. */
+static void test_pipe_in_cell(void)
+{
+    report r;
+    report_init(&r, "title");
+    const char *headers[2] = {"what", "mean |x|"};
+    const char *cells[2] = {"a", "|e| = 1"};
+    report_table_begin(&r, 2, headers);
+    report_table_row(&r, cells);
+    report_table_end(&r);
+    char *md, *html;
+    write_and_read(&r, &md, &html);
+    CHECK(md && strstr(md, "| a | \\|e\\| = 1 |") && strstr(md, "mean \\|x\\|"));
+    CHECK(html && strstr(html, "<td>|e| = 1</td>"));
+    free(md);
+    free(html);
+    report_free(&r);
+}
+
 int main(void)
 {
+    test_pipe_in_cell();
     test_findings_after_introduction();
     test_no_findings_no_section();
     return check_report("test_report_writer");
