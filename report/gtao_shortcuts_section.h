@@ -11,5 +11,7 @@
 void gtao_shortcuts_section(report_context *ctx, const gtao_shortcuts_result *r);
 
 void gtao_pattern_section(report_context *ctx, const gtao_pattern_result *r, cJSON *summary);
+void gtao_half_res_section(report_context *ctx, const gtao_half_res_result *r, cJSON *summary);
+void gtao_denoisers_section(report_context *ctx, const gtao_denoisers_result *r, cJSON *summary);
 
 #endif

@@ -276,7 +276,8 @@ static int study_scene(const study_context *ctx, const char *refs_dir, const cha
     plan_variants(s, r->converged_frames, ctx->quality == QUALITY_PREVIEW);
     int rc = score_scene(&d, &hf, figures, s, e);
     gtao_shortcut_scene view = {s->scene, d.g, d.hf, d.ref3d, s->hf_mean_variance, s->ref3d_mean_variance,
-                                STUDY_RADIUS, (float)d.g->width, ctx->quality == QUALITY_PREVIEW};
+                                STUDY_RADIUS, (float)d.g->width,
+                                v3_length(v3_sub(in.cam.target, in.cam.position)), ctx->quality == QUALITY_PREVIEW};
     if (rc == 0)
         rc = gtao_shortcuts_scene(&view, &r->shortcuts, e);
     image_free(&hf);
