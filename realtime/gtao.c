@@ -29,6 +29,7 @@
 #include <string.h>
 
 #include "realtime/gtao_denoiser.h"
+#include "realtime/gtao_pattern.h"
 
 #define GTAO_PI 3.14159265358979f
 
@@ -109,7 +110,7 @@ static float fraction(float t) { return t - floorf(t); }
 
 float gtao_slice_angle(int x, int y, int frame, int k, int slices, int pattern)
 {
-    float u = pattern ? fraction(gtao_spatial_direction(x, y) + gtao_temporal_rotation(frame) / 16.0f) : 0.5f;
+    float u = pattern ? fraction(gtao_pattern_direction(x, y, pattern) + gtao_temporal_rotation(frame) / 16.0f) : 0.5f;
     return GTAO_PI * ((float)k + u) / (float)slices;
 }
 

@@ -78,7 +78,8 @@ typedef struct {
     float falloff;       /* fraction of the radius over which samples fade to no effect; 0: full effect to the radius */
     float max_radius_px; /* clamp of the screen-space radius (the talk's cache guard) */
     float thickness;     /* thickness heuristic in [0, 1): how fast a horizon relaxes behind a thin occluder; 0: off */
-    int pattern;         /* 1: the talk's spatio-temporal pattern; 0: regular slices, offset 0.5 (brute force) */
+    int pattern;         /* 1: the talk's spatio-temporal pattern; 0: regular slices, offset 0.5 (brute force);
+                            2: the talk's pattern with its directions in Morton order (realtime/gtao_pattern.h) */
     int fast_math;       /* the talk's fast acos/sqrt */
     int denoise;         /* the 4x4 bilateral spatial denoiser */
     int frames;          /* frames accumulated by the temporal filter (static camera); 1: a single frame */

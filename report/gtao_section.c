@@ -7,6 +7,7 @@
 #include <stdlib.h>
 
 #include "report/gtao_section.h"
+#include "report/gtao_shortcuts_section.h"
 #include "report/gtao_params_json.h"
 #include "report/gnuplot_plot.h"
 #include "report/report_table.h"
@@ -185,5 +186,6 @@ int gtao_section(report_context *ctx, const gtao_validation_result *r, gt_error 
     if (render_convergence(ctx, e) != 0 || write_fit(ctx, r, e) != 0)
         return -1;
     render_fit(ctx->doc, &r->fit_request, &r->fit);
+    gtao_shortcuts_section(ctx, &r->shortcuts);
     return 0;
 }

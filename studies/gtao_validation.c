@@ -263,7 +263,7 @@ static int score_scene(const scene_data *d, const image *hf, const char *figures
 }
 
 static int study_scene(const study_context *ctx, const char *refs_dir, const char *dir, const char *figures,
-                       const gtao_validation_result *r, gtao_validation_scene *s, gt_error *e)
+                       gtao_validation_result *r, gtao_validation_scene *s, gt_error *e)
 {
     approx_input in;
     image hf;
@@ -275,6 +275,11 @@ static int study_scene(const study_context *ctx, const char *refs_dir, const cha
                                                  image_pixel_count(&in.img));
     plan_variants(s, r->converged_frames, ctx->quality == QUALITY_PREVIEW);
     int rc = score_scene(&d, &hf, figures, s, e);
+    gtao_shortcut_scene view = {s->scene, d.g, d.hf, d.ref3d, s->hf_mean_variance, s->ref3d_mean_variance,
+                                STUDY_RADIUS, (float)d.g->width,
+                                v3_length(v3_sub(in.cam.target, in.cam.position)), ctx->quality == QUALITY_PREVIEW};
+    if (rc == 0)
+        rc = gtao_shortcuts_scene(&view, &r->shortcuts, e);
     image_free(&hf);
     approx_input_free(&in);
     return rc;
@@ -362,6 +367,7 @@ int gtao_validation_study(const study_context *ctx, const gtao_validation_reques
         if (study_scene(ctx, rq->ao_references_dir, dir, figures, out, s, e) != 0)
             return -1;
     }
+    gtao_shortcuts_finish(&out->shortcuts);
     if (convergence(rq->ao_references_dir, dir, out, e) != 0)
         return -1;
     out->fit_request = (gtao_fit_request){rq->ao_references_dir, GTAO_FIT_DEFAULT_TRAIN, GTAO_FIT_DEFAULT_TEST,

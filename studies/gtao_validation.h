@@ -28,6 +28,7 @@
 #include "fitters/gtao_params_fit.h"
 #include "realtime/gtao.h"
 #include "studies/gtao_params.h"
+#include "studies/gtao_shortcuts.h"
 #include "studies/study.h"
 
 /* The folder below the output folder that holds the study's files. */
@@ -99,6 +100,7 @@ typedef struct {
     gtao_convergence_row convergence[GTAO_CONVERGENCE_STEPS * GTAO_CONVERGENCE_SLICES]; /* by steps, then slices */
     gtao_fit_request fit_request;
     gtao_fit_result fit;
+    gtao_shortcuts_result shortcuts; /* issue 25, items 6-8 (studies/gtao_shortcuts.h) */
 } gtao_validation_result;
 
 typedef struct {

@@ -1,0 +1,118 @@
+/* The bilateral filter's variants and the neighbourhood clamp; see
+ * gtao_spatial_filter.h. */
+#include "realtime/gtao_spatial_filter.h"
+
+#include <math.h>
+
+#include "realtime/gtao_denoiser.h"
+
+const char *const gtao_depth_test_names[GTAO_DEPTH_TESTS] = {"linear depth + 1st derivatives",
+                                                             "linear depth + 1st + 2nd derivatives",
+                                                             "log depth + 1st derivatives"};
+const gtao_spatial_options gtao_spatial_default = {GTAO_DEPTH_LINEAR_D1, 1, 0.1f};
+
+static float depth_of(const ss_gbuffer *g, int x, int y, int log_space)
+{
+    float z = g->depth[(long)y * g->width + x];
+    return log_space ? logf(z) : z;
+}
+
+/* First and second differences along (ox, oy) on the side of the smaller
+ * first difference (gtao_denoiser.c's depth_slope, plus the second, taken
+ * two steps along the same side); side: +1 forward, -1 backward. */
+typedef struct {
+    float d1, d2;
+    int side;
+} one_sided_differences;
+
+static one_sided_differences one_sided(const ss_gbuffer *g, int x, int y, int ox, int oy, int log_space)
+{
+    float zc = depth_of(g, x, y, log_space);
+    float lo = ss_covered(g, x - ox, y - oy) ? zc - depth_of(g, x - ox, y - oy, log_space) : INFINITY;
+    float hi = ss_covered(g, x + ox, y + oy) ? depth_of(g, x + ox, y + oy, log_space) - zc : INFINITY;
+    int side = fabsf(lo) < fabsf(hi) ? -1 : 1;
+    float s = side < 0 ? lo : hi;
+    one_sided_differences d = {isfinite(s) ? s : 0.0f, 0.0f, side};
+    int fx = x + 2 * side * ox, fy = y + 2 * side * oy;
+    if (isfinite(s) && ss_covered(g, fx, fy)) {
+        /* the next difference outwards, as a forward difference */
+        float next = (float)side * (depth_of(g, fx, fy, log_space) - depth_of(g, x + side * ox, y + side * oy, log_space));
+        d.d2 = (float)side * (next - s);
+    }
+    return d;
+}
+
+/* The Taylor model about the centre from one-sided differences: a forward
+ * difference is z' + z''/2 (a backward one z' - z''/2), so
+ *   z(o) ~= z + d1 o + d2 (o^2 - side o) / 2. */
+static float model_term(one_sided_differences d, int o, int second)
+{
+    float t = d.d1 * (float)o;
+    return second ? t + 0.5f * d.d2 * (float)(o * o - d.side * o) : t;
+}
+
+float gtao_depth_test_weight(const ss_gbuffer *g, const gtao_spatial_options *o, int x, int y, int ox, int oy)
+{
+    int log_space = o->depth_test == GTAO_DEPTH_LOG_D1, second = o->depth_test == GTAO_DEPTH_LINEAR_D2;
+    one_sided_differences dx = one_sided(g, x, y, 1, 0, log_space), dy = one_sided(g, x, y, 0, 1, log_space);
+    float zc = depth_of(g, x, y, log_space);
+    float model = zc + model_term(dx, ox, second) + model_term(dy, oy, second);
+    float scale = log_space ? o->threshold : o->threshold * zc;
+    return ss_clampf(1.0f - fabsf(depth_of(g, x + ox, y + oy, log_space) - model) / scale, 0.0f, 1.0f);
+}
+
+static float filter_pixel(const ss_gbuffer *g, const gtao_spatial_options *o, int shift, const float *in, int x,
+                          int y)
+{
+    float sum = 0.0f, weight = 0.0f;
+    for (int oy = -1 - shift; oy <= 2 - shift; ++oy)
+        for (int ox = -1 - shift; ox <= 2 - shift; ++ox) {
+            if (!ss_covered(g, x + ox, y + oy))
+                continue;
+            float w = gtao_depth_test_weight(g, o, x, y, ox, oy);
+            sum += w * in[(long)(y + oy) * g->width + x + ox];
+            weight += w;
+        }
+    return weight > 0.0f ? sum / weight : in[(long)y * g->width + x];
+}
+
+void gtao_spatial_filter(const ss_gbuffer *g, int frame, const gtao_spatial_options *o, const float *in, float *out)
+{
+    int shift = o->alternate ? frame & 1 : 0;
+#pragma omp parallel for schedule(static)
+    for (int y = 0; y < g->height; ++y)
+        for (int x = 0; x < g->width; ++x) {
+            long i = (long)y * g->width + x;
+            out[i] = g->mask[i] != 0.0f ? filter_pixel(g, o, shift, in, x, y) : 0.0f;
+        }
+}
+
+static void neighbourhood(const ss_gbuffer *g, const float *in, int x, int y, float *lo, float *hi)
+{
+    *lo = INFINITY;
+    *hi = -INFINITY;
+    for (int oy = -1; oy <= 1; ++oy)
+        for (int ox = -1; ox <= 1; ++ox)
+            if (ss_covered(g, x + ox, y + oy)) {
+                float v = in[(long)(y + oy) * g->width + x + ox];
+                *lo = ss_minf(*lo, v);
+                *hi = ss_maxf(*hi, v);
+            }
+}
+
+void gtao_temporal_clamped(const ss_gbuffer *g, const float *in, int frame, float clamp_window, float *history)
+{
+    size_t n = (size_t)g->width * g->height;
+    if (frame > 0 && clamp_window >= 0.0f)
+        for (int y = 0; y < g->height; ++y)
+            for (int x = 0; x < g->width; ++x) {
+                long i = (long)y * g->width + x;
+                float lo, hi;
+                if (g->mask[i] == 0.0f)
+                    continue;
+                neighbourhood(g, in, x, y, &lo, &hi);
+                float window = hi - lo;
+                history[i] = ss_clampf(history[i], lo - clamp_window * window, hi + clamp_window * window);
+            }
+    gtao_temporal_accumulate(in, frame, n, history);
+}

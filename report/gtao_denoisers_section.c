@@ -1,0 +1,159 @@
+/* The GTAO section's subsection on the denoisers (issue 25, item 8;
+ * studies/gtao_denoisers.c): the spatial filter's depth tests at edges and
+ * on flat pixels, the alternating window's shift, the neighbourhood clamp's
+ * window size, and the claims-table rows. */
+#include <math.h>
+#include <stdio.h>
+
+#include "report/gtao_shortcuts_section.h"
+#include "report/report_table.h"
+
+#define COLUMNS(c) (int)(sizeof(c) / sizeof((c)[0]))
+/* The alternating window compensates when the accumulated shift is within a
+ * tenth of the fixed window's half-pixel offset. */
+#define SHIFT_TOLERANCE_PX 0.05
+
+static const report_column depth_columns[] = {
+    REPORT_TEXT("scene", "scene", gtao_denoisers_scene, scene),
+    REPORT_REAL("edge pixels", "edge_fraction", "%.3f", gtao_denoisers_scene, edge_fraction),
+    REPORT_REAL("edges: linear + 1st", "rmse_edge_linear_d1", "%.4f", gtao_denoisers_scene, rmse_edge[0]),
+    REPORT_REAL("edges: linear + 1st + 2nd (talk's)", "rmse_edge_linear_d2", "%.4f", gtao_denoisers_scene,
+                rmse_edge[1]),
+    REPORT_REAL("edges: log + 1st", "rmse_edge_log_d1", "%.4f", gtao_denoisers_scene, rmse_edge[2]),
+    REPORT_REAL("flat: linear + 1st", "rmse_flat_linear_d1", "%.4f", gtao_denoisers_scene, rmse_flat[0]),
+    REPORT_REAL("flat: linear + 1st + 2nd (talk's)", "rmse_flat_linear_d2", "%.4f", gtao_denoisers_scene,
+                rmse_flat[1]),
+    REPORT_REAL("flat: log + 1st", "rmse_flat_log_d1", "%.4f", gtao_denoisers_scene, rmse_flat[2]),
+};
+
+static const report_column temporal_columns[] = {
+    REPORT_TEXT("scene", "scene", gtao_denoisers_scene, scene),
+    REPORT_REAL("shift x, alternating", "shift_x_alternating", "%+.3f", gtao_denoisers_scene, shift_with[0]),
+    REPORT_REAL("shift y, alternating", "shift_y_alternating", "%+.3f", gtao_denoisers_scene, shift_with[1]),
+    REPORT_REAL("shift x, fixed", "shift_x_fixed", "%+.3f", gtao_denoisers_scene, shift_without[0]),
+    REPORT_REAL("shift y, fixed", "shift_y_fixed", "%+.3f", gtao_denoisers_scene, shift_without[1]),
+    REPORT_REAL("RMSE alternating", "rmse_alternating", "%.4f", gtao_denoisers_scene, rmse_with),
+    REPORT_REAL("RMSE fixed", "rmse_fixed", "%.4f", gtao_denoisers_scene, rmse_without),
+    REPORT_REAL("RMSE clamp 0", "rmse_clamp_0", "%.4f", gtao_denoisers_scene, rmse_clamped[0]),
+    REPORT_REAL("RMSE clamp 0.25", "rmse_clamp_0_25", "%.4f", gtao_denoisers_scene, rmse_clamped[1]),
+    REPORT_REAL("RMSE clamp 0.5 (talk's)", "rmse_clamp_0_5", "%.4f", gtao_denoisers_scene, rmse_clamped[2]),
+    REPORT_REAL("RMSE clamp 1", "rmse_clamp_1", "%.4f", gtao_denoisers_scene, rmse_clamped[3]),
+    REPORT_REAL("RMSE clamp 2", "rmse_clamp_2", "%.4f", gtao_denoisers_scene, rmse_clamped[4]),
+};
+
+static void add_block(cJSON *o, const char *key, const block_mean *m)
+{
+    cJSON *x = cJSON_AddObjectToObject(o, key);
+    cJSON_AddNumberToObject(x, "mean", block_mean_value(m));
+    cJSON_AddNumberToObject(x, "se", block_mean_se(m));
+    cJSON_AddNumberToObject(x, "blocks", (double)m->blocks);
+}
+
+static void add_summary(const gtao_denoisers_result *r, cJSON *summary)
+{
+    cJSON *o = cJSON_AddObjectToObject(summary, "denoisers");
+    report_rows(NULL, cJSON_AddArrayToObject(o, "depth_tests"), depth_columns, COLUMNS(depth_columns), r->scenes,
+                sizeof r->scenes[0], r->scene_count);
+    report_rows(NULL, cJSON_AddArrayToObject(o, "temporal"), temporal_columns, COLUMNS(temporal_columns),
+                r->scenes, sizeof r->scenes[0], r->scene_count);
+    add_block(o, "d2_minus_log_edge", &r->d2_minus_log_edge);
+    add_block(o, "d2_minus_log_flat", &r->d2_minus_log_flat);
+    add_block(o, "d2_minus_d1_edge", &r->d2_minus_d1_edge);
+    add_block(o, "d2_minus_d1_flat", &r->d2_minus_d1_flat);
+    add_block(o, "bias_alternating", &r->bias_with);
+    add_block(o, "bias_fixed", &r->bias_without);
+    cJSON_AddItemToObject(o, "shift_alternating", cJSON_CreateDoubleArray(r->shift_with, 2));
+    cJSON_AddItemToObject(o, "shift_alternating_se", cJSON_CreateDoubleArray(r->shift_with_se, 2));
+    cJSON_AddItemToObject(o, "shift_fixed", cJSON_CreateDoubleArray(r->shift_without, 2));
+    cJSON_AddItemToObject(o, "shift_fixed_se", cJSON_CreateDoubleArray(r->shift_without_se, 2));
+    cJSON *clamp = cJSON_AddArrayToObject(o, "clamp_minus_none");
+    for (int k = 0; k < GTAO_CLAMP_WINDOWS; ++k) {
+        cJSON *x = cJSON_CreateObject();
+        cJSON_AddNumberToObject(x, "clamp_window", gtao_clamp_windows[k]);
+        cJSON_AddNumberToObject(x, "mean", block_mean_value(&r->clamp_minus_none[k]));
+        cJSON_AddNumberToObject(x, "se", block_mean_se(&r->clamp_minus_none[k]));
+        cJSON_AddItemToArray(clamp, x);
+    }
+}
+
+static void depth_claim(report_context *ctx, const gtao_denoisers_result *r, const block_mean *m, int edges)
+{
+    claim c = {.source = "Jimenez et al. 2016, Spatial Denoiser Details",
+               .figure = block_mean_value(m),
+               .standard_error = block_mean_se(m),
+               .low = -INFINITY,
+               .high = 0.0};
+    snprintf(c.statement, sizeof c.statement,
+             "linear depth + 1st + 2nd order derivatives yield %s than log depth + 1st derivatives",
+             edges ? "sharper details" : "smoother flat surfaces");
+    snprintf(c.quantity, sizeof c.quantity,
+             "squared error against the 96-direction brute force of GTAO medium, frame 0 filtered, linear + 1st + "
+             "2nd minus log + 1st, %s pixels, mean over %ld 8x8 blocks of %d scenes (s.e. over blocks); at most "
+             "0: the talk's test better",
+             edges ? "edge" : "flat", m->blocks, r->scene_count);
+    claims_table_add(ctx->claims, &c);
+}
+
+static void shift_claim(report_context *ctx, const gtao_denoisers_result *r)
+{
+    double mean = 0.5 * (r->shift_with[0] + r->shift_with[1]);
+    double se = 0.5 * sqrt(r->shift_with_se[0] * r->shift_with_se[0] + r->shift_with_se[1] * r->shift_with_se[1]);
+    claim c = {.source = "Jimenez et al. 2016, Temporal Denoiser Details",
+               .statement = "the 4x4 bilateral filter offsets the image; offsetting it by 1 pixel each frame "
+                            "(odd: top/left, even: bottom/right) compensates in the temporal accumulation",
+               .figure = mean,
+               .standard_error = se,
+               .low = -SHIFT_TOLERANCE_PX,
+               .high = SHIFT_TOLERANCE_PX};
+    snprintf(c.quantity, sizeof c.quantity,
+             "shift (pixels, mean of x and y) of the 24-frame accumulation against the brute force by least squares "
+             "on its gradient, alternating window, %d scenes (s.e. clustered by 8x8 blocks; the fixed window gives "
+             "%+.3f, %+.3f); the claim allows %.2f px",
+             r->scene_count, r->shift_without[0], r->shift_without[1], SHIFT_TOLERANCE_PX);
+    claims_table_add(ctx->claims, &c);
+}
+
+void gtao_denoisers_section(report_context *ctx, const gtao_denoisers_result *r, cJSON *summary)
+{
+    report_heading(ctx->doc, 3, "The denoisers");
+    report_paragraph(
+        ctx->doc,
+        "The spatial filter's depth test (realtime/gtao_spatial_filter.h): frame 0 of GTAO medium filtered with "
+        "each test, RMSE against the 96-direction brute force, on edge pixels (within 2 pixels of a silhouette "
+        "or of a second depth difference above 2%% of the depth) and on the other, flat, pixels:");
+    report_rows(ctx->doc, NULL, depth_columns, COLUMNS(depth_columns), r->scenes, sizeof r->scenes[0],
+                r->scene_count);
+    report_paragraph(ctx->doc,
+                     "Paired over 8x8 blocks, squared error of linear + 1st + 2nd minus log + 1st: %+.2e ± %.1e at "
+                     "edges, %+.2e ± %.1e on flat pixels; minus linear + 1st (gtlab's default filter): %+.2e ± "
+                     "%.1e at edges, %+.2e ± %.1e on flat pixels (negative: the second derivatives help).",
+                     block_mean_value(&r->d2_minus_log_edge), block_mean_se(&r->d2_minus_log_edge),
+                     block_mean_value(&r->d2_minus_log_flat), block_mean_se(&r->d2_minus_log_flat),
+                     block_mean_value(&r->d2_minus_d1_edge), block_mean_se(&r->d2_minus_d1_edge),
+                     block_mean_value(&r->d2_minus_d1_flat), block_mean_se(&r->d2_minus_d1_flat));
+    report_paragraph(
+        ctx->doc,
+        "The temporal filter: 24 frames accumulated with the filter's asymmetric window alternating (the talk's) "
+        "or fixed at [-1, 2]^2, and with the history clamped to the current frame's 3x3 range widened by "
+        "clampWindowSize (a static camera: the velocity weight is 1). Shift: least squares of the accumulation "
+        "minus the brute force on the brute force's gradient (pixels, +x right, +y down):");
+    report_rows(ctx->doc, NULL, temporal_columns, COLUMNS(temporal_columns), r->scenes, sizeof r->scenes[0],
+                r->scene_count);
+    report_paragraph(
+        ctx->doc,
+        "Pooled: shift (%+.3f ± %.3f, %+.3f ± %.3f) px alternating, (%+.3f ± %.3f, %+.3f ± %.3f) px fixed; mean "
+        "signed error %+.2e ± %.1e alternating, %+.2e ± %.1e fixed. Clamping the history (squared error minus "
+        "no clamp): %+.2e ± %.1e at clampWindowSize 0, %+.2e ± %.1e at 0.5, %+.2e ± %.1e at 2. With a static "
+        "camera nothing ghosts, so the clamp can only cost convergence and a fit of clampWindowSize to these "
+        "references would run to its upper bound; fitting it needs references with motion.",
+        r->shift_with[0], r->shift_with_se[0], r->shift_with[1], r->shift_with_se[1], r->shift_without[0],
+        r->shift_without_se[0], r->shift_without[1], r->shift_without_se[1], block_mean_value(&r->bias_with),
+        block_mean_se(&r->bias_with), block_mean_value(&r->bias_without), block_mean_se(&r->bias_without),
+        block_mean_value(&r->clamp_minus_none[0]), block_mean_se(&r->clamp_minus_none[0]),
+        block_mean_value(&r->clamp_minus_none[2]), block_mean_se(&r->clamp_minus_none[2]),
+        block_mean_value(&r->clamp_minus_none[4]), block_mean_se(&r->clamp_minus_none[4]));
+    add_summary(r, summary);
+    depth_claim(ctx, r, &r->d2_minus_log_edge, 1);
+    depth_claim(ctx, r, &r->d2_minus_log_flat, 0);
+    shift_claim(ctx, r);
+}
