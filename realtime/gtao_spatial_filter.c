@@ -17,15 +17,20 @@ static float depth_of(const ss_gbuffer *g, int x, int y, int log_space)
     return log_space ? logf(z) : z;
 }
 
-/* First and second differences along (ox, oy) on the side of the smaller
- * first difference (gtao_denoiser.c's depth_slope, plus the second, taken
- * two steps along the same side); side: +1 forward, -1 backward. */
+/* First and second differences along (ox, oy): the first on the side of
+ * the smaller first difference (gtao_denoiser.c's depth_slope); side: +1
+ * forward, -1 backward. The second is the central one, hi - lo, taken only
+ * where the two sides continue each other (a slope, "for slopes": they
+ * differ by less than the depth test's threshold, or have one sign and
+ * differ by less than half the steeper), 0 at a crease or an edge, whose
+ * kink is not a curvature of the surface. */
 typedef struct {
     float d1, d2;
     int side;
 } one_sided_differences;
 
-static one_sided_differences one_sided(const ss_gbuffer *g, int x, int y, int ox, int oy, int log_space)
+static one_sided_differences one_sided(const ss_gbuffer *g, int x, int y, int ox, int oy, int log_space,
+                                       float crease)
 {
     float zc = depth_of(g, x, y, log_space);
     float lo = ss_covered(g, x - ox, y - oy) ? zc - depth_of(g, x - ox, y - oy, log_space) : INFINITY;
@@ -33,12 +38,10 @@ static one_sided_differences one_sided(const ss_gbuffer *g, int x, int y, int ox
     int side = fabsf(lo) < fabsf(hi) ? -1 : 1;
     float s = side < 0 ? lo : hi;
     one_sided_differences d = {isfinite(s) ? s : 0.0f, 0.0f, side};
-    int fx = x + 2 * side * ox, fy = y + 2 * side * oy;
-    if (isfinite(s) && ss_covered(g, fx, fy)) {
-        /* the next difference outwards, as a forward difference */
-        float next = (float)side * (depth_of(g, fx, fy, log_space) - depth_of(g, x + side * ox, y + side * oy, log_space));
-        d.d2 = (float)side * (next - s);
-    }
+    /* a slope: both sides within the test's threshold of continuing each
+     * other, or bending by less than half the steeper of them */
+    if (isfinite(lo) && isfinite(hi) && (fabsf(hi - lo) < crease || (lo * hi > 0.0f && fabsf(hi - lo) < 0.5f * fmaxf(fabsf(lo), fabsf(hi)))))
+        d.d2 = hi - lo;
     return d;
 }
 
@@ -54,10 +57,11 @@ static float model_term(one_sided_differences d, int o, int second)
 float gtao_depth_test_weight(const ss_gbuffer *g, const gtao_spatial_options *o, int x, int y, int ox, int oy)
 {
     int log_space = o->depth_test == GTAO_DEPTH_LOG_D1, second = o->depth_test == GTAO_DEPTH_LINEAR_D2;
-    one_sided_differences dx = one_sided(g, x, y, 1, 0, log_space), dy = one_sided(g, x, y, 0, 1, log_space);
     float zc = depth_of(g, x, y, log_space);
-    float model = zc + model_term(dx, ox, second) + model_term(dy, oy, second);
     float scale = log_space ? o->threshold : o->threshold * zc;
+    one_sided_differences dx = one_sided(g, x, y, 1, 0, log_space, scale);
+    one_sided_differences dy = one_sided(g, x, y, 0, 1, log_space, scale);
+    float model = zc + model_term(dx, ox, second) + model_term(dy, oy, second);
     return ss_clampf(1.0f - fabsf(depth_of(g, x + ox, y + oy, log_space) - model) / scale, 0.0f, 1.0f);
 }
 

@@ -107,7 +107,8 @@ static void test_second_derivatives_on_a_plane(void)
     double d1 = mean_rejection(&g, GTAO_DEPTH_LINEAR_D1), d2 = mean_rejection(&g, GTAO_DEPTH_LINEAR_D2);
     double log1 = mean_rejection(&g, GTAO_DEPTH_LOG_D1);
     printf("grazing plane, mean 1 - w: linear + 1st %.3g, linear + 1st + 2nd %.3g, log + 1st %.3g\n", d1, d2, log1);
-    CHECK(d2 < 0.5 * d1);
+    CHECK(d2 < 0.75 * d1); /* the slope's curvature modelled: well below linear + 1st */
+    CHECK(d2 < log1);      /* and below log + 1st, the talk's alternative */
     image_free(&img);
 }
 
