@@ -1,0 +1,119 @@
+/* The studies of the GTAO talk's shortcuts (issue 25, items 9 and 13) on
+ * tiny references of every built-in scene: the arc-cosine refits lower
+ * their objective from the talk's coefficients and stop inside their box
+ * (an optimum, not a bound); exact acosf is the zero of the replay's
+ * shifts; the jackknife standard errors exist; on the open plane Alchemy,
+ * Crytek, VO and HBAO read the reference exactly while the |sin n| pitfall
+ * does not, and the pitfall is worse than GTAO pooled over the scenes. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "core/exr_io.h"
+#include "raytracer/reference_render.h"
+#include "scene/builtin_scenes.h"
+#include "scene/scene_loaders.h"
+#include "studies/ao_references.h"
+#include "studies/gbuffer_input.h"
+#include "studies/gtao_baselines.h"
+#include "studies/gtao_fast_math.h"
+#include "tests/check.h"
+#include "tests/test_files.h"
+
+/* <dir>/gtao/<scene>_heightfield.exr at the AO reference's camera. */
+static int heightfield(const char *refs, const char *gtao, const char *name, gt_error *e)
+{
+    char path[8400], spec[128];
+    snprintf(path, sizeof path, "%s/%s.exr", refs, name);
+    snprintf(spec, sizeof spec, "builtin:%s", name);
+    approx_input in;
+    scene s;
+    if (approx_load(path, NULL, &in, e) != 0)
+        return -1;
+    if (scene_load(spec, &s, e) != 0) {
+        approx_input_free(&in);
+        return -1;
+    }
+    reference_request req = {.quantity = QUANTITY_HEIGHTFIELD_AO, .sampling = {.spp = 16, .seed = 1, .threads = 2},
+                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
+    render_stats stats;
+    image hf;
+    int rc = reference_render(&s, spec, &in.cam, &req, &hf, &stats, e);
+    snprintf(path, sizeof path, "%s/%s_heightfield.exr", gtao, name);
+    if (rc == 0) {
+        rc = exr_write(path, &hf, e);
+        image_free(&hf);
+    }
+    scene_free(&s);
+    approx_input_free(&in);
+    return rc;
+}
+
+static int make_references(study_context *ctx, char *refs, char *gtao, gt_error *e)
+{
+    ao_references_request rq = {40, 16, 0.0, 1, 0};
+    ao_references_result r;
+    if (ao_references_study(ctx, &rq, &r, e) != 0 || study_make_dir(ctx, "gtao", gtao, 4096, e) != 0)
+        return -1;
+    snprintf(refs, 4096, "%s/%s", ctx->output_dir, AO_REFERENCES_DIR);
+    for (int i = 0; i < builtin_scene_count(); ++i)
+        if (heightfield(refs, gtao, builtin_scene_at(i)->name, e) != 0)
+            return -1;
+    return 0;
+}
+
+static void test_fast_math(const study_context *ctx, const gtao_shortcuts_request *rq)
+{
+    static gtao_fast_math_result r;
+    gt_error e;
+    int rc = gtao_fast_math_study(ctx, rq, &r, &e);
+    CHECK_MSG(rc == 0, "%s", e.message);
+    if (rc != 0)
+        return;
+    for (int f = 0; f < 3; ++f) {
+        CHECK(r.objective_end[f] < r.objective_start[f]);
+        CHECK(!r.at_bound[f]);
+    }
+    CHECK(r.slope_jackknife_se > 0.0 && isfinite(r.slope_jackknife_se));
+    CHECK(r.both_jackknife_se[1] > 0.0 && isfinite(r.both_jackknife_se[1]));
+    for (int s = 0; s < r.scene_count; ++s) {
+        CHECK(r.scenes[s].shift_max[FAST_ACOS_EXACT] == 0.0);
+        CHECK(r.scenes[s].paired_hf[FAST_ACOS_EXACT].mean == 0.0);
+        CHECK(r.scenes[s].shift_mean[FAST_ACOS_TALK] > 0.0);
+    }
+    /* The function error of the talk's polynomial with Drobot's constant is
+     * smaller than with the slide's (the constant's correction). */
+    CHECK(r.function_error[FAST_ACOS_TALK] < r.function_error[FAST_ACOS_TRANSCRIBED]);
+}
+
+static void test_baselines(const study_context *ctx, const gtao_shortcuts_request *rq)
+{
+    static gtao_baselines_result r;
+    gt_error e;
+    int rc = gtao_baselines_study(ctx, rq, &r, &e);
+    CHECK_MSG(rc == 0, "%s", e.message);
+    if (rc != 0)
+        return;
+    CHECK(strcmp(r.rows[0][0].scene, "plane") == 0);
+    for (int t = BASELINE_HBAO; t <= BASELINE_CRYTEK; ++t)
+        CHECK_MSG(r.rows[0][t].rmse_3d < 1e-5, "%s on the plane: RMSE %g", baseline_names[t], r.rows[0][t].rmse_3d);
+    CHECK(r.rows[0][BASELINE_PITFALL].rmse_3d > 0.05);
+    CHECK(r.pooled_vs_gtao_3d[BASELINE_PITFALL].mean > 2.0 * r.pooled_vs_gtao_3d[BASELINE_PITFALL].se);
+}
+
+int main(void)
+{
+    char dir[4096], refs[4096], gtao[4096];
+    gt_error e;
+    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2};
+    CHECK(study_make_dir(&top, "gtao_shortcuts", dir, sizeof dir, &e) == 0);
+    study_context ctx = {dir, QUALITY_PREVIEW, 2};
+    int rc = make_references(&ctx, refs, gtao, &e);
+    CHECK_MSG(rc == 0, "%s", e.message);
+    if (rc == 0) {
+        gtao_shortcuts_request rq = {refs, gtao};
+        test_fast_math(&ctx, &rq);
+        test_baselines(&ctx, &rq);
+    }
+    return check_report("test_gtao_shortcuts_study");
+}
