@@ -23,8 +23,10 @@ static int all_stage_gtao_shortcuts(report_context *ctx, gt_error *e)
     gtao_shortcuts_request rq = {refs, gtao};
     static gtao_fast_math_result fast_math;
     static gtao_baselines_result baselines;
+    static gtao_bent_normals_result bent;
     if (gtao_fast_math_study(&ctx->study, &rq, &fast_math, e) != 0 ||
-        gtao_baselines_study(&ctx->study, &rq, &baselines, e) != 0)
+        gtao_baselines_study(&ctx->study, &rq, &baselines, e) != 0 ||
+        gtao_bent_normals_study(&ctx->study, &rq, &bent, e) != 0)
         return -1;
     report_heading(ctx->doc, 2, "GTAO's shortcuts against the references");
     report_paragraph(ctx->doc,
@@ -35,6 +37,7 @@ static int all_stage_gtao_shortcuts(report_context *ctx, gt_error *e)
     cJSON *summary = cJSON_AddObjectToObject(ctx->summary, "gtao_shortcuts");
     gtao_fast_math_section(ctx, &fast_math, summary);
     gtao_baselines_section(ctx, &baselines, summary);
+    gtao_bent_normals_section(ctx, &bent, summary);
     return 0;
 }
 
