@@ -24,9 +24,11 @@ static int all_stage_gtao_shortcuts(report_context *ctx, gt_error *e)
     static gtao_fast_math_result fast_math;
     static gtao_baselines_result baselines;
     static gtao_bent_normals_result bent;
+    static gtao_thickness_result thickness;
     if (gtao_fast_math_study(&ctx->study, &rq, &fast_math, e) != 0 ||
         gtao_baselines_study(&ctx->study, &rq, &baselines, e) != 0 ||
-        gtao_bent_normals_study(&ctx->study, &rq, &bent, e) != 0)
+        gtao_bent_normals_study(&ctx->study, &rq, &bent, e) != 0 ||
+        gtao_thickness_study(&ctx->study, &rq, &thickness, e) != 0)
         return -1;
     report_heading(ctx->doc, 2, "GTAO's shortcuts against the references");
     report_paragraph(ctx->doc,
@@ -38,6 +40,7 @@ static int all_stage_gtao_shortcuts(report_context *ctx, gt_error *e)
     gtao_fast_math_section(ctx, &fast_math, summary);
     gtao_baselines_section(ctx, &baselines, summary);
     gtao_bent_normals_section(ctx, &bent, summary);
+    gtao_thickness_section(ctx, &thickness, summary);
     return 0;
 }
 

@@ -11,6 +11,7 @@
 #include "studies/gtao_baselines.h"
 #include "studies/gtao_bent_normals.h"
 #include "studies/gtao_fast_math.h"
+#include "studies/gtao_thickness.h"
 
 /* The claims' tolerance for "no visible change": one step of an 8-bit AO
  * buffer, 1/255, as a mean squared error. */
@@ -19,5 +20,6 @@
 void gtao_fast_math_section(report_context *ctx, const gtao_fast_math_result *r, cJSON *summary);
 void gtao_baselines_section(report_context *ctx, const gtao_baselines_result *r, cJSON *summary);
 void gtao_bent_normals_section(report_context *ctx, const gtao_bent_normals_result *r, cJSON *summary);
+void gtao_thickness_section(report_context *ctx, const gtao_thickness_result *r, cJSON *summary);
 
 #endif
