@@ -25,10 +25,12 @@ static int all_stage_gtao_shortcuts(report_context *ctx, gt_error *e)
     static gtao_baselines_result baselines;
     static gtao_bent_normals_result bent;
     static gtao_thickness_result thickness;
+    static gtao_distance_fade_result fade;
     if (gtao_fast_math_study(&ctx->study, &rq, &fast_math, e) != 0 ||
         gtao_baselines_study(&ctx->study, &rq, &baselines, e) != 0 ||
         gtao_bent_normals_study(&ctx->study, &rq, &bent, e) != 0 ||
-        gtao_thickness_study(&ctx->study, &rq, &thickness, e) != 0)
+        gtao_thickness_study(&ctx->study, &rq, &thickness, e) != 0 ||
+        gtao_distance_fade_study(&ctx->study, &rq, &fade, e) != 0)
         return -1;
     report_heading(ctx->doc, 2, "GTAO's shortcuts against the references");
     report_paragraph(ctx->doc,
@@ -41,6 +43,7 @@ static int all_stage_gtao_shortcuts(report_context *ctx, gt_error *e)
     gtao_baselines_section(ctx, &baselines, summary);
     gtao_bent_normals_section(ctx, &bent, summary);
     gtao_thickness_section(ctx, &thickness, summary);
+    gtao_distance_fade_section(ctx, &fade, summary);
     return 0;
 }
 

@@ -10,6 +10,7 @@
 #include "report/report_context.h"
 #include "studies/gtao_baselines.h"
 #include "studies/gtao_bent_normals.h"
+#include "studies/gtao_distance_fade.h"
 #include "studies/gtao_fast_math.h"
 #include "studies/gtao_thickness.h"
 
@@ -21,5 +22,6 @@ void gtao_fast_math_section(report_context *ctx, const gtao_fast_math_result *r,
 void gtao_baselines_section(report_context *ctx, const gtao_baselines_result *r, cJSON *summary);
 void gtao_bent_normals_section(report_context *ctx, const gtao_bent_normals_result *r, cJSON *summary);
 void gtao_thickness_section(report_context *ctx, const gtao_thickness_result *r, cJSON *summary);
+void gtao_distance_fade_section(report_context *ctx, const gtao_distance_fade_result *r, cJSON *summary);
 
 #endif
