@@ -357,7 +357,7 @@ static void setup(const study_context *ctx, gtao_fast_math_result *r)
     memset(r, 0, sizeof *r);
     r->slices = preview ? 4 : 8;
     r->steps = preview ? 8 : 16;
-    r->fit_stride = preview ? 4 : 1;
+    r->fit_stride = preview ? 16 : 4; /* the fits run the replay ~150 times per pixel kept */
     r->poly[FAST_ACOS_TALK] = gtao_acos_poly_talk();
     r->poly[FAST_ACOS_TRANSCRIBED] = r->poly[FAST_ACOS_TALK];
     r->poly[FAST_ACOS_TRANSCRIBED].magic = GTAO_FAST_SQRT_MAGIC_AS_TRANSCRIBED;
