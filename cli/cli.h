@@ -41,6 +41,8 @@ int approx_specular_occlusion(int argc, char **argv);
 int approx_gtao(int argc, char **argv);
 int approx_hbao(int argc, char **argv);
 int approx_vo(int argc, char **argv);
+int approx_alchemy(int argc, char **argv);
+int approx_crytek(int argc, char **argv);
 
 /* Prints "gtlab: <message>" on stderr and returns EXIT_USER_ERROR. */
 int cli_fail(const gt_error *e);

@@ -31,7 +31,7 @@ static int all_stage_gtao(report_context *ctx, gt_error *e)
 }
 
 static const all_stage stages[] = {
-    {"gtao", "GTAO validation", all_stage_gtao, NULL, "ao"},
+    {"gtao", "GTAO validation", all_stage_gtao, GTAO_VALIDATION_DIR, "ao"},
     {NULL, NULL, NULL, NULL, NULL},
 };
 

@@ -54,7 +54,7 @@ static void pixel_betas(const embree_scene *es, const gbuffer *gb, float max_dis
     pixel_context px = pixel_context_prepare(
         &gb->hits[i], pixel_seed(AO_CONTROL_VARIATE_PILOT_SEED, (uint32_t)(i % gb->width), (uint32_t)(i / gb->width)));
     _Alignas(16) struct RTCRay rays[2 * AO_CONTROL_VARIATE_PILOT];
-    ao_trace_batch(es, &px, max_distance, 1, 0, AO_CONTROL_VARIATE_PILOT, rays);
+    ao_trace_batch(es, &px, max_distance, 0.0f, 1, 0, AO_CONTROL_VARIATE_PILOT, rays);
     frame f = slice_horizons_frame(h);
     float v[2][AO_CONTROL_VARIATE_PILOT], g[2][AO_CONTROL_VARIATE_PILOT];
     for (int r = 0; r < 2 * AO_CONTROL_VARIATE_PILOT; ++r) {

@@ -33,19 +33,36 @@ static void apply_control_variate(const slice_horizons *h, const struct RTCRay *
  * A direction below the geometric surface counts as blocked (V = 0): its ray
  * is left in the stream but inactive (tfar < tnear, which Embree skips and
  * leaves untouched), so the loop has no unpredictable branch. */
-int ao_trace_batch(const embree_scene *es, const pixel_context *px, float max_distance, uint32_t pair,
+/* Each ray's cutoff: max_distance, or with a fade one drawn uniformly on
+ * [fade_start, max_distance] from dimension pair FADE_PAIR (see ao_integrator.h). */
+#define FADE_PAIR 2u
+static void ray_cutoffs(const pixel_context *px, float max_distance, float fade_start, uint32_t first_index, int count,
+                        float cutoff[2][SAMPLE_BATCH])
+{
+    int fade = fade_start > 0.0f && fade_start < max_distance;
+    if (fade) {
+        const sample_pair_seeds seeds = sample_pair_seeds_for(px, FADE_PAIR);
+        sample_pair_points(&seeds, first_index, count, cutoff[0], cutoff[1]);
+    }
+    for (int k = 0; k < count; ++k)
+        for (int r = 0; r < 2; ++r)
+            cutoff[r][k] = fade ? fade_start + (max_distance - fade_start) * cutoff[r][k] : max_distance;
+}
+
+int ao_trace_batch(const embree_scene *es, const pixel_context *px, float max_distance, float fade_start, uint32_t pair,
                    uint32_t first_index, int count, struct RTCRay *rays)
 {
     const sample_pair_seeds seeds = sample_pair_seeds_for(px, pair);
-    float u0[SAMPLE_BATCH], u1[SAMPLE_BATCH];
+    float u0[SAMPLE_BATCH], u1[SAMPLE_BATCH], cutoff[2][SAMPLE_BATCH];
     vec3 local[2][SAMPLE_BATCH]; /* [0]: cosine, [1]: uniform */
     sample_pair_points(&seeds, first_index, count, u0, u1);
     sample_hemisphere_batch(u0, u1, count, local[0], local[1]);
+    ray_cutoffs(px, max_distance, fade_start, first_index, count, cutoff);
     int traced = 0;
     for (int r = 0; r < 2 * count; ++r) {
         vec3 d = frame_to_world(&px->shading, local[r & 1][r >> 1]);
         int above = v3_dot(d, px->surface->ng) > 0.0f;
-        embree_ray_init(&rays[r], px->ray_origin, d, above ? max_distance : -1.0f);
+        embree_ray_init(&rays[r], px->ray_origin, d, above ? cutoff[r & 1][r >> 1] : -1.0f);
         traced += above;
     }
     embree_unoccluded_stream(es, rays, (unsigned)(2 * count));
@@ -57,7 +74,8 @@ static int ao_sample_batch(const integrator *self, const pixel_context *px, uint
 {
     const ao_settings *settings = self->settings;
     _Alignas(16) struct RTCRay rays[2 * SAMPLE_BATCH];
-    int traced = ao_trace_batch(self->scene, px, settings->max_distance, 0, first_index, count, rays);
+    int traced =
+        ao_trace_batch(self->scene, px, settings->max_distance, settings->fade_start, 0, first_index, count, rays);
     for (int k = 0; k < count; ++k) {
         const struct RTCRay *cosine = &rays[2 * k], *uniform = &rays[2 * k + 1];
         float v_cos = cosine->tfar >= 0.0f ? 1.0f : 0.0f;

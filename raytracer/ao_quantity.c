@@ -25,6 +25,23 @@ const reference_option reference_option_max_distance = {
     .parse = parse_max_distance,
 };
 
+static int parse_fade_start(reference_request *rq, const char *value, gt_error *e)
+{
+    double d;
+    if (parse_real_in("--fade-start", value, 1e-30, 1e30, &d, e) != 0)
+        return -1;
+    rq->fade_start = (float)d;
+    return 0;
+}
+
+static const reference_option option_fade_start = {
+    .name = "fade-start",
+    .value = "F",
+    .help = "with --max-distance D > F: an occluder\nat distance t counts with weight\n"
+            "(D - t) / (D - F), clamped to [0, 1]\n(the GTAO talk's distance fade)",
+    .parse = parse_fade_start,
+};
+
 static int parse_control_variate(reference_request *rq, const char *value, gt_error *e)
 {
     if (ao_control_variate_parse(value, &rq->control_variate) != 0)
@@ -44,11 +61,15 @@ static const reference_option option_control_variate = {
 void ao_quantity_set_defaults(reference_request *rq)
 {
     rq->max_distance = INFINITY;
+    rq->fade_start = 0.0f;
     rq->control_variate = AO_CONTROL_VARIATE_NONE;
 }
 
 int ao_quantity_write_settings(const reference_request *rq, image *out)
 {
+    if (rq->fade_start > 0.0f && rq->fade_start < rq->max_distance)
+        return reference_set_attributef(out, ATTR_SETTINGS, "max_distance=%.9g fade_start=%.9g target_stderr=%.9g",
+                                        rq->max_distance, rq->fade_start, rq->sampling.target_stderr);
     return reference_set_attributef(out, ATTR_SETTINGS, "max_distance=%.9g target_stderr=%.9g", rq->max_distance,
                                     rq->sampling.target_stderr);
 }
@@ -71,6 +92,7 @@ static int prepare(const reference_pass *pass, void **state, integrator *it, gt_
     if (!ao)
         return gt_error_set(e, pass->scene_spec, "out of memory");
     ao->settings.max_distance = pass->req->max_distance;
+    ao->settings.fade_start = pass->req->fade_start;
     if (pass->req->control_variate == AO_CONTROL_VARIATE_HEIGHTFIELD) {
         if (ao_control_variate_build(&ao->field, pass->es, pass->gb, pass->req->max_distance,
                                      pass->req->sampling.threads) != 0) {
@@ -97,7 +119,8 @@ const reference_quantity_descriptor reference_quantity_ao = {
             "bent.X/Y/Z (bent normal), each with .stderr and the exact\n"
             "accumulators (.sum, .sumeven, .peak, .m1_*, .m2_*) that 'gtlab merge'\n"
             "combines",
-    .options = (const reference_option *const[]){&reference_option_max_distance, &option_control_variate, NULL},
+    .options = (const reference_option *const[]){&reference_option_max_distance, &option_fade_start,
+                                                  &option_control_variate, NULL},
     .set_defaults = ao_quantity_set_defaults,
     .prepare = prepare,
     .release = release,

@@ -142,7 +142,7 @@ static void measure_raw(RTCScene sc, struct RTCRay *rays, long n, int threads, i
 static int measure_gtlab(const embree_scene *es, const gbuffer *gb, int threads, int repeats, double *rays_per_s,
                          gt_error *e)
 {
-    ao_settings settings = {INFINITY, NULL};
+    ao_settings settings = {INFINITY, NULL, 0.0f};
     integrator it = ao_integrator(es, &settings);
     sampling_settings ss = {.spp = GTLAB_SPP, .seed = 1, .threads = threads};
     *rays_per_s = 0.0;

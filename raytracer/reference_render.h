@@ -39,6 +39,8 @@ typedef struct reference_request {
     sampling_settings sampling;
     normal_mode normals;
     float max_distance;               /* ao and heightfield-ao; INFINITY: none */
+    float fade_start;                 /* ao only: occlusion fades linearly to 0 from here to max_distance
+                                         (raytracer/ao_integrator.h); 0: a hard cutoff */
     ao_control_variate control_variate; /* ao only: none (plain sampling) or heightfield */
     multibounce_settings multibounce; /* multibounce only: albedos, bounces */
     sphere_light_settings sphere_light; /* sphere-light only: the light */

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# gtlab approx gtao|hbao|vo and gtlab render heightfield-ao as a user runs them:
+# gtlab approx gtao|hbao|vo|alchemy|crytek and gtlab render heightfield-ao as a user runs them:
 # help, outputs a comparison can read, and one-line errors for bad input.
 gtlab=$1
 work=$2
@@ -8,7 +8,7 @@ source "$(dirname "$0")/cli_test_lib.sh"
 g=$work/g.exr
 
 expect_ok render-heightfield render heightfield-ao --scene builtin:corner --width 32 --height 32 --spp 16 -o "$g"
-for t in gtao hbao vo; do
+for t in gtao hbao vo alchemy crytek; do
   expect_ok "$t-help" approx "$t" --help
   grep -q -- "--gbuffer" "$work/stdout" || fail "$t --help does not list --gbuffer"
   expect_ok "$t-run" approx "$t" --gbuffer "$g" --radius 2 -o "$work/$t.exr"
@@ -25,6 +25,7 @@ expect_error missing-file "nowhere.exr: " "$out" -- approx gtao --gbuffer "$work
 expect_error not-a-gbuffer "gtao.exr: missing channel depth.Z" "$out" -- approx vo --gbuffer "$work/gtao.exr" -o "$out"
 expect_error bad-preset "--preset: unknown preset 'fast'" "$out" -- approx gtao --preset fast --gbuffer "$g" -o "$out"
 expect_error bad-steps "--steps: " "$out" -- approx gtao --steps 1000 --gbuffer "$g" -o "$out"
+expect_error crytek-odd "--samples: '7' is odd" "$out" -- approx crytek --samples 7 --gbuffer "$g" -o "$out"
 expect_error bad-switch "--denoise: 'maybe' is neither on nor off" "$out" -- approx hbao --denoise maybe --gbuffer "$g" -o "$out"
 expect_error no-output "gtao: no output given" "" -- approx gtao --gbuffer "$g"
 expect_error unknown-technique "ssao: unknown technique" "$out" -- approx ssao --gbuffer "$g" -o "$out"

@@ -1,0 +1,127 @@
+/* GTAO beside HBAO, VO, Alchemy, Crytek and the pitfall; see
+ * gtao_baselines.h. */
+#include "studies/gtao_baselines.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/progress.h"
+#include "metrics/image_error.h"
+#include "metrics/ssim.h"
+#include "realtime/alchemy_ao.h"
+#include "realtime/crytek_ssao.h"
+#include "realtime/gtao_sin_n_pitfall.h"
+#include "realtime/hbao.h"
+#include "realtime/volumetric_obscurance.h"
+#include "scene/builtin_scenes.h"
+#include "studies/gtao_scene_refs.h"
+
+const char *const baseline_names[BASELINE_COUNT] = {
+    "GTAO medium", "HBAO 8x8", "VO 4 samples", "Alchemy 12 samples", "Crytek SSAO 16 points",
+    "GTAO medium, |sin n| pitfall"};
+
+/* Technique t on scene s into ao, one frame, denoised. */
+static int render(const gtao_scene_refs *s, baseline_technique t, float *ao)
+{
+    const ss_gbuffer *g = &s->in.g;
+    gtao_params p = gtao_scene_params(s, GTAO_PRESET_MEDIUM);
+    switch (t) {
+    case BASELINE_GTAO: return gtao_render(g, &p, ao, NULL);
+    case BASELINE_PITFALL: return gtao_pitfall_render(g, &p, ao);
+    case BASELINE_HBAO: {
+        hbao_params h = {8, 8, p.radius, p.max_radius_px, 0, 1, 1, 1};
+        return hbao_render(g, &h, ao);
+    }
+    case BASELINE_VO: {
+        vo_params o = {s->vo_radius, p.max_radius_px, 1, 1, 1};
+        return vo_render(g, &o, ao);
+    }
+    case BASELINE_ALCHEMY: {
+        alchemy_params a = alchemy_default_params(s->vo_radius);
+        a.max_radius_px = p.max_radius_px;
+        a.denoise = 1;
+        return alchemy_render(g, &a, ao);
+    }
+    default: {
+        crytek_params c = {16, s->vo_radius, 1, 1, 1};
+        return crytek_render(g, &c, ao);
+    }
+    }
+}
+
+static int score(const gtao_scene_refs *s, const float *ao, const float *gtao, baseline_row *x, gt_error *e)
+{
+    image_error_stats hf, r3;
+    ssim_result ss;
+    if (image_error_compute(ao, s->hf_ao, s->mask, s->width, s->height, s->scene, &hf, e) != 0 ||
+        image_error_compute(ao, s->ref3d, s->mask, s->width, s->height, s->scene, &r3, e) != 0 ||
+        ssim_compute(ao, s->ref3d, s->mask, s->width, s->height, s->scene, NULL, &ss, e) != 0)
+        return -1;
+    x->rmse_hf = hf.rmse;
+    x->rmse_3d = r3.rmse;
+    x->mean_ao = r3.mean_a;
+    x->dssim_3d = ss.dssim;
+    if (cluster_mean_paired_sq_error(ao, gtao, s->ref3d, s->mask, s->width, s->height, CLUSTER_MEAN_SIDE,
+                                   &x->vs_gtao_3d) != 0)
+        return gt_error_set(e, s->scene, "out of memory");
+    return 0;
+}
+
+/* Every technique on one scene; GTAO first, kept in gtao for the pairing. */
+static int study_scene(const gtao_scene_refs *s, float *ao, float *gtao, baseline_row *rows, gt_error *e)
+{
+    for (int t = 0; t < BASELINE_COUNT; ++t) {
+        baseline_row *x = &rows[t];
+        snprintf(x->scene, sizeof x->scene, "%s", s->scene);
+        snprintf(x->technique, sizeof x->technique, "%s", baseline_names[t]);
+        double t0 = seconds_now();
+        if (render(s, (baseline_technique)t, t == BASELINE_GTAO ? gtao : ao) != 0)
+            return gt_error_set(e, s->scene, "out of memory");
+        x->ms_per_frame = 1e3 * (seconds_now() - t0);
+        if (score(s, t == BASELINE_GTAO ? gtao : ao, gtao, x, e) != 0)
+            return -1;
+    }
+    return 0;
+}
+
+static void pool(gtao_baselines_result *r)
+{
+    for (int t = 0; t < BASELINE_COUNT; ++t) {
+        cluster_mean parts[BASELINES_MAX_SCENES];
+        double mse = 0.0;
+        size_t pixels = 0;
+        for (int s = 0; s < r->scene_count; ++s) {
+            const baseline_row *x = &r->rows[s][t];
+            parts[s] = x->vs_gtao_3d;
+            mse += x->rmse_3d * x->rmse_3d * (double)x->vs_gtao_3d.pixels;
+            pixels += x->vs_gtao_3d.pixels;
+        }
+        r->pooled_vs_gtao_3d[t] = cluster_mean_pool(parts, r->scene_count);
+        r->pooled_rmse_3d[t] = pixels ? sqrt(mse / (double)pixels) : 0.0;
+    }
+}
+
+int gtao_baselines_study(const study_context *ctx, const gtao_shortcuts_request *rq, gtao_baselines_result *out,
+                         gt_error *e)
+{
+    (void)ctx;
+    memset(out, 0, sizeof *out);
+    out->scene_count = builtin_scene_count() < BASELINES_MAX_SCENES ? builtin_scene_count() : BASELINES_MAX_SCENES;
+    for (int i = 0; i < out->scene_count; ++i) {
+        gtao_scene_refs s;
+        if (gtao_scene_refs_load(rq->ao_references_dir, rq->gtao_dir, builtin_scene_at(i)->name, &s, e) != 0)
+            return -1;
+        size_t n = (size_t)s.width * s.height;
+        float *ao = malloc(sizeof *ao * n), *gtao = malloc(sizeof *gtao * n);
+        int rc = ao && gtao ? study_scene(&s, ao, gtao, out->rows[i], e) : gt_error_set(e, s.scene, "out of memory");
+        free(ao);
+        free(gtao);
+        gtao_scene_refs_free(&s);
+        if (rc != 0)
+            return -1;
+    }
+    pool(out);
+    return 0;
+}
