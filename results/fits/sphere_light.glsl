@@ -173,10 +173,12 @@ SL_FN float sl_ggx_from_noh_squared(float noh2, float alpha)
 }
 
 /* EvaluateSphericalAreaGGX: D from GetNoHSquared on the reduced radius,
- * visibility and Fresnel at the centre, times the normalisation. */
-SL_FN sl_spec sl_decima_sphere_ggx(float n_dot_l, float n_dot_v, float v_dot_l, float l_dot_h,
-                                   float radius_over_distance, float alpha, sl_spec f0, decima_sphere_constants k,
-                                   int newton_steps)
+ * visibility and Fresnel at the centre, times the normalisation, whose
+ * light_radius is norm_radius (gtlab's reading: radius_over_distance, see
+ * sl_decima_sphere_ggx). */
+SL_FN sl_spec sl_decima_sphere_ggx_radii(float n_dot_l, float n_dot_v, float v_dot_l, float l_dot_h,
+                                         float radius_over_distance, float norm_radius, float alpha, sl_spec f0,
+                                         decima_sphere_constants k, int newton_steps)
 {
     if (n_dot_l <= 0.0f || n_dot_v <= 0.0f)
         return sl_spec_of(0.0f);
@@ -187,9 +189,17 @@ SL_FN sl_spec sl_decima_sphere_ggx(float n_dot_l, float n_dot_v, float v_dot_l, 
     float visibility = sl_ggx_visibility(n_dot_v, n_dot_l, alpha);
     sl_spec brdf = density * visibility * sl_fresnel_schlick(l_dot_h, f0);
     float a2_ldoth = alpha * alpha * (l_dot_h + k.norm_eps);
-    float normalization =
-        a2_ldoth / (a2_ldoth + k.norm_scale * radius_over_distance * (k.norm_alpha * alpha + radius_over_distance));
+    float normalization = a2_ldoth / (a2_ldoth + k.norm_scale * norm_radius * (k.norm_alpha * alpha + norm_radius));
     return normalization * brdf * sl_saturate(n_dot_l);
+}
+
+/* The same with the normalisation's light_radius read as R / d. */
+SL_FN sl_spec sl_decima_sphere_ggx(float n_dot_l, float n_dot_v, float v_dot_l, float l_dot_h,
+                                   float radius_over_distance, float alpha, sl_spec f0, decima_sphere_constants k,
+                                   int newton_steps)
+{
+    return sl_decima_sphere_ggx_radii(n_dot_l, n_dot_v, v_dot_l, l_dot_h, radius_over_distance, radius_over_distance,
+                                      alpha, f0, k, newton_steps);
 }
 
 #ifdef SPHERE_LIGHT_SHADER
