@@ -15,6 +15,7 @@
 #include "raytracer/reference_render.h"
 #include "raytracer/specular_occlusion_integrator.h"
 #include "realtime/gtao.h"
+#include "realtime/gtao_bent_horizons.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_loaders.h"
 #include "studies/specular_occlusion_inputs.h"
@@ -99,8 +100,9 @@ static void add_variant(so_state *st, const char *text, const so_lut *lut, int o
         strcat(row->label, "-cosines");
     if (lut && lut->bc4)
         strcat(row->label, "-bc4");
-    if (on_gtao)
-        strcat(row->label, " on GTAO");
+    static const char *const gtao_labels[SO_GTAO_INPUTS + 1] = {"", " on GTAO", " on GTAO (bent: halfway angles)",
+                                                                " on GTAO (bent: horizon vectors)"};
+    strcat(row->label, gtao_labels[on_gtao]);
 }
 
 /* ao, lagarde, 4 cone-exact, 4 cone-oat, the LUTs (16, 32, [64], 32
@@ -129,6 +131,8 @@ static void setup_variants(so_state *st)
     add_variant(st, "lagarde", NULL, 1);
     add_variant(st, "cone-exact:exp2-alpha", NULL, 1);
     add_variant(st, "lut", &st->luts[1], 1);
+    add_variant(st, "lut", &st->luts[1], SO_GTAO_HALFWAY);
+    add_variant(st, "lut", &st->luts[1], SO_GTAO_HORIZON_VECTORS);
     so_study_heatmap_rows(st->out, st->heatmaps);
 }
 
@@ -295,14 +299,15 @@ static int keep_cases(so_state *st, const image *ref, const image *ao, const cha
 }
 
 /* Every variant on the reference's inputs or GTAO's, against V_s. */
-static int score_variants(so_state *st, const aperture_case *c, const so_pixel_inputs *on_gtao, const char *what,
-                          int ri, gt_error *e)
+static int score_variants(so_state *st, const aperture_case *c, const so_pixel_inputs on_gtao[SO_GTAO_INPUTS],
+                          const char *what, int ri, gt_error *e)
 {
     const so_pixel_inputs *in = &c->inputs;
     float *approx = malloc(sizeof(float) * (size_t)in->width * in->height);
     int rc = approx ? 0 : gt_error_set(e, what, "out of memory");
     for (int v = 0; v < st->out->variant_count && rc == 0; ++v) {
-        so_approx_evaluate(st->out->variants[v].on_gtao ? on_gtao : in, &st->variants[v], approx);
+        int g = st->out->variants[v].on_gtao;
+        so_approx_evaluate(g ? &on_gtao[g - 1] : in, &st->variants[v], approx);
         double before = st->dssim[v][ri];
         rc = add_scores(c->reference, approx, in->mask, in->width, in->height, what, &st->dssim[v][ri],
                         &st->rmse[v][ri], e);
@@ -350,17 +355,20 @@ static int score_cone_view(so_state *st, const image *ref, const image *ao, cons
 /* Scores every variant on one reference, with the AO reference's or GTAO's
  * AO and bent normal, its noise floor and split integrals; keeps its fit
  * cases; at r = 0.5 writes the heatmaps. */
-static int score(so_state *st, const image *ref, const image *ao, const image *gtao, const char *what, int ri,
-                 const char *name, gt_error *e)
+static int score(so_state *st, const image *ref, const image *ao, const image gtao[SO_GTAO_INPUTS], const char *what,
+                 int ri, const char *name, gt_error *e)
 {
     if (keep_cases(st, ref, ao, what, e) != 0)
         return -1;
     const aperture_case *c = &st->cases[0][st->case_count - 1];
-    so_pixel_inputs on_gtao;
-    if (so_inputs_from_images(ref, what, gtao, "GTAO", so_reference_roughness(ref), &on_gtao, e) != 0)
-        return -1;
-    int rc = score_variants(st, c, &on_gtao, what, ri, e);
-    so_inputs_free(&on_gtao);
+    so_pixel_inputs on_gtao[SO_GTAO_INPUTS] = {{0}};
+    int rc = 0;
+    for (int g = 0; g < SO_GTAO_INPUTS && rc == 0; ++g)
+        rc = so_inputs_from_images(ref, what, &gtao[g], "GTAO", so_reference_roughness(ref), &on_gtao[g], e);
+    if (rc == 0)
+        rc = score_variants(st, c, on_gtao, what, ri, e);
+    for (int g = 0; g < SO_GTAO_INPUTS; ++g)
+        so_inputs_free(&on_gtao[g]);
     if (rc == 0)
         rc = score_rankings(st, ref, what, ri, e);
     if (rc == 0)
@@ -394,32 +402,50 @@ static int render(so_state *st, const scene *s, const char *spec, const camera *
     return 0;
 }
 
-/* GTAO's AO of both weightings and bent normal on the AO reference's
- * G-buffer, as the channels so_inputs_from_images reads: high preset, one
- * frame, and like the AO reference no radius limit. */
-static int gtao_inputs(const image *ao, const camera *cam, const char *what, image *out, gt_error *e)
+/* GTAO's AO of both weightings and a bent normal on the AO reference's
+ * G-buffer, as the channels so_inputs_from_images reads. */
+static int gtao_channels(image *out, int width, int height, float **cosine, float **uniform, float *bent[3])
+{
+    if (image_init(out, width, height) != 0)
+        return -1;
+    *cosine = image_add_channel(out, CH_AO), *uniform = image_add_channel(out, CH_AO_UNIFORM);
+    bent[0] = image_add_channel(out, CH_BENT_X), bent[1] = image_add_channel(out, CH_BENT_Y);
+    bent[2] = image_add_channel(out, CH_BENT_Z);
+    return *cosine && *uniform && bent[0] && bent[1] && bent[2] ? 0 : -1;
+}
+
+/* GTAO's inputs with each bent-normal estimator (so_gtao_bent, out[k - 1]):
+ * high preset, one frame, and like the AO reference no radius limit; the
+ * same AO in all three. */
+static int gtao_inputs(const image *ao, const camera *cam, const char *what, image out[SO_GTAO_INPUTS], gt_error *e)
 {
     ss_gbuffer g;
     if (ss_gbuffer_from_image(ao, what, approx_ss_camera(cam), &g, e) != 0)
         return -1;
-    if (image_init(out, ao->width, ao->height) != 0)
-        return gt_error_set(e, what, "out of memory");
-    float *cosine = image_add_channel(out, CH_AO), *uniform = image_add_channel(out, CH_AO_UNIFORM);
-    float *bent[3] = {image_add_channel(out, CH_BENT_X), image_add_channel(out, CH_BENT_Y), image_add_channel(out, CH_BENT_Z)};
-    if (!cosine || !uniform || !bent[0] || !bent[1] || !bent[2])
-        return gt_error_set(e, what, "out of memory");
+    float *cosine[SO_GTAO_INPUTS], *uniform[SO_GTAO_INPUTS], *bent[SO_GTAO_INPUTS][3];
+    for (int k = 0; k < SO_GTAO_INPUTS; ++k)
+        if (gtao_channels(&out[k], ao->width, ao->height, &cosine[k], &uniform[k], bent[k]) != 0)
+            return gt_error_set(e, what, "out of memory");
     gtao_params p;
     gtao_preset("high", &p);
     p.radius = 1e6f, p.falloff = 0.0f, p.max_radius_px = (float)ao->width;
-    if (gtao_render(&g, &p, cosine, bent) != 0)
+    gtao_params halfway = p, uniform_p = p;
+    halfway.bent_halfway = 1, uniform_p.weighting = GTAO_UNIFORM;
+    if (gtao_render(&g, &p, cosine[0], bent[0]) != 0 || gtao_render(&g, &halfway, cosine[1], bent[1]) != 0 ||
+        gtao_render(&g, &uniform_p, uniform[0], NULL) != 0)
         return gt_error_set(e, what, "out of memory");
-    p.weighting = GTAO_UNIFORM;
-    return gtao_render(&g, &p, uniform, NULL) != 0 ? gt_error_set(e, what, "out of memory") : 0;
+    gtao_bent_horizons_frame(&g, &p, 0, bent[2]);
+    size_t n = image_pixel_count(ao);
+    for (int k = 1; k < SO_GTAO_INPUTS; ++k) { /* the same AO: only the bent normal differs */
+        memcpy(cosine[k], cosine[0], sizeof(float) * n);
+        memcpy(uniform[k], uniform[0], sizeof(float) * n);
+    }
+    return 0;
 }
 
 /* The specular-occlusion references of one scene at every roughness, scored. */
 static int score_roughnesses(so_state *st, const scene *s, const char *spec, const camera *cam, const image *ao,
-                             const image *gtao, const char *name, gt_error *e)
+                             const image gtao[SO_GTAO_INPUTS], const char *name, gt_error *e)
 {
     int rc = 0;
     for (int r = 0; r < SO_STUDY_ROUGHNESSES && rc == 0; ++r) {
@@ -443,16 +469,17 @@ static int run_scene(so_state *st, const builtin_scene *b, gt_error *e)
     if (scene_load(spec, &s, e) != 0)
         return -1;
     camera cam;
-    image ao = {0}, gtao = {0};
+    image ao = {0}, gtao[SO_GTAO_INPUTS] = {{0}};
     int rc = scene_choose_camera(&s, NULL, st->out->size, 0, &cam, e);
     if (rc == 0)
         rc = render(st, &s, spec, &cam, QUANTITY_AO, -1.0f, &ao, e);
     if (rc == 0)
-        rc = gtao_inputs(&ao, &cam, b->name, &gtao, e);
+        rc = gtao_inputs(&ao, &cam, b->name, gtao, e);
     if (rc == 0)
-        rc = score_roughnesses(st, &s, spec, &cam, &ao, &gtao, b->name, e);
+        rc = score_roughnesses(st, &s, spec, &cam, &ao, gtao, b->name, e);
     image_free(&ao);
-    image_free(&gtao);
+    for (int k = 0; k < SO_GTAO_INPUTS; ++k)
+        image_free(&gtao[k]);
     scene_free(&s);
     return rc;
 }
@@ -509,6 +536,11 @@ static void average(const so_state *st, so_study_result *out)
     out->bc4_16_cost = paired_difference(st, so_study_find_bc4(out, 16),
                                          so_study_find(out, SO_VARIANT_LUT, 0, 32, SO_AXES_ANGLES, 0));
     rank(st, &out->rankings);
+    int arc = so_study_find(out, SO_VARIANT_LUT, 0, 32, SO_AXES_ANGLES, SO_GTAO_ARC_MEAN);
+    out->bent_halfway_cost =
+        paired_difference(st, so_study_find(out, SO_VARIANT_LUT, 0, 32, SO_AXES_ANGLES, SO_GTAO_HALFWAY), arc);
+    out->bent_vectors_cost =
+        paired_difference(st, so_study_find(out, SO_VARIANT_LUT, 0, 32, SO_AXES_ANGLES, SO_GTAO_HORIZON_VECTORS), arc);
 }
 
 /* The gloss-to-aperture fits (exact intersection) against each definition. */

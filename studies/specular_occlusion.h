@@ -40,11 +40,18 @@
 enum {
     SO_STUDY_ROUGHNESSES = 3,
     SO_STUDY_MAX_SCENES = 16,
-    SO_STUDY_MAX_VARIANTS = 24,
+    SO_STUDY_MAX_VARIANTS = 28,
     SO_STUDY_MAX_LUTS = 8,
     SO_STUDY_DEFINITIONS = 3, /* the reference definitions the aperture is fitted to */
     SO_STUDY_HEATMAPS = 4
 };
+
+/* GTAO's inputs by the bent-normal estimator (issue 25, item 10, downstream):
+ * gtlab's exact arc mean, the talk's halfway angles (each slice weighted by
+ * its visibility), the talk's average of the two horizon vectors
+ * (realtime/gtao_bent_horizons.h). The AO is the same in all three. */
+typedef enum { SO_GTAO_ARC_MEAN = 1, SO_GTAO_HALFWAY, SO_GTAO_HORIZON_VECTORS } so_gtao_bent;
+enum { SO_GTAO_INPUTS = 3 };
 
 /* One variant on one kind of input. */
 typedef struct {
@@ -54,7 +61,8 @@ typedef struct {
     int lut_size;                /* SO_VARIANT_LUT: entries per axis */
     so_lut_axes lut_axes;        /* SO_VARIANT_LUT */
     int lut_bc4;                 /* SO_VARIANT_LUT: the table as shipped, BC4 (so_lut_bc4) */
-    int on_gtao;                 /* fed by GTAO's AO and bent normal instead of the reference's */
+    int on_gtao;                 /* fed by GTAO's AO and bent normal instead of the reference's: a so_gtao_bent
+                                    (0: the reference's inputs) */
     char label[64];              /* for display: "cone-exact:exp2-alpha", "lut-ggx-32 on GTAO" */
     double dssim[SO_STUDY_ROUGHNESSES], rmse[SO_STUDY_ROUGHNESSES]; /* means over the scenes */
     double mean_dssim;           /* mean of dssim over the roughnesses */
@@ -171,6 +179,9 @@ typedef struct {
     double noise_floor_mean;                        /* their mean over the roughnesses */
     so_paired_difference bc4_16_cost;               /* DSSIM of lut 16^3 BC4 minus lut 32^3 float, over scenes */
     so_rankings rankings;
+    /* the LUT 32^3 on GTAO with the talk's bent normals minus with the arc
+     * mean, DSSIM paired over the scenes (issue 25, item 10, downstream) */
+    so_paired_difference bent_halfway_cost, bent_vectors_cost;
     so_cone_view_result cone_view;
     so_split_row splits[SO_STUDY_ROUGHNESSES];
     so_aperture_row fits[SO_STUDY_DEFINITIONS]; /* gtso, d_only, phong */
