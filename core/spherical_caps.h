@@ -31,4 +31,17 @@ double spherical_cap_solid_angle(double cos_a);
  * (radians, [0, pi]) whose axes are gamma apart (radians, [0, pi]). */
 double spherical_cap_intersection(double a1, double a2, double gamma);
 
+/* The same by Mazonka 2012's derivation (two cones cut by the plane through
+ * the boundary circles' crossings), for crossing configurations only
+ * (|a1 - a2| < gamma < min(a1 + a2, 2 pi - a1 - a2)). */
+double spherical_cap_intersection_mazonka(double a1, double a2, double gamma);
+
+/* The largest |difference| of the two derivations over the crossing
+ * configurations of an n^3 grid of (a1, a2, gamma) in (0, pi)^3, offset so
+ * no point lies within 1e-4 of a case boundary (where acos near +-1 turns
+ * rounding of 1e-16 into 1e-8), caps up to pi - 0.05 (closer to pi the
+ * Gauss-Bonnet form divides by sin a -> 0: 2.3e-12 at a = 3.12, of a solid
+ * angle near 4 pi). *compared receives the number of configurations. */
+double spherical_caps_compare_derivations(int n, long *compared);
+
 #endif

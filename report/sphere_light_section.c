@@ -356,6 +356,7 @@ int sphere_light_section(report_context *ctx, const sphere_light_result *r, gt_e
     report_maps(ctx, r, json);
     report_scenes(ctx, r, json);
     report_cost(ctx, &r->cost, json);
+    sphere_sun_section(ctx, &r->sun, json);
     sphere_terminator_section(ctx, &r->terminator, json);
     sphere_units_section(ctx, &r->units, json);
     return 0;

@@ -16,4 +16,7 @@ void sphere_terminator_section(report_context *ctx, const sphere_terminator_resu
 /* The normalisation's units (item 7; sphere_light_units_section.c). */
 void sphere_units_section(report_context *ctx, const sphere_units_result *u, cJSON *summary);
 
+/* The sun at grazing angles (item 9; sphere_light_sun_section.c). */
+void sphere_sun_section(report_context *ctx, const sphere_sun_result *s, cJSON *summary);
+
 #endif

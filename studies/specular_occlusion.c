@@ -10,6 +10,7 @@
 #include "core/mc_film.h"
 #include "core/progress.h"
 #include "core/reference_schema.h"
+#include "core/spherical_caps.h"
 #include "metrics/image_error.h"
 #include "metrics/ssim.h"
 #include "raytracer/reference_render.h"
@@ -595,6 +596,7 @@ static int run(so_state *st, gt_error *e)
         average(st, st->out);
         rc = fit_apertures(st, e);
     }
+    st->out->caps_max_difference = spherical_caps_compare_derivations(97, &st->out->caps_configurations);
     return rc;
 }
 

@@ -182,6 +182,11 @@ typedef struct {
     /* the LUT 32^3 on GTAO with the talk's bent normals minus with the arc
      * mean, DSSIM paired over the scenes (issue 25, item 10, downstream) */
     so_paired_difference bent_halfway_cost, bent_vectors_cost;
+    /* issue 26, item 6: the cap intersection by Tovchigrechko & Vakser 2001
+     * and by Mazonka 2012, largest |difference| over a 97^3 grid of
+     * crossing configurations (spherical_caps_compare_derivations) */
+    double caps_max_difference;
+    long caps_configurations;
     so_cone_view_result cone_view;
     so_split_row splits[SO_STUDY_ROUGHNESSES];
     so_aperture_row fits[SO_STUDY_DEFINITIONS]; /* gtso, d_only, phong */

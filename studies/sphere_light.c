@@ -331,6 +331,8 @@ int sphere_light_study(const study_context *ctx, sphere_light_result *out, gt_er
     sphere_cost_study(preview ? 1L << 20 : 1L << 22, 3, &out->cost);
     if (sphere_terminator_study(preview ? 2000 : 20000, preview ? 512u : 1024u, &out->terminator) != 0)
         return gt_error_set(e, "sphere light", "out of memory");
+    if (sphere_sun_study(preview ? 1000 : 10000, preview ? 512u : 2048u, &out->sun) != 0)
+        return gt_error_set(e, "sphere light", "out of memory");
     return sphere_units_study(preview ? 800 : 8000, preview ? 400 : 4000, preview ? 512u : 1024u, ctx->threads,
                               &out->units, e);
 }

@@ -165,6 +165,29 @@ typedef struct {
 
 int sphere_terminator_study(int configurations, uint32_t samples, sphere_terminator_result *out);
 
+/* ---- The sun regime (issue 26, item 9) ---- */
+
+/* The talk shows "the sun's reflection with and without the N.H
+ * maximization": a disc of the sun's size (sin sigma = 0.00465) at grazing
+ * views (n.v uniform in [0.02, 0.3]), its centre 1 to 4 angular radii from
+ * the mirror direction (R outside the disc: the early-out, exact, is not
+ * counted), roughness uniform in [0.05, 0.3] (water, wet or polished
+ * surfaces: a visible sun glint). Compared: Karis's point (0 Newton steps)
+ * and the talk's one step, as the shortfall of (N.H)^2 below the rim's
+ * brute-force maximum and as Decima's radiance residual (published
+ * constants) against the Monte Carlo reference. Means with standard errors
+ * over the configurations; gains paired (Karis's minus the step's). */
+typedef struct {
+    int configurations;
+    uint32_t samples;
+    double shortfall_karis, shortfall_karis_se, shortfall_step, shortfall_step_se;
+    double shortfall_gain, shortfall_gain_se;
+    double abs_karis, abs_karis_se, abs_step, abs_step_se; /* mean |residual| */
+    double gain, gain_se;
+} sphere_sun_result;
+
+int sphere_sun_study(int configurations, uint32_t samples, sphere_sun_result *out);
+
 /* ---- The normalisation's units (issue 26, item 7) ---- */
 
 /* The appendix's normalisation a2 (l.h + eps) / (a2 (l.h + eps) + 0.25 r
@@ -209,6 +232,7 @@ typedef struct {
     sphere_cost cost;
     sphere_terminator_result terminator;
     sphere_units_result units;
+    sphere_sun_result sun;
 } sphere_light_result;
 
 int sphere_light_study(const study_context *ctx, sphere_light_result *out, gt_error *e);

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 
 #include "core/ggx.h"
+#include "core/sample_mean.h"
 #include "core/sobol.h"
 #include "fitters/fit_sphere_light.h"
 #include "raytracer/sphere_light_reference.h"
@@ -28,18 +29,6 @@ static sphere_light_sample draw(uint32_t i, double lo, double hi, uint32_t sampl
     return sphere_light_reference_sample(&c, samples, hash_combine(TERMINATOR_SEED, i));
 }
 
-/* Mean and standard error of the mean of x[0..n). */
-static void mean_se(const double *x, int n, double *mean, double *se)
-{
-    double sum = 0.0, sq = 0.0;
-    for (int i = 0; i < n; ++i)
-        sum += x[i];
-    *mean = sum / n;
-    for (int i = 0; i < n; ++i)
-        sq += (x[i] - *mean) * (x[i] - *mean);
-    *se = n > 1 ? sqrt(sq / (n - 1) / n) : NAN;
-}
-
 int sphere_terminator_study(int configurations, uint32_t samples, sphere_terminator_result *out)
 {
     const decima_sphere_constants k = decima_sphere_published();
@@ -62,11 +51,11 @@ int sphere_terminator_study(int configurations, uint32_t samples, sphere_termina
     }
     out->configurations = n, out->samples = samples;
     out->share_centre_below = (double)below / n;
-    mean_se(signed_talk, n, &out->talk_signed, &out->talk_signed_se);
-    mean_se(abs_talk, n, &out->talk_abs, &out->talk_abs_se);
-    mean_se(abs_fixed, n, &out->fixed_abs, &out->fixed_abs_se);
-    mean_se(gain, n, &out->gain, &out->gain_se);
-    mean_se(above, n, &out->above_abs, &out->above_abs_se);
+    sample_mean_se(signed_talk, n, &out->talk_signed, &out->talk_signed_se);
+    sample_mean_se(abs_talk, n, &out->talk_abs, &out->talk_abs_se);
+    sample_mean_se(abs_fixed, n, &out->fixed_abs, &out->fixed_abs_se);
+    sample_mean_se(gain, n, &out->gain, &out->gain_se);
+    sample_mean_se(above, n, &out->above_abs, &out->above_abs_se);
     free(x);
     return 0;
 }

@@ -73,65 +73,12 @@ static void test_limits(void)
     CHECK_NEAR(spherical_cap_intersection(0.4, 0.9, 0.8), spherical_cap_intersection(0.9, 0.4, 0.8), 1e-14);
 }
 
-/* Mazonka 2012, "Solid Angle of Conical Surfaces, Polyhedral Cones, and
- * Intersecting Spherical Caps" (arXiv:1205.1396): the part of a cone of
- * half-angle t beyond a plane through its apex at angle f from its axis,
- *   2 [acos(sin f / sin t) - cos t acos(tan f / tan t)]   (|f| <= t <= pi/2),
- * and the intersection of caps a1, a2 (<= pi/2) with axes g apart as the sum
- * of two such parts, the plane through the apex and the two points where the
- * boundary circles cross. In the axes' plane the crossings' midpoint p has
- * p.e1 = cos a1 and p.e2 = cos a2, so the plane makes the angle
- *   psi = atan2((cos a2 - cos a1 cos g) / sin g, cos a1)
- * with e1 and g - psi with e2. */
-static double acos_clamped(double x) { return acos(fmax(-1.0, fmin(1.0, x))); }
-
-static double cone_beyond_plane(double t, double f)
-{
-    /* tan f / tan t written as sin f cos t / (cos f sin t): defined at t = pi/2 */
-    return 2.0 * (acos_clamped(sin(f) / sin(t)) - cos(t) * acos_clamped(sin(f) * cos(t) / (cos(f) * sin(t))));
-}
-
-static double mazonka_crossing(double a1, double a2, double g)
-{
-    double psi = atan2((cos(a2) - cos(a1) * cos(g)) / sin(g), cos(a1));
-    return cone_beyond_plane(a1, psi) + cone_beyond_plane(a2, g - psi);
-}
-
-/* Caps beyond a hemisphere through their complements (radius pi - a about
- * the opposite axis): C1 n C2 = C1 - (C1 n C2'), and for two large caps
- * C1 n C2 = 4 pi - |C1'| - |C2'| + |C1' n C2'|. */
-static double mazonka_intersection(double a1, double a2, double g)
-{
-    double cap1 = spherical_cap_solid_angle(cos(a1)), cap2 = spherical_cap_solid_angle(cos(a2));
-    if (a1 <= 0.5 * M_PI && a2 <= 0.5 * M_PI)
-        return mazonka_crossing(a1, a2, g);
-    if (a1 > 0.5 * M_PI && a2 > 0.5 * M_PI)
-        return cap1 + cap2 - 4.0 * M_PI + mazonka_crossing(M_PI - a1, M_PI - a2, g);
-    if (a2 > 0.5 * M_PI)
-        return cap1 - mazonka_crossing(a1, M_PI - a2, M_PI - g);
-    return cap2 - mazonka_crossing(a2, M_PI - a1, M_PI - g);
-}
-
-/* Every crossing configuration of a 97^3 grid (offset so no point is
- * tangent or nested to rounding: 1e-4 away from every case boundary, where
- * acos near +-1 turns rounding of 1e-16 into 1e-8), caps up to pi - 0.05.
- * Closer to pi the Gauss-Bonnet form divides by sin a -> 0 and the two part
- * by rounding: 2.3e-12 at a = 3.12 (of a solid angle near 4 pi). */
+/* The two derivations on every crossing configuration of a 97^3 grid
+ * (spherical_caps_compare_derivations). */
 static void test_two_derivations_agree(void)
 {
-    enum { N = 97 };
-    double worst = 0.0;
     long compared = 0;
-    for (int i = 0; i < N; ++i)
-        for (int j = 0; j < N; ++j)
-            for (int k = 0; k < N; ++k) {
-                double a1 = M_PI * (i + 0.37) / N, a2 = M_PI * (j + 0.61) / N, g = M_PI * (k + 0.23) / N;
-                double lo = fabs(a1 - a2), hi = fmin(a1 + a2, 2.0 * M_PI - a1 - a2), margin = 1e-4;
-                if (!(g > lo + margin && g < hi - margin) || fmax(a1, a2) > M_PI - 0.05)
-                    continue;
-                worst = fmax(worst, fabs(spherical_cap_intersection(a1, a2, g) - mazonka_intersection(a1, a2, g)));
-                compared++;
-            }
+    double worst = spherical_caps_compare_derivations(97, &compared);
     CHECK_MSG(compared > 190000 && worst < 1e-12, "%ld configurations, largest difference %.3g", compared, worst);
 }
 
