@@ -25,6 +25,7 @@
 enum { LUT_SIZES = 3, BC4_SIZES = 2, CASES_MAX = SO_STUDY_MAX_SCENES * SO_STUDY_ROUGHNESSES };
 static const char *const definition_channels[SO_STUDY_DEFINITIONS] = {CH_SPECOCC, CH_SPECOCC_D, CH_SPECOCC_PHONG};
 static const char *const definition_names[SO_STUDY_DEFINITIONS] = {"gtso", "d_only", "phong"};
+enum { DEFINITION_GTSO, DEFINITION_D_ONLY, DEFINITION_PHONG }; /* indices of the two arrays above */
 static const float roughness_values[SO_STUDY_ROUGHNESSES] = {0.25f, 0.5f, 0.8f};
 static const int lut_sizes[LUT_SIZES] = {16, 32, 64};
 
@@ -108,7 +109,7 @@ static void add_variant(so_state *st, const char *text, const so_lut *lut, int o
 
 /* ao, lagarde, 4 cone-exact, 4 cone-oat, the LUTs (16, 32, [64], 32
  * cosines), 2 cone-horizon (not the talk's), the LUTs 16 and 32 in BC4, then ao, lagarde, cone-exact:exp2-alpha and lut
- * 32 on GTAO. */
+ * 32 on GTAO, and lut 32 on GTAO with the talk's two bent normals. */
 static void setup_variants(so_state *st)
 {
     static const char *const cones[] = {"drobot", "uludag", "exp2-alpha", "exp2-perceptual"};
@@ -322,7 +323,7 @@ static int score_variants(so_state *st, const aperture_case *c, const so_pixel_i
 /* The rankings' variants in both settings on the latest case, by region. */
 static int score_rankings(so_state *st, const image *ref, const char *what, int ri, gt_error *e)
 {
-    static const int definition[SO_SETTINGS] = {2, 0}; /* the talk's: Phong V_s; GTSO's V_s */
+    static const int definition[SO_SETTINGS] = {DEFINITION_PHONG, DEFINITION_GTSO};
     so_regions regions;
     if (so_regions_from_reference(ref, what, &regions, e) != 0)
         return -1;
@@ -344,7 +345,7 @@ static int score_rankings(so_state *st, const image *ref, const char *what, int 
 /* The visibility cone and the dropped dimension on the latest case. */
 static int score_cone_view(so_state *st, const image *ref, const image *ao, const char *what, int ri, gt_error *e)
 {
-    const aperture_case *c = &st->cases[0][st->case_count - 1];
+    const aperture_case *c = &st->cases[DEFINITION_GTSO][st->case_count - 1];
     so_screen_buffers b;
     vec3 eye;
     if (so_buffers_from_images(ref, what, ao, what, &b, &eye, e) != 0)
@@ -500,7 +501,7 @@ static so_paired_difference paired_difference(const so_state *st, int a, int b)
 static void rank(const so_state *st, so_rankings *k)
 {
     static const char *const names[SO_SETTINGS] = {"talk", "gtso"};
-    static const int definition[SO_SETTINGS] = {2, 0};
+    static const int definition[SO_SETTINGS] = {DEFINITION_PHONG, DEFINITION_GTSO};
     static const so_lobe lobes[SO_SETTINGS] = {SO_LOBE_PHONG, SO_LOBE_GGX};
     k->silhouette_fraction = st->scored ? st->silhouette_fraction_sum / st->scored : NAN;
     so_cone_view_compute(&st->cone_view, st->out->scene_count, &st->out->cone_view);
