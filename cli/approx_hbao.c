@@ -21,9 +21,7 @@ static void print_help(void)
            "  --radius R            world-space radius (default 1)\n"
            "  --max-radius-px P     clamp of the screen-space radius (default 256)\n"
            "  --attenuation on|off  Bavoil's per-sample W(r) = 1 - r^2/R^2 (default on)\n"
-           "  --pattern on|off      the GTAO talk's spatio-temporal pattern (default on)\n"
-           "  --denoise on|off      the 4x4 bilateral spatial denoiser (default off)\n"
-           "  --frames N            frames accumulated (static camera; default 1)\n"
+           APPROX_FRAMES_HELP
            "%s",
            approx_common_help);
 }

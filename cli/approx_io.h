@@ -40,5 +40,9 @@ int approx_main(const approx_technique *t, void *params, int argc, char **argv);
 
 /* Help lines of the common options. */
 extern const char approx_common_help[];
+#define APPROX_FRAMES_HELP /* the pattern, denoiser and accumulation options of the horizon techniques */ \
+    "  --pattern on|off      the GTAO talk's 4x4 spatio-temporal pattern (default on)\n"                  \
+    "  --denoise on|off      the 4x4 bilateral spatial denoiser (default off)\n"                           \
+    "  --frames N            frames accumulated (static camera; default 1)\n"
 
 #endif

@@ -5,7 +5,6 @@
 #define GTLAB_TECHNIQUES(T) \
     T(ao)                   \
     T(gtao)                 \
-    T(gtao_shortcuts)       \
     T(multibounce)          \
     T(specular_occlusion)   \
     T(sphere_light)         \

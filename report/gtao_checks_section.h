@@ -8,6 +8,7 @@
 #include <cjson/cJSON.h>
 
 #include "report/report_context.h"
+#include "studies/gtao_checks.h"
 #include "studies/gtao_baselines.h"
 #include "studies/gtao_bent_normals.h"
 #include "studies/gtao_distance_fade.h"
@@ -23,5 +24,9 @@ void gtao_baselines_section(report_context *ctx, const gtao_baselines_result *r,
 void gtao_bent_normals_section(report_context *ctx, const gtao_bent_normals_result *r, cJSON *summary);
 void gtao_thickness_section(report_context *ctx, const gtao_thickness_result *r, cJSON *summary);
 void gtao_distance_fade_section(report_context *ctx, const gtao_distance_fade_result *r, cJSON *summary);
+
+/* The section: a heading, its introduction, the five subsections and the
+ * summary object `gtao_shortcuts`. */
+void gtao_checks_section(report_context *ctx, const gtao_checks_result *r);
 
 #endif

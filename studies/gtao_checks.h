@@ -1,0 +1,25 @@
+/* The GTAO talk's shortcuts and baselines measured against the references
+ * (issue 25, items 9-13): the five studies of the `gtao-shortcuts` stage in
+ * one results struct. */
+#ifndef GTLAB_STUDIES_GTAO_CHECKS_H
+#define GTLAB_STUDIES_GTAO_CHECKS_H
+
+#include "studies/gtao_baselines.h"
+#include "studies/gtao_bent_normals.h"
+#include "studies/gtao_distance_fade.h"
+#include "studies/gtao_fast_math.h"
+#include "studies/gtao_thickness.h"
+
+typedef struct {
+    gtao_fast_math_result fast_math;
+    gtao_baselines_result baselines;
+    gtao_bent_normals_result bent;
+    gtao_thickness_result thickness;
+    gtao_distance_fade_result fade;
+} gtao_checks_result;
+
+/* Runs the five studies in that order; -1 with e at the first failure. */
+int gtao_checks_study(const study_context *ctx, const gtao_shortcuts_request *rq, gtao_checks_result *out,
+                      gt_error *e);
+
+#endif
