@@ -10,6 +10,7 @@
     T(sphere_light)         \
     T(dfg)                  \
     T(normals)              \
+    T(hdr_precision)        \
     T(throughput)
 
 #define DECLARE(name) extern const technique technique_##name;
