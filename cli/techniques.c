@@ -11,6 +11,7 @@
     T(dfg)                  \
     T(normals)              \
     T(hdr_precision)        \
+    T(color_grading)        \
     T(throughput)
 
 #define DECLARE(name) extern const technique technique_##name;
