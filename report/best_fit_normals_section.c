@@ -103,6 +103,23 @@ static int plot(const report_context *ctx, const normals_result *r, gt_error *e)
     return gnuplot_render(script, png, 900, 520, e);
 }
 
+/* The error distributions: percentile against angular error. */
+static int plot_cdf(const report_context *ctx, gt_error *e)
+{
+    char data[4096], png[4096], script[8192];
+    snprintf(data, sizeof data, "%s/%s/error_cdf.dat", ctx->study.output_dir, NORMALS_DIR);
+    snprintf(png, sizeof png, "%s/figures/normals_error_cdf.png", ctx->study.output_dir);
+    snprintf(script, sizeof script,
+             "set xlabel 'angular error (degrees)'\nset ylabel 'percentile'\nset logscale x\nset xrange [0.003:1]\n"
+             "set title 'G-buffer normals: error distribution over random directions'\nset key bottom right\n"
+             "plot '%s' using 2:1 with lines title 'RGB8 normalised', '' using 3:1 with lines title 'RGB8 / max', "
+             "'' using 4:1 with lines title 'RGB8 best fit (table)', '' using 5:1 with lines title 'best fit, "
+             "bilinear', '' using 6:1 with lines title 'RGB8 best cell', '' using 10:1 with lines title "
+             "'octahedral 2x10 precise', '' using 12:1 with lines title 'octahedral 2x12 precise'\n",
+             data);
+    return gnuplot_render(script, png, 900, 520, e);
+}
+
 static void add_claims(report_context *ctx, const normals_result *r)
 {
     claims_table_add_figure(ctx->claims, SOURCE, "normalised normals use ~1.73% of the 256^3 cells (~289880)",
@@ -147,7 +164,8 @@ static void render_findings(report_context *ctx, const normals_result *r)
 int normals_section(report_context *ctx, const normals_result *r, gt_error *e)
 {
     char figures[2048];
-    if (study_make_dir(&ctx->study, "figures", figures, sizeof figures, e) != 0 || plot(ctx, r, e) != 0)
+    if (study_make_dir(&ctx->study, "figures", figures, sizeof figures, e) != 0 || plot(ctx, r, e) != 0 ||
+        plot_cdf(ctx, e) != 0)
         return -1;
     report_heading(ctx->doc, 2, "Best-fit normals in an RGB8 G-buffer (CryENGINE 3)");
     report_paragraph(ctx->doc,
@@ -173,6 +191,8 @@ int normals_section(report_context *ctx, const normals_result *r, gt_error *e)
     report_rows(ctx->doc, cJSON_AddArrayToObject(json, "encodings"), error_columns,
                 (int)(sizeof error_columns / sizeof error_columns[0]), r->encodings, sizeof r->encodings[0],
                 NORMALS_ENCODINGS);
+    const char *cp[1] = {"figures/normals_error_cdf.png"}, *cc[1] = {"Angular error distributions"};
+    report_figures(ctx->doc, 1, cp, cc);
     const char *hp[4] = {"normals/highlight_exact.png", "normals/highlight_naive.png", "normals/highlight_best_fit.png",
                          "normals/highlight_octahedral10p.png"};
     const char *hc[4] = {"exact normals, roughness 0.2", "RGB8 normalised", "RGB8 best fit (point)",

@@ -112,7 +112,7 @@ static void error_statistics(double *err, int n, normals_encoding_result *r)
 }
 
 static void score_encoding(int enc, const best_fit_table *t, const normals_request *rq, int threads, double *err,
-                           normals_encoding_result *r)
+                           normals_encoding_result *r, double percentiles[101])
 {
     int n = enc == EXHAUSTIVE ? rq->exhaustive_directions : rq->directions;
 #pragma omp parallel for schedule(static) num_threads(threads)
@@ -125,6 +125,27 @@ static void score_encoding(int enc, const best_fit_table *t, const normals_reque
     r->name = encoding_names[enc];
     r->bits = encoding_bits[enc];
     error_statistics(err, n, r);
+    for (int p = 0; p <= 100; ++p) /* sorted by error_statistics */
+        percentiles[p] = err[p == 0 ? 0 : (int)ceil(p / 100.0 * n) - 1] * 180.0 / M_PI;
+}
+
+/* normals/error_cdf.dat: per percentile (rows), each encoding's error in
+ * degrees (columns, in the order of the result): the plot's data. */
+static int write_cdf(const char *dir, double percentiles[NORMALS_ENCODINGS][101], gt_error *e)
+{
+    char path[4096 + 32];
+    snprintf(path, sizeof path, "%s/error_cdf.dat", dir);
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return gt_error_set(e, path, "cannot write");
+    fprintf(f, "# percentile, then the angular error (degrees) of each encoding\n");
+    for (int p = 0; p <= 100; ++p) {
+        fprintf(f, "%d", p);
+        for (int enc = 0; enc < NORMALS_ENCODINGS; ++enc)
+            fprintf(f, " %.6e", percentiles[enc][p]);
+        fputc('\n', f);
+    }
+    return fclose(f) == 0 ? 0 : gt_error_set(e, path, "cannot write");
 }
 
 /* The fixed generic rotation of the highlight's normals: angle 0.7 about
@@ -296,8 +317,11 @@ int normals_study(const study_context *ctx, const normals_request *rq, normals_r
     double *err = malloc(sizeof *err * (size_t)rq->directions);
     int rc = table && err ? 0 : (table ? gt_error_set(e, dir, "out of memory") : -1);
     best_fit_table t = {table, rq->table_size};
+    static double percentiles[NORMALS_ENCODINGS][101];
     for (int enc = 0; enc < NORMALS_ENCODINGS && rc == 0; ++enc)
-        score_encoding(enc, &t, rq, ctx->threads, err, &out->encodings[enc]);
+        score_encoding(enc, &t, rq, ctx->threads, err, &out->encodings[enc], percentiles[enc]);
+    if (rc == 0)
+        rc = write_cdf(dir, percentiles, e);
     if (rc == 0)
         rc = score_highlights(dir, &t, ctx->threads, out, e);
     if (rc == 0)

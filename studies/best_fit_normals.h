@@ -11,7 +11,8 @@
  * f_GGX(v, l) n.l tone-mapped by x / (1 + x) after scaling the exact image's
  * peak to 4; DSSIM of each encoding's image against the exact normals'.
  * Writes <output>/normals/best_fit_normals_512.{exr,png,h,hlsl},
- * highlight previews and normals/cells.dat (face, sampled counts). */
+ * highlight previews, normals/cells.dat (face, sampled counts) and
+ * normals/error_cdf.dat (each encoding's error by percentile). */
 #ifndef GTLAB_STUDIES_BEST_FIT_NORMALS_H
 #define GTLAB_STUDIES_BEST_FIT_NORMALS_H
 
