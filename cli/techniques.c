@@ -12,6 +12,7 @@
     T(normals)              \
     T(hdr_precision)        \
     T(color_grading)        \
+    T(anti_aliasing)        \
     T(throughput)
 
 #define DECLARE(name) extern const technique technique_##name;
