@@ -14,7 +14,7 @@ packages=(
   libssl-dev assimp-testmodels gnuplot-nox glslang-tools
   libdraco-dev libmeshoptimizer-dev gltfpack
   clang libclang-rt-14-dev libomp-dev llvm
-  libsquish-dev
+  libsquish-dev liblcms2-dev
 )
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }

@@ -9,6 +9,10 @@
     T(specular_occlusion)   \
     T(sphere_light)         \
     T(dfg)                  \
+    T(normals)              \
+    T(hdr_precision)        \
+    T(color_grading)        \
+    T(anti_aliasing)        \
     T(throughput)
 
 #define DECLARE(name) extern const technique technique_##name;

@@ -128,6 +128,8 @@
 #define CH_DFG_A "dfg.A"
 #define CH_DFG_B "dfg.B"
 #define CH_DFG_E "dfg.E"
+/* The best-fit normals table (luts/best_fit_normals.h): the scale t per texel. */
+#define CH_BEST_FIT_SCALE "best_fit.t"
 
 /* ---- Header attributes -------------------------------------------------- */
 /* text */

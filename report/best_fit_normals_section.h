@@ -1,0 +1,13 @@
+/* Best-fit normals (studies/best_fit_normals.h): the audit of the talk's
+ * cell counts, each encoding's angular error and its effect on a GGX
+ * highlight, the table in every format (figures/normals_cells.png). */
+#ifndef GTLAB_REPORT_BEST_FIT_NORMALS_SECTION_H
+#define GTLAB_REPORT_BEST_FIT_NORMALS_SECTION_H
+
+#include "report/report_context.h"
+#include "studies/best_fit_normals.h"
+
+/* Adds the section and its claims rows; -1 (e set) if a figure could not be made. */
+int normals_section(report_context *ctx, const normals_result *r, gt_error *e);
+
+#endif

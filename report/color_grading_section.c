@@ -1,0 +1,126 @@
+/* The colour-grading LUT section (color_grading_section.h). */
+#include "report/color_grading_section.h"
+
+#include <stdio.h>
+#include <string.h>
+
+#include "report/report_table.h"
+
+#define ROW grading_row
+static const report_column columns[] = {
+    REPORT_STRING("grade", "grade", ROW, grade),
+    REPORT_INT("N", "size", ROW, size),
+    REPORT_STRING("indexed", "space", ROW, space),
+    REPORT_STRING("lookup", "interpolation", ROW, interpolation),
+    REPORT_STRING("stored", "storage", ROW, storage),
+    REPORT_REAL("chart max dE00", "chart_max_de", "%.2f", ROW, image[0].max_de),
+    REPORT_REAL("chart p99 dE00", "chart_p99_de", "%.2f", ROW, image[0].p99_de),
+    REPORT_REAL("chart max LSB", "chart_max_lsb", "%.1f", ROW, image[0].max_lsb),
+    REPORT_REAL("chart p99 LSB", "chart_p99_lsb", "%.1f", ROW, image[0].p99_lsb),
+    REPORT_REAL("cube max dE00", "cube_max_de", "%.2f", ROW, image[1].max_de),
+    REPORT_REAL("cube p99 dE00", "cube_p99_de", "%.2f", ROW, image[1].p99_de),
+    REPORT_INT("max dE00 < 1", "perceptual", ROW, perceptual),
+    REPORT_INT("p99 <= 1 LSB", "within_1lsb", ROW, within_1lsb),
+    REPORT_REAL(NULL, "cube_max_lsb", NULL, ROW, image[1].max_lsb),
+    REPORT_REAL(NULL, "cube_p99_lsb", NULL, ROW, image[1].p99_lsb),
+};
+#undef ROW
+#define COLUMN_COUNT ((int)(sizeof columns / sizeof columns[0]))
+
+/* The rows of one variant (space, lookup, storage), in grade and size order. */
+static int select_rows(const grading_result *r, const char *space, const char *lookup, const char *storage,
+                       grading_row *out)
+{
+    int n = 0;
+    for (int i = 0; i < r->row_count; ++i) {
+        const grading_row *row = &r->rows[i];
+        if (!strcmp(row->space, space) && !strcmp(row->interpolation, lookup) && !strcmp(row->storage, storage))
+            out[n++] = *row;
+    }
+    return n;
+}
+
+/* "a, b, c" of the looks (identity excluded) whose row of size N does / does
+ * not suffice perceptually. */
+static int list_grades(const grading_row *rows, int n, int size_n, int perceptual, char *text, size_t size)
+{
+    int count = 0;
+    text[0] = 0;
+    for (int i = 0; i < n; ++i)
+        if (rows[i].size == size_n && strcmp(rows[i].grade, "identity") != 0 && rows[i].perceptual == perceptual) {
+            size_t len = strlen(text);
+            snprintf(text + len, size - len, "%s%s", count ? ", " : "", rows[i].grade);
+            ++count;
+        }
+    if (!count)
+        snprintf(text, size, "none");
+    return count;
+}
+
+/* The largest chart dE00 of a grade at size N among the rows. */
+static double chart_max_de(const grading_row *rows, int n, const char *grade, int size_n)
+{
+    for (int i = 0; i < n; ++i)
+        if (rows[i].size == size_n && !strcmp(rows[i].grade, grade))
+            return rows[i].image[0].max_de;
+    return 0.0;
+}
+
+static void render_findings(report_context *ctx, const grading_row *gpu, int n, const grading_row *tet, int n_tet)
+{
+    char yes[512], no[512], yes32[512], no32[512];
+    int looks = 0, bits = 0;
+    for (int i = 0; i < n; ++i)
+        if (gpu[i].size == 16 && strcmp(gpu[i].grade, "identity") != 0)
+            ++looks, bits += gpu[i].within_1lsb;
+    int count = list_grades(gpu, n, 16, 1, yes, sizeof yes), count32 = list_grades(gpu, n, 32, 1, yes32, sizeof yes32);
+    list_grades(gpu, n, 16, 0, no, sizeof no);
+    list_grades(gpu, n, 32, 0, no32, sizeof no32);
+    report_finding(ctx->doc, "colour grading",
+                   "An sRGB-indexed 16^3 RGBA8 LUT with hardware trilinear filtering keeps %d of %d looks below "
+                   "dE00 1 everywhere on the chart (%s; not: %s), and %d within 1 LSB at the 99th percentile; at "
+                   "32^3 %d (not: %s).",
+                   count, looks, yes, no, bits, count32, no32);
+    report_finding(ctx->doc, "colour grading",
+                   "Where a grade clips (the +1.5 stop exposure; saturation boosts pushing colours out of gamut) "
+                   "the LUT converges to first order: the clip's max dE00 (float, tetrahedral) goes %.2f, %.2f, "
+                   "%.2f from 16^3 to 64^3, against %.2f, %.2f, %.2f for the unclipped bleach bypass.",
+                   chart_max_de(tet, n_tet, "clipped exposure +1.5", 16),
+                   chart_max_de(tet, n_tet, "clipped exposure +1.5", 32),
+                   chart_max_de(tet, n_tet, "clipped exposure +1.5", 64), chart_max_de(tet, n_tet, "bleach bypass", 16),
+                   chart_max_de(tet, n_tet, "bleach bypass", 32), chart_max_de(tet, n_tet, "bleach bypass", 64));
+    claims_table_add_figure(ctx->claims, "Kaplanyan 2010, CryENGINE 3, colour grading",
+                            "a 16x16x16 LUT proved to be enough (for the majority of colour transformations)",
+                            "fraction of the study's five looks with chart max dE00 < 1, 16^3 sRGB RGBA8 trilinear",
+                            looks ? (double)count / looks : 0.0, 0.0, 0.5 + 1e-9, 1.0);
+}
+
+int color_grading_section(report_context *ctx, const grading_result *r, gt_error *e)
+{
+    (void)e;
+    report_heading(ctx->doc, 2, "Colour-grading LUTs (CryENGINE 3)");
+    report_paragraph(ctx->doc,
+                     "Kaplanyan 2010 bakes all global colour transformations into a 3-D LUT and finds 16^3 enough. "
+                     "Six grades as grading tools apply them (levels, monotone curves, saturation, hue rotation, "
+                     "ASC CDL, a clipped exposure; luts/color_grade.h) are baked at 16^3, 32^3 and 64^3, indexed "
+                     "by sRGB or by linear values, stored as float or RGBA8, looked up trilinearly or "
+                     "tetrahedrally, and scored against the exact grade: on a photo-like HDR chart tone-mapped "
+                     "to display values (hue, saturation and exposure sweeps, skin tones, a twelve-stop grey "
+                     "ramp) and on %d random colours (the cube). Errors: CIEDE2000 (Little CMS) and the largest "
+                     "channel difference in 8-bit steps, max and 99th percentile. The "
+                     "table shows the GPU path (sRGB-indexed, RGBA8, trilinear) and the float LUTs with each "
+                     "lookup; summary.json holds every variant, the linear-indexed ones too.",
+                     r->cube_samples);
+    static grading_row gpu[sizeof r->rows / sizeof r->rows[0]], tet[sizeof r->rows / sizeof r->rows[0]];
+    int n = select_rows(r, "sRGB", "trilinear", "8-bit", gpu), n_tet = select_rows(r, "sRGB", "tetrahedral", "float", tet);
+    report_rows(ctx->doc, NULL, columns, COLUMN_COUNT, gpu, sizeof gpu[0], n);
+    report_rows(ctx->doc, NULL, columns, COLUMN_COUNT, tet, sizeof tet[0], n_tet);
+    render_findings(ctx, gpu, n, tet, n_tet);
+    report_rows(NULL, cJSON_AddArrayToObject(ctx->summary, "color_grading"), columns, COLUMN_COUNT, r->rows,
+                sizeof r->rows[0], r->row_count);
+    const char *p[4] = {"grading/chart.png", "grading/chart_grade1.png", "grading/chart_grade3.png",
+                        "grading/chart_grade5.png"};
+    const char *c[4] = {"the chart (display values)", "warm contrast", "bleach bypass", "clipped exposure +1.5"};
+    report_figures(ctx->doc, 4, p, c);
+    return 0;
+}

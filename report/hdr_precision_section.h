@@ -1,0 +1,12 @@
+/* Kaplanyan 2010's precision figures (studies/hdr_precision.h): gamma vs
+ * linear storage and the HDR lower bounds, beside the talk's numbers, with
+ * the typos the computation exposes (figures/hdr_code_steps.png). */
+#ifndef GTLAB_REPORT_HDR_PRECISION_SECTION_H
+#define GTLAB_REPORT_HDR_PRECISION_SECTION_H
+
+#include "report/report_context.h"
+#include "studies/hdr_precision.h"
+
+int hdr_precision_section(report_context *ctx, const hdr_precision_result *r, gt_error *e);
+
+#endif

@@ -1,0 +1,55 @@
+/* Anti-aliasing against supersampled ground truth (issue 19, first part):
+ * shaded frames of built-in scenes (raytracer/shaded_frame.h), the truth at
+ * 16 (4 x 4) and 64 (8 x 8) stratified samples per pixel resolved with box
+ * and Blackman-Harris filters (core/pixel_filter.h), and the techniques run
+ * on one sample per pixel: none, FXAA 3.11 (realtime/fxaa.h), and 2 x 2
+ * supersampling as a point of comparison. Everything is scored on display
+ * values, d = sRGB(L / (1 + L)) (Reinhard, then the sRGB encode): the
+ * truth is the filtered radiance, then displayed. Scores: RMSE over the RGB
+ * display values and DSSIM of the display luma (Rec. 709 weights), against
+ * the 64-sample truth with the same filter; the 16-sample truth's own RMSE
+ * against the 64-sample one bounds the truth's error. Writes previews of the
+ * first scene to <output>/aa/. */
+#ifndef GTLAB_STUDIES_ANTI_ALIASING_H
+#define GTLAB_STUDIES_ANTI_ALIASING_H
+
+#include "core/pixel_filter.h"
+#include "studies/study.h"
+
+#define AA_DIR "aa"
+
+enum { AA_MAX_SCENES = 4, AA_TECHNIQUES = 3 };
+
+typedef struct {
+    int width, height;
+    const char *scenes[AA_MAX_SCENES];
+    int scene_count;
+    unsigned seed;
+} aa_request;
+
+typedef struct {
+    const char *scene, *technique, *filter;
+    double rmse, dssim;
+} aa_row;
+
+typedef struct {
+    const char *scene, *filter;
+    double truth16_rmse; /* 16 against 64 samples per pixel */
+} aa_truth_row;
+
+typedef struct {
+    aa_request request;
+    int row_count, truth_count;
+    aa_row rows[AA_MAX_SCENES * AA_TECHNIQUES * PIXEL_FILTER_COUNT];
+    aa_truth_row truth[AA_MAX_SCENES * PIXEL_FILTER_COUNT];
+} aa_result;
+
+/* Preview: 160 x 120; production 384 x 288; scenes boxes, menger, cornell. */
+aa_request aa_default_request(study_quality quality);
+
+/* The display value of linear radiance L. */
+float aa_display(float radiance);
+
+int aa_study(const study_context *ctx, const aa_request *rq, aa_result *out, gt_error *e);
+
+#endif
