@@ -128,6 +128,12 @@
 #define CH_DFG_A "dfg.A"
 #define CH_DFG_B "dfg.B"
 #define CH_DFG_E "dfg.E"
+/* Blue-noise dither textures (luts/blue_noise.h): one channel per seed. */
+#define CH_BLUE_NOISE_R "blue_noise.R"
+#define CH_BLUE_NOISE_G "blue_noise.G"
+#define CH_BLUE_NOISE_B "blue_noise.B"
+#define CH_BLUE_NOISE_A "blue_noise.A"
+#define CH_BLUE_NOISE_RGBA {CH_BLUE_NOISE_R, CH_BLUE_NOISE_G, CH_BLUE_NOISE_B, CH_BLUE_NOISE_A}
 
 /* ---- Header attributes -------------------------------------------------- */
 /* text */
