@@ -1,9 +1,11 @@
-/* INSIDE (Gjoel, GDC 2016): dithering and blue noise (studies/dither.h). */
+/* INSIDE (Gjoel, GDC 2016): dithering and blue noise (studies/dither.h), the
+ * bloom downsample's 13 -> 9 tap refit (studies/bloom.h). */
 #include <stdio.h>
 
 #include "cli/cli.h"
 #include "cli/cli_options.h"
 #include "cli/technique.h"
+#include "report/bloom_section.h"
 #include "report/dither_section.h"
 #include "studies/dither_check.h"
 
@@ -46,26 +48,14 @@ static int check_dither(int argc, char **argv)
         "a kind with a law is off by more than 5 standard errors.",
         options};
     long signals = 33, samples = 100000;
-    int status, failed = 0;
+    int status;
     dither_check_result r;
     gt_error e;
     if (cli_options_parse(&command, (void *[]){&signals, &samples}, argc, argv, &status) != 0)
         return status;
     if (dither_check_run((int)signals, (int)samples, 1, &r, &e) != 0)
         return cli_fail(&e);
-    printf("%-14s %12s %12s %12s %12s %12s\n", "dither", "|bias|/SE", "|var-law|/SE", "max |bias|", "min var", "max var");
-    for (int k = 0; k < DITHER_CHECK_KINDS; ++k) {
-        const dither_check_row *w = &r.rows[k];
-        int bad = w->has_law && (w->worst_bias_se > 5 || w->worst_variance_se > 5);
-        failed |= bad;
-        char law[32] = "           -";
-        if (w->has_law)
-            snprintf(law, sizeof law, "%12.2f", w->worst_variance_se);
-        printf("%-14s %12.2f %s %12.4f %12.4f %12.4f%s\n", dither_kind_name(w->kind), w->worst_bias_se, law,
-               w->worst_bias, w->min_variance, w->max_variance,
-               !w->has_law ? "  (no law: the talk's formula as written)" : bad ? "  FAIL" : "");
-    }
-    return failed ? EXIT_INTERNAL_ERROR : EXIT_OK;
+    return dither_check_print(&r, stdout) ? EXIT_INTERNAL_ERROR : EXIT_OK;
 }
 
 static int all_stage_dither(report_context *ctx, gt_error *e)
@@ -75,11 +65,19 @@ static int all_stage_dither(report_context *ctx, gt_error *e)
     return dither_study(&ctx->study, &rq, &r, e) != 0 ? -1 : dither_section(ctx, &r, e);
 }
 
+static int all_stage_bloom(report_context *ctx, gt_error *e)
+{
+    static bloom_result r;
+    bloom_request rq = bloom_default_request(ctx->study.quality);
+    return bloom_study(&ctx->study, &rq, &r, e) != 0 ? -1 : bloom_section(ctx, &r, e);
+}
+
 static const cli_subcommand luts[] = {{"blue-noise", lut_blue_noise, "void-and-cluster blue noise: EXR, PNG"},
                                       {NULL, NULL, NULL}};
 static const cli_subcommand checks[] = {{"dither", check_dither, "RPDF/TPDF error moments against their laws"},
                                         {NULL, NULL, NULL}};
 static const all_stage stages[] = {{"dither", "dithering and blue noise (INSIDE)", all_stage_dither, DITHER_DIR, NULL},
+                                   {"bloom", "bloom 13 -> 9 tap refit (INSIDE)", all_stage_bloom, BLOOM_DIR, NULL},
                                    {NULL, NULL, NULL, NULL, NULL}};
 
 const technique technique_inside = {

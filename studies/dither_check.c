@@ -46,3 +46,22 @@ int dither_check_run(int signals, int samples, unsigned seed, dither_check_resul
         check_kind(kinds[k], signals, samples, seed, &out->rows[k]);
     return 0;
 }
+
+int dither_check_print(const dither_check_result *r, FILE *out)
+{
+    int failed = 0;
+    fprintf(out, "%-14s %12s %12s %12s %12s %12s\n", "dither", "|bias|/SE", "|var-law|/SE", "max |bias|", "min var",
+            "max var");
+    for (int k = 0; k < DITHER_CHECK_KINDS; ++k) {
+        const dither_check_row *w = &r->rows[k];
+        int bad = w->has_law && (w->worst_bias_se > 5 || w->worst_variance_se > 5);
+        char law[32] = "           -";
+        if (w->has_law)
+            snprintf(law, sizeof law, "%12.2f", w->worst_variance_se);
+        fprintf(out, "%-14s %12.2f %s %12.4f %12.4f %12.4f%s\n", dither_kind_name(w->kind), w->worst_bias_se, law,
+                w->worst_bias, w->min_variance, w->max_variance,
+                !w->has_law ? "  (no law: the talk's formula as written)" : bad ? "  FAIL" : "");
+        failed |= bad;
+    }
+    return failed;
+}

@@ -7,6 +7,8 @@
 #ifndef GTLAB_STUDIES_DITHER_CHECK_H
 #define GTLAB_STUDIES_DITHER_CHECK_H
 
+#include <stdio.h>
+
 #include "core/error.h"
 #include "realtime/dither.h"
 
@@ -28,5 +30,9 @@ typedef struct {
 
 /* Returns 0 or -1 with e (signals < 2 or samples < 100). */
 int dither_check_run(int signals, int samples, unsigned seed, dither_check_result *out, gt_error *e);
+
+/* The table `gtlab check dither` prints; returns 1 if a kind with a law is
+ * off by more than 5 standard errors, else 0. */
+int dither_check_print(const dither_check_result *r, FILE *out);
 
 #endif

@@ -73,27 +73,33 @@ static int tone_map(const image *ref, dither_input *out, gt_error *e)
     return 0;
 }
 
-int dither_render(const study_context *ctx, const dither_request *rq, dither_input *out, gt_error *e)
+int dither_sphere_light_reference(const study_context *ctx, int width, int height, int spp, unsigned seed, image *out,
+                                  gt_error *e)
 {
     scene s;
     camera cam = {v3(0.0f, 3.0f, 7.0f), v3(0.0f, 0.7f, 0.0f), v3(0.0f, 1.0f, 0.0f), (float)(40.0 * M_PI / 180.0),
-                  rq->render_width, rq->render_height};
+                  width, height};
     if (scene_load("builtin:sphere-on-plane", &s, e) != 0)
         return -1;
     reference_request req;
     memset(&req, 0, sizeof req);
     req.quantity = QUANTITY_SPHERE_LIGHT;
-    req.sampling = (sampling_settings){.spp = rq->render_spp, .seed = rq->seed, .threads = ctx->threads};
+    req.sampling = (sampling_settings){.spp = spp, .seed = seed, .threads = ctx->threads};
     req.normals = NORMAL_SHADING;
     req.sphere_light = (sphere_light_settings){v3(-2.5f, 4.0f, 1.5f), 0.5f, 5.0f, 0};
     render_stats stats;
-    image ref;
-    int rc = reference_render(&s, "builtin:sphere-on-plane", &cam, &req, &ref, &stats, e);
+    int rc = reference_render(&s, "builtin:sphere-on-plane", &cam, &req, out, &stats, e);
     scene_free(&s);
-    if (rc == 0) {
-        rc = tone_map(&ref, out, e);
-        image_free(&ref);
-    }
+    return rc;
+}
+
+int dither_render(const study_context *ctx, const dither_request *rq, dither_input *out, gt_error *e)
+{
+    image ref;
+    if (dither_sphere_light_reference(ctx, rq->render_width, rq->render_height, rq->render_spp, rq->seed, &ref, e) != 0)
+        return -1;
+    int rc = tone_map(&ref, out, e);
+    image_free(&ref);
     return rc;
 }
 

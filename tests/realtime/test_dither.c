@@ -11,6 +11,8 @@
  *  - remap_tri's distribution: its CDF on a fine grid of v is the triangle's;
  *  - UNORM and R11G11B10 rounding against an independent brute force over
  *    every representable small float (ties to the even mantissa);
+ *  - Bayer's 8 x 8 matrix: the published first row 0 32 8 40 2 34 10 42 and
+ *    each index once;
  *  - banding: an undithered 4-LSB ramp over 256 pixels has runs of 64, the
  *    TPDF-dithered one (p = 3/4 of keeping a value at integers) under a third. */
 #include <math.h>
@@ -18,6 +20,7 @@
 #include "luts/blue_noise.h"
 #include "metrics/dither_metrics.h"
 #include "realtime/dither.h"
+#include "realtime/dither_patterns.h"
 #include "tests/check.h"
 
 #define SAMPLES 40000
@@ -148,8 +151,24 @@ static void check_banding(void)
     CHECK_MSG(dither_longest_run(dithered, W, H) <= 64 / 3, "dithered run %d", dither_longest_run(dithered, W, H));
 }
 
+/* Bayer's 8 x 8 matrix: its published first row, and every index once. */
+static void check_bayer(void)
+{
+    static const int first_row[8] = {0, 32, 8, 40, 2, 34, 10, 42};
+    int seen[64] = {0};
+    for (int x = 0; x < 8; ++x)
+        CHECK(dither_bayer8(x, 0) == (first_row[x] + 0.5) / 64.0);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x)
+            seen[(int)(dither_bayer8(x, y) * 64.0)]++;
+    for (int k = 0; k < 64; ++k)
+        CHECK(seen[k] == 1);
+    CHECK(dither_bayer8(3, 5) == dither_bayer8(11, 13));
+}
+
 int main(void)
 {
+    check_bayer();
     check_signal_independent_variance(DITHER_TPDF_SUM, DITHER_FLOOR);
     check_signal_independent_variance(DITHER_TPDF_SUM, DITHER_ROUND);
     check_signal_independent_variance(DITHER_TPDF_REMAP, DITHER_FLOOR);
