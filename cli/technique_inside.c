@@ -1,10 +1,11 @@
 /* INSIDE (Gjoel, GDC 2016): dithering and blue noise (studies/dither.h), the
- * bloom downsample's 13 -> 9 tap refit (studies/bloom.h). */
+ * bloom downsample's 13 -> 9 tap refit (studies/bloom.h), AO decals (studies/ao_decals.h). */
 #include <stdio.h>
 
 #include "cli/cli.h"
 #include "cli/cli_options.h"
 #include "cli/technique.h"
+#include "report/ao_decals_section.h"
 #include "report/bloom_section.h"
 #include "report/dither_section.h"
 #include "studies/dither_check.h"
@@ -16,9 +17,8 @@ static int lut_blue_noise(int argc, char **argv)
                                          CLI_INT("seed", "S", 0, 4294967295.0, "seed"), CLI_OUTPUT_DIR, CLI_END};
     static const cli_command command = {
         "lut blue-noise",
-        "Void-and-cluster blue noise (Ulichney 1993, sigma 1.5, luts/blue_noise.h), as INSIDE bakes into\n"
-        "256^2 RGBA8 (four seeds). Writes DIR/blue_noise_N.exr (float) and .png (8-bit for one channel,\n"
-        "else 16-bit). Same size, channels and seed: the same bits.",
+        "Void-and-cluster blue noise (Ulichney 1993, luts/blue_noise.h), as INSIDE bakes into 256^2 RGBA8\n"
+        "(4 seeds): DIR/blue_noise_N.exr and .png (8-bit if 1 channel, else 16). Same inputs, same bits.",
         options};
     long size = 256, channels = 4, seed = 1;
     const char *dir = NULL;
@@ -26,13 +26,10 @@ static int lut_blue_noise(int argc, char **argv)
     if (cli_options_parse(&command, (void *[]){&size, &channels, &seed, &dir}, argc, argv, &status) != 0 ||
         (status = cli_make_output_dir(dir)) != 0)
         return status;
-    blue_noise_texture t;
     gt_error e;
     char stem[4096];
-    snprintf(stem, sizeof stem, "%s/blue_noise_%ld", dir, size);
-    if (blue_noise_build((int)size, (int)channels, (uint64_t)seed, &t, &e) != 0 || blue_noise_write(&t, stem, &e) != 0)
+    if (blue_noise_make(dir, (int)size, (int)channels, (uint64_t)seed, stem, sizeof stem, &e) != 0)
         return cli_fail(&e);
-    blue_noise_free(&t);
     printf("%s.{exr,png}: %ld^2, %ld channel(s)\n", stem, size, channels);
     return EXIT_OK;
 }
@@ -43,9 +40,8 @@ static int check_dither(int argc, char **argv)
                                          CLI_INT("samples", "N", 100, 100000000, "dither draws per signal"), CLI_END};
     static const cli_command command = {
         "check dither",
-        "Moments of the floor-quantisation error of each dither (realtime/dither.h) against the laws of\n"
-        "nonsubtractive dither: mean 0; variance 1/4 LSB^2 (TPDF of 2 LSB) or f(1-f) (RPDF). Fails when\n"
-        "a kind with a law is off by more than 5 standard errors.",
+        "Floor-quantisation error moments of each dither (realtime/dither.h) against mean 0 and variance\n"
+        "1/4 LSB^2 (TPDF of 2 LSB) or f(1-f) (RPDF); fails beyond 5 standard errors.",
         options};
     long signals = 33, samples = 100000;
     int status;
@@ -72,12 +68,20 @@ static int all_stage_bloom(report_context *ctx, gt_error *e)
     return bloom_study(&ctx->study, &rq, &r, e) != 0 ? -1 : bloom_section(ctx, &r, e);
 }
 
+static int all_stage_ao_decals(report_context *ctx, gt_error *e)
+{
+    static ao_decals_result r;
+    ao_decals_request rq = ao_decals_default_request(ctx->study.quality);
+    return ao_decals_study(&ctx->study, &rq, &r, e) != 0 ? -1 : ao_decals_section(ctx, &r, e);
+}
+
 static const cli_subcommand luts[] = {{"blue-noise", lut_blue_noise, "void-and-cluster blue noise: EXR, PNG"},
                                       {NULL, NULL, NULL}};
 static const cli_subcommand checks[] = {{"dither", check_dither, "RPDF/TPDF error moments against their laws"},
                                         {NULL, NULL, NULL}};
 static const all_stage stages[] = {{"dither", "dithering and blue noise (INSIDE)", all_stage_dither, DITHER_DIR, NULL},
                                    {"bloom", "bloom 13 -> 9 tap refit (INSIDE)", all_stage_bloom, BLOOM_DIR, NULL},
+                                   {"ao-decals", "AO decals (INSIDE)", all_stage_ao_decals, AO_DECALS_DIR, NULL},
                                    {NULL, NULL, NULL, NULL, NULL}};
 
 const technique technique_inside = {

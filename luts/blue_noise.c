@@ -210,3 +210,16 @@ int blue_noise_write(const blue_noise_texture *t, const char *stem, gt_error *e)
         return image_write_data8(path, planes[0], t->size, t->size, "void-and-cluster blue noise", e);
     return image_write_data16(path, planes, t->channel_count, t->size, t->size, "void-and-cluster blue noise", e);
 }
+
+int blue_noise_make(const char *dir, int size, int channel_count, uint64_t seed, char *stem, size_t stem_size,
+                    gt_error *e)
+{
+    blue_noise_texture t;
+    if ((size_t)snprintf(stem, stem_size, "%s/blue_noise_%d", dir, size) >= stem_size)
+        return gt_error_set(e, dir, "path too long");
+    if (blue_noise_build(size, channel_count, seed, &t, e) != 0)
+        return -1;
+    int rc = blue_noise_write(&t, stem, e);
+    blue_noise_free(&t);
+    return rc;
+}

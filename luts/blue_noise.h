@@ -25,6 +25,7 @@
 #ifndef GTLAB_LUTS_BLUE_NOISE_H
 #define GTLAB_LUTS_BLUE_NOISE_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "core/error.h"
@@ -56,5 +57,10 @@ void blue_noise_free(blue_noise_texture *t);
 /* Writes <stem>.exr (float channels R, G, B, A: the schema's names) and
  * <stem>.png (16-bit, or 8-bit for one channel, as INSIDE's RGBA8). */
 int blue_noise_write(const blue_noise_texture *t, const char *stem, gt_error *e);
+
+/* Builds a texture, writes it as <dir>/blue_noise_<size>.{exr,png} and
+ * frees it; the stem written goes to stem (size bytes). Returns 0 or -1 with e. */
+int blue_noise_make(const char *dir, int size, int channel_count, uint64_t seed, char *stem, size_t stem_size,
+                    gt_error *e);
 
 #endif

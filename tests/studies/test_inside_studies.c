@@ -10,9 +10,13 @@
  * weight of 1 and the free one does not, the Gaussian is met to 1e-9; off
  * half resolution is worse than at it; the pyramid's levels are halved
  * sizes with exact_half set only where both sides halve; the shaders exist;
- * 1 and 2 threads give the same numbers. */
+ * 1 and 2 threads give the same numbers.
+ * AO decals: the exact sphere within 4 s.e. of the reference on the floor
+ * (equal to Quilez's there), the refit better than the light's sign, which
+ * is better than the published sign. */
 #include <string.h>
 
+#include "studies/ao_decals.h"
 #include "studies/bloom.h"
 #include "studies/dither.h"
 #include "tests/check.h"
@@ -76,6 +80,21 @@ static void check_bloom(const char *dir, bloom_result *r, int threads)
     CHECK(file_exists(path));
 }
 
+static void check_ao_decals(const char *dir)
+{
+    study_context ctx = {dir, QUALITY_PREVIEW, 2};
+    ao_decals_request rq = {24, 128, 3};
+    static ao_decals_result r;
+    gt_error e;
+    CHECK_MSG(ao_decals_study(&ctx, &rq, &r, &e) == 0, "%s", e.message);
+    CHECK(r.floor_pixels[0] > 200 && r.floor_pixels[1] > 100);
+    for (int v = 0; v < AO_DECAL_VIEWS; ++v) {
+        CHECK_MSG(r.rows[0].outlier_share[v] <= 0.01, "exact sphere, view %d: %g", v, r.rows[0].outlier_share[v]);
+        CHECK_NEAR(r.rows[0].rmse[v], r.rows[1].rmse[v], 1e-6); /* the sphere is above every floor point's horizon */
+        CHECK(r.rows[4].rmse[v] < r.rows[3].rmse[v] && r.rows[3].rmse[v] < r.rows[2].rmse[v]);
+    }
+}
+
 int main(void)
 {
     char dir[2048];
@@ -83,6 +102,7 @@ int main(void)
     study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2};
     CHECK(study_make_dir(&top, "inside_studies", dir, sizeof dir, &e) == 0);
     check_dither(dir);
+    check_ao_decals(dir);
     static bloom_result one, two;
     check_bloom(dir, &two, 2);
     check_bloom(dir, &one, 1);
