@@ -13,6 +13,7 @@
     T(hdr_precision)        \
     T(color_grading)        \
     T(anti_aliasing)        \
+    T(inside)               \
     T(throughput)
 
 #define DECLARE(name) extern const technique technique_##name;

@@ -130,6 +130,12 @@
 #define CH_DFG_E "dfg.E"
 /* The best-fit normals table (luts/best_fit_normals.h): the scale t per texel. */
 #define CH_BEST_FIT_SCALE "best_fit.t"
+/* Blue-noise dither textures (luts/blue_noise.h): one channel per seed. */
+#define CH_BLUE_NOISE_R "blue_noise.R"
+#define CH_BLUE_NOISE_G "blue_noise.G"
+#define CH_BLUE_NOISE_B "blue_noise.B"
+#define CH_BLUE_NOISE_A "blue_noise.A"
+#define CH_BLUE_NOISE_RGBA {CH_BLUE_NOISE_R, CH_BLUE_NOISE_G, CH_BLUE_NOISE_B, CH_BLUE_NOISE_A}
 
 /* ---- Header attributes -------------------------------------------------- */
 /* text */

@@ -1,0 +1,44 @@
+/* INSIDE's analytic AO decals against gtlab's cosine AO reference (issue 17
+ * item 1, partial): builtin:sphere-on-plane (sphere of radius 1 at (0, 1.5,
+ * 0)) seen from two cameras, floor pixels only (the sphere is the only
+ * occluder; V_d = 1 - a). Variants: the exact sphere form (horizon-clipped;
+ * here the whole sphere is above every floor point's horizon), Quilez's
+ * sphere, the published point decal at radius 3 with the talk's sign (pos =
+ * p - centre) and with the light's sign (pos = centre - p), and the point
+ * decal refitted by Ceres (radius, falloff exponent, wrap, intensity) on
+ * view A and scored on view B (held out: other floor points of the same
+ * configuration, not another configuration). Per row: RMSE and worst error
+ * of V_d, DSSIM over the floor, and the share of floor pixels beyond 4 of the
+ * reference's standard errors. */
+#ifndef GTLAB_STUDIES_AO_DECALS_H
+#define GTLAB_STUDIES_AO_DECALS_H
+
+#include "fitters/ao_decals_fit.h"
+#include "studies/study.h"
+
+#define AO_DECALS_DIR "ao_decals"
+
+enum { AO_DECAL_VARIANTS = 5, AO_DECAL_VIEWS = 2 };
+
+typedef struct {
+    int size, spp;
+    unsigned seed;
+} ao_decals_request;
+
+typedef struct {
+    const char *variant;
+    double rmse[AO_DECAL_VIEWS], worst[AO_DECAL_VIEWS], dssim[AO_DECAL_VIEWS], outlier_share[AO_DECAL_VIEWS];
+} ao_decal_row;
+
+typedef struct {
+    ao_decals_request request;
+    ao_decal_row rows[AO_DECAL_VARIANTS];
+    ao_decal_fit_result fit; /* on view A */
+    size_t floor_pixels[AO_DECAL_VIEWS];
+} ao_decals_result;
+
+ao_decals_request ao_decals_default_request(study_quality quality);
+
+int ao_decals_study(const study_context *ctx, const ao_decals_request *rq, ao_decals_result *out, gt_error *e);
+
+#endif

@@ -1,0 +1,111 @@
+/* studies/dither and studies/bloom: the INSIDE sections' numbers without their
+ * prose, at small sizes.
+ * Dither: rows in the published order; TPDF rows have error variance 1/4 and
+ * a modulation amplitude within 5 of its standard errors of 0 on the
+ * gradient, RPDF rows near 1; no-dither has the longest runs; the talk's
+ * tex / 255 into a rounding target is biased by +1/2 LSB; R11G11B10 TPDF
+ * variance 1/4 +- 0.03 with no bias, undithered biased; the blue-noise files
+ * exist and the texture is blue (low rings below a tenth of white's).
+ * Bloom: the 13-tap fits end inside their bounds, the held fit keeps a total
+ * weight of 1 and the free one does not, the Gaussian is met to 1e-9; off
+ * half resolution is worse than at it; the pyramid's levels are halved
+ * sizes with exact_half set only where both sides halve; the shaders exist;
+ * 1 and 2 threads give the same numbers.
+ * AO decals: the exact sphere within 4 s.e. of the reference on the floor
+ * (equal to Quilez's there), the refit better than the light's sign, which
+ * is better than the published sign. */
+#include <string.h>
+
+#include "studies/ao_decals.h"
+#include "studies/bloom.h"
+#include "studies/dither.h"
+#include "tests/check.h"
+#include "tests/test_files.h"
+
+static const dither_row *row_of(const dither_image_result *im, const char *label)
+{
+    for (int k = 0; k < im->row_count; ++k)
+        if (strcmp(im->rows[k].label, label) == 0)
+            return &im->rows[k];
+    return NULL;
+}
+
+static void check_dither(const char *dir)
+{
+    study_context ctx = {dir, QUALITY_PREVIEW, 2};
+    dither_request rq = {512, 64, 48, 32, 4, 16, 1};
+    static dither_result r;
+    gt_error e;
+    char path[4096];
+    CHECK_MSG(dither_study(&ctx, &rq, &r, &e) == 0, "%s", e.message);
+    const dither_image_result *g = &r.images[0];
+    CHECK(g->row_count == 11 && strcmp(g->rows[0].label, "none") == 0);
+    for (int p = 0; p < DITHER_PATTERN_COUNT; ++p) {
+        const dither_row *rp = &g->rows[1 + 2 * p], *tp = &g->rows[2 + 2 * p];
+        CHECK_NEAR(tp->variance, 0.25, 0.01);
+        CHECK_MSG(fabs(tp->modulation_amplitude) < 5 * tp->modulation_amplitude_se + 0.03, "%s a %g se %g", tp->label,
+                  tp->modulation_amplitude, tp->modulation_amplitude_se);
+        CHECK_MSG(fabs(rp->modulation_amplitude - 1.0) < 0.1, "%s a %g", rp->label, rp->modulation_amplitude);
+        CHECK(g->rows[0].longest_run > tp->longest_run);
+    }
+    const dither_row *written = row_of(g, "blue rpdf (as written)");
+    CHECK(written && fabs(written->bias - 0.5) < 0.02);
+    CHECK(fabs(r.small_float[2].best_variance - 0.25) < 0.03 && fabs(r.small_float[2].worst_variance - 0.25) < 0.03);
+    CHECK(r.small_float[2].worst_bias < 0.03 && r.small_float[0].worst_bias > 0.4);
+    CHECK(r.blue_low_ring_power < 0.1 && r.blue_high_ring_power > 0.9);
+    snprintf(path, sizeof path, "%s/%s/blue_noise_16.exr", dir, DITHER_DIR);
+    CHECK(file_exists(path));
+}
+
+static void check_bloom(const char *dir, bloom_result *r, int threads)
+{
+    study_context ctx = {dir, QUALITY_PREVIEW, threads};
+    bloom_request rq = {96, 54, 2, 3, 1};
+    gt_error e;
+    char path[4096];
+    CHECK_MSG(bloom_study(&ctx, &rq, r, &e) == 0, "%s", e.message);
+    double total[BLOOM_FITS] = {0};
+    for (int f = 0; f < BLOOM_FITS; ++f) {
+        CHECK(r->targets[f].fit.at_bound == 0);
+        for (int k = 0; k < BLOOM_FIT_TAPS; ++k)
+            total[f] += r->targets[f].fit.taps[k].w;
+        CHECK(r->targets[f].worst_odd_mip > r->targets[f].fit.worst_error);
+    }
+    CHECK(total[0] < 0.995 && fabs(total[1] - 1.0) < 1e-12);
+    CHECK(r->targets[2].fit.worst_error < 1e-9);
+    CHECK(r->exact_levels_1080 == 3 && r->exact_levels_1088 == 6);
+    CHECK(r->level_count == 2 && r->levels[0].width == 48 && r->levels[0].height == 27 && r->levels[0].exact_half);
+    CHECK(r->levels[1].width == 24 && r->levels[1].height == 13 && !r->levels[1].exact_half);
+    snprintf(path, sizeof path, "%s/%s/bloom_9tap.glsl", dir, BLOOM_DIR);
+    CHECK(file_exists(path));
+}
+
+static void check_ao_decals(const char *dir)
+{
+    study_context ctx = {dir, QUALITY_PREVIEW, 2};
+    ao_decals_request rq = {24, 128, 3};
+    static ao_decals_result r;
+    gt_error e;
+    CHECK_MSG(ao_decals_study(&ctx, &rq, &r, &e) == 0, "%s", e.message);
+    CHECK(r.floor_pixels[0] > 200 && r.floor_pixels[1] > 100);
+    for (int v = 0; v < AO_DECAL_VIEWS; ++v) {
+        CHECK_MSG(r.rows[0].outlier_share[v] <= 0.01, "exact sphere, view %d: %g", v, r.rows[0].outlier_share[v]);
+        CHECK_NEAR(r.rows[0].rmse[v], r.rows[1].rmse[v], 1e-6); /* the sphere is above every floor point's horizon */
+        CHECK(r.rows[4].rmse[v] < r.rows[3].rmse[v] && r.rows[3].rmse[v] < r.rows[2].rmse[v]);
+    }
+}
+
+int main(void)
+{
+    char dir[2048];
+    gt_error e;
+    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2};
+    CHECK(study_make_dir(&top, "inside_studies", dir, sizeof dir, &e) == 0);
+    check_dither(dir);
+    check_ao_decals(dir);
+    static bloom_result one, two;
+    check_bloom(dir, &two, 2);
+    check_bloom(dir, &one, 1);
+    CHECK(memcmp(one.levels, two.levels, sizeof one.levels) == 0);
+    return check_report("test_inside_studies");
+}
