@@ -148,31 +148,48 @@ static void density_from(const atmosphere_solution *s, const double *W, const do
     }
 }
 
-/* \int_0^d T(x, x_s) field(x_s) ds by the fixed rule (FAST) into out. */
-static void ray_integral_by_rule(const atmosphere_solution *s, const double *field, double r, double mu,
-                                 double mu_s, double out[3])
-{
-    double x[ATMOSPHERE_RAY_NODES], w[ATMOSPHERE_RAY_NODES];
-    atmosphere_ray_rule(atmosphere_distance_to_boundary(&s->model, r, mu), x, w);
-    out[0] = out[1] = out[2] = 0.0;
-    for (int n = 0; n < ATMOSPHERE_RAY_NODES; ++n) {
-        double r_s = atmosphere_radius_at(r, mu, x[n]), T[3], J[3];
-        double mu_at = fmax(-1.0, fmin(1.0, (r * mu + x[n]) / r_s));
-        double mu_s_at = fmax(-1.0, fmin(1.0, (r * mu_s + x[n] * mu * mu_s) / r_s));
-        atmosphere_transmittance(s, ATMOSPHERE_FAST, r, mu, x[n], T);
-        atmosphere_ms_lookup(&s->model, field, r_s, mu_at, mu_s_at, J);
-        for (int c = 0; c < 3; ++c)
-            out[c] += w[n] * T[c] * J[c];
-    }
-}
+/* The fixed ray rule's nodes of every grid point's ray, computed once for
+ * all orders: the weight times the transmittance from the grid point, and
+ * where the node is, (r_s, mu, mu_s) (floats: 24 B a node). */
+typedef struct {
+    float wT[3], r, mu, mu_s;
+} ray_node;
 
-static void next_order(const atmosphere_solution *s, const double *J, double *L, int threads)
+static void fill_ray_nodes(const atmosphere_solution *s, ray_node *nodes, int threads)
 {
 #pragma omp parallel for schedule(dynamic, 4) num_threads(threads)
     for (int q = 0; q < NR * NMU * NS; ++q) {
         int k = q / (NMU * NS), a = q / NS % NMU, mm = q % NS;
-        ray_integral_by_rule(s, J, atmosphere_ms_radius(&s->model, k), atmosphere_ms_mu(a), atmosphere_ms_mu_s(mm),
-                             L + 3 * q);
+        double r = atmosphere_ms_radius(&s->model, k), mu = atmosphere_ms_mu(a), mu_s = atmosphere_ms_mu_s(mm);
+        double x[ATMOSPHERE_RAY_NODES], w[ATMOSPHERE_RAY_NODES];
+        atmosphere_ray_rule(atmosphere_distance_to_boundary(&s->model, r, mu), x, w);
+        for (int n = 0; n < ATMOSPHERE_RAY_NODES; ++n) {
+            ray_node *node = nodes + (size_t)q * ATMOSPHERE_RAY_NODES + n;
+            double r_s = atmosphere_radius_at(r, mu, x[n]), T[3];
+            atmosphere_transmittance(s, ATMOSPHERE_FAST, r, mu, x[n], T);
+            for (int c = 0; c < 3; ++c)
+                node->wT[c] = (float)(w[n] * T[c]);
+            node->r = (float)r_s;
+            node->mu = (float)fmax(-1.0, fmin(1.0, (r * mu + x[n]) / r_s));
+            node->mu_s = (float)fmax(-1.0, fmin(1.0, (r * mu_s + x[n] * mu * mu_s) / r_s));
+        }
+    }
+}
+
+/* L(q) = sum over q's ray nodes of wT J(node): the next order's radiance. */
+static void next_order(const atmosphere_solution *s, const ray_node *nodes, const double *J, double *L, int threads)
+{
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (int q = 0; q < NR * NMU * NS; ++q) {
+        double sum[3] = {0, 0, 0}, v[3];
+        for (int n = 0; n < ATMOSPHERE_RAY_NODES; ++n) {
+            const ray_node *node = nodes + (size_t)q * ATMOSPHERE_RAY_NODES + n;
+            atmosphere_ms_lookup(&s->model, J, node->r, node->mu, node->mu_s, v);
+            for (int c = 0; c < 3; ++c)
+                sum[c] += node->wT[c] * v[c];
+        }
+        for (int c = 0; c < 3; ++c)
+            L[3 * q + c] = sum[c];
     }
 }
 
@@ -189,19 +206,21 @@ int atmosphere_multiple_scattering_solve(atmosphere_solution *s, int threads)
     size_t n = (size_t)NR * NMU * NS * 3;
     double *W = malloc(sizeof *W * 2 * NMU * NMU), *C = malloc(sizeof *C * 2 * NMU * NS);
     double *L = malloc(sizeof *L * n), *J = malloc(sizeof *J * n);
-    int rc = W && C && L && J ? 0 : -1;
+    ray_node *nodes = malloc(sizeof *nodes * (n / 3) * ATMOSPHERE_RAY_NODES);
+    int rc = W && C && L && J && nodes ? 0 : -1;
     if (rc == 0) {
         fill_kernels(&s->model, W, C, threads);
+        fill_ray_nodes(s, nodes, threads);
         first_order(s, C, L, threads);
         s->order_mean[1] = green_mean(L);
         for (int order = 2; order <= ATMOSPHERE_ORDERS; ++order) {
             density_from(s, W, L, J, threads);
             for (size_t q = 0; q < n; ++q)
                 s->density[q] += J[q];
-            next_order(s, J, L, threads);
+            next_order(s, nodes, J, L, threads);
             s->order_mean[order] = green_mean(L);
         }
     }
-    free(W), free(C), free(L), free(J);
+    free(W), free(C), free(L), free(J), free(nodes);
     return rc;
 }
