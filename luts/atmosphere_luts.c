@@ -179,6 +179,39 @@ int atmosphere_luts_build(atmosphere_luts *luts, const atmosphere_model *m, cons
     return rc;
 }
 
+/* The solution of blend t among `count`, or NULL. */
+static const atmosphere_solution *solution_of(const atmosphere_solution *solutions, int count, double t)
+{
+    for (int k = 0; k < count; ++k)
+        if (solutions[k].t == t)
+            return &solutions[k];
+    return NULL;
+}
+
+int atmosphere_luts_build_from(atmosphere_luts *luts, const atmosphere_solution *solutions, int count,
+                               const atmosphere_lut_sizes *sizes, int threads, char *msg, size_t msg_size)
+{
+    *luts = (atmosphere_luts){.model = solutions[0].model, .max_altitude = ATMOSPHERE_LUT_MAX_ALTITUDE, .sizes = *sizes};
+    if (atmosphere_lut_sizes_check(sizes, msg, msg_size) != 0)
+        return -1;
+    double start = omp_get_wtime(), blends[MAX_BLENDS];
+    int n = distinct_blends(sizes, blends);
+    for (int k = 0; k < n; ++k)
+        if (!solution_of(solutions, count, blends[k])) {
+            snprintf(msg, msg_size, "atmosphere LUTs: no precomputed solution for t = %.9g", blends[k]);
+            return -1;
+        }
+    if (allocate(luts) != 0) {
+        atmosphere_luts_free(luts);
+        snprintf(msg, msg_size, "atmosphere LUTs: out of memory");
+        return -1;
+    }
+    for (int k = 0; k < n; ++k)
+        fill_blend(luts, solution_of(solutions, count, blends[k]), threads);
+    luts->build_seconds = omp_get_wtime() - start;
+    return 0;
+}
+
 void atmosphere_luts_free(atmosphere_luts *luts)
 {
     for (int table = 0; table < ATMOSPHERE_TABLES; ++table)

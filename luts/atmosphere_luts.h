@@ -41,10 +41,11 @@
 #define GTLAB_LUTS_ATMOSPHERE_LUTS_H
 
 #include "luts/atmosphere_model.h"
+#include "luts/atmosphere_scattering.h"
 
 #define ATMOSPHERE_LUT_THETA_S_MAX (96.0 * 3.14159265358979323846 / 180.0)
 #define ATMOSPHERE_LUT_THETA_V_MAX 3.14159265358979323846
-#define ATMOSPHERE_LUT_MAX_ALTITUDE 8000.0 /* the talk: "games on the ground or near the ground" */
+#define ATMOSPHERE_LUT_MAX_ALTITUDE 2000.0 /* the talk: sizes "optimized for games on the ground or near the ground" */
 enum { ATMOSPHERE_LUT_MAX_AXIS = 256 };
 
 enum { ATMOSPHERE_AXIS_THETA_S, ATMOSPHERE_AXIS_THETA_V, ATMOSPHERE_AXIS_ALTITUDE, ATMOSPHERE_AXIS_WEATHER };
@@ -80,6 +81,11 @@ const char *atmosphere_luts_description(void);
  * out of memory). Bits independent of `threads`. */
 int atmosphere_luts_build(atmosphere_luts *luts, const atmosphere_model *m, const atmosphere_lut_sizes *sizes,
                           int threads, char *msg, size_t msg_size);
+/* The same from precomputed solutions (atmosphere_solve), one for each
+ * distinct t of the sizes' t axes, in any order (others unused): -1 with msg
+ * when one is missing. A sweep of sizes solves each blend once. */
+int atmosphere_luts_build_from(atmosphere_luts *luts, const atmosphere_solution *solutions, int count,
+                               const atmosphere_lut_sizes *sizes, int threads, char *msg, size_t msg_size);
 void atmosphere_luts_free(atmosphere_luts *luts);
 
 /* The value of an axis' grid point i of n. */

@@ -93,8 +93,11 @@ double atmosphere_multiple_scattering(const atmosphere_solution *s, atmosphere_m
                                       double mu_s, double tol, double out[ATMOSPHERE_CHANNELS]);
 /* The sky's mean radiance over the sphere of directions at r (no sun disc):
  * (1/2) \int_{-1}^{1} [sum_i Pbar_i(mu', mu_s) S_i + sum_{k>=2} L^k](r, mu', mu_s) dmu',
- * split at the horizon and at mu_s (FAST: 4 panels of 4-point Gauss-Legendre
- * per piece); tolerance and return as above. */
+ * split at the horizon and at mu_s, by 4-point Gauss-Legendre on equal
+ * panels of each piece: FAST 8 panels; otherwise 32, returning |32 panels -
+ * 16 panels| relative to E_sun beta_s^R(0) H_R / 4pi, with the inner ray
+ * integrals REFERENCE at `tol` (REFERENCE) or FAST (ADAPTIVE: the outer
+ * rule's error alone). */
 double atmosphere_sky_mean_radiance(const atmosphere_solution *s, atmosphere_method how, double r, double mu_s,
                                     double tol, double out[ATMOSPHERE_CHANNELS]);
 
