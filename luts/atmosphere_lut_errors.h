@@ -52,8 +52,12 @@ typedef struct {
     double max, rms, p95;
 } atmosphere_error_stats;
 
+/* The daytime subset: the sun at least 10 degrees above the horizon. */
+#define ATMOSPHERE_DAY_THETA_S (80.0 * 3.14159265358979323846 / 180.0)
+
 typedef struct {
     atmosphere_error_stats interpolation, quadrature, total;
+    atmosphere_error_stats day_total; /* total over the points with theta_s <= ATMOSPHERE_DAY_THETA_S */
 } atmosphere_table_error;
 
 /* The three tables' errors at the reference's points. */

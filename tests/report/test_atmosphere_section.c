@@ -1,9 +1,9 @@
 /* The atmosphere LUTs' section (report/atmosphere_section.c) from a results
  * struct made up here (no study runs): summary.json carries the rows' fields
- * exactly, and the claims table gets one row per table at the talk's size
- * whose verdict follows the 2% tolerance (or the quadrature's floor, when
- * larger): 0.5 refuted, 0.01 reproduced, 0.03 with a quadrature of 0.04
- * reproduced. */
+ * exactly, and the claims table gets two rows per table at the talk's size
+ * (all points, daytime points) whose verdict follows the 2% tolerance (or the
+ * quadrature's floor, when larger): 0.5 refuted, 0.005 reproduced, 0.01
+ * reproduced, 0.03 with a quadrature of 0.04 reproduced. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -26,6 +26,7 @@ static atmosphere_luts_result made_up(void)
         x->table = t, x->talk = 1, x->bytes = t == 0 ? 131072 : 4096;
         x->error.total.p95 = total[t], x->error.quadrature.p95 = quadrature[t];
         x->error.interpolation.p95 = total[t] * 0.999, x->error.interpolation.max = 1.0 / 3.0;
+        x->error.day_total.p95 = total[t] / 100.0;
         r.talk_row[t] = t, r.smallest_within[t] = t == 0 ? -1 : t;
     }
     return r;
@@ -49,10 +50,10 @@ int main(void)
     const cJSON *rows = cJSON_GetObjectItem(cJSON_GetObjectItem(ctx.summary, "atmosphere_luts"), "sizes");
     CHECK(cJSON_GetArraySize(rows) == 3);
     CHECK(cJSON_GetNumberValue(cJSON_GetObjectItem(cJSON_GetArrayItem(rows, 0), "interpolation_max")) == 1.0 / 3.0);
-    CHECK(claims.count == 3);
-    CHECK(claims.count == 3 && claims.rows[0].verdict == CLAIM_REFUTED);
-    CHECK(claims.count == 3 && claims.rows[1].verdict == CLAIM_REPRODUCED);
-    CHECK(claims.count == 3 && claims.rows[2].verdict == CLAIM_REPRODUCED && claims.rows[2].high == 0.04);
+    CHECK(claims.count == 6); /* each table: all points, then the daytime ones */
+    CHECK(claims.count == 6 && claims.rows[0].verdict == CLAIM_REFUTED && claims.rows[1].verdict == CLAIM_REPRODUCED);
+    CHECK(claims.count == 6 && claims.rows[2].verdict == CLAIM_REPRODUCED);
+    CHECK(claims.count == 6 && claims.rows[4].verdict == CLAIM_REPRODUCED && claims.rows[4].high == 0.04);
     cJSON_Delete(ctx.summary);
     report_free(&doc);
     return check_report("test_atmosphere_section");
