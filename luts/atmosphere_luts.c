@@ -191,7 +191,12 @@ static const atmosphere_solution *solution_of(const atmosphere_solution *solutio
 int atmosphere_luts_build_from(atmosphere_luts *luts, const atmosphere_solution *solutions, int count,
                                const atmosphere_lut_sizes *sizes, int threads, char *msg, size_t msg_size)
 {
-    *luts = (atmosphere_luts){.model = solutions[0].model, .max_altitude = ATMOSPHERE_LUT_MAX_ALTITUDE, .sizes = *sizes};
+    *luts = (atmosphere_luts){.max_altitude = ATMOSPHERE_LUT_MAX_ALTITUDE, .sizes = *sizes};
+    if (count < 1) {
+        snprintf(msg, msg_size, "atmosphere LUTs: no precomputed solution");
+        return -1;
+    }
+    luts->model = solutions[0].model;
     if (atmosphere_lut_sizes_check(sizes, msg, msg_size) != 0)
         return -1;
     double start = omp_get_wtime(), blends[MAX_BLENDS];
