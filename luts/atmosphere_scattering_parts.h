@@ -12,7 +12,13 @@ typedef struct {
     int i0, i1;
     double w;
 } atmosphere_grid_axis;
-atmosphere_grid_axis atmosphere_grid_axis_at(double x, int n);
+static inline atmosphere_grid_axis atmosphere_grid_axis_at(double x, int n)
+{
+    x = x > 0.0 ? (x < n - 1.0 ? x : n - 1.0) : 0.0; /* NaN: 0 */
+    int i0 = (int)x; /* x >= 0: truncation is floor */
+    atmosphere_grid_axis a = {i0, i0 + 1 < n ? i0 + 1 : i0, x - i0};
+    return a;
+}
 
 void atmosphere_transmittance_grid_fill(atmosphere_solution *s, int threads);
 

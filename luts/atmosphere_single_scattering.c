@@ -8,14 +8,6 @@
 #include "luts/atmosphere_scattering.h"
 #include "luts/atmosphere_scattering_parts.h"
 
-atmosphere_grid_axis atmosphere_grid_axis_at(double x, int n)
-{
-    x = fmin(fmax(x, 0.0), n - 1.0);
-    int i0 = (int)floor(x);
-    atmosphere_grid_axis a = {i0, i0 + 1 < n ? i0 + 1 : i0, x - i0};
-    return a;
-}
-
 /* d 4^-k and d (1 - 4^-k) for k = 1..5, d / 2, and the ends. */
 void atmosphere_ray_breaks(double d, double breaks[ATMOSPHERE_RAY_BREAKS])
 {
