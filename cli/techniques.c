@@ -14,6 +14,7 @@
     T(color_grading)        \
     T(anti_aliasing)        \
     T(inside)               \
+    T(atmosphere)           \
     T(throughput)
 
 #define DECLARE(name) extern const technique technique_##name;

@@ -136,6 +136,12 @@
 #define CH_BLUE_NOISE_B "blue_noise.B"
 #define CH_BLUE_NOISE_A "blue_noise.A"
 #define CH_BLUE_NOISE_RGBA {CH_BLUE_NOISE_R, CH_BLUE_NOISE_G, CH_BLUE_NOISE_B, CH_BLUE_NOISE_A}
+/* The Decima atmosphere LUTs (luts/atmosphere_luts.h): in-scatter per species
+ * without phase, the sun and the sky light reaching an altitude. */
+#define CH_ATMOSPHERE_INSCATTER_RAYLEIGH {"inscatter.rayleigh.R", "inscatter.rayleigh.G", "inscatter.rayleigh.B"}
+#define CH_ATMOSPHERE_INSCATTER_MIE {"inscatter.mie.R", "inscatter.mie.G", "inscatter.mie.B"}
+#define CH_ATMOSPHERE_SUN {"sun.R", "sun.G", "sun.B"}
+#define CH_ATMOSPHERE_SKY {"sky.R", "sky.G", "sky.B"}
 
 /* ---- Header attributes -------------------------------------------------- */
 /* text */
@@ -154,6 +160,7 @@
 #define ATTR_TECHNIQUE "gtlab.technique" /* approx output: the technique */
 #define ATTR_APPROX "gtlab.approx"       /* approx specular-occlusion: the variant's label */
 #define ATTR_LUT "gtlab.lut"             /* a LUT's axes and parametrisation */
+#define ATTR_LUT_SIZES "gtlab.lut.sizes" /* a multi-axis LUT's sizes, "N0 N1 N2 N3" (its image: N0*N1 x N2*N3) */
 #define ATTR_CONTROL_VARIATE "gtlab.control_variate" /* ao: "none" or "heightfield"; absent: none */
 /* integer */
 #define ATTR_SPP "gtlab.spp"

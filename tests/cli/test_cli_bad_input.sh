@@ -108,6 +108,9 @@ expect_error merge-overlap "small.exr: .*counted twice" "$work/merged.exr" -- me
 expect_error merge-different "other.exr: size 24x24 differs" "$work/merged.exr" -- merge "$work/small.exr" "$work/other.exr" -o "$work/merged.exr"
 expect_ok gbuffer-render render gbuffer --scene builtin:plane --width 16 --height 16 -o "$work/g.exr"
 expect_error merge-gbuffer "g.exr: no Monte Carlo accumulator" "$work/merged.exr" -- merge "$work/g.exr" "$work/small.exr" -o "$work/merged.exr"
+# lut atmosphere: an axis size out of range is refused before any work.
+expect_error lut-atmosphere-size "--theta-v: 0 is out of range" "$work/atmosphere/atmosphere_luts.h" -- lut atmosphere --theta-v 0 -o "$work/atmosphere"
+expect_error lut-atmosphere-size-high "--weathers: 300 is out of range" "$work/atmosphere/atmosphere_luts.h" -- lut atmosphere --weathers 300 -o "$work/atmosphere"
 # gtlab all --stages: unknown or empty lists are refused before any work;
 # one stage gives a report with that section only.
 expect_error all-unknown-stage "--stages: unknown stage 'fog'" "" -- all --stages ao,fog -o "$work/all"

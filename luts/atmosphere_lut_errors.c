@@ -1,0 +1,166 @@
+/* The atmosphere LUTs' errors at random points; see atmosphere_lut_errors.h. */
+#include "luts/atmosphere_lut_errors.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/vec3.h" /* M_PI */
+
+static const double SINGLE_TOLERANCE = 1e-7, MULTIPLE_TOLERANCE = 1e-6, FLOOR = 1e-3;
+
+/* splitmix64. */
+static double uniform01(unsigned long long *state)
+{
+    unsigned long long z = (*state += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return (double)((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+}
+
+/* The three tables' values at p by `how` into v[table][k]; returns the
+ * references' largest error estimate. */
+static double evaluate(const atmosphere_solution *s, atmosphere_method how, const atmosphere_lut_point *p,
+                       double v[ATMOSPHERE_TABLES][ATMOSPHERE_LUT_VALUES])
+{
+    double r = s->model.bottom_radius + p->altitude, mu = cos(p->theta_v), mu_s = cos(p->theta_s);
+    double S[ATMOSPHERE_SPECIES][ATMOSPHERE_CHANNELS], M[3], T[3], sky[3];
+    double e1 = atmosphere_single_scattering(s, how, r, mu, mu_s, SINGLE_TOLERANCE, S);
+    double e2 = atmosphere_multiple_scattering(s, how, r, mu, mu_s, MULTIPLE_TOLERANCE, M);
+    double pbar = atmosphere_azimuthal_phase(ATMOSPHERE_RAYLEIGH, s->model.mie_g, mu, mu_s);
+    atmosphere_transmittance_to_sun(s, how, r, mu_s, T);
+    double e3 = atmosphere_sky_mean_radiance(s, how == ATMOSPHERE_FAST ? how : ATMOSPHERE_ADAPTIVE, r, mu_s, 0.0, sky);
+    memset(v, 0, sizeof(double) * ATMOSPHERE_TABLES * ATMOSPHERE_LUT_VALUES);
+    for (int c = 0; c < 3; ++c) {
+        v[ATMOSPHERE_TABLE_INSCATTER][c] = S[ATMOSPHERE_RAYLEIGH][c] + M[c] / pbar;
+        v[ATMOSPHERE_TABLE_INSCATTER][3 + c] = S[ATMOSPHERE_MIE][c];
+        v[ATMOSPHERE_TABLE_SUN][c] = s->model.solar_irradiance[c] * T[c];
+        v[ATMOSPHERE_TABLE_SKY][c] = sky[c];
+    }
+    return fmax(e1, fmax(e2, e3));
+}
+
+static void draw_points(atmosphere_lut_reference *ref, const atmosphere_solution *solutions, int count, unsigned seed)
+{
+    unsigned long long state = (unsigned long long)seed * 0x2545f4914f6cdd1dull + 7u;
+    for (int i = 0; i < ref->count; ++i) {
+        atmosphere_lut_point *p = &ref->points[i];
+        p->theta_s = uniform01(&state) * ATMOSPHERE_LUT_THETA_S_MAX;
+        p->altitude = uniform01(&state) * ATMOSPHERE_LUT_MAX_ALTITUDE;
+        double r = solutions[0].model.bottom_radius, horizon = 0.5 * M_PI + acos(r / (r + p->altitude));
+        p->theta_v = uniform01(&state) * horizon;
+        p->t = solutions[i % count].t;
+    }
+}
+
+static void set_floors(atmosphere_lut_reference *ref)
+{
+    for (int table = 0; table < ATMOSPHERE_TABLES; ++table) {
+        double top = 0.0;
+        for (int i = 0; i < ref->count; ++i)
+            for (int k = 0; k < ATMOSPHERE_LUT_VALUES; ++k)
+                top = fmax(top, fabs(ref->reference[(i * ATMOSPHERE_TABLES + table) * ATMOSPHERE_LUT_VALUES + k]));
+        ref->floor[table] = FLOOR * top;
+    }
+}
+
+int atmosphere_lut_reference_build(atmosphere_lut_reference *ref, const atmosphere_solution *solutions, int count,
+                                   int points, unsigned seed, int threads)
+{
+    size_t values = (size_t)points * ATMOSPHERE_TABLES * ATMOSPHERE_LUT_VALUES;
+    *ref = (atmosphere_lut_reference){.count = points};
+    ref->points = malloc(sizeof *ref->points * (size_t)(points > 0 ? points : 1));
+    ref->reference = malloc(sizeof *ref->reference * (values ? values : 1));
+    ref->fast = malloc(sizeof *ref->fast * (values ? values : 1));
+    if (!ref->points || !ref->reference || !ref->fast || count < 1) {
+        atmosphere_lut_reference_free(ref);
+        return -1;
+    }
+    draw_points(ref, solutions, count, seed);
+    double worst = 0.0;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) reduction(max : worst)
+    for (int i = 0; i < points; ++i) {
+        const atmosphere_solution *s = &solutions[i % count];
+        size_t at = (size_t)i * ATMOSPHERE_TABLES * ATMOSPHERE_LUT_VALUES;
+        worst = fmax(worst, evaluate(s, ATMOSPHERE_REFERENCE, &ref->points[i], (void *)(ref->reference + at)));
+        evaluate(s, ATMOSPHERE_FAST, &ref->points[i], (void *)(ref->fast + at));
+    }
+    ref->quadrature_estimate = worst;
+    set_floors(ref);
+    return 0;
+}
+
+void atmosphere_lut_reference_free(atmosphere_lut_reference *ref)
+{
+    free(ref->points), free(ref->reference), free(ref->fast);
+    ref->points = NULL, ref->reference = NULL, ref->fast = NULL;
+}
+
+/* The largest relative difference over a table's values at one point. */
+static double point_error(const double *a, const double *b, int n, double floor)
+{
+    double worst = 0.0;
+    for (int k = 0; k < n; ++k)
+        worst = fmax(worst, fabs(a[k] - b[k]) / (fabs(b[k]) + floor));
+    return worst;
+}
+
+static int compare_doubles(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* max, rms and 95th percentile (nearest rank) of errors[0..n); sorts them. */
+static atmosphere_error_stats stats_of(double *errors, int n)
+{
+    atmosphere_error_stats s = {0.0, 0.0, 0.0};
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i)
+        sum += errors[i] * errors[i];
+    qsort(errors, (size_t)n, sizeof *errors, compare_doubles);
+    if (n > 0)
+        s.max = errors[n - 1], s.rms = sqrt(sum / n), s.p95 = errors[(int)ceil(0.95 * n) - 1];
+    return s;
+}
+
+/* The lookup of `table` at p into v (ATMOSPHERE_LUT_VALUES, zero-padded). */
+static void lookup(const atmosphere_luts *luts, int table, const atmosphere_lut_point *p, double *v)
+{
+    float f[ATMOSPHERE_SPECIES][ATMOSPHERE_CHANNELS] = {{0}};
+    if (table == ATMOSPHERE_TABLE_INSCATTER)
+        atmosphere_lut_inscatter(luts, (float)p->theta_s, (float)p->theta_v, (float)p->altitude, (float)p->t, f);
+    else
+        atmosphere_lut_light(luts, table, (float)p->theta_s, (float)p->altitude, (float)p->t, f[0]);
+    for (int k = 0; k < ATMOSPHERE_LUT_VALUES; ++k)
+        v[k] = f[k / 3][k % 3];
+}
+
+int atmosphere_lut_errors(const atmosphere_luts *luts, const atmosphere_lut_reference *ref,
+                          atmosphere_table_error out[ATMOSPHERE_TABLES])
+{
+    int n = ref->count;
+    double *e = malloc(sizeof *e * 4 * (size_t)(n > 0 ? n : 1));
+    if (!e)
+        return -1;
+    for (int table = 0; table < ATMOSPHERE_TABLES; ++table) {
+        int values = table == ATMOSPHERE_TABLE_INSCATTER ? 6 : 3;
+        int day = 0;
+        for (int i = 0; i < n; ++i) {
+            double got[ATMOSPHERE_LUT_VALUES];
+            size_t at = ((size_t)i * ATMOSPHERE_TABLES + table) * ATMOSPHERE_LUT_VALUES;
+            lookup(luts, table, &ref->points[i], got);
+            e[i] = point_error(got, ref->fast + at, values, ref->floor[table]);
+            e[n + i] = point_error(ref->fast + at, ref->reference + at, values, ref->floor[table]);
+            e[2 * n + i] = point_error(got, ref->reference + at, values, ref->floor[table]);
+            if (ref->points[i].theta_s <= ATMOSPHERE_DAY_THETA_S)
+                e[3 * n + day++] = e[2 * n + i];
+        }
+        out[table].day_total = stats_of(e + 3 * n, day);
+        out[table].interpolation = stats_of(e, n);
+        out[table].quadrature = stats_of(e + n, n);
+        out[table].total = stats_of(e + 2 * n, n);
+    }
+    free(e);
+    return 0;
+}

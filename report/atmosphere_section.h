@@ -1,0 +1,15 @@
+/* The Decima atmosphere LUTs (studies/atmosphere_luts.h): their definitions,
+ * their error against direct integration as each axis departs from the
+ * talk's size (figures/atmosphere_sizes.png), and the talk's claim that its
+ * sizes suffice, in the claims table. */
+#ifndef GTLAB_REPORT_ATMOSPHERE_SECTION_H
+#define GTLAB_REPORT_ATMOSPHERE_SECTION_H
+
+#include "report/report_context.h"
+#include "studies/atmosphere_luts.h"
+
+/* Adds the section to ctx's report, summary.json and claims; -1 (e set) if
+ * a file it writes could not be made. */
+int atmosphere_section(report_context *ctx, const atmosphere_luts_result *r, gt_error *e);
+
+#endif

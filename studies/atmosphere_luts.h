@@ -1,0 +1,71 @@
+/* The Decima atmosphere LUTs (luts/atmosphere_luts.h) as `gtlab all` studies
+ * them (issue 16 items 3 and 5): the talk's tables for the two weathers,
+ * written in every format, and "do the sizes suffice?": the error of each
+ * table against direct integration at random points (luts/atmosphere_lut_
+ * errors.h: interpolation and quadrature apart) as one axis at a time
+ * departs from the talk's size, (8, 64, 8, 4) = 128 KB and (64, 1, 4) =
+ * 4 KB, against the memory it takes.
+ *
+ * Tolerance: a table suffices when the 95th percentile of its relative
+ * error is within ATMOSPHERE_TOLERANCE = 2% (the eye's contrast threshold
+ * for luminance, Weber's fraction, is 1-2%; banding shows at about 2% steps)
+ * or within the quadrature's own 95th percentile if that is larger (the
+ * reference's floor).
+ *
+ * Writes <output>/luts/atmosphere/ (the talk-size tables: EXR, C header,
+ * HLSL, GLSL) and <output>/luts/atmosphere_sizes.dat (per row: table, bytes,
+ * interpolation p95 and max, total p95), the data of the report's plot. */
+#ifndef GTLAB_STUDIES_ATMOSPHERE_LUTS_H
+#define GTLAB_STUDIES_ATMOSPHERE_LUTS_H
+
+#include "luts/atmosphere_lut_errors.h"
+#include "luts/atmosphere_luts.h"
+#include "studies/study.h"
+
+#define ATMOSPHERE_LUTS_DIR "luts"
+#define ATMOSPHERE_TOLERANCE 0.02
+enum { ATMOSPHERE_STUDY_MAX_ROWS = 40, ATMOSPHERE_STUDY_MAX_BLENDS = 4 };
+
+typedef struct {
+    int points;                  /* random points the tables are scored at */
+    int blend_count;             /* their weather blends, off the t grid */
+    double blends[ATMOSPHERE_STUDY_MAX_BLENDS];
+    int uniform_refinement;      /* also the in-scatter table at twice the talk's size on every spatial axis */
+    unsigned seed;
+} atmosphere_luts_request;
+
+typedef struct {
+    char label[48];              /* what departs from the talk's size */
+    int table;                   /* ATMOSPHERE_TABLE_* */
+    int sizes[4];
+    double bytes;
+    int talk;                    /* 1 for the talk's size */
+    atmosphere_table_error error;
+} atmosphere_luts_row;
+
+typedef struct {
+    atmosphere_luts_request request;
+    double build_seconds;        /* the talk-size set for two weathers (4 blends), wall */
+    double quadrature_estimate;  /* the references' own error estimate (relative to their scales) */
+    int row_count;
+    atmosphere_luts_row rows[ATMOSPHERE_STUDY_MAX_ROWS];
+    int smallest_within[ATMOSPHERE_TABLES]; /* row of the smallest table within tolerance, or -1 */
+    int talk_row[ATMOSPHERE_TABLES];
+} atmosphere_luts_result;
+
+/* Preview: 48 points at t = 1/2; production: 192 points at t = 1/6, 1/2,
+ * 5/6 and the uniformly refined in-scatter table. */
+atmosphere_luts_request atmosphere_luts_default_request(study_quality quality);
+
+/* Whether a row is within the tolerance (the definition above). */
+int atmosphere_luts_row_suffices(const atmosphere_luts_row *row);
+
+/* Builds the talk-size tables and writes them into dir (`gtlab lut
+ * atmosphere` and the study); sizes NULL for the talk's. */
+int atmosphere_luts_write_tables(const char *dir, const atmosphere_lut_sizes *sizes, int threads,
+                                 double *build_seconds, gt_error *e);
+
+int atmosphere_luts_study(const study_context *ctx, const atmosphere_luts_request *rq, atmosphere_luts_result *out,
+                          gt_error *e);
+
+#endif
