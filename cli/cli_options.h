@@ -7,13 +7,16 @@
  *   static const cli_option opts[] = {
  *       CLI_INT("size", "N", 2, 256, "entries per axis (default 32)"),
  *       CLI_OUTPUT_DIR, CLI_END};
- *   const cli_command cmd = {"lut dfg", "Tabulates ...", opts};
+ *   const cli_command cmd = {"lut dfg", "Tabulates ...", opts, NULL, NULL};
  *   void *dest[] = {&size, &dir};
  *   int status; if (cli_options_parse(&cmd, dest, argc, argv, &status)) return status;
  *
  * The destinations are given in the table's order at the call, so the table
  * itself can be static. Defaults are the destinations' values before the
- * call, and --help prints them from there. */
+ * call, and --help prints them from there. Values a kind does not cover
+ * ("N|inf", a list of albedos) take a CLI_CUSTOM parser; an option given
+ * several times collects into a cli_list; positional arguments come back
+ * in a cli_arguments after the options' destinations. */
 #ifndef GTLAB_CLI_CLI_OPTIONS_H
 #define GTLAB_CLI_CLI_OPTIONS_H
 
