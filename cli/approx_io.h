@@ -5,44 +5,33 @@
 #ifndef GTLAB_CLI_APPROX_IO_H
 #define GTLAB_CLI_APPROX_IO_H
 
-#include <getopt.h>
 #include <stddef.h>
 
+#include "cli/cli_options.h"
 #include "core/image.h"
 #include "realtime/screen_space.h"
 #include "studies/gbuffer_input.h"
 
-/* getopt_long entries of the common options (end the table with them). */
-#define APPROX_COMMON_OPTIONS                                                                                         \
-    {"gbuffer", required_argument, 0, 'g'}, {"camera", required_argument, 0, 'c'},                                   \
-        {"threads", required_argument, 0, 't'}, {"output", required_argument, 0, 'o'}, {"help", no_argument, 0, 'h'}, \
-    {                                                                                                                 \
-        0, 0, 0, 0                                                                                                    \
-    }
-/* "on" / "off" -> 1 / 0; -1 after an error (printed). */
-int approx_parse_switch(const char *option, const char *arg, int *out);
-
-/* A technique's command line: its getopt_long table (its own options, then
- * APPROX_COMMON_OPTIONS), its help, its option parser, the text of its
- * parameters for the header, and the computation. */
+/* A technique's command line: its options (ending CLI_END; the common ones
+ * --gbuffer, --camera, --threads, -o follow), the text of its parameters
+ * for the header, and the computation. */
 typedef struct {
     const char *name; /* "hbao" */
-    const struct option *options;
-    void (*print_help)(void);
-    int (*parse_option)(int c, const char *arg, void *params); /* 0, or -1 after an error (printed) */
+    const char *description;
+    const cli_option *options;
     void (*settings_text)(const void *params, char *text, size_t size);
     int (*compute)(const ss_gbuffer *g, const void *params, image *out); /* into out, which holds mask.A */
 } approx_technique;
 
-/* Parses argv into params (already holding the defaults), then loads the
- * G-buffer, computes and writes the output: returns the exit status. */
-int approx_main(const approx_technique *t, void *params, int argc, char **argv);
+/* Parses argv into params (already holding the defaults) through dest, the
+ * destinations of t->options, then loads the G-buffer, computes and writes
+ * the output: returns the exit status. */
+int approx_main(const approx_technique *t, void *params, void *const *dest, int argc, char **argv);
 
-/* Help lines of the common options. */
-extern const char approx_common_help[];
-#define APPROX_FRAMES_HELP /* the pattern, denoiser and accumulation options of the horizon techniques */ \
-    "  --pattern on|off      the GTAO talk's 4x4 spatio-temporal pattern (default on)\n"                  \
-    "  --denoise on|off      the 4x4 bilateral spatial denoiser (default off)\n"                           \
-    "  --frames N            frames accumulated (static camera; default 1)\n"
+/* The pattern, denoiser and accumulation options of the horizon techniques. */
+#define APPROX_FRAME_OPTIONS                                                 \
+    CLI_SWITCH("pattern", "the GTAO talk's 4x4 spatio-temporal pattern"),    \
+        CLI_SWITCH("denoise", "the 4x4 bilateral spatial denoiser"),         \
+        CLI_INT32("frames", "N", 1, 100000, "frames accumulated (static camera)")
 
 #endif

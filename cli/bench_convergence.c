@@ -3,37 +3,30 @@
  * (studies/ao_convergence.h; the figure: report/convergence_plot.h); here
  * the options and the printing. */
 #define _GNU_SOURCE
-#include <errno.h>
-#include <getopt.h>
 #include <stdio.h>
-#include <string.h>
-#include <sys/stat.h>
 
 #include "cli/cli.h"
+#include "cli/cli_options.h"
 #include "core/threads.h"
 #include "report/convergence_plot.h"
 #include "studies/ao_convergence.h"
 
-static void print_help(void)
-{
-    printf("usage: gtlab bench convergence [-o DIR] [--width W] [--height H] [--threads T]\n"
-           "                               [--reference-spp N] [--max-spp N] [--target RMSE]\n"
-           "\n"
-           "Measures, in one run, per built-in scene: the RMSE of ao.V against a converged\n"
-           "reference (a control-variate render of --reference-spp samples) as a function of\n"
-           "the wall time of the whole render (Embree scene, G-buffer, the control variate's\n"
-           "horizons and pilot, sampling), for plain sampling and for --control-variate\n"
-           "heightfield, each a series of renders at 16, 32, ... spp; then\n"
-           "the time each needs to reach the target RMSE and their ratio (plain / control\n"
-           "variate). Writes DIR/convergence.dat and DIR/convergence.png (gnuplot).\n"
-           "\n"
-           "  -o DIR             output folder (default bench_convergence)\n"
-           "  --width W --height H   image size (default 48x48)\n"
-           "  --threads T        threads (default: all cores)\n"
-           "  --reference-spp N  samples of the reference (default 16384)\n"
-           "  --max-spp N        longest render of a series (default 4096)\n"
-           "  --target RMSE      the RMSE timed (default 0.01)\n");
-}
+static const cli_option options[] = {
+    CLI_OUTPUT("DIR", 0, "output folder"), CLI_INT32("width", "W", 8, 4096, "image width"),
+    CLI_INT32("height", "H", 8, 4096, "image height"), CLI_INT32("threads", "T", 1, 1024, "threads"),
+    CLI_INT32("reference-spp", "N", 16, 1 << 20, "samples of the reference"),
+    CLI_INT32("max-spp", "N", 16, 1 << 20, "longest render of a series"),
+    CLI_DOUBLE("target", "RMSE", 1e-6, 1.0, "the RMSE timed"), CLI_END};
+static const cli_command command = {
+    "bench convergence",
+    "Measures, in one run, per built-in scene: the RMSE of ao.V against a converged\n"
+    "reference (a control-variate render of --reference-spp samples) as a function of\n"
+    "the wall time of the whole render (Embree scene, G-buffer, the control variate's\n"
+    "horizons and pilot, sampling), for plain sampling and for --control-variate\n"
+    "heightfield, each a series of renders at 16, 32, ... spp; then\n"
+    "the time each needs to reach the target RMSE and their ratio (plain / control\n"
+    "variate). Writes DIR/convergence.dat and DIR/convergence.png (gnuplot).",
+    options, NULL, NULL};
 
 static const char *kind_mark(target_kind kind)
 {
@@ -65,47 +58,15 @@ static void print_result(const ao_convergence_result *r)
            worst >= 1.0 ? worst : 1.0 / worst, worst >= 1.0 ? "slower" : "faster");
 }
 
-/* One option into the request; 0, or an exit status. */
-static int parse_option(int c, const char *arg, ao_convergence_request *rq, const char **dir)
-{
-    long v = 0;
-    switch (c) {
-    case 'o': *dir = arg; return 0;
-    case 'W': return cli_parse_int("--width", arg, 8, 4096, &v) ? EXIT_USER_ERROR : (rq->width = (int)v, 0);
-    case 'H': return cli_parse_int("--height", arg, 8, 4096, &v) ? EXIT_USER_ERROR : (rq->height = (int)v, 0);
-    case 't': return cli_parse_int("--threads", arg, 1, 1024, &v) ? EXIT_USER_ERROR : (rq->threads = (int)v, 0);
-    case 'R':
-        return cli_parse_int("--reference-spp", arg, 16, 1 << 20, &v) ? EXIT_USER_ERROR
-                                                                       : (rq->reference_spp = (int)v, 0);
-    case 'M': return cli_parse_int("--max-spp", arg, 16, 1 << 20, &v) ? EXIT_USER_ERROR : (rq->max_spp = (int)v, 0);
-    case 'T': return cli_parse_double("--target", arg, 1e-6, 1.0, &rq->target) ? EXIT_USER_ERROR : 0;
-    default: return cli_usage_error("bench convergence");
-    }
-}
-
 int bench_convergence(int argc, char **argv)
 {
-    static const struct option longs[] = {
-        {"width", required_argument, 0, 'W'},   {"height", required_argument, 0, 'H'},
-        {"threads", required_argument, 0, 't'}, {"reference-spp", required_argument, 0, 'R'},
-        {"max-spp", required_argument, 0, 'M'}, {"target", required_argument, 0, 'T'},
-        {"help", no_argument, 0, 'h'},          {0, 0, 0, 0}};
     ao_convergence_request rq = ao_convergence_default_request(threads_default());
     const char *dir = "bench_convergence";
-    int c;
-    while ((c = getopt_long(argc, argv, "ho:", longs, NULL)) != -1) {
-        if (c == 'h') {
-            print_help();
-            return EXIT_OK;
-        }
-        int status = parse_option(c, optarg, &rq, &dir);
-        if (status != 0)
-            return status;
-    }
-    if (optind < argc)
-        return cli_failf("bench convergence", "unexpected argument '%s'", argv[optind]);
-    if (mkdir(dir, 0777) != 0 && errno != EEXIST)
-        return cli_failf(dir, "cannot create the folder: %s", strerror(errno));
+    int status;
+    if (cli_options_parse(&command, (void *[]){&dir, &rq.width, &rq.height, &rq.threads, &rq.reference_spp,
+                          &rq.max_spp, &rq.target}, argc, argv, &status) != 0 ||
+        (status = cli_make_output_dir(dir)) != 0)
+        return status;
     static ao_convergence_result r;
     gt_error e;
     if (ao_convergence_run(&rq, &r, &e) != 0)

@@ -3,44 +3,29 @@
  * residual block per sample against blocks of 1024 (fitters/ceres_bridge.h),
  * measured by studies/multibounce_fit_timing.h. */
 #define _GNU_SOURCE
-#include <getopt.h>
 #include <stdio.h>
 
 #include "cli/cli.h"
+#include "cli/cli_options.h"
 #include "studies/multibounce_fit_timing.h"
 
-static void print_help(void)
-{
-    printf("usage: gtlab bench fit [--samples N] [--repeats R]\n"
-           "\n"
-           "Times the joint multi-bounce fit (6 coefficients, gtlab fit multibounce's model)\n"
-           "of N synthetic samples (default 1000000: 7 albedos, V_d spread over (0, 1], V'_d\n"
-           "a cubic plus noise) through the Ceres bridge, solve and covariance, with one\n"
-           "residual block per sample and with blocks of 1024 samples; single-threaded.\n"
-           "Each figure is the best of R runs (default 1).\n"
-           "\n"
-           "  --samples N   samples (default 1000000)\n"
-           "  --repeats R   runs per figure (default 1)\n");
-}
+static const cli_option options[] = {
+    CLI_INT("samples", "N", 100, 100000000, "samples"), CLI_INT("repeats", "R", 1, 100, "runs per figure"), CLI_END};
+static const cli_command command = {
+    "bench fit",
+    "Times the joint multi-bounce fit (6 coefficients, gtlab fit multibounce's model)\n"
+    "of N synthetic samples (7 albedos, V_d spread over (0, 1], V'_d a cubic plus\n"
+    "noise) through the Ceres bridge, solve and covariance, with one residual block\n"
+    "per sample and with blocks of 1024 samples; single-threaded. Each figure is the\n"
+    "best of R runs.",
+    options, NULL, NULL};
 
 int bench_fit(int argc, char **argv)
 {
-    static const struct option longs[] = {{"samples", required_argument, 0, 'n'},
-                                          {"repeats", required_argument, 0, 'r'},
-                                          {"help", no_argument, 0, 'h'},
-                                          {0, 0, 0, 0}};
     long samples = 1000000, repeats = 1;
-    int c;
-    while ((c = getopt_long(argc, argv, "h", longs, NULL)) != -1) {
-        switch (c) {
-        case 'n': if (cli_parse_int("--samples", optarg, 100, 100000000, &samples)) return EXIT_USER_ERROR; break;
-        case 'r': if (cli_parse_int("--repeats", optarg, 1, 100, &repeats)) return EXIT_USER_ERROR; break;
-        case 'h': print_help(); return EXIT_OK;
-        default: return cli_usage_error("bench fit");
-        }
-    }
-    if (optind < argc)
-        return cli_failf("bench fit", "unexpected argument '%s'", argv[optind]);
+    int status;
+    if (cli_options_parse(&command, (void *[]){&samples, &repeats}, argc, argv, &status) != 0)
+        return status;
     gt_error e;
     multibounce_fit_timing t[MULTIBOUNCE_FIT_TIMINGS];
     if (multibounce_fit_timing_run(samples, repeats, t, &e) != 0)

@@ -4,32 +4,29 @@
  * pixel of every preset next to the brute-force reference's and the
  * height-field Monte Carlo reference's, measured in one run
  * (studies/gtao_bench.h); here the options and the printing. */
-#include <getopt.h>
 #include <stdio.h>
 
 #include "cli/cli.h"
+#include "cli/cli_options.h"
 #include "studies/gtao_bench.h"
 #include "core/threads.h"
 
-static void print_help(void)
-{
-    printf("usage: gtlab bench gtao [--scene S] [--threads T] [--repeats R]\n"
-           "\n"
-           "Measures, on one scene and camera:\n"
-           "  talk's configuration  GTAO for a 1920x1080 frame at half resolution (960x540):\n"
-           "                        1 direction per pixel, 8 samples per direction (4 per side),\n"
-           "                        the 4x4 spatio-temporal pattern, fast acos/sqrt, the 4x4\n"
-           "                        bilateral denoiser and the temporal accumulation, per frame\n"
-           "                        (averaged over the 24-frame cycle), on 1 and T threads\n"
-           "  presets               ns per pixel of one frame of each preset (low .. ultra and the\n"
-           "                        brute-force reference) and of the height-field Monte Carlo\n"
-           "                        reference at 64 spp, on a 240x136 image of the same view\n"
-           "Each figure is the best of R passes (default 3).\n"
-           "\n"
-           "  --scene S      builtin:NAME or a glTF file (default builtin:menger)\n"
-           "  --threads T    threads (default: all cores)\n"
-           "  --repeats R    passes per figure (default 3)\n");
-}
+static const cli_option options[] = {
+    CLI_STRING("scene", "S", "builtin:NAME or a glTF file"), CLI_THREADS,
+    CLI_INT("repeats", "R", 1, 100, "passes per figure"), CLI_END};
+static const cli_command command = {
+    "bench gtao",
+    "Measures, on one scene and camera:\n"
+    "  talk's configuration  GTAO for a 1920x1080 frame at half resolution (960x540):\n"
+    "                        1 direction per pixel, 8 samples per direction (4 per side),\n"
+    "                        the 4x4 spatio-temporal pattern, fast acos/sqrt, the 4x4\n"
+    "                        bilateral denoiser and the temporal accumulation, per frame\n"
+    "                        (averaged over the 24-frame cycle), on 1 and T threads\n"
+    "  presets               ns per pixel of one frame of each preset (low .. ultra and the\n"
+    "                        brute-force reference) and of the height-field Monte Carlo\n"
+    "                        reference at 64 spp, on a 240x136 image of the same view\n"
+    "Each figure is the best of R passes.",
+    options, NULL, NULL};
 
 static void print_report(const char *spec, int threads, const gtao_bench_result *r)
 {
@@ -49,23 +46,11 @@ static void print_report(const char *spec, int threads, const gtao_bench_result 
 
 int bench_gtao(int argc, char **argv)
 {
-    static const struct option longs[] = {{"scene", required_argument, 0, 's'},
-                                          {"threads", required_argument, 0, 't'},
-                                          {"repeats", required_argument, 0, 'r'},
-                                          {"help", no_argument, 0, 'h'},
-                                          {0, 0, 0, 0}};
     const char *spec = "builtin:menger";
     long threads = threads_default(), repeats = 3;
-    int c;
-    while ((c = getopt_long(argc, argv, "h", longs, NULL)) != -1) {
-        switch (c) {
-        case 's': spec = optarg; break;
-        case 't': if (cli_parse_int("--threads", optarg, 1, 1024, &threads)) return EXIT_USER_ERROR; break;
-        case 'r': if (cli_parse_int("--repeats", optarg, 1, 100, &repeats)) return EXIT_USER_ERROR; break;
-        case 'h': print_help(); return EXIT_OK;
-        default: return cli_usage_error("bench gtao");
-        }
-    }
+    int status;
+    if (cli_options_parse(&command, (void *[]){&spec, &threads, &repeats}, argc, argv, &status) != 0)
+        return status;
     gt_error e;
     gtao_bench_result r;
     if (gtao_bench_run(spec, (int)threads, (int)repeats, &r, &e) != 0)

@@ -1,48 +1,34 @@
 /* gtlab bench sphere-light: Karis's GetNoHSquared against Decima's one
  * Newton step, in instructions and in time (studies/sphere_light.h, sphere_cost_study). */
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 
 #include "cli/cli.h"
+#include "cli/cli_options.h"
 #include "studies/sphere_light.h"
 
-static void print_help(void)
-{
-    printf("usage: gtlab bench sphere-light [--count N] [--repeats R]\n"
-           "\n"
-           "The cost of GetNoHSquared without (Karis) and with (Decima) the Newton step, as C\n"
-           "compiled in this binary (x86-64 scalar SSE, -O3, steps always inlined):\n"
-           "  instructions   static count of each function's instructions, from objdump's\n"
-           "                 disassembly of this binary (both are straight code but for the\n"
-           "                 early-out branch)\n"
-           "  time           nanoseconds per call over an array of N random configurations,\n"
-           "                 one thread, best of R passes\n"
-           "The talk measured +87%% GPU cycles for the step; a CPU is not a GPU, so both figures\n"
-           "are printed, not compared.\n"
-           "\n"
-           "  --count N     configurations per pass (default 4194304)\n"
-           "  --repeats R   passes (default 5)\n");
-}
+static const cli_option options[] = {
+    CLI_INT("count", "N", 1024, 1L << 28, "configurations per pass"), CLI_INT("repeats", "R", 1, 100, "passes"),
+    CLI_END};
+static const cli_command command = {
+    "bench sphere-light",
+    "The cost of GetNoHSquared without (Karis) and with (Decima) the Newton step, as C\n"
+    "compiled in this binary (x86-64 scalar SSE, -O3, steps always inlined):\n"
+    "  instructions   static count of each function's instructions, from objdump's\n"
+    "                 disassembly of this binary (both are straight code but for the\n"
+    "                 early-out branch)\n"
+    "  time           nanoseconds per call over an array of N random configurations,\n"
+    "                 one thread, best of R passes\n"
+    "The talk measured +87% GPU cycles for the step; a CPU is not a GPU, so both figures\n"
+    "are printed, not compared.",
+    options, NULL, NULL};
 
 int bench_sphere_light(int argc, char **argv)
 {
-    static const struct option longs[] = {{"count", required_argument, 0, 'n'},
-                                          {"repeats", required_argument, 0, 'r'},
-                                          {"help", no_argument, 0, 'h'},
-                                          {0, 0, 0, 0}};
     long count = 1L << 22, repeats = 5;
-    int c;
-    while ((c = getopt_long(argc, argv, "h", longs, NULL)) != -1) {
-        switch (c) {
-        case 'n': if (cli_parse_int("--count", optarg, 1024, 1L << 28, &count)) return EXIT_USER_ERROR; break;
-        case 'r': if (cli_parse_int("--repeats", optarg, 1, 100, &repeats)) return EXIT_USER_ERROR; break;
-        case 'h': print_help(); return EXIT_OK;
-        default: return cli_usage_error("bench sphere-light");
-        }
-    }
-    if (optind < argc)
-        return cli_failf("bench sphere-light", "unexpected argument '%s'", argv[optind]);
+    int status;
+    if (cli_options_parse(&command, (void *[]){&count, &repeats}, argc, argv, &status) != 0)
+        return status;
     sphere_cost cost;
     sphere_cost_study(count, (int)repeats, &cost);
     if (isnan(cost.ns_karis))

@@ -10,7 +10,7 @@
 
 #include "cli/cli.h"
 
-enum { MAX_OPTIONS = 48, HELP_COLUMN = 20 };
+enum { MAX_OPTIONS = 96, HELP_COLUMN = 20 };
 
 static int option_count(const cli_option *o)
 {
@@ -37,14 +37,36 @@ static void build_longs(const cli_option *o, int n, struct option *longs, char *
     strcpy(s, "h");
 }
 
-static int parse_choice(const cli_option *o, const char *text, int *out, char *option)
+/* "'x' is neither a nor b", "'x' is not a, b or c". */
+static int parse_choice(const cli_option *o, const char *text, int *out, const char *option)
 {
-    for (int i = 0; i < (int)o->hi; ++i)
-        if (strcmp(text, o->choice(i)) == 0) {
-            *out = i;
-            return 0;
-        }
-    return cli_failf(option, "unknown value '%s' (see --help)", text), -1;
+    int n = (int)o->hi;
+    for (int i = 0; i < n; ++i)
+        if (strcmp(text, o->choice(i)) == 0)
+            return *out = i, 0;
+    char names[256] = "";
+    for (int i = 0, k = 0; i < n && k < (int)sizeof names; ++i)
+        k += snprintf(names + k, sizeof names - (size_t)k, "%s%s", i == 0 ? "" : i + 1 < n ? ", " : n == 2 ? " nor " : " or ", o->choice(i));
+    return cli_failf(option, "'%s' is %s %s", text, n == 2 ? "neither" : "not", names), -1;
+}
+
+static int parse_switch(const char *text, int *out, const char *option)
+{
+    if (strcmp(text, "on") == 0 || strcmp(text, "off") == 0)
+        return *out = text[1] == 'n', 0;
+    return cli_failf(option, "'%s' is neither on nor off", text), -1;
+}
+
+static int parse_number(const cli_option *o, void *dest, const char *text, const char *option)
+{
+    long n;
+    double x;
+    switch (o->kind) {
+    case CLI_KIND_INT: return cli_parse_int(option, text, (long)o->lo, (long)o->hi, dest);
+    case CLI_KIND_INT32: return cli_parse_int(option, text, (long)o->lo, (long)o->hi, &n) ? -1 : (*(int *)dest = (int)n, 0);
+    case CLI_KIND_DOUBLE: return cli_parse_double(option, text, o->lo, o->hi, dest);
+    default: return cli_parse_double(option, text, o->lo, o->hi, &x) ? -1 : (*(float *)dest = (float)x, 0);
+    }
 }
 
 static int parse_value(const cli_option *o, void *dest, const char *text)
@@ -53,12 +75,21 @@ static int parse_value(const cli_option *o, void *dest, const char *text)
     snprintf(option, sizeof option, "--%s", o->name);
     switch (o->kind) {
     case CLI_KIND_FLAG: *(int *)dest = 1; return 0;
-    case CLI_KIND_INT: return cli_parse_int(option, text, (long)o->lo, (long)o->hi, dest);
-    case CLI_KIND_DOUBLE: return cli_parse_double(option, text, o->lo, o->hi, dest);
     case CLI_KIND_STRING: *(const char **)dest = text; return 0;
     case CLI_KIND_CHOICE: return parse_choice(o, text, dest, option);
-    default: return -1;
+    case CLI_KIND_SWITCH: return parse_switch(text, dest, option);
+    case CLI_KIND_CUSTOM: return o->parse(dest, text);
+    default: return parse_number(o, dest, text, option);
     }
+}
+
+int cli_list_add(void *list, const char *text)
+{
+    cli_list *l = list;
+    if (l->count == l->capacity)
+        return cli_failf(l->option, "more than %d given", l->capacity), -1;
+    l->values[l->count++] = text;
+    return 0;
 }
 
 static int index_of_code(const cli_option *o, int n, int code)
@@ -87,8 +118,10 @@ int cli_options_parse(const cli_command *cmd, void *const *dest, int argc, char 
     struct option longs[MAX_OPTIONS + 2];
     char shorts[2 * MAX_OPTIONS + 2];
     int n = option_count(cmd->options);
-    build_longs(cmd->options, n, longs, shorts);
     *status = EXIT_USER_ERROR;
+    if (n > MAX_OPTIONS)
+        return cli_failf(cmd->command, "more than %d options", MAX_OPTIONS), *status = EXIT_INTERNAL_ERROR, 1;
+    build_longs(cmd->options, n, longs, shorts);
     for (int c; (c = getopt_long(argc, argv, shorts, longs, NULL)) != -1;) {
         if (c == 'h')
             return cli_options_print_help(cmd, dest), *status = EXIT_OK, 1;
@@ -98,9 +131,16 @@ int cli_options_parse(const cli_command *cmd, void *const *dest, int argc, char 
         if (parse_value(&cmd->options[i], dest[i], optarg) != 0)
             return 1;
     }
-    if (optind < argc)
+    if (cmd->arguments) {
+        cli_arguments *args = dest[n];
+        *args = (cli_arguments){argv + optind, argc - optind};
+    } else if (optind < argc) {
         return cli_failf(cmd->command, "unexpected argument '%s'", argv[optind]), 1;
-    return check_required(cmd, dest, n) != 0 ? 1 : 0;
+    }
+    if (check_required(cmd, dest, n) != 0)
+        return 1;
+    *status = EXIT_OK;
+    return 0;
 }
 
 /* "--size N", "-o, --output DIR", "--lobe ggx|ggx-d|phong" for a choice
@@ -122,7 +162,8 @@ static void print_usage_line(const cli_command *cmd)
             snprintf(text, sizeof text, "-%c %s", o->short_name, o->value ? o->value : "");
         printf(o->required ? " %s" : " [%s]", text);
     }
-    printf("\n\n%s\n\noptions:\n", cmd->description);
+    printf("%s%s\n\n%s\n\noptions:\n", cmd->arguments ? " " : "", cmd->arguments ? cmd->arguments : "",
+           cmd->description);
 }
 
 /* The help text, continuation lines indented to the help column. */
@@ -143,7 +184,10 @@ static void print_default(const cli_option *o, const void *dest)
         return;
     switch (o->kind) {
     case CLI_KIND_INT: printf(" (default %ld)", *(const long *)dest); break;
+    case CLI_KIND_INT32: printf(" (default %d)", *(const int *)dest); break;
     case CLI_KIND_DOUBLE: printf(" (default %g)", *(const double *)dest); break;
+    case CLI_KIND_FLOAT: printf(" (default %g)", (double)*(const float *)dest); break;
+    case CLI_KIND_SWITCH: printf(" (default %s)", *(const int *)dest ? "on" : "off"); break;
     case CLI_KIND_STRING: if (*(const char *const *)dest) printf(" (default %s)", *(const char *const *)dest); break;
     case CLI_KIND_CHOICE: printf(" (default %s)", o->choice(*(const int *)dest)); break;
     default: break;
@@ -166,6 +210,8 @@ void cli_options_print_help(const cli_command *cmd, void *const *dest)
         putchar('\n');
     }
     printf("  -h, --help\n");
+    if (cmd->epilogue)
+        printf("\n%s\n", cmd->epilogue);
 }
 
 int cli_make_output_dir(const char *dir)

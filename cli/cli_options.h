@@ -7,13 +7,16 @@
  *   static const cli_option opts[] = {
  *       CLI_INT("size", "N", 2, 256, "entries per axis (default 32)"),
  *       CLI_OUTPUT_DIR, CLI_END};
- *   const cli_command cmd = {"lut dfg", "Tabulates ...", opts};
+ *   const cli_command cmd = {"lut dfg", "Tabulates ...", opts, NULL, NULL};
  *   void *dest[] = {&size, &dir};
  *   int status; if (cli_options_parse(&cmd, dest, argc, argv, &status)) return status;
  *
  * The destinations are given in the table's order at the call, so the table
  * itself can be static. Defaults are the destinations' values before the
- * call, and --help prints them from there. */
+ * call, and --help prints them from there. Values a kind does not cover
+ * ("N|inf", a list of albedos) take a CLI_CUSTOM parser; an option given
+ * several times collects into a cli_list; positional arguments come back
+ * in a cli_arguments after the options' destinations. */
 #ifndef GTLAB_CLI_CLI_OPTIONS_H
 #define GTLAB_CLI_CLI_OPTIONS_H
 
@@ -21,9 +24,13 @@ typedef enum {
     CLI_KIND_END,
     CLI_KIND_FLAG,   /* int: set to 1 */
     CLI_KIND_INT,    /* long, within [lo, hi] */
+    CLI_KIND_INT32,  /* int, within [lo, hi] */
     CLI_KIND_DOUBLE, /* double, within [lo, hi] */
+    CLI_KIND_FLOAT,  /* float, within [lo, hi] (parsed as a double, then rounded) */
     CLI_KIND_STRING, /* const char * (the argv string itself) */
-    CLI_KIND_CHOICE  /* int: the index i of the value equal to choice(i), 0 <= i < hi */
+    CLI_KIND_CHOICE, /* int: the index i of the value equal to choice(i), 0 <= i < hi */
+    CLI_KIND_SWITCH, /* int: "on" 1, "off" 0 */
+    CLI_KIND_CUSTOM  /* parse(dest, text) */
 } cli_option_kind;
 
 typedef struct {
@@ -35,25 +42,56 @@ typedef struct {
     const char *(*choice)(int index); /* CLI_KIND_CHOICE: the name of each value */
     int required;
     const char *help; /* may hold '\n': continuation lines are indented */
+    /* CLI_KIND_CUSTOM: stores text's value in dest, or prints one line
+     * ("gtlab: --option: problem") and returns -1. */
+    int (*parse)(void *dest, const char *text);
 } cli_option;
 
-#define CLI_FLAG(name, help) {CLI_KIND_FLAG, name, 0, NULL, 0, 0, NULL, 0, help}
-#define CLI_INT(name, value, lo, hi, help) {CLI_KIND_INT, name, 0, value, lo, hi, NULL, 0, help}
-#define CLI_DOUBLE(name, value, lo, hi, help) {CLI_KIND_DOUBLE, name, 0, value, lo, hi, NULL, 0, help}
-#define CLI_STRING(name, value, help) {CLI_KIND_STRING, name, 0, value, 0, 0, NULL, 0, help}
-#define CLI_REQUIRED_STRING(name, value, help) {CLI_KIND_STRING, name, 0, value, 0, 0, NULL, 1, help}
-#define CLI_CHOICE(name, value, names, count, help) {CLI_KIND_CHOICE, name, 0, value, 0, count, names, 0, help}
+#define CLI_OPTION(k, n, v, l, h, text) {.kind = k, .name = n, .value = v, .lo = l, .hi = h, .help = text}
+#define CLI_FLAG(n, text) CLI_OPTION(CLI_KIND_FLAG, n, NULL, 0, 0, text)
+#define CLI_INT(n, v, l, h, text) CLI_OPTION(CLI_KIND_INT, n, v, l, h, text)
+#define CLI_INT32(n, v, l, h, text) CLI_OPTION(CLI_KIND_INT32, n, v, l, h, text)
+#define CLI_DOUBLE(n, v, l, h, text) CLI_OPTION(CLI_KIND_DOUBLE, n, v, l, h, text)
+#define CLI_FLOAT(n, v, l, h, text) CLI_OPTION(CLI_KIND_FLOAT, n, v, l, h, text)
+#define CLI_SEED(n, text) CLI_INT(n, "S", 0, 4294967295.0, text) /* a uint32_t, into a long */
+#define CLI_STRING(n, v, text) CLI_OPTION(CLI_KIND_STRING, n, v, 0, 0, text)
+#define CLI_REQUIRED_STRING(n, v, text) {.kind = CLI_KIND_STRING, .name = n, .value = v, .required = 1, .help = text}
+#define CLI_CHOICE(n, v, names, count, text) {.kind = CLI_KIND_CHOICE, .name = n, .value = v, .hi = count, .choice = names, .help = text}
+#define CLI_SWITCH(n, text) CLI_OPTION(CLI_KIND_SWITCH, n, "on|off", 0, 0, text)
+#define CLI_CUSTOM(n, v, parser, text) {.kind = CLI_KIND_CUSTOM, .name = n, .value = v, .parse = parser, .help = text}
+/* -o/--output: required (the table checks it) or not (the subcommand does). */
+#define CLI_OUTPUT(v, is_required, text) {.kind = CLI_KIND_STRING, .name = "output", .short_name = 'o', .value = v, .required = is_required, .help = text}
 #define CLI_THREADS CLI_INT("threads", "T", 1, 1024, "worker threads (default: all cores); the result does not depend on it")
-#define CLI_OUTPUT_DIR {CLI_KIND_STRING, "output", 'o', "DIR", 0, 0, NULL, 1, "output folder (created if absent)"}
-#define CLI_END {CLI_KIND_END, NULL, 0, NULL, 0, 0, NULL, 0, NULL}
+#define CLI_OUTPUT_DIR CLI_OUTPUT("DIR", 1, "output folder (created if absent)")
+#define CLI_END {.kind = CLI_KIND_END}
 
 typedef struct {
     const char *command;     /* "lut dfg": the words after "gtlab" */
     const char *description; /* the paragraph of --help */
     const cli_option *options;
+    /* The placeholder of positional arguments in the usage line ("A.exr B.exr"),
+     * or NULL when the subcommand takes none (a stray one is then an error). */
+    const char *arguments;
+    const char *epilogue; /* printed after the options (examples), or NULL */
 } cli_command;
 
-/* Parses argv (argv[0] is the subcommand) into dest[i] for options[i].
+/* The positional arguments, when cli_command.arguments is set: its
+ * destination follows the options' in dest. */
+typedef struct {
+    char **values;
+    int count;
+} cli_arguments;
+
+/* The values of a repeatable option (a CLI_CUSTOM with cli_list_add). */
+typedef struct {
+    const char **values;
+    int count, capacity;
+    const char *option; /* "--data", for the error past capacity */
+} cli_list;
+int cli_list_add(void *list, const char *text);
+
+/* Parses argv (argv[0] is the subcommand) into dest[i] for options[i]
+ * (then the cli_arguments, if the command takes positional arguments).
  * Returns 0 to go on; otherwise the subcommand returns *status: EXIT_OK
  * after --help, EXIT_USER_ERROR after a one-line error on stderr. */
 int cli_options_parse(const cli_command *cmd, void *const *dest, int argc, char **argv, int *status);

@@ -3,36 +3,34 @@
  * ray-traced AO references (studies/gtao_params.h, fitters/gtao_params_fit.h),
  * scored before and after on held-out scenes; printed and written as JSON. */
 #include <cjson/cJSON.h>
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "cli/cli.h"
+#include "cli/cli_options.h"
 #include "report/gtao_params_json.h"
 #include "core/atomic_file.h"
 
-static void print_help(void)
-{
-    printf("usage: gtlab fit gtao-params --refs DIR --train A,B,.. --test C,.. [options] -o fit.json\n"
-           "\n"
-           "Fits GTAO's radius (a fraction of each camera's distance to its target), falloff\n"
-           "and thickness so GTAO matches 3-D ray-traced AO references (Ceres, over the\n"
-           "training scenes, each scene's residuals weighted equally; derivatives by finite\n"
-           "differences of 0.01 in each parameter), and reports RMSE and DSSIM before and\n"
-           "after on the training and the held-out scenes.\n"
-           "\n"
-           "  --refs DIR        folder of AO references <scene>.exr with their G-buffer and\n"
-           "                    camera (e.g. the ao/ folder 'gtlab all' writes)\n"
-           "  --train LIST      scenes to fit on, comma-separated (default boxes,corner,cornell)\n"
-           "  --test LIST       held-out scenes (default menger,sphere-on-plane)\n"
-           "  --preset P        GTAO preset (default high)\n"
-           "  --objective O     dssim (default: the sum over scenes of each scene's mean\n"
-           "                    DSSIM) or rmse (per-pixel least squares)\n"
-           "  -o, --output F    fit JSON: values, standard errors, scores before and after\n"
-           "  -h, --help\n");
-}
+static const char *objective_name(int i) { return gtao_fit_objective_names[i]; }
+
+static const cli_option options[] = {
+    CLI_REQUIRED_STRING("refs", "DIR", "folder of AO references <scene>.exr with their G-buffer and\n"
+                        "camera (e.g. the ao/ folder 'gtlab all' writes)"),
+    CLI_STRING("train", "LIST", "scenes to fit on, comma-separated"),
+    CLI_STRING("test", "LIST", "held-out scenes"),
+    CLI_STRING("preset", "P", "GTAO preset"),
+    CLI_CHOICE("objective", "O", objective_name, 2, "dssim (the sum over scenes of each scene's mean\n"
+               "DSSIM) or rmse (per-pixel least squares)"),
+    CLI_OUTPUT("F", 1, "fit JSON: values, standard errors, scores before and after"), CLI_END};
+static const cli_command command = {
+    "fit gtao-params",
+    "Fits GTAO's radius (a fraction of each camera's distance to its target), falloff\n"
+    "and thickness so GTAO matches 3-D ray-traced AO references (Ceres, over the\n"
+    "training scenes, each scene's residuals weighted equally; derivatives by finite\n"
+    "differences of 0.01 in each parameter), and reports RMSE and DSSIM before and\n"
+    "after on the training and the held-out scenes.",
+    options, NULL, NULL};
 
 static void print_fit(const gtao_fit_request *rq, const gtao_fit_result *r)
 {
@@ -52,31 +50,12 @@ static void print_fit(const gtao_fit_request *rq, const gtao_fit_result *r)
 
 int fit_gtao_params(int argc, char **argv)
 {
-    static const struct option longs[] = {{"refs", required_argument, 0, 'r'},  {"train", required_argument, 0, 'T'},
-                                          {"test", required_argument, 0, 'S'},  {"preset", required_argument, 0, 'p'},
-                                          {"objective", required_argument, 0, 'j'}, {"output", required_argument, 0, 'o'},
-                                          {"help", no_argument, 0, 'h'},        {0, 0, 0, 0}};
     gtao_fit_request rq = {NULL, GTAO_FIT_DEFAULT_TRAIN, GTAO_FIT_DEFAULT_TEST, GTAO_FIT_DEFAULT_PRESET, GTAO_FIT_DSSIM};
     const char *output = NULL;
-    int c;
-    while ((c = getopt_long(argc, argv, "o:h", longs, NULL)) != -1) {
-        switch (c) {
-        case 'r': rq.refs_dir = optarg; break;
-        case 'T': rq.train = optarg; break;
-        case 'S': rq.test = optarg; break;
-        case 'p': rq.preset = optarg; break;
-        case 'j':
-            if (strcmp(optarg, "dssim") != 0 && strcmp(optarg, "rmse") != 0)
-                return cli_failf("--objective", "'%s' is neither dssim nor rmse", optarg);
-            rq.objective = strcmp(optarg, "dssim") == 0 ? GTAO_FIT_DSSIM : GTAO_FIT_RMSE;
-            break;
-        case 'o': output = optarg; break;
-        case 'h': print_help(); return EXIT_OK;
-        default: return cli_usage_error("fit gtao-params");
-        }
-    }
-    if (!rq.refs_dir || !output)
-        return cli_failf("gtao-params", "give --refs DIR and -o fit.json (see 'gtlab fit gtao-params --help')");
+    int status;
+    if (cli_options_parse(&command, (void *[]){&rq.refs_dir, &rq.train, &rq.test, &rq.preset, &rq.objective, &output},
+                          argc, argv, &status) != 0)
+        return status;
     gt_error e;
     static gtao_fit_result r;
     if (gtao_params_study(&rq, &r, &e) != 0)
@@ -84,7 +63,7 @@ int fit_gtao_params(int argc, char **argv)
     print_fit(&rq, &r);
     cJSON *root = gtao_fit_json(&rq, &r);
     char *text = cJSON_Print(root);
-    int status = text && atomic_write_text(output, text, &e) == 0 ? EXIT_OK : cli_fail(&e);
+    status = text && atomic_write_text(output, text, &e) == 0 ? EXIT_OK : cli_fail(&e);
     free(text);
     cJSON_Delete(root);
     return status;

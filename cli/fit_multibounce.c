@@ -3,49 +3,44 @@
  * the data studies/multibounce_fit_input.h, the fits fitters/fit_multibounce.h,
  * the formula realtime/multibounce.h. */
 #define _GNU_SOURCE
-#include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli/cli.h"
+#include "cli/cli_options.h"
 #include "core/atomic_file.h"
 #include "fitters/fit_multibounce.h"
 #include "studies/multibounce_fit_input.h"
 
 enum { MAX_FILES = 256 };
 
-static void print_help(void)
-{
-    printf("usage: gtlab fit multibounce --data A.exr [B.exr ...] -o fit.json [options]\n"
-           "\n"
-           "Fits V'_d = max(V_d, ((a V_d + b) V_d + c) V_d) (GTAOMultiBounce, Jimenez et al. 2016)\n"
-           "to references made by 'gtlab render multibounce --albedo 0.1,0.2,...' (grey albedos;\n"
-           "each surface pixel, mask.A = 1, gives one sample (V_d = ao.V, V'_d, albedo) per albedo):\n"
-           "  per albedo      the cubic's a, b, c\n"
-           "  joint linear    a = a0 + a1 albedo, b, c likewise, fitted to all samples at once\n"
-           "  joint quadratic a, b, c quadratic in the albedo (3+ albedos), preferred only if\n"
-           "                  its leave-one-scene-out error is lower\n"
-           "Every scene and every albedo counts equally, whatever its pixel count. With 2+\n"
-           "scenes (the files' gtlab.scene) each scene is held out in turn: the model fitted\n"
-           "on the others is scored on it. The talk's published coefficients are scored on\n"
-           "the same data. Fits run through Ceres; standard errors from its covariance.\n"
-           "\n"
-           "options:\n"
-           "  --data F ...     reference EXRs (the option may repeat; further file names\n"
-           "                   after it are data too); all rendered with the same --bounces\n"
-           "  -o, --output F   the JSON: coefficients, standard errors, covariance, RMSE and\n"
-           "                   max error on the data, the talk's on the same data, LOO\n"
-           "                   table, data used (files, scenes, albedos, counts, weights)\n"
-           "  --header F.h     C header with the fitted functions (default: F without .json, .h)\n"
-           "  --hlsl F.hlsl    HLSL GTAOMultiBounce with the new coefficients (default: .hlsl)\n"
-           "  --glsl F.glsl    the same in GLSL (default: .glsl)\n"
-           "  -h, --help\n"
-           "\n"
-           "example: gtlab render multibounce --scene builtin:corner --albedo 0.1,0.2,0.3,0.4,0.5,0.7,0.9 -o c.exr\n"
-           "         gtlab fit multibounce --data c.exr m.exr -o fit.json\n"
-           "exit status: 0 success, 1 bad input, 2 internal error\n");
-}
+static const cli_option options[] = {
+    CLI_CUSTOM("data", "F ...", cli_list_add, "reference EXRs (the option may repeat; further file names\n"
+               "after it are data too); all rendered with the same --bounces"),
+    CLI_OUTPUT("F", 0, "the JSON: coefficients, standard errors, covariance, RMSE and\n"
+               "max error on the data, the talk's on the same data, LOO\n"
+               "table, data used (files, scenes, albedos, counts, weights)"),
+    CLI_STRING("header", "F.h", "C header with the fitted functions (default: F without .json, .h)"),
+    CLI_STRING("hlsl", "F.hlsl", "HLSL GTAOMultiBounce with the new coefficients (default: .hlsl)"),
+    CLI_STRING("glsl", "F.glsl", "the same in GLSL (default: .glsl)"), CLI_END};
+static const cli_command command = {
+    "fit multibounce",
+    "Fits V'_d = max(V_d, ((a V_d + b) V_d + c) V_d) (GTAOMultiBounce, Jimenez et al. 2016)\n"
+    "to references made by 'gtlab render multibounce --albedo 0.1,0.2,...' (grey albedos;\n"
+    "each surface pixel, mask.A = 1, gives one sample (V_d = ao.V, V'_d, albedo) per albedo):\n"
+    "  per albedo      the cubic's a, b, c\n"
+    "  joint linear    a = a0 + a1 albedo, b, c likewise, fitted to all samples at once\n"
+    "  joint quadratic a, b, c quadratic in the albedo (3+ albedos), preferred only if\n"
+    "                  its leave-one-scene-out error is lower\n"
+    "Every scene and every albedo counts equally, whatever its pixel count. With 2+\n"
+    "scenes (the files' gtlab.scene) each scene is held out in turn: the model fitted\n"
+    "on the others is scored on it. The talk's published coefficients are scored on\n"
+    "the same data. Fits run through Ceres; standard errors from its covariance.",
+    options, "[B.exr ...]",
+    "example: gtlab render multibounce --scene builtin:corner --albedo 0.1,0.2,0.3,0.4,0.5,0.7,0.9 -o c.exr\n"
+    "         gtlab fit multibounce --data c.exr m.exr -o fit.json\n"
+    "exit status: 0 success, 1 bad input, 2 internal error"};
 
 /* F without a trailing ".json", with `extension` appended. */
 static void sibling_path(const char *json, const char *extension, char *out, size_t size)
@@ -95,42 +90,20 @@ static void command_text(int argc, char **argv, char *out, size_t size)
 
 int fit_multibounce(int argc, char **argv)
 {
-    enum { OPT_DATA = 256, OPT_HEADER, OPT_HLSL, OPT_GLSL };
-    static const struct option longs[] = {{"data", required_argument, 0, OPT_DATA},
-                                          {"output", required_argument, 0, 'o'},
-                                          {"header", required_argument, 0, OPT_HEADER},
-                                          {"hlsl", required_argument, 0, OPT_HLSL},
-                                          {"glsl", required_argument, 0, OPT_GLSL},
-                                          {"help", no_argument, 0, 'h'},
-                                          {0, 0, 0, 0}};
     const char *files[MAX_FILES], *output = NULL, *header = NULL, *hlsl = NULL, *glsl = NULL;
-    int file_count = 0, data_given = 0, c;
-    char command[4096];
-    command_text(argc, argv, command, sizeof command); /* before getopt permutes argv */
-    while ((c = getopt_long(argc, argv, "o:h", longs, NULL)) != -1) {
-        switch (c) {
-        case OPT_DATA:
-            if (file_count == MAX_FILES)
-                return cli_failf("--data", "more than %d files", MAX_FILES);
-            files[file_count++] = optarg;
-            data_given = 1;
-            break;
-        case 'o': output = optarg; break;
-        case OPT_HEADER: header = optarg; break;
-        case OPT_HLSL: hlsl = optarg; break;
-        case OPT_GLSL: glsl = optarg; break;
-        case 'h': print_help(); return EXIT_OK;
-        default: return cli_usage_error("fit multibounce");
-        }
-    }
-    for (; optind < argc; ++optind) {
-        if (!data_given)
-            return cli_failf("fit multibounce", "unexpected argument '%s' (data files follow --data)", argv[optind]);
-        if (file_count == MAX_FILES)
-            return cli_failf("--data", "more than %d files", MAX_FILES);
-        files[file_count++] = argv[optind];
-    }
-    if (file_count == 0)
+    cli_list data = {files, 0, MAX_FILES, "--data"};
+    cli_arguments more;
+    char command_line[4096];
+    command_text(argc, argv, command_line, sizeof command_line); /* before getopt permutes argv */
+    int status;
+    if (cli_options_parse(&command, (void *[]){&data, &output, &header, &hlsl, &glsl, &more}, argc, argv, &status) != 0)
+        return status;
+    if (more.count > 0 && data.count == 0)
+        return cli_failf("fit multibounce", "unexpected argument '%s' (data files follow --data)", more.values[0]);
+    for (int i = 0; i < more.count; ++i)
+        if (cli_list_add(&data, more.values[i]) != 0)
+            return EXIT_USER_ERROR;
+    if (data.count == 0)
         return cli_failf("--data", "no reference files given (see 'gtlab fit multibounce --help')");
     if (!output)
         return cli_failf("-o", "an output file is required (fit.json)");
@@ -151,11 +124,11 @@ int fit_multibounce(int argc, char **argv)
     multibounce_data d;
     multibounce_data_init(&d);
     multibounce_analysis *a = malloc(sizeof *a);
-    int status = EXIT_OK;
+    status = EXIT_OK;
     if (!a)
         status = cli_failf("fit multibounce", "out of memory");
-    else if (multibounce_fit_input_load(files, file_count, &d, &e) != 0 || multibounce_analyse(&d, a, &e) != 0 ||
-             multibounce_write_outputs(&d, a, command, output, header, hlsl, glsl, &e) != 0)
+    else if (multibounce_fit_input_load(files, data.count, &d, &e) != 0 || multibounce_analyse(&d, a, &e) != 0 ||
+             multibounce_write_outputs(&d, a, command_line, output, header, hlsl, glsl, &e) != 0)
         status = cli_fail(&e);
     else
         print_summary(&d, a);

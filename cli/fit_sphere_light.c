@@ -3,11 +3,11 @@
  * in flux ... to better match our reference") to gtlab's Monte Carlo
  * reference (studies/sphere_light.h), and writes the constants for an
  * engine: JSON, a C header, HLSL and GLSL (fitters/fit_sphere_light_outputs.h). */
-#include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
 
 #include "cli/cli.h"
+#include "cli/cli_options.h"
 #include "fitters/fit_sphere_light_outputs.h"
 #include "studies/sphere_light.h"
 #include "core/threads.h"
@@ -29,62 +29,41 @@ static void print_outcome(const sphere_fit_settings *s, const sphere_fit_outcome
     printf("reference noise: mean relative standard error %.4f\n", o->mean_reference_rel_stderr);
 }
 
-static void print_help(void)
-{
-    printf("usage: gtlab fit sphere-light -o fit.json [--train N] [--test N] [--samples S] [--seed S]\n"
-           "                              [--threads T]\n"
-           "\n"
-           "Refits the radius reduction and the normalisation constants of Decima's\n"
-           "EvaluateSphericalAreaGGX (SIGGRAPH 2017 appendix; published 0.25, 0.25, 3.0) to Monte\n"
-           "Carlo references of a GGX surface under a uniform spherical light, over a realistic\n"
-           "distribution of roughness (0.05-1), angular size (the sun's to 30 deg), view angle and\n"
-           "light direction (mostly near the mirror direction, where highlights are). The error is\n"
-           "ln((model + 0.01) / (reference + 0.01)) in 1/sr per unit normal illuminance: relative\n"
-           "where the highlight is. Errors of Karis's, the published and the refitted constants are\n"
-           "measured on held-out configurations, with standard errors. The radius reduction is\n"
-           "profiled (held on a grid while the normalisation is fitted: the cost is rugged in it);\n"
-           "its value and standard error come from a parabola through the profile. Writes\n"
-           "  fit.json    values, standard errors, covariance, errors before/after, data used\n"
-           "  fit.h       the constants for realtime/sphere_light.h (C)\n"
-           "  fit.hlsl    GetNoHSquared (corrected) and EvaluateSphericalAreaGGX with the constants\n"
-           "  fit.glsl    the same for GLSL\n"
-           "\n"
-           "  -o, --output F.json   where to write (the others beside it)\n"
-           "  --train N     configurations fitted (default 8000)\n"
-           "  --test N      held-out configurations (default 4000)\n"
-           "  --samples S   MIS samples per reference (default 1024)\n"
-           "  --seed S      seed of the configurations and samples (default 1)\n"
-           "  --threads T   threads (default: all cores; results do not depend on it)\n");
-}
+static const cli_option options[] = {
+    CLI_OUTPUT("F.json", 0, "where to write (the others beside it)"),
+    CLI_INT("train", "N", 16, 10000000, "configurations fitted"),
+    CLI_INT("test", "N", 16, 10000000, "held-out configurations"),
+    CLI_INT("samples", "S", 2, 1 << 24, "MIS samples per reference"),
+    CLI_SEED("seed", "seed of the configurations and samples"), CLI_THREADS, CLI_END};
+static const cli_command command = {
+    "fit sphere-light",
+    "Refits the radius reduction and the normalisation constants of Decima's\n"
+    "EvaluateSphericalAreaGGX (SIGGRAPH 2017 appendix; published 0.25, 0.25, 3.0) to Monte\n"
+    "Carlo references of a GGX surface under a uniform spherical light, over a realistic\n"
+    "distribution of roughness (0.05-1), angular size (the sun's to 30 deg), view angle and\n"
+    "light direction (mostly near the mirror direction, where highlights are). The error is\n"
+    "ln((model + 0.01) / (reference + 0.01)) in 1/sr per unit normal illuminance: relative\n"
+    "where the highlight is. Errors of Karis's, the published and the refitted constants are\n"
+    "measured on held-out configurations, with standard errors. The radius reduction is\n"
+    "profiled (held on a grid while the normalisation is fitted: the cost is rugged in it);\n"
+    "its value and standard error come from a parabola through the profile. Writes\n"
+    "  fit.json    values, standard errors, covariance, errors before/after, data used\n"
+    "  fit.h       the constants for realtime/sphere_light.h (C)\n"
+    "  fit.hlsl    GetNoHSquared (corrected) and EvaluateSphericalAreaGGX with the constants\n"
+    "  fit.glsl    the same for GLSL",
+    options, NULL, NULL};
 
 int fit_sphere_light(int argc, char **argv)
 {
-    static const struct option longs[] = {
-        {"output", required_argument, 0, 'o'}, {"train", required_argument, 0, 'n'},
-        {"test", required_argument, 0, 'm'},   {"samples", required_argument, 0, 's'},
-        {"seed", required_argument, 0, 'S'},   {"threads", required_argument, 0, 't'},
-        {"help", no_argument, 0, 'h'},         {0, 0, 0, 0}};
     const char *output = NULL;
-    long train = 8000, test = 4000, samples = 1024, threads = threads_default();
-    uint32_t seed = 1;
-    int c;
-    while ((c = getopt_long(argc, argv, "o:h", longs, NULL)) != -1) {
-        switch (c) {
-        case 'o': output = optarg; break;
-        case 'n': if (cli_parse_int("--train", optarg, 16, 10000000, &train)) return EXIT_USER_ERROR; break;
-        case 'm': if (cli_parse_int("--test", optarg, 16, 10000000, &test)) return EXIT_USER_ERROR; break;
-        case 's': if (cli_parse_int("--samples", optarg, 2, 1 << 24, &samples)) return EXIT_USER_ERROR; break;
-        case 'S': if (cli_parse_u32("--seed", optarg, &seed)) return EXIT_USER_ERROR; break;
-        case 't': if (cli_parse_int("--threads", optarg, 1, 1024, &threads)) return EXIT_USER_ERROR; break;
-        case 'h': print_help(); return EXIT_OK;
-        default: return cli_usage_error("fit sphere-light");
-        }
-    }
-    if (optind < argc)
-        return cli_failf("fit sphere-light", "unexpected argument '%s'", argv[optind]);
+    long train = 8000, test = 4000, samples = 1024, seed = 1, threads = threads_default();
+    int status;
+    if (cli_options_parse(&command, (void *[]){&output, &train, &test, &samples, &seed, &threads}, argc, argv,
+                          &status) != 0)
+        return status;
     if (!output)
         return cli_failf("fit sphere-light", "no output given (-o fit.json)");
-    sphere_fit_settings s = {(int)train, (int)test, (uint32_t)samples, seed, (int)threads};
+    sphere_fit_settings s = {(int)train, (int)test, (uint32_t)samples, (uint32_t)seed, (int)threads};
     static sphere_fit_outcome o;
     gt_error e;
     if (sphere_fit_check_writable(output, &e) != 0 || sphere_fit_study(&s, &o, &e) != 0 ||

@@ -31,7 +31,7 @@ static const cli_command command = {
     "Writes DIR/specular_occlusion_<lobe>_<N>.exr (float), .png (8-bit, linear),\n"
     ".h (C array) and .json (axes, quadrature error estimate, interpolation error of\n"
     "trilinear lookup against direct integration at 4096 random points).",
-    options};
+    options, NULL, NULL};
 
 typedef struct {
     long size;

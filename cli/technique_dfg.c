@@ -23,7 +23,7 @@ static int lut_dfg(int argc, char **argv)
         "roughness, sampled at texel centres as a GPU reads them (luts/dfg_lut.h).\n"
         "Writes DIR/dfg_N.exr (float A, B, E), .png (16-bit, R = A, G = B), .h (C array)\n"
         "and .hlsl, .glsl (the array and DFG(nv, roughness), the same bilinear lookup).",
-        options};
+        options, NULL, NULL};
     long size = DFG_FILAMENT_SIZE, threads = threads_default();
     const char *dir = NULL;
     int status;

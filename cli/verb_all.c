@@ -1,8 +1,6 @@
 /* gtlab all: the main job — every reference, fit, LUT and validation, and the
  * accuracy report (report.md, report.html, summary.json). */
 #define _GNU_SOURCE
-#include <errno.h>
-#include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,6 +8,7 @@
 
 #include "report/report_context.h"
 #include "cli/cli.h"
+#include "cli/cli_options.h"
 #include "cli/technique.h"
 #include "core/atomic_file.h"
 #include "core/output_set.h"
@@ -22,26 +21,28 @@ enum { STAGE_MAX = 64 };
 static const all_stage *stages[STAGE_MAX];
 static int stage_count;
 
-static void print_help(void)
+static const char *quality_name(int i) { return i == QUALITY_PRODUCTION ? "production" : "preview"; }
+
+static const cli_option options[] = {
+    CLI_CHOICE("quality", "Q", quality_name, 2, "preview (a few minutes on 2 cores) or production"),
+    CLI_OUTPUT("DIR", 0, "output folder"),
+    CLI_INT32("threads", "T", 1, 1024, "worker threads (default: all cores; results do not depend on it)"),
+    CLI_STRING("stages", "LIST", "comma-separated stage names from the list above (default: all);\n"
+               "the report then holds those sections only. A stage that reads\n"
+               "another's output uses it from this run, or from an earlier run\n"
+               "into the same DIR"),
+    CLI_END};
+
+/* The help's paragraph, with the registered stages. */
+static void describe(char *text, size_t size)
 {
-    printf("usage: gtlab all [--quality preview|production] [-o DIR] [--threads T] [--stages LIST]\n"
-           "\n"
-           "Runs every stage on the built-in scenes and writes the accuracy report:\n"
-           "  DIR/report.md, DIR/report.html   the report (figures under DIR/figures)\n"
-           "  DIR/summary.json                 every figure of the report, machine-readable\n"
-           "  DIR/ao/*.exr                     the references (with their .camera.json)\n"
-           "Stages:\n");
-    for (int i = 0; i < stage_count; ++i)
-        printf("  %-20s %s%s%s\n", stages[i]->key, stages[i]->title, stages[i]->needs ? ", reads the output of " : "",
-               stages[i]->needs ? stages[i]->needs : "");
-    printf("\n"
-           "  --quality Q   preview (default: a few minutes on 2 cores) or production\n"
-           "  -o, --output DIR   output folder (default results)\n"
-           "  --threads T   worker threads (default: all cores; results do not depend on it)\n"
-           "  --stages LIST comma-separated stage names from the list above (default: all);\n"
-           "                the report then holds those sections only. A stage that reads\n"
-           "                another's output uses it from this run, or from an earlier run\n"
-           "                into the same DIR\n");
+    int k = snprintf(text, size, "Runs every stage on the built-in scenes and writes the accuracy report:\n"
+                     "  DIR/report.md, DIR/report.html   the report (figures under DIR/figures)\n"
+                     "  DIR/summary.json                 every figure of the report, machine-readable\n"
+                     "  DIR/ao/*.exr                     the references (with their .camera.json)\nStages:");
+    for (int i = 0; i < stage_count && k < (int)size; ++i)
+        k += snprintf(text + k, size - (size_t)k, "\n  %-20s %s%s%s", stages[i]->key, stages[i]->title,
+                      stages[i]->needs ? ", reads the output of " : "", stages[i]->needs ? stages[i]->needs : "");
 }
 
 /* Marks the stages named in the comma-separated list; -1 after an error (printed). */
@@ -76,45 +77,18 @@ static int write_summary(const report_context *ctx, gt_error *e)
     return rc;
 }
 
-/* Parses the options into ctx and selected; 1 after --help, -1 after an error (printed). */
-static int parse_options(int argc, char **argv, report_context *ctx, int selected[STAGE_MAX], const char **stage_list)
+/* Parses the options into ctx and selected; 1 and the exit status to stop. */
+static int parse_options(int argc, char **argv, report_context *ctx, int selected[STAGE_MAX], const char **stage_list,
+                         int *status)
 {
-    static const struct option longs[] = {{"quality", required_argument, 0, 'q'},
-                                          {"output", required_argument, 0, 'o'},
-                                          {"threads", required_argument, 0, 't'},
-                                          {"stages", required_argument, 0, 's'},
-                                          {"help", no_argument, 0, 'h'},
-                                          {0, 0, 0, 0}};
-    long threads;
-    int c;
-    while ((c = getopt_long(argc, argv, "o:h", longs, NULL)) != -1) {
-        switch (c) {
-        case 'q':
-            if (strcmp(optarg, "preview") == 0)
-                ctx->study.quality = QUALITY_PREVIEW;
-            else if (strcmp(optarg, "production") == 0)
-                ctx->study.quality = QUALITY_PRODUCTION;
-            else
-                return cli_failf("--quality", "'%s' is neither preview nor production", optarg), -1;
-            break;
-        case 'o': ctx->study.output_dir = optarg; break;
-        case 't':
-            if (cli_parse_int("--threads", optarg, 1, 1024, &threads))
-                return -1;
-            ctx->study.threads = (int)threads;
-            break;
-        case 's':
-            if (select_stages(optarg, selected) != 0)
-                return -1;
-            *stage_list = optarg;
-            break;
-        case 'h': print_help(); return 1;
-        default: return cli_usage_error("all"), -1;
-        }
-    }
-    if (optind < argc)
-        return cli_failf("all", "unexpected argument '%s'", argv[optind]), -1;
-    return 0;
+    char description[8192];
+    describe(description, sizeof description);
+    const cli_command command = {"all", description, options, NULL, NULL};
+    study_context *s = &ctx->study;
+    if (cli_options_parse(&command, (void *[]){&s->quality, &s->output_dir, &s->threads, stage_list}, argc, argv,
+                          status) != 0)
+        return 1;
+    return *stage_list && select_stages(*stage_list, selected) != 0 ? (*status = EXIT_USER_ERROR, 1) : 0;
 }
 
 static int stage_index(const char *key)
@@ -194,16 +168,16 @@ int verb_all(int argc, char **argv)
     for (int i = 0; i < STAGE_MAX; ++i)
         selected[i] = 1;
     const char *stage_list = NULL;
-    int parsed = parse_options(argc, argv, &ctx, selected, &stage_list);
-    if (parsed != 0)
-        return parsed > 0 ? EXIT_OK : EXIT_USER_ERROR;
+    int status;
+    if (parse_options(argc, argv, &ctx, selected, &stage_list, &status) != 0)
+        return status;
     if (check_inputs(&ctx, selected) != 0)
         return EXIT_USER_ERROR;
-    gt_error e;
-    if (mkdir(ctx.study.output_dir, 0755) != 0 && errno != EEXIST)
-        return cli_failf(ctx.study.output_dir, "cannot create folder: %s", strerror(errno));
+    if ((status = cli_make_output_dir(ctx.study.output_dir)) != 0)
+        return status;
     char probe[4096];
     snprintf(probe, sizeof probe, "%s/report.md", ctx.study.output_dir);
+    gt_error e;
     if (atomic_file_check_writable(probe, &e) != 0)
         return cli_fail(&e);
     report doc;
@@ -211,7 +185,7 @@ int verb_all(int argc, char **argv)
     ctx.doc = &doc;
     ctx.summary = cJSON_CreateObject();
     introduce(&ctx, stage_list);
-    int status = run_stages(&ctx, selected);
+    status = run_stages(&ctx, selected);
     if (status == EXIT_OK)
         printf("report: %s/report.html and %s/report.md\n", ctx.study.output_dir, ctx.study.output_dir);
     report_free(&doc);

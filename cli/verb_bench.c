@@ -2,45 +2,39 @@
  * (studies/ray_throughput.h, studies/specular_occlusion_bench.h); here the
  * options, the dispatch to the techniques' benchmarks and the printing. */
 #define _GNU_SOURCE
-#include <getopt.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "cli/cli.h"
+#include "cli/cli_options.h"
 #include "cli/technique.h"
 #include "studies/ray_throughput.h"
 #include "studies/specular_occlusion_bench.h"
 #include "core/threads.h"
 
-static void print_help(void)
-{
-    printf("usage: gtlab bench rays|specular-occlusion|gtao|multibounce|fit|sphere-light|convergence\n"
-           "       [options]\n"
-           "       (gtlab bench NAME --help for gtao, multibounce, fit, sphere-light and convergence)\n\n"
-           "usage: gtlab bench rays|specular-occlusion [--scene S] [--width W] [--height H] [--threads T] [--repeats R]\n"
-           "\n"
-           "Measures, in one run, on the same scene, camera and machine:\n"
-           "  raw Embree   occlusion rays/s through rtcOccluded1, rtcOccluded1M (streams of 64\n"
-           "               and 128) and rtcOccluded8/16 packets, on a prepared array of the very\n"
-           "               rays the AO reference traces at 64 spp, in its order (incoherent: per\n"
-           "               sample one cosine- and one uniform-distributed direction leaving the\n"
-           "               visible surfaces); the best of the call forms is the reference figure\n"
-           "  gtlab AO     rays/s of the AO reference loop at 64 spp (sampling, Embree,\n"
-           "               exact accumulation)\n"
-           "and prints their ratio, and the speed-up of T threads over 1. Each figure is the\n"
-           "best of R passes (default 3).\n"
-           "'gtlab bench specular-occlusion': samples/s of the specular-occlusion reference\n"
-           "(64 spp, roughness 0.5), 1 thread and T threads.\n"
-           "\n"
-           "  --scene S      builtin:NAME or a glTF file (default builtin:menger)\n"
-           "  --width W --height H   image size (default 256x256)\n"
-           "  --threads T    threads for the parallel figures (default: all cores)\n"
-           "  --repeats R    passes per figure (default 3)\n"
-           "\n"
-           "Other benchmarks, each with --help: gtlab bench gtao (GTAO in the talk's configuration\n"
-           "at 1920x1080 and every preset's cost per pixel), multibounce, fit, sphere-light,\n"
-           "convergence (AO time to RMSE 0.01, plain against the height-field control variate).\n");
-}
+static const cli_option options[] = {
+    CLI_STRING("scene", "S", "builtin:NAME or a glTF file"), CLI_INT("width", "W", 16, 8192, "image width"),
+    CLI_INT("height", "H", 16, 8192, "image height"),
+    CLI_INT("threads", "T", 1, 1024, "threads for the parallel figures (default: all cores)"),
+    CLI_INT("repeats", "R", 1, 100, "passes per figure"), CLI_END};
+static const cli_command command = {
+    "bench",
+    "'gtlab bench rays' measures, in one run, on the same scene, camera and machine:\n"
+    "  raw Embree   occlusion rays/s through rtcOccluded1, rtcOccluded1M (streams of 64\n"
+    "               and 128) and rtcOccluded8/16 packets, on a prepared array of the very\n"
+    "               rays the AO reference traces at 64 spp, in its order (incoherent: per\n"
+    "               sample one cosine- and one uniform-distributed direction leaving the\n"
+    "               visible surfaces); the best of the call forms is the reference figure\n"
+    "  gtlab AO     rays/s of the AO reference loop at 64 spp (sampling, Embree,\n"
+    "               exact accumulation)\n"
+    "and prints their ratio, and the speed-up of T threads over 1. Each figure is the\n"
+    "best of R passes.\n"
+    "'gtlab bench specular-occlusion': samples/s of the specular-occlusion reference\n"
+    "(64 spp, roughness 0.5), 1 thread and T threads.",
+    options, "rays|specular-occlusion|gtao|multibounce|fit|sphere-light|convergence",
+    "Other benchmarks, each with --help: gtlab bench gtao (GTAO in the talk's configuration\n"
+    "at 1920x1080 and every preset's cost per pixel), multibounce, fit, sphere-light,\n"
+    "convergence (AO time to RMSE 0.01, plain against the height-field control variate)."};
 
 static void print_rays(const ray_throughput_result *r)
 {
@@ -86,11 +80,6 @@ static int run_named(int specular, const char *spec, int width, int height, int 
 
 int verb_bench(int argc, char **argv)
 {
-    static const struct option longs[] = {
-        {"scene", required_argument, 0, 's'},   {"width", required_argument, 0, 'W'},
-        {"height", required_argument, 0, 'H'},  {"threads", required_argument, 0, 't'},
-        {"repeats", required_argument, 0, 'r'}, {"help", no_argument, 0, 'h'},
-        {0, 0, 0, 0}};
     /* The techniques' own benchmarks, each with its options (cli/techniques.c). */
     cli_subcommand registered[32];
     size_t count = technique_subcommands(VERB_BENCH, registered, 32);
@@ -101,20 +90,15 @@ int verb_bench(int argc, char **argv)
         }
     const char *scene_spec = "builtin:menger";
     long width = 256, height = 256, threads = threads_default(), repeats = 3;
-    int c;
-    while ((c = getopt_long(argc, argv, "h", longs, NULL)) != -1) {
-        switch (c) {
-        case 's': scene_spec = optarg; break;
-        case 'W': if (cli_parse_int("--width", optarg, 16, 8192, &width)) return EXIT_USER_ERROR; break;
-        case 'H': if (cli_parse_int("--height", optarg, 16, 8192, &height)) return EXIT_USER_ERROR; break;
-        case 't': if (cli_parse_int("--threads", optarg, 1, 1024, &threads)) return EXIT_USER_ERROR; break;
-        case 'r': if (cli_parse_int("--repeats", optarg, 1, 100, &repeats)) return EXIT_USER_ERROR; break;
-        case 'h': print_help(); return EXIT_OK;
-        default: return cli_usage_error("bench");
-        }
-    }
-    int specular = optind < argc && strcmp(argv[optind], "specular-occlusion") == 0;
-    if (optind >= argc || (strcmp(argv[optind], "rays") != 0 && !specular))
+    cli_arguments name;
+    int status;
+    if (cli_options_parse(&command, (void *[]){&scene_spec, &width, &height, &threads, &repeats, &name}, argc, argv,
+                          &status) != 0)
+        return status;
+    if (name.count > 1)
+        return cli_failf("bench", "unexpected argument '%s'", name.values[1]);
+    int specular = name.count == 1 && strcmp(name.values[0], "specular-occlusion") == 0;
+    if (name.count == 0 || (strcmp(name.values[0], "rays") != 0 && !specular))
         return cli_failf("bench", "name a benchmark: rays, specular-occlusion, gtao, multibounce, fit, sphere-light "
                                   "or convergence (see 'gtlab bench --help')");
     return run_named(specular, scene_spec, (int)width, (int)height, (int)threads, (int)repeats);

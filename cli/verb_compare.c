@@ -3,12 +3,11 @@
  * The metrics themselves live in metrics/ (ssim.h, image_error.h). */
 #define _GNU_SOURCE
 #include <cjson/cJSON.h>
-#include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "cli/cli.h"
+#include "cli/cli_options.h"
 #include "core/atomic_file.h"
 #include "core/exr_io.h"
 #include "core/image_io.h"
@@ -18,38 +17,34 @@
 #define HEATMAP_PERCENTILE_TEXT "99th"
 #define HEATMAP_COLOUR_MAP "inferno"
 
-static void print_help(void)
-{
-    printf("usage: gtlab compare A.exr B.exr [options]\n"
-           "\n"
-           "Compares one channel of two EXR images of the same size over the pixels where\n"
-           "both images' mask.A is 1 (an image without mask.A counts as all 1):\n"
-           "  SSIM      Wang, Bovik, Sheikh, Simoncelli 2004: 11x11 Gaussian window\n"
-           "            (sigma 1.5), K1 = 0.01, K2 = 0.03, L = 1, population variances;\n"
-           "            the mean over the window centres inside the mask whose window\n"
-           "            lies inside the image (so 5-pixel borders are never centres)\n"
-           "  DSSIM     (1 - SSIM) / 2\n"
-           "  RMSE, mean |A-B|, max |A-B| (and where), means of A and B\n"
-           "\n"
-           "options:\n"
-           "  --channel C           channel to compare (default: the first of ao.V,\n"
-           "                        multibounce.V, specocc.V, ao.Vuniform in both files)\n"
-           "  --noise-floor         also report the noise floor: the DSSIM between the\n"
-           "                        means of the even- and odd-index samples of A (A must\n"
-           "                        be a gtlab reference render), and of B if B is one\n"
-           "  --heatmap F.png       write an error heatmap (OIIO colour map '%s', black\n"
-           "                        outside the mask); full scale is the %s percentile of\n"
-           "                        the error inside the mask, and is printed\n"
-           "  --heatmap-metric M    abs: |A-B| per pixel (default); dssim: (1 - SSIM) / 2\n"
-           "                        of the window centred on each pixel\n"
-           "  --json                print one JSON object instead of the table\n"
-           "  -h, --help\n"
-           "\n"
-           "example: gtlab compare ao_ref.exr ao_gtao.exr --noise-floor --heatmap err.png\n"
-           "exit status: 0 success, 1 bad input (missing file or channel, sizes differ),\n"
-           "2 internal error\n",
-           HEATMAP_COLOUR_MAP, HEATMAP_PERCENTILE_TEXT);
-}
+static const char *metric_name(int i) { return i == 1 ? "dssim" : "abs"; }
+
+static const cli_option options[] = {
+    CLI_STRING("channel", "C", "channel to compare (default: the first of ao.V,\n"
+               "multibounce.V, specocc.V, ao.Vuniform in both files)"),
+    CLI_FLAG("noise-floor", "also report the noise floor: the DSSIM between the\n"
+             "means of the even- and odd-index samples of A (A must\n"
+             "be a gtlab reference render), and of B if B is one"),
+    CLI_STRING("heatmap", "F.png", "write an error heatmap (OIIO colour map '" HEATMAP_COLOUR_MAP "', black\n"
+               "outside the mask); full scale is the " HEATMAP_PERCENTILE_TEXT " percentile of\n"
+               "the error inside the mask, and is printed"),
+    CLI_CHOICE("heatmap-metric", "M", metric_name, 2, "abs: |A-B| per pixel (default); dssim: (1 - SSIM) / 2\n"
+               "of the window centred on each pixel"),
+    CLI_FLAG("json", "print one JSON object instead of the table"), CLI_END};
+static const cli_command command = {
+    "compare",
+    "Compares one channel of two EXR images of the same size over the pixels where\n"
+    "both images' mask.A is 1 (an image without mask.A counts as all 1):\n"
+    "  SSIM      Wang, Bovik, Sheikh, Simoncelli 2004: 11x11 Gaussian window\n"
+    "            (sigma 1.5), K1 = 0.01, K2 = 0.03, L = 1, population variances;\n"
+    "            the mean over the window centres inside the mask whose window\n"
+    "            lies inside the image (so 5-pixel borders are never centres)\n"
+    "  DSSIM     (1 - SSIM) / 2\n"
+    "  RMSE, mean |A-B|, max |A-B| (and where), means of A and B",
+    options, "A.exr B.exr",
+    "example: gtlab compare ao_ref.exr ao_gtao.exr --noise-floor --heatmap err.png\n"
+    "exit status: 0 success, 1 bad input (missing file or channel, sizes differ),\n"
+    "2 internal error"};
 
 typedef struct {
     const char *a, *b, *channel, *heatmap;
@@ -57,42 +52,21 @@ typedef struct {
     int json, noise_floor;
 } compare_options;
 
-/* Returns 0 to go on, 1 after --help, -1 after an error (already printed). */
-static int parse_options(int argc, char **argv, compare_options *o)
+/* Returns 0 to go on, else 1 and the exit status. */
+static int parse_options(int argc, char **argv, compare_options *o, int *status)
 {
-    enum { OPT_CHANNEL = 256, OPT_HEATMAP, OPT_HEATMAP_METRIC, OPT_JSON, OPT_NOISE_FLOOR };
-    static const struct option longs[] = {{"channel", required_argument, 0, OPT_CHANNEL},
-                                          {"heatmap", required_argument, 0, OPT_HEATMAP},
-                                          {"heatmap-metric", required_argument, 0, OPT_HEATMAP_METRIC},
-                                          {"json", no_argument, 0, OPT_JSON},
-                                          {"noise-floor", no_argument, 0, OPT_NOISE_FLOOR},
-                                          {"help", no_argument, 0, 'h'},
-                                          {0, 0, 0, 0}};
-    const char *metric = NULL;
-    int c;
-    while ((c = getopt_long(argc, argv, "h", longs, NULL)) != -1) {
-        switch (c) {
-        case OPT_CHANNEL: o->channel = optarg; break;
-        case OPT_HEATMAP: o->heatmap = optarg; break;
-        case OPT_HEATMAP_METRIC: metric = optarg; break;
-        case OPT_JSON: o->json = 1; break;
-        case OPT_NOISE_FLOOR: o->noise_floor = 1; break;
-        case 'h': print_help(); return 1;
-        default: return cli_usage_error("compare"), -1;
-        }
-    }
-    if (metric) {
-        if (strcmp(metric, "dssim") == 0)
-            o->heatmap_dssim = 1;
-        else if (strcmp(metric, "abs") != 0)
-            return cli_failf("--heatmap-metric", "'%s' is neither abs nor dssim", metric), -1;
-        if (!o->heatmap)
-            gt_warn("--heatmap-metric", "ignored without --heatmap");
-    }
-    if (argc - optind != 2)
-        return cli_failf("compare", "give exactly two EXR files, A and B (see 'gtlab compare --help')"), -1;
-    o->a = argv[optind];
-    o->b = argv[optind + 1];
+    int metric = -1;
+    cli_arguments files;
+    if (cli_options_parse(&command, (void *[]){&o->channel, &o->noise_floor, &o->heatmap, &metric, &o->json, &files},
+                          argc, argv, status) != 0)
+        return 1;
+    if (metric >= 0 && !o->heatmap)
+        gt_warn("--heatmap-metric", "ignored without --heatmap");
+    o->heatmap_dssim = metric == 1;
+    if (files.count != 2)
+        return *status = cli_failf("compare", "give exactly two EXR files, A and B (see 'gtlab compare --help')"), 1;
+    o->a = files.values[0];
+    o->b = files.values[1];
     return 0;
 }
 
@@ -208,9 +182,9 @@ static char *results_json(const compare_options *o, const metrics_pair *pair, co
 int verb_compare(int argc, char **argv)
 {
     compare_options o = {0};
-    int parsed = parse_options(argc, argv, &o);
-    if (parsed != 0)
-        return parsed > 0 ? EXIT_OK : EXIT_USER_ERROR;
+    int status;
+    if (parse_options(argc, argv, &o, &status) != 0)
+        return status;
 
     gt_error e;
     if (o.heatmap && atomic_file_check_writable(o.heatmap, &e) != 0)
@@ -222,7 +196,6 @@ int verb_compare(int argc, char **argv)
         image_free(&a);
         return cli_fail(&e);
     }
-    int status = EXIT_OK;
     metrics_pair pair;
     compare_results r = {0};
     if (metrics_pair_init(&pair, &a, o.a, &b, o.b, o.channel, &e) != 0) {

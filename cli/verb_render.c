@@ -1,179 +1,135 @@
 /* gtlab render QUANTITY: a reference image rendered with Embree. */
 #define _GNU_SOURCE
-#include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli/cli.h"
+#include "cli/cli_options.h"
 #include "core/atomic_file.h"
 #include "core/exr_io.h"
 #include "raytracer/reference_render.h"
 #include "scene/scene_loaders.h"
 #include "core/threads.h"
 
-enum { MAX_QUANTITY_OPTIONS = 64, FIRST_QUANTITY_OPTION = 256 };
+enum { MAX_QUANTITY_OPTIONS = 64, HELP_SIZE = 16384 };
 
-/* Prints text's lines, the first where the cursor is, the others indented. */
-static void print_indented(const char *text, int indent)
-{
-    for (const char *line = text; line;) {
-        const char *end = strchr(line, '\n');
-        printf("%.*s\n", end ? (int)(end - line) : (int)strlen(line), line);
-        if ((line = end ? end + 1 : NULL))
-            printf("%*s", indent, "");
-    }
-}
+static const char *normal_name(int i) { return i == NORMAL_GEOMETRIC ? "geometric" : "shading"; }
 
-/* "  --name VALUE          q1, q2 (required): help": a quantity option. */
-static void print_option_help(const reference_option *option)
-{
-    char synopsis[128], owners[256];
-    snprintf(synopsis, sizeof synopsis, "--%s%s%s", option->name, option->value ? " " : "",
-             option->value ? option->value : "");
-    reference_option_owners(option, ", ", owners, sizeof owners);
-    printf("  %-20s  %s%s: ", synopsis, owners, option->required ? " (required)" : "");
-    print_indented(option->help, 24);
-}
-
-static void print_help(void)
-{
-    printf("usage: gtlab render QUANTITY --scene F.glb|builtin:NAME -o out.exr [options]\n"
-           "\n"
-           "Renders a reference quantity at the surface seen through each pixel centre.\n"
-           "QUANTITY:\n");
-    for (int i = 0; i < reference_quantity_count(); ++i) {
-        printf("  %-8s  ", reference_quantity_at(i)->name);
-        print_indented(reference_quantity_at(i)->help, 12);
-    }
-    printf("\n"
-           "options:\n"
-           "  --scene S             a .gltf/.glb file or builtin:NAME ('gtlab scene list')\n"
-           "  --camera cam.json     camera JSON (default: the scene's camera, else a 3/4 view)\n"
-           "  --width W --height H  image size (one alone keeps the camera's aspect ratio)\n"
-           "  --spp N               samples per pixel, at most (default 64)\n"
-           "  --seed S              sequence seed (default 1)\n"
-           "  --sample-offset K     first sample index: renders the block [K, K+N) so blocks\n"
-           "                        of one seed can be rendered apart and merged\n"
-           "  --target-stderr E     stop a pixel once the standard error of its first channel\n"
-           "                        (ao.V; multibounce: the first multibounce channel;\n"
-           "                        specular-occlusion: specocc_occluded.V) is <= E\n"
-           "                        (checked at 64, 128, 256, ... samples)\n");
-    for (int i = 0; i < reference_option_count(); ++i)
-        print_option_help(reference_option_at(i));
-    printf("  --normal shading|geometric   normal the hemisphere is built on (default shading)\n"
-           "  --threads T           worker threads (default: all cores); the output does not\n"
-           "                        depend on it\n"
-           "  -o, --output F.exr    output EXR; the camera used goes to F.camera.json\n"
-           "  -h, --help\n");
-}
+static const cli_option common_options[] = {
+    CLI_STRING("scene", "S", "a .gltf/.glb file or builtin:NAME ('gtlab scene list')"),
+    CLI_STRING("camera", "cam.json", "camera JSON (default: the scene's camera, else a 3/4 view)"),
+    CLI_INT("width", "W", 1, 65536, "image width (default: the camera's; --width or --height\nalone keeps the camera's aspect ratio)"),
+    CLI_INT("height", "H", 1, 65536, "image height (default: the camera's)"),
+    CLI_INT32("spp", "N", 1, 1 << 24, "samples per pixel, at most"),
+    CLI_SEED("seed", "sequence seed"),
+    CLI_INT("sample-offset", "K", 0, 4294967295.0, "first sample index: renders the block [K, K+N) so blocks\n"
+             "of one seed can be rendered apart and merged"),
+    CLI_DOUBLE("target-stderr", "E", 0.0, 1.0, "stop a pixel once the standard error of its first channel\n"
+               "(ao.V; multibounce: the first multibounce channel;\nspecular-occlusion: specocc_occluded.V) is <= E\n"
+               "(checked at 64, 128, 256, ... samples; default 0: never)"),
+    CLI_CHOICE("normal", "shading|geometric", normal_name, 2, "normal the hemisphere is built on"),
+    CLI_INT32("threads", "T", 1, 1024, "worker threads (default: all cores); the output does not\ndepend on it"),
+    CLI_OUTPUT("F.exr", 0, "output EXR; the camera used goes to F.camera.json")};
+enum { COMMON_OPTIONS = sizeof common_options / sizeof common_options[0] };
 
 typedef struct {
     const char *scene, *camera, *output;
-    long width, height;
+    long width, height, seed, sample_offset;
     reference_request request;
     /* The quantity options as given (reference_option_at(i); "" for a flag), or NULL. */
     const char *values[MAX_QUANTITY_OPTIONS];
+    int flags[MAX_QUANTITY_OPTIONS];
 } render_options;
 
-static const struct option common_options[] = {
-    {"scene", required_argument, 0, 's'},         {"camera", required_argument, 0, 'c'},
-    {"width", required_argument, 0, 'W'},         {"height", required_argument, 0, 'H'},
-    {"spp", required_argument, 0, 'n'},           {"seed", required_argument, 0, 'S'},
-    {"sample-offset", required_argument, 0, 'k'}, {"target-stderr", required_argument, 0, 'e'},
-    {"normal", required_argument, 0, 'N'},        {"threads", required_argument, 0, 't'},
-    {"output", required_argument, 0, 'o'},        {"help", no_argument, 0, 'h'}};
-enum { COMMON_OPTIONS = sizeof common_options / sizeof common_options[0] };
-
-/* The common options, then every quantity's (FIRST_QUANTITY_OPTION + i for
- * reference_option_at(i)), then the terminator. -1 if they do not fit. */
-static int build_long_options(struct option *longs)
+/* Appends text to help[*k], its continuation lines indented. */
+static void append_indented(char *help, int *k, const char *text, int indent)
 {
-    memcpy(longs, common_options, sizeof common_options);
-    int n = reference_option_count();
-    if (n > MAX_QUANTITY_OPTIONS)
-        return cli_failf("render", "more than %d quantity options: raise MAX_QUANTITY_OPTIONS", MAX_QUANTITY_OPTIONS), -1;
-    for (int i = 0; i < n; ++i) {
-        const reference_option *option = reference_option_at(i);
-        longs[COMMON_OPTIONS + i] = (struct option){option->name, option->value ? required_argument : no_argument, 0,
-                                                    FIRST_QUANTITY_OPTION + i};
-    }
-    longs[COMMON_OPTIONS + n] = (struct option){0, 0, 0, 0};
-    return 0;
+    for (const char *p = text; *p && *k < HELP_SIZE - indent - 2; ++p)
+        *k += *p == '\n' ? snprintf(help + *k, HELP_SIZE - (size_t)*k, "\n%*s", indent, "")
+                         : (help[*k] = *p, help[*k + 1] = '\0', 1);
 }
 
-/* One common option; 1 after --help, -1 on error. */
-static int parse_common_option(int c, render_options *o)
+/* The help's paragraph with every quantity, and each quantity option's
+ * help ("q1, q2 (required): help") into texts, from one buffer. */
+static void describe(char *help, const char *texts[MAX_QUANTITY_OPTIONS])
 {
-    long value;
-    sampling_settings *ss = &o->request.sampling;
-    switch (c) {
-    case 's': o->scene = optarg; return 0;
-    case 'c': o->camera = optarg; return 0;
-    case 'o': o->output = optarg; return 0;
-    case 'W': return cli_parse_int("--width", optarg, 1, 65536, &o->width);
-    case 'H': return cli_parse_int("--height", optarg, 1, 65536, &o->height);
-    case 'n': return cli_parse_int("--spp", optarg, 1, 1 << 24, &value) ? -1 : (ss->spp = (int)value, 0);
-    case 'S': return cli_parse_u32("--seed", optarg, &ss->seed);
-    case 'k': return cli_parse_u32("--sample-offset", optarg, &ss->sample_offset);
-    case 'e': return cli_parse_double("--target-stderr", optarg, 0.0, 1.0, &ss->target_stderr);
-    case 't': return cli_parse_int("--threads", optarg, 1, 1024, &value) ? -1 : (ss->threads = (int)value, 0);
-    case 'N':
-        if (strcmp(optarg, "shading") == 0)
-            o->request.normals = NORMAL_SHADING;
-        else if (strcmp(optarg, "geometric") == 0)
-            o->request.normals = NORMAL_GEOMETRIC;
-        else
-            return cli_failf("--normal", "'%s' is neither shading nor geometric", optarg), -1;
-        return 0;
-    case 'h': print_help(); return 1;
-    default: return cli_usage_error("render"), -1;
+    int k = snprintf(help, HELP_SIZE, "Renders a reference quantity at the surface seen through each pixel centre.\n"
+                                      "QUANTITY:");
+    for (int i = 0; i < reference_quantity_count(); ++i) {
+        k += snprintf(help + k, HELP_SIZE - (size_t)k, "\n  %-8s  ", reference_quantity_at(i)->name);
+        append_indented(help, &k, reference_quantity_at(i)->help, 12);
+    }
+    for (int i = 0; i < reference_option_count() && k < HELP_SIZE - 512; ++i) {
+        const reference_option *option = reference_option_at(i);
+        texts[i] = help + ++k;
+        reference_option_owners(option, ", ", help + k, 256);
+        k += (int)strlen(help + k);
+        k += snprintf(help + k, HELP_SIZE - (size_t)k, "%s: %s", option->required ? " (required)" : "", option->help);
     }
 }
 
 /* The QUANTITY argument, then its defaults and its options (refusing those
  * of other quantities). */
-static int parse_quantity(int argc, char **argv, render_options *o)
+static int parse_quantity(const cli_arguments *args, render_options *o)
 {
     char names[512];
     reference_quantity_names(names, sizeof names);
-    if (optind >= argc)
+    if (args->count == 0)
         return cli_failf("render", "no QUANTITY given (%s; see 'gtlab render --help')", names), -1;
     reference_request *rq = &o->request;
-    if (reference_quantity_parse(argv[optind], &rq->quantity) != 0)
-        return cli_failf("render", "unknown quantity '%s' (%s)", argv[optind], names), -1;
-    if (optind + 1 < argc)
-        return cli_failf("render", "unexpected argument '%s'", argv[optind + 1]), -1;
+    if (reference_quantity_parse(args->values[0], &rq->quantity) != 0)
+        return cli_failf("render", "unknown quantity '%s' (%s)", args->values[0], names), -1;
+    if (args->count > 1)
+        return cli_failf("render", "unexpected argument '%s'", args->values[1]), -1;
     if (rq->quantity->settings_size && !(rq->settings = calloc(1, rq->quantity->settings_size)))
         return cli_failf("render", "out of memory"), -1;
     if (rq->quantity->set_defaults)
         rq->quantity->set_defaults(rq);
+    for (int i = 0; i < reference_option_count(); ++i)
+        if (o->flags[i])
+            o->values[i] = "";
     gt_error e;
     return reference_options_apply(rq, o->values, "render", &e) != 0 ? (cli_fail(&e), -1) : 0;
 }
 
-static int parse_options(int argc, char **argv, render_options *o)
+/* The common options, then every quantity's; 0 to go on, else 1 and the exit status. */
+static int parse_options(int argc, char **argv, render_options *o, int *status)
 {
-    struct option longs[COMMON_OPTIONS + MAX_QUANTITY_OPTIONS + 1];
-    if (build_long_options(longs) != 0)
-        return -1;
-    int c, quantity_options = reference_option_count();
-    while ((c = getopt_long(argc, argv, "o:h", longs, NULL)) != -1) {
-        int parsed = 0;
-        if (c >= FIRST_QUANTITY_OPTION && c < FIRST_QUANTITY_OPTION + quantity_options)
-            o->values[c - FIRST_QUANTITY_OPTION] = optarg ? optarg : "";
-        else if ((parsed = parse_common_option(c, o)) != 0)
-            return parsed;
+    static cli_option options[COMMON_OPTIONS + MAX_QUANTITY_OPTIONS + 1];
+    static char help[HELP_SIZE];
+    const char *texts[MAX_QUANTITY_OPTIONS] = {0};
+    sampling_settings *ss = &o->request.sampling;
+    void *dest[COMMON_OPTIONS + MAX_QUANTITY_OPTIONS + 1] = {&o->scene, &o->camera, &o->width, &o->height, &ss->spp,
+        &o->seed, &o->sample_offset, &ss->target_stderr, &o->request.normals, &ss->threads, &o->output};
+    int n = reference_option_count();
+    if (n > MAX_QUANTITY_OPTIONS)
+        return *status = cli_failf("render", "more than %d quantity options", MAX_QUANTITY_OPTIONS), 1;
+    describe(help, texts);
+    memcpy(options, common_options, sizeof common_options);
+    for (int i = 0; i < n; ++i) {
+        const reference_option *q = reference_option_at(i);
+        options[COMMON_OPTIONS + i] = q->value ? (cli_option)CLI_STRING(q->name, q->value, texts[i])
+                                               : (cli_option)CLI_FLAG(q->name, texts[i]);
+        dest[COMMON_OPTIONS + i] = q->value ? (void *)&o->values[i] : (void *)&o->flags[i];
     }
-    if (parse_quantity(argc, argv, o) != 0)
-        return -1;
+    options[COMMON_OPTIONS + n] = (cli_option)CLI_END;
+    cli_arguments quantity;
+    dest[COMMON_OPTIONS + n] = &quantity;
+    const cli_command command = {"render", help, options, "QUANTITY", NULL};
+    if (cli_options_parse(&command, dest, argc, argv, status) != 0)
+        return 1;
+    *status = EXIT_USER_ERROR;
+    if (parse_quantity(&quantity, o) != 0)
+        return 1;
     if (!o->scene)
-        return cli_failf("render", "--scene is required"), -1;
+        return cli_failf("render", "--scene is required"), 1;
     if (!o->output)
-        return cli_failf("render", "-o/--output is required"), -1;
-    if ((uint64_t)o->request.sampling.sample_offset + (uint64_t)o->request.sampling.spp > 4294967296ull)
-        return cli_failf("--sample-offset", "the block runs past sample index 2^32"), -1;
-    return 0;
+        return cli_failf("render", "-o/--output is required"), 1;
+    if ((uint64_t)o->sample_offset + (uint64_t)ss->spp > 4294967296ull)
+        return cli_failf("--sample-offset", "the block runs past sample index 2^32"), 1;
+    ss->seed = (uint32_t)o->seed, ss->sample_offset = (uint32_t)o->sample_offset;
+    return *status = EXIT_OK, 0;
 }
 
 /* Renders the parsed request and writes the EXR and its camera. */
@@ -209,16 +165,15 @@ static int render(const render_options *o)
 
 int verb_render(int argc, char **argv)
 {
-    render_options o = {0};
+    render_options o = {.seed = 1};
     o.request.sampling.spp = 64;
-    o.request.sampling.seed = 1;
     o.request.sampling.threads = threads_default();
-    int parsed = parse_options(argc, argv, &o);
-    if (parsed != 0) {
+    int status;
+    if (parse_options(argc, argv, &o, &status) != 0) {
         free(o.request.settings);
-        return parsed > 0 ? EXIT_OK : EXIT_USER_ERROR;
+        return status;
     }
-    int status = render(&o);
+    status = render(&o);
     free(o.request.settings);
     return status;
 }

@@ -3,29 +3,29 @@
  * other renderer can be run on exactly the geometry gtlab's references saw;
  * `gtlab scene info SCENE` says what gtlab made of a scene file. */
 #define _GNU_SOURCE
-#include <getopt.h>
 #include <stdio.h>
 #include <string.h>
 #include <strings.h>
 
 #include "cli/cli.h"
+#include "cli/cli_options.h"
 #include "scene/builtin_scenes.h"
 #include "scene/gltf_reader.h"
 #include "scene/gltf_writer.h"
 #include "scene/scene_loaders.h"
 
-static const char list_usage[] =
-    "usage: gtlab scene list\n"
-    "  Prints the name of every built-in scene with its exact geometry (units, positions, sizes,\n"
-    "  normals), materials and default camera. Any verb taking a scene accepts builtin:NAME.\n";
-
-static const char write_usage[] =
-    "usage: gtlab scene write NAME -o F.glb\n"
-    "  Writes the built-in scene NAME (see 'gtlab scene list') as binary glTF 2.0 with its\n"
-    "  materials and camera; the file appears whole or not at all.\n"
-    "  -o, --output F.glb   the file to write (required)\n"
-    "  -h, --help           this help\n";
-
+static const cli_option no_options[] = {CLI_END};
+static const cli_option write_options[] = {CLI_OUTPUT("F.glb", 0, "the file to write (required)"), CLI_END};
+static const cli_command list_command = {
+    "scene list",
+    "Prints the name of every built-in scene with its exact geometry (units, positions, sizes,\n"
+    "normals), materials and default camera. Any verb taking a scene accepts builtin:NAME.",
+    no_options, NULL, NULL};
+static const cli_command write_command = {
+    "scene write",
+    "Writes the built-in scene NAME (see 'gtlab scene list') as binary glTF 2.0 with its\n"
+    "materials and camera; the file appears whole or not at all.",
+    write_options, "NAME", NULL};
 /* Each line of the description indented under the scene's name. */
 static void print_scene(const builtin_scene *b)
 {
@@ -39,16 +39,9 @@ static void print_scene(const builtin_scene *b)
 
 static int scene_list(int argc, char **argv)
 {
-    static const struct option options[] = {{"help", no_argument, NULL, 'h'}, {NULL, 0, NULL, 0}};
-    int c = getopt_long(argc, argv, "h", options, NULL);
-    if (c == 'h') {
-        fputs(list_usage, stdout);
-        return EXIT_OK;
-    }
-    if (c != -1)
-        return cli_usage_error("scene");
-    if (optind != argc)
-        return cli_failf("scene list", "unexpected argument '%s' (see 'gtlab scene --help')", argv[optind]);
+    int status;
+    if (cli_options_parse(&list_command, NULL, argc, argv, &status) != 0)
+        return status;
     printf("Built-in scenes: use them as builtin:NAME, write them with 'gtlab scene write NAME -o F.glb'.\n"
            "Units are arbitrary (think metres); +Y is up; all normals are unit length.\n");
     for (int i = 0; i < builtin_scene_count(); ++i) {
@@ -58,16 +51,17 @@ static int scene_list(int argc, char **argv)
     return EXIT_OK;
 }
 
-static const char info_usage[] =
-    "usage: gtlab scene info SCENE\n"
-    "  What gtlab reads from a .gltf/.glb file or builtin:NAME: its meshes (one per glTF\n"
-    "  primitive, in world space) with their triangles, vertices and material, and whether\n"
-    "  each had normals; a primitive without NORMAL is flat-shaded (glTF 2.0, \"Meshes\"):\n"
-    "  each triangle gets its own vertices and its face normal. For a glTF file, also how it\n"
-    "  was read: the extensions it uses, its primitives by mode (strips and fans become\n"
-    "  triangles; points and lines are skipped), quantized and compressed data (with the\n"
-    "  largest position quantization step in world units), sparse accessors, morph targets\n"
-    "  and skins applied in their default pose, and primitives without normals.\n";
+static const cli_command info_command = {
+    "scene info",
+    "What gtlab reads from a .gltf/.glb file or builtin:NAME: its meshes (one per glTF\n"
+    "primitive, in world space) with their triangles, vertices and material, and whether\n"
+    "each had normals; a primitive without NORMAL is flat-shaded (glTF 2.0, \"Meshes\"):\n"
+    "each triangle gets its own vertices and its face normal. For a glTF file, also how it\n"
+    "was read: the extensions it uses, its primitives by mode (strips and fans become\n"
+    "triangles; points and lines are skipped), quantized and compressed data (with the\n"
+    "largest position quantization step in world units), sparse accessors, morph targets\n"
+    "and skins applied in their default pose, and primitives without normals.",
+    no_options, "SCENE", NULL};
 
 static void print_info(const scene *s)
 {
@@ -117,21 +111,17 @@ static int load_for_info(const char *spec, scene *s, gltf_report *r, int *is_glt
 
 static int scene_info(int argc, char **argv)
 {
-    static const struct option options[] = {{"help", no_argument, NULL, 'h'}, {NULL, 0, NULL, 0}};
-    int c = getopt_long(argc, argv, "h", options, NULL);
-    if (c == 'h') {
-        fputs(info_usage, stdout);
-        return EXIT_OK;
-    }
-    if (c != -1)
-        return cli_usage_error("scene");
-    if (optind != argc - 1)
+    cli_arguments spec;
+    int status;
+    if (cli_options_parse(&info_command, (void *[]){&spec}, argc, argv, &status) != 0)
+        return status;
+    if (spec.count != 1)
         return cli_failf("scene info", "expected one scene: a .gltf/.glb file or builtin:NAME");
     scene s;
     gt_error e;
     gltf_report report;
     int is_gltf;
-    if (load_for_info(argv[optind], &s, &report, &is_gltf, &e) != 0)
+    if (load_for_info(spec.values[0], &s, &report, &is_gltf, &e) != 0)
         return cli_fail(&e);
     print_info(&s);
     if (is_gltf)
@@ -148,26 +138,18 @@ static int has_glb_suffix(const char *path)
 
 static int scene_write(int argc, char **argv)
 {
-    static const struct option options[] = {
-        {"output", required_argument, NULL, 'o'}, {"help", no_argument, NULL, 'h'}, {NULL, 0, NULL, 0}};
     const char *output = NULL;
-    int c;
-    while ((c = getopt_long(argc, argv, "o:h", options, NULL)) != -1) {
-        if (c == 'h') {
-            fputs(write_usage, stdout);
-            return EXIT_OK;
-        }
-        if (c != 'o')
-            return cli_usage_error("scene");
-        output = optarg;
-    }
-    if (optind != argc - 1)
+    cli_arguments names;
+    int status;
+    if (cli_options_parse(&write_command, (void *[]){&output, &names}, argc, argv, &status) != 0)
+        return status;
+    if (names.count != 1)
         return cli_failf("scene write", "expected one scene name (see 'gtlab scene list')");
     if (!output)
         return cli_failf("scene write", "missing -o F.glb (see 'gtlab scene --help')");
     if (!has_glb_suffix(output))
         return cli_failf(output, "'gtlab scene write' writes binary glTF: name the output *.glb");
-    const char *name = argv[optind];
+    const char *name = names.values[0];
     if (strncmp(name, "builtin:", 8) == 0)
         name += 8;
     scene s;
@@ -193,9 +175,10 @@ int verb_scene(int argc, char **argv)
     if (argc >= 2 && strcmp(argv[1], "info") == 0)
         return scene_info(argc - 1, argv + 1);
     if (argc == 2 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
-        fputs(list_usage, stdout);
-        fputs(write_usage, stdout);
-        fputs(info_usage, stdout);
+        const char *none = NULL;
+        cli_options_print_help(&list_command, NULL);
+        cli_options_print_help(&write_command, (void *[]){&none});
+        cli_options_print_help(&info_command, NULL);
         return EXIT_OK;
     }
     if (argc < 2)
