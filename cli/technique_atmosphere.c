@@ -30,7 +30,7 @@ static int lut_atmosphere(int argc, char **argv)
         "irradiance at y) and L_sky(theta_s, y, t) (mean sky radiance at y); luts/atmosphere_luts.h.\n"
         "Defaults: the talk's (8, 64, 8, 4) = 128 KB and (64, 1, 4) = 4 KB. Writes\n"
         "DIR/atmosphere_{inscatter,sun,sky}.exr, atmosphere_luts.h, .hlsl, .glsl (one lookup).",
-        options};
+        options, NULL, NULL};
     long n[6] = {8, 64, 8, 4, 64, 1}, threads = threads_default();
     const char *dir = NULL;
     int status;
@@ -58,7 +58,7 @@ static int bench_atmosphere(int argc, char **argv)
         "Seconds to build the full set of atmosphere LUTs at the talk's sizes, for two weathers\n"
         "and their blends (t axis of 4: four precomputations with multiple scattering, then\n"
         "the texels). Issue 16's goal: under 10 s on 2 cores.",
-        options};
+        options, NULL, NULL};
     long threads = threads_default();
     int status;
     if (cli_options_parse(&command, (void *[]){&threads}, argc, argv, &status) != 0)

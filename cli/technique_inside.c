@@ -19,7 +19,7 @@ static int lut_blue_noise(int argc, char **argv)
         "lut blue-noise",
         "Void-and-cluster blue noise (Ulichney 1993, luts/blue_noise.h), as INSIDE bakes into 256^2 RGBA8\n"
         "(4 seeds): DIR/blue_noise_N.exr and .png (8-bit if 1 channel, else 16). Same inputs, same bits.",
-        options};
+        options, NULL, NULL};
     long size = 256, channels = 4, seed = 1;
     const char *dir = NULL;
     int status;
@@ -42,7 +42,7 @@ static int check_dither(int argc, char **argv)
         "check dither",
         "Floor-quantisation error moments of each dither (realtime/dither.h) against mean 0 and variance\n"
         "1/4 LSB^2 (TPDF of 2 LSB) or f(1-f) (RPDF); fails beyond 5 standard errors.",
-        options};
+        options, NULL, NULL};
     long signals = 33, samples = 100000;
     int status;
     dither_check_result r;

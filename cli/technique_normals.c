@@ -23,7 +23,7 @@ static int lut_best_fit_normals(int argc, char **argv)
         "error, indexed by u = the larger of the two smaller |n_i|, v = the smaller / the larger\n"
         "(luts/best_fit_normals.h). Writes DIR/best_fit_normals_N.exr (float t), .png (8-bit t,\n"
         "exact), .h (C array of codes) and .hlsl (the encode with a point sampler, and the decode).",
-        options};
+        options, NULL, NULL};
     long size = BFN_TALK_SIZE, threads = threads_default();
     const char *dir = NULL;
     int status;
