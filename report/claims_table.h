@@ -25,7 +25,7 @@
 
 #define CLAIM_Z 1.959963984540054 /* the two-sided 95% normal quantile */
 
-enum { CLAIMS_MAX = 64, CLAIM_TEXT = 320 };
+enum { CLAIMS_MAX = 128, CLAIM_TEXT = 320 };
 
 typedef enum { CLAIM_NOT_SIGNIFICANT, CLAIM_REPRODUCED, CLAIM_REFUTED } claim_verdict;
 
