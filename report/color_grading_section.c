@@ -19,10 +19,14 @@ static const report_column columns[] = {
     REPORT_REAL("chart p99 LSB", "chart_p99_lsb", "%.1f", ROW, image[0].p99_lsb),
     REPORT_REAL("cube max dE00", "cube_max_de", "%.2f", ROW, image[1].max_de),
     REPORT_REAL("cube p99 dE00", "cube_p99_de", "%.2f", ROW, image[1].p99_de),
+    REPORT_REAL("render max dE00", "render_max_de", "%.2f", ROW, image[2].max_de),
+    REPORT_REAL("render p99 dE00", "render_p99_de", "%.2f", ROW, image[2].p99_de),
     REPORT_INT("max dE00 < 1", "perceptual", ROW, perceptual),
     REPORT_INT("p99 <= 1 LSB", "within_1lsb", ROW, within_1lsb),
     REPORT_REAL(NULL, "cube_max_lsb", NULL, ROW, image[1].max_lsb),
     REPORT_REAL(NULL, "cube_p99_lsb", NULL, ROW, image[1].p99_lsb),
+    REPORT_REAL(NULL, "render_max_lsb", NULL, ROW, image[2].max_lsb),
+    REPORT_REAL(NULL, "render_p99_lsb", NULL, ROW, image[2].p99_lsb),
 };
 #undef ROW
 #define COLUMN_COUNT ((int)(sizeof columns / sizeof columns[0]))
@@ -78,7 +82,7 @@ static void render_findings(report_context *ctx, const grading_row *gpu, int n, 
     list_grades(gpu, n, 32, 0, no32, sizeof no32);
     report_finding(ctx->doc, "colour grading",
                    "An sRGB-indexed 16^3 RGBA8 LUT with hardware trilinear filtering keeps %d of %d looks below "
-                   "dE00 1 everywhere on the chart (%s; not: %s), and %d within 1 LSB at the 99th percentile; at "
+                   "dE00 1 everywhere on the chart and the render (%s; not: %s), and %d within 1 LSB at the 99th percentile; at "
                    "32^3 %d (not: %s).",
                    count, looks, yes, no, bits, count32, no32);
     report_finding(ctx->doc, "colour grading",
@@ -91,7 +95,8 @@ static void render_findings(report_context *ctx, const grading_row *gpu, int n, 
                    chart_max_de(tet, n_tet, "bleach bypass", 32), chart_max_de(tet, n_tet, "bleach bypass", 64));
     claims_table_add_figure(ctx->claims, "Kaplanyan 2010, CryENGINE 3, colour grading",
                             "a 16x16x16 LUT proved to be enough (for the majority of colour transformations)",
-                            "fraction of the study's five looks with chart max dE00 < 1, 16^3 sRGB RGBA8 trilinear",
+                            "fraction of the study's five looks with max dE00 < 1 on chart and render, 16^3 sRGB RGBA8 "
+                            "trilinear",
                             looks ? (double)count / looks : 0.0, 0.0, 0.5 + 1e-9, 1.0);
 }
 
@@ -106,7 +111,8 @@ int color_grading_section(report_context *ctx, const grading_result *r, gt_error
                      "by sRGB or by linear values, stored as float or RGBA8, looked up trilinearly or "
                      "tetrahedrally, and scored against the exact grade: on a photo-like HDR chart tone-mapped "
                      "to display values (hue, saturation and exposure sweeps, skin tones, a twelve-stop grey "
-                     "ramp) and on %d random colours (the cube). Errors: CIEDE2000 (Little CMS) and the largest "
+                     "ramp), on %d random colours (the cube) and on a gtlab render of the Cornell box (the frames of the "
+                     "anti-aliasing study, 2x2 samples). Errors: CIEDE2000 (Little CMS) and the largest "
                      "channel difference in 8-bit steps, max and 99th percentile. The "
                      "table shows the GPU path (sRGB-indexed, RGBA8, trilinear) and the float LUTs with each "
                      "lookup; summary.json holds every variant, the linear-indexed ones too.",
@@ -118,9 +124,10 @@ int color_grading_section(report_context *ctx, const grading_result *r, gt_error
     render_findings(ctx, gpu, n, tet, n_tet);
     report_rows(NULL, cJSON_AddArrayToObject(ctx->summary, "color_grading"), columns, COLUMN_COUNT, r->rows,
                 sizeof r->rows[0], r->row_count);
-    const char *p[4] = {"grading/chart.png", "grading/chart_grade1.png", "grading/chart_grade3.png",
-                        "grading/chart_grade5.png"};
-    const char *c[4] = {"the chart (display values)", "warm contrast", "bleach bypass", "clipped exposure +1.5"};
-    report_figures(ctx->doc, 4, p, c);
+    const char *p[5] = {"grading/chart.png", "grading/chart_grade1.png", "grading/chart_grade3.png",
+                        "grading/chart_grade5.png", "grading/render.png"};
+    const char *c[5] = {"the chart (display values)", "warm contrast", "bleach bypass", "clipped exposure +1.5",
+                        "the render (display values)"};
+    report_figures(ctx->doc, 5, p, c);
     return 0;
 }

@@ -9,6 +9,8 @@
 #include "core/image_io.h"
 #include "core/vec3.h" /* M_PI */
 #include "metrics/color_difference.h"
+#include "core/pixel_filter.h"
+#include "raytracer/shaded_frame.h"
 #include "realtime/hdr_precision.h"
 
 enum { CHART_PIXELS = GRADING_CHART_W * GRADING_CHART_H, CUBE_SAMPLES = 32768 };
@@ -69,6 +71,39 @@ static void make_chart(double *rgb)
             for (int c = 0; c < 3; ++c)
                 p[c] = fmin(1.0, tonemap_filmic_display(scene[c], 1.0));
         }
+}
+
+/* The render's display values from its radiance samples. */
+static void render_frame(const embree_scene *es, const camera *cam, int threads, float *radiance, float *xy,
+                         float *pixels, double *rgb)
+{
+    frame_lighting light = frame_lighting_default();
+    shaded_frame_render_supersampled(es, cam, &light, 2, 5u, threads, radiance, xy);
+    pixel_filter_resolve(PIXEL_FILTER_BOX, radiance, xy, GRADING_CHART_W, GRADING_CHART_H, 2, threads, pixels);
+    for (size_t k = 0; k < 3 * (size_t)CHART_PIXELS; ++k)
+        rgb[k] = fmin(1.0, tonemap_filmic_display(pixels[k], 1.0));
+}
+
+/* The render: builtin:cornell, 2 x 2 stratified samples per pixel, box
+ * filter, the filmic curve to display values. */
+static int make_render(double *rgb, int threads, gt_error *e)
+{
+    size_t samples = (size_t)CHART_PIXELS * 4;
+    float *radiance = malloc(3 * samples * sizeof(float)), *xy = malloc(2 * samples * sizeof(float));
+    float *pixels = malloc(3 * (size_t)CHART_PIXELS * sizeof(float));
+    scene s;
+    camera cam;
+    embree_scene es;
+    int rc = radiance && xy && pixels ? 0 : gt_error_set(e, "colour grading", "out of memory");
+    if (rc == 0 && (rc = study_load_view("builtin:cornell", GRADING_CHART_W, GRADING_CHART_H, &s, &cam, e)) == 0) {
+        if ((rc = embree_scene_build(&s, &es, e)) == 0) {
+            render_frame(&es, &cam, threads, radiance, xy, pixels, rgb);
+            embree_scene_release(&es);
+        }
+        scene_free(&s);
+    }
+    free(radiance), free(xy), free(pixels);
+    return rc;
 }
 
 static void make_cube(double *rgb)
@@ -150,7 +185,7 @@ static int score_grade(const color_grade *g, image_work w[GRADING_IMAGES], const
                                  .storage = variants[v].eight_bit ? "8-bit" : "float"};
             for (int i = 0; i < GRADING_IMAGES; ++i)
                 score_image(&lut, variants[v].interpolation, cd, &w[i], &row->image[i]);
-            row->perceptual = row->image[0].max_de < 1.0;
+            row->perceptual = row->image[0].max_de < 1.0 && row->image[2].max_de < 1.0;
             row->within_1lsb = row->image[0].p99_lsb <= 1.0;
             color_lut_free(&lut);
         }
@@ -198,6 +233,8 @@ static int run_grades(const char *dir, image_work w[GRADING_IMAGES], const color
                       gt_error *e)
 {
     int rc = write_chart(dir, "chart", w[0].in, e);
+    if (rc == 0)
+        rc = write_chart(dir, "render", w[2].in, e);
     for (int g = 0; g < COLOR_GRADE_PRESETS && rc == 0; ++g) {
         rc = score_grade(color_grade_preset(g), w, cd, out, e);
         char name[64];
@@ -217,16 +254,20 @@ int color_grading_study(const study_context *ctx, grading_result *out, gt_error 
         return -1;
     color_difference *cd = color_difference_create(e);
     double *chart = malloc(sizeof(double) * 3 * CHART_PIXELS), *cube = malloc(sizeof(double) * 3 * CUBE_SAMPLES);
+    double *render = malloc(sizeof(double) * 3 * CHART_PIXELS);
     image_work w[GRADING_IMAGES] = {{0}};
-    int rc = cd && chart && cube ? 0 : (cd ? gt_error_set(e, dir, "out of memory") : -1);
+    int rc = cd && chart && cube && render ? 0 : (cd ? gt_error_set(e, dir, "out of memory") : -1);
     if (rc == 0) {
         make_chart(chart), make_cube(cube);
-        rc = alloc_work(&w[0], chart, CHART_PIXELS) | alloc_work(&w[1], cube, CUBE_SAMPLES) ? gt_error_set(e, dir, "out of memory") : 0;
+        rc = make_render(render, ctx->threads, e);
     }
+    if (rc == 0 && (alloc_work(&w[0], chart, CHART_PIXELS) | alloc_work(&w[1], cube, CUBE_SAMPLES) |
+                    alloc_work(&w[2], render, CHART_PIXELS)))
+        rc = gt_error_set(e, dir, "out of memory");
     if (rc == 0)
         rc = run_grades(dir, w, cd, out, e);
-    free_work(&w[0]), free_work(&w[1]);
-    free(chart), free(cube);
+    free_work(&w[0]), free_work(&w[1]), free_work(&w[2]);
+    free(chart), free(cube), free(render);
     color_difference_free(cd);
     return rc;
 }

@@ -7,10 +7,13 @@
  *          stops of exposure, skin tones, a grey ramp over twelve stops)
  *          tone-mapped by the filmic curve (realtime/hdr_precision.h) to
  *          display values, 192 x 128;
- *   cube   32768 uniformly random display colours: every input a grade can see.
+ *   cube   32768 uniformly random display colours: every input a grade can see;
+ *   render a gtlab frame of builtin:cornell (raytracer/shaded_frame.h, 2 x 2
+ *          samples per pixel, box filter), 192 x 128, tone-mapped like the chart.
  * Errors per pixel: the largest channel difference in 8-bit steps (LSB) and
  * CIEDE2000 (metrics/color_difference.h); max and 99th percentile.
- * A LUT "suffices" perceptually when the chart's max CIEDE2000 is below 1;
+ * A LUT "suffices" perceptually when the max CIEDE2000 on the chart and on
+ * the render is below 1;
  * it is "within 1 LSB" when the chart's 99th percentile is. Writes <output>/grading/chart.png and the graded
  * chart per grade (exact and 16^3). */
 #ifndef GTLAB_STUDIES_COLOR_GRADING_H
@@ -22,7 +25,7 @@
 
 #define GRADING_DIR "grading"
 
-enum { GRADING_SIZES = 3, GRADING_VARIANTS = 5, GRADING_IMAGES = 2, GRADING_CHART_W = 192, GRADING_CHART_H = 128 };
+enum { GRADING_SIZES = 3, GRADING_VARIANTS = 5, GRADING_IMAGES = 3, GRADING_CHART_W = 192, GRADING_CHART_H = 128 };
 
 typedef struct {
     double max_lsb, p99_lsb, max_de, p99_de;
@@ -32,8 +35,8 @@ typedef struct {
     const char *grade;
     int size;
     const char *space, *interpolation, *storage;
-    grading_error image[GRADING_IMAGES]; /* chart, cube */
-    int perceptual;                      /* on the chart: max dE00 < 1 (unnoticeable side by side) */
+    grading_error image[GRADING_IMAGES]; /* chart, cube, render */
+    int perceptual;                      /* chart and render: max dE00 < 1 (unnoticeable side by side) */
     int within_1lsb;                     /* on the chart: p99 <= 1 LSB (to the bit, nearly) */
 } grading_row;
 
