@@ -76,6 +76,36 @@ double height_fog_segment_density(const height_fog_param *p, double y0, double y
     return d * exp(-low / p->scale_height) * height_fog_mean_factor((high - low) / p->scale_height);
 }
 
+/* The distance at which the integral of exp(-y/H) from y0 (no floor)
+ * reaches D; see the header. */
+static double distance_unbounded(double y0, double dir_y, double h, double d_int)
+{
+    double k = dir_y / h, e = y0 / h;
+    if (k < 0.0 && e > 600.0) /* exp(e) would overflow: log1p(x) = log(x) there */
+        return (log(-k * d_int) + e) / -k;
+    double scaled = d_int * exp(e), a = k * scaled;
+    if (a >= 1.0)
+        return INFINITY;
+    double g = fabs(a) > 1e-300 ? -log1p(-a) / a : 1.0;
+    return scaled * g;
+}
+
+double height_fog_distance_at(const height_fog_param *p, double y0, double dir_y, double density_integral)
+{
+    double skipped = 0.0;
+    if (y0 < p->floor_y) { /* below the fog: reach its floor first */
+        if (!(dir_y > 0.0))
+            return INFINITY;
+        skipped = (p->floor_y - y0) / dir_y;
+        y0 = p->floor_y;
+    } else if (dir_y < 0.0 && p->floor_y > -INFINITY) {
+        double to_floor = (p->floor_y - y0) / dir_y;
+        if (density_integral > height_fog_segment_density(p, y0, p->floor_y, to_floor))
+            return INFINITY;
+    }
+    return skipped + distance_unbounded(y0, dir_y, p->scale_height, density_integral);
+}
+
 void height_fog_extinction(const height_fog_param *p, double beta_t[3])
 {
     for (int c = 0; c < 3; ++c)

@@ -75,6 +75,15 @@ double height_fog_mean_factor(double x);
  * altitude y0 to altitude y1 (the floor clips it). Symmetric in y0, y1. */
 double height_fog_segment_density(const height_fog_param *p, double y0, double y1, double d);
 
+/* The inverse: the distance along a ray from altitude y0 whose unit
+ * direction has vertical component dir_y at which the integral of rho
+ * reaches D >= 0, or +infinity if it never does (upwards through a thin top,
+ * or down through the floor). Closed form: with k = dir_y / H and
+ * a = k D exp(y0/H), t = -log1p(-a) / k (t = D exp(y0/H) g(a) with
+ * g(a) = -log1p(-a)/a as k -> 0, no cancellation). Free-flight sampling
+ * (Monte Carlo) and the quadrature's change of variable use it. */
+double height_fog_distance_at(const height_fog_param *p, double y0, double dir_y, double density_integral);
+
 /* beta_t and beta_s per channel at y = 0. */
 void height_fog_extinction(const height_fog_param *p, double beta_t[3]);
 void height_fog_scattering(const height_fog_param *p, double beta_s[3]);

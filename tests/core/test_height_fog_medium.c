@@ -50,6 +50,33 @@ static void check_segments(void)
     }
 }
 
+/* height_fog_distance_at inverts height_fog_segment_density. */
+static void check_inverse(void)
+{
+    height_fog_param p = height_fog_param_default();
+    const double heights[] = {1.0, 100.0, 1e4, 1e12, INFINITY}, dirs[] = {-0.9, -1e-9, 0.0, 1e-9, 0.3, 1.0};
+    for (int i = 0; i < 5; ++i)
+        for (int j = 0; j < 6; ++j) {
+            p.scale_height = heights[i];
+            double y0 = 40.0, t = 250.0, y1 = y0 + dirs[j] * t;
+            if (exp(-(y1 - y0) / heights[i]) < 1e-9)
+                continue; /* the end lies where no fog is left to resolve it */
+            double d_int = height_fog_segment_density(&p, y0, y1, t);
+            double back = height_fog_distance_at(&p, y0, dirs[j], d_int);
+            CHECK_MSG(fabs(back - t) <= 1e-9 * t, "H=%g dir_y=%g: %.12g vs %g", heights[i], dirs[j], back, t);
+        }
+    p.scale_height = 100.0;
+    CHECK(height_fog_distance_at(&p, 0.0, 1.0, 100.0) == INFINITY); /* the whole column above holds 100 */
+    CHECK(height_fog_distance_at(&p, 0.0, 1.0, 99.0) < INFINITY);
+    /* Straight down from 100 km: H (rho(y) - rho(1e5)) = 1 at y = H ln H; no overflow. */
+    CHECK_NEAR(height_fog_distance_at(&p, 1e5, -1.0, 1.0), 1e5 - 100.0 * log(100.0), 1e-6);
+    p.floor_y = 0.0;
+    CHECK(height_fog_distance_at(&p, 10.0, -1.0, 100.0) == INFINITY);  /* through the floor */
+    CHECK(height_fog_distance_at(&p, -20.0, -0.5, 1.0) == INFINITY);   /* below it, going down */
+    double from_below = height_fog_distance_at(&p, -20.0, 0.5, 0.5), from_floor = height_fog_distance_at(&p, 0.0, 0.5, 0.5);
+    CHECK_NEAR(from_below, 40.0 + from_floor, 1e-9);
+}
+
 static void check_limits(void)
 {
     height_fog_param p = height_fog_param_default();
@@ -110,6 +137,7 @@ static void check_bad(void)
 int main(void)
 {
     check_segments();
+    check_inverse();
     check_limits();
     check_sun();
     check_bad();
