@@ -2,6 +2,7 @@
 #include "core/height_fog_medium.h"
 
 #include <math.h>
+#include <string.h>
 
 #include "core/phase_function.h"
 
@@ -22,6 +23,24 @@ height_fog_param height_fog_param_default(void)
         .floor_y = -INFINITY,
     };
     return p;
+}
+
+int height_fog_weather(const char *name, double elevation_deg, height_fog_param *p)
+{
+    *p = height_fog_param_default();
+    if (strcmp(name, "dense") == 0) {
+        p->scale_height = 150.0;
+        p->beta_ms = 2e-3;
+        p->beta_ma = 1e-4;
+        p->mie_g = 0.6;
+        for (int c = 0; c < 3; ++c)
+            p->sun_color[c] = 0.8, p->amb_color[c] = 0.4;
+    } else if (strcmp(name, "sunny") != 0) {
+        return -1;
+    }
+    double e = elevation_deg * M_PI / 180.0, a = 35.0 * M_PI / 180.0;
+    p->sun_direction = v3((float)(cos(e) * sin(a)), (float)sin(e), (float)(cos(e) * cos(a)));
+    return 0;
 }
 
 /* 0 when every value is a number >= 0, else -1 naming it. */

@@ -58,6 +58,13 @@ typedef struct {
  * unit albedo controls, no floor. */
 height_fog_param height_fog_param_default(void);
 
+/* The two weathers of the study (the talk precomputes "sunny" and "dense
+ * fog"), with the sun at elevation_deg above the horizon, turned 35 degrees
+ * from +Z towards +X: "sunny" is the default above; "dense" a ground fog of
+ * H = 150 m, beta_Ms = 2e-3 /m (about 2 km visibility at y = 0), beta_Ma =
+ * 1e-4 /m, a greyer sun and a brighter sky. Returns 0, or -1 for another name. */
+int height_fog_weather(const char *name, double elevation_deg, height_fog_param *p);
+
 /* 0, or -1 with e naming `subject` and the first bad parameter: a NaN or
  * negative coefficient, colour or albedo control, H <= 0 or NaN, |g| >= 1,
  * a sun direction that is not unit length (1e-3) or is NaN, a NaN floor.

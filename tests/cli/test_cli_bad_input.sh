@@ -76,7 +76,7 @@ expect_error unwritable "/nonexistent/folder/out.exr: cannot write" "" -- render
 mkdir -p "$work/a-folder"
 expect_error output-is-folder "a-folder: cannot write: is a folder" "" -- render ao --scene builtin:plane -o "$work/a-folder"
 expect_error unknown-builtin "builtin:teapot: unknown built-in scene" "$out" -- render ao --scene builtin:teapot -o "$out"
-expect_error unknown-quantity "unknown quantity 'fog'" "$out" -- render fog --scene builtin:plane -o "$out"
+expect_error unknown-quantity "unknown quantity 'smoke'" "$out" -- render smoke --scene builtin:plane -o "$out"
 expect_error bad-control-variate "--control-variate: 'gtao' is not none or heightfield" "$out" -- render ao --scene builtin:plane --control-variate gtao -o "$out"
 expect_error control-variate-not-ao "--control-variate: applies to ao only" "$out" -- render heightfield-ao --scene builtin:plane --control-variate heightfield -o "$out"
 expect_error unknown-verb "frobnicate: unknown verb" "" -- frobnicate
