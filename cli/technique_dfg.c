@@ -1,59 +1,35 @@
 /* The split-sum DFG (environment BRDF) LUT of Karis 2013: `gtlab lut dfg`
  * and its section of `gtlab all` (studies/dfg.h), beside Filament's 128^2. */
-#define _GNU_SOURCE
-#include <errno.h>
-#include <getopt.h>
 #include <stdio.h>
-#include <string.h>
-#include <sys/stat.h>
 
 #include "cli/cli.h"
+#include "cli/cli_options.h"
 #include "report/dfg_section.h"
 #include "cli/technique.h"
 #include "studies/dfg.h"
 #include "core/threads.h"
 
-static void print_help(void)
-{
-    printf("usage: gtlab lut dfg [--size N] [--threads T] -o DIR\n"
-           "\n"
-           "Tabulates the split-sum environment BRDF of Karis 2013 for GGX with height-correlated\n"
-           "Smith masking: scale A and bias B (directional albedo = F0 A + B under Schlick's\n"
-           "Fresnel) and E = A + B, the single-scattering albedo that multiple-scattering energy\n"
-           "compensation (Kulla-Conty 2017, Fdez-Aguera 2019) divides by. x = n.v, y = perceptual\n"
-           "roughness, sampled at texel centres as a GPU reads them (luts/dfg_lut.h).\n"
-           "Writes DIR/dfg_N.exr (float A, B, E), .png (16-bit, R = A, G = B), .h (C array)\n"
-           "and .hlsl, .glsl (the array and DFG(nv, roughness), the same bilinear lookup).\n"
-           "\n"
-           "  --size N        %d..%d (default %d, Filament's choice)\n"
-           "  --threads T     worker threads (default: all cores); the table does not depend on it\n"
-           "  -o, --output DIR  output folder (created if absent)\n"
-           "  -h, --help\n",
-           DFG_MIN_SIZE, DFG_MAX_SIZE, DFG_FILAMENT_SIZE);
-}
-
 static int lut_dfg(int argc, char **argv)
 {
-    static const struct option longs[] = {{"size", required_argument, 0, 'n'}, {"threads", required_argument, 0, 't'},
-                                          {"output", required_argument, 0, 'o'}, {"help", no_argument, 0, 'h'},
-                                          {0, 0, 0, 0}};
+    static const cli_option options[] = {
+        CLI_INT("size", "N", DFG_MIN_SIZE, DFG_MAX_SIZE, "texels per axis; Filament uses 128"),
+        CLI_THREADS, CLI_OUTPUT_DIR, CLI_END};
+    static const cli_command command = {
+        "lut dfg",
+        "Tabulates the split-sum environment BRDF of Karis 2013 for GGX with height-correlated\n"
+        "Smith masking: scale A and bias B (directional albedo = F0 A + B under Schlick's\n"
+        "Fresnel) and E = A + B, the single-scattering albedo that multiple-scattering energy\n"
+        "compensation (Kulla-Conty 2017, Fdez-Aguera 2019) divides by. x = n.v, y = perceptual\n"
+        "roughness, sampled at texel centres as a GPU reads them (luts/dfg_lut.h).\n"
+        "Writes DIR/dfg_N.exr (float A, B, E), .png (16-bit, R = A, G = B), .h (C array)\n"
+        "and .hlsl, .glsl (the array and DFG(nv, roughness), the same bilinear lookup).",
+        options};
     long size = DFG_FILAMENT_SIZE, threads = threads_default();
     const char *dir = NULL;
-    for (int c; (c = getopt_long(argc, argv, "o:h", longs, NULL)) != -1;) {
-        switch (c) {
-        case 'n': if (cli_parse_int("--size", optarg, DFG_MIN_SIZE, DFG_MAX_SIZE, &size)) return EXIT_USER_ERROR; break;
-        case 't': if (cli_parse_int("--threads", optarg, 1, 1024, &threads)) return EXIT_USER_ERROR; break;
-        case 'o': dir = optarg; break;
-        case 'h': print_help(); return EXIT_OK;
-        default: return cli_usage_error("lut dfg");
-        }
-    }
-    if (optind < argc)
-        return cli_failf("lut dfg", "unexpected argument '%s'", argv[optind]);
-    if (!dir)
-        return cli_failf("lut dfg", "-o/--output DIR is required");
-    if (mkdir(dir, 0777) != 0 && errno != EEXIST)
-        return cli_failf(dir, "cannot create the folder: %s", strerror(errno));
+    int status;
+    if (cli_options_parse(&command, (void *[]){&size, &threads, &dir}, argc, argv, &status) != 0 ||
+        (status = cli_make_output_dir(dir)) != 0)
+        return status;
     dfg_result r;
     gt_error e;
     if (dfg_write_table(dir, (int)size, (int)threads, &r, &e) != 0)

@@ -1,0 +1,176 @@
+/* The declarative option parser of cli_options.h, over getopt_long. */
+#define _GNU_SOURCE
+#include "cli/cli_options.h"
+
+#include <errno.h>
+#include <getopt.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "cli/cli.h"
+
+enum { MAX_OPTIONS = 48, HELP_COLUMN = 20 };
+
+static int option_count(const cli_option *o)
+{
+    int n = 0;
+    while (o[n].kind != CLI_KIND_END)
+        ++n;
+    return n;
+}
+
+/* getopt's table: val = 256 + index (or the short letter), then --help. */
+static void build_longs(const cli_option *o, int n, struct option *longs, char *shorts)
+{
+    char *s = shorts;
+    for (int i = 0; i < n; ++i) {
+        longs[i] = (struct option){o[i].name, o[i].kind == CLI_KIND_FLAG ? no_argument : required_argument, 0,
+                                   o[i].short_name ? o[i].short_name : 256 + i};
+        if (o[i].short_name) {
+            *s++ = o[i].short_name;
+            *s++ = ':';
+        }
+    }
+    longs[n] = (struct option){"help", no_argument, 0, 'h'};
+    longs[n + 1] = (struct option){0, 0, 0, 0};
+    strcpy(s, "h");
+}
+
+static int parse_choice(const cli_option *o, const char *text, int *out, char *option)
+{
+    for (int i = 0; i < (int)o->hi; ++i)
+        if (strcmp(text, o->choice(i)) == 0) {
+            *out = i;
+            return 0;
+        }
+    return cli_failf(option, "unknown value '%s' (see --help)", text), -1;
+}
+
+static int parse_value(const cli_option *o, void *dest, const char *text)
+{
+    char option[64];
+    snprintf(option, sizeof option, "--%s", o->name);
+    switch (o->kind) {
+    case CLI_KIND_FLAG: *(int *)dest = 1; return 0;
+    case CLI_KIND_INT: return cli_parse_int(option, text, (long)o->lo, (long)o->hi, dest);
+    case CLI_KIND_DOUBLE: return cli_parse_double(option, text, o->lo, o->hi, dest);
+    case CLI_KIND_STRING: *(const char **)dest = text; return 0;
+    case CLI_KIND_CHOICE: return parse_choice(o, text, dest, option);
+    default: return -1;
+    }
+}
+
+static int index_of_code(const cli_option *o, int n, int code)
+{
+    for (int i = 0; i < n; ++i)
+        if (code == (o[i].short_name ? o[i].short_name : 256 + i))
+            return i;
+    return -1;
+}
+
+static int check_required(const cli_command *cmd, void *const *dest, int n)
+{
+    for (int i = 0; i < n; ++i) {
+        const cli_option *o = &cmd->options[i];
+        if (o->required && o->kind == CLI_KIND_STRING && *(const char **)dest[i] == NULL) {
+            if (o->short_name)
+                return cli_failf(cmd->command, "-%c/--%s %s is required", o->short_name, o->name, o->value), -1;
+            return cli_failf(cmd->command, "--%s %s is required", o->name, o->value), -1;
+        }
+    }
+    return 0;
+}
+
+int cli_options_parse(const cli_command *cmd, void *const *dest, int argc, char **argv, int *status)
+{
+    struct option longs[MAX_OPTIONS + 2];
+    char shorts[2 * MAX_OPTIONS + 2];
+    int n = option_count(cmd->options);
+    build_longs(cmd->options, n, longs, shorts);
+    *status = EXIT_USER_ERROR;
+    for (int c; (c = getopt_long(argc, argv, shorts, longs, NULL)) != -1;) {
+        if (c == 'h')
+            return cli_options_print_help(cmd, dest), *status = EXIT_OK, 1;
+        int i = index_of_code(cmd->options, n, c);
+        if (i < 0)
+            return cli_usage_error(cmd->command), 1;
+        if (parse_value(&cmd->options[i], dest[i], optarg) != 0)
+            return 1;
+    }
+    if (optind < argc)
+        return cli_failf(cmd->command, "unexpected argument '%s'", argv[optind]), 1;
+    return check_required(cmd, dest, n) != 0 ? 1 : 0;
+}
+
+/* "--size N", "-o, --output DIR", "--lobe ggx|ggx-d|phong" for a choice
+ * without a placeholder. */
+static void format_option(const cli_option *o, char *out, size_t size)
+{
+    int k = o->short_name ? snprintf(out, size, "-%c, --%s", o->short_name, o->name) : snprintf(out, size, "--%s", o->name);
+    if (o->value)
+        snprintf(out + k, size - (size_t)k, " %s", o->value);
+}
+
+static void print_usage_line(const cli_command *cmd)
+{
+    printf("usage: gtlab %s", cmd->command);
+    for (const cli_option *o = cmd->options; o->kind != CLI_KIND_END; ++o) {
+        char text[96];
+        format_option(o, text, sizeof text);
+        if (o->short_name)
+            snprintf(text, sizeof text, "-%c %s", o->short_name, o->value ? o->value : "");
+        printf(o->required ? " %s" : " [%s]", text);
+    }
+    printf("\n\n%s\n\noptions:\n", cmd->description);
+}
+
+/* The help text, continuation lines indented to the help column. */
+static void print_help_text(const char *help)
+{
+    for (const char *p = help; *p; ++p) {
+        putchar(*p);
+        if (*p == '\n')
+            printf("%*s", HELP_COLUMN, "");
+    }
+}
+
+/* " (default X)" from the destination's value before parsing, unless the
+ * help text already states its default or there is none. */
+static void print_default(const cli_option *o, const void *dest)
+{
+    if (o->required || strstr(o->help, "default"))
+        return;
+    switch (o->kind) {
+    case CLI_KIND_INT: printf(" (default %ld)", *(const long *)dest); break;
+    case CLI_KIND_DOUBLE: printf(" (default %g)", *(const double *)dest); break;
+    case CLI_KIND_STRING: if (*(const char *const *)dest) printf(" (default %s)", *(const char *const *)dest); break;
+    case CLI_KIND_CHOICE: printf(" (default %s)", o->choice(*(const int *)dest)); break;
+    default: break;
+    }
+}
+
+void cli_options_print_help(const cli_command *cmd, void *const *dest)
+{
+    print_usage_line(cmd);
+    for (int i = 0; cmd->options[i].kind != CLI_KIND_END; ++i) {
+        const cli_option *o = &cmd->options[i];
+        char text[96];
+        format_option(o, text, sizeof text);
+        if ((int)strlen(text) + 2 >= HELP_COLUMN)
+            printf("  %s\n%*s", text, HELP_COLUMN, "");
+        else
+            printf("  %-*s", HELP_COLUMN - 2, text);
+        print_help_text(o->help);
+        print_default(o, dest[i]);
+        putchar('\n');
+    }
+    printf("  -h, --help\n");
+}
+
+int cli_make_output_dir(const char *dir)
+{
+    if (mkdir(dir, 0777) != 0 && errno != EEXIST)
+        return cli_failf(dir, "cannot create the folder: %s", strerror(errno));
+    return 0;
+}
