@@ -9,6 +9,7 @@
     T(specular_occlusion)   \
     T(sphere_light)         \
     T(dfg)                  \
+    T(fog)                  \
     T(throughput)
 
 #define DECLARE(name) extern const technique technique_##name;

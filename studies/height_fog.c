@@ -278,3 +278,58 @@ int height_fog_study(const study_context *ctx, const height_fog_request *rq, hei
     height_fog_time_models(1 << 20, out->analytic_ns_per_pixel);
     return 0;
 }
+
+int height_fog_approx_image(const image *gbuffer, const char *what, const char *weather, double sun_elevation_deg,
+                            height_fog_model m, image *out, gt_error *e)
+{
+    height_fog_param p;
+    camera cam;
+    const char *camera_json = image_get_attribute(gbuffer, ATTR_CAMERA);
+    if (height_fog_weather(weather, sun_elevation_deg, &p) != 0)
+        return gt_error_set(e, "--weather", "'%s' is neither sunny nor dense", weather);
+    if (!camera_json || camera_parse_json(camera_json, what, &cam, e) != 0)
+        return camera_json ? -1 : gt_error_set(e, what, "no camera in the header");
+    if (!image_channel_data(gbuffer, CH_P_X) || !image_channel_data(gbuffer, CH_MASK))
+        return gt_error_set(e, what, "missing channel %s or %s (a render gbuffer or fog file)", CH_P_X, CH_MASK);
+    size_t n = image_pixel_count(gbuffer);
+    float *block = calloc(2 * HEIGHT_FOG_MODELS * 3 * n, sizeof(float));
+    if (!block || image_init(out, gbuffer->width, gbuffer->height) != 0) {
+        free(block);
+        return gt_error_set(e, what, "out of memory");
+    }
+    model_planes mp;
+    for (int k = 0; k < HEIGHT_FOG_MODELS; ++k)
+        for (int c = 0; c < 3; ++c)
+            mp.l[k][c] = block + (size_t)(k * 3 + c) * n, mp.t[k][c] = block + (size_t)(9 + k * 3 + c) * n;
+    evaluate_models(&p, gbuffer, cam.position, &mp);
+    static const char *const l_names[3] = CH_FOG_L_RGB, *const t_names[3] = CH_FOG_T_RGB;
+    int rc = 0;
+    for (int c = 0; c < 3 && rc == 0; ++c) {
+        float *l = image_add_channel(out, l_names[c]), *t = image_add_channel(out, t_names[c]);
+        if (!l || !t)
+            rc = gt_error_set(e, what, "out of memory");
+        for (size_t i = 0; rc == 0 && i < n; ++i)
+            l[i] = mp.l[m][c][i], t[i] = mp.t[m][c][i];
+    }
+    free(block);
+    return rc;
+}
+
+int height_fog_bench(int threads, double *rays_per_second, double ns_per_pixel[HEIGHT_FOG_MODELS], gt_error *e)
+{
+    scene s;
+    camera cam;
+    if (study_load_view("builtin:terrain", 128, 96, &s, &cam, e) != 0)
+        return -1;
+    fog_settings fs = {.weather = "dense", .sun_elevation_deg = 20.0, .scattering = FOG_MULTIPLE, .max_scatterings = 1024};
+    image img;
+    render_stats stats;
+    int rc = render_fog(&s, &cam, &fs, 16, threads, &img, &stats, e);
+    scene_free(&s);
+    if (rc != 0)
+        return -1;
+    image_free(&img);
+    *rays_per_second = stats.seconds > 0.0 ? (double)stats.rays / stats.seconds : 0.0;
+    height_fog_time_models(1 << 22, ns_per_pixel);
+    return 0;
+}

@@ -23,6 +23,7 @@
 #define GTLAB_STUDIES_HEIGHT_FOG_H
 
 #include "core/error.h"
+#include "core/image.h"
 #include "studies/study.h"
 
 #define HEIGHT_FOG_DIR "fog"
@@ -69,5 +70,16 @@ int height_fog_study(const study_context *ctx, const height_fog_request *rq, hei
 void height_fog_regimes(height_fog_regime regimes[HEIGHT_FOG_REGIMES]);
 /* ns per pixel of each analytic model over n pixels (the bench). */
 void height_fog_time_models(int n, double ns_per_pixel[HEIGHT_FOG_MODELS]);
+
+/* `gtlab approx height-fog`: model m's fog.L.R/G/B and fog.T.R/G/B for the
+ * surfaces of `gbuffer` (P.X/Y/Z and mask.A, e.g. a `render fog` or
+ * `render gbuffer` file; its camera from the header), in weather at the sun
+ * elevation, added to out (initialised here, same size). `what` names the
+ * file in errors. */
+int height_fog_approx_image(const image *gbuffer, const char *what, const char *weather, double sun_elevation_deg,
+                            height_fog_model m, image *out, gt_error *e);
+/* `gtlab bench fog`: the reference's rays per second (multiple scattering,
+ * dense fog, the terrain at 128x96) and the models' ns per pixel. */
+int height_fog_bench(int threads, double *rays_per_second, double ns_per_pixel[HEIGHT_FOG_MODELS], gt_error *e);
 
 #endif

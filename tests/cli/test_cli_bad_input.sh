@@ -110,7 +110,7 @@ expect_ok gbuffer-render render gbuffer --scene builtin:plane --width 16 --heigh
 expect_error merge-gbuffer "g.exr: no Monte Carlo accumulator" "$work/merged.exr" -- merge "$work/g.exr" "$work/small.exr" -o "$work/merged.exr"
 # gtlab all --stages: unknown or empty lists are refused before any work;
 # one stage gives a report with that section only.
-expect_error all-unknown-stage "--stages: unknown stage 'fog'" "" -- all --stages ao,fog -o "$work/all"
+expect_error all-unknown-stage "--stages: unknown stage 'smoke'" "" -- all --stages ao,smoke -o "$work/all"
 expect_error all-no-stage "--stages: no stage named in ','" "" -- all --stages , -o "$work/all"
 # A stage whose input another stage makes is refused when that input is absent.
 expect_error all-missing-input "stage gtao reads what stage ao writes" "$work/all_empty/report.md" -- all --stages gtao -o "$work/all_empty"
