@@ -12,7 +12,8 @@
  *     f(1e-2) = 0.995 of their optical depth, and an upward ray 5 H high
  *     keeps 3.4 % of it (dense fog, 500 m up: T = 0.83 instead of 0.004) (test numbers quoted in docs/decisions.md);
  *   - the published sun term ignores the fog above: in dense fog with the
- *     sun low it is several times the attenuated single scattering. */
+ *     sun low it is several times the attenuated single scattering;
+ *   - its 1 - T in float cancels for thin fog seen from far above. */
 #include <math.h>
 
 #include "raytracer/fog_single_scatter.h"
@@ -147,6 +148,21 @@ static void check_sun_extinction_matters(void)
     CHECK_MSG(in[0] > 5.0 * q.inscatter[0], "published %.5g vs attenuated %.5g", in[0], q.inscatter[0]);
 }
 
+/* Thin fog seen from far above: the published (1 - T) cancels in float,
+ * the corrected -expm1(-tau) does not. */
+static void check_thin_fog_cancellation(void)
+{
+    height_fog_param p = medium(10.0, 1.0, 25.0);
+    view_ray r = ray_at(3000.0, -0.9, 3000.0, 1); /* down to 300 m = 30 H: tau ~ 1e-15 .. 1e-9 */
+    fog_ray_estimate q;
+    reference(&p, 0, &r, &q);
+    float in[3], tr[3];
+    analytic(&p, -1, &r, in, tr);
+    CHECK_MSG(fabs(in[1] - q.inscatter[1]) > 0.1 * q.inscatter[1], "published %.6g vs %.6g", in[1], q.inscatter[1]);
+    analytic(&p, 0, &r, in, tr);
+    CHECK_MSG(fabs(in[1] - q.inscatter[1]) < 1e-4 * q.inscatter[1], "corrected %.6g vs %.6g", in[1], q.inscatter[1]);
+}
+
 /* Bad or limiting input: zero extinction gives T = 1 and no in-scatter in
  * the corrected model (the published one divides 0 by 0: NaN, as shipped);
  * the sun below the horizon lights nothing once attenuated. */
@@ -170,6 +186,7 @@ int main(void)
     check_regimes();
     check_published_departs();
     check_sun_extinction_matters();
+    check_thin_fog_cancellation();
     check_limits();
     return check_report("test_height_fog");
 }
