@@ -25,9 +25,10 @@
  *     that leaves the medium (no collision up to infinity) without meeting
  *     the scene sees the sky, L_amb. Surfaces absorb (their own radiance is
  *     the background the model attenuates by T, not part of the in-scatter).
- * Russian roulette after 8 scatterings on the largest throughput; a path
- * stops after max_scatterings (the bias is below the roulette's noise for
- * max_scatterings >= 256 in the weathers of the study).
+ * Russian roulette after 8 scatterings on the largest throughput (unbiased);
+ * a path stops after max_scatterings (1024 in `render fog`), which drops the
+ * light scattered more often than that: a bias, towards less fog.L, not
+ * measured here.
  *
  * Random numbers come from a counter-based hash of (seed, sample index,
  * dimension): a sample depends only on them, so renders are bit-identical
