@@ -139,6 +139,11 @@
 #define CH_FOG_L_ERROR_B "fog_quadrature_error.B"
 #define CH_FOG_L_ERROR_RGB {CH_FOG_L_ERROR_R, CH_FOG_L_ERROR_G, CH_FOG_L_ERROR_B}
 
+/* The fog study's error maps (studies/height_fog.c, fog/<weather>_sunNN.exr):
+ * the analytic model's fog.L minus the reference's, green channel. */
+#define CH_FOG_PUBLISHED_ERROR "fog_published_error.G"
+#define CH_FOG_CORRECTED_ERROR "fog_corrected_error.G"
+
 /* ---- Lookup tables (gtlab lut) ------------------------------------------ */
 #define CH_LUT "lut.V"
 /* The split-sum DFG table (luts/dfg_lut.h): scale A, bias B, albedo E = A + B. */

@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "core/reference_schema.h"
 #include "report/report_table.h"
 
 #define ROW height_fog_case
@@ -68,8 +69,10 @@ int height_fog_section(report_context *ctx, const height_fog_result *r, gt_error
                      "\"Height fog\"), against `gtlab render fog` on builtin:terrain (%dx%d, %d samples per pixel "
                      "of volumetric path tracing: the truth, with the sun attenuated and shadowed and the sky "
                      "blocked by the terrain) and against single-scattering quadrature under the model's own "
-                     "assumptions. fog.L is the light the fog scatters towards the camera; surfaces absorb.",
-                     rq->width, rq->height, rq->spp);
+                     "assumptions. fog.L is the light the fog scatters towards the camera; surfaces absorb. "
+                     "Each case's reference is %s/<weather>_sunNN.exr, with the error maps %s and %s (model minus "
+                     "reference).",
+                     rq->width, rq->height, rq->spp, HEIGHT_FOG_DIR, CH_FOG_PUBLISHED_ERROR, CH_FOG_CORRECTED_ERROR);
     cJSON *section = cJSON_AddObjectToObject(ctx->summary, "height_fog");
     report_rows(ctx->doc, section ? cJSON_AddArrayToObject(section, "cases") : NULL, case_columns,
                 (int)(sizeof case_columns / sizeof case_columns[0]), r->cases, sizeof r->cases[0], HEIGHT_FOG_CASES);

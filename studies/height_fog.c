@@ -200,8 +200,24 @@ static void reference_figures(const image *ref, const image *single, const model
     out->single_mean_l = n ? sum_q / n : 0.0;
 }
 
-static int score_case(const height_fog_param *p, const image *ref, const image *single, vec3 eye,
-                      height_fog_case *out, gt_error *e)
+/* The error maps: published and sun-attenuated fog.L minus the reference's (green). */
+static int add_error_maps(image *ref, const model_planes *mp, gt_error *e)
+{
+    if (!image_add_channel(ref, CH_FOG_PUBLISHED_ERROR) || !image_add_channel(ref, CH_FOG_CORRECTED_ERROR))
+        return gt_error_set(e, "fog study", "out of memory");
+    /* Looked up once both exist (adding a channel may move the planes). */
+    const float *l = image_channel_data(ref, CH_FOG_L_G);
+    float *published = image_channel_data(ref, CH_FOG_PUBLISHED_ERROR);
+    float *corrected = image_channel_data(ref, CH_FOG_CORRECTED_ERROR);
+    for (size_t i = 0; i < image_pixel_count(ref); ++i) {
+        published[i] = mp->l[FOG_MODEL_PUBLISHED][1][i] - l[i];
+        corrected[i] = mp->l[FOG_MODEL_SUN_ATTENUATED][1][i] - l[i];
+    }
+    return 0;
+}
+
+static int score_case(const height_fog_param *p, image *ref, const image *single, vec3 eye, height_fog_case *out,
+                      gt_error *e)
 {
     size_t n = image_pixel_count(ref);
     model_planes mp;
@@ -224,6 +240,8 @@ static int score_case(const height_fog_param *p, const image *ref, const image *
                           &s, e);
         out->dssim_l[m] = s.dssim;
     }
+    if (rc == 0)
+        rc = add_error_maps(ref, &mp, e);
     free(block);
     return rc;
 }

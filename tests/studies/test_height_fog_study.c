@@ -9,6 +9,8 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "core/exr_io.h"
+#include "core/reference_schema.h"
 #include "studies/height_fog.h"
 #include "tests/check.h"
 
@@ -40,5 +42,17 @@ int main(void)
     CHECK(r.regimes[4].published_depth_error > 0.9);                /* up: most of the depth lost */
     for (int m = 0; m < HEIGHT_FOG_MODELS; ++m)
         CHECK(r.analytic_ns_per_pixel[m] > 0.0 && r.analytic_ns_per_pixel[m] < 1e4);
+    /* The error map of the dense, low-sun case is the published model minus the reference. */
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s/dense_sun05.exr", check_tmp_dir(), HEIGHT_FOG_DIR);
+    image img;
+    CHECK_MSG(exr_read(path, &img, &e) == 0, "%s", e.message);
+    const float *err = image_channel_data(&img, CH_FOG_PUBLISHED_ERROR), *mask = image_channel_data(&img, CH_MASK);
+    CHECK(err && mask && image_channel_data(&img, CH_FOG_CORRECTED_ERROR));
+    double nonzero = 0.0;
+    for (size_t i = 0; err && i < image_pixel_count(&img); ++i)
+        nonzero += mask[i] > 0.5f && err[i] != 0.0f;
+    CHECK(nonzero > 200);
+    image_free(&img);
     return check_report("test_height_fog_study");
 }
