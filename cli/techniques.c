@@ -15,6 +15,7 @@
     T(anti_aliasing)        \
     T(inside)               \
     T(atmosphere)           \
+    T(fog)                  \
     T(throughput)
 
 #define DECLARE(name) extern const technique technique_##name;

@@ -122,6 +122,28 @@
 #define CH_SPHERE_B "sphere.B"
 #define CH_SPHERE_RGB {CH_SPHERE_R, CH_SPHERE_G, CH_SPHERE_B}
 
+/* ---- Height fog (render fog; raytracer/fog_integrator.h) ---------------- */
+/* Transmittance of the fog from the camera to the surface (closed form). */
+#define CH_FOG_T_R "fog.T.R"
+#define CH_FOG_T_G "fog.T.G"
+#define CH_FOG_T_B "fog.T.B"
+#define CH_FOG_T_RGB {CH_FOG_T_R, CH_FOG_T_G, CH_FOG_T_B}
+/* Radiance the fog scatters towards the camera (sun + ambient). */
+#define CH_FOG_L_R "fog.L.R"
+#define CH_FOG_L_G "fog.L.G"
+#define CH_FOG_L_B "fog.L.B"
+#define CH_FOG_L_RGB {CH_FOG_L_R, CH_FOG_L_G, CH_FOG_L_B}
+/* --fog-scattering quadrature: the quadrature's error estimate of fog.L. */
+#define CH_FOG_L_ERROR_R "fog_quadrature_error.R"
+#define CH_FOG_L_ERROR_G "fog_quadrature_error.G"
+#define CH_FOG_L_ERROR_B "fog_quadrature_error.B"
+#define CH_FOG_L_ERROR_RGB {CH_FOG_L_ERROR_R, CH_FOG_L_ERROR_G, CH_FOG_L_ERROR_B}
+
+/* The fog study's error maps (studies/height_fog.c, fog/<weather>_sunNN.exr):
+ * the analytic model's fog.L minus the reference's, green channel. */
+#define CH_FOG_PUBLISHED_ERROR "fog_published_error.G"
+#define CH_FOG_CORRECTED_ERROR "fog_corrected_error.G"
+
 /* ---- Lookup tables (gtlab lut) ------------------------------------------ */
 #define CH_LUT "lut.V"
 /* The split-sum DFG table (luts/dfg_lut.h): scale A, bias B, albedo E = A + B. */

@@ -466,6 +466,46 @@ static int build_cornell(scene *s)
     return rc;
 }
 
+/* ---- Terrain ----------------------------------------------------------------- */
+
+/* The height field of 'terrain' [m]: two ridges of sines, a hill and a
+ * basin (Gaussians), cut at 0 (flat valley floors). */
+static double terrain_height(double x, double z)
+{
+    double ridges = 140.0 * sin(2.0 * pi * x / 3200.0 + 0.4) * cos(2.0 * pi * z / 2700.0 - 0.3) +
+                    70.0 * sin(2.0 * pi * (x - 0.6 * z) / 1500.0);
+    double hill = 260.0 * exp(-((x - 1400.0) * (x - 1400.0) + (z + 900.0) * (z + 900.0)) / (900.0 * 900.0));
+    double basin = 220.0 * exp(-((x + 600.0) * (x + 600.0) + (z - 700.0) * (z - 700.0)) / (1000.0 * 1000.0));
+    return fmax(0.0, 180.0 + ridges + hill - basin);
+}
+
+enum { TERRAIN_CELLS = 160 };
+#define TERRAIN_HALF 4000.0
+
+static int build_terrain(scene *s)
+{
+    const uint32_t n = TERRAIN_CELLS, row = n + 1;
+    int material = scene_add_material(s, matte_material(0.25f, 0.3f, 0.18f));
+    scene_mesh *m = material < 0 ? NULL : scene_add_mesh(s, row * row, 2 * n * n, 0);
+    if (!m)
+        return -1;
+    m->material = material;
+    for (uint32_t j = 0; j < row; ++j)
+        for (uint32_t i = 0; i < row; ++i) {
+            double x = -TERRAIN_HALF + 2.0 * TERRAIN_HALF * i / n, z = -TERRAIN_HALF + 2.0 * TERRAIN_HALF * j / n;
+            v3_store(&m->positions[3 * (j * row + i)], v3((float)x, (float)terrain_height(x, z), (float)z));
+        }
+    for (uint32_t j = 0; j < n; ++j)
+        for (uint32_t i = 0; i < n; ++i) {
+            uint32_t a = j * row + i, b = a + 1, c = a + row, d = c + 1, *t = &m->indices[6 * (j * n + i)];
+            t[0] = a, t[1] = c, t[2] = b; /* counter-clockwise from above (+Y) */
+            t[3] = b, t[4] = c, t[5] = d;
+        }
+    scene_mesh_compute_normals(m);
+    set_camera(s, v3(-3600.0f, 1500.0f, 3600.0f), v3(600.0f, 100.0f, -800.0f), 50.0f);
+    return 0;
+}
+
 /* ---- The table ---------------------------------------------------------------------- */
 
 #define WHITE_MATERIAL "Material: base colour 0.8 grey (linear), roughness 0.5, metallic 0.\n"
@@ -477,7 +517,7 @@ static const builtin_scene scenes[] = {
      "One mesh: 2 triangles over 4 vertices, normal +Y everywhere.\n" WHITE_MATERIAL
      "Bounds: [-50, 50] x [0, 0] x [-50, 50].\n"
      "Camera: position (12, 9, 15), target (0, 0, 0), up +Y, yfov 45 deg, 512 x 512.",
-     build_plane},
+     build_plane, 0},
     {"sphere-on-plane",
      FLOOR "A sphere (mesh 1) of radius 1 centred at (0, 1.5, 0), 0.5 above the floor: an icosphere\n"
      "(icosahedron with vertices at the poles, faces split in 4 seven times, new vertices projected\n"
@@ -485,14 +525,14 @@ static const builtin_scene scenes[] = {
      "sphere normals. Its solid angle from any floor point is within 6.7e-5 sr of a true sphere's.\n" WHITE_MATERIAL
      "Bounds: [-50, 50] x [0, 2.5] x [-50, 50].\n"
      "Camera: position (4.5, 4, 6), target (0, 1, 0), up +Y, yfov 45 deg, 512 x 512.",
-     build_sphere_on_plane},
+     build_sphere_on_plane, 0},
     {"corner",
      "Three perpendicular 10 x 10 squares meeting at the origin, one mesh, each square 2 triangles\n"
      "with its own 4 vertices; all normals face into the octant x, y, z >= 0:\n"
      "  floor y = 0 (x, z in [0, 10]) normal +Y; wall x = 0 (y, z in [0, 10]) normal +X;\n"
      "  wall z = 0 (x, y in [0, 10]) normal +Z.\n" WHITE_MATERIAL "Bounds: [0, 10] x [0, 10] x [0, 10].\n"
      "Camera: position (11, 9, 13), target (2, 2, 2), up +Y, yfov 45 deg, 512 x 512.",
-     build_corner},
+     build_corner, 0},
     {"menger",
      FLOOR "A level-3 Menger sponge of side 2 (mesh 1) standing on it: x, z in [-1, 1], y in [0, 2].\n"
      "The cube is cut into 27^3 cells of side 2/27; cell (i, j, k) is solid unless at some level two\n"
@@ -501,7 +541,7 @@ static const builtin_scene scenes[] = {
      "17536 squares, each 2 triangles with its own 4 vertices and its axis-aligned outward normal.\n" WHITE_MATERIAL
      "Bounds: [-50, 50] x [0, 2] x [-50, 50].\n"
      "Camera: position (2.7, 2.6, 3.6), target (0, 0.9, 0), up +Y, yfov 45 deg, 512 x 512.",
-     build_menger},
+     build_menger, 0},
     {"boxes",
      FLOOR "64 axis-aligned boxes on it (mesh 1) in an 8 x 8 grid, row r and column c in 0..7. With\n"
      "u_k = (pcg_hash(5 (8 r + c) + k) >> 8) / 2^24 (pcg_hash of Jarzynski and Olano 2020), box (r, c) is\n"
@@ -510,7 +550,7 @@ static const builtin_scene scenes[] = {
      "Boxes may overlap. Each has 5 faces (no bottom), each 2 triangles with its own 4 vertices and\n"
      "its outward normal.\n" WHITE_MATERIAL "Bounds: [-50, 50] x [0, 3.8948] x [-50, 50] (the tallest box: 3.894838).\n"
      "Camera: position (27, 22, 35), target (0, 0, 0), up +Y, yfov 45 deg, 512 x 512.",
-     build_boxes},
+     build_boxes, 0},
     {"cornell",
      "A Cornell-box-like room, x in [-2.75, 2.75], y in [0, 5.5], z in [-2.75, 2.75], open at the\n"
      "front (z = 2.75), all wall normals facing into the room, one mesh per material:\n"
@@ -525,10 +565,38 @@ static const builtin_scene scenes[] = {
      "Bounds: [-2.75, 2.75] x [0, 5.5] x [-2.75, 2.75].\n"
      "Camera (the classic view in through the open front): position (0, 2.75, 10.7),\n"
      "target (0, 2.75, 0), up +Y, yfov 39.3 deg, 512 x 512.",
-     build_cornell},
+     build_cornell, 0},
+    {"terrain",
+     "A km-scale height field for the height fog (issue 16): x, z in [-4000, 4000] m on a 160 x 160\n"
+     "grid of 50 m cells (161^2 vertices, each cell 2 triangles), one mesh, y = h(x, z) with\n"
+     "  h = max(0, 180 + 140 sin(2 pi x / 3200 + 0.4) cos(2 pi z / 2700 - 0.3)\n"
+     "             + 70 sin(2 pi (x - 0.6 z) / 1500) + 260 exp(-((x - 1400)^2 + (z + 900)^2) / 900^2)\n"
+     "             - 220 exp(-((x + 600)^2 + (z - 700)^2) / 1000^2)):\n"
+     "ridges, a hill, a basin and flat valley floors at y = 0. Smooth (area-weighted) vertex normals.\n"
+     "Material: base colour (0.25, 0.3, 0.18), roughness 0.5, metallic 0.\n"
+     "Bounds: [-4000, 4000] x [0, 513.2886] x [-4000, 4000].\n"
+     "Camera: position (-3600, 1500, 3600), target (600, 100, -800), up +Y, yfov 50 deg, 512 x 512.\n"
+     "Not in the studies' scene list (builtin_study_scene_at): their results stay the same.",
+     build_terrain, 1},
 };
 
 int builtin_scene_count(void) { return (int)(sizeof scenes / sizeof scenes[0]); }
+
+int builtin_study_scene_count(void)
+{
+    int count = 0;
+    for (int i = 0; i < builtin_scene_count(); ++i)
+        count += !scenes[i].outside_studies;
+    return count;
+}
+
+const builtin_scene *builtin_study_scene_at(int index)
+{
+    for (int i = 0; i < builtin_scene_count(); ++i)
+        if (!scenes[i].outside_studies && index-- == 0)
+            return &scenes[i];
+    return NULL;
+}
 
 const builtin_scene *builtin_scene_at(int index)
 {

@@ -122,10 +122,10 @@ int ao_convergence_run(const ao_convergence_request *rq, ao_convergence_result *
 {
     memset(out, 0, sizeof *out);
     out->request = *rq;
-    out->scene_count = builtin_scene_count() < AO_CONVERGENCE_MAX_SCENES ? builtin_scene_count()
+    out->scene_count = builtin_study_scene_count() < AO_CONVERGENCE_MAX_SCENES ? builtin_study_scene_count()
                                                                           : AO_CONVERGENCE_MAX_SCENES;
     for (int i = 0; i < out->scene_count; ++i)
-        if (measure_scene(builtin_scene_at(i)->name, rq, &out->scenes[i], e) != 0)
+        if (measure_scene(builtin_study_scene_at(i)->name, rq, &out->scenes[i], e) != 0)
             return -1;
     return 0;
 }

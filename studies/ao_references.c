@@ -142,10 +142,10 @@ int ao_references_study(const study_context *ctx, const ao_references_request *r
     if (study_make_dir(ctx, AO_REFERENCES_DIR, refs, sizeof refs, e) != 0 ||
         study_make_dir(ctx, "figures", figures, sizeof figures, e) != 0)
         return -1;
-    int scenes = rq->scene_count > 0 && rq->scene_count < builtin_scene_count() ? rq->scene_count
-                                                                                 : builtin_scene_count();
+    int scenes = rq->scene_count > 0 && rq->scene_count < builtin_study_scene_count() ? rq->scene_count
+                                                                                 : builtin_study_scene_count();
     for (int i = 0; i < scenes && i < AO_REFERENCES_MAX_SCENES; ++i, ++out->count)
-        if (study_scene(builtin_scene_at(i), &req, rq->size, refs, figures, &out->rows[i], e) != 0)
+        if (study_scene(builtin_study_scene_at(i), &req, rq->size, refs, figures, &out->rows[i], e) != 0)
             return -1;
     return 0;
 }

@@ -108,10 +108,10 @@ int gtao_baselines_study(const study_context *ctx, const gtao_shortcuts_request 
 {
     (void)ctx;
     memset(out, 0, sizeof *out);
-    out->scene_count = builtin_scene_count() < BASELINES_MAX_SCENES ? builtin_scene_count() : BASELINES_MAX_SCENES;
+    out->scene_count = builtin_study_scene_count() < BASELINES_MAX_SCENES ? builtin_study_scene_count() : BASELINES_MAX_SCENES;
     for (int i = 0; i < out->scene_count; ++i) {
         gtao_scene_refs s;
-        if (gtao_scene_refs_load(rq->ao_references_dir, rq->gtao_dir, builtin_scene_at(i)->name, &s, e) != 0)
+        if (gtao_scene_refs_load(rq->ao_references_dir, rq->gtao_dir, builtin_study_scene_at(i)->name, &s, e) != 0)
             return -1;
         size_t n = (size_t)s.width * s.height;
         float *ao = malloc(sizeof *ao * n), *gtao = malloc(sizeof *gtao * n);

@@ -140,9 +140,9 @@ int gtao_bent_normals_study(const study_context *ctx, const gtao_shortcuts_reque
     int preview = ctx->quality == QUALITY_PREVIEW;
     out->slices = preview ? 4 : 8;
     out->steps = preview ? 8 : 16;
-    out->scene_count = builtin_scene_count() < BENT_MAX_SCENES ? builtin_scene_count() : BENT_MAX_SCENES;
+    out->scene_count = builtin_study_scene_count() < BENT_MAX_SCENES ? builtin_study_scene_count() : BENT_MAX_SCENES;
     for (int i = 0; i < out->scene_count; ++i)
-        if (study_scene(rq, builtin_scene_at(i)->name, out, i, e) != 0)
+        if (study_scene(rq, builtin_study_scene_at(i)->name, out, i, e) != 0)
             return -1;
     out->pooled_halfway_vs_horizons = cluster_mean_pool(out->halfway_vs_horizons, out->scene_count);
     for (int k = 0; k < BENT_ESTIMATORS; ++k) {

@@ -69,7 +69,7 @@ static int study_scene(const study_context *ctx, const gtao_shortcuts_request *r
 {
     gtao_scene_refs s;
     fade_row *x = &r->rows[i];
-    if (gtao_scene_refs_load(rq->ao_references_dir, rq->gtao_dir, builtin_scene_at(i)->name, &s, e) != 0)
+    if (gtao_scene_refs_load(rq->ao_references_dir, rq->gtao_dir, builtin_study_scene_at(i)->name, &s, e) != 0)
         return -1;
     snprintf(x->scene, sizeof x->scene, "%s", s.scene);
     x->fade_end = s.vo_radius;
@@ -106,7 +106,7 @@ int gtao_distance_fade_study(const study_context *ctx, const gtao_shortcuts_requ
     out->slices = preview ? 4 : 8;
     out->steps = preview ? 8 : 16;
     out->spp = preview ? 64 : 1024;
-    out->scene_count = builtin_scene_count() < FADE_MAX_SCENES ? builtin_scene_count() : FADE_MAX_SCENES;
+    out->scene_count = builtin_study_scene_count() < FADE_MAX_SCENES ? builtin_study_scene_count() : FADE_MAX_SCENES;
     cluster_mean a[FADE_MAX_SCENES], b[FADE_MAX_SCENES], c[FADE_MAX_SCENES];
     for (int i = 0; i < out->scene_count; ++i) {
         if (study_scene(ctx, rq, out, i, e) != 0)

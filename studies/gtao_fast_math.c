@@ -361,7 +361,7 @@ static void setup(const study_context *ctx, gtao_fast_math_result *r)
     r->poly[FAST_ACOS_TALK] = gtao_acos_poly_talk();
     r->poly[FAST_ACOS_TRANSCRIBED] = r->poly[FAST_ACOS_TALK];
     r->poly[FAST_ACOS_TRANSCRIBED].magic = GTAO_FAST_SQRT_MAGIC_AS_TRANSCRIBED;
-    r->scene_count = builtin_scene_count() < FAST_MATH_MAX_SCENES ? builtin_scene_count() : FAST_MATH_MAX_SCENES;
+    r->scene_count = builtin_study_scene_count() < FAST_MATH_MAX_SCENES ? builtin_study_scene_count() : FAST_MATH_MAX_SCENES;
 }
 
 /* Loads every scene's references; returns the largest pixel count, or 0 with e. */
@@ -371,7 +371,7 @@ static size_t load_scenes(const gtao_shortcuts_request *rq, gtao_scene_refs *ref
     size_t most = 0;
     for (int s = 0; s < r->scene_count; ++s) {
         gtao_fast_math_scene *x = &r->scenes[s];
-        snprintf(x->scene, sizeof x->scene, "%s", builtin_scene_at(s)->name);
+        snprintf(x->scene, sizeof x->scene, "%s", builtin_study_scene_at(s)->name);
         if (gtao_scene_refs_load(rq->ao_references_dir, rq->gtao_dir, x->scene, &refs[s], e) != 0)
             return 0;
         r->hf_mean_variance += mean_variance(&refs[s]) / r->scene_count;

@@ -65,7 +65,7 @@ static int score_scene(const gtao_scene_refs *s, const gtao_params *base, float 
 static int study_scene(const gtao_shortcuts_request *rq, gtao_thickness_result *r, int i, gt_error *e)
 {
     gtao_scene_refs s;
-    if (gtao_scene_refs_load(rq->ao_references_dir, rq->gtao_dir, builtin_scene_at(i)->name, &s, e) != 0)
+    if (gtao_scene_refs_load(rq->ao_references_dir, rq->gtao_dir, builtin_study_scene_at(i)->name, &s, e) != 0)
         return -1;
     gtao_params p = gtao_scene_params(&s, GTAO_PRESET_REFERENCE);
     p.slices = r->slices;
@@ -87,11 +87,11 @@ int gtao_thickness_study(const study_context *ctx, const gtao_shortcuts_request 
     out->slices = preview ? 4 : 8;
     out->steps = preview ? 8 : 16;
     out->corner_scene = -1;
-    out->scene_count = builtin_scene_count() < THICKNESS_MAX_SCENES ? builtin_scene_count() : THICKNESS_MAX_SCENES;
+    out->scene_count = builtin_study_scene_count() < THICKNESS_MAX_SCENES ? builtin_study_scene_count() : THICKNESS_MAX_SCENES;
     for (int i = 0; i < out->scene_count; ++i) {
         if (study_scene(rq, out, i, e) != 0)
             return -1;
-        if (strcmp(builtin_scene_at(i)->name, "corner") == 0)
+        if (strcmp(builtin_study_scene_at(i)->name, "corner") == 0)
             out->corner_scene = i;
     }
     for (int k = 0; k < THICKNESS_VALUES; ++k) {

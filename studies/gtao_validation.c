@@ -359,11 +359,11 @@ int gtao_validation_study(const study_context *ctx, const gtao_validation_reques
     int preview = ctx->quality == QUALITY_PREVIEW;
     out->heightfield_spp = preview ? 32 : 1024;
     out->converged_frames = preview ? PREVIEW_FRAMES : FULL_CYCLE;
-    for (int i = 0; i < builtin_scene_count(); ++i) {
+    for (int i = 0; i < builtin_study_scene_count(); ++i) {
         if (i == GTAO_VALIDATION_MAX_SCENES)
             return gt_error_set(e, "gtao", "more than %d built-in scenes", GTAO_VALIDATION_MAX_SCENES);
         gtao_validation_scene *s = &out->scenes[out->scene_count++];
-        snprintf(s->scene, sizeof s->scene, "%s", builtin_scene_at(i)->name);
+        snprintf(s->scene, sizeof s->scene, "%s", builtin_study_scene_at(i)->name);
         if (study_scene(ctx, rq->ao_references_dir, dir, figures, out, s, e) != 0)
             return -1;
     }

@@ -95,7 +95,7 @@ typedef struct {
     int heightfield_spp;  /* samples per pixel of the height-field references */
     int converged_frames; /* 24 (the talk's full cycle) or 6 at preview quality */
     int scene_count;
-    gtao_validation_scene scenes[GTAO_VALIDATION_MAX_SCENES]; /* builtin_scene_at order */
+    gtao_validation_scene scenes[GTAO_VALIDATION_MAX_SCENES]; /* builtin_study_scene_at order */
     int convergence_count;
     gtao_convergence_row convergence[GTAO_CONVERGENCE_STEPS * GTAO_CONVERGENCE_SLICES]; /* by steps, then slices */
     gtao_fit_request fit_request;

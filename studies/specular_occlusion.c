@@ -587,8 +587,8 @@ static int run(so_state *st, gt_error *e)
 {
     int rc = build_luts(st, e);
     setup_variants(st);
-    for (int i = 0; i < builtin_scene_count() && i < SO_STUDY_MAX_SCENES && rc == 0; ++i) {
-        const builtin_scene *b = builtin_scene_at(i);
+    for (int i = 0; i < builtin_study_scene_count() && i < SO_STUDY_MAX_SCENES && rc == 0; ++i) {
+        const builtin_scene *b = builtin_study_scene_at(i);
         rc = run_scene(st, b, e);
         if (rc == 0)
             snprintf(st->out->scenes[st->out->scene_count++], sizeof st->out->scenes[0], "%s", b->name);

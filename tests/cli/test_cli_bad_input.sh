@@ -76,7 +76,7 @@ expect_error unwritable "/nonexistent/folder/out.exr: cannot write" "" -- render
 mkdir -p "$work/a-folder"
 expect_error output-is-folder "a-folder: cannot write: is a folder" "" -- render ao --scene builtin:plane -o "$work/a-folder"
 expect_error unknown-builtin "builtin:teapot: unknown built-in scene" "$out" -- render ao --scene builtin:teapot -o "$out"
-expect_error unknown-quantity "unknown quantity 'fog'" "$out" -- render fog --scene builtin:plane -o "$out"
+expect_error unknown-quantity "unknown quantity 'smoke'" "$out" -- render smoke --scene builtin:plane -o "$out"
 expect_error bad-control-variate "--control-variate: 'gtao' is not none or heightfield" "$out" -- render ao --scene builtin:plane --control-variate gtao -o "$out"
 expect_error control-variate-not-ao "--control-variate: applies to ao only" "$out" -- render heightfield-ao --scene builtin:plane --control-variate heightfield -o "$out"
 expect_error unknown-verb "frobnicate: unknown verb" "" -- frobnicate
@@ -113,7 +113,7 @@ expect_error lut-atmosphere-size "--theta-v: 0 is out of range" "$work/atmospher
 expect_error lut-atmosphere-size-high "--weathers: 300 is out of range" "$work/atmosphere/atmosphere_luts.h" -- lut atmosphere --weathers 300 -o "$work/atmosphere"
 # gtlab all --stages: unknown or empty lists are refused before any work;
 # one stage gives a report with that section only.
-expect_error all-unknown-stage "--stages: unknown stage 'fog'" "" -- all --stages ao,fog -o "$work/all"
+expect_error all-unknown-stage "--stages: unknown stage 'smoke'" "" -- all --stages ao,smoke -o "$work/all"
 expect_error all-no-stage "--stages: no stage named in ','" "" -- all --stages , -o "$work/all"
 # A stage whose input another stage makes is refused when that input is absent.
 expect_error all-missing-input "stage gtao reads what stage ao writes" "$work/all_empty/report.md" -- all --stages gtao -o "$work/all_empty"

@@ -96,8 +96,8 @@ static void check_unbiased(const char *name, const scene *s, const camera *cam, 
 
 static void test_unbiased_on_builtin_scenes(void)
 {
-    for (int b = 0; b < builtin_scene_count(); ++b) {
-        const char *name = builtin_scene_at(b)->name;
+    for (int b = 0; b < builtin_study_scene_count(); ++b) {
+        const char *name = builtin_study_scene_at(b)->name;
         gt_error e;
         scene s;
         camera cam;

@@ -36,8 +36,12 @@ static int option_index(const reference_option *option)
 static int apply(reference_request *rq, reference_quantity q, gt_error *e, const char *const *pairs)
 {
     const char *values[MAX_OPTIONS] = {0};
+    static _Alignas(16) unsigned char settings[4096]; /* as verb_render's calloc of settings_size */
     memset(rq, 0, sizeof *rq);
+    memset(settings, 0, sizeof settings);
     rq->quantity = q;
+    CHECK_MSG(q->settings_size <= sizeof settings, "%s", q->name);
+    rq->settings = q->settings_size ? settings : NULL;
     if (q->set_defaults)
         q->set_defaults(rq);
     for (; pairs[0]; pairs += 2) {
@@ -66,7 +70,7 @@ static void test_descriptors(void)
         CHECK_MSG(!q->prepare || q->write_settings, "%s", q->name);
     }
     reference_quantity q = QUANTITY_AO;
-    CHECK(reference_quantity_parse("fog", &q) == -1 && q == QUANTITY_AO);
+    CHECK(reference_quantity_parse("smoke", &q) == -1 && q == QUANTITY_AO);
     CHECK(strcmp(reference_quantity_name(NULL), "unknown") == 0);
     CHECK(reference_quantity_find("multibounce") == QUANTITY_MULTIBOUNCE);
     CHECK(reference_quantity_find("heightfield-ao") == QUANTITY_HEIGHTFIELD_AO);
@@ -75,7 +79,7 @@ static void test_descriptors(void)
     CHECK(QUANTITY_GBUFFER->prepare == NULL && QUANTITY_GBUFFER->options == NULL);
     char names[512];
     reference_quantity_names(names, sizeof names);
-    CHECK_MSG(strcmp(names, "gbuffer, ao, multibounce, heightfield-ao, specular-occlusion or sphere-light") == 0,
+    CHECK_MSG(strcmp(names, "gbuffer, ao, multibounce, heightfield-ao, specular-occlusion, sphere-light or fog") == 0,
               "%s", names);
 }
 

@@ -59,8 +59,8 @@ static int make_references(study_context *ctx, char *refs, char *gtao, gt_error 
     if (ao_references_study(ctx, &rq, &r, e) != 0 || study_make_dir(ctx, "gtao", gtao, 4096, e) != 0)
         return -1;
     snprintf(refs, 4096, "%s/%s", ctx->output_dir, AO_REFERENCES_DIR);
-    for (int i = 0; i < builtin_scene_count(); ++i)
-        if (heightfield(refs, gtao, builtin_scene_at(i)->name, e) != 0)
+    for (int i = 0; i < builtin_study_scene_count(); ++i)
+        if (heightfield(refs, gtao, builtin_study_scene_at(i)->name, e) != 0)
             return -1;
     return 0;
 }

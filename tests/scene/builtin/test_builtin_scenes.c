@@ -25,6 +25,8 @@ static const expected_scene expected[] = {
     /* 3.894838: the tallest box, recomputed from the documented formula in test_builtin_geometry */
     {"boxes", {-50, 0, -50}, {50, 3.894838, 50}, {-12.5, 0, -12.5}, {12.5, 3.9, 12.5}, -1},
     {"cornell", {-2.75, 0, -2.75}, {2.75, 5.5, 2.75}, {-2.75, 0, -2.75}, {2.75, 5.5, 2.75}, -1},
+    /* 513.28863525: the highest vertex (float) of the documented height field */
+    {"terrain", {-4000, 0, -4000}, {4000, 513.28863525, 4000}, {-1500, 0, -1500}, {1500, 500, 1500}, 0},
 };
 enum { EXPECTED_COUNT = sizeof expected / sizeof expected[0] };
 
@@ -171,6 +173,12 @@ static void test_every_scene(void)
 
 static void test_table(void)
 {
+    /* The studies' list: every scene but terrain, in table order. */
+    CHECK(builtin_study_scene_count() == builtin_scene_count() - 1);
+    for (int i = 0; i < builtin_study_scene_count(); ++i)
+        CHECK(builtin_study_scene_at(i) == builtin_scene_at(i) && !builtin_scene_at(i)->outside_studies);
+    CHECK(builtin_study_scene_at(builtin_study_scene_count()) == NULL);
+    CHECK(builtin_scene_find("terrain")->outside_studies == 1);
     for (int i = 0; i < builtin_scene_count(); ++i) {
         const builtin_scene *b = builtin_scene_at(i);
         CHECK(builtin_scene_find(b->name) == b); /* names are unique */

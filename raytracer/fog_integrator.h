@@ -1,0 +1,60 @@
+/* `gtlab render fog`: the height fog between the camera and the first
+ * surface of each pixel (docs/render-quantities.md, issue 16). Channels
+ * (core/reference_schema.h):
+ *
+ *   fog.T.R/G/B   transmittance from the camera to the surface, closed form
+ *                 (core/height_fog_medium.h), the same in every sample
+ *   fog.L.R/G/B   radiance the fog scatters towards the camera, sun +
+ *                 ambient, with .stderr:
+ *                   quadrature  single scattering by gk15
+ *                               (raytracer/fog_single_scatter.h), the same in
+ *                               every sample; its error estimate in
+ *                               fog_quadrature_error.R/G/B
+ *                   single      the same integral by Monte Carlo
+ *                   multiple    volumetric path tracing
+ *                               (raytracer/fog_path_tracer.h)
+ *
+ * Options separate the analytic model's assumptions: no_sun_extinction
+ * (the sun reaches every point unattenuated, as the published model
+ * assumes) and no_shadows (the scene neither shadows the sun nor blocks
+ * scattered paths). A surface's own radiance is not rendered: composite as
+ * the talk does, background * fog.T + fog.L. Pixels whose primary ray
+ * misses the scene are not sampled (the shared loop samples surfaces). */
+#ifndef GTLAB_RAYTRACER_FOG_INTEGRATOR_H
+#define GTLAB_RAYTRACER_FOG_INTEGRATOR_H
+
+#include "core/error.h"
+#include "core/mc_film.h"
+#include "raytracer/fog_path_tracer.h"
+#include "raytracer/render_loop.h"
+
+typedef enum { FOG_QUADRATURE, FOG_SINGLE, FOG_MULTIPLE } fog_scattering;
+
+/* rq->settings of `gtlab render fog`. */
+typedef struct {
+    char weather[16];         /* height_fog_weather: "sunny" or "dense" */
+    double sun_elevation_deg; /* degrees above the horizon */
+    fog_scattering scattering;
+    int no_sun_extinction, no_shadows;
+    int max_scatterings;      /* multiple only */
+} fog_settings;
+
+enum { FOG_QUANTITIES = 9 };
+
+typedef struct {
+    height_fog_param medium;
+    fog_path_settings path;
+    fog_scattering scattering;
+    vec3 eye;
+    int quantity_count;
+    mc_quantity quantities[FOG_QUANTITIES];
+} fog_plan;
+
+/* Builds the plan; -1 with e naming "fog" when a setting is bad. */
+int fog_plan_init(fog_plan *plan, const fog_settings *settings, const embree_scene *es, vec3 eye, gt_error *e);
+integrator fog_integrator(const embree_scene *es, const fog_plan *plan);
+const char *fog_scattering_name(fog_scattering s);
+/* "quadrature" / "single" / "multiple" -> s; -1 if unknown. */
+int fog_scattering_parse(const char *name, fog_scattering *s);
+
+#endif

@@ -1,0 +1,89 @@
+/* The analytic height fog, published and corrected; see height_fog.h. The
+ * arithmetic is float, as in the shader. */
+#include "realtime/height_fog.h"
+
+#include <math.h>
+
+#define PI_F 3.14159265358979323846f
+
+static float rayleigh_f(float mu)
+{
+    return 3.0f / 4.0f * 1.0f / (4.0f * PI_F) * (1.0f + mu * mu);
+}
+
+/* pow(d, 1.5) as d sqrt(d): the same function (HLSL compilers expand pow
+ * into exp2(1.5 log2(d)) anyway), without a general powf per pixel. */
+static float mie_f(float mu, float g)
+{
+    float d = 1.0f + g * g - 2.0f * g * mu;
+    return (1.0f - g * g) / ((4.0f * PI_F) * (d * sqrtf(d)));
+}
+
+/* (E_sun S_sun(mu) + L_amb beta_s) / beta_t per channel: the source term
+ * over extinction, its sun part E_sun S_sun(mu) / beta_t, and beta_t. */
+static void source_over_extinction(const height_fog_param *p, float sov, float source[3], float sun[3],
+                                   float beta_t[3])
+{
+    float pr = rayleigh_f(sov), pm = mie_f(sov, (float)p->mie_g);
+    for (int c = 0; c < 3; ++c) {
+        float rs = (float)p->beta_rs[c], ms = (float)p->beta_ms;
+        beta_t[c] = rs + (ms + (float)p->beta_ma);
+        float single = (float)p->albedo_r[c] * rs * pr + (float)p->albedo_m[c] * ms * pm;
+        source[c] = ((float)p->sun_color[c] * single + (float)p->amb_color[c] * (rs + ms)) / beta_t[c];
+        sun[c] = (float)p->sun_color[c] * single / beta_t[c];
+    }
+}
+
+void height_fog_published(const height_fog_param *p, float distance, float camera_y, float world_y, float sov,
+                          float inscatter[3], float transmittance[3])
+{
+    float h = (float)p->scale_height, source[3], sun[3], beta_t[3];
+    float t = fmaxf(1e-2f, (camera_y - world_y) / h);
+    t = (1.0f - expf(-t)) / t * expf(-world_y / h);
+    source_over_extinction(p, sov, source, sun, beta_t);
+    for (int c = 0; c < 3; ++c) {
+        transmittance[c] = expf(-distance * t * beta_t[c]);
+        inscatter[c] = source[c] * (1.0f - transmittance[c]);
+    }
+}
+
+/* f(x) = (1 - e^-x) / x, x >= 0 (core/height_fog_medium.h). */
+static float mean_factor_f(float x)
+{
+    return x > 0.0f ? -expm1f(-x) / x : 1.0f;
+}
+
+/* e^{-A} tau f(m tau) = e^{-A} (1 - e^{-m tau}) / m for any sign of m,
+ * without overflow and finite as tau -> infinity (height_fog.h). */
+static float attenuated_sun_integral(float a, float m, float tau)
+{
+    if (m > 0.0f)
+        return expf(-a) * -expm1f(-m * tau) / m;
+    if (m == 0.0f)
+        return expf(-a) * tau;
+    return expf(-(a + m * tau)) * -expm1f(m * tau) / -m; /* a + m tau = tau_v + tau_sun at the end >= 0 */
+}
+
+void height_fog_corrected(const height_fog_param *p, int sun_extinction, float distance, float camera_y,
+                          float world_y, float sov, float inscatter[3], float transmittance[3])
+{
+    float h = (float)p->scale_height, source[3], sun[3], beta_t[3];
+    float delta = world_y - camera_y, low = fminf(camera_y, world_y);
+    float density = expf(-low / h) * mean_factor_f(fabsf(delta) / h); /* mean rho along the ray */
+    source_over_extinction(p, sov, source, sun, beta_t);
+    float mu_s = p->sun_direction.y, view_y = distance > 0.0f ? delta / distance : 0.0f;
+    float column = sun_extinction ? h * expf(-camera_y / h) : 0.0f, m = mu_s > 0.0f ? 1.0f - view_y / mu_s : 0.0f;
+    for (int c = 0; c < 3; ++c) {
+        float tau = distance * density * beta_t[c];
+        transmittance[c] = expf(-tau);
+        if (beta_t[c] == 0.0f) { /* clear air (the published form divides 0 by 0) */
+            inscatter[c] = 0.0f;
+            continue;
+        }
+        inscatter[c] = source[c] * -expm1f(-tau);
+        if (!sun_extinction)
+            continue;
+        float attenuated = mu_s > 0.0f ? attenuated_sun_integral(beta_t[c] * column / mu_s, m, tau) : 0.0f;
+        inscatter[c] += sun[c] * (attenuated - -expm1f(-tau));
+    }
+}

@@ -1,0 +1,57 @@
+/* The analytic height fog of the Decima talk (Kojima Productions, "Height
+ * fog", SIGGRAPH 2017 Advances, slide "Height fog: Analytic model"), in C
+ * with the shader's float arithmetic, as published and corrected where the
+ * references show it wrong (docs/decisions.md, "Height fog"). The medium is
+ * core/height_fog_medium.h.
+ *
+ * Published. With beta_t = beta_Rs + beta_Ms + beta_Ma, distance d, camera
+ * and world altitudes y_c, y_w:
+ *
+ *   t = max(1e-2, (y_c - y_w) / H)
+ *   T = exp(-d beta_t (1 - e^-t) / t  e^(-y_w / H))
+ *   L_in = (E_sun S_sun(mu) + L_amb beta_s) / beta_t (1 - T)
+ *
+ * For t >= 1e-2 (the world point at least H/100 below the camera) T is the
+ * exact transmittance exp(-beta_t d e^{-y_low/H} f(|Delta|/H)) of
+ * core/height_fog_medium.h. The clamp replaces t < 1e-2, i.e. every
+ * horizontal or upward ray and every world point above the camera, by
+ * t = 1e-2, which uses the density of the world point, the thinnest point of
+ * an upward ray: T is too high, by exp(beta_t d [e^{-y_c/H} f(Delta/H) -
+ * e^{-y_w/H} f(1e-2)]). And L_in is exact single scattering only if the sun
+ * reaches every point of the ray unattenuated by the fog and unshadowed, and
+ * the ambient is an isotropic, unattenuated, unshadowed sky: then the source
+ * term J / beta_t is the same at every point and the integral of
+ * beta_s rho T J is J beta_s / beta_t (1 - T).
+ *
+ * Corrected. T from the exact optical depth for every sign of Delta (no
+ * clamp), and the sun attenuated by the fog above each point (a flat,
+ * infinite exponential layer; sun elevation sin = mu_s > 0): with the view
+ * ray's vertical cosine v_y = Delta / d, tau_v = -ln T, the sun's optical
+ * depth at the camera A = beta_t H rho(y_c) / mu_s and m = 1 - v_y / mu_s,
+ * d(tau_v + tau_sun)/ds = m d(tau_v)/ds along the ray, so
+ *
+ *   \int_0^d beta_s rho e^{-tau_v(s) - tau_sun(s)} ds
+ *       = beta_s / beta_t e^{-A} tau_v f(m tau_v),   f(x) = (1 - e^-x) / x,
+ *
+ * exact under single scattering for any direction (f of a negative argument
+ * is evaluated as e^{-(A + m tau_v)} tau_v f(-m tau_v): no overflow). With
+ * the sun on or below the horizon the sun term is 0. The ambient term stays
+ * the published one (unattenuated isotropic sky). */
+#ifndef GTLAB_REALTIME_HEIGHT_FOG_H
+#define GTLAB_REALTIME_HEIGHT_FOG_H
+
+#include "core/height_fog_medium.h"
+
+/* The talk's HeightFog(): the argument order and the max(1e-2, ...) clamp
+ * as published; in-scatter and transmittance RGB. inSov = dot(sun_dir,
+ * view_dir). The sun's direction in p is not read. */
+void height_fog_published(const height_fog_param *p, float distance, float camera_y, float world_y, float sov,
+                          float inscatter[3], float transmittance[3]);
+
+/* The corrected model above. sun_extinction 0 keeps the published sun term
+ * (the clamp fix alone); 1 attenuates the sun by the fog, reading the sun's
+ * elevation from p->sun_direction.y. The floor of p is not modelled. */
+void height_fog_corrected(const height_fog_param *p, int sun_extinction, float distance, float camera_y,
+                          float world_y, float sov, float inscatter[3], float transmittance[3]);
+
+#endif
