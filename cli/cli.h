@@ -23,19 +23,14 @@ int verb_lut(int argc, char **argv);
 int verb_approx(int argc, char **argv);
 
 /* gtlab bench sub-benchmarks in their own files (dispatched by verb_bench.c). */
-int bench_multibounce(int argc, char **argv);
 int bench_fit(int argc, char **argv);
-int bench_sphere_light(int argc, char **argv);
 int bench_gtao(int argc, char **argv);
 int bench_convergence(int argc, char **argv);
 
 /* Subcommands in their own files (cli/<verb>_<name>.c), dispatched by
  * verb_fit.c, verb_check.c, verb_lut.c and verb_approx.c. */
-int fit_multibounce(int argc, char **argv);
-int fit_sphere_light(int argc, char **argv);
 int fit_aperture(int argc, char **argv);
 int fit_gtao_params(int argc, char **argv);
-int check_sphere_noh(int argc, char **argv);
 int lut_specular_occlusion(int argc, char **argv);
 int approx_specular_occlusion(int argc, char **argv);
 int approx_gtao(int argc, char **argv);

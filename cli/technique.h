@@ -32,6 +32,12 @@ typedef struct {
     const all_stage *stages; /* ended by an entry with a NULL key; NULL: none */
 } technique;
 
+/* Defines technique_<id>: a technique that is one section of `gtlab all`
+ * and nothing else (its stage's key, progress title, run and folder). */
+#define GTLAB_STAGE_TECHNIQUE(id, key, title, run, writes)                                                   \
+    static const all_stage id##_stages[] = {{key, title, run, writes, NULL}, {NULL, NULL, NULL, NULL, NULL}}; \
+    const technique technique_##id = {.name = key, .stages = id##_stages}
+
 /* The registered techniques, in the report's order, ended by NULL. */
 extern const technique *const gtlab_techniques[];
 

@@ -11,9 +11,4 @@ static int all_stage_aa(report_context *ctx, gt_error *e)
     return aa_study(&ctx->study, &rq, &r, e) != 0 ? -1 : aa_section(ctx, &r, e);
 }
 
-static const all_stage stages[] = {
-    {"aa", "anti-aliasing against supersampled truth", all_stage_aa, AA_DIR, NULL},
-    {NULL, NULL, NULL, NULL, NULL},
-};
-
-const technique technique_anti_aliasing = {.name = "anti-aliasing", .stages = stages};
+GTLAB_STAGE_TECHNIQUE(anti_aliasing, "aa", "anti-aliasing against supersampled truth", all_stage_aa, AA_DIR);

@@ -48,7 +48,7 @@ static int bench_fog(int argc, char **argv)
     static const cli_option options[] = {CLI_THREADS, CLI_END};
     static const cli_command command = {
         "bench fog", "Reference rays per second (path tracing, dense fog, terrain 128x96) and the analytic\n"
-                     "models' nanoseconds per pixel in C (goal < 20).", options};
+                     "models' nanoseconds per pixel in C (goal < 20).", options, NULL, NULL};
     long threads = threads_default();
     int status;
     if (cli_options_parse(&command, (void *[]){&threads}, argc, argv, &status) != 0)

@@ -1,7 +1,219 @@
-/* GTAO's multi-bounce approximation (Jimenez et al. 2016) and its refit. */
+/* GTAO's multi-bounce approximation (Jimenez et al. 2016) and its refit:
+ * `gtlab fit multibounce` (the cubic refitted to multi-bounce references:
+ * studies/multibounce_fit_input.h, fitters/fit_multibounce.h, the formula
+ * realtime/multibounce.h), `gtlab bench multibounce` (the reference's paths/s
+ * against raw Embree; N albedos in one pass: studies/multibounce_bench.h) and
+ * the stage multibounce. */
+#define _GNU_SOURCE
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
 #include "cli/cli.h"
+#include "cli/cli_options.h"
 #include "cli/technique.h"
+#include "core/atomic_file.h"
+#include "core/threads.h"
+#include "fitters/fit_multibounce.h"
 #include "report/multibounce_section.h"
+#include "studies/multibounce_bench.h"
+#include "studies/multibounce_fit_input.h"
+
+enum { MAX_FILES = 256 };
+
+static const cli_option fit_options[] = {
+    CLI_CUSTOM("data", "F ...", cli_list_add, "reference EXRs (the option may repeat; further file names\n"
+               "after it are data too); all rendered with the same --bounces"),
+    CLI_OUTPUT("F", 0, "the JSON: coefficients, standard errors, covariance, RMSE and\n"
+               "max error on the data, the talk's on the same data, LOO\n"
+               "table, data used (files, scenes, albedos, counts, weights)"),
+    CLI_STRING("header", "F.h", "C header with the fitted functions (default: F without .json, .h)"),
+    CLI_STRING("hlsl", "F.hlsl", "HLSL GTAOMultiBounce with the new coefficients (default: .hlsl)"),
+    CLI_STRING("glsl", "F.glsl", "the same in GLSL (default: .glsl)"), CLI_END};
+static const cli_command fit_command = {
+    "fit multibounce",
+    "Fits V'_d = max(V_d, ((a V_d + b) V_d + c) V_d) (GTAOMultiBounce, Jimenez et al. 2016)\n"
+    "to references made by 'gtlab render multibounce --albedo 0.1,0.2,...' (grey albedos;\n"
+    "each surface pixel, mask.A = 1, gives one sample (V_d = ao.V, V'_d, albedo) per albedo):\n"
+    "  per albedo      the cubic's a, b, c\n"
+    "  joint linear    a = a0 + a1 albedo, b, c likewise, fitted to all samples at once\n"
+    "  joint quadratic a, b, c quadratic in the albedo (3+ albedos), preferred only if\n"
+    "                  its leave-one-scene-out error is lower\n"
+    "Every scene and every albedo counts equally, whatever its pixel count. With 2+\n"
+    "scenes (the files' gtlab.scene) each scene is held out in turn: the model fitted\n"
+    "on the others is scored on it. The talk's published coefficients are scored on\n"
+    "the same data. Fits run through Ceres; standard errors from its covariance.",
+    fit_options, "[B.exr ...]",
+    "example: gtlab render multibounce --scene builtin:corner --albedo 0.1,0.2,0.3,0.4,0.5,0.7,0.9 -o c.exr\n"
+    "         gtlab fit multibounce --data c.exr m.exr -o fit.json\n"
+    "exit status: 0 success, 1 bad input, 2 internal error"};
+
+/* F without a trailing ".json", with `extension` appended. */
+static void sibling_path(const char *json, const char *extension, char *out, size_t size)
+{
+    size_t n = strlen(json);
+    if (n > 5 && strcmp(json + n - 5, ".json") == 0)
+        n -= 5;
+    snprintf(out, size, "%.*s%s", (int)n, json, extension);
+}
+
+static void print_fit(const char *title, const multibounce_fit *f, const multibounce_errors *err)
+{
+    printf("%s (RMSE %.4g, max |error| %.4g):\n ", title, err->rmse, err->max_abs);
+    for (int i = 0; i < f->parameter_count; ++i) {
+        char name[8];
+        multibounce_fit_parameter_name(f, i, name, sizeof name);
+        printf(" %s = %.5f (±%.5f)", name, f->params[i], f->standard_errors[i]);
+    }
+    printf("\n");
+}
+
+static void print_summary(const multibounce_data *d, const multibounce_analysis *a)
+{
+    printf("%zu samples: %d scenes, %d albedos, --bounces %s\n", d->count, d->scene_count, d->albedo_count,
+           d->bounces);
+    for (int j = 0; j < MB_JOINT_COUNT; ++j)
+        if (a->has[j])
+            print_fit(multibounce_joint_names[j], &a->joint[j], &a->joint_err[j][1]);
+    printf("talk's coefficients on the same data: RMSE %.4g, max |error| %.4g\n", a->talk_err[1].rmse,
+           a->talk_err[1].max_abs);
+    if (a->heldout_count) {
+        printf("leave-one-scene-out mean RMSE:");
+        for (int j = 0; j < MB_JOINT_COUNT; ++j)
+            if (a->has[j])
+                printf(" %s %.4g,", multibounce_joint_names[j], a->heldout_mean[j]);
+        printf(" talk %.4g; chosen: %s\n", a->heldout_mean_talk, multibounce_joint_names[a->chosen]);
+    }
+}
+
+/* The fit_command line as one string, for the outputs' provenance. */
+static void command_text(int argc, char **argv, char *out, size_t size)
+{
+    size_t used = (size_t)snprintf(out, size, "gtlab fit");
+    for (int i = 0; i < argc && used < size; ++i)
+        used += (size_t)snprintf(out + used, size - used, " %s", argv[i]);
+}
+
+static int fit_multibounce(int argc, char **argv)
+{
+    const char *files[MAX_FILES], *output = NULL, *header = NULL, *hlsl = NULL, *glsl = NULL;
+    cli_list data = {files, 0, MAX_FILES, "--data"};
+    cli_arguments more;
+    char command_line[4096];
+    command_text(argc, argv, command_line, sizeof command_line); /* before getopt permutes argv */
+    int status;
+    if (cli_options_parse(&fit_command, (void *[]){&data, &output, &header, &hlsl, &glsl, &more}, argc, argv, &status) != 0)
+        return status;
+    if (more.count > 0 && data.count == 0)
+        return cli_failf("fit multibounce", "unexpected argument '%s' (data files follow --data)", more.values[0]);
+    for (int i = 0; i < more.count; ++i)
+        if (cli_list_add(&data, more.values[i]) != 0)
+            return EXIT_USER_ERROR;
+    if (data.count == 0)
+        return cli_failf("--data", "no reference files given (see 'gtlab fit multibounce --help')");
+    if (!output)
+        return cli_failf("-o", "an output file is required (fit.json)");
+    char header_path[4096], hlsl_path[4096], glsl_path[4096];
+    sibling_path(output, ".h", header_path, sizeof header_path);
+    sibling_path(output, ".hlsl", hlsl_path, sizeof hlsl_path);
+    sibling_path(output, ".glsl", glsl_path, sizeof glsl_path);
+    if (!header)
+        header = header_path;
+    if (!hlsl)
+        hlsl = hlsl_path;
+    if (!glsl)
+        glsl = glsl_path;
+    gt_error e;
+    if (atomic_file_check_writable(output, &e) != 0 || atomic_file_check_writable(header, &e) != 0 ||
+        atomic_file_check_writable(hlsl, &e) != 0 || atomic_file_check_writable(glsl, &e) != 0)
+        return cli_fail(&e);
+    multibounce_data d;
+    multibounce_data_init(&d);
+    multibounce_analysis *a = malloc(sizeof *a);
+    status = EXIT_OK;
+    if (!a)
+        status = cli_failf("fit multibounce", "out of memory");
+    else if (multibounce_fit_input_load(files, data.count, &d, &e) != 0 || multibounce_analyse(&d, a, &e) != 0 ||
+             multibounce_write_outputs(&d, a, command_line, output, header, hlsl, glsl, &e) != 0)
+        status = cli_fail(&e);
+    else
+        print_summary(&d, a);
+    free(a);
+    multibounce_data_free(&d);
+    return status;
+}
+
+static int parse_albedos(void *settings, const char *text)
+{
+    gt_error e;
+    if (multibounce_parse_albedos(text, settings, &e) != 0)
+        return cli_fail(&e), -1;
+    if (((multibounce_settings *)settings)->scene_albedo)
+        return cli_failf("--albedo", "the benchmark compares grey albedos; 'scene' is not one"), -1;
+    return 0;
+}
+
+static int parse_bounces(void *settings, const char *text)
+{
+    gt_error e;
+    return multibounce_parse_bounces(text, settings, &e) != 0 ? (cli_fail(&e), -1) : 0;
+}
+
+static const cli_option bench_options[] = {
+    CLI_STRING("scene", "S", "builtin:NAME or a glTF file"), CLI_INT("width", "W", 16, 8192, "image width"),
+    CLI_INT("height", "H", 16, 8192, "image height"), CLI_INT("spp", "N", 1, 1 << 20, "samples (paths) per pixel"),
+    CLI_CUSTOM("albedo", "LIST", parse_albedos, "grey albedos (default 0.1,0.2,0.3,0.4,0.5,0.7,0.9)"),
+    CLI_CUSTOM("bounces", "N|inf", parse_bounces, "inter-reflections, or inf (default 4)"),
+    CLI_INT("threads", "T", 1, 1024, "threads for the parallel figures (default: all cores)"),
+    CLI_INT("repeats", "R", 1, 100, "passes per figure"), CLI_END};
+static const cli_command bench_command = {
+    "bench multibounce",
+    "Measures, in one run, on the same scene, camera and machine:\n"
+    "  gtlab multibounce  paths/s and rays/s of the multi-bounce reference loop (all\n"
+    "                     albedos in one pass), per core (1 thread) and with T threads\n"
+    "  raw Embree         closest-hit rays/s of rtcIntersect1 and rtcIntersect1M\n"
+    "                     (streams of 64) on the first rays of the same paths\n"
+    "                     (cosine-distributed, incoherent), traversal only\n"
+    "  one pass vs N      seconds of one render of N albedos against N renders of one\n"
+    "                     albedo each (T threads), and their ratio\n"
+    "Each figure is the best of R passes.",
+    bench_options, NULL, NULL};
+
+static void print_report(const char *spec, const multibounce_settings *s, const multibounce_benchmark *b)
+{
+    printf("scene %s, %d albedos, %d spp, 1 and %d threads\n\n", spec, s->albedo_count, b->spp, b->threads);
+    printf("%-44s %14s %14s\n", "", "1 thread", "threads");
+    printf("%-44s %14.4g %14.4g\n", "gtlab multibounce paths/s", b->paths_per_s[0], b->paths_per_s[1]);
+    printf("%-44s %14.4g %14.4g\n", "gtlab multibounce rays/s", b->rays_per_s[0], b->rays_per_s[1]);
+    printf("%-44s %14.4g %14.4g\n", "raw Embree rtcIntersect1 rays/s", b->raw_intersect1[0], b->raw_intersect1[1]);
+    printf("%-44s %14.4g %14.4g\n", "raw Embree rtcIntersect1M (64) rays/s", b->raw_intersect1m[0],
+           b->raw_intersect1m[1]);
+    printf("%-44s %14.3f %14.3f\n", "ratio gtlab / raw rtcIntersect1", b->rays_per_s[0] / b->raw_intersect1[0],
+           b->rays_per_s[1] / b->raw_intersect1[1]);
+    printf("\n%d albedos in one pass: %.3f s; one render per albedo: %.3f s in all; ratio %.2f\n", s->albedo_count,
+           b->seconds_one_pass, b->seconds_separate, b->seconds_separate / b->seconds_one_pass);
+}
+
+static int bench_multibounce(int argc, char **argv)
+{
+    const char *spec = "builtin:cornell";
+    long width = 128, height = 128, spp = 64, threads = threads_default(), repeats = 2;
+    multibounce_settings settings = {0};
+    settings.bounces = 4;
+    gt_error e;
+    int status;
+    if (multibounce_parse_albedos("0.1,0.2,0.3,0.4,0.5,0.7,0.9", &settings, &e) != 0)
+        return cli_fail(&e);
+    if (cli_options_parse(&bench_command, (void *[]){&spec, &width, &height, &spp, &settings, &settings, &threads, &repeats},
+                          argc, argv, &status) != 0)
+        return status;
+    multibounce_benchmark b;
+    if (multibounce_bench_run(spec, (int)width, (int)height, &settings, (int)spp, (int)threads, (int)repeats, &b,
+                              &e) != 0)
+        return cli_fail(&e);
+    print_report(spec, &settings, &b);
+    return EXIT_OK;
+}
 
 static const cli_subcommand fits[] = {
     {"multibounce", fit_multibounce, "GTAO multi-bounce cubic (per albedo and joint in rho) vs multibounce renders"},

@@ -1,5 +1,8 @@
-/* Best-fit normals (Kaplanyan 2010): `gtlab lut best-fit-normals` and the
- * section of `gtlab all` (studies/best_fit_normals.h). */
+/* CryENGINE 3 (Kaplanyan 2010) on the command line: best-fit normals
+ * (`gtlab lut best-fit-normals`, stage normals; studies/best_fit_normals.h),
+ * colour precision and the HDR range (stage hdr-precision;
+ * studies/hdr_precision.h) and colour-grading LUTs (stage color-grading;
+ * studies/color_grading.h): three techniques of one talk. */
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -9,7 +12,11 @@
 #include "core/threads.h"
 #include "luts/best_fit_normals.h"
 #include "report/best_fit_normals_section.h"
+#include "report/color_grading_section.h"
+#include "report/hdr_precision_section.h"
 #include "studies/best_fit_normals.h"
+#include "studies/color_grading.h"
+#include "studies/hdr_precision.h"
 
 static int lut_best_fit_normals(int argc, char **argv)
 {
@@ -57,3 +64,20 @@ static const all_stage stages[] = {
 };
 
 const technique technique_normals = {.name = "normals", .subcommands = {[VERB_LUT] = luts}, .stages = stages};
+
+static int all_stage_hdr_precision(report_context *ctx, gt_error *e)
+{
+    hdr_precision_result r;
+    return hdr_precision_study(&ctx->study, &r, e) != 0 ? -1 : hdr_precision_section(ctx, &r, e);
+}
+
+GTLAB_STAGE_TECHNIQUE(hdr_precision, "hdr-precision", "gamma vs linear and HDR lower bounds", all_stage_hdr_precision,
+                      HDR_PRECISION_DIR);
+
+static int all_stage_color_grading(report_context *ctx, gt_error *e)
+{
+    static grading_result r;
+    return color_grading_study(&ctx->study, &r, e) != 0 ? -1 : color_grading_section(ctx, &r, e);
+}
+
+GTLAB_STAGE_TECHNIQUE(color_grading, "color-grading", "colour-grading LUTs", all_stage_color_grading, GRADING_DIR);
