@@ -88,7 +88,7 @@ static void test_shader_functions_match_c(void)
 static void test_no_second_copy(void)
 {
     static const char *const files[] = {"realtime/sphere_light.c", "realtime/sphere_light_shader.c",
-                                        "cli/fit_sphere_light.c", "studies/sphere_light.c"};
+                                        "cli/technique_sphere_light.c", "studies/sphere_light.c"};
     static const char *const prints[] = {"NoLVTr", "no_b * d0", "0.25f * s", "norm_scale * radius_over_distance",
                                          "rsqrt(", "GetGGXVisibility"};
     check_no_file_spells(files, sizeof files / sizeof files[0], prints, sizeof prints / sizeof prints[0]);
