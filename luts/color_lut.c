@@ -4,7 +4,8 @@
 #include <math.h>
 #include <stdlib.h>
 
-static const char *const space_names[COLOR_LUT_SPACES] = {"sRGB", "linear"};
+static const char *const space_names[COLOR_LUT_SPACES] = {"sRGB", "linear", "log2"};
+enum { LOG_STOPS = 12 };
 static const char *const interpolation_names[COLOR_LUT_INTERPOLATIONS] = {"trilinear", "tetrahedral"};
 
 const char *color_lut_space_name(int space)
@@ -19,11 +20,15 @@ const char *color_lut_interpolation_name(int interpolation)
 
 double color_lut_coordinate(color_lut_space space, double d)
 {
+    if (space == COLOR_LUT_LOG)
+        return (log2(fmax(srgb_to_linear(d), exp2(-LOG_STOPS))) + LOG_STOPS) / LOG_STOPS;
     return space == COLOR_LUT_LINEAR ? srgb_to_linear(d) : d;
 }
 
 double color_lut_display_value(color_lut_space space, double u)
 {
+    if (space == COLOR_LUT_LOG)
+        return linear_to_srgb(exp2(u * LOG_STOPS - LOG_STOPS));
     return space == COLOR_LUT_LINEAR ? linear_to_srgb(u) : u;
 }
 

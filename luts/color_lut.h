@@ -7,6 +7,9 @@
  * colour d depend on the LUT's input space:
  *   COLOR_LUT_SRGB    u = d (the display-encoded value: the usual choice)
  *   COLOR_LUT_LINEAR  u = srgb_to_linear(d) (lattice uniform in linear light)
+ *   COLOR_LUT_LOG     u = (log2(max(x, 2^-12)) + 12) / 12, x = srgb_to_linear(d)
+ *                     (uniform in stops over the 12 stops below white, the
+ *                     shaper of log-encoded grading LUTs; darker values clamp)
  * Lookups:
  *   trilinear    the 8 corners of the lattice cell (what a GPU's 3-D texture
  *                filter computes), exact for functions linear in each axis;
@@ -20,7 +23,7 @@
 
 #include "luts/color_grade.h"
 
-typedef enum { COLOR_LUT_SRGB, COLOR_LUT_LINEAR, COLOR_LUT_SPACES } color_lut_space;
+typedef enum { COLOR_LUT_SRGB, COLOR_LUT_LINEAR, COLOR_LUT_LOG, COLOR_LUT_SPACES } color_lut_space;
 typedef enum { COLOR_LUT_TRILINEAR, COLOR_LUT_TETRAHEDRAL, COLOR_LUT_INTERPOLATIONS } color_lut_interpolation;
 
 typedef struct {

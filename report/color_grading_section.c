@@ -100,6 +100,29 @@ static void render_findings(report_context *ctx, const grading_row *gpu, int n, 
                             looks ? (double)count / looks : 0.0, 0.0, 0.5 + 1e-9, 1.0);
 }
 
+/* The worst chart dE00 over the five looks of one variant at size N. */
+static double worst_look(const grading_result *r, const char *space, const char *lookup, int size_n)
+{
+    double worst = 0.0;
+    for (int i = 0; i < r->row_count; ++i) {
+        const grading_row *row = &r->rows[i];
+        if (row->size == size_n && !strcmp(row->space, space) && !strcmp(row->interpolation, lookup) &&
+            !strcmp(row->storage, "float") && strcmp(row->grade, "identity") != 0)
+            worst = row->image[0].max_de > worst ? row->image[0].max_de : worst;
+    }
+    return worst;
+}
+
+static void render_space_finding(report_context *ctx, const grading_result *r)
+{
+    report_finding(ctx->doc, "colour grading",
+                   "At 32^3 (float, tetrahedral) the worst look's chart dE00 is %.2f indexed by sRGB values, %.2f "
+                   "by linear values and %.2f by log2 values (12 stops): linear indexing leaves few lattice points "
+                   "in the shadows, where display values change fastest.",
+                   worst_look(r, "sRGB", "tetrahedral", 32), worst_look(r, "linear", "tetrahedral", 32),
+                   worst_look(r, "log2", "tetrahedral", 32));
+}
+
 int color_grading_section(report_context *ctx, const grading_result *r, gt_error *e)
 {
     (void)e;
@@ -108,20 +131,21 @@ int color_grading_section(report_context *ctx, const grading_result *r, gt_error
                      "Kaplanyan 2010 bakes all global colour transformations into a 3-D LUT and finds 16^3 enough. "
                      "Six grades as grading tools apply them (levels, monotone curves, saturation, hue rotation, "
                      "ASC CDL, a clipped exposure; luts/color_grade.h) are baked at 16^3, 32^3 and 64^3, indexed "
-                     "by sRGB or by linear values, stored as float or RGBA8, looked up trilinearly or "
+                     "by sRGB, linear or log2 values (12 stops), stored as float or RGBA8, looked up trilinearly or "
                      "tetrahedrally, and scored against the exact grade: on a photo-like HDR chart tone-mapped "
                      "to display values (hue, saturation and exposure sweeps, skin tones, a twelve-stop grey "
                      "ramp), on %d random colours (the cube) and on a gtlab render of the Cornell box (the frames of the "
                      "anti-aliasing study, 2x2 samples). Errors: CIEDE2000 (Little CMS) and the largest "
                      "channel difference in 8-bit steps, max and 99th percentile. The "
                      "table shows the GPU path (sRGB-indexed, RGBA8, trilinear) and the float LUTs with each "
-                     "lookup; summary.json holds every variant, the linear-indexed ones too.",
+                     "lookup; summary.json holds every variant, the linear- and log-indexed ones too.",
                      r->cube_samples);
     static grading_row gpu[sizeof r->rows / sizeof r->rows[0]], tet[sizeof r->rows / sizeof r->rows[0]];
     int n = select_rows(r, "sRGB", "trilinear", "8-bit", gpu), n_tet = select_rows(r, "sRGB", "tetrahedral", "float", tet);
     report_rows(ctx->doc, NULL, columns, COLUMN_COUNT, gpu, sizeof gpu[0], n);
     report_rows(ctx->doc, NULL, columns, COLUMN_COUNT, tet, sizeof tet[0], n_tet);
     render_findings(ctx, gpu, n, tet, n_tet);
+    render_space_finding(ctx, r);
     report_rows(NULL, cJSON_AddArrayToObject(ctx->summary, "color_grading"), columns, COLUMN_COUNT, r->rows,
                 sizeof r->rows[0], r->row_count);
     const char *p[5] = {"grading/chart.png", "grading/chart_grade1.png", "grading/chart_grade3.png",

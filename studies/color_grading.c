@@ -24,7 +24,7 @@ typedef struct {
 static const lut_variant variants[GRADING_VARIANTS] = {
     {COLOR_LUT_SRGB, COLOR_LUT_TRILINEAR, 0}, {COLOR_LUT_SRGB, COLOR_LUT_TETRAHEDRAL, 0},
     {COLOR_LUT_LINEAR, COLOR_LUT_TRILINEAR, 0}, {COLOR_LUT_LINEAR, COLOR_LUT_TETRAHEDRAL, 0},
-    {COLOR_LUT_SRGB, COLOR_LUT_TRILINEAR, 1}};
+    {COLOR_LUT_SRGB, COLOR_LUT_TRILINEAR, 1}, {COLOR_LUT_LOG, COLOR_LUT_TETRAHEDRAL, 0}};
 static const int sizes[GRADING_SIZES] = {16, 32, 64};
 
 /* Fully saturated hue h (degrees) scaled to value 1, mixed with white by (1 - s). */

@@ -1,6 +1,6 @@
 /* Colour-grading LUTs (Kaplanyan 2010: "16x16x16 LUT proved to be enough")
  * as `gtlab all` studies them: six grades (luts/color_grade.h) baked into
- * 16^3, 32^3 and 64^3 LUTs indexed in sRGB or linear values, stored as
+ * 16^3, 32^3 and 64^3 LUTs indexed in sRGB, linear or log2 values, stored as
  * float or 8 bits, looked up trilinearly or tetrahedrally, and scored
  * against the exact grade on
  *   chart  a photo-like HDR test chart (hue and saturation sweeps over seven
@@ -25,7 +25,7 @@
 
 #define GRADING_DIR "grading"
 
-enum { GRADING_SIZES = 3, GRADING_VARIANTS = 5, GRADING_IMAGES = 3, GRADING_CHART_W = 192, GRADING_CHART_H = 128 };
+enum { GRADING_SIZES = 3, GRADING_VARIANTS = 6, GRADING_IMAGES = 3, GRADING_CHART_W = 192, GRADING_CHART_H = 128 };
 
 typedef struct {
     double max_lsb, p99_lsb, max_de, p99_de;

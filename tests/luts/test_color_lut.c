@@ -132,6 +132,9 @@ static void check_luts(void)
         CHECK_MSG(e[1] < e[0] && mid[1] < mid[0] / 3.0 && mid[1] > 0.0, "linear-indexed identity: %g, %g; above "
                   "0.25: %g, %g", e[0], e[1], mid[0], mid[1]);
     }
+    CHECK(color_lut_bake(&lut, 17, COLOR_LUT_LOG, id) == 0); /* log2-indexed: exact at the lattice points too */
+    CHECK(lookup_error(&lut, COLOR_LUT_TETRAHEDRAL, identity, id, 1) < 1e-6);
+    color_lut_free(&lut);
     CHECK(color_lut_bake_function(&lut, 9, COLOR_LUT_SRGB, affine, NULL) == 0);
     CHECK(lookup_error(&lut, COLOR_LUT_TETRAHEDRAL, affine, NULL, 0) < 1e-6);
     CHECK(lookup_error(&lut, COLOR_LUT_TRILINEAR, affine, NULL, 0) < 1e-6);
