@@ -9,6 +9,7 @@
     T(specular_occlusion)   \
     T(sphere_light)         \
     T(dfg)                  \
+    T(sg_ndf)               \
     T(throughput)
 
 #define DECLARE(name) extern const technique technique_##name;

@@ -29,4 +29,17 @@ double anisotropic_ndf_evaluate(const anisotropic_ndf *ndf, const double m[3])
     return ndf->kind == NDF_WARD ? ward_ndf(ndf, m) : ggx_aniso_ndf(ndf, m);
 }
 
+void anisotropic_ndf_sample(const anisotropic_ndf *ndf, const double u[2], double m[3])
+{
+    double psi = 2.0 * M_PI * u[1];
+    double phi = atan2(ndf->alpha_y * sin(psi), ndf->alpha_x * cos(psi));
+    double c = cos(phi), s = sin(phi);
+    double a = c * c / (ndf->alpha_x * ndf->alpha_x) + s * s / (ndf->alpha_y * ndf->alpha_y);
+    double x = ndf->kind == NDF_WARD ? -log1p(-u[0]) : u[0] / (1.0 - u[0]);
+    double tan2 = x / a, cos_theta = 1.0 / sqrt(1.0 + tan2), sin_theta = sqrt(tan2) * cos_theta;
+    m[0] = sin_theta * c;
+    m[1] = sin_theta * s;
+    m[2] = cos_theta;
+}
+
 const char *ndf_kind_name(ndf_kind kind) { return kind == NDF_WARD ? "ward" : "ggx"; }

@@ -38,6 +38,14 @@ typedef struct {
 /* D(m) for a unit microfacet normal m. */
 double anisotropic_ndf_evaluate(const anisotropic_ndf *ndf, const double m[3]);
 
+/* A microfacet normal m with density D(m) (m.n) per unit solid angle, from
+ * u in [0, 1)^2. Both NDFs share the azimuth's marginal density
+ * 1 / (2 pi alpha_x alpha_y a(phi)), inverted by phi = atan2(alpha_y sin 2 pi u1,
+ * alpha_x cos 2 pi u1); given phi, x = a(phi) tan^2 theta has the CDF
+ * 1 - exp(-x) (Ward: x = -log(1 - u0); Walter 2005, eq. 6) or
+ * 1 - 1/(1 + x) (GGX: x = u0 / (1 - u0)). */
+void anisotropic_ndf_sample(const anisotropic_ndf *ndf, const double u[2], double m[3]);
+
 /* "ward" or "ggx". */
 const char *ndf_kind_name(ndf_kind kind);
 

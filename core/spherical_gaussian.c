@@ -79,6 +79,28 @@ double sg_projected_area_integral(const spherical_gaussian *g)
     return quadrature_gk15_split(ring_integral, &ctx, pts, count, 1e-12 * fmax(scale, 1e-300), NULL);
 }
 
+/* Duff et al. 2017's orthonormal basis about p, in doubles. */
+static void basis_about(const double p[3], double t[3], double b[3])
+{
+    double sign = copysign(1.0, p[2]), a = -1.0 / (sign + p[2]), c = p[0] * p[1] * a;
+    t[0] = 1.0 + sign * p[0] * p[0] * a;
+    t[1] = sign * c;
+    t[2] = -sign * p[0];
+    b[0] = c;
+    b[1] = sign + p[1] * p[1] * a;
+    b[2] = -p[1];
+}
+
+void sg_sample(const spherical_gaussian *g, const double u[2], double v[3])
+{
+    double l = fmax(g->sharpness, 1e-12);
+    double cos_t = fmax(-1.0, 1.0 + log1p(u[0] * expm1(-2.0 * l)) / l);
+    double sin_t = sqrt(fmax(0.0, 1.0 - cos_t * cos_t)), phi = 2.0 * M_PI * u[1], t[3], b[3];
+    basis_about(g->axis, t, b);
+    for (int i = 0; i < 3; ++i)
+        v[i] = sin_t * (cos(phi) * t[i] + sin(phi) * b[i]) + cos_t * g->axis[i];
+}
+
 void sg_axis_from_gnomonic(double a, double b, double axis[3], double d_axis[6])
 {
     double inv = 1.0 / sqrt(1.0 + a * a + b * b);

@@ -49,6 +49,13 @@ double sg_axial_cosine_integral(double sharpness, double amplitude);
  * up to ~1e4 (adaptive in theta about the axis' elevation). */
 double sg_projected_area_integral(const spherical_gaussian *g);
 
+/* A direction v with density G(v) / int_S2 G over the whole sphere, from u
+ * in [0, 1)^2: v.p = 1 + log(1 - u0 (1 - exp(-2 lambda))) / lambda, the
+ * azimuth about p 2 pi u1 (the inverse CDF of exp(lambda (t - 1)) on
+ * t in [-1, 1]; Jakob 2012, "Numerically stable sampling of the von
+ * Mises-Fisher distribution on S^2"). */
+void sg_sample(const spherical_gaussian *g, const double u[2], double v[3]);
+
 /* The unit axis of gnomonic coordinates (a, b) about n = +z:
  * (a, b, 1) / sqrt(1 + a^2 + b^2); a = tan theta cos phi, b = tan theta sin phi.
  * The fit parametrises axes so: smooth at the normal, where (theta, phi)
