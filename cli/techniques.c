@@ -12,6 +12,7 @@
     T(normals)              \
     T(hdr_precision)        \
     T(color_grading)        \
+    T(sg_ndf)               \
     T(anti_aliasing)        \
     T(inside)               \
     T(atmosphere)           \

@@ -1,0 +1,15 @@
+/* The NDF fit with spherical Gaussians (studies/sg_ndf.h): E and max error
+ * against k per material, the specular images' DSSIM, the plot
+ * figures/sg_ndf_error.png, and the claims row for the talk's "~7 lobes for
+ * anisotropic Ward". */
+#ifndef GTLAB_REPORT_SG_NDF_SECTION_H
+#define GTLAB_REPORT_SG_NDF_SECTION_H
+
+#include "report/report_context.h"
+#include "studies/sg_ndf.h"
+
+/* Adds the section to ctx's report, summary.json and claims; -1 (e set) if
+ * the plot could not be made. */
+int sg_ndf_section(report_context *ctx, const sg_ndf_result *r, gt_error *e);
+
+#endif
