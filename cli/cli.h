@@ -22,18 +22,10 @@ int verb_fit(int argc, char **argv);
 int verb_lut(int argc, char **argv);
 int verb_approx(int argc, char **argv);
 
-/* gtlab bench sub-benchmarks in their own files (dispatched by verb_bench.c). */
+/* Subcommands in their own files (cli/<verb>_<name>.c), in the techniques'
+ * registries (cli/technique_*.c). */
 int bench_fit(int argc, char **argv);
-int bench_gtao(int argc, char **argv);
 int bench_convergence(int argc, char **argv);
-
-/* Subcommands in their own files (cli/<verb>_<name>.c), dispatched by
- * verb_fit.c, verb_check.c, verb_lut.c and verb_approx.c. */
-int fit_aperture(int argc, char **argv);
-int fit_gtao_params(int argc, char **argv);
-int lut_specular_occlusion(int argc, char **argv);
-int approx_specular_occlusion(int argc, char **argv);
-int approx_gtao(int argc, char **argv);
 int approx_hbao(int argc, char **argv);
 int approx_vo(int argc, char **argv);
 int approx_alchemy(int argc, char **argv);
@@ -49,7 +41,6 @@ int cli_usage_error(const char *verb);
 /* Strict number parsing of option values: the whole string must be a number
  * within [lo, hi]. On failure prints "gtlab: --option: ..." and returns -1. */
 int cli_parse_int(const char *option, const char *text, long lo, long hi, long *out);
-int cli_parse_u32(const char *option, const char *text, uint32_t *out);
 int cli_parse_double(const char *option, const char *text, double lo, double hi, double *out);
 
 /* Reset getopt so each verb can parse from the start of its own argv. */

@@ -36,15 +36,6 @@ int cli_parse_int(const char *option, const char *text, long lo, long hi, long *
     return parse_whole_in(option, text, lo, hi, out, &e) != 0 ? (cli_fail(&e), -1) : 0;
 }
 
-int cli_parse_u32(const char *option, const char *text, uint32_t *out)
-{
-    long v;
-    if (cli_parse_int(option, text, 0, 4294967295L, &v) != 0)
-        return -1;
-    *out = (uint32_t)v;
-    return 0;
-}
-
 int cli_parse_double(const char *option, const char *text, double lo, double hi, double *out)
 {
     gt_error e;
