@@ -10,7 +10,7 @@ source "$(dirname "$0")/cli_test_lib.sh"
 out=$work/sg
 
 expect_error alpha-range "--alpha-x: 0 is out of range" "" -- fit sg-ndf --alpha-x 0 -o "$out"
-expect_error unknown-ndf "--ndf: unknown value 'beckmann'" "" -- fit sg-ndf --ndf beckmann -o "$out"
+expect_error unknown-ndf "--ndf: 'beckmann' is neither ward nor ggx" "" -- fit sg-ndf --ndf beckmann -o "$out"
 expect_error lobes-range "--lobes: 20 is out of range" "" -- fit sg-ndf --lobes 20 -o "$out"
 [ -e "$out" ] && fail "a rejected command left $out"
 expect_ok help fit sg-ndf --help
