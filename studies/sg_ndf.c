@@ -4,9 +4,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "core/image_io.h"
+#include "core/progress.h"
 #include "metrics/ssim.h"
 #include "studies/sg_ndf_images.h"
 #include "studies/sg_ndf_parts.h"
@@ -141,8 +141,7 @@ static int image_material(const sg_ndf_request *rq, const study_context *ctx, sg
 
 int sg_ndf_study(const study_context *ctx, const sg_ndf_request *rq, sg_ndf_result *r, gt_error *e)
 {
-    struct timespec t0, t1;
-    clock_gettime(CLOCK_MONOTONIC, &t0);
+    double start = seconds_now();
     memset(r, 0, sizeof *r);
     r->request = *rq;
     char dir[4096];
@@ -163,7 +162,6 @@ int sg_ndf_study(const study_context *ctx, const sg_ndf_request *rq, sg_ndf_resu
     for (int i = 0; i < rq->material_count; ++i)
         if (rq->imaged[i] && image_material(rq, ctx, &r->materials[i], e) != 0)
             return -1;
-    clock_gettime(CLOCK_MONOTONIC, &t1);
-    r->seconds = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+    r->seconds = seconds_now() - start;
     return sg_ndf_write_tables(dir, r, e);
 }
