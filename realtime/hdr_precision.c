@@ -3,6 +3,8 @@
 
 #include <math.h>
 
+#include "luts/color_grade.h" /* linear_to_srgb: the one sRGB encode */
+
 double gamma_equal_precision_point(double gamma)
 {
     return pow(gamma, -gamma / (gamma - 1.0));
@@ -10,7 +12,7 @@ double gamma_equal_precision_point(double gamma)
 
 double srgb_encode(double x)
 {
-    return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1.0 / 2.4) - 0.055;
+    return linear_to_srgb(x);
 }
 
 double srgb_equal_precision_point(void)

@@ -1,4 +1,5 @@
 /* The dither study's inputs: see dither_inputs.h. */
+#include "luts/color_grade.h" /* linear_to_srgb */
 #include "studies/dither_inputs.h"
 
 #include <math.h>
@@ -25,11 +26,6 @@ int dither_gradient(const dither_request *rq, dither_input *out, gt_error *e)
         for (int x = 0; x < out->width; ++x)
             out->values[(size_t)y * out->width + x] = 0.2 + 0.1 * (x + 0.5) / out->width;
     return 0;
-}
-
-static double srgb_encode(double v)
-{
-    return v <= 0.0031308 ? 12.92 * v : 1.055 * pow(v, 1.0 / 2.4) - 0.055;
 }
 
 static int compare_float(const void *a, const void *b)
@@ -67,7 +63,7 @@ static int tone_map(const image *ref, dither_input *out, gt_error *e)
     double exposure = 1.0 / percentile99(g, mask, n);
     for (size_t i = 0; i < n; ++i) {
         double x = exposure * g[i];
-        out->values[i] = srgb_encode(x / (1.0 + x));
+        out->values[i] = linear_to_srgb(x / (1.0 + x));
         out->mask[i] = mask[i] != 0.0f;
     }
     return 0;
