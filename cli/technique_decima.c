@@ -107,7 +107,8 @@ const technique technique_atmosphere = {
     .name = "atmosphere", .subcommands = {[VERB_LUT] = luts, [VERB_BENCH] = benches}, .stages = atmosphere_stages};
 
 static const char *weather_name(int i) { return i == 0 ? "sunny" : "dense"; }
-static const char *model_name(int i) { return (const char *[]){"published", "clamp-fixed", "sun-attenuated"}[i]; }
+static const char *const model_names[] = {"published", "clamp-fixed", "sun-attenuated", "sky-attenuated"};
+static const char *model_name(int i) { return model_names[i]; }
 
 static int approx_height_fog(int argc, char **argv)
 {
@@ -115,12 +116,12 @@ static int approx_height_fog(int argc, char **argv)
         CLI_REQUIRED_STRING("gbuffer", "G.exr", "a render gbuffer or fog file (P, mask.A, its camera)"),
         CLI_CHOICE("weather", "W", weather_name, 2, "sunny or dense"),
         CLI_DOUBLE("sun-elevation", "DEG", -90, 90, "the sun above the horizon"),
-        CLI_CHOICE("model", "M", model_name, HEIGHT_FOG_MODELS, "published, clamp-fixed or sun-attenuated"),
+        CLI_CHOICE("model", "M", model_name, HEIGHT_FOG_MODELS, "published, clamp-fixed, sun- or sky-attenuated"),
         CLI_REQUIRED_STRING("output", "out.exr", "fog.L.R/G/B and fog.T.R/G/B"), CLI_END};
     static const cli_command command = {
         "approx height-fog",
         "The Decima talk's analytic HeightFog() (realtime/height_fog.h) per pixel: as published, with its\n"
-        "clamp fixed, or with the sun attenuated by the fog (docs/decisions.md, \"Height fog\").",
+        "clamp fixed, with the sun attenuated by the fog, or the sun and the sky (docs/decisions.md).",
         options, NULL, NULL};
     const char *in = NULL, *out_path = NULL;
     int weather = 0, model = 0, status;
@@ -152,8 +153,8 @@ static int bench_fog(int argc, char **argv)
     gt_error e;
     if (height_fog_bench((int)threads, &rays, ns, &e) != 0)
         return cli_fail(&e);
-    printf("reference: %.3g rays/s\nanalytic: %.2f ns/pixel published, %.2f clamp fixed, %.2f sun attenuated\n", rays,
-           ns[0], ns[1], ns[2]);
+    printf("reference: %.3g rays/s\nanalytic: %.2f ns/pixel published, %.2f clamp fixed, %.2f sun attenuated, "
+           "%.2f sky attenuated\n", rays, ns[0], ns[1], ns[2], ns[3]);
     return EXIT_OK;
 }
 

@@ -41,6 +41,27 @@ static double sun_visibility(channel_integrand *ci, vec3 x)
     return ray.tfar >= 0.0f ? 1.0 : 0.0;
 }
 
+static double e2_integrand(double mu, void *ctx)
+{
+    return mu > 0.0 ? exp(-*(const double *)ctx / mu) : 0.0;
+}
+
+double fog_exponential_integral_e2(double a)
+{
+    return quadrature_gk15(e2_integrand, &a, 0.0, 1.0, 1e-12, NULL);
+}
+
+/* beta_s,c L_amb,c, times E_2(beta_t,c H rho(y)) / 2 when the fog attenuates
+ * the sky, at distance s (infinite: the end of an upward ray, rho = 0). */
+static double ambient_source(const channel_integrand *ci, double s)
+{
+    if (!ci->l->sky_extinction || ci->amb_term == 0.0)
+        return ci->amb_term;
+    const height_fog_param *p = ci->l->medium;
+    double rho = isfinite(s) ? height_fog_density(p, ci->origin.y + ci->dir.y * s) : 0.0;
+    return ci->amb_term * 0.5 * fog_exponential_integral_e2(ci->beta_t * p->scale_height * rho);
+}
+
 /* e^{-beta_t u} J(s(u)). */
 static double integrand(double u, void *ctx)
 {
@@ -56,7 +77,7 @@ static double integrand(double u, void *ctx)
         if (sun > 0.0)
             sun *= sun_visibility(ci, v3_add(ci->origin, v3_scale(ci->dir, (float)s)));
     }
-    return exp(-ci->beta_t * u) * (sun + ci->amb_term);
+    return exp(-ci->beta_t * u) * (sun + ambient_source(ci, s));
 }
 
 /* The split points 0, 1/2, 1, 2, 4, ... (in optical depth) up to the end. */

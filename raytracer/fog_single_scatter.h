@@ -21,10 +21,19 @@
  *   sun_extinction  T_sun = the fog's transmittance towards the sun
  *                   (height_fog_sun_transmittance), else 1;
  *   occluders       V_sun traced with Embree (a shadow ray towards the
- *                   sun from every quadrature node), NULL: V_sun = 1.
- * The ambient term is the model's: an isotropic sky of radiance L_amb
- * reaching every point unattenuated and unshadowed (the multiple-scattering
- * reference, raytracer/fog_path_tracer.h, drops that assumption). */
+ *                   sun from every quadrature node), NULL: V_sun = 1;
+ *   sky_extinction  the ambient term is the sky of the upper hemisphere
+ *                   seen through the fog above the point (an infinite flat
+ *                   layer: nothing arrives from below, where the optical
+ *                   depth is infinite), with an isotropic phase:
+ *                     beta_s,c L_amb,c (1/4pi) \int_{w.y > 0} e^{-a_c / w.y} dw
+ *                       = beta_s,c L_amb,c E_2(a_c) / 2,   a_c = beta_t,c H rho(y)
+ *                   (E_2 the exponential integral, here by quadrature of
+ *                   \int_0^1 e^{-a / mu} dmu); else the model's: an isotropic
+ *                   sky of radiance L_amb reaching every point from the
+ *                   whole sphere, unattenuated and unshadowed.
+ * The multiple-scattering reference (raytracer/fog_path_tracer.h) drops
+ * every one of these assumptions. */
 #ifndef GTLAB_RAYTRACER_FOG_SINGLE_SCATTER_H
 #define GTLAB_RAYTRACER_FOG_SINGLE_SCATTER_H
 
@@ -35,7 +44,11 @@ typedef struct {
     const height_fog_param *medium; /* validated */
     int sun_extinction;             /* 1: the fog attenuates the sun before it scatters */
     const embree_scene *occluders;  /* the scene shadows the fog; NULL: nothing does */
+    int sky_extinction;             /* 1: the ambient is the upper hemisphere's sky seen through the fog */
 } fog_lighting;
+
+/* E_2(a) = \int_0^1 e^{-a / mu} dmu (a >= 0; E_2(0) = 1), by quadrature to about 1e-12. */
+double fog_exponential_integral_e2(double a);
 
 typedef struct {
     double transmittance[3];

@@ -64,7 +64,24 @@ static float attenuated_sun_integral(float a, float m, float tau)
     return expf(-(a + m * tau)) * -expm1f(m * tau) / -m; /* a + m tau = tau_v + tau_sun at the end >= 0 */
 }
 
-void height_fog_corrected(const height_fog_param *p, int sun_extinction, float distance, float camera_y,
+/* 6-point Gauss-Legendre on [0, 1] (Abramowitz and Stegun 1964, table 25.4,
+ * mapped from [-1, 1]): nodes (1 + x_i) / 2, weights w_i / 2. */
+static const float sky_mu[6] = {0.0337652429f, 0.1693953068f, 0.3806904070f,
+                                0.6193095930f, 0.8306046932f, 0.9662347571f};
+static const float sky_weight[6] = {0.0856622462f, 0.1803807865f, 0.2339569673f,
+                                    0.2339569673f, 0.1803807865f, 0.0856622462f};
+
+/* (1/2) \int_0^1 e^{-A/mu} tau f((1 - v_y/mu) tau) dmu (height_fog.h), with
+ * A = beta_t times the column above the camera. */
+static float attenuated_sky_integral(float a, float view_y, float tau)
+{
+    float sum = 0.0f;
+    for (int k = 0; k < 6; ++k)
+        sum += sky_weight[k] * attenuated_sun_integral(a / sky_mu[k], 1.0f - view_y / sky_mu[k], tau);
+    return 0.5f * sum;
+}
+
+void height_fog_corrected(const height_fog_param *p, height_fog_correction level, float distance, float camera_y,
                           float world_y, float sov, float inscatter[3], float transmittance[3])
 {
     float h = (float)p->scale_height, source[3], sun[3], beta_t[3];
@@ -72,7 +89,7 @@ void height_fog_corrected(const height_fog_param *p, int sun_extinction, float d
     float density = expf(-low / h) * mean_factor_f(fabsf(delta) / h); /* mean rho along the ray */
     source_over_extinction(p, sov, source, sun, beta_t);
     float mu_s = p->sun_direction.y, view_y = distance > 0.0f ? delta / distance : 0.0f;
-    float column = sun_extinction ? h * expf(-camera_y / h) : 0.0f, m = mu_s > 0.0f ? 1.0f - view_y / mu_s : 0.0f;
+    float column = h * expf(-camera_y / h), m = mu_s > 0.0f ? 1.0f - view_y / mu_s : 0.0f;
     for (int c = 0; c < 3; ++c) {
         float tau = distance * density * beta_t[c];
         transmittance[c] = expf(-tau);
@@ -81,9 +98,13 @@ void height_fog_corrected(const height_fog_param *p, int sun_extinction, float d
             continue;
         }
         inscatter[c] = source[c] * -expm1f(-tau);
-        if (!sun_extinction)
-            continue;
-        float attenuated = mu_s > 0.0f ? attenuated_sun_integral(beta_t[c] * column / mu_s, m, tau) : 0.0f;
-        inscatter[c] += sun[c] * (attenuated - -expm1f(-tau));
+        if (level >= HEIGHT_FOG_ATTENUATE_SUN) {
+            float attenuated = mu_s > 0.0f ? attenuated_sun_integral(beta_t[c] * column / mu_s, m, tau) : 0.0f;
+            inscatter[c] += sun[c] * (attenuated - -expm1f(-tau));
+        }
+        if (level >= HEIGHT_FOG_ATTENUATE_SKY) {
+            float ambient = (float)p->amb_color[c] * ((float)p->beta_rs[c] + (float)p->beta_ms) / beta_t[c];
+            inscatter[c] += ambient * (attenuated_sky_integral(beta_t[c] * column, view_y, tau) - -expm1f(-tau));
+        }
     }
 }

@@ -35,8 +35,26 @@
  *
  * exact under single scattering for any direction (f of a negative argument
  * is evaluated as e^{-(A + m tau_v)} tau_v f(-m tau_v): no overflow). With
- * the sun on or below the horizon the sun term is 0. The ambient term stays
- * the published one (unattenuated isotropic sky). */
+ * the sun on or below the horizon the sun term is 0.
+ *
+ * Sky attenuated. The published ambient term is an isotropic sky of
+ * radiance L_amb reaching every point from the whole sphere. In an infinite
+ * flat exponential layer nothing arrives from below (the optical depth
+ * downwards is infinite) and the sky above arrives through the column
+ * above the point: from the direction of vertical cosine mu > 0 with
+ * transmittance e^{-a(y) / mu}, a(y) = beta_t H rho(y). With an isotropic
+ * phase the source is beta_s L_amb E_2(a) / 2 (raytracer/fog_single_scatter.h),
+ * and along the ray a = A - v_y tau_v(s), A = a(y_c), exactly as the sun's
+ * optical depth above with mu for mu_s: the sky is a continuum of suns, one
+ * per elevation, each entering like the attenuated sun term,
+ *
+ *   L_amb,in = beta_s / beta_t L_amb (1/2) \int_0^1 e^{-A/mu} tau_v f((1 - v_y/mu) tau_v) dmu,
+ *
+ * integrated in mu by 6-point Gauss-Legendre (Abramowitz and Stegun 1964,
+ * table 25.4): 6 nodes x 3 channels x 2 exponentials, a shader's budget.
+ * Without fog (A, tau_v -> 0) it is half the published term: the lower
+ * hemisphere's half of L_amb never arrives. The ground's own shape (hills
+ * hiding part of the sky) is not modelled. */
 #ifndef GTLAB_REALTIME_HEIGHT_FOG_H
 #define GTLAB_REALTIME_HEIGHT_FOG_H
 
@@ -48,10 +66,15 @@
 void height_fog_published(const height_fog_param *p, float distance, float camera_y, float world_y, float sov,
                           float inscatter[3], float transmittance[3]);
 
-/* The corrected model above. sun_extinction 0 keeps the published sun term
- * (the clamp fix alone); 1 attenuates the sun by the fog, reading the sun's
- * elevation from p->sun_direction.y. The floor of p is not modelled. */
-void height_fog_corrected(const height_fog_param *p, int sun_extinction, float distance, float camera_y,
+/* How much of the correction above is applied; each level includes the ones before. */
+typedef enum {
+    HEIGHT_FOG_FIX_CLAMP,     /* the exact optical depth; the published sun and ambient terms */
+    HEIGHT_FOG_ATTENUATE_SUN, /* and the sun attenuated by the fog (reads p->sun_direction.y) */
+    HEIGHT_FOG_ATTENUATE_SKY  /* and the ambient: the upper hemisphere's sky seen through the fog */
+} height_fog_correction;
+
+/* The corrected model above at the given level. The floor of p is not modelled. */
+void height_fog_corrected(const height_fog_param *p, height_fog_correction level, float distance, float camera_y,
                           float world_y, float sov, float inscatter[3], float transmittance[3]);
 
 #endif

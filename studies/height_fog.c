@@ -34,8 +34,9 @@ static void run_model(const height_fog_param *p, height_fog_model m, const fog_v
 {
     if (m == FOG_MODEL_PUBLISHED)
         height_fog_published(p, v->distance, v->camera_y, v->world_y, v->sov, in, tr);
-    else
-        height_fog_corrected(p, m == FOG_MODEL_SUN_ATTENUATED, v->distance, v->camera_y, v->world_y, v->sov, in, tr);
+    else /* the models after the published one are the correction levels in order */
+        height_fog_corrected(p, (height_fog_correction)(m - FOG_MODEL_CLAMP_FIXED), v->distance, v->camera_y,
+                             v->world_y, v->sov, in, tr);
 }
 
 /* ---- The regime table ---------------------------------------------------- */
@@ -69,7 +70,7 @@ static void regime_ray(const height_fog_param *p, double camera_y, double dir_y,
     vec3 o = v3(0.0f, (float)camera_y, 0.0f), w = v3(0.0f, (float)dir_y, (float)horizontal);
     fog_view v = {(float)distance, (float)camera_y, (float)(camera_y + dir_y * distance), v3_dot(p->sun_direction, w)};
     for (int ext = 0; ext <= 1; ++ext) {
-        fog_lighting l = {p, ext, NULL};
+        fog_lighting l = {p, ext, NULL, 0};
         fog_ray_estimate q;
         fog_single_scatter(&l, o, w, distance, 1e-9, &q);
         float in[3], tr[3];
@@ -140,10 +141,20 @@ static int render_fog(const scene *s, const camera *cam, const fog_settings *fs,
     return reference_render(s, "builtin:terrain", cam, &req, out, stats, e);
 }
 
-/* The analytic models' L and T planes ([model][channel] of 3 x 3 planes). */
+/* The analytic models' L and T planes ([model][channel]). */
 typedef struct {
     float *l[HEIGHT_FOG_MODELS][3], *t[HEIGHT_FOG_MODELS][3];
 } model_planes;
+
+/* Points the planes into block (2 HEIGHT_FOG_MODELS 3 planes of n floats). */
+static void model_planes_bind(model_planes *mp, float *block, size_t n)
+{
+    for (int m = 0; m < HEIGHT_FOG_MODELS; ++m)
+        for (int c = 0; c < 3; ++c) {
+            mp->l[m][c] = block + (size_t)(m * 3 + c) * n;
+            mp->t[m][c] = block + (size_t)((HEIGHT_FOG_MODELS + m) * 3 + c) * n;
+        }
+}
 
 static void evaluate_models(const height_fog_param *p, const image *ref, vec3 eye, model_planes *mp)
 {
@@ -173,6 +184,21 @@ static double rmse_rgb(float *const a[3], const image *ref, const char *const na
         for (size_t i = 0; i < image_pixel_count(ref); ++i)
             if (mask[i] > 0.5f)
                 sum += ((double)a[c][i] - b[i]) * ((double)a[c][i] - b[i]), ++n;
+    }
+    return n ? sqrt(sum / n) : 0.0;
+}
+
+/* sqrt of the mean over RGB and the mask of the reference's squared
+ * standard errors: what an exact model's RMSE would show. */
+static double noise_rms_rgb(const image *ref, const char *const names[3], const float *mask)
+{
+    double sum = 0.0;
+    long n = 0;
+    for (int c = 0; c < 3; ++c) {
+        const float *se = schema_stderr_data(ref, names[c]);
+        for (size_t i = 0; se && i < image_pixel_count(ref); ++i)
+            if (mask[i] > 0.5f)
+                sum += (double)se[i] * se[i], ++n;
     }
     return n ? sqrt(sum / n) : 0.0;
 }
@@ -224,13 +250,12 @@ static int score_case(const height_fog_param *p, image *ref, const image *single
     float *block = calloc(2 * HEIGHT_FOG_MODELS * 3 * n, sizeof(float));
     if (!block)
         return gt_error_set(e, "fog study", "out of memory");
-    for (int m = 0; m < HEIGHT_FOG_MODELS; ++m)
-        for (int c = 0; c < 3; ++c)
-            mp.l[m][c] = block + (size_t)(m * 3 + c) * n, mp.t[m][c] = block + (size_t)(9 + m * 3 + c) * n;
+    model_planes_bind(&mp, block, n);
     evaluate_models(p, ref, eye, &mp);
     const float *mask = image_channel_data(ref, CH_MASK);
     static const char *const l_names[3] = CH_FOG_L_RGB, *const t_names[3] = CH_FOG_T_RGB;
     reference_figures(ref, single, &mp, out);
+    out->reference_noise_rms = noise_rms_rgb(ref, l_names, mask);
     int rc = 0;
     for (int m = 0; m < HEIGHT_FOG_MODELS && rc == 0; ++m) {
         out->rmse_l[m] = rmse_rgb(mp.l[m], ref, l_names, mask);
@@ -316,9 +341,7 @@ int height_fog_approx_image(const image *gbuffer, const char *what, const char *
         return gt_error_set(e, what, "out of memory");
     }
     model_planes mp;
-    for (int k = 0; k < HEIGHT_FOG_MODELS; ++k)
-        for (int c = 0; c < 3; ++c)
-            mp.l[k][c] = block + (size_t)(k * 3 + c) * n, mp.t[k][c] = block + (size_t)(9 + k * 3 + c) * n;
+    model_planes_bind(&mp, block, n);
     evaluate_models(&p, gbuffer, cam.position, &mp);
     static const char *const l_names[3] = CH_FOG_L_RGB, *const t_names[3] = CH_FOG_T_RGB;
     int rc = 0;

@@ -27,8 +27,13 @@
 #include "studies/study.h"
 
 #define HEIGHT_FOG_DIR "fog"
-enum { HEIGHT_FOG_SUNS = 3, HEIGHT_FOG_CASES = 2 * HEIGHT_FOG_SUNS, HEIGHT_FOG_MODELS = 3, HEIGHT_FOG_REGIMES = 8 };
-typedef enum { FOG_MODEL_PUBLISHED, FOG_MODEL_CLAMP_FIXED, FOG_MODEL_SUN_ATTENUATED } height_fog_model;
+enum { HEIGHT_FOG_SUNS = 3, HEIGHT_FOG_CASES = 2 * HEIGHT_FOG_SUNS, HEIGHT_FOG_MODELS = 4, HEIGHT_FOG_REGIMES = 8 };
+typedef enum {
+    FOG_MODEL_PUBLISHED,
+    FOG_MODEL_CLAMP_FIXED,
+    FOG_MODEL_SUN_ATTENUATED,
+    FOG_MODEL_SKY_ATTENUATED /* and the ambient through the fog above (height_fog.h) */
+} height_fog_model;
 
 typedef struct {
     int width, height, spp;
@@ -40,6 +45,7 @@ typedef struct {
     double sun_elevation_deg;
     int pixels;
     double reference_mean_l, reference_mean_stderr; /* green channel, over the terrain */
+    double reference_noise_rms; /* RMS over RGB and pixels of fog.L's stderr: the floor under every RMSE */
     double single_mean_l;                           /* the quadrature, published assumptions */
     double published_max_rel_single;                /* max |published - single| / single (green) */
     double rmse_l[HEIGHT_FOG_MODELS];               /* vs the multiple-scattering reference, RGB */

@@ -64,7 +64,7 @@ static void check_homogeneous(void)
     height_fog_extinction(&p, beta_t);
     height_fog_scattering(&p, beta_s);
     height_fog_sun_scattering(&p, v3_dot(p.sun_direction, w), sun);
-    fog_path_settings s = {{&p, 0, NULL}, 1};
+    fog_path_settings s = {{&p, 0, NULL, 0}, 1};
     fog_ray_estimate q;
     fog_single_scatter(&s.lighting, o, w, d, 1e-10, &q);
     mc_result m = estimate(&s, o, w, d, 20000, 11u);
@@ -87,7 +87,7 @@ static void check_downward(void)
     double beta_t[3], beta_s[3];
     height_fog_extinction(&p, beta_t);
     height_fog_scattering(&p, beta_s);
-    fog_lighting l = {&p, 1, NULL};
+    fog_lighting l = {&p, 1, NULL, 0};
     fog_ray_estimate q;
     fog_single_scatter(&l, o, w, d, 1e-10, &q);
     for (int c = 0; c < 3; ++c) {
@@ -102,7 +102,7 @@ static void check_single_agree(double vy, double elevation)
 {
     height_fog_param p = medium(150.0, 3e-3, elevation);
     vec3 o = v3(0.0f, 60.0f, 0.0f), w = v3_normalize(v3(0.2f, (float)vy, 1.0f));
-    fog_path_settings s = {{&p, 1, NULL}, 1};
+    fog_path_settings s = {{&p, 1, NULL, 0}, 1};
     fog_ray_estimate q;
     fog_single_scatter(&s.lighting, o, w, 1500.0, 1e-9, &q);
     mc_result m = estimate(&s, o, w, 1500.0, 20000, 23u);
@@ -123,7 +123,7 @@ static void check_energy(double vy)
     p.amb_color[0] = p.amb_color[1] = p.amb_color[2] = 1.0;
     p.floor_y = 0.0;
     vec3 o = v3(0.0f, 40.0f, 0.0f), w = v3_normalize(v3(0.0f, (float)vy, 1.0f));
-    fog_path_settings s = {{&p, 1, NULL}, 4096};
+    fog_path_settings s = {{&p, 1, NULL, 0}, 4096};
     mc_result m = estimate(&s, o, w, INFINITY, 20000, 5u);
     double beta_t[3];
     height_fog_extinction(&p, beta_t);
@@ -141,7 +141,7 @@ static void check_symmetry(void)
     vec3 a = v3(3.0f, 10.0f, -4.0f), b = v3(250.0f, 330.0f, 400.0f);
     vec3 ab = v3_sub(b, a);
     double d = v3_length(ab);
-    fog_lighting l = {&p, 1, NULL};
+    fog_lighting l = {&p, 1, NULL, 0};
     fog_ray_estimate qa, qb;
     fog_single_scatter(&l, a, v3_scale(ab, (float)(1.0 / d)), d, 1e-6, &qa);
     fog_single_scatter(&l, b, v3_scale(ab, (float)(-1.0 / d)), d, 1e-6, &qb);
