@@ -1,6 +1,8 @@
 #include "report/report_writer.h"
 
+#include <ctype.h>
 #include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -57,6 +59,68 @@ static void finding_html(report *r, const char *text, int escaped)
         append(&r->findings_html, &r->findings_html_len, &r->findings_html_cap, &r->failed, text);
 }
 
+static void contents_md(report *r, const char *text)
+{
+    append(&r->contents_md, &r->contents_md_len, &r->contents_md_cap, &r->failed, text);
+}
+
+static void contents_html(report *r, const char *text, int escaped)
+{
+    if (escaped)
+        append_escaped(&r->contents_html, &r->contents_html_len, &r->contents_html_cap, &r->failed, text);
+    else
+        append(&r->contents_html, &r->contents_html_len, &r->contents_html_cap, &r->failed, text);
+}
+
+/* The heading's slug (report_writer.h), without the repeat suffix. */
+static void heading_slug(const char *text, char *slug, size_t size)
+{
+    size_t n = 0;
+    for (const unsigned char *c = (const unsigned char *)text; *c && n + 1 < size; ++c)
+        if (isalnum(*c) || *c == '-' || *c == '_')
+            slug[n++] = (char)tolower(*c);
+        else if (*c == ' ')
+            slug[n++] = '-';
+    slug[n] = '\0';
+}
+
+/* Whether anchor was used before (r->anchors holds "\n"-separated anchors). */
+static int anchor_used(const report *r, const char *anchor)
+{
+    size_t n = strlen(anchor);
+    for (const char *p = r->anchors; p && (p = strstr(p, anchor)) != NULL; p += n)
+        if ((p == r->anchors || p[-1] == '\n') && p[n] == '\n')
+            return 1;
+    return 0;
+}
+
+/* A new unique anchor for a heading (size >= 8), remembered. */
+static void heading_anchor(report *r, const char *text, char *anchor, size_t size)
+{
+    char slug[112];
+    heading_slug(text, slug, sizeof slug);
+    snprintf(anchor, size, "%s", slug);
+    for (int k = 1; anchor_used(r, anchor); ++k)
+        snprintf(anchor, size, "%s-%d", slug, k);
+    append(&r->anchors, &r->anchors_len, &r->anchors_cap, &r->failed, anchor);
+    append(&r->anchors, &r->anchors_len, &r->anchors_cap, &r->failed, "\n");
+}
+
+/* One entry of the table of contents. */
+static void add_contents_entry(report *r, const char *text, const char *anchor)
+{
+    contents_md(r, "- [");
+    contents_md(r, text);
+    contents_md(r, "](#");
+    contents_md(r, anchor);
+    contents_md(r, ")\n");
+    contents_html(r, "<li><a href=\"#", 0);
+    contents_html(r, anchor, 0);
+    contents_html(r, "\">", 0);
+    contents_html(r, text, 1);
+    contents_html(r, "</a></li>\n", 0);
+}
+
 void report_init(report *r, const char *title)
 {
     memset(r, 0, sizeof *r);
@@ -74,11 +138,17 @@ void report_init(report *r, const char *title)
             "</style></head><body>\n<h1>");
     html_escaped(r, title);
     html(r, "</h1>\n");
+    append(&r->anchors, &r->anchors_len, &r->anchors_cap, &r->failed, "at-a-glance\ncontents\n"); /* report_write's */
 }
 
 void report_heading(report *r, int level, const char *text)
 {
-    char tag[8];
+    char tag[8], anchor[128];
+    heading_anchor(r, text, anchor, sizeof anchor);
+    if (level == 2) {
+        snprintf(r->section_anchor, sizeof r->section_anchor, "%s", anchor);
+        add_contents_entry(r, text, anchor);
+    }
     for (int i = 0; i < level; ++i)
         md(r, "#");
     md(r, " ");
@@ -87,7 +157,9 @@ void report_heading(report *r, int level, const char *text)
     snprintf(tag, sizeof tag, "h%d", level);
     html(r, "<");
     html(r, tag);
-    html(r, ">");
+    html(r, " id=\"");
+    html(r, anchor);
+    html(r, "\">");
     html_escaped(r, text);
     html(r, "</");
     html(r, tag);
@@ -195,27 +267,46 @@ void report_finding(report *r, const char *topic, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
-    finding_md(r, "- **");
+    const char *anchor = r->section_anchor;
+    finding_md(r, anchor[0] ? "- **[" : "- **");
     finding_md(r, topic);
+    if (anchor[0]) {
+        finding_md(r, "](#");
+        finding_md(r, anchor);
+        finding_md(r, ")");
+    }
     finding_md(r, "**: ");
     finding_md(r, text);
     finding_md(r, "\n");
     finding_html(r, "<li><b>", 0);
+    if (anchor[0]) {
+        finding_html(r, "<a href=\"#", 0);
+        finding_html(r, anchor, 0);
+        finding_html(r, "\">", 0);
+    }
     finding_html(r, topic, 1);
-    finding_html(r, "</b>: ", 0);
+    finding_html(r, anchor[0] ? "</a></b>: " : "</b>: ", 0);
     finding_html(r, text, 1);
     finding_html(r, "</li>\n", 0);
 }
 
-/* `body` with `section` inserted at offset `at`, written atomically. */
-static int write_with_section(const char *path, const char *body, size_t at, const char *head, const char *section,
-                              const char *tail, gt_error *e)
+/* `body` with the sections glance and contents (each with its head and
+ * tail, or nothing when NULL) inserted at offset `at`, written atomically. */
+static int write_with_sections(const char *path, const char *body, size_t at, const char *const glance[3],
+                               const char *const contents[3], gt_error *e)
 {
-    size_t n = strlen(body) + strlen(head) + strlen(section) + strlen(tail) + 1;
+    const char *parts[6];
+    size_t n = strlen(body) + 1;
+    for (int i = 0; i < 6; ++i) {
+        const char *const *section = i < 3 ? glance : contents;
+        parts[i] = section ? section[i % 3] : "";
+        n += strlen(parts[i]);
+    }
     char *text = malloc(n);
     if (!text)
         return gt_error_set(e, path, "out of memory");
-    snprintf(text, n, "%.*s%s%s%s%s", (int)at, body, head, section, tail, body + at);
+    snprintf(text, n, "%.*s%s%s%s%s%s%s%s", (int)at, body, parts[0], parts[1], parts[2], parts[3], parts[4],
+             parts[5], body + at);
     int rc = atomic_write_text(path, text, e);
     free(text);
     return rc;
@@ -226,16 +317,19 @@ int report_write(report *r, const char *dir, gt_error *e)
     html(r, "</body></html>\n");
     if (r->failed)
         return gt_error_set(e, dir, "out of memory while writing the report");
-    int glance = r->findings_md_len > 0;
+    int glance = r->findings_md_len > 0, contents = r->findings_html_at > 0 && r->contents_md_len > 0;
+    const char *const glance_md[3] = {"## At a glance\n\n", r->findings_md, "\n"};
+    const char *const contents_md[3] = {"## Contents\n\n", r->contents_md, "\n"};
+    const char *const glance_html[3] = {"<h2 id=\"at-a-glance\">At a glance</h2>\n<ul>\n", r->findings_html, "</ul>\n"};
+    const char *const contents_html[3] = {"<h2 id=\"contents\">Contents</h2>\n<ul>\n", r->contents_html, "</ul>\n"};
     char path[4096];
     snprintf(path, sizeof path, "%s/report.md", dir);
-    if (write_with_section(path, r->md, glance ? r->findings_md_at : 0, glance ? "## At a glance\n\n" : "",
-                           glance ? r->findings_md : "", glance ? "\n" : "", e) != 0)
+    if (write_with_sections(path, r->md, glance || contents ? r->findings_md_at : 0, glance ? glance_md : NULL,
+                            contents ? contents_md : NULL, e) != 0)
         return -1;
     snprintf(path, sizeof path, "%s/report.html", dir);
-    return write_with_section(path, r->html, glance ? r->findings_html_at : 0,
-                              glance ? "<h2>At a glance</h2>\n<ul>\n" : "", glance ? r->findings_html : "",
-                              glance ? "</ul>\n" : "", e);
+    return write_with_sections(path, r->html, glance || contents ? r->findings_html_at : 0,
+                               glance ? glance_html : NULL, contents ? contents_html : NULL, e);
 }
 
 void report_free(report *r)
@@ -244,5 +338,8 @@ void report_free(report *r)
     free(r->html);
     free(r->findings_md);
     free(r->findings_html);
+    free(r->contents_md);
+    free(r->contents_html);
+    free(r->anchors);
     memset(r, 0, sizeof *r);
 }

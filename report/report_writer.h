@@ -1,7 +1,14 @@
 /* The accuracy report: one document built once and written twice, as
  * report.md (for reading in a repository) and report.html (self-contained
  * page with the figures inline as links). Stages of `gtlab all` append
- * headings, paragraphs, tables and figures in order. */
+ * headings, paragraphs, tables and figures in order.
+ *
+ * Every heading below the title has a stable anchor: its text lowercased,
+ * spaces turned into '-', every other character but letters, digits, '-'
+ * and '_' dropped, and "-1", "-2", ... added to repeats (GitHub's rule for
+ * Markdown headings, ASCII only), so links into report.md on a forge and
+ * into report.html agree. The level-2 headings make the table of contents,
+ * and each finding links to the section it came from. */
 #ifndef GTLAB_CLI_REPORT_WRITER_H
 #define GTLAB_CLI_REPORT_WRITER_H
 
@@ -19,6 +26,11 @@ typedef struct {
     char *findings_md, *findings_html;
     size_t findings_md_len, findings_html_len, findings_md_cap, findings_html_cap;
     size_t findings_md_at, findings_html_at;
+    /* The table of contents (level-2 headings), the anchors used so far
+     * ("\n"-separated), and the current level-2 section's anchor. */
+    char *contents_md, *contents_html, *anchors;
+    size_t contents_md_len, contents_html_len, anchors_len, contents_md_cap, contents_html_cap, anchors_cap;
+    char section_anchor[128];
 } report;
 
 void report_init(report *r, const char *title);
@@ -30,10 +42,10 @@ void report_table_row(report *r, const char *const *cells);
 void report_table_end(report *r);
 /* A row of figures: image paths relative to the report, with captions. */
 void report_figures(report *r, int count, const char *const *paths, const char *const *captions);
-/* Marks where the "At a glance" section goes. */
+/* Marks where the "At a glance" section and the contents go. */
 void report_findings_here(report *r);
 /* One finding for that section: a topic and a sentence computed from the
- * run's numbers (plain text). */
+ * run's numbers (plain text), linked to the current level-2 section. */
 void report_finding(report *r, const char *topic, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 /* Writes <dir>/report.md and <dir>/report.html atomically. */
 int report_write(report *r, const char *dir, gt_error *e);

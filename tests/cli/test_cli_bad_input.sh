@@ -123,6 +123,6 @@ import json, sys
 summary = json.load(open(sys.argv[1] + "/summary.json"))
 assert set(summary) == {"gtlab_version", "quality", "ray_throughput"}, set(summary)
 sections = [l for l in open(sys.argv[1] + "/report.md") if l.startswith("## ")]
-assert sections == ["## At a glance\n", "## Ray throughput\n"], sections
+assert sections == ["## At a glance\n", "## Contents\n", "## Ray throughput\n"], sections
 PY
 finish

@@ -59,11 +59,15 @@ static void test_findings_after_introduction(void)
     char *md, *html;
     write_and_read(&r, &md, &html);
     CHECK(occurs_before(md, "introduction", "## At a glance"));
-    CHECK(occurs_before(md, "## At a glance", "- **AO**: error 0.25 < 1"));
-    CHECK(occurs_before(md, "- **AO**: error 0.25 < 1", "- **GTAO**: second"));
-    CHECK(occurs_before(md, "- **GTAO**: second", "## Stage one"));
-    CHECK(occurs_before(html, "<p>introduction</p>", "<h2>At a glance</h2>"));
-    CHECK(occurs_before(html, "<li><b>AO</b>: error 0.25 &lt; 1</li>", "<h2>Stage one</h2>"));
+    CHECK(occurs_before(md, "## At a glance", "- **[AO](#stage-one)**: error 0.25 < 1"));
+    CHECK(occurs_before(md, "- **[AO](#stage-one)**: error 0.25 < 1", "- **[GTAO](#stage-two)**: second"));
+    CHECK(occurs_before(md, "- **[GTAO](#stage-two)**: second", "## Contents"));
+    CHECK(occurs_before(md, "## Contents", "- [Stage one](#stage-one)\n- [Stage two](#stage-two)\n"));
+    CHECK(occurs_before(md, "- [Stage two](#stage-two)", "## Stage one"));
+    CHECK(occurs_before(html, "<p>introduction</p>", "<h2 id=\"at-a-glance\">At a glance</h2>"));
+    CHECK(occurs_before(html, "<li><b><a href=\"#stage-one\">AO</a></b>: error 0.25 &lt; 1</li>",
+                        "<h2 id=\"contents\">Contents</h2>"));
+    CHECK(occurs_before(html, "<li><a href=\"#stage-two\">Stage two</a></li>", "<h2 id=\"stage-one\">Stage one</h2>"));
     CHECK(html && strstr(html, "</ul>") && strstr(html, "</body></html>"));
     free(md);
     free(html);
@@ -80,6 +84,30 @@ static void test_no_findings_no_section(void)
     write_and_read(&r, &md, &html);
     CHECK(md && !strstr(md, "At a glance") && strstr(md, "## Stage"));
     CHECK(html && !strstr(html, "At a glance"));
+    free(md);
+    free(html);
+    report_free(&r);
+}
+
+/* Anchors follow GitHub's rule for Markdown headings: lowercase, spaces to
+ * '-', punctuation dropped, repeats numbered; the names the report inserts
+ * itself ("At a glance", "Contents") are taken; every HTML id is unique. */
+static void test_anchors(void)
+{
+    report r;
+    report_init(&r, "title");
+    report_findings_here(&r);
+    report_heading(&r, 2, "Height fog (Decima 2017): 1.5x <faster>");
+    report_heading(&r, 3, "Item 9: fast_acos");
+    report_heading(&r, 2, "Contents");
+    report_heading(&r, 3, "Item 9: fast_acos");
+    char *md, *html;
+    write_and_read(&r, &md, &html);
+    CHECK(html && strstr(html, "<h2 id=\"height-fog-decima-2017-15x-faster\">Height fog (Decima 2017): 1.5x &lt;faster&gt;</h2>"));
+    CHECK(html && strstr(html, "<h3 id=\"item-9-fast_acos\">") && strstr(html, "<h3 id=\"item-9-fast_acos-1\">"));
+    CHECK(html && strstr(html, "<h2 id=\"contents-1\">Contents</h2>"));
+    CHECK(md && strstr(md, "- [Height fog (Decima 2017): 1.5x <faster>](#height-fog-decima-2017-15x-faster)\n"));
+    CHECK(md && strstr(md, "- [Contents](#contents-1)\n"));
     free(md);
     free(html);
     report_free(&r);
@@ -110,5 +138,6 @@ int main(void)
     test_pipe_in_cell();
     test_findings_after_introduction();
     test_no_findings_no_section();
+    test_anchors();
     return check_report("test_report_writer");
 }
