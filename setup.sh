@@ -3,7 +3,8 @@
 # builds against, then configures and builds into ./build (Release with debug
 # info). Safe to run again. clang, its libFuzzer runtime (libclang-rt-14-dev),
 # its OpenMP (libomp-dev) and LLVM's tools (llvm) are for the fuzz build and
-# the recursion audit (tests/fuzz, tests/audit).
+# the recursion audit (tests/fuzz, tests/audit). blender-data ships the eight
+# CC0 HDR environments (docs/decisions.md, "Environment lighting").
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -15,6 +16,7 @@ packages=(
   libdraco-dev libmeshoptimizer-dev gltfpack
   clang libclang-rt-14-dev libomp-dev llvm
   libsquish-dev liblcms2-dev
+  blender-data
 )
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }

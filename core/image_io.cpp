@@ -1,12 +1,14 @@
-// 8-bit previews and error heatmaps through OpenImageIO: the thin C++ adapter
-// behind core/image_io.h. OIIO does the colour work (the sRGB encoding, the
+// 8-bit previews and error heatmaps through OpenImageIO, and the float RGB
+// reader of HDR environments: the thin C++ adapter behind core/image_io.h. OIIO does the colour work (the sRGB encoding, the
 // named colour maps, the 8-bit quantisation) and picks the file format from
 // the destination's extension; the file is written to a temporary name and
 // renamed into place (core/atomic_file.h).
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -164,4 +166,53 @@ extern "C" int image_write_data16(const char *path, const float *const *planes, 
         spec.attribute("ImageDescription", description);
     ImageBuf linear(spec, pixels.data());
     return write_as(path, linear, TypeDesc::UINT16, e);
+}
+
+namespace {
+
+// The indices of the channels read as R, G, B: the channels named exactly
+// "R", "G", "B" if all three exist, else the first three; a single channel
+// serves all three.
+void rgb_channels(const ImageSpec &spec, int index[3])
+{
+    static const char *const names[3] = {"R", "G", "B"};
+    int found = 0;
+    for (int c = 0; c < 3; ++c) {
+        index[c] = spec.channelindex(names[c]);
+        found += index[c] >= 0;
+    }
+    if (found == 3)
+        return;
+    for (int c = 0; c < 3; ++c)
+        index[c] = spec.nchannels >= 3 ? c : 0;
+}
+
+} // namespace
+
+extern "C" int image_read_rgb_float(const char *path, int *width, int *height, float **rgb, gt_error *e)
+{
+    *rgb = nullptr;
+    auto in = OIIO::ImageInput::open(path);
+    if (!in)
+        return gt_error_set(e, path, "cannot read image: %s", one_line(OIIO::geterror()).c_str());
+    const ImageSpec spec = in->spec();
+    if (spec.nchannels < 1 || !valid_size(spec.width, spec.height))
+        return gt_error_set(e, path, "not an image with pixels (%d x %d, %d channels)", spec.width, spec.height,
+                            spec.nchannels);
+    size_t n = (size_t)spec.width * (size_t)spec.height;
+    std::vector<float> all(n * (size_t)spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, TypeDesc::FLOAT, all.data()))
+        return gt_error_set(e, path, "cannot read pixels: %s", one_line(in->geterror()).c_str());
+    int index[3];
+    rgb_channels(spec, index);
+    float *out = static_cast<float *>(malloc(sizeof(float) * 3 * n));
+    if (!out)
+        return gt_error_set(e, path, "out of memory for %d x %d pixels", spec.width, spec.height);
+    for (size_t i = 0; i < n; ++i)
+        for (int c = 0; c < 3; ++c)
+            out[3 * i + (size_t)c] = all[i * (size_t)spec.nchannels + (size_t)index[c]];
+    *width = spec.width;
+    *height = spec.height;
+    *rgb = out;
+    return 0;
 }

@@ -1,6 +1,9 @@
 /* 8-bit previews and error heatmaps through OpenImageIO (a C++ adapter behind
  * this C header). Any format OIIO writes is accepted; the path's extension
- * chooses it (.png is what gtlab itself writes). Written atomically. */
+ * chooses it (.png is what gtlab itself writes). Written atomically. Also
+ * the one float reader of pictures gtlab does not write (HDR environments:
+ * EXR of any compression OpenEXR's C++ library decodes, DWAB included,
+ * Radiance .hdr, ...). */
 #ifndef GTLAB_CORE_IMAGE_IO_H
 #define GTLAB_CORE_IMAGE_IO_H
 
@@ -31,5 +34,13 @@ int image_write_data8(const char *path, const float *values, int width, int heig
  * points at width*height floats, a NULL plane writes zeros. Returns 0 or -1. */
 int image_write_data16(const char *path, const float *const *planes, int channel_count, int width, int height,
                        const char *description, gt_error *e);
+
+/* The first subimage of any file OIIO reads as linear float RGB, interleaved
+ * (rgb[3 (y width + x) + c], row y = 0 at the top; malloc'd, the caller
+ * frees it): channels R, G, B by name, else the first three, and a single
+ * channel repeated three times. No colour conversion (the values are taken
+ * as stored; HDR formats store linear values). Returns 0, or -1 with e
+ * naming the file (missing, unreadable, no channels, out of memory). */
+int image_read_rgb_float(const char *path, int *width, int *height, float **rgb, gt_error *e);
 
 #endif

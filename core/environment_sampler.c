@@ -1,0 +1,93 @@
+#include "core/environment_sampler.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The texel weights Y Omega_r, and I, their sum. */
+static double *texel_weights(const environment_map *env, double *integral)
+{
+    size_t n = (size_t)env->width * (size_t)env->height;
+    double *w = malloc(sizeof(double) * (n ? n : 1));
+    if (!w)
+        return NULL;
+    *integral = 0.0;
+    for (int r = 0; r < env->height; ++r)
+        for (int c = 0; c < env->width; ++c) {
+            size_t i = (size_t)r * env->width + c;
+            w[i] = environment_luminance(env->rgb + 3 * i) * env->row_solid_angle[r];
+            *integral += w[i];
+        }
+    return w;
+}
+
+int environment_sampler_init(environment_sampler *s, const environment_map *env, gt_error *e)
+{
+    memset(s, 0, sizeof *s);
+    s->env = env;
+    if (environment_map_is_constant(env)) {
+        s->usable = environment_luminance(env->constant) > 0.0f;
+        s->integral = 4.0 * M_PI * environment_luminance(env->constant);
+        return 0;
+    }
+    double *w = texel_weights(env, &s->integral);
+    size_t n = (size_t)env->width * (size_t)env->height;
+    s->texel_pdf = malloc(sizeof(float) * n);
+    if (!w || !s->texel_pdf || distribution_2d_init(&s->texels, w, env->height, env->width, e) != 0) {
+        free(w);
+        free(s->texel_pdf);
+        s->texel_pdf = NULL;
+        return gt_error_set(e, env->name, "out of memory for the environment sampler");
+    }
+    s->usable = s->integral > 0.0;
+    for (size_t i = 0; i < n; ++i)
+        s->texel_pdf[i] = s->usable ? (float)(environment_luminance(env->rgb + 3 * i) / s->integral) : 0.0f;
+    free(w);
+    return 0;
+}
+
+void environment_sampler_free(environment_sampler *s)
+{
+    free(s->texel_pdf);
+    distribution_2d_free(&s->texels);
+    memset(s, 0, sizeof *s);
+}
+
+/* phi and cos theta uniform over texel (row, column) at offsets t. */
+static vec3 texel_direction(const environment_map *env, int row, int column, const double t[2])
+{
+    double cos_top = cos(M_PI * row / env->height), cos_bottom = cos(M_PI * (row + 1) / env->height);
+    double cos_theta = cos_top + (cos_bottom - cos_top) * t[0];
+    double sin_theta = sqrt(fmax(0.0, 1.0 - cos_theta * cos_theta));
+    double phi = 2.0 * M_PI * ((column + t[1]) / env->width - 0.5);
+    return v3((float)(sin_theta * cos(phi)), (float)cos_theta, (float)(sin_theta * sin(phi)));
+}
+
+/* Uniform on the sphere: z = 1 - 2 u0, phi = 2 pi u1. */
+static vec3 uniform_sphere(const float u[2])
+{
+    float z = 1.0f - 2.0f * u[0], r = sqrtf(fmaxf(0.0f, 1.0f - z * z)), phi = (float)(2.0 * M_PI) * u[1];
+    return v3(r * cosf(phi), z, r * sinf(phi));
+}
+
+vec3 environment_sampler_sample(const environment_sampler *s, const float u[2], float *pdf)
+{
+    if (environment_map_is_constant(s->env)) {
+        *pdf = (float)(0.25 / M_PI);
+        return uniform_sphere(u);
+    }
+    int row, column;
+    double t[2];
+    const double uu[2] = {u[0], u[1]};
+    distribution_2d_sample(&s->texels, uu, &row, &column, t);
+    vec3 m = texel_direction(s->env, row, column, t);
+    *pdf = s->texel_pdf[(size_t)row * s->env->width + column];
+    return environment_map_to_world(s->env, m);
+}
+
+float environment_sampler_pdf(const environment_sampler *s, vec3 w)
+{
+    if (environment_map_is_constant(s->env))
+        return s->usable ? (float)(0.25 / M_PI) : 0.0f;
+    return s->texel_pdf[environment_texel_of(s->env, environment_world_to_map(s->env, w))];
+}

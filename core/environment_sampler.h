@@ -1,0 +1,67 @@
+/* Importance sampling of an environment (core/environment_map.h) by
+ * luminance, and the multiple-importance-sampling weights that combine it
+ * with BRDF sampling.
+ *
+ * The distribution. Texel (r, c) is drawn with probability
+ *   P(r, c) = Y_rc Omega_r / I,   I = sum Y Omega = \int Y(w) dw,
+ * Y the texel's Rec. 709 luminance and Omega_r its exact solid angle (the
+ * sin theta weighting of pbrt's latitude-longitude sampler, integrated over
+ * the texel's band rather than taken at its centre); a 2-D piecewise-
+ * constant distribution (core/environment_distribution.h) over rows, then
+ * columns. Within the texel the direction is uniform in solid angle (phi and
+ * cos theta uniform over its ranges). So the density per unit solid angle is
+ *   pdf(w) = P(r, c) / Omega_r = Y(w) / I,
+ * exactly proportional to the piecewise-constant lookup: for a grey
+ * environment L / pdf = I is the same for every sample. The rotation turns
+ * the samples with the environment and leaves the density unchanged; the
+ * intensity scales L and not the density. A constant environment is sampled
+ * uniformly, pdf = 1 / (4 pi); an environment of luminance 0 everywhere
+ * cannot be sampled (usable = 0; its radiance is 0, so BRDF sampling alone
+ * is exact for it).
+ *
+ * MIS. The references draw each direction from a mixture: with probability
+ * c from the BRDF's sampler (density p_b) and otherwise from the
+ * environment's (p_e), and weight the sample by f / p_mix,
+ *   p_mix = c p_b + (1 - c) p_e.
+ * This is the one-sample model of multiple importance sampling with the
+ * balance heuristic (Veach 1997, sec. 9.2.4 and 9.2.2): strategy i's weight
+ * is w_i = c_i p_i / sum_j c_j p_j, the weights sum to 1 wherever some
+ * p_i > 0, and f w_i / (c_i p_i) = f / p_mix whichever strategy drew the
+ * direction. For the one-sample model the balance heuristic is the best
+ * weighting (Veach, Theorem 9.4; the power heuristic's advantage holds for
+ * the multi-sample model), and it costs one ray per vertex: no shadow ray
+ * beside the BRDF ray. */
+#ifndef GTLAB_CORE_ENVIRONMENT_SAMPLER_H
+#define GTLAB_CORE_ENVIRONMENT_SAMPLER_H
+
+#include "core/environment_distribution.h"
+#include "core/environment_map.h"
+
+typedef struct {
+    const environment_map *env;
+    int usable;            /* 0: luminance 0 everywhere (never sample) */
+    double integral;       /* I = \int Y dw (intensity 1) */
+    float *texel_pdf;      /* Y / I per texel, per unit solid angle */
+    distribution_2d texels;
+} environment_sampler;
+
+/* env must outlive the sampler. Returns 0, or -1 with e (out of memory). */
+int environment_sampler_init(environment_sampler *s, const environment_map *env, gt_error *e);
+void environment_sampler_free(environment_sampler *s);
+
+/* A unit world direction from u in [0, 1)^2, and its density. Only when usable. */
+vec3 environment_sampler_sample(const environment_sampler *s, const float u[2], float *pdf);
+
+/* The density of environment_sampler_sample at unit world direction w. */
+float environment_sampler_pdf(const environment_sampler *s, vec3 w);
+
+/* The one-sample balance-heuristic weight of strategy a, chosen with
+ * probability c_a, against strategy b: c_a p_a / (c_a p_a + c_b p_b)
+ * (0 when both densities are 0). */
+static inline double environment_mis_balance(double c_a, double p_a, double c_b, double p_b)
+{
+    double sum = c_a * p_a + c_b * p_b;
+    return sum > 0.0 ? c_a * p_a / sum : 0.0;
+}
+
+#endif
