@@ -18,7 +18,7 @@ static const ao_decal_scene decal_scenes[] = {
     {"overlap-on-plane", 0, 5,
      {ELLIPSOID(-0.5f, 1.0f, 0.3f, 0.7f, 0.7f, 0.7f), ELLIPSOID(0.4f, 1.0f, 0.3f, 0.7f, 0.7f, 0.7f),
       BOX(0.9f, 0.5f, -1.0f, 0.6f, 0.5f, 0.5f), ELLIPSOID(1.3f, 0.6f, -0.6f, 0.5f, 0.5f, 0.5f),
-      ELLIPSOID(-1.8f, 0.25f, -1.4f, 0.6f, 0.6f, 0.6f)}},
+      ELLIPSOID(-2.0f, 0.3f, -1.6f, 0.8f, 0.8f, 0.8f)}},
 };
 
 int ao_decal_scene_count(void) { return (int)(sizeof decal_scenes / sizeof decal_scenes[0]); }

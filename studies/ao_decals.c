@@ -18,7 +18,8 @@ static const char *const variant_names[AO_DECAL_VARIANTS] = {
 
 ao_decals_request ao_decals_default_request(study_quality quality)
 {
-    ao_decals_request rq = {quality == QUALITY_PRODUCTION ? 128 : 48, quality == QUALITY_PRODUCTION ? 1024 : 256, 3};
+    ao_decals_request rq = {quality == QUALITY_PRODUCTION ? 128 : 48, quality == QUALITY_PRODUCTION ? 1024 : 256, 3,
+                            quality == QUALITY_PRODUCTION ? 256 : 96};
     return rq;
 }
 
@@ -136,5 +137,7 @@ int ao_decals_study(const study_context *ctx, const ao_decals_request *rq, ao_de
     }
     for (int v = 0; v < AO_DECAL_VIEWS; ++v)
         free_view(&views[v]);
+    rc = rc == 0 ? ao_decals_scenes_study(ctx, rq->scene_size ? rq->scene_size : rq->size, rq->spp, rq->seed, &out->scenes, e) : rc;
+    ao_decals_scenes_free(&out->scenes);
     return rc ? -1 : 0;
 }

@@ -9,11 +9,13 @@
  * view A and scored on view B (held out: other floor points of the same
  * configuration, not another configuration). Per row: RMSE and worst error
  * of V_d, DSSIM over the floor, and the share of floor pixels beyond 4 of the
- * reference's standard errors. */
+ * reference's standard errors. Then the decal scenes (studies/ao_decals_scenes.h)
+ * at the same size and spp. */
 #ifndef GTLAB_STUDIES_AO_DECALS_H
 #define GTLAB_STUDIES_AO_DECALS_H
 
 #include "fitters/ao_decals_fit.h"
+#include "studies/ao_decals_scenes.h"
 #include "studies/study.h"
 
 #define AO_DECALS_DIR "ao_decals"
@@ -23,6 +25,7 @@ enum { AO_DECAL_VARIANTS = 5, AO_DECAL_VIEWS = 2 };
 typedef struct {
     int size, spp;
     unsigned seed;
+    int scene_size; /* the decal scenes' image side; 0: size */
 } ao_decals_request;
 
 typedef struct {
@@ -35,6 +38,7 @@ typedef struct {
     ao_decal_row rows[AO_DECAL_VARIANTS];
     ao_decal_fit_result fit; /* on view A */
     size_t floor_pixels[AO_DECAL_VIEWS];
+    ao_decals_scenes_result scenes; /* the pill, crate, corner and overlap scenes (views freed) */
 } ao_decals_result;
 
 ao_decals_request ao_decals_default_request(study_quality quality);

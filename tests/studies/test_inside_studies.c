@@ -83,7 +83,7 @@ static void check_bloom(const char *dir, bloom_result *r, int threads)
 static void check_ao_decals(const char *dir)
 {
     study_context ctx = {dir, QUALITY_PREVIEW, 2};
-    ao_decals_request rq = {24, 128, 3};
+    ao_decals_request rq = {24, 128, 3, 24};
     static ao_decals_result r;
     gt_error e;
     CHECK_MSG(ao_decals_study(&ctx, &rq, &r, &e) == 0, "%s", e.message);
