@@ -20,7 +20,9 @@
 
 #define AO_DECALS_DIR "ao_decals"
 
-enum { AO_DECAL_VARIANTS = 5, AO_DECAL_VIEWS = 2 };
+enum { AO_DECAL_VARIANTS = 6, AO_DECAL_VIEWS = 2 };
+/* The held-out comparison: the published decal (light's sign), the refit with k held at 2, the free refit. */
+enum { AO_DECAL_PUBLISHED, AO_DECAL_REFIT_K2, AO_DECAL_REFIT_FREE, AO_DECAL_COMPARED };
 
 typedef struct {
     int size, spp;
@@ -36,7 +38,12 @@ typedef struct {
 typedef struct {
     ao_decals_request request;
     ao_decal_row rows[AO_DECAL_VARIANTS];
-    ao_decal_fit_result fit; /* on view A */
+    ao_decal_fit_result fit, fit_k2; /* on view A and pill-on-plane; k free, k held at 2 */
+    ao_decal_fit_result fit_sphere, fit_pill; /* k free, on each of them alone */
+    /* RMSE over the fitted samples and over the held-out configurations' receivers (box-on-plane,
+     * box-in-corner, overlap-on-plane), per AO_DECAL_PUBLISHED .. AO_DECAL_REFIT_FREE */
+    double fitted_rmse[AO_DECAL_COMPARED], held_out_rmse[AO_DECAL_COMPARED];
+    size_t fitted_count, held_out_count;
     size_t floor_pixels[AO_DECAL_VIEWS];
     ao_decals_scenes_result scenes; /* the pill, crate, corner and overlap scenes (views freed) */
 } ao_decals_result;
