@@ -18,6 +18,13 @@ float ao_point_decal(vec3 pos, vec3 norm, float exponent, float wrap)
     return powf(fmaxf(0.0f, 1.0f - v3_length(pos)), exponent) * n_dot_l;
 }
 
+void ao_decal_unit_space(vec3 p, vec3 n, const ao_decal_volume *v, vec3 *pos, vec3 *norm)
+{
+    vec3 d = v3_sub(p, v->centre);
+    *pos = v3(d.x / v->half.x, d.y / v->half.y, d.z / v->half.z);
+    *norm = v3_normalize(v3(n.x * v->half.x, n.y * v->half.y, n.z * v->half.z));
+}
+
 float ao_sphere_quilez(vec3 p, vec3 n, vec3 centre, float radius)
 {
     vec3 d = v3_sub(centre, p);
@@ -42,16 +49,19 @@ static double ddot(dvec a, dvec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 static dvec dcross(dvec a, dvec b) { return (dvec){a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 static dvec dlerp(dvec a, dvec b, double t) { return (dvec){a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.z + t * (b.z - a.z)}; }
 
-/* Sutherland-Hodgman against n.x >= 0 (x relative to p); returns the new count. */
+/* Sutherland-Hodgman against n.x > 0 (x relative to p); returns the new count. Strict, so that a
+ * polygon lying in the tangent plane (a wall through p: it subtends no projected solid angle) is
+ * clipped away instead of being counted as the whole horizon disc; a vertex on the plane is still
+ * kept as the crossing point of its edge to an upper vertex. */
 static int clip_to_horizon(const dvec *in, int count, dvec n, dvec *out)
 {
     int m = 0;
     for (int i = 0; i < count; ++i) {
         dvec a = in[i], b = in[(i + 1) % count];
         double da = ddot(n, a), db = ddot(n, b);
-        if (da >= 0.0)
+        if (da > 0.0)
             out[m++] = a;
-        if ((da >= 0.0) != (db >= 0.0))
+        if ((da > 0.0) != (db > 0.0))
             out[m++] = dlerp(a, b, da / (da - db));
     }
     return m;

@@ -45,6 +45,17 @@
  * bounds the pixels it shades). */
 float ao_point_decal_published(vec3 pos, vec3 norm);
 
+/* A decal volume: the unit sphere under the talk's "full transform" x -> centre + half * x (per axis;
+ * axis-aligned here, a rotation would only rotate both vectors below). */
+typedef struct {
+    vec3 centre, half;
+} ao_decal_volume;
+
+/* The shaded point p with unit normal n in the volume's unit space: pos = (p - centre) / half (the
+ * talk's `pos`; the light's is -pos) and norm = normalize(half * n), the normal mapped by the inverse
+ * transpose of the point map x -> x / half, so that norm stays perpendicular to the mapped surface. */
+void ao_decal_unit_space(vec3 p, vec3 n, const ao_decal_volume *v, vec3 *pos, vec3 *norm);
+
 /* max(0, 1 - |pos|)^exponent * max(0, (dot(normalize(pos), norm) + wrap) / (1 + wrap)). */
 float ao_point_decal(vec3 pos, vec3 norm, float exponent, float wrap);
 

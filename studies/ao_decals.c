@@ -14,11 +14,16 @@
 #define DECAL_RADIUS 3.0f
 
 static const char *const variant_names[AO_DECAL_VARIANTS] = {
-    "exact sphere", "Quilez sphere", "point decal, published sign", "point decal, light's sign", "point decal, refit"};
+    "exact sphere",          "Quilez sphere",          "point decal, published sign", "point decal, light's sign",
+    "point decal, refit", "point decal, refit k = 2"};
+
+/* builtin:sphere-on-plane's sphere as the decal's occluder. */
+static const ao_decal_volume sphere_volume = {{0.0f, 1.5f, 0.0f}, {1.0f, 1.0f, 1.0f}};
 
 ao_decals_request ao_decals_default_request(study_quality quality)
 {
-    ao_decals_request rq = {quality == QUALITY_PRODUCTION ? 128 : 48, quality == QUALITY_PRODUCTION ? 1024 : 256, 3};
+    ao_decals_request rq = {quality == QUALITY_PRODUCTION ? 128 : 48, quality == QUALITY_PRODUCTION ? 1024 : 256, 3,
+                            quality == QUALITY_PRODUCTION ? 256 : 96};
     return rq;
 }
 
@@ -64,19 +69,20 @@ static int gather_floor(decal_view *dv, gt_error *e)
         dv->p[dv->count] = v3(px[i], 0.0f, pz[i]), dv->n[dv->count] = v3(0, 1, 0);
         dv->v[dv->count] = v[i], dv->stderr_[dv->count++] = se[i];
     }
-    dv->samples = (ao_decal_samples){dv->p, dv->n, dv->v, dv->count, v3(0, 1.5f, 0)};
+    dv->samples = (ao_decal_samples){dv->p, dv->n, dv->v, NULL, dv->count, &sphere_volume, 1};
     return dv->count > 0 ? 0 : gt_error_set(e, "ao decals", "no floor pixel in view");
 }
 
 static double variant_visibility(int variant, const decal_view *dv, size_t i, const ao_decals_result *r)
 {
-    vec3 c = dv->samples.centre, p = dv->p[i], n = dv->n[i];
+    vec3 c = sphere_volume.centre, p = dv->p[i], n = dv->n[i];
     switch (variant) {
     case 0: return 1.0 - ao_sphere_exact(p, n, c, 1.0f);
     case 1: return 1.0 - ao_sphere_quilez(p, n, c, 1.0f);
     case 2: return 1.0 - ao_point_decal_published(v3_scale(v3_sub(p, c), 1.0f / DECAL_RADIUS), n);
     case 3: return 1.0 - ao_point_decal_published(v3_scale(v3_sub(c, p), 1.0f / DECAL_RADIUS), n);
-    default: return ao_decal_fit_visibility(&dv->samples, i, r->fit.params);
+    case 4: return ao_decal_fit_visibility(&dv->samples, i, r->fit.params);
+    default: return ao_decal_fit_visibility(&dv->samples, i, r->fit_k2.params);
     }
 }
 
@@ -117,6 +123,81 @@ static void free_view(decal_view *dv)
     free(dv->p), free(dv->n), free(dv->v), free(dv->stderr_), free(dv->floor_mask);
 }
 
+/* ---- The refit on sphere view A and the pill, held out on the other scenes ----------------------- */
+
+static ao_decal_samples scene_samples(const ao_decal_scene_view *v)
+{
+    return (ao_decal_samples){v->p, v->n, v->v, v->walls, v->count, v->volumes, v->scene->occluder_count};
+}
+
+static int is_fitted_scene(const ao_decal_scene_view *v) { return strcmp(v->scene->name, "pill-on-plane") == 0; }
+
+static double refit_visibility(const ao_decal_scene_view *view, size_t i, const void *user)
+{
+    ao_decal_samples s = scene_samples(view);
+    return ao_decal_fit_visibility(&s, i, (const double *)user);
+}
+
+/* Sum of squared errors of params over a set. */
+static double squared_error(const ao_decal_samples *s, const double *params)
+{
+    double sum = 0.0;
+    for (size_t i = 0; i < s->count; ++i) {
+        double d = ao_decal_fit_visibility(s, i, params) - s->visibility[i];
+        sum += d * d;
+    }
+    return sum;
+}
+
+static void compare_fits(ao_decals_result *out, const decal_view *a)
+{
+    double params[AO_DECAL_COMPARED][AO_DECAL_PARAMS], fitted[AO_DECAL_COMPARED] = {0}, held[AO_DECAL_COMPARED] = {0};
+    ao_decal_published_params(params[AO_DECAL_PUBLISHED]);
+    memcpy(params[AO_DECAL_REFIT_K2], out->fit_k2.params, sizeof params[0]);
+    memcpy(params[AO_DECAL_REFIT_FREE], out->fit.params, sizeof params[0]);
+    out->fitted_count = a->samples.count, out->held_out_count = 0;
+    for (int m = 0; m < AO_DECAL_COMPARED; ++m)
+        fitted[m] = squared_error(&a->samples, params[m]);
+    for (int k = 0; k < out->scenes.view_count; ++k) {
+        ao_decal_samples s = scene_samples(&out->scenes.views[k]);
+        int fit_here = is_fitted_scene(&out->scenes.views[k]);
+        *(fit_here ? &out->fitted_count : &out->held_out_count) += s.count;
+        for (int m = 0; m < AO_DECAL_COMPARED; ++m)
+            *(fit_here ? &fitted[m] : &held[m]) += squared_error(&s, params[m]);
+    }
+    for (int m = 0; m < AO_DECAL_COMPARED; ++m) {
+        out->fitted_rmse[m] = sqrt(fitted[m] / (double)out->fitted_count);
+        out->held_out_rmse[m] = sqrt(held[m] / (double)out->held_out_count);
+    }
+}
+
+static int refit(const study_context *ctx, const ao_decals_request *rq, const decal_view *a, ao_decals_result *out,
+                 gt_error *e)
+{
+    ao_decal_samples sets[AO_DECAL_FIT_SETS_MAX];
+    int count = 0, rc = 0;
+    sets[count++] = a->samples;
+    for (int k = 0; k < out->scenes.view_count; ++k)
+        if (is_fitted_scene(&out->scenes.views[k]))
+            sets[count++] = scene_samples(&out->scenes.views[k]);
+    rc = ao_decal_fit(sets, count, 0.0, &out->fit, e) || ao_decal_fit(sets, count, 2.0, &out->fit_k2, e) ||
+         ao_decal_fit(&sets[0], 1, 0.0, &out->fit_sphere, e) ||
+         (count > 1 && ao_decal_fit(&sets[1], 1, 0.0, &out->fit_pill, e));
+    char figures[4096];
+    rc = rc == 0 ? study_make_dir(ctx, AO_DECALS_DIR, figures, sizeof figures, e) : rc;
+    for (int k = 0; k < out->scenes.view_count && rc == 0; ++k) {
+        const ao_decal_scene_view *v = &out->scenes.views[k];
+        const char *name = is_fitted_scene(v) ? "point decal, refit (fitted here)" : "point decal, refit (held out)";
+        rc = ao_decals_scenes_score(&out->scenes, v, name, "refit", refit_visibility, out->fit.params, rq->spp,
+                                    figures, e) ||
+             ao_decals_scenes_score(&out->scenes, v, "point decal, refit k = 2", "refit_k2", refit_visibility,
+                                    out->fit_k2.params, rq->spp, figures, e);
+    }
+    if (rc == 0)
+        compare_fits(out, a);
+    return rc ? -1 : 0;
+}
+
 int ao_decals_study(const study_context *ctx, const ao_decals_request *rq, ao_decals_result *out, gt_error *e)
 {
     decal_view views[AO_DECAL_VIEWS];
@@ -128,7 +209,9 @@ int ao_decals_study(const study_context *ctx, const ao_decals_request *rq, ao_de
         rc = render_view(ctx, rq, v, &views[v], e) || gather_floor(&views[v], e);
         out->floor_pixels[v] = views[v].count;
     }
-    rc = rc == 0 ? ao_decal_fit(&views[0].samples, DECAL_RADIUS, &out->fit, e) : rc;
+    rc = rc == 0 ? ao_decals_scenes_study(ctx, rq->scene_size ? rq->scene_size : rq->size, rq->spp, rq->seed,
+                                          &out->scenes, e) : rc;
+    rc = rc == 0 ? refit(ctx, rq, &views[0], out, e) : rc;
     for (int k = 0; k < AO_DECAL_VARIANTS && rc == 0; ++k) {
         out->rows[k].variant = variant_names[k];
         for (int v = 0; v < AO_DECAL_VIEWS && rc == 0; ++v)
@@ -136,5 +219,6 @@ int ao_decals_study(const study_context *ctx, const ao_decals_request *rq, ao_de
     }
     for (int v = 0; v < AO_DECAL_VIEWS; ++v)
         free_view(&views[v]);
+    ao_decals_scenes_free(&out->scenes);
     return rc ? -1 : 0;
 }

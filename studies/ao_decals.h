@@ -9,20 +9,25 @@
  * view A and scored on view B (held out: other floor points of the same
  * configuration, not another configuration). Per row: RMSE and worst error
  * of V_d, DSSIM over the floor, and the share of floor pixels beyond 4 of the
- * reference's standard errors. */
+ * reference's standard errors. Then the decal scenes (studies/ao_decals_scenes.h)
+ * at the same size and spp. */
 #ifndef GTLAB_STUDIES_AO_DECALS_H
 #define GTLAB_STUDIES_AO_DECALS_H
 
 #include "fitters/ao_decals_fit.h"
+#include "studies/ao_decals_scenes.h"
 #include "studies/study.h"
 
 #define AO_DECALS_DIR "ao_decals"
 
-enum { AO_DECAL_VARIANTS = 5, AO_DECAL_VIEWS = 2 };
+enum { AO_DECAL_VARIANTS = 6, AO_DECAL_VIEWS = 2 };
+/* The held-out comparison: the published decal (light's sign), the refit with k held at 2, the free refit. */
+enum { AO_DECAL_PUBLISHED, AO_DECAL_REFIT_K2, AO_DECAL_REFIT_FREE, AO_DECAL_COMPARED };
 
 typedef struct {
     int size, spp;
     unsigned seed;
+    int scene_size; /* the decal scenes' image side; 0: size */
 } ao_decals_request;
 
 typedef struct {
@@ -33,8 +38,14 @@ typedef struct {
 typedef struct {
     ao_decals_request request;
     ao_decal_row rows[AO_DECAL_VARIANTS];
-    ao_decal_fit_result fit; /* on view A */
+    ao_decal_fit_result fit, fit_k2; /* on view A and pill-on-plane; k free, k held at 2 */
+    ao_decal_fit_result fit_sphere, fit_pill; /* k free, on each of them alone */
+    /* RMSE over the fitted samples and over the held-out configurations' receivers (box-on-plane,
+     * box-in-corner, overlap-on-plane), per AO_DECAL_PUBLISHED .. AO_DECAL_REFIT_FREE */
+    double fitted_rmse[AO_DECAL_COMPARED], held_out_rmse[AO_DECAL_COMPARED];
+    size_t fitted_count, held_out_count;
     size_t floor_pixels[AO_DECAL_VIEWS];
+    ao_decals_scenes_result scenes; /* the pill, crate, corner and overlap scenes (views freed) */
 } ao_decals_result;
 
 ao_decals_request ao_decals_default_request(study_quality quality);

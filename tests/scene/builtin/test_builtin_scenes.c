@@ -27,6 +27,10 @@ static const expected_scene expected[] = {
     {"cornell", {-2.75, 0, -2.75}, {2.75, 5.5, 2.75}, {-2.75, 0, -2.75}, {2.75, 5.5, 2.75}, -1},
     /* 513.28863525: the highest vertex (float) of the documented height field */
     {"terrain", {-4000, 0, -4000}, {4000, 513.28863525, 4000}, {-1500, 0, -1500}, {1500, 500, 1500}, 0},
+    {"pill-on-plane", {-50, 0, -50}, {50, 1.3, 50}, {-1.6, 0, -0.5}, {1.6, 1.3, 0.5}, 1},
+    {"box-on-plane", {-50, 0, -50}, {50, 1.2, 50}, {-0.75, 0, -0.5}, {0.75, 1.2, 0.5}, -1},
+    {"box-in-corner", {0, 0, 0}, {10, 10, 10}, {0, 0, 0}, {2.5, 1.5, 2.5}, -1},
+    {"overlap-on-plane", {-50, -0.5, -50}, {50, 1.7, 50}, {-2.8, 0, -2.4}, {1.8, 1.7, 1.0}, 1},
 };
 enum { EXPECTED_COUNT = sizeof expected / sizeof expected[0] };
 
@@ -173,12 +177,15 @@ static void test_every_scene(void)
 
 static void test_table(void)
 {
-    /* The studies' list: every scene but terrain, in table order. */
-    CHECK(builtin_study_scene_count() == builtin_scene_count() - 1);
-    for (int i = 0; i < builtin_study_scene_count(); ++i)
+    /* The studies' list: every scene but terrain and the AO decal scenes, in table order. */
+    CHECK(builtin_study_scene_count() == builtin_scene_count() - 5);
+    for (int i = 0; i < 6; ++i)
         CHECK(builtin_study_scene_at(i) == builtin_scene_at(i) && !builtin_scene_at(i)->outside_studies);
     CHECK(builtin_study_scene_at(builtin_study_scene_count()) == NULL);
     CHECK(builtin_scene_find("terrain")->outside_studies == 1);
+    const char *decal_scenes[] = {"pill-on-plane", "box-on-plane", "box-in-corner", "overlap-on-plane"};
+    for (int i = 0; i < 4; ++i)
+        CHECK(builtin_scene_find(decal_scenes[i])->outside_studies == 1);
     for (int i = 0; i < builtin_scene_count(); ++i) {
         const builtin_scene *b = builtin_scene_at(i);
         CHECK(builtin_scene_find(b->name) == b); /* names are unique */
