@@ -49,13 +49,13 @@ int volumetric_light_resolve(const volumetric_light_settings *s, vec3 lo, vec3 h
     double extent = v3_length(v3_sub(hi, lo));
     if (!(extent > 0.0) && (!s->has_placement || !(s->sigma_t > 0.0) || !(s->intensity > 0.0)))
         return gt_error_set(e, "volumetric-light", "the scene has no extent to place the light in");
-    vec3 position = s->has_placement ? s->position : relative_point(lo, hi, 0.2f, 0.95f, 0.2f);
-    vec3 target = s->has_placement ? s->target : relative_point(lo, hi, 0.65f, 0.0f, 0.75f);
+    vec3 position = s->has_placement ? s->position : relative_point(lo, hi, 0.15f, 0.9f, 1.6f);
+    vec3 target = s->has_placement ? s->target : relative_point(lo, hi, 0.6f, 0.0f, 0.3f);
     double grey = s->intensity > 0.0 ? s->intensity : extent * extent, intensity[3] = {grey, grey, grey};
     *light = s->kind == VOLUMETRIC_SPOT_LIGHT
                  ? volumetric_spot_light(position, target, s->outer_deg, s->inner_deg, intensity)
                  : volumetric_point_light(position, intensity);
-    medium->sigma_t = s->sigma_t > 0.0 ? s->sigma_t : 2.0 / extent;
+    medium->sigma_t = s->sigma_t > 0.0 ? s->sigma_t : 1.0 / extent;
     medium->sigma_s = s->albedo * medium->sigma_t;
     medium->g = s->g;
     if (!(s->albedo >= 0.0 && s->albedo <= 1.0))

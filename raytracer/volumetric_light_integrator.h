@@ -17,9 +17,10 @@
  *
  * Where the light is: the settings' position and target, or, without them, a
  * placement relative to the scene's bounds lo..hi (e = hi - lo): position
- * lo + (0.2, 0.95, 0.2) e, target lo + (0.65, 0, 0.75) e, intensity |e|^2,
- * extinction 2 / |e|; in builtin:cornell a spot in the back-left corner under
- * the ceiling aimed past the tall block, whose shadow cuts a shaft. */
+ * lo + (0.15, 0.9, 1.6) e, target lo + (0.6, 0, 0.3) e, intensity |e|^2,
+ * extinction 1 / |e|. In builtin:cornell that is a spot in front of the open
+ * box, high and to the left, outside the camera's view (its 1/r^2 peak is not
+ * on screen), aimed into the box across the blocks, whose shadows cut shafts. */
 #ifndef GTLAB_RAYTRACER_VOLUMETRIC_LIGHT_INTEGRATOR_H
 #define GTLAB_RAYTRACER_VOLUMETRIC_LIGHT_INTEGRATOR_H
 
@@ -38,7 +39,7 @@ typedef struct {
     vec3 position, target;
     double outer_deg, inner_deg; /* spot half-angles */
     double intensity;            /* [W/sr], grey; <= 0: |e|^2 */
-    double sigma_t, albedo, g;   /* sigma_t <= 0: 2 / |e|; sigma_s = albedo sigma_t */
+    double sigma_t, albedo, g;   /* sigma_t <= 0: 1 / |e|; sigma_s = albedo sigma_t */
     int no_shadows;
     double rel_tol;              /* quadrature tolerance, relative to the integral's bound */
 } volumetric_light_settings;

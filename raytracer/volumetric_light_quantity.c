@@ -61,7 +61,7 @@ static const reference_option method_option = {
 static const reference_option extinction_option = {
     .name = "vlight-extinction",
     .value = "S",
-    .help = "the medium's sigma_t [1/scene unit] (default 2 / the\nscene's bounding-box diagonal); albedo 0.8",
+    .help = "the medium's sigma_t [1/scene unit] (default 1 / the\nscene's bounding-box diagonal); albedo 0.8",
     .parse = parse_extinction,
 };
 static const reference_option g_option = {
