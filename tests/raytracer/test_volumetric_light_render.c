@@ -3,7 +3,8 @@
  * whose light the tall block shadows:
  *  - Monte Carlo (equiangular, shadow rays) agrees with the quadrature in
  *    every sampled pixel within 4 standard errors plus the quadrature's
- *    error estimate, and the scene's shadows change the image;
+ *    error estimate, and the scene's shadows change the image (in over 2%
+ *    of the pixels, by over 2%);
  *  - a point light inside the closed tall block gives exactly 0 everywhere
  *    (both methods), while the same light unshadowed does not;
  *  - the output has the same bits for 1 and 2 threads. */
@@ -71,7 +72,7 @@ static void check_against_monte_carlo(const scene *s, const camera *cam)
     }
     CHECK_MSG(worst_z <= 1.0, "pixel %d: MC %.6g +- %.2g vs quadrature %.6g +- %.2g", worst, lm[worst], sm[worst],
               lq[worst], eq[worst]);
-    CHECK_MSG(compared > 500 && lit > compared / 2 && shadowed > compared / 20, "%d pixels, %d lit, %d shadowed",
+    CHECK_MSG(compared > 500 && lit > compared / 2 && shadowed > compared / 50, "%d pixels, %d lit, %d shadowed",
               compared, lit, shadowed);
     const char *channels[] = {"vlight.L.R", "vlight.L.G", "vlight.L.B", "vlight.L.G.stderr"};
     for (int k = 0; k < 4; ++k)
