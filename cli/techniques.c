@@ -15,6 +15,7 @@
     T(sg_ndf)               \
     T(anti_aliasing)        \
     T(inside)               \
+    T(volumetric)           \
     T(atmosphere)           \
     T(fog)                  \
     T(throughput)

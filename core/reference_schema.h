@@ -144,6 +144,19 @@
 #define CH_FOG_PUBLISHED_ERROR "fog_published_error.G"
 #define CH_FOG_CORRECTED_ERROR "fog_corrected_error.G"
 
+/* ---- Volumetric light (render volumetric-light; raytracer/volumetric_light_integrator.h) */
+/* Radiance a spot or point light scatters once towards the camera through a
+ * homogeneous medium, shadowed, up to the first surface. */
+#define CH_VLIGHT_L_R "vlight.L.R"
+#define CH_VLIGHT_L_G "vlight.L.G"
+#define CH_VLIGHT_L_B "vlight.L.B"
+#define CH_VLIGHT_L_RGB {CH_VLIGHT_L_R, CH_VLIGHT_L_G, CH_VLIGHT_L_B}
+/* --vlight-method quadrature: the quadrature's error estimate of vlight.L. */
+#define CH_VLIGHT_L_ERROR_R "vlight_quadrature_error.R"
+#define CH_VLIGHT_L_ERROR_G "vlight_quadrature_error.G"
+#define CH_VLIGHT_L_ERROR_B "vlight_quadrature_error.B"
+#define CH_VLIGHT_L_ERROR_RGB {CH_VLIGHT_L_ERROR_R, CH_VLIGHT_L_ERROR_G, CH_VLIGHT_L_ERROR_B}
+
 /* ---- Lookup tables (gtlab lut) ------------------------------------------ */
 #define CH_LUT "lut.V"
 /* The split-sum DFG table (luts/dfg_lut.h): scale A, bias B, albedo E = A + B. */

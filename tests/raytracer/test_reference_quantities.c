@@ -79,7 +79,7 @@ static void test_descriptors(void)
     CHECK(QUANTITY_GBUFFER->prepare == NULL && QUANTITY_GBUFFER->options == NULL);
     char names[512];
     reference_quantity_names(names, sizeof names);
-    CHECK_MSG(strcmp(names, "gbuffer, ao, multibounce, heightfield-ao, specular-occlusion, sphere-light or fog") == 0,
+    CHECK_MSG(strcmp(names, "gbuffer, ao, multibounce, heightfield-ao, specular-occlusion, sphere-light, fog or volumetric-light") == 0,
               "%s", names);
 }
 

@@ -1,0 +1,23 @@
+/* A spot light's shadow map by Embree; see shadow_map_render.h. */
+#include "studies/shadow_map_render.h"
+
+#include <math.h>
+
+int shadow_map_render(const embree_scene *es, const volumetric_light *spot, int size, double bias, int threads,
+                      shadow_map *m, gt_error *e)
+{
+    if (spot->kind != VOLUMETRIC_SPOT_LIGHT)
+        return gt_error_set(e, "shadow map", "only a spot light has a single-frustum shadow map");
+    double half_deg = acos(spot->cos_outer) * 180.0 / M_PI;
+    if (shadow_map_alloc(m, size, spot->position, spot->axis, half_deg, bias, e) != 0)
+        return -1;
+#pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : 1)
+    for (int j = 0; j < size; ++j)
+        for (int i = 0; i < size; ++i) {
+            surface_hit hit;
+            vec3 d = shadow_map_direction(m, i + 0.5, j + 0.5);
+            if (embree_closest_hit(es, spot->position, d, INFINITY, &hit))
+                m->distance[(long)j * size + i] = hit.t;
+        }
+    return 0;
+}

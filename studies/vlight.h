@@ -1,0 +1,100 @@
+/* The volumetric-light study (issue 29; INSIDE, Gjoel & Svendsen, GDC 2016,
+ * seed 002): the ray-march of realtime/raymarch_volumetric.h against the
+ * single-scattering reference (raytracer/volumetric_light_integral.h) on
+ * builtin:cornell with the default spot of `gtlab render volumetric-light`,
+ * the tall block's shadow cutting a shaft.
+ *
+ * Errors are over the pixels that see a surface, of L / I (grey): RMSE
+ * relative to the reference's mean; the same after a Gaussian blur of
+ * sigma 1 pixel of both images (over the surface pixels), the error a
+ * viewer or TAA's neighbourhood sees once the finest noise is averaged,
+ * where a noise's spectrum matters; and DSSIM (both images scaled by 1 / the
+ * reference's 99th percentile). Per noise type (none, white,
+ * Bayer 8x8, IGN, blue) and samples per pixel (steps per ray):
+ *   single       frame 0 of each seed;
+ *   accumulated  the exponential history (alpha) after `frames` frames.
+ * A seed k moves the start frame to 1009 k (white: other streams; Bayer,
+ * IGN, blue: another golden-ratio shift) and builds the blue-noise texture
+ * with seed 1 + k; figures are means over the seeds with their standard
+ * errors. The target is the error of 128 uniform steps (no noise); the spp
+ * each noise needs to reach it is interpolated in log-log between the
+ * sampled counts (infinite when the largest count does not reach it). The
+ * talk's final configuration is half resolution, blue noise, the
+ * depth-aware upsample and accumulation, at 3, 6 and 9 samples per
+ * half-resolution pixel. The shadow map (512^2 unless varied) is a measured
+ * factor: the error of a 1024-step march (offset 1/2) per map size is its
+ * floor. */
+#ifndef GTLAB_STUDIES_VLIGHT_H
+#define GTLAB_STUDIES_VLIGHT_H
+
+#include "core/image.h"
+#include "realtime/raymarch_volumetric.h"
+#include "studies/study.h"
+
+#define VLIGHT_DIR "volumetric"
+enum { VLIGHT_MAX_SPP = 16, VLIGHT_MAX_SEEDS = 8, VLIGHT_SHADOW_SIZES = 4, VLIGHT_TALK_SPP = 3 };
+
+typedef struct {
+    int width, height;
+    int seeds, frames;
+    double alpha;       /* the history's weight of a new frame */
+    int shadow_size;    /* the shadow map of the noise measurements */
+    double shadow_bias; /* relative */
+    int spp_count;
+    int spp[VLIGHT_MAX_SPP];
+    int blue_noise_size;
+    double reference_rel_tol;
+} vlight_request;
+
+typedef struct {
+    double rmse, rmse_se;   /* relative RMSE, mean over seeds and its standard error */
+    double dssim, dssim_se;
+    double blurred, blurred_se; /* relative RMSE after a Gaussian blur (sigma 1 pixel) of both images */
+} vlight_error;
+
+typedef struct {
+    vlight_request request;
+    int pixels;
+    double reference_mean, reference_max_error; /* mean L / I; largest quadrature error estimate over it */
+    double reference_seconds;
+    long reference_rays;
+    vlight_error single[RAYMARCH_NOISE_COUNT][VLIGHT_MAX_SPP];
+    vlight_error accumulated[RAYMARCH_NOISE_COUNT][VLIGHT_MAX_SPP];
+    vlight_error uniform128;                        /* none, 128 steps, one frame: the target */
+    double spp_needed_single[RAYMARCH_NOISE_COUNT]; /* to reach uniform128's RMSE; INFINITY: not reached */
+    double spp_needed_accumulated[RAYMARCH_NOISE_COUNT];
+    int talk_spp[VLIGHT_TALK_SPP];                  /* 3, 6, 9 at half resolution */
+    vlight_error talk[VLIGHT_TALK_SPP];             /* half res, blue, upsampled, accumulated */
+    vlight_error talk_single[VLIGHT_TALK_SPP];      /* the same, frame 0 alone */
+    int shadow_sizes[VLIGHT_SHADOW_SIZES];
+    double shadow_rmse[VLIGHT_SHADOW_SIZES];        /* relative RMSE of 1024 midpoint steps */
+    double shadow_seconds[VLIGHT_SHADOW_SIZES];
+    /* blue over white, Bayer, IGN at 3 spp: ratios of the accumulated RMSE and of the single frame's
+     * blurred RMSE, means over the seeds of the per-seed ratios, with standard errors */
+    double blue_ratio[RAYMARCH_NOISE_COUNT], blue_ratio_se[RAYMARCH_NOISE_COUNT];
+    double blue_blurred_ratio[RAYMARCH_NOISE_COUNT], blue_blurred_ratio_se[RAYMARCH_NOISE_COUNT];
+    double ns_per_pixel_sample;                     /* the ray-march, one thread */
+} vlight_result;
+
+vlight_request vlight_default_request(study_quality quality);
+/* Runs the study; writes <output>/volumetric/ (reference and image strip
+ * PNGs, plot data). Returns 0 or -1 with e. */
+int vlight_study(const study_context *ctx, const vlight_request *rq, vlight_result *out, gt_error *e);
+
+/* The ray-march's cost on the study's view: ns per pixel per sample (one
+ * thread, `steps` steps, blue noise, shadow map 512^2). */
+int vlight_bench(int width, int height, int steps, double *ns_per_pixel_sample, gt_error *e);
+
+/* `gtlab approx raymarch`: the ray-march of one configuration on the
+ * study's view (builtin:cornell, width x height), accumulated over `frames`
+ * frames (1: a single frame), into out's vlight.L.R/G/B (radiance: the
+ * light's intensity times L / I). Returns 0 or -1 with e. */
+typedef struct {
+    int width, height, steps, frames, half, shadow_size, threads;
+    raymarch_noise noise;
+    double alpha;
+} vlight_approx_request;
+
+int vlight_approx_image(const vlight_approx_request *rq, image *out, gt_error *e);
+
+#endif

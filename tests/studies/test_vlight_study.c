@@ -1,0 +1,66 @@
+/* studies/vlight: the volumetric-light section's numbers without its prose,
+ * on a small request. The jittered ray-march's error falls with the samples,
+ * accumulation lowers it, no noise does not change over frames, 128 uniform
+ * steps beat 3, the shadow map's floor falls with its size, the talk's
+ * configuration improves with accumulation; the image strip and the plot
+ * data are written; results do not depend on the thread count; bad requests
+ * are refused. */
+#include <math.h>
+#include <string.h>
+
+#include "studies/vlight.h"
+#include "tests/check.h"
+#include "tests/test_files.h"
+
+static vlight_request small_request(void)
+{
+    vlight_request rq = vlight_default_request(QUALITY_PREVIEW);
+    rq.width = rq.height = 32;
+    rq.seeds = 2, rq.frames = 6, rq.blue_noise_size = 32;
+    rq.spp_count = 3;
+    int spp[3] = {1, 3, 16};
+    memcpy(rq.spp, spp, sizeof spp);
+    return rq;
+}
+
+static void check_numbers(const vlight_result *r)
+{
+    CHECK(r->pixels > 500 && r->reference_mean > 0.0 && r->reference_max_error < 1e-3 * r->reference_mean);
+    for (int n = RAYMARCH_NOISE_WHITE; n < RAYMARCH_NOISE_COUNT; ++n) {
+        CHECK_MSG(r->single[n][0].rmse > 2.0 * r->single[n][2].rmse, "%s: %.3g at 1 spp, %.3g at 16",
+                  raymarch_noise_name((raymarch_noise)n), r->single[n][0].rmse, r->single[n][2].rmse);
+        CHECK(r->accumulated[n][1].rmse < r->single[n][1].rmse);
+        CHECK(r->spp_needed_accumulated[n] >= 1.0);
+    }
+    CHECK(r->accumulated[RAYMARCH_NOISE_NONE][1].rmse == r->single[RAYMARCH_NOISE_NONE][1].rmse);
+    CHECK(r->uniform128.rmse < r->single[RAYMARCH_NOISE_NONE][1].rmse);
+    CHECK_MSG(r->shadow_rmse[0] > r->shadow_rmse[VLIGHT_SHADOW_SIZES - 1], "shadow floor %.3g (128) vs %.3g (1024)",
+              r->shadow_rmse[0], r->shadow_rmse[VLIGHT_SHADOW_SIZES - 1]);
+    CHECK(r->talk[1].rmse < r->talk_single[1].rmse && r->talk_spp[1] == 6);
+    CHECK(r->blue_ratio[RAYMARCH_NOISE_WHITE] > 0.0 && isfinite(r->blue_blurred_ratio[RAYMARCH_NOISE_IGN]));
+    CHECK(r->ns_per_pixel_sample > 0.0);
+}
+
+int main(void)
+{
+    char dir[2048], path[4096];
+    gt_error e;
+    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2};
+    CHECK(study_make_dir(&top, "vlight_study", dir, sizeof dir, &e) == 0);
+    study_context two = {dir, QUALITY_PREVIEW, 2}, one = {dir, QUALITY_PREVIEW, 1};
+    vlight_request rq = small_request();
+    static vlight_result r2, r1;
+    CHECK_MSG(vlight_study(&two, &rq, &r2, &e) == 0, "%s", e.message);
+    CHECK_MSG(vlight_study(&one, &rq, &r1, &e) == 0, "%s", e.message);
+    check_numbers(&r2);
+    CHECK(r1.uniform128.rmse == r2.uniform128.rmse && r1.single[4][1].rmse == r2.single[4][1].rmse &&
+          r1.accumulated[1][0].dssim == r2.accumulated[1][0].dssim && r1.talk[0].blurred == r2.talk[0].blurred);
+    const char *files[] = {"reference.png", "blue_3.png", "talk_half_blue_6_accumulated.png", "error_vs_spp.dat"};
+    for (int i = 0; i < 4; ++i) {
+        snprintf(path, sizeof path, "%s/%s/%s", dir, VLIGHT_DIR, files[i]);
+        CHECK_MSG(file_exists(path), "%s not written", path);
+    }
+    rq.seeds = 0;
+    CHECK(vlight_study(&two, &rq, &r1, &e) != 0);
+    return check_report("studies_vlight");
+}
