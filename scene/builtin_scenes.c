@@ -7,6 +7,8 @@
  * vertices lie on the sphere and carry the exact sphere normals. */
 #include "scene/builtin_scenes.h"
 
+#include "scene/builtin_scene_aa_thin.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -578,6 +580,7 @@ static const builtin_scene scenes[] = {
      "Camera: position (-3600, 1500, 3600), target (600, 100, -800), up +Y, yfov 50 deg, 512 x 512.\n"
      "Not in the studies' scene list (builtin_study_scene_at): their results stay the same.",
      build_terrain, 1},
+    {"aa-thin", BUILTIN_AA_THIN_DESCRIPTION, builtin_build_aa_thin, 1},
 };
 
 int builtin_scene_count(void) { return (int)(sizeof scenes / sizeof scenes[0]); }
