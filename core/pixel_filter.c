@@ -30,6 +30,8 @@ double pixel_filter_weight(pixel_filter f, double dx, double dy)
 {
     if (f == PIXEL_FILTER_BOX)
         return fabs(dx) <= 0.5 && fabs(dy) <= 0.5 ? 1.0 : 0.0;
+    if (fabs(dx) > 1.5 || fabs(dy) > 1.5) /* the product's zero, without its cosines */
+        return 0.0;
     return blackman_harris(dx, 1.5) * blackman_harris(dy, 1.5);
 }
 
@@ -47,6 +49,8 @@ static void resolve_pixel(pixel_filter f, const float *rgb, const float *xy, int
                 for (int si = pi * s; si < (pi + 1) * s; ++si) {
                     size_t k = (size_t)sj * w + si;
                     double wt = pixel_filter_weight(f, xy[2 * k] - cx, xy[2 * k + 1] - cy);
+                    if (wt == 0.0)
+                        continue; /* outside the support: adds nothing (and costs no cosine below) */
                     wsum += wt;
                     for (int c = 0; c < 3; ++c)
                         sum[c] += wt * rgb[3 * k + c];

@@ -1,6 +1,7 @@
 #include "raytracer/embree_scene.h"
 
 #include "raytracer/embree_memory.h"
+#include "scene/material_lookup.h"
 
 #include <float.h>
 #include <math.h>
@@ -12,6 +13,8 @@ static void report_embree_error(void *user, enum RTCError code, const char *mess
     (void)code;
     (void)message; /* surfaced through rtcGetDeviceError where it matters */
 }
+
+static void alpha_filter(const struct RTCFilterFunctionNArguments *args);
 
 static int add_mesh(embree_scene *es, const scene_mesh *m, unsigned id, gt_error *e)
 {
@@ -26,6 +29,12 @@ static int add_mesh(embree_scene *es, const scene_mesh *m, unsigned id, gt_error
     }
     memcpy(vertices, m->positions, sizeof(float) * 3 * m->vertex_count);
     memcpy(indices, m->indices, sizeof(unsigned) * 3 * m->triangle_count);
+    const float *cutoff = es->source->alpha_cutoff;
+    if (cutoff && m->material >= 0 && m->material < es->source->material_count && cutoff[m->material] > 0.0f) {
+        rtcSetGeometryUserData(g, (void *)es->source);
+        rtcSetGeometryIntersectFilterFunction(g, alpha_filter);
+        rtcSetGeometryOccludedFilterFunction(g, alpha_filter);
+    }
     rtcCommitGeometry(g);
     rtcAttachGeometryByID(es->rtc, g, id);
     rtcReleaseGeometry(g);
@@ -105,6 +114,27 @@ static void texcoords(const scene_mesh *m, const uint32_t *tri, float u, float v
     const float *t0 = &m->texcoords[2 * tri[0]], *t1 = &m->texcoords[2 * tri[1]], *t2 = &m->texcoords[2 * tri[2]];
     for (int k = 0; k < 2; ++k)
         uv[k] = (1.0f - u - v) * t0[k] + u * t1[k] + v * t2[k];
+}
+
+/* glTF alpha coverage (alphaMode MASK) as an Embree filter function on the
+ * alpha-tested meshes, for closest hits and occlusion alike: a candidate hit
+ * whose alpha at its TEXCOORD_0 (barycentric interpolation, as
+ * embree_surface_at) is below the cutoff is refused and the ray goes on. */
+static void alpha_filter(const struct RTCFilterFunctionNArguments *args)
+{
+    const scene *s = args->geometryUserPtr;
+    const unsigned n = args->N;
+    const float *hit_f = (const float *)args->hit; /* RTCHitN: Ng x, y, z, u, v, primID, geomID, N each */
+    const unsigned *hit_u = (const unsigned *)args->hit;
+    for (unsigned k = 0; k < n; ++k) {
+        if (args->valid[k] != -1)
+            continue;
+        unsigned tri = hit_u[5 * n + k], mesh = hit_u[6 * n + k];
+        float uv[2];
+        texcoords(&s->meshes[mesh], &s->meshes[mesh].indices[3 * tri], hit_f[3 * n + k], hit_f[4 * n + k], uv);
+        if (!material_alpha_covers(s, (int)mesh, uv))
+            args->valid[k] = 0;
+    }
 }
 
 void embree_surface_at(const embree_scene *es, const struct RTCRayHit *rh, unsigned parts, surface_hit *hit)

@@ -20,24 +20,36 @@ static int sun_visible(const embree_scene *es, const surface_hit *h, vec3 l)
     return ray.tfar >= 0.0f;
 }
 
-/* L at image position (x, y). */
-static void shade_sample(const embree_scene *es, const camera_view *view, const frame_lighting *light, float x, float y,
-                         float out[3])
+/* L leaving surface point h towards the camera. */
+static void shade_hit(const embree_scene *es, const frame_lighting *light, const surface_hit *h, float out[3])
 {
-    vec3 o, d;
-    camera_ray(view, x, y, &o, &d);
-    surface_hit h;
-    if (!embree_closest_hit(es, o, d, INFINITY, &h)) {
-        for (int c = 0; c < 3; ++c)
-            out[c] = light->background[c];
-        return;
-    }
-    material_sample m = material_lookup(es->source, h.mesh, h.uv);
-    float cos_l = v3_dot(h.ns, light->sun_direction), sky = 0.5f + 0.5f * h.ns.y;
-    float sun = cos_l > 0.0f && v3_dot(h.ng, light->sun_direction) > 0.0f && sun_visible(es, &h, light->sun_direction)
+    material_sample m = material_lookup(es->source, h->mesh, h->uv);
+    float cos_l = v3_dot(h->ns, light->sun_direction), sky = 0.5f + 0.5f * h->ns.y;
+    float sun = cos_l > 0.0f && v3_dot(h->ng, light->sun_direction) > 0.0f && sun_visible(es, h, light->sun_direction)
                     ? cos_l : 0.0f;
     for (int c = 0; c < 3; ++c)
         out[c] = m.base_color[c] * (light->sun[c] * sun + light->sky[c] * sky);
+}
+
+int shaded_frame_sample(const embree_scene *es, const camera_view *view, const frame_lighting *light, float x, float y,
+                        float out[3], surface_hit *hit)
+{
+    vec3 o, d;
+    camera_ray(view, x, y, &o, &d);
+    surface_hit local, *h = hit ? hit : &local;
+    if (!embree_closest_hit(es, o, d, INFINITY, h)) {
+        for (int c = 0; c < 3; ++c)
+            out[c] = light->background[c];
+        return 0;
+    }
+    shade_hit(es, light, h, out);
+    return 1;
+}
+
+static void shade_sample(const embree_scene *es, const camera_view *view, const frame_lighting *light, float x, float y,
+                         float out[3])
+{
+    shaded_frame_sample(es, view, light, x, y, out, NULL);
 }
 
 void shaded_frame_render(const embree_scene *es, const camera *cam, const frame_lighting *light,

@@ -28,6 +28,11 @@ typedef struct {
 /* The default light: a sun 50 degrees up, warm, and a blue sky. */
 frame_lighting frame_lighting_default(void);
 
+/* L at image position (x, y) into out; 1 and the surface in hit (if not
+ * NULL) when the ray hits one, 0 when it sees the sky. */
+int shaded_frame_sample(const embree_scene *es, const camera_view *view, const frame_lighting *light, float x, float y,
+                        float out[3], surface_hit *hit);
+
 /* One sample per pixel at the centre plus `offset` (pixels). */
 void shaded_frame_render(const embree_scene *es, const camera *cam, const frame_lighting *light,
                          const float offset[2], int threads, float *rgb);

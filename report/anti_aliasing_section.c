@@ -3,6 +3,7 @@
 
 #include <string.h>
 
+#include "report/aa_temporal_section.h"
 #include "report/report_table.h"
 
 static const report_column truth_columns[] = {
@@ -62,5 +63,6 @@ int aa_section(report_context *ctx, const aa_result *r, gt_error *e)
                    "samples.",
                    mean_dssim(r, "no AA (1 sample)", "blackman-harris"), mean_dssim(r, "FXAA 3.11", "blackman-harris"),
                    mean_dssim(r, "SSAA 2x2 (box)", "blackman-harris"), worst_truth(r));
+    aa_temporal_section(ctx, json, &r->temporal);
     return 0;
 }

@@ -8,6 +8,7 @@
 #include "scene/builtin_scenes.h"
 
 #include "scene/builtin_scene_ao_decals.h"
+#include "scene/builtin_scene_aa_thin.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -610,6 +611,7 @@ static const builtin_scene scenes[] = {
      "Camera: position (5, 4.5, 6.5), target (0.2, 0.5, -0.4), up +Y, yfov 45 deg, 512 x 512.\n"
      "Not in the studies' scene list: for the AO decals (studies/ao_decals.h).",
      builtin_scene_build_overlap_on_plane, 1},
+    {"aa-thin", BUILTIN_AA_THIN_DESCRIPTION, builtin_build_aa_thin, 1},
 };
 
 int builtin_scene_count(void) { return (int)(sizeof scenes / sizeof scenes[0]); }

@@ -670,6 +670,18 @@ int material_uv_transform(Loader &L, int material, const tinygltf::PbrMetallicRo
     return 0;
 }
 
+/* alphaMode MASK: the material's alphaCutoff (glTF 2.0, "Alpha Coverage";
+ * default 0.5). BLEND is drawn opaque (no sorted transparency here). */
+static int alpha_mask(Loader &L, int i)
+{
+    const tinygltf::Material &m = L.model.materials[(size_t)i];
+    if (m.alphaMode != "MASK")
+        return 0;
+    if (!std::isfinite(m.alphaCutoff) || m.alphaCutoff < 0.0)
+        return L.fail("material %d has a bad alphaCutoff", i);
+    return scene_set_alpha_cutoff(L.s, i, (float)m.alphaCutoff) == 0 ? 0 : L.fail("out of memory");
+}
+
 /* glTF materials become scene materials with the same indices. */
 int convert_materials(Loader &L)
 {
@@ -694,6 +706,8 @@ int convert_materials(Loader &L)
             return -1;
         if (scene_add_material(L.s, sm) < 0)
             return L.fail("out of memory");
+        if (alpha_mask(L, (int)i) != 0)
+            return -1;
     }
     return 0;
 }

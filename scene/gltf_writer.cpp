@@ -84,7 +84,7 @@ void write_mesh(tinygltf::Model &model, const scene_mesh *m)
     model.meshes.push_back(mesh);
 }
 
-void write_material(tinygltf::Model &model, const scene_material &sm)
+void write_material(tinygltf::Model &model, const scene_material &sm, float alpha_cutoff)
 {
     tinygltf::Material mat;
     tinygltf::PbrMetallicRoughness &pbr = mat.pbrMetallicRoughness;
@@ -94,6 +94,8 @@ void write_material(tinygltf::Model &model, const scene_material &sm)
     pbr.baseColorTexture.index = sm.base_color_texture;
     pbr.metallicRoughnessTexture.index = sm.metallic_roughness_texture;
     mat.doubleSided = true; /* gtlab's surfaces are two-sided (DESIGN.md) */
+    if (alpha_cutoff > 0.0f)
+        mat.alphaMode = "MASK", mat.alphaCutoff = alpha_cutoff;
     model.materials.push_back(mat);
 }
 
@@ -215,7 +217,7 @@ int build_model(const scene *s, const char *path, gt_error *e, tinygltf::Model &
         root.nodes.push_back((int)model.nodes.size() - 1);
     }
     for (int i = 0; i < s->material_count; ++i)
-        write_material(model, s->materials[i]);
+        write_material(model, s->materials[i], s->alpha_cutoff ? s->alpha_cutoff[i] : 0.0f);
     for (int i = 0; i < s->texture_count; ++i)
         write_texture(model, s->textures[i]);
     if (s->has_camera) {

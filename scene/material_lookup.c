@@ -74,3 +74,19 @@ material_sample material_lookup(const scene *s, int mesh, const float uv[2])
     }
     return r;
 }
+
+int material_alpha_covers(const scene *s, int mesh, const float uv[2])
+{
+    int index = s->meshes[mesh].material;
+    if (!s->alpha_cutoff || index < 0 || index >= s->material_count || s->alpha_cutoff[index] <= 0.0f)
+        return 1;
+    const scene_material *m = &s->materials[index];
+    float alpha = m->base_color[3];
+    const scene_texture *color = texture_at(s, m->base_color_texture);
+    if (color) {
+        float texel[4];
+        texture_bilinear(color, uv, texel);
+        alpha *= texel[3];
+    }
+    return alpha >= s->alpha_cutoff[index];
+}

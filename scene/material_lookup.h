@@ -14,4 +14,9 @@ typedef struct {
 
 material_sample material_lookup(const scene *s, int mesh, const float uv[2]);
 
+/* glTF alpha coverage (alphaMode MASK): 1 if the surface of mesh is there at
+ * uv, i.e. its material is opaque or its alpha (base colour factor a times
+ * the texture's a, bilinear) is >= the material's alpha cutoff. */
+int material_alpha_covers(const scene *s, int mesh, const float uv[2]);
+
 #endif

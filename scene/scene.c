@@ -73,7 +73,22 @@ int scene_add_material(scene *s, scene_material m)
         return -1;
     s->materials = grown;
     s->materials[s->material_count] = m;
+    if (s->alpha_cutoff) {
+        float *cutoffs = realloc(s->alpha_cutoff, sizeof *cutoffs * (size_t)(s->material_count + 1));
+        if (!cutoffs)
+            return -1;
+        s->alpha_cutoff = cutoffs;
+        s->alpha_cutoff[s->material_count] = 0.0f;
+    }
     return s->material_count++;
+}
+
+int scene_set_alpha_cutoff(scene *s, int material, float cutoff)
+{
+    if (!s->alpha_cutoff && !(s->alpha_cutoff = calloc((size_t)s->material_count + 1, sizeof(float))))
+        return -1;
+    s->alpha_cutoff[material] = cutoff;
+    return 0;
 }
 
 void scene_mesh_compute_normals(scene_mesh *m)
@@ -146,6 +161,7 @@ void scene_free(scene *s)
         free(s->textures[i].rgba);
     free(s->textures);
     free(s->materials);
+    free(s->alpha_cutoff);
     memset(s, 0, sizeof *s);
 }
 

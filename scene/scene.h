@@ -45,6 +45,9 @@ typedef struct {
     int texture_count;
     int has_camera;
     camera camera; /* the glTF (or built-in) camera; width/height from its aspect ratio */
+    float *alpha_cutoff; /* NULL (every material opaque), or one per material: the glTF alphaCutoff
+                          * of an alphaMode MASK material (a surface point whose alpha, base colour
+                          * factor a times texture a, is below it is not there), 0 for an opaque one */
 } scene;
 
 /* The glTF default material: white, metallic 1, roughness 1 (glTF 2.0 spec). */
@@ -59,6 +62,9 @@ uint64_t scene_triangle_count(const scene *s);
  * texcoords only if with_texcoords). Returns it, or NULL if out of memory. */
 scene_mesh *scene_add_mesh(scene *s, uint32_t vertex_count, uint32_t triangle_count, int with_texcoords);
 int scene_add_material(scene *s, scene_material m);
+/* Makes material an alpha-tested one (glTF alphaMode MASK) with the cutoff;
+ * 0, or -1 if out of memory. */
+int scene_set_alpha_cutoff(scene *s, int material, float cutoff);
 /* Computes area-weighted vertex normals from the triangles. */
 void scene_mesh_compute_normals(scene_mesh *m);
 /* Sets every vertex's normal to its triangle's face normal, normalize((b - a)

@@ -26,6 +26,8 @@ static int add_scene(EVP_MD_CTX *ctx, const scene *s)
     for (int i = 0; i < s->mesh_count; ++i)
         rc |= add_mesh(ctx, &s->meshes[i]);
     rc |= add(ctx, s->materials, sizeof *s->materials * (size_t)s->material_count);
+    if (s->alpha_cutoff) /* only then: an opaque scene's hash is what it always was */
+        rc |= add(ctx, s->alpha_cutoff, sizeof *s->alpha_cutoff * (size_t)s->material_count);
     for (int i = 0; i < s->texture_count; ++i) {
         const scene_texture *t = &s->textures[i];
         const int size[2] = {t->width, t->height};

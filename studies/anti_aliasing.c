@@ -18,7 +18,8 @@ static const char *const technique_names[AA_TECHNIQUES] = {"no AA (1 sample)", "
 aa_request aa_default_request(study_quality quality)
 {
     aa_request rq = {quality == QUALITY_PRODUCTION ? 384 : 160, quality == QUALITY_PRODUCTION ? 288 : 120,
-                     {"builtin:boxes", "builtin:menger", "builtin:cornell"}, 3, 19u};
+                     {"builtin:boxes", "builtin:menger", "builtin:cornell"}, 3, 19u,
+                     aa_temporal_default_request(quality)};
     return rq;
 }
 
@@ -195,5 +196,7 @@ int aa_study(const study_context *ctx, const aa_request *rq, aa_result *out, gt_
     for (int k = 0; k < rq->scene_count && rc == 0; ++k)
         rc = study_scene(ctx, rq, rq->scenes[k], dir, &im, out, e);
     free_images(&im);
+    if (rc == 0 && rq->temporal.frames > 0)
+        rc = aa_temporal_study(ctx, &rq->temporal, &out->temporal, e);
     return rc;
 }

@@ -14,6 +14,7 @@
 #define GTLAB_STUDIES_ANTI_ALIASING_H
 
 #include "core/pixel_filter.h"
+#include "studies/aa_temporal.h"
 #include "studies/study.h"
 
 #define AA_DIR "aa"
@@ -25,6 +26,7 @@ typedef struct {
     const char *scenes[AA_MAX_SCENES];
     int scene_count;
     unsigned seed;
+    aa_temporal_request temporal; /* the second part (studies/aa_temporal.h); frames 0: skipped */
 } aa_request;
 
 typedef struct {
@@ -42,9 +44,11 @@ typedef struct {
     int row_count, truth_count;
     aa_row rows[AA_MAX_SCENES * AA_TECHNIQUES * PIXEL_FILTER_COUNT];
     aa_truth_row truth[AA_MAX_SCENES * PIXEL_FILTER_COUNT];
+    aa_temporal_result temporal;
 } aa_result;
 
-/* Preview: 160 x 120; production 384 x 288; scenes boxes, menger, cornell. */
+/* Preview: 160 x 120; production 384 x 288; scenes boxes, menger, cornell;
+ * the temporal part's aa_temporal_default_request. */
 aa_request aa_default_request(study_quality quality);
 
 /* The display value of linear radiance L. */

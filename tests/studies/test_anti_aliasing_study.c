@@ -15,6 +15,7 @@ int main(void)
     study_context ctx = {.output_dir = check_tmp_dir(), .quality = QUALITY_PREVIEW, .threads = 2};
     aa_request rq = aa_default_request(QUALITY_PREVIEW);
     rq.width = 96, rq.height = 72, rq.scene_count = 1;
+    rq.temporal.frames = 0; /* the temporal part: test_aa_temporal_study */
     static aa_result r;
     gt_error e;
     int rc = aa_study(&ctx, &rq, &r, &e);

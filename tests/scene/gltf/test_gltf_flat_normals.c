@@ -36,7 +36,18 @@ static int flat_copy(const scene *s, scene *out)
         scene_mesh_compute_flat_normals(f);
     }
     for (int i = 0; i < s->material_count; ++i)
-        scene_add_material(out, s->materials[i]);
+        if (scene_add_material(out, s->materials[i]) < 0 ||
+            (s->alpha_cutoff && scene_set_alpha_cutoff(out, i, s->alpha_cutoff[i]) != 0))
+            return -1;
+    if (s->texture_count > 0 && !(out->textures = calloc((size_t)s->texture_count, sizeof *out->textures)))
+        return -1;
+    for (int i = 0; i < s->texture_count; ++i, ++out->texture_count) { /* textured scenes (aa-thin) */
+        size_t bytes = 4 * (size_t)s->textures[i].width * s->textures[i].height;
+        out->textures[i] = s->textures[i];
+        if (!(out->textures[i].rgba = malloc(bytes)))
+            return -1;
+        memcpy(out->textures[i].rgba, s->textures[i].rgba, bytes);
+    }
     return 0;
 }
 
