@@ -1,0 +1,73 @@
+/* The ambient terms engines compute under an environment, per pixel, from
+ * the G-buffer and an AO / bent-normal buffer (issue 28, item 2):
+ *
+ * diffuse (Lambert, albedo rho per channel), outgoing radiance per unit
+ * albedo (L_o / rho, as the environment references store it):
+ *   unoccluded        E(n) / pi
+ *   ao-n              E(n) / pi AO                    (AO x the pre-convolved probe)
+ *   ao-bent           E(b) / pi AO                    (b the unit bent normal)
+ *   multibounce-n     E(n) / pi G(AO, rho)            (G: the GTAO multi-bounce function,
+ *   multibounce-bent  E(b) / pi G(AO, rho)             realtime/multibounce.h, per channel)
+ * with E the irradiance from 9 SH coefficients (luts/sh_irradiance.h) or the
+ * exact irradiance map (luts/irradiance_map.h);
+ *
+ * specular (GGX, F0 per channel), the split sum times a specular occlusion
+ *   P(R, r) (F0 A(n.v, r) + B(n.v, r)) V_s
+ * (luts/prefiltered_radiance.h, luts/dfg_lut.h), V_s = 1 unoccluded or one
+ * variant of realtime/specular_occlusion_screen.h (AO as V_s, Lagarde,
+ * cone/cone, the GTSO cone/lobe LUT).
+ *
+ * The talk's claim (Jimenez et al. 2016, seed 001): AO x a pre-convolved
+ * probe "will still be accurate for the case of a white dome, but not for
+ * any other scenario": under a constant environment E(b) = E(n) = pi L and
+ * ao-n is L AO, exactly the white-dome AO shading; elsewhere E(n) AO is
+ * \int L cos times \int V cos / pi, not \int V L cos. */
+#ifndef GTLAB_REALTIME_ENV_APPROX_H
+#define GTLAB_REALTIME_ENV_APPROX_H
+
+#include "luts/dfg_lut.h"
+#include "luts/irradiance_map.h"
+#include "luts/prefiltered_radiance.h"
+#include "luts/sh_irradiance.h"
+#include "realtime/multibounce.h"
+
+typedef enum { ENV_IRRADIANCE_SH9, ENV_IRRADIANCE_MAP, ENV_IRRADIANCE_SOURCES } env_irradiance_source;
+
+typedef enum {
+    ENV_DIFFUSE_UNOCCLUDED,
+    ENV_DIFFUSE_AO_N,
+    ENV_DIFFUSE_AO_BENT,
+    ENV_DIFFUSE_MULTIBOUNCE_N,
+    ENV_DIFFUSE_MULTIBOUNCE_BENT,
+    ENV_DIFFUSE_KINDS
+} env_diffuse_kind;
+
+const char *env_irradiance_source_name(env_irradiance_source s); /* "sh9", "map" */
+const char *env_diffuse_kind_name(env_diffuse_kind k);           /* "unoccluded", "ao-n", ... */
+
+/* What the approximations read (not owned; a member may be NULL when no
+ * approximation that needs it is asked for). */
+typedef struct {
+    const sh9_rgb *sh;
+    const irradiance_map *map;
+    const prefiltered_radiance *prefiltered;
+    const dfg_lut *dfg;
+    const multibounce_model *multibounce;
+} env_approx_lighting;
+
+/* E(n) from the chosen source (SH clamped at 0, as engines do). */
+void env_approx_irradiance(const env_approx_lighting *l, env_irradiance_source s, const double n[3], double e[3]);
+
+/* The unit bent normal from a buffer's bent vector (any length; n where it is zero). */
+void env_approx_unit_bent(const double bent[3], const double n[3], double out[3]);
+
+/* Diffuse outgoing radiance per unit albedo of one kind; `bent` unit
+ * (env_approx_unit_bent); the albedo matters to the multi-bounce kinds only. */
+void env_approx_diffuse(const env_approx_lighting *l, env_irradiance_source s, env_diffuse_kind k,
+                        const double n[3], const double bent[3], double ao, const double albedo[3], double out[3]);
+
+/* Specular outgoing radiance: split sum times v_s. */
+void env_approx_specular(const env_approx_lighting *l, const double R[3], double n_dot_v, double roughness,
+                         const double f0[3], double v_s, double out[3]);
+
+#endif
