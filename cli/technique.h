@@ -38,6 +38,25 @@ typedef struct {
     static const all_stage id##_stages[] = {{key, title, run, writes, NULL}, {NULL, NULL, NULL, NULL, NULL}}; \
     const technique technique_##id = {.name = key, .stages = id##_stages}
 
+/* A stage function `fn` that runs a study at the run's quality and renders
+ * its section: with GTLAB_STUDY_STAGE, the study's types and functions are
+ * named by its prefix (P_result, P_request, P_default_request(quality),
+ * P_study(&ctx->study, &request, &result, e)); ..._NO_REQUEST names the
+ * result type and the study, which takes no request. */
+#define GTLAB_STUDY_STAGE(fn, prefix, section)                                                           \
+    static int fn(report_context *ctx, gt_error *e)                                                     \
+    {                                                                                                  \
+        static prefix##_result r;                                                                      \
+        prefix##_request rq = prefix##_default_request(ctx->study.quality);                            \
+        return prefix##_study(&ctx->study, &rq, &r, e) != 0 ? -1 : section(ctx, &r, e);                \
+    }
+#define GTLAB_STUDY_STAGE_NO_REQUEST(fn, result_t, study_fn, section_fn)                         \
+    static int fn(report_context *ctx, gt_error *e)                                       \
+    {                                                                                    \
+        static result_t r;                                                               \
+        return study_fn(&ctx->study, &r, e) != 0 ? -1 : section_fn(ctx, &r, e);                \
+    }
+
 /* The registered techniques, in the report's order, ended by NULL. */
 extern const technique *const gtlab_techniques[];
 

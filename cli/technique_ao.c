@@ -5,12 +5,7 @@
 #include "report/ao_section.h"
 #include "studies/ao_references.h"
 
-static int all_stage_ao_references(report_context *ctx, gt_error *e)
-{
-    static ao_references_result r;
-    ao_references_request rq = ao_references_default_request(ctx->study.quality);
-    return ao_references_study(&ctx->study, &rq, &r, e) != 0 ? -1 : ao_references_section(ctx, &r, e);
-}
+GTLAB_STUDY_STAGE(all_stage_ao_references, ao_references, ao_references_section)
 
 static const cli_subcommand benches[] = {
     {"convergence", bench_convergence, "AO time to RMSE 0.01, plain against the height-field control variate"},

@@ -51,12 +51,7 @@ static int lut_best_fit_normals(int argc, char **argv)
     return EXIT_OK;
 }
 
-static int all_stage_normals(report_context *ctx, gt_error *e)
-{
-    static normals_result r;
-    normals_request rq = normals_default_request(ctx->study.quality);
-    return normals_study(&ctx->study, &rq, &r, e) != 0 ? -1 : normals_section(ctx, &r, e);
-}
+GTLAB_STUDY_STAGE(all_stage_normals, normals, normals_section)
 
 static const cli_subcommand luts[] = {
     {"best-fit-normals", lut_best_fit_normals, "best-fit RGB8 G-buffer normals (Kaplanyan 2010): the scale table"},
@@ -78,11 +73,7 @@ static int all_stage_hdr_precision(report_context *ctx, gt_error *e)
 GTLAB_STAGE_TECHNIQUE(hdr_precision, "hdr-precision", "gamma vs linear and HDR lower bounds", all_stage_hdr_precision,
                       HDR_PRECISION_DIR);
 
-static int all_stage_color_grading(report_context *ctx, gt_error *e)
-{
-    static grading_result r;
-    return color_grading_study(&ctx->study, &r, e) != 0 ? -1 : color_grading_section(ctx, &r, e);
-}
+GTLAB_STUDY_STAGE_NO_REQUEST(all_stage_color_grading, grading_result, color_grading_study, color_grading_section)
 
 GTLAB_STAGE_TECHNIQUE(color_grading, "color-grading", "colour-grading LUTs", all_stage_color_grading, GRADING_DIR);
 
@@ -129,12 +120,7 @@ static int fit_sg_ndf(int argc, char **argv)
     return EXIT_OK;
 }
 
-static int all_stage_sg_ndf(report_context *ctx, gt_error *e)
-{
-    static sg_ndf_result r;
-    sg_ndf_request rq = sg_ndf_default_request(ctx->study.quality);
-    return sg_ndf_study(&ctx->study, &rq, &r, e) != 0 ? -1 : sg_ndf_section(ctx, &r, e);
-}
+GTLAB_STUDY_STAGE(all_stage_sg_ndf, sg_ndf, sg_ndf_section)
 
 static const cli_subcommand sg_fits[] = {
     {"sg-ndf", fit_sg_ndf, "spherical Gaussians fitted to anisotropic Ward/GGX NDFs (Kaplanyan 2010): JSON, C header"},

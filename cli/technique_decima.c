@@ -83,12 +83,7 @@ static int bench_atmosphere(int argc, char **argv)
     return EXIT_OK;
 }
 
-static int all_stage_atmosphere(report_context *ctx, gt_error *e)
-{
-    static atmosphere_luts_result r;
-    atmosphere_luts_request rq = atmosphere_luts_default_request(ctx->study.quality);
-    return atmosphere_luts_study(&ctx->study, &rq, &r, e) != 0 ? -1 : atmosphere_section(ctx, &r, e);
-}
+GTLAB_STUDY_STAGE(all_stage_atmosphere, atmosphere_luts, atmosphere_section)
 
 static const cli_subcommand luts[] = {
     {"atmosphere", lut_atmosphere, "Decima height-fog atmosphere: in-scatter, sun, sky vs theta_s, theta_v, y, weather"},
@@ -158,12 +153,7 @@ static int bench_fog(int argc, char **argv)
     return EXIT_OK;
 }
 
-static int all_stage_fog(report_context *ctx, gt_error *e)
-{
-    static height_fog_result r;
-    height_fog_request rq = height_fog_default_request(ctx->study.quality);
-    return height_fog_study(&ctx->study, &rq, &r, e) != 0 ? -1 : height_fog_section(ctx, &r, e);
-}
+GTLAB_STUDY_STAGE(all_stage_fog, height_fog, height_fog_section)
 
 static const cli_subcommand approx[] = {
     {"height-fog", approx_height_fog, "the Decima talk's analytic height fog (published or corrected)"},
@@ -176,11 +166,6 @@ static const all_stage fog_stages[] = {{"fog", "height fog", all_stage_fog, HEIG
 const technique technique_fog = {
     .name = "fog", .subcommands = {[VERB_APPROX] = approx, [VERB_BENCH] = bench}, .stages = fog_stages};
 
-static int all_stage_aa(report_context *ctx, gt_error *e)
-{
-    static aa_result r;
-    aa_request rq = aa_default_request(ctx->study.quality);
-    return aa_study(&ctx->study, &rq, &r, e) != 0 ? -1 : aa_section(ctx, &r, e);
-}
+GTLAB_STUDY_STAGE(all_stage_aa, aa, aa_section)
 
 GTLAB_STAGE_TECHNIQUE(anti_aliasing, "aa", "anti-aliasing against supersampled truth", all_stage_aa, AA_DIR);

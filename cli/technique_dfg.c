@@ -39,12 +39,7 @@ static int lut_dfg(int argc, char **argv)
     return EXIT_OK;
 }
 
-static int all_stage_dfg(report_context *ctx, gt_error *e)
-{
-    static dfg_result r;
-    dfg_request rq = dfg_default_request(ctx->study.quality);
-    return dfg_study(&ctx->study, &rq, &r, e) != 0 ? -1 : dfg_section(ctx, &r, e);
-}
+GTLAB_STUDY_STAGE(all_stage_dfg, dfg, dfg_section)
 
 static const cli_subcommand luts[] = {
     {"dfg", lut_dfg, "split-sum DFG (Karis 2013): scale, bias, albedo vs n.v and roughness: EXR, PNG, C, HLSL, GLSL"},

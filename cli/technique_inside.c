@@ -54,26 +54,11 @@ static int check_dither(int argc, char **argv)
     return dither_check_print(&r, stdout) ? EXIT_INTERNAL_ERROR : EXIT_OK;
 }
 
-static int all_stage_dither(report_context *ctx, gt_error *e)
-{
-    static dither_result r;
-    dither_request rq = dither_default_request(ctx->study.quality);
-    return dither_study(&ctx->study, &rq, &r, e) != 0 ? -1 : dither_section(ctx, &r, e);
-}
+GTLAB_STUDY_STAGE(all_stage_dither, dither, dither_section)
 
-static int all_stage_bloom(report_context *ctx, gt_error *e)
-{
-    static bloom_result r;
-    bloom_request rq = bloom_default_request(ctx->study.quality);
-    return bloom_study(&ctx->study, &rq, &r, e) != 0 ? -1 : bloom_section(ctx, &r, e);
-}
+GTLAB_STUDY_STAGE(all_stage_bloom, bloom, bloom_section)
 
-static int all_stage_ao_decals(report_context *ctx, gt_error *e)
-{
-    static ao_decals_result r;
-    ao_decals_request rq = ao_decals_default_request(ctx->study.quality);
-    return ao_decals_study(&ctx->study, &rq, &r, e) != 0 ? -1 : ao_decals_section(ctx, &r, e);
-}
+GTLAB_STUDY_STAGE(all_stage_ao_decals, ao_decals, ao_decals_section)
 
 static const cli_subcommand luts[] = {{"blue-noise", lut_blue_noise, "void-and-cluster blue noise: EXR, PNG"},
                                       {NULL, NULL, NULL}};

@@ -7,12 +7,10 @@
 #define _GNU_SOURCE
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "cli/cli.h"
 #include "cli/cli_options.h"
 #include "cli/technique.h"
-#include "core/atomic_file.h"
 #include "core/threads.h"
 #include "fitters/fit_multibounce.h"
 #include "report/multibounce_section.h"
@@ -47,15 +45,6 @@ static const cli_command fit_command = {
     "example: gtlab render multibounce --scene builtin:corner --albedo 0.1,0.2,0.3,0.4,0.5,0.7,0.9 -o c.exr\n"
     "         gtlab fit multibounce --data c.exr m.exr -o fit.json\n"
     "exit status: 0 success, 1 bad input, 2 internal error"};
-
-/* F without a trailing ".json", with `extension` appended. */
-static void sibling_path(const char *json, const char *extension, char *out, size_t size)
-{
-    size_t n = strlen(json);
-    if (n > 5 && strcmp(json + n - 5, ".json") == 0)
-        n -= 5;
-    snprintf(out, size, "%.*s%s", (int)n, json, extension);
-}
 
 static void print_fit(const char *title, const multibounce_fit *f, const multibounce_errors *err)
 {
@@ -113,19 +102,9 @@ static int fit_multibounce(int argc, char **argv)
         return cli_failf("--data", "no reference files given (see 'gtlab fit multibounce --help')");
     if (!output)
         return cli_failf("-o", "an output file is required (fit.json)");
-    char header_path[4096], hlsl_path[4096], glsl_path[4096];
-    sibling_path(output, ".h", header_path, sizeof header_path);
-    sibling_path(output, ".hlsl", hlsl_path, sizeof hlsl_path);
-    sibling_path(output, ".glsl", glsl_path, sizeof glsl_path);
-    if (!header)
-        header = header_path;
-    if (!hlsl)
-        hlsl = hlsl_path;
-    if (!glsl)
-        glsl = glsl_path;
+    multibounce_output_files out = {output, header, hlsl, glsl, {{0}}};
     gt_error e;
-    if (atomic_file_check_writable(output, &e) != 0 || atomic_file_check_writable(header, &e) != 0 ||
-        atomic_file_check_writable(hlsl, &e) != 0 || atomic_file_check_writable(glsl, &e) != 0)
+    if (multibounce_output_files_resolve(&out, &e) != 0)
         return cli_fail(&e);
     multibounce_data d;
     multibounce_data_init(&d);
@@ -134,7 +113,7 @@ static int fit_multibounce(int argc, char **argv)
     if (!a)
         status = cli_failf("fit multibounce", "out of memory");
     else if (multibounce_fit_input_load(files, data.count, &d, &e) != 0 || multibounce_analyse(&d, a, &e) != 0 ||
-             multibounce_write_outputs(&d, a, command_line, output, header, hlsl, glsl, &e) != 0)
+             multibounce_write_outputs(&d, a, command_line, out.json, out.header, out.hlsl, out.glsl, &e) != 0)
         status = cli_fail(&e);
     else
         print_summary(&d, a);
@@ -224,11 +203,7 @@ static const cli_subcommand benches[] = {
     {"fit", bench_fit, "a million-sample fit, 1- vs 1024-sample blocks"},
     {NULL, NULL, NULL},
 };
-static int all_stage_multibounce(report_context *ctx, gt_error *e)
-{
-    static multibounce_study_result r;
-    return multibounce_study(&ctx->study, &r, e) != 0 ? -1 : multibounce_section(ctx, &r, e);
-}
+GTLAB_STUDY_STAGE_NO_REQUEST(all_stage_multibounce, multibounce_study_result, multibounce_study, multibounce_section)
 
 static const all_stage stages[] = {
     {"multibounce", "multi-bounce refit", all_stage_multibounce, NULL, NULL},

@@ -13,10 +13,8 @@
 #include "cli/cli_options.h"
 #include "cli/technique.h"
 #include "core/atomic_file.h"
-#include "core/progress.h"
 #include "core/reference_schema.h"
 #include "core/threads.h"
-#include "luts/lut_writers.h"
 #include "luts/specular_occlusion_lut.h"
 #include "luts/specular_occlusion_lut_writers.h"
 #include "report/aperture_fit_figures.h"
@@ -106,29 +104,14 @@ static int lut_specular_occlusion(int argc, char **argv)
     if (cli_options_parse(&lut_command, (void *[]){&o.size, &o.lobe, &o.axes, &o.threads, &o.dir}, argc, argv, &status) != 0 ||
         (status = cli_make_output_dir(o.dir)) != 0)
         return status;
-    double start = seconds_now();
-    so_lut lut;
-    if (so_lut_build(&lut, (int)o.size, (so_lobe)o.lobe, (so_lut_axes)o.axes, (int)o.threads) != 0)
-        return cli_failf("lut specular-occlusion", "out of memory");
-    double seconds = seconds_now() - start, max_interp, rms_interp;
-    so_lut_interpolation_error(&lut, INTERPOLATION_POINTS, 1u, (int)o.threads, &max_interp, &rms_interp);
-    char base[128], identifier[128], path[4096], description[1024];
-    snprintf(base, sizeof base, "specular_occlusion_%s_%ld", so_lobe_name(o.lobe), o.size);
-    snprintf(identifier, sizeof identifier, "gtlab_specular_occlusion_%s_%ld", o.lobe == SO_LOBE_GGX_D ? "ggx_d"
-             : so_lobe_name(o.lobe), o.size);
-    snprintf(description, sizeof description, "GTSO cone/lobe specular occlusion, lobe %s (at n = v = R), size %ld, axes %s: %s",
-             so_lobe_name(o.lobe), o.size, so_lut_axes_name(o.axes), so_lut_axes_description(o.axes));
-    snprintf(path, sizeof path, "%s/%s.json", o.dir, base);
+    so_lut_made made;
     gt_error e;
-    status = EXIT_OK;
-    if (lut_write_all(o.dir, base, identifier, lut.data, (int)o.size, description, &e) != 0 ||
-        so_lut_write_json(path, &lut, seconds, INTERPOLATION_POINTS, max_interp, rms_interp, &e) != 0)
-        status = cli_fail(&e);
-    else
-        printf("%s/%s.{exr,png,h,json}: %ld^3 in %.2f s; quadrature error <= %.1e; trilinear error max %.2e, rms %.2e\n",
-               o.dir, base, o.size, seconds, lut.max_error_estimate, max_interp, rms_interp);
-    so_lut_free(&lut);
-    return status;
+    if (so_lut_make(o.dir, (int)o.size, (so_lobe)o.lobe, (so_lut_axes)o.axes, (int)o.threads, INTERPOLATION_POINTS,
+                    &made, &e) != 0)
+        return cli_fail(&e);
+    printf("%s/%s.{exr,png,h,json}: %ld^3 in %.2f s; quadrature error <= %.1e; trilinear error max %.2e, rms %.2e\n",
+           o.dir, made.base, o.size, made.seconds, made.max_error_estimate, made.max_interp, made.rms_interp);
+    return EXIT_OK;
 }
 
 enum { MAX_CASES = 32 };
@@ -227,11 +210,8 @@ static const cli_subcommand luts[] = {
     {"specular-occlusion", lut_specular_occlusion, "GTSO cone/lobe V_s(a_v, beta, r): EXR, 8-bit PNG, C header"},
     {NULL, NULL, NULL},
 };
-static int all_stage_specular_occlusion(report_context *ctx, gt_error *e)
-{
-    static so_study_result r;
-    return specular_occlusion_study(&ctx->study, &r, e) != 0 ? -1 : specular_occlusion_section(ctx, &r, e);
-}
+GTLAB_STUDY_STAGE_NO_REQUEST(all_stage_specular_occlusion, so_study_result, specular_occlusion_study,
+                             specular_occlusion_section)
 
 static const all_stage stages[] = {
     {"specular-occlusion", "specular occlusion", all_stage_specular_occlusion, NULL, NULL},

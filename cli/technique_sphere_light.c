@@ -181,11 +181,7 @@ static const cli_subcommand benches[] = {
     {"sphere-light", bench_sphere_light, "cost of the Newton step: instructions and ns"},
     {NULL, NULL, NULL},
 };
-static int all_stage_sphere_light(report_context *ctx, gt_error *e)
-{
-    static sphere_light_result r;
-    return sphere_light_study(&ctx->study, &r, e) != 0 ? -1 : sphere_light_section(ctx, &r, e);
-}
+GTLAB_STUDY_STAGE_NO_REQUEST(all_stage_sphere_light, sphere_light_result, sphere_light_study, sphere_light_section)
 
 static const all_stage stages[] = {
     {"sphere-light", "GGX sphere lights", all_stage_sphere_light, NULL, NULL},

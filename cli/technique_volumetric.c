@@ -71,12 +71,7 @@ static int bench_raymarch(int argc, char **argv)
     return EXIT_OK;
 }
 
-static int all_stage_volumetric(report_context *ctx, gt_error *e)
-{
-    static vlight_result r;
-    vlight_request rq = vlight_default_request(ctx->study.quality);
-    return vlight_study(&ctx->study, &rq, &r, e) != 0 ? -1 : vlight_section(ctx, &r, e);
-}
+GTLAB_STUDY_STAGE(all_stage_volumetric, vlight, vlight_section)
 
 static const cli_subcommand approx[] = {
     {"raymarch", approx_raymarch, "INSIDE's volumetric-light ray-march (noise, steps, half res, frames)"},

@@ -182,4 +182,15 @@ int multibounce_write_outputs(const multibounce_data *d, const multibounce_analy
                               const char *json_path, const char *header_path, const char *hlsl_path,
                               const char *glsl_path, gt_error *e);
 
+/* The fit's output files: the JSON and its C header, HLSL and GLSL. */
+typedef struct {
+    const char *json, *header, *hlsl, *glsl;
+    char sibling[3][4096]; /* storage for the derived paths */
+} multibounce_output_files;
+
+/* Points a NULL header / hlsl / glsl at the JSON's path with ".json"
+ * replaced by .h / .hlsl / .glsl, then checks every path can be written
+ * (before any work). 0, or -1 with e naming the file. */
+int multibounce_output_files_resolve(multibounce_output_files *f, gt_error *e);
+
 #endif

@@ -325,3 +325,28 @@ int multibounce_write_outputs(const multibounce_data *d, const multibounce_analy
         return -1;
     return 0;
 }
+
+/* json without a trailing ".json", with `extension` appended. */
+static void sibling_path(const char *json, const char *extension, char *out, size_t size)
+{
+    size_t n = strlen(json);
+    if (n > 5 && strcmp(json + n - 5, ".json") == 0)
+        n -= 5;
+    snprintf(out, size, "%.*s%s", (int)n, json, extension);
+}
+
+int multibounce_output_files_resolve(multibounce_output_files *f, gt_error *e)
+{
+    const char **paths[3] = {&f->header, &f->hlsl, &f->glsl}, *extensions[3] = {".h", ".hlsl", ".glsl"};
+    for (int i = 0; i < 3; ++i)
+        if (!*paths[i]) {
+            sibling_path(f->json, extensions[i], f->sibling[i], sizeof f->sibling[i]);
+            *paths[i] = f->sibling[i];
+        }
+    if (atomic_file_check_writable(f->json, e) != 0)
+        return -1;
+    for (int i = 0; i < 3; ++i)
+        if (atomic_file_check_writable(*paths[i], e) != 0)
+            return -1;
+    return 0;
+}

@@ -13,4 +13,18 @@
 int so_lut_write_json(const char *path, const so_lut *lut, double seconds, int points, double max_interp,
                       double rms_interp, gt_error *e);
 
+/* What so_lut_make built and wrote. */
+typedef struct {
+    char base[128];                  /* specular_occlusion_<lobe>_<size> */
+    double seconds;                  /* the build's */
+    double max_error_estimate;       /* the quadrature's */
+    double max_interp, rms_interp;   /* trilinear lookup against direct integration */
+} so_lut_made;
+
+/* Builds the table and writes dir/<base>.{exr,png,h} (lut_writers.h) and
+ * .json, its interpolation error measured at `points` random points. 0, or
+ * -1 with e. */
+int so_lut_make(const char *dir, int size, so_lobe lobe, so_lut_axes axes, int threads, int points, so_lut_made *out,
+                gt_error *e);
+
 #endif
