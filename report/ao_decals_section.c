@@ -53,6 +53,7 @@ static void scene_findings(report_context *ctx, const ao_decals_result *r)
 {
     const ao_decal_scene_row *box = scene_row(r, "box-on-plane", "exact"), *over = scene_row(r, "overlap-on-plane", "exact");
     const ao_decal_scene_row *corner = scene_row(r, "box-in-corner", "exact"), *walls = scene_row(r, "box-in-corner", "walls");
+    const ao_decal_scene_row *engine = scene_row(r, "overlap-on-plane", "engine");
     const ao_decal_scene_row *pill_t = scene_row(r, "pill-on-plane", "point decal, talk"),
                              *pill_l = scene_row(r, "pill-on-plane", "point decal, light");
     report_finding(ctx->doc, "AO decals",
@@ -61,10 +62,13 @@ static void scene_findings(report_context *ctx, const ao_decals_result *r)
                    "overlap-on-plane RMSE %.4f where two or more occluders act against %.4f elsewhere, mean error "
                    "%+.4f (over-occlusion); in the corner the walls times the exact crate (RMSE %.4f, mean %+.4f) "
                    "are worse than no crate decal at all (%.4f): the crate blocks directions the walls already block. "
+                   "Below the horizon (the sphere sunk into the floor, alone): the exact clipped sphere %.4f, Quilez's "
+                   "%.4f (it assumes the occluder clear of the surface, as the talk says). "
                    "The pill's point decal (its ellipsoid x %.0f, the talk's full transform): RMSE %.4f with the "
                    "talk's sign, %.4f with a light's.",
                    box->rmse, 100.0 * box->outlier_share, over->region_rmse[AO_REGION_OVERLAP],
                    over->region_rmse[AO_REGION_SINGLE], over->bias, corner->rmse, corner->bias, walls->rmse,
+                   over->region_rmse[AO_REGION_CLIPPED], engine->region_rmse[AO_REGION_CLIPPED],
                    AO_DECAL_POINT_RADIUS, pill_t->rmse, pill_l->rmse);
 }
 

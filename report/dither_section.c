@@ -87,7 +87,8 @@ int dither_section(report_context *ctx, const dither_result *r, gt_error *e)
     report_paragraph(ctx->doc,
                      "Quantisation to 8-bit UNORM (round to nearest) of a %dx%d gradient (0.20 .. 0.30) and of a "
                      "%dx%d tone-mapped sphere-light render (%d spp), with no dither, each pattern as RPDF and as "
-                     "TPDF (the talk's remap_tri), and the talk's two formulas as written. Every pattern has a flat "
+                     "TPDF (the talk's remap_tri), and the talk's two formulas as written; then to 10-bit UNORM with no, "
+                     "blue RPDF and blue TPDF dither (rows \"..., 10-bit\", errors in 10-bit LSB). Every pattern has a flat "
                      "histogram, so the dither's power is equal. Blue noise: void-and-cluster %d^2, 4 channels, "
                      "built in %.2f s (dither/blue_noise_%d.exr, .png); its radially averaged power below n/16 is "
                      "%.3f of white noise's and %.2f above n/4; after remap_tri (not monotone) %.3f and %.2f of "

@@ -18,7 +18,7 @@ static const ao_decal_scene decal_scenes[] = {
     {"overlap-on-plane", 0, 5,
      {ELLIPSOID(-0.5f, 1.0f, 0.3f, 0.7f, 0.7f, 0.7f), ELLIPSOID(0.4f, 1.0f, 0.3f, 0.7f, 0.7f, 0.7f),
       BOX(0.9f, 0.5f, -1.0f, 0.6f, 0.5f, 0.5f), ELLIPSOID(1.3f, 0.6f, -0.6f, 0.5f, 0.5f, 0.5f),
-      ELLIPSOID(-2.0f, 0.3f, -1.6f, 0.8f, 0.8f, 0.8f)}},
+      ELLIPSOID(-3.2f, 0.3f, -2.4f, 0.8f, 0.8f, 0.8f)}},
 };
 
 int ao_decal_scene_count(void) { return (int)(sizeof decal_scenes / sizeof decal_scenes[0]); }
@@ -211,5 +211,5 @@ int builtin_scene_build_box_in_corner(scene *s) { return build(s, "box-in-corner
 
 int builtin_scene_build_overlap_on_plane(scene *s)
 {
-    return build(s, "overlap-on-plane", v3(5.0f, 4.5f, 6.5f), v3(0.2f, 0.5f, -0.4f));
+    return build(s, "overlap-on-plane", v3(5.0f, 5.5f, 6.5f), v3(-0.7f, 0.4f, -1.0f));
 }

@@ -607,8 +607,8 @@ static const builtin_scene scenes[] = {
      FLOOR "Overlapping occluders: spheres (mesh 1, meshed as pill-on-plane's) of radius 0.7 at\n"
      "(-0.5, 1, 0.3) and (0.4, 1, 0.3) (they intersect), of radius 0.5 at (1.3, 0.6, -0.6) piercing a\n"
      "crate (mesh 2: x in [0.3, 1.5], y in [0, 1], z in [-1.5, -0.5], no bottom), and of radius 0.8 at\n"
-     "(-2, 0.3, -1.6), sunk into the floor.\n" WHITE_MATERIAL "Bounds: [-50, 50] x [-0.5, 1.7] x [-50, 50].\n"
-     "Camera: position (5, 4.5, 6.5), target (0.2, 0.5, -0.4), up +Y, yfov 45 deg, 512 x 512.\n"
+     "(-3.2, 0.3, -2.4), sunk into the floor, apart.\n" WHITE_MATERIAL "Bounds: [-50, 50] x [-0.5, 1.7] x [-50, 50].\n"
+     "Camera: position (5, 5.5, 6.5), target (-0.7, 0.4, -1), up +Y, yfov 45 deg, 512 x 512.\n"
      "Not in the studies' scene list: for the AO decals (studies/ao_decals.h).",
      builtin_scene_build_overlap_on_plane, 1},
     {"aa-thin", BUILTIN_AA_THIN_DESCRIPTION, builtin_build_aa_thin, 1},

@@ -12,7 +12,7 @@
 #include "metrics/ssim.h"
 #include "studies/dither_inputs.h"
 
-enum { MODULATION_BINS = 32, UNORM_BITS = 8 };
+enum { MODULATION_BINS = 32, UNORM_BITS = 8, WIDE_UNORM_BITS = 10 };
 
 dither_request dither_default_request(study_quality quality)
 {
@@ -27,6 +27,7 @@ typedef struct {
     dither_pattern pattern;
     dither_kind kind;
     int as_written; /* 1: the talk's formula as written; 2: and without dither_offset (tex / 255 into UNORM) */
+    int bits;       /* the UNORM target: UNORM_BITS, or WIDE_UNORM_BITS for the 10-bit rows */
 } dither_way;
 
 static double dither_at(const dither_way *w, const blue_noise_texture *blue, int x, int y)
@@ -41,11 +42,11 @@ static double dither_at(const dither_way *w, const blue_noise_texture *blue, int
 static void quantise(const dither_input *in, const dither_way *w, const blue_noise_texture *blue, double *q,
                      double *err, double *runs)
 {
-    double lsb = 1.0 / (ldexp(1.0, UNORM_BITS) - 1.0);
+    double lsb = 1.0 / (ldexp(1.0, w->bits) - 1.0);
     for (int y = 0; y < in->height; ++y)
         for (int x = 0; x < in->width; ++x) {
             size_t i = (size_t)y * in->width + x;
-            q[i] = dither_unorm(in->values[i], UNORM_BITS, dither_at(w, blue, x, y));
+            q[i] = dither_unorm(in->values[i], w->bits, dither_at(w, blue, x, y));
             err[i] = in->mask && !in->mask[i] ? 0.0 : (q[i] - in->values[i]) / lsb;
             runs[i] = in->mask && !in->mask[i] ? -1.0 - (double)i : q[i]; /* outside: never a run */
         }
@@ -74,10 +75,10 @@ static void modulation_amplitude(const dither_binned_moments *b, const double *m
 }
 
 /* Bias, variance and noise modulation over bins of the signal's fraction (LSB). */
-static int error_moments(const dither_input *in, const double *err, dither_row *row, gt_error *e)
+static int error_moments(const dither_input *in, const double *err, int bits, dither_row *row, gt_error *e)
 {
     dither_binned_moments b;
-    double m4[MODULATION_BINS] = {0}, sum = 0, sum_sq = 0, lo = INFINITY, hi = -INFINITY, scale = ldexp(1.0, UNORM_BITS) - 1.0;
+    double m4[MODULATION_BINS] = {0}, sum = 0, sum_sq = 0, lo = INFINITY, hi = -INFINITY, scale = ldexp(1.0, bits) - 1.0;
     size_t n = (size_t)in->width * in->height, counted = 0;
     if (dither_binned_init(&b, MODULATION_BINS, 0.0, 1.0, e) != 0)
         return -1;
@@ -152,34 +153,39 @@ static int score_way(const dither_input *in, const dither_way *w, const blue_noi
     if (rc == 0) {
         quantise(in, w, blue, q, err, runs);
         row->longest_run = dither_longest_run(runs, in->width, in->height);
-        rc = error_moments(in, err, row, e) || low_power_share(in, err, &row->low_power_share, e) ||
+        rc = error_moments(in, err, w->bits, row, e) || low_power_share(in, err, &row->low_power_share, e) ||
              dssim_pair(in, q, 0, &row->dssim, e) || dssim_pair(in, q, 1, &row->dssim_blurred, e);
     }
     free(q), free(err), free(runs);
     return rc ? -1 : 0;
 }
 
-/* none; each pattern as RPDF and TPDF (remap); the talk's two as-written forms. */
+/* none; each pattern as RPDF and TPDF (remap); the talk's two as-written forms; then the 10-bit
+ * target (issue 17 item 2): none, blue RPDF and blue TPDF (remap). */
 static int dither_ways(dither_way *ways)
 {
     int n = 0;
-    ways[n++] = (dither_way){DITHER_PATTERN_WHITE, DITHER_NONE, 0};
+    ways[n++] = (dither_way){DITHER_PATTERN_WHITE, DITHER_NONE, 0, UNORM_BITS};
     for (int p = 0; p < DITHER_PATTERN_COUNT; ++p) {
-        ways[n++] = (dither_way){(dither_pattern)p, DITHER_RPDF, 0};
-        ways[n++] = (dither_way){(dither_pattern)p, DITHER_TPDF_REMAP, 0};
+        ways[n++] = (dither_way){(dither_pattern)p, DITHER_RPDF, 0, UNORM_BITS};
+        ways[n++] = (dither_way){(dither_pattern)p, DITHER_TPDF_REMAP, 0, UNORM_BITS};
     }
-    ways[n++] = (dither_way){DITHER_PATTERN_WHITE, DITHER_TPDF_AVERAGE, 1};
-    ways[n++] = (dither_way){DITHER_PATTERN_BLUE, DITHER_RPDF, 2};
+    ways[n++] = (dither_way){DITHER_PATTERN_WHITE, DITHER_TPDF_AVERAGE, 1, UNORM_BITS};
+    ways[n++] = (dither_way){DITHER_PATTERN_BLUE, DITHER_RPDF, 2, UNORM_BITS};
+    ways[n++] = (dither_way){DITHER_PATTERN_WHITE, DITHER_NONE, 0, WIDE_UNORM_BITS};
+    ways[n++] = (dither_way){DITHER_PATTERN_BLUE, DITHER_RPDF, 0, WIDE_UNORM_BITS};
+    ways[n++] = (dither_way){DITHER_PATTERN_BLUE, DITHER_TPDF_REMAP, 0, WIDE_UNORM_BITS};
     return n;
 }
 
 static void way_label(const dither_way *w, char *label, size_t size)
 {
+    const char *target = w->bits == UNORM_BITS ? "" : ", 10-bit";
     if (w->kind == DITHER_NONE)
-        snprintf(label, size, "none");
+        snprintf(label, size, "none%s", target);
     else
-        snprintf(label, size, "%s %s%s", dither_pattern_name(w->pattern), dither_kind_name(w->kind),
-                 w->as_written ? " (as written)" : "");
+        snprintf(label, size, "%s %s%s%s", dither_pattern_name(w->pattern), dither_kind_name(w->kind),
+                 w->as_written ? " (as written)" : "", target);
 }
 
 static int study_image(const dither_input *in, const blue_noise_texture *blue, dither_image_result *out,

@@ -15,6 +15,8 @@
  * 1/12 or 1/6 LSB^2; the error variance is measured). Two rows reproduce the
  * talk's code as written: "(rand + rand) / 2" (a 1-LSB triangle) and
  * `outcol += tex / 255` (blue RPDF on [0, 1[ into a rounding quantiser).
+ * Then the 10-bit UNORM target with no, blue RPDF and blue TPDF dither
+ * ("..., 10-bit" rows; errors in 10-bit LSB, the gradient spans 102 of them).
  * Per row: bias and variance of the error (LSB), its noise modulation (the
  * spread of the variance over 32 bins of the signal's fraction f, and the
  * amplitude a of Var(f) = c + a (f (1 - f) - 1/6) by least squares over
@@ -35,7 +37,7 @@
 
 #define DITHER_DIR "dither"
 
-enum { DITHER_IMAGES = 2, DITHER_MAX_ROWS = 12, DITHER_SMALL_FLOAT_ROWS = 3 };
+enum { DITHER_IMAGES = 2, DITHER_MAX_ROWS = 16, DITHER_SMALL_FLOAT_ROWS = 3 };
 
 typedef struct {
     int gradient_width, gradient_height;

@@ -4,6 +4,8 @@
  *  - multiplying exact forms over-occludes the union: on overlap-on-plane their
  *    mean error is negative and the overlap region's RMSE exceeds the
  *    single-occluder region's by a factor above 2;
+ *  - where the sphere sunk into the floor is the only occluder, the exact
+ *    horizon-clipped sphere beats Quilez's (which ignores the horizon): RMSE below 0.8x;
  *  - in the corner the product of the walls and the exact crate over-occludes
  *    (mean error < 0);
  *  - the light's sign of the point decal beats the talk's wherever both are
@@ -39,6 +41,10 @@ int main(void)
     const ao_decal_scene_row *overlap = row_of(&r, "overlap-on-plane", "exact");
     CHECK(overlap && overlap->bias < 0.0);
     CHECK(overlap && overlap->region_rmse[AO_REGION_OVERLAP] > 2.0 * overlap->region_rmse[AO_REGION_SINGLE]);
+    const ao_decal_scene_row *engine = row_of(&r, "overlap-on-plane", "engine");
+    CHECK(overlap && engine && overlap->region_pixels[AO_REGION_CLIPPED] > 20);
+    CHECK_MSG(overlap && engine && overlap->region_rmse[AO_REGION_CLIPPED] < 0.8 * engine->region_rmse[AO_REGION_CLIPPED],
+              "clipped: exact %g, Quilez %g", overlap->region_rmse[AO_REGION_CLIPPED], engine->region_rmse[AO_REGION_CLIPPED]);
     const ao_decal_scene_row *corner = row_of(&r, "box-in-corner", "exact");
     CHECK(corner && corner->bias < 0.0);
     const char *scenes[] = {"pill-on-plane", "box-on-plane", "box-in-corner", "overlap-on-plane"};

@@ -1,6 +1,7 @@
 /* studies/dither and studies/bloom: the INSIDE sections' numbers without their
  * prose, at small sizes.
- * Dither: rows in the published order; TPDF rows have error variance 1/4 and
+ * Dither: rows in the published order, then the 10-bit target's (TPDF variance
+ * 1/4 LSB^2, unbiased, unmodulated; RPDF modulation 1); TPDF rows have error variance 1/4 and
  * a modulation amplitude within 5 of its standard errors of 0 on the
  * gradient, RPDF rows near 1; no-dither has the longest runs; the talk's
  * tex / 255 into a rounding target is biased by +1/2 LSB; R11G11B10 TPDF
@@ -15,6 +16,7 @@
  * (equal to Quilez's there), the refit better than the light's sign, which
  * is better than the published sign; the refit inside its bounds, with
  * standard errors, better than the published decal on held-out scenes. */
+#include <stdlib.h>
 #include <string.h>
 
 #include "studies/ao_decals.h"
@@ -40,7 +42,20 @@ static void check_dither(const char *dir)
     char path[4096];
     CHECK_MSG(dither_study(&ctx, &rq, &r, &e) == 0, "%s", e.message);
     const dither_image_result *g = &r.images[0];
-    CHECK(g->row_count == 11 && strcmp(g->rows[0].label, "none") == 0);
+    CHECK(g->row_count == 14 && strcmp(g->rows[0].label, "none") == 0);
+    /* 10-bit: TPDF variance 1/4 LSB^2 without modulation, RPDF's modulation 1 */
+    const dither_row *none10 = row_of(g, "none, 10-bit"), *rpdf10 = row_of(g, "blue rpdf, 10-bit"),
+                     *tpdf10 = row_of(g, "blue tpdf-remap, 10-bit");
+    CHECK(none10 && rpdf10 && tpdf10);
+    if (none10 && rpdf10 && tpdf10) {
+        CHECK_NEAR(tpdf10->variance, 0.25, 0.01);
+        CHECK(fabs(tpdf10->bias) < 0.01 && fabs(rpdf10->bias) < 0.01);
+        CHECK(fabs(tpdf10->modulation_amplitude) < 5 * tpdf10->modulation_amplitude_se + 0.03);
+        CHECK_MSG(fabs(rpdf10->modulation_amplitude - 1.0) < 0.1, "a %g", rpdf10->modulation_amplitude);
+        /* undithered 10-bit runs are a quarter of 8-bit's (4x the levels over the gradient) */
+        CHECK_MSG(abs(4 * none10->longest_run - g->rows[0].longest_run) <= 4, "runs %d, 8-bit %d", none10->longest_run,
+                  g->rows[0].longest_run);
+    }
     for (int p = 0; p < DITHER_PATTERN_COUNT; ++p) {
         const dither_row *rp = &g->rows[1 + 2 * p], *tp = &g->rows[2 + 2 * p];
         CHECK_NEAR(tp->variance, 0.25, 0.01);
