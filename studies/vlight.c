@@ -212,7 +212,7 @@ static int measure_shadow_sizes(vlight_run *r, vlight_result *out, gt_error *e)
         if (shadow_map_render(&r->v.es, &r->v.light, sizes[k], r->rq->shadow_bias, r->threads, &m, e) != 0)
             return -1;
         out->shadow_seconds[k] = seconds_now() - t0;
-        raymarch_lighting l = {&r->v.light, &r->v.medium, &m};
+        raymarch_lighting l = {&r->v.light, &r->v.medium, &m, NULL};
         raymarch_image(&l, &r->v.view, 1024, RAYMARCH_NOISE_NONE, NULL, 0, r->threads, r->frame);
         shadow_map_free(&m);
         image_score sc;
@@ -300,7 +300,7 @@ static int run_alloc(vlight_run *r, const study_context *ctx, const vlight_reque
             return -1;
     if (shadow_map_render(&r->v.es, &r->v.light, rq->shadow_size, rq->shadow_bias, ctx->threads, &r->shadows, e) != 0)
         return -1;
-    r->lighting = (raymarch_lighting){&r->v.light, &r->v.medium, &r->shadows};
+    r->lighting = (raymarch_lighting){&r->v.light, &r->v.medium, &r->shadows, NULL};
     return 0;
 }
 
@@ -376,7 +376,7 @@ int vlight_study(const study_context *ctx, const vlight_request *rq, vlight_resu
 static double time_frames(const vlight_setup *v, const shadow_map *m, const blue_noise_texture *blue, int steps,
                           float *out)
 {
-    raymarch_lighting l = {&v->light, &v->medium, m};
+    raymarch_lighting l = {&v->light, &v->medium, m, NULL};
     double t0 = seconds_now();
     int frames = 0;
     do
@@ -414,7 +414,7 @@ static int approx_frames(const vlight_approx_request *rq, const vlight_setup *v,
     long n = (long)rq->width * rq->height;
     float *frame = malloc(sizeof(float) * n), *half = malloc(sizeof(float) * n), *half_d = malloc(sizeof(float) * n);
     int rc = frame && half && half_d ? 0 : gt_error_set(e, "volumetric", "out of memory");
-    raymarch_lighting l = {&v->light, &v->medium, m};
+    raymarch_lighting l = {&v->light, &v->medium, m, NULL};
     for (int f = 0; f < rq->frames && rc == 0; ++f) {
         if (rq->half) {
             raymarch_image_half(&l, &v->view, rq->steps, rq->noise, blue, f, rq->threads, half, half_d);

@@ -185,7 +185,7 @@ int main(void)
     gt_error e;
     if (make_shadows(&spot, &shadows) != 0 || blue_noise_build(64, 1, 17, &blue, &e) != 0)
         return 1;
-    raymarch_lighting open = {&spot, &medium, NULL}, shadowed = {&spot, &medium, &shadows};
+    raymarch_lighting open = {&spot, &medium, NULL, NULL}, shadowed = {&spot, &medium, &shadows, NULL};
     check_convergence(&open, &r);
     check_unbiased(&shadowed, &r, &blue);
     check_blue_noise(&blue);
