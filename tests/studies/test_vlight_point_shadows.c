@@ -3,8 +3,8 @@
  * point light under the ceiling above the blocks, a 1024-step march with a
  * 512^2 cube matches the reference (quadrature with Embree shadow rays)
  * within 0.3% relative RMSE (0.05% measured), while the same march without
- * shadows is off by
- * over five times as much (1.5%); every face of the cube is used. */
+ * shadows is off by over five times as much (1.5%); every face of the cube
+ * is used. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
