@@ -49,6 +49,39 @@ void raymarch_upsample(const float *half, const float *half_distance, const raym
         }
 }
 
+/* Four taps at (u, v) + (+-1/2, +-1/2), nearest half pixel, equal weights. */
+static float noisy_pixel(const float *half, const float *half_distance, int hw, int hh, double u, double v,
+                         double depth)
+{
+    int nearest = -1, count = 0;
+    double sum = 0.0, nearest_gap = INFINITY;
+    for (int k = 0; k < 4; ++k) {
+        int i = clamp_index((int)floor(u + ((k & 1) ? 0.5 : -0.5) + 0.5), hw);
+        int j = clamp_index((int)floor(v + ((k >> 1) ? 0.5 : -0.5) + 0.5), hh), q = j * hw + i;
+        double gap = fabs(half_distance[q] - depth);
+        if (gap < nearest_gap)
+            nearest_gap = gap, nearest = q;
+        if (gap <= UPSAMPLE_DEPTH_TOLERANCE * depth)
+            sum += half[q], ++count;
+    }
+    return count > 0 ? (float)(sum / count) : half[nearest];
+}
+
+void raymarch_upsample_noisy(const float *half, const float *half_distance, const raymarch_view *view,
+                             const blue_noise_texture *blue, int frame, float *out)
+{
+    int hw = (view->width + 1) / 2, hh = (view->height + 1) / 2, shift = blue->size / 2 + 3;
+    for (int y = 0; y < view->height; ++y)
+        for (int x = 0; x < view->width; ++x) {
+            long p = (long)y * view->width + x;
+            double du = raymarch_offset(RAYMARCH_NOISE_BLUE, blue, frame, x, y) - 0.5;
+            double dv = raymarch_offset(RAYMARCH_NOISE_BLUE, blue, frame, x + shift, y + shift) - 0.5;
+            out[p] = view->distance[p] > 0.0f
+                         ? noisy_pixel(half, half_distance, hw, hh, 0.5 * x + du, 0.5 * y + dv, view->distance[p])
+                         : 0.0f;
+        }
+}
+
 void raymarch_accumulate(float *history, const float *frame, long count, double alpha, int first)
 {
     for (long p = 0; p < count; ++p)

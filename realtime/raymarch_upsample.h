@@ -11,9 +11,15 @@
  *           whose distance differs from the pixel's by more than
  *           UPSAMPLE_DEPTH_TOLERANCE of it (the talk's "depth-discard per
  *           sample"); if all four are discarded, the tap of nearest
- *           distance. The talk's noisy 4-tap blur (random tap positions,
- *           after Stachowiak's stochastic SSR) is not reproduced: the taps
- *           are the fixed bilinear ones;
+ *           distance;
+ *   noisy upsample, the talk's "noisy blur during depth-weighted upsample"
+ *           (after Stachowiak's stochastic SSR, which it cites): the same four
+ *           taps moved together by a per-pixel, per-frame offset of up to half
+ *           a half-resolution pixel each way (blue noise, two decorrelated
+ *           reads of the texture), each read at its nearest half pixel and
+ *           averaged with equal weights after the same depth discard; over
+ *           frames the taps cover a 2 x 2 half-pixel box, which breaks up the
+ *           half-resolution grid for TAA;
  *   history exponential accumulation with a static camera (no reprojection,
  *           no neighbourhood clamp: nothing moves), h_f = (1 - a) h_{f-1} + a x_f,
  *           h_0 = x_0. TAA's usual a = 0.1. */
@@ -32,6 +38,10 @@ void raymarch_image_half(const raymarch_lighting *l, const raymarch_view *view, 
 
 /* The depth-aware upsample of a half-resolution image to view's size. */
 void raymarch_upsample(const float *half, const float *half_distance, const raymarch_view *view, float *out);
+
+/* The noisy upsample of frame `frame` (offsets from `blue`, 1 channel or more). */
+void raymarch_upsample_noisy(const float *half, const float *half_distance, const raymarch_view *view,
+                             const blue_noise_texture *blue, int frame, float *out);
 
 /* history[p] = first ? frame[p] : (1 - alpha) history[p] + alpha frame[p]. */
 void raymarch_accumulate(float *history, const float *frame, long count, double alpha, int first);

@@ -46,9 +46,11 @@ double raymarch_ray(const raymarch_lighting *l, vec3 o, vec3 w, double distance,
     double delta = (t1 - t0) / steps, sum = 0.0;
     for (int i = 0; i < steps; ++i) {
         double t = t0 + (i + xi) * delta, j = volumetric_inscatter_density(l->light, l->medium, o, w, t);
+        vec3 x = v3((float)(o.x + t * w.x), (float)(o.y + t * w.y), (float)(o.z + t * w.z));
         if (j > 0.0 && l->shadows)
-            j *= shadow_map_visibility(l->shadows,
-                                       v3((float)(o.x + t * w.x), (float)(o.y + t * w.y), (float)(o.z + t * w.z)));
+            j *= shadow_map_visibility(l->shadows, x);
+        else if (j > 0.0 && l->cube)
+            j *= shadow_cube_visibility(l->cube, x);
         sum += j;
     }
     return delta * sum;

@@ -55,7 +55,8 @@ double raymarch_offset(raymarch_noise n, const blue_noise_texture *blue, int fra
 typedef struct {
     const volumetric_light *light;
     const volumetric_medium *medium;
-    const shadow_map *shadows; /* NULL: unshadowed */
+    const shadow_map *shadows; /* a spot's map; NULL: unshadowed (unless cube) */
+    const shadow_cube *cube;   /* a point light's cube of maps; NULL: none */
 } raymarch_lighting;
 
 /* L / I along o + t w, t in [0, distance], with `steps` steps at offset xi. */

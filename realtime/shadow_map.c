@@ -59,3 +59,23 @@ double shadow_map_visibility(const shadow_map *m, vec3 x)
     return (1.0 - fv) * ((1.0 - fu) * texel_lit(m, i, j, r) + fu * texel_lit(m, i + 1, j, r)) +
            fv * ((1.0 - fu) * texel_lit(m, i, j + 1, r) + fu * texel_lit(m, i + 1, j + 1, r));
 }
+
+vec3 shadow_cube_axis(int k)
+{
+    float sign = k & 1 ? -1.0f : 1.0f;
+    return k < 2 ? v3(sign, 0.0f, 0.0f) : k < 4 ? v3(0.0f, sign, 0.0f) : v3(0.0f, 0.0f, sign);
+}
+
+double shadow_cube_visibility(const shadow_cube *c, vec3 x)
+{
+    vec3 d = v3_sub(x, c->face[0].position);
+    float ax = fabsf(d.x), ay = fabsf(d.y), az = fabsf(d.z);
+    int k = ax >= ay && ax >= az ? (d.x < 0.0f) : ay >= az ? 2 + (d.y < 0.0f) : 4 + (d.z < 0.0f);
+    return shadow_map_visibility(&c->face[k], x);
+}
+
+void shadow_cube_free(shadow_cube *c)
+{
+    for (int k = 0; k < 6; ++k)
+        shadow_map_free(&c->face[k]);
+}

@@ -41,4 +41,17 @@ vec3 shadow_map_direction(const shadow_map *m, double u, double v);
 /* The PCF visibility of x in [0, 1]. */
 double shadow_map_visibility(const shadow_map *m, vec3 x);
 
+/* A point light's shadows: a cube of six maps from the light along +x, -x,
+ * +y, -y, +z, -z, each of half field of view 45 degrees; x is looked up in
+ * the face of the largest component of x - p (PCF clamps at the face's
+ * edges, so a texel's width of error along the seams). */
+typedef struct {
+    shadow_map face[6];
+} shadow_cube;
+
+/* The unit forward of face k (0 .. 5). */
+vec3 shadow_cube_axis(int k);
+double shadow_cube_visibility(const shadow_cube *c, vec3 x);
+void shadow_cube_free(shadow_cube *c);
+
 #endif

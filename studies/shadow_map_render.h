@@ -14,4 +14,8 @@
 int shadow_map_render(const embree_scene *es, const volumetric_light *spot, int size, double bias, int threads,
                       shadow_map *m, gt_error *e);
 
+/* A point light's cube of six size^2 maps (realtime/shadow_map.h). */
+int shadow_cube_render(const embree_scene *es, const volumetric_light *light, int size, double bias, int threads,
+                       shadow_cube *c, gt_error *e);
+
 #endif

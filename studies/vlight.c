@@ -102,7 +102,8 @@ static vlight_error summarise(const image_score *s, int n)
 
 static int start_frame(int seed) { return 1009 * seed; }
 
-/* One frame of the given noise and spp, full or half resolution (upsampled). */
+/* One frame of the given noise and spp, full or half resolution (half 1:
+ * bilinear depth-aware upsample, 2: the talk's noisy one). */
 static void render_frame(vlight_run *r, raymarch_noise noise, int spp, int seed, int frame, int half)
 {
     const blue_noise_texture *blue = &r->blue[seed];
@@ -111,7 +112,10 @@ static void render_frame(vlight_run *r, raymarch_noise noise, int spp, int seed,
         return;
     }
     raymarch_image_half(&r->lighting, &r->v.view, spp, noise, blue, frame, r->threads, r->half, r->half_distance);
-    raymarch_upsample(r->half, r->half_distance, &r->v.view, r->frame);
+    if (half == 2)
+        raymarch_upsample_noisy(r->half, r->half_distance, &r->v.view, blue, frame, r->frame);
+    else
+        raymarch_upsample(r->half, r->half_distance, &r->v.view, r->frame);
 }
 
 /* The single frame and the accumulated history of one (noise, spp, seed). */
@@ -190,6 +194,10 @@ static int measure_talk(vlight_run *r, vlight_result *out, gt_error *e)
         out->talk_spp[k] = talk_spp[k];
         out->talk[k] = summarise(acc, r->rq->seeds);
         out->talk_single[k] = summarise(single, r->rq->seeds);
+        for (int s = 0; s < r->rq->seeds; ++s)
+            if (measure(r, RAYMARCH_NOISE_BLUE, talk_spp[k], s, 2, &single[s], &acc[s], e) != 0)
+                return -1;
+        out->talk_noisy[k] = summarise(acc, r->rq->seeds);
     }
     return 0;
 }
@@ -204,7 +212,7 @@ static int measure_shadow_sizes(vlight_run *r, vlight_result *out, gt_error *e)
         if (shadow_map_render(&r->v.es, &r->v.light, sizes[k], r->rq->shadow_bias, r->threads, &m, e) != 0)
             return -1;
         out->shadow_seconds[k] = seconds_now() - t0;
-        raymarch_lighting l = {&r->v.light, &r->v.medium, &m};
+        raymarch_lighting l = {&r->v.light, &r->v.medium, &m, NULL};
         raymarch_image(&l, &r->v.view, 1024, RAYMARCH_NOISE_NONE, NULL, 0, r->threads, r->frame);
         shadow_map_free(&m);
         image_score sc;
@@ -234,7 +242,7 @@ static int write_strip(vlight_run *r, const char *dir, gt_error *e)
     } strip[] = {{"uniform_128", RAYMARCH_NOISE_NONE, 128, 0, 0}, {"uniform_24", RAYMARCH_NOISE_NONE, 24, 0, 0},
                  {"white_3", RAYMARCH_NOISE_WHITE, 3, 0, 0},      {"bayer_3", RAYMARCH_NOISE_BAYER, 3, 0, 0},
                  {"ign_3", RAYMARCH_NOISE_IGN, 3, 0, 0},          {"blue_3", RAYMARCH_NOISE_BLUE, 3, 0, 0},
-                 {"blue_3_accumulated", RAYMARCH_NOISE_BLUE, 3, 0, 1}, {"talk_half_blue_6_accumulated", RAYMARCH_NOISE_BLUE, 6, 1, 1}};
+                 {"blue_3_accumulated", RAYMARCH_NOISE_BLUE, 3, 0, 1}, {"talk_half_blue_6_accumulated", RAYMARCH_NOISE_BLUE, 6, 2, 1}};
     if (write_png(r, dir, "reference", r->reference, e) != 0)
         return -1;
     long n = (long)r->v.gb.width * r->v.gb.height;
@@ -292,7 +300,7 @@ static int run_alloc(vlight_run *r, const study_context *ctx, const vlight_reque
             return -1;
     if (shadow_map_render(&r->v.es, &r->v.light, rq->shadow_size, rq->shadow_bias, ctx->threads, &r->shadows, e) != 0)
         return -1;
-    r->lighting = (raymarch_lighting){&r->v.light, &r->v.medium, &r->shadows};
+    r->lighting = (raymarch_lighting){&r->v.light, &r->v.medium, &r->shadows, NULL};
     return 0;
 }
 
@@ -368,7 +376,7 @@ int vlight_study(const study_context *ctx, const vlight_request *rq, vlight_resu
 static double time_frames(const vlight_setup *v, const shadow_map *m, const blue_noise_texture *blue, int steps,
                           float *out)
 {
-    raymarch_lighting l = {&v->light, &v->medium, m};
+    raymarch_lighting l = {&v->light, &v->medium, m, NULL};
     double t0 = seconds_now();
     int frames = 0;
     do
@@ -406,11 +414,14 @@ static int approx_frames(const vlight_approx_request *rq, const vlight_setup *v,
     long n = (long)rq->width * rq->height;
     float *frame = malloc(sizeof(float) * n), *half = malloc(sizeof(float) * n), *half_d = malloc(sizeof(float) * n);
     int rc = frame && half && half_d ? 0 : gt_error_set(e, "volumetric", "out of memory");
-    raymarch_lighting l = {&v->light, &v->medium, m};
+    raymarch_lighting l = {&v->light, &v->medium, m, NULL};
     for (int f = 0; f < rq->frames && rc == 0; ++f) {
         if (rq->half) {
             raymarch_image_half(&l, &v->view, rq->steps, rq->noise, blue, f, rq->threads, half, half_d);
-            raymarch_upsample(half, half_d, &v->view, frame);
+            if (rq->half == 2)
+                raymarch_upsample_noisy(half, half_d, &v->view, blue, f, frame);
+            else
+                raymarch_upsample(half, half_d, &v->view, frame);
         } else
             raymarch_image(&l, &v->view, rq->steps, rq->noise, blue, f, rq->threads, frame);
         raymarch_accumulate(history, frame, n, rq->alpha, f == 0);

@@ -20,8 +20,8 @@
  * each noise needs to reach it is interpolated in log-log between the
  * sampled counts (infinite when the largest count does not reach it). The
  * talk's final configuration is half resolution, blue noise, the
- * depth-aware upsample and accumulation, at 3, 6 and 9 samples per
- * half-resolution pixel. The shadow map (512^2 unless varied) is a measured
+ * depth-aware upsample (bilinear taps, and the talk's noisy taps) and
+ * accumulation, at 3, 6 and 9 samples per half-resolution pixel. The shadow map (512^2 unless varied) is a measured
  * factor: the error of a 1024-step march (offset 1/2) per map size is its
  * floor. */
 #ifndef GTLAB_STUDIES_VLIGHT_H
@@ -66,6 +66,7 @@ typedef struct {
     int talk_spp[VLIGHT_TALK_SPP];                  /* 3, 6, 9 at half resolution */
     vlight_error talk[VLIGHT_TALK_SPP];             /* half res, blue, upsampled, accumulated */
     vlight_error talk_single[VLIGHT_TALK_SPP];      /* the same, frame 0 alone */
+    vlight_error talk_noisy[VLIGHT_TALK_SPP];       /* with the talk's noisy upsample, accumulated */
     int shadow_sizes[VLIGHT_SHADOW_SIZES];
     double shadow_rmse[VLIGHT_SHADOW_SIZES];        /* relative RMSE of 1024 midpoint steps */
     double shadow_seconds[VLIGHT_SHADOW_SIZES];
@@ -90,7 +91,7 @@ int vlight_bench(int width, int height, int steps, double *ns_per_pixel_sample, 
  * frames (1: a single frame), into out's vlight.L.R/G/B (radiance: the
  * light's intensity times L / I). Returns 0 or -1 with e. */
 typedef struct {
-    int width, height, steps, frames, half, shadow_size, threads;
+    int width, height, steps, frames, half, shadow_size, threads; /* half: 0 full, 1 bilinear, 2 noisy upsample */
     raymarch_noise noise;
     double alpha;
 } vlight_approx_request;

@@ -1,6 +1,6 @@
 /* `gtlab render volumetric-light` wired right (raytracer/
  * volumetric_light_integrator.c) on builtin:cornell with the default spot,
- * whose light the tall block shadows:
+ * whose light the blocks shadow:
  *  - Monte Carlo (equiangular, shadow rays) agrees with the quadrature in
  *    every sampled pixel within 4 standard errors plus the quadrature's
  *    error estimate, and the scene's shadows change the image (in over 2%

@@ -10,7 +10,8 @@
  *    errors (per pixel and over the image), while no noise stays biased;
  *  - blue-noise offsets keep a flat histogram in every frame and carry less
  *    low-frequency energy than white noise (4 x 4 block means);
- *  - the half-resolution upsample does not bleed across a depth edge;
+ *  - the half-resolution upsamples (bilinear and noisy) do not bleed across
+ *    a depth edge;
  *  - the images have the same bits for 1 and 2 threads. */
 #include <math.h>
 #include <stdlib.h>
@@ -134,7 +135,7 @@ static void check_blue_noise(const blue_noise_texture *blue)
     }
 }
 
-static void check_upsample(void)
+static void check_upsample(const blue_noise_texture *blue)
 {
     enum { UW = 8, UH = 6 };
     float dir[3 * UW * UH] = {0}, dist[UW * UH], half[4 * 3], half_dist[4 * 3], out[UW * UH];
@@ -148,6 +149,13 @@ static void check_upsample(void)
     for (int p = 0; p < UW * UH; ++p)
         bleeding += out[p] != (p % UW < 4 ? 1.0f : 3.0f);
     CHECK_MSG(bleeding == 0, "%d pixels mix across the depth edge", bleeding);
+    for (int f = 0; f < 8; ++f) {
+        raymarch_upsample_noisy(half, half_dist, &view, blue, f, out);
+        bleeding = 0;
+        for (int p = 0; p < UW * UH; ++p)
+            bleeding += out[p] != (p % UW < 4 ? 1.0f : 3.0f);
+        CHECK_MSG(bleeding == 0, "frame %d: %d pixels of the noisy upsample mix across the depth edge", f, bleeding);
+    }
     float history[2] = {1.0f, 2.0f}, next[2] = {3.0f, 2.0f};
     raymarch_accumulate(history, next, 2, 0.25, 0);
     CHECK_NEAR(history[0], 1.5, 1e-6);
@@ -177,11 +185,11 @@ int main(void)
     gt_error e;
     if (make_shadows(&spot, &shadows) != 0 || blue_noise_build(64, 1, 17, &blue, &e) != 0)
         return 1;
-    raymarch_lighting open = {&spot, &medium, NULL}, shadowed = {&spot, &medium, &shadows};
+    raymarch_lighting open = {&spot, &medium, NULL, NULL}, shadowed = {&spot, &medium, &shadows, NULL};
     check_convergence(&open, &r);
     check_unbiased(&shadowed, &r, &blue);
     check_blue_noise(&blue);
-    check_upsample();
+    check_upsample(&blue);
     check_threads(&shadowed, &r, &blue);
     shadow_map_free(&shadows);
     blue_noise_free(&blue);
