@@ -1,10 +1,7 @@
-/* Decima (Advances in Real-Time Rendering 2017) on the command line. The
- * height fog (Kojima; issue 16): its atmosphere LUTs (`gtlab lut atmosphere`, `gtlab bench atmosphere`, stage
- * atmosphere; studies/atmosphere_luts.h) and the analytic fog against its
- * references (`gtlab approx height-fog`, `gtlab bench fog`, stage fog;
- * studies/height_fog.h; the references are `gtlab render fog`,
- * raytracer/fog_integrator.h). Anti-aliasing against supersampled truth
- * (issue 19): stage aa (studies/anti_aliasing.h). */
+/* Decima (Advances in Real-Time Rendering 2017) on the command line. The height fog (Kojima; issue 16): its
+ * atmosphere LUTs (`gtlab lut|bench atmosphere`, stage atmosphere; studies/atmosphere_luts.h), the analytic fog
+ * (`gtlab approx height-fog`, `gtlab bench fog`, stage fog; studies/height_fog.h; references: `gtlab render fog`).
+ * Anti-aliasing (issue 19): `gtlab approx|bench aa`, stage aa (studies/anti_aliasing.h, aa_commands.h). */
 #include <stdio.h>
 
 #include "cli/cli.h"
@@ -15,11 +12,13 @@
 #include "report/anti_aliasing_section.h"
 #include "report/atmosphere_section.h"
 #include "report/height_fog_section.h"
+#include "studies/aa_commands.h"
 #include "studies/anti_aliasing.h"
 #include "studies/atmosphere_luts.h"
 #include "studies/height_fog.h"
 
 #define AXIS(name, help) CLI_INT(name, "N", 1, ATMOSPHERE_LUT_MAX_AXIS, help)
+static const cli_option threads_only[] = {CLI_THREADS, CLI_END};
 
 static int lut_atmosphere(int argc, char **argv)
 {
@@ -31,43 +30,36 @@ static int lut_atmosphere(int argc, char **argv)
         AXIS("light-theta-s", "sun and sky tables: sun zenith samples"),
         AXIS("light-altitude", "sun and sky tables: altitude samples"),
         CLI_THREADS, CLI_OUTPUT_DIR, CLI_END};
-    static const cli_command command = {
-        "lut atmosphere",
+    static const cli_command command = {"lut atmosphere",
         "Tabulates the three LUTs of the Decima height fog (Kojima 2017) over Bruneton 2017's\n"
         "atmosphere and a dense-fog weather: L_inscatter(theta_s, theta_v, y, t) per species\n"
         "without phase (multiple scattering in the Rayleigh table), L_sun(theta_s, y, t) (sun\n"
         "irradiance at y) and L_sky(theta_s, y, t) (mean sky radiance at y); luts/atmosphere_luts.h.\n"
         "Defaults: the talk's (8, 64, 8, 4) = 128 KB and (64, 1, 4) = 4 KB. Writes\n"
-        "DIR/atmosphere_{inscatter,sun,sky}.exr, atmosphere_luts.h, .hlsl, .glsl (one lookup).",
-        options, NULL, NULL};
+        "DIR/atmosphere_{inscatter,sun,sky}.exr, atmosphere_luts.h, .hlsl, .glsl (one lookup).", options, NULL, NULL};
     long n[6] = {8, 64, 8, 4, 64, 1}, threads = threads_default();
     const char *dir = NULL;
     int status;
-    void *dest[] = {&n[0], &n[1], &n[2], &n[3], &n[4], &n[5], &threads, &dir};
-    if (cli_options_parse(&command, dest, argc, argv, &status) != 0 || (status = cli_make_output_dir(dir)) != 0)
+    if (cli_options_parse(&command, (void *[]){&n[0], &n[1], &n[2], &n[3], &n[4], &n[5], &threads, &dir}, argc, argv,
+                          &status) != 0 || (status = cli_make_output_dir(dir)) != 0)
         return status;
-    atmosphere_lut_sizes sizes = {{(int)n[0], (int)n[1], (int)n[2], (int)n[3]},
-                                  {(int)n[4], 1, (int)n[5], (int)n[3]},
+    atmosphere_lut_sizes sizes = {{(int)n[0], (int)n[1], (int)n[2], (int)n[3]}, {(int)n[4], 1, (int)n[5], (int)n[3]},
                                   {(int)n[4], 1, (int)n[5], (int)n[3]}};
     double seconds;
     gt_error e;
     if (atmosphere_luts_write_tables(dir, &sizes, (int)threads, &seconds, &e) != 0)
         return cli_fail(&e);
-    printf("%s/atmosphere_{inscatter,sun,sky}.exr, atmosphere_luts.{h,hlsl,glsl}: built in %.2f s (%.0f + 2 x %.0f bytes)\n",
-           dir, seconds, atmosphere_lut_bytes(ATMOSPHERE_TABLE_INSCATTER, sizes.inscatter),
-           atmosphere_lut_bytes(ATMOSPHERE_TABLE_SUN, sizes.sun));
+    printf("%s/atmosphere_{inscatter,sun,sky}.exr, atmosphere_luts.{h,hlsl,glsl}: built in %.2f s (%.0f + 2 x %.0f bytes)\n", dir,
+           seconds, atmosphere_lut_bytes(ATMOSPHERE_TABLE_INSCATTER, sizes.inscatter), atmosphere_lut_bytes(ATMOSPHERE_TABLE_SUN, sizes.sun));
     return EXIT_OK;
 }
 
 static int bench_atmosphere(int argc, char **argv)
 {
-    static const cli_option options[] = {CLI_THREADS, CLI_END};
-    static const cli_command command = {
-        "bench atmosphere",
+    static const cli_command command = {"bench atmosphere",
         "Seconds to build the full set of atmosphere LUTs at the talk's sizes, for two weathers\n"
         "and their blends (t axis of 4: four precomputations with multiple scattering, then\n"
-        "the texels). Issue 16's goal: under 10 s on 2 cores.",
-        options, NULL, NULL};
+        "the texels). Issue 16's goal: under 10 s on 2 cores.", threads_only, NULL, NULL};
     long threads = threads_default();
     int status;
     if (cli_options_parse(&command, (void *[]){&threads}, argc, argv, &status) != 0)
@@ -85,21 +77,13 @@ static int bench_atmosphere(int argc, char **argv)
 
 GTLAB_STUDY_STAGE(all_stage_atmosphere, atmosphere_luts, atmosphere_section)
 
-static const cli_subcommand luts[] = {
-    {"atmosphere", lut_atmosphere, "Decima height-fog atmosphere: in-scatter, sun, sky vs theta_s, theta_v, y, weather"},
-    {NULL, NULL, NULL},
-};
-static const cli_subcommand benches[] = {
-    {"atmosphere", bench_atmosphere, "atmosphere LUTs: build seconds at the talk's sizes, two weathers"},
-    {NULL, NULL, NULL},
-};
-static const all_stage atmosphere_stages[] = {
-    {"atmosphere", "Decima atmosphere LUTs and their sizes", all_stage_atmosphere, ATMOSPHERE_LUTS_DIR, NULL},
-    {NULL, NULL, NULL, NULL, NULL},
-};
-
-const technique technique_atmosphere = {
-    .name = "atmosphere", .subcommands = {[VERB_LUT] = luts, [VERB_BENCH] = benches}, .stages = atmosphere_stages};
+const technique technique_atmosphere = {.name = "atmosphere",
+    .subcommands = {[VERB_LUT] = (const cli_subcommand[]){{"atmosphere", lut_atmosphere,
+                        "Decima height-fog atmosphere: in-scatter, sun, sky vs theta_s, theta_v, y, weather"}, {0}},
+                    [VERB_BENCH] = (const cli_subcommand[]){{"atmosphere", bench_atmosphere,
+                        "atmosphere LUTs: build seconds at the talk's sizes, two weathers"}, {0}}},
+    .stages = (const all_stage[]){
+        {"atmosphere", "Decima atmosphere LUTs and their sizes", all_stage_atmosphere, ATMOSPHERE_LUTS_DIR, NULL}, {0}}};
 
 static const char *weather_name(int i) { return i == 0 ? "sunny" : "dense"; }
 static const char *const model_names[] = {"published", "clamp-fixed", "sun-attenuated", "sky-attenuated"};
@@ -113,11 +97,10 @@ static int approx_height_fog(int argc, char **argv)
         CLI_DOUBLE("sun-elevation", "DEG", -90, 90, "the sun above the horizon"),
         CLI_CHOICE("model", "M", model_name, HEIGHT_FOG_MODELS, "published, clamp-fixed, sun- or sky-attenuated"),
         CLI_REQUIRED_STRING("output", "out.exr", "fog.L.R/G/B and fog.T.R/G/B"), CLI_END};
-    static const cli_command command = {
-        "approx height-fog",
+    static const cli_command command = {"approx height-fog",
         "The Decima talk's analytic HeightFog() (realtime/height_fog.h) per pixel: as published, with its\n"
-        "clamp fixed, with the sun attenuated by the fog, or the sun and the sky (docs/decisions.md).",
-        options, NULL, NULL};
+        "clamp fixed, with the sun attenuated by the fog, or the sun and the sky (docs/decisions.md).", options,
+        NULL, NULL};
     const char *in = NULL, *out_path = NULL;
     int weather = 0, model = 0, status;
     double elevation = 25.0;
@@ -136,10 +119,8 @@ static int approx_height_fog(int argc, char **argv)
 
 static int bench_fog(int argc, char **argv)
 {
-    static const cli_option options[] = {CLI_THREADS, CLI_END};
-    static const cli_command command = {
-        "bench fog", "Reference rays per second (path tracing, dense fog, terrain 128x96) and the analytic\n"
-                     "models' nanoseconds per pixel in C (goal < 20).", options, NULL, NULL};
+    static const cli_command command = {"bench fog", "Reference rays per second (path tracing, dense fog, terrain "
+        "128x96) and the analytic\nmodels' nanoseconds per pixel in C (goal < 20).", threads_only, NULL, NULL};
     long threads = threads_default();
     int status;
     if (cli_options_parse(&command, (void *[]){&threads}, argc, argv, &status) != 0)
@@ -155,17 +136,44 @@ static int bench_fog(int argc, char **argv)
 
 GTLAB_STUDY_STAGE(all_stage_fog, height_fog, height_fog_section)
 
-static const cli_subcommand approx[] = {
-    {"height-fog", approx_height_fog, "the Decima talk's analytic height fog (published or corrected)"},
-    {NULL, NULL, NULL}};
-static const cli_subcommand bench[] = {{"fog", bench_fog, "height fog: reference rays/s, analytic ns/pixel"},
-                                       {NULL, NULL, NULL}};
-static const all_stage fog_stages[] = {{"fog", "height fog", all_stage_fog, HEIGHT_FOG_DIR, NULL},
-                                   {NULL, NULL, NULL, NULL, NULL}};
-
-const technique technique_fog = {
-    .name = "fog", .subcommands = {[VERB_APPROX] = approx, [VERB_BENCH] = bench}, .stages = fog_stages};
+const technique technique_fog = {.name = "fog",
+    .subcommands = {[VERB_APPROX] = (const cli_subcommand[]){{"height-fog", approx_height_fog,
+                        "the Decima talk's analytic height fog (published or corrected)"}, {0}},
+                    [VERB_BENCH] = (const cli_subcommand[]){{"fog", bench_fog, "height fog: reference rays/s, analytic ns/pixel"}, {0}}},
+    .stages = (const all_stage[]){{"fog", "height fog", all_stage_fog, HEIGHT_FOG_DIR, NULL}, {0}}};
 
 GTLAB_STUDY_STAGE(all_stage_aa, aa, aa_section)
 
-GTLAB_STAGE_TECHNIQUE(anti_aliasing, "aa", "anti-aliasing against supersampled truth", all_stage_aa, AA_DIR);
+static int approx_aa(int argc, char **argv)
+{
+    static const cli_option options[] = {
+        CLI_CHOICE("technique", "T", aa_technique_short_name, AA_T_TECHNIQUES, "none, fxaa, taa, edge-taa, checkerboard"),
+        CLI_FLAG("raw", "write its input frames instead, frame_NNN.exr: colour, depth, motion, disocclusion"),
+        CLI_STRING("scene", "S", "builtin:NAME or a glTF file"), CLI_INT32("frames", "N", 1, 100000, "frames"),
+        CLI_INT32("threads", "T", 1, 1024, "worker threads; the result does not depend on it"), CLI_OUTPUT_DIR, CLI_END};
+    static const cli_command command = {"approx aa", "An AA technique over 384x288 frames of a pan (4 cm, 0.25 deg a "
+        "frame): DIR/<technique>_NNN.exr, .png\n(display values; studies/aa_commands.h).", options, NULL, NULL};
+    aa_frames_request rq = {"builtin:aa-thin", 384, 288, 8, {0.04f, 0.0f, 0.0f}, 0.25f, 3, NULL, (int)threads_default()};
+    int raw = 0, status;
+    gt_error e;
+    if (cli_options_parse(&command, (void *[]){&rq.technique, &raw, &rq.scene, &rq.frames, &rq.threads, &rq.dir}, argc,
+                          argv, &status) != 0 || (status = cli_make_output_dir(rq.dir)) != 0)
+        return status;
+    return (raw ? aa_frames_write(&rq, &e) : aa_approx(&rq, &e)) == 0 ? EXIT_OK : cli_fail(&e);
+}
+
+static int bench_aa(int argc, char **argv)
+{
+    static const cli_command command = {"bench aa", "ms per 1920x1080 frame per AA technique, in C.", threads_only, NULL, NULL};
+    long threads = threads_default();
+    int status;
+    gt_error e;
+    if (cli_options_parse(&command, (void *[]){&threads}, argc, argv, &status) != 0)
+        return status;
+    return aa_bench_print(stdout, (int)threads, &e) == 0 ? EXIT_OK : cli_fail(&e);
+}
+
+const technique technique_anti_aliasing = {.name = "aa",
+    .subcommands = {[VERB_APPROX] = (const cli_subcommand[]){{"aa", approx_aa, "anti-aliasing over frames of a pan"}, {0}},
+                    [VERB_BENCH] = (const cli_subcommand[]){{"aa", bench_aa, "anti-aliasing: ms per 1080p frame"}, {0}}},
+    .stages = (const all_stage[]){{"aa", "anti-aliasing against supersampled truth", all_stage_aa, AA_DIR, NULL}, {0}}};

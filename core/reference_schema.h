@@ -178,8 +178,16 @@
 #define CH_ATMOSPHERE_SUN {"sun.R", "sun.G", "sun.B"}
 #define CH_ATMOSPHERE_SKY {"sky.R", "sky.G", "sky.B"}
 
+/* Frames for temporal anti-aliasing (`gtlab render frames`, raytracer/frames_render.h). */
+#define CH_FRAME_RGB {"frame.R", "frame.G", "frame.B"} /* linear radiance of the jittered sample */
+#define CH_MOTION_X "motion.X"           /* previous image position minus this one, pixels */
+#define CH_MOTION_Y "motion.Y"
+#define CH_DISOCCLUDED "disoccluded.V"   /* 1 where the previous frame did not see the point */
+
 /* ---- Header attributes -------------------------------------------------- */
 /* text */
+#define ATTR_JITTER "gtlab.jitter"       /* a frame's sub-pixel jitter "x y" (frames) */
+#define ATTR_FRAME "gtlab.frame"         /* a frame's index on its camera path */
 #define ATTR_VERSION "gtlab.version"     /* the gtlab version that wrote the file */
 #define ATTR_QUANTITY "gtlab.quantity"   /* "ao", "gbuffer", ..., "approx" */
 #define ATTR_SCENE "gtlab.scene"         /* the scene spec ("builtin:boxes", a path) */
