@@ -17,6 +17,7 @@
     T(inside)               \
     T(atmosphere)           \
     T(fog)                  \
+    T(environment)          \
     T(throughput)
 
 #define DECLARE(name) extern const technique technique_##name;
