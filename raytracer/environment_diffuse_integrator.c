@@ -141,11 +141,9 @@ static void add_light(env_wavefront *wf, int first, int k, const float light[3])
         wf->values[(first + c) * SAMPLE_BATCH + k] = wf->throughput[wf->weights == 3 ? c : 0][k] * light[c];
 }
 
-/* Sample k's path escapes from vertex `depth` along w. */
-static void path_escapes(env_wavefront *wf, int k, int depth, vec3 w)
+/* Sample k's path escapes from vertex `depth`, bringing radiance `light`. */
+static void path_escapes(env_wavefront *wf, int k, int depth, const float light[3])
 {
-    float light[3];
-    environment_light_radiance(wf->light, w, light);
     add_light(wf, TOTAL, k, light);
     if (depth == 0)
         add_light(wf, DIRECT, k, light);
@@ -181,19 +179,22 @@ static void choose_strategies(const env_wavefront *wf, float *u0, unsigned char 
     }
 }
 
-/* (max(0, n.w) / pi) / p_mix: the mixture weight of direction w at p. */
-static float lambert_weight(const env_wavefront *wf, const env_vertex *p, vec3 w)
+/* (max(0, n.w) / pi) / p_mix: the mixture weight of direction w at p,
+ * the environment's density there being pdf_env. */
+static float lambert_weight(const env_wavefront *wf, const env_vertex *p, vec3 w, float pdf_env)
 {
     double cos_n = v3_dot(w, p->shading.n);
     if (!(cos_n > 0.0))
         return 0.0f;
-    double p_brdf = cos_n / M_PI;
-    return (float)(p_brdf / environment_light_mixture_pdf(wf->light, p_brdf, w));
+    double p_brdf = cos_n / M_PI, c = wf->light->brdf_fraction;
+    return (float)(p_brdf / (c * p_brdf + (1.0 - c) * pdf_env));
 }
 
-/* The direction leaving live path i at this depth, its weight folded into
- * the throughput (mixture sampling only). Returns 0 if it carries nothing. */
-static int leave(env_wavefront *wf, int i, vec3 local, int from_env, float u0, float u1, vec3 *w)
+/* The direction w leaving live path i at this depth and the radiance
+ * arriving along it (one texel lookup gives it and the environment's
+ * density); the mixture weight is folded into the throughput (mixture
+ * sampling only). Returns 0 if the direction carries nothing. */
+static int leave(env_wavefront *wf, int i, vec3 local, int from_env, float u0, float u1, vec3 *w, float light[3])
 {
     const env_vertex *p = &wf->paths[i];
     if (!from_env) {
@@ -203,19 +204,22 @@ static int leave(env_wavefront *wf, int i, vec3 local, int from_env, float u0, f
         const float u[2] = {u0, u1};
         *w = environment_sampler_sample(&wf->light->sampler, u, &pdf);
     }
+    float pdf_env;
+    environment_sampler_lookup(&wf->light->sampler, *w, light, &pdf_env);
     if (!wf->mixed)
         return 1;
-    float weight = lambert_weight(wf, p, *w);
+    float weight = lambert_weight(wf, p, *w, pdf_env);
     for (int k = 0; k < wf->weights; ++k)
         wf->throughput[k][p->sample] *= weight;
     return weight > 0.0f;
 }
 
 /* The rays leaving the live paths' vertices at `depth` (dimension pair
- * depth), owner[r] the path of ray r and dir[r] its direction. At depth 0
- * every direction adds to the unoccluded channels. A direction below the
- * surface it leaves is blocked and gets no ray. Returns the number of rays. */
-static int leaving_rays(env_wavefront *wf, int depth, struct RTCRayHit *rays, int *owner, vec3 *dir)
+ * depth), owner[r] the path of ray r and light[r] the radiance arriving
+ * along it should it escape. At depth 0 every direction adds to the
+ * unoccluded channels. A direction below the surface it leaves is blocked
+ * and gets no ray. Returns the number of rays. */
+static int leaving_rays(env_wavefront *wf, int depth, struct RTCRayHit *rays, int *owner, float (*light)[3])
 {
     float u0[SAMPLE_BATCH], u1[SAMPLE_BATCH];
     unsigned char from_env[SAMPLE_BATCH] = {0};
@@ -228,17 +232,13 @@ static int leaving_rays(env_wavefront *wf, int depth, struct RTCRayHit *rays, in
     for (int i = 0; i < wf->live; ++i) {
         const env_vertex *p = &wf->paths[i];
         vec3 d;
-        if (!leave(wf, i, local[i], from_env[i], u0[i], u1[i], &d))
+        if (!leave(wf, i, local[i], from_env[i], u0[i], u1[i], &d, light[n]))
             continue;
-        if (depth == 0) {
-            float light[3];
-            environment_light_radiance(wf->light, d, light);
-            add_light(wf, UNOCCLUDED, p->sample, light);
-        }
+        if (depth == 0)
+            add_light(wf, UNOCCLUDED, p->sample, light[n]);
         if (v3_dot(d, p->ng) <= 0.0f)
             continue;
         embree_ray_init(&rays[n].ray, p->origin, d, INFINITY);
-        dir[n] = d;
         owner[n++] = i;
     }
     return n;
@@ -246,7 +246,7 @@ static int leaving_rays(env_wavefront *wf, int depth, struct RTCRayHit *rays, in
 
 /* The last vertex: only whether each ray escapes matters. */
 static void trace_last(env_wavefront *wf, int depth, const struct RTCRayHit *rays, const int *owner,
-                       const vec3 *dir, int n)
+                       const float (*light)[3], int n)
 {
     _Alignas(16) struct RTCRay shadow[SAMPLE_BATCH];
     for (int r = 0; r < n; ++r)
@@ -254,14 +254,14 @@ static void trace_last(env_wavefront *wf, int depth, const struct RTCRayHit *ray
     embree_unoccluded_stream(wf->scene, shadow, (unsigned)n);
     for (int r = 0; r < n; ++r)
         if (shadow[r].tfar >= 0.0f)
-            path_escapes(wf, wf->paths[owner[r]].sample, depth, dir[r]);
+            path_escapes(wf, wf->paths[owner[r]].sample, depth, light[r]);
     wf->live = 0;
 }
 
 /* Closest hits: escapes add light, hits become the next vertices of the
  * paths that survive them (compacted in place, in order). */
-static void trace_next(env_wavefront *wf, int depth, struct RTCRayHit *rays, const int *owner, const vec3 *dir,
-                       int n)
+static void trace_next(env_wavefront *wf, int depth, struct RTCRayHit *rays, const int *owner,
+                       const float (*light)[3], int n)
 {
     float roulette[SAMPLE_BATCH], unused[SAMPLE_BATCH];
     if (wf->unlimited)
@@ -271,7 +271,7 @@ static void trace_next(env_wavefront *wf, int depth, struct RTCRayHit *rays, con
     for (int r = 0; r < n; ++r) {
         env_vertex *p = &wf->paths[owner[r]];
         if (rays[r].hit.geomID == RTC_INVALID_GEOMETRY_ID) {
-            path_escapes(wf, p->sample, depth, dir[r]);
+            path_escapes(wf, p->sample, depth, light[r]);
             continue;
         }
         surface_hit hit;
@@ -295,13 +295,13 @@ static int environment_diffuse_sample_batch(const integrator *self, const pixel_
     for (int depth = 0; wf.live > 0; ++depth) {
         _Alignas(16) struct RTCRayHit stream[SAMPLE_BATCH];
         int owner[SAMPLE_BATCH];
-        vec3 dir[SAMPLE_BATCH];
-        int n = leaving_rays(&wf, depth, stream, owner, dir);
+        float light[SAMPLE_BATCH][3];
+        int n = leaving_rays(&wf, depth, stream, owner, light);
         rays += n;
         if (depth == wf.max_bounces)
-            trace_last(&wf, depth, stream, owner, dir, n);
+            trace_last(&wf, depth, stream, owner, (const float(*)[3])light, n);
         else
-            trace_next(&wf, depth, stream, owner, dir, n);
+            trace_next(&wf, depth, stream, owner, (const float(*)[3])light, n);
     }
     return rays;
 }
