@@ -18,6 +18,7 @@
     T(volumetric)           \
     T(atmosphere)           \
     T(fog)                  \
+    T(environment)          \
     T(throughput)
 
 #define DECLARE(name) extern const technique technique_##name;

@@ -31,10 +31,11 @@ static const cli_command command = {
     "best of R passes.\n"
     "'gtlab bench specular-occlusion': samples/s of the specular-occlusion reference\n"
     "(64 spp, roughness 0.5), 1 thread and T threads.",
-    options, "rays|specular-occlusion|gtao|multibounce|fit|sphere-light|convergence",
+    options, "rays|specular-occlusion|gtao|multibounce|fit|sphere-light|convergence|env-diffuse",
     "Other benchmarks, each with --help: gtlab bench gtao (GTAO in the talk's configuration\n"
     "at 1920x1080 and every preset's cost per pixel), multibounce, fit, sphere-light,\n"
-    "convergence (AO time to RMSE 0.01, plain against the height-field control variate)."};
+    "convergence (AO time to RMSE 0.01, plain against the height-field control variate),\n"
+    "env-diffuse (the environment-lit diffuse reference against the white-dome one)."};
 
 static void print_rays(const ray_throughput_result *r)
 {
@@ -99,7 +100,7 @@ int verb_bench(int argc, char **argv)
         return cli_failf("bench", "unexpected argument '%s'", name.values[1]);
     int specular = name.count == 1 && strcmp(name.values[0], "specular-occlusion") == 0;
     if (name.count == 0 || (strcmp(name.values[0], "rays") != 0 && !specular))
-        return cli_failf("bench", "name a benchmark: rays, specular-occlusion, gtao, multibounce, fit, sphere-light "
-                                  "or convergence (see 'gtlab bench --help')");
+        return cli_failf("bench", "name a benchmark: rays, specular-occlusion, gtao, multibounce, fit, sphere-light, "
+                                  "convergence or env-diffuse (see 'gtlab bench --help')");
     return run_named(specular, scene_spec, (int)width, (int)height, (int)threads, (int)repeats);
 }

@@ -7,8 +7,11 @@ int distribution_1d_init(distribution_1d *d, const double *weights, int count, g
 {
     memset(d, 0, sizeof *d);
     d->cdf = malloc(sizeof(double) * (size_t)(count + 1));
-    if (!d->cdf)
+    d->guide = malloc(sizeof(int) * (size_t)count);
+    if (!d->cdf || !d->guide) {
+        distribution_1d_free(d);
         return gt_error_set(e, "distribution", "out of memory for %d bins", count);
+    }
     d->count = count;
     double running = 0.0;
     d->cdf[0] = 0.0;
@@ -19,27 +22,28 @@ int distribution_1d_init(distribution_1d *d, const double *weights, int count, g
     for (int i = 1; i <= count; ++i)
         d->cdf[i] = running > 0.0 ? d->cdf[i] / running : (double)i / count;
     d->cdf[count] = 1.0;
+    for (int j = 0, i = 0; j < count; ++j) {
+        while (d->cdf[i + 1] <= (double)j / count)
+            ++i;
+        d->guide[j] = i;
+    }
     return 0;
 }
 
 void distribution_1d_free(distribution_1d *d)
 {
     free(d->cdf);
+    free(d->guide);
     memset(d, 0, sizeof *d);
 }
 
-/* The largest i < count with cdf_i <= u: bins of weight 0 (cdf_i =
- * cdf_{i+1} <= u) are passed over. */
+/* The i with cdf_i <= u < cdf_{i+1}: never a bin of weight 0. */
 int distribution_1d_sample(const distribution_1d *d, double u, double *offset)
 {
-    int lo = 0, hi = d->count - 1;
-    while (lo < hi) {
-        int mid = (lo + hi + 1) / 2;
-        if (d->cdf[mid] <= u)
-            lo = mid;
-        else
-            hi = mid - 1;
-    }
+    int j = (int)(u * d->count);
+    int lo = d->guide[j < 0 ? 0 : (j < d->count ? j : d->count - 1)];
+    while (lo < d->count - 1 && d->cdf[lo + 1] <= u)
+        ++lo;
     if (offset) {
         double width = d->cdf[lo + 1] - d->cdf[lo];
         double t = width > 0.0 ? (u - d->cdf[lo]) / width : 0.0;

@@ -14,7 +14,10 @@
  * conditional per row over its columns; u[0] picks the row and u[1] the
  * column, P(r, c) = P(r) P(c | r) = f_rc / sum f.
  * Cumulative sums are doubles, summed in order: the tables are the same
- * bits on every run. */
+ * bits on every run. The bin is found from a guide table (Chen 1974's
+ * cutpoint method: guide[j] is the bin of j / n, and the search walks up
+ * from guide[floor(u n)]), in O(1) expected steps and the same bin a
+ * binary search finds: the one bin with cdf_i <= u < cdf_{i+1}. */
 #ifndef GTLAB_CORE_ENVIRONMENT_DISTRIBUTION_H
 #define GTLAB_CORE_ENVIRONMENT_DISTRIBUTION_H
 
@@ -24,6 +27,7 @@ typedef struct {
     int count;
     double total; /* sum of the weights; 0: nothing can be sampled */
     double *cdf;  /* count + 1 entries */
+    int *guide;   /* guide[j]: the bin holding j / count (Chen's cutpoints) */
 } distribution_1d;
 
 /* Builds over weights[0 .. count-1] (finite, >= 0; a zero total is

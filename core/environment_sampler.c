@@ -33,12 +33,16 @@ int environment_sampler_init(environment_sampler *s, const environment_map *env,
     double *w = texel_weights(env, &s->integral);
     size_t n = (size_t)env->width * (size_t)env->height;
     s->texel_pdf = malloc(sizeof(float) * n);
-    if (!w || !s->texel_pdf || distribution_2d_init(&s->texels, w, env->height, env->width, e) != 0) {
+    s->row_cos = malloc(sizeof(double) * (size_t)(env->height + 1));
+    if (!w || !s->texel_pdf || !s->row_cos || distribution_2d_init(&s->texels, w, env->height, env->width, e) != 0) {
         free(w);
         free(s->texel_pdf);
-        s->texel_pdf = NULL;
+        free(s->row_cos);
+        s->texel_pdf = NULL, s->row_cos = NULL;
         return gt_error_set(e, env->name, "out of memory for the environment sampler");
     }
+    for (int r = 0; r <= env->height; ++r)
+        s->row_cos[r] = cos(M_PI * r / env->height);
     s->usable = s->integral > 0.0;
     for (size_t i = 0; i < n; ++i)
         s->texel_pdf[i] = s->usable ? (float)(environment_luminance(env->rgb + 3 * i) / s->integral) : 0.0f;
@@ -49,18 +53,19 @@ int environment_sampler_init(environment_sampler *s, const environment_map *env,
 void environment_sampler_free(environment_sampler *s)
 {
     free(s->texel_pdf);
+    free(s->row_cos);
     distribution_2d_free(&s->texels);
     memset(s, 0, sizeof *s);
 }
 
 /* phi and cos theta uniform over texel (row, column) at offsets t. */
-static vec3 texel_direction(const environment_map *env, int row, int column, const double t[2])
+static vec3 texel_direction(const environment_sampler *s, int row, int column, const double t[2])
 {
-    double cos_top = cos(M_PI * row / env->height), cos_bottom = cos(M_PI * (row + 1) / env->height);
+    double cos_top = s->row_cos[row], cos_bottom = s->row_cos[row + 1];
     double cos_theta = cos_top + (cos_bottom - cos_top) * t[0];
-    double sin_theta = sqrt(fmax(0.0, 1.0 - cos_theta * cos_theta));
-    double phi = 2.0 * M_PI * ((column + t[1]) / env->width - 0.5);
-    return v3((float)(sin_theta * cos(phi)), (float)cos_theta, (float)(sin_theta * sin(phi)));
+    float sin_theta = (float)sqrt(fmax(0.0, 1.0 - cos_theta * cos_theta));
+    float phi = (float)(2.0 * M_PI * ((column + t[1]) / s->env->width - 0.5));
+    return v3(sin_theta * cosf(phi), (float)cos_theta, sin_theta * sinf(phi));
 }
 
 /* Uniform on the sphere: z = 1 - 2 u0, phi = 2 pi u1. */
@@ -80,7 +85,7 @@ vec3 environment_sampler_sample(const environment_sampler *s, const float u[2], 
     double t[2];
     const double uu[2] = {u[0], u[1]};
     distribution_2d_sample(&s->texels, uu, &row, &column, t);
-    vec3 m = texel_direction(s->env, row, column, t);
+    vec3 m = texel_direction(s, row, column, t);
     *pdf = s->texel_pdf[(size_t)row * s->env->width + column];
     return environment_map_to_world(s->env, m);
 }
@@ -90,4 +95,18 @@ float environment_sampler_pdf(const environment_sampler *s, vec3 w)
     if (environment_map_is_constant(s->env))
         return s->usable ? (float)(0.25 / M_PI) : 0.0f;
     return s->texel_pdf[environment_texel_of(s->env, environment_world_to_map(s->env, w))];
+}
+
+void environment_sampler_lookup(const environment_sampler *s, vec3 w, float rgb[3], float *pdf)
+{
+    const environment_map *env = s->env;
+    if (environment_map_is_constant(env)) {
+        environment_map_radiance(env, w, rgb);
+        *pdf = s->usable ? (float)(0.25 / M_PI) : 0.0f;
+        return;
+    }
+    size_t t = (size_t)environment_texel_of(env, environment_world_to_map(env, w));
+    for (int c = 0; c < 3; ++c)
+        rgb[c] = env->rgb[3 * t + (size_t)c] * env->intensity;
+    *pdf = s->texel_pdf[t];
 }

@@ -42,6 +42,7 @@ typedef struct {
     int usable;            /* 0: luminance 0 everywhere (never sample) */
     double integral;       /* I = \int Y dw (intensity 1) */
     float *texel_pdf;      /* Y / I per texel, per unit solid angle */
+    double *row_cos;       /* cos(pi r / H), r = 0 .. H: the rows' bounds */
     distribution_2d texels;
 } environment_sampler;
 
@@ -54,6 +55,11 @@ vec3 environment_sampler_sample(const environment_sampler *s, const float u[2], 
 
 /* The density of environment_sampler_sample at unit world direction w. */
 float environment_sampler_pdf(const environment_sampler *s, vec3 w);
+
+/* The radiance (intensity included) and the density at unit world
+ * direction w from one texel lookup: environment_map_radiance and
+ * environment_sampler_pdf at once. */
+void environment_sampler_lookup(const environment_sampler *s, vec3 w, float rgb[3], float *pdf);
 
 /* The one-sample balance-heuristic weight of strategy a, chosen with
  * probability c_a, against strategy b: c_a p_a / (c_a p_a + c_b p_b)

@@ -199,6 +199,10 @@ extern "C" int image_read_rgb_float(const char *path, int *width, int *height, f
     if (spec.nchannels < 1 || !valid_size(spec.width, spec.height))
         return gt_error_set(e, path, "not an image with pixels (%d x %d, %d channels)", spec.width, spec.height,
                             spec.nchannels);
+    // The EXR reader's bounds (docs/design.md, "Input is hostile").
+    if ((double)spec.width * spec.height > 268435456.0 || (double)spec.width * spec.height * spec.nchannels > 1073741824.0)
+        return gt_error_set(e, path, "%d x %d pixels of %d channels: more than 2^28 pixels or 2^30 values", spec.width,
+                            spec.height, spec.nchannels);
     size_t n = (size_t)spec.width * (size_t)spec.height;
     std::vector<float> all(n * (size_t)spec.nchannels);
     if (!in->read_image(0, 0, 0, spec.nchannels, TypeDesc::FLOAT, all.data()))

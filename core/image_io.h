@@ -40,7 +40,8 @@ int image_write_data16(const char *path, const float *const *planes, int channel
  * frees it): channels R, G, B by name, else the first three, and a single
  * channel repeated three times. No colour conversion (the values are taken
  * as stored; HDR formats store linear values). Returns 0, or -1 with e
- * naming the file (missing, unreadable, no channels, out of memory). */
+ * naming the file (missing, unreadable, no channels, more than 2^28 pixels
+ * or 2^30 values, out of memory). */
 int image_read_rgb_float(const char *path, int *width, int *height, float **rgb, gt_error *e);
 
 #endif

@@ -156,6 +156,19 @@
 #define CH_VLIGHT_L_ERROR_G "vlight_quadrature_error.G"
 #define CH_VLIGHT_L_ERROR_B "vlight_quadrature_error.B"
 #define CH_VLIGHT_L_ERROR_RGB {CH_VLIGHT_L_ERROR_R, CH_VLIGHT_L_ERROR_G, CH_VLIGHT_L_ERROR_B}
+/* ---- Environment lighting (render env-diffuse, env-specular;
+ *      raytracer/environment_diffuse_integrator.h, environment_specular_integrator.h) */
+/* Lambertian L / albedo with visibility and --bounces inter-reflections. */
+#define CH_ENV_DIFFUSE_RGB {"env_diffuse.R", "env_diffuse.G", "env_diffuse.B"}
+/* The same, direct light only (no inter-reflection). */
+#define CH_ENV_DIFFUSE_DIRECT_RGB {"env_diffuse_direct.R", "env_diffuse_direct.G", "env_diffuse_direct.B"}
+/* The same directions with visibility off: (1/pi) \int L max(0, n.w) dw. */
+#define CH_ENV_DIFFUSE_UNOCCLUDED_RGB \
+    {"env_diffuse_unoccluded.R", "env_diffuse_unoccluded.G", "env_diffuse_unoccluded.B"}
+/* GGX specular radiance with visibility, and without, from the same samples. */
+#define CH_ENV_SPECULAR_RGB {"env_specular.R", "env_specular.G", "env_specular.B"}
+#define CH_ENV_SPECULAR_UNOCCLUDED_RGB \
+    {"env_specular_unoccluded.R", "env_specular_unoccluded.G", "env_specular_unoccluded.B"}
 
 /* ---- Lookup tables (gtlab lut) ------------------------------------------ */
 #define CH_LUT "lut.V"
@@ -205,11 +218,15 @@
 #define ATTR_LUT "gtlab.lut"             /* a LUT's axes and parametrisation */
 #define ATTR_LUT_SIZES "gtlab.lut.sizes" /* a multi-axis LUT's sizes, "N0 N1 N2 N3" (its image: N0*N1 x N2*N3) */
 #define ATTR_CONTROL_VARIATE "gtlab.control_variate" /* ao: "none" or "heightfield"; absent: none */
+#define ATTR_ENVIRONMENT "gtlab.environment" /* env-*: "white", "sky", "sun" or the file */
 /* integer */
 #define ATTR_SPP "gtlab.spp"
 #define ATTR_SEED "gtlab.seed"
 /* real */
 #define ATTR_LUT_ERROR "gtlab.lut.error" /* a LUT's largest quadrature error estimate */
+#define ATTR_ENV_ROTATE "gtlab.env_rotate"   /* env-*: degrees about +Y */
+#define ATTR_ENV_INTENSITY "gtlab.env_intensity" /* env-*: radiance factor */
+#define ATTR_F0 "gtlab.f0"                   /* env-specular: the fixed F0, absent: the materials' */
 #define ATTR_ROUGHNESS "gtlab.roughness" /* specular occlusion: the fixed roughness, absent: the materials' */
 #define ATTR_TARGET_STDERR "gtlab.target_stderr"         /* --target-stderr; absent: none */
 #define ATTR_TARGET_REL_STDERR "gtlab.target_rel_stderr" /* --target-rel-stderr; absent: none */

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 
 #include "core/reference_schema.h"
+#include "raytracer/environment_quantity.h"
 #include "raytracer/reference_render.h"
 
 static int parse_albedo(reference_request *rq, const char *value, gt_error *e)
@@ -16,18 +17,21 @@ static int parse_bounces(reference_request *rq, const char *value, gt_error *e)
     return multibounce_parse_bounces(value, &rq->multibounce, e);
 }
 
-static const reference_option albedo_option = {
+/* Shared with env-diffuse (raytracer/environment_quantity.h), which takes
+ * one grey albedo or the scene's. */
+const reference_option reference_option_albedo = {
     .name = "albedo",
     .value = "A,B,...|scene",
     .required = 1,
     .hint = "grey albedos such as 0.1,0.5,0.9, or 'scene'",
     .help = "grey albedos in [0, 1], all\n"
             "rendered from the same paths in one pass, or 'scene': the\n"
-            "glTF base colours (textures included), coloured R, G, B",
+            "glTF base colours (textures included), coloured R, G, B\n"
+            "(env-diffuse: one grey albedo or 'scene')",
     .parse = parse_albedo,
 };
 
-static const reference_option bounces_option = {
+const reference_option reference_option_bounces = {
     .name = "bounces",
     .value = "N|inf",
     .help = "inter-reflections after the first hit\n"
@@ -78,7 +82,7 @@ const reference_quantity_descriptor reference_quantity_multibounce = {
             "same pixels. Channels: multibounce.V (one albedo), multibounce_<a>.V\n"
             "for each of several (e.g. multibounce_0.3.V), or multibounce.R/G/B with\n"
             "--albedo scene; the header holds gtlab.albedos and gtlab.bounces",
-    .options = (const reference_option *const[]){&albedo_option, &bounces_option, NULL},
+    .options = (const reference_option *const[]){&reference_option_albedo, &reference_option_bounces, NULL},
     .set_defaults = set_defaults,
     .prepare = prepare,
     .release = free,

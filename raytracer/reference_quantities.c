@@ -15,7 +15,9 @@
     X(reference_quantity_specular_occlusion)                                                                       \
     X(reference_quantity_sphere_light)                                                                             \
     X(reference_quantity_fog)                                                                                      \
-    X(reference_quantity_volumetric_light)
+    X(reference_quantity_volumetric_light)                                                                        \
+    X(reference_quantity_env_diffuse)                                                                              \
+    X(reference_quantity_env_specular)
 
 #define DECLARE(descriptor) extern const reference_quantity_descriptor descriptor;
 REFERENCE_QUANTITIES(DECLARE)

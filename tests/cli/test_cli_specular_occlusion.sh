@@ -31,7 +31,7 @@ for pair in "$so specocc.V.stderr" "$so specocc_phong.V" "$work/sky.exr split_tr
   json_is max_abs == 0 "$work/merged.json" && pass || fail "merged $2 differs: $(cat "$work/merged.json")"
 done
 expect_error bad-environment "--environment: 'dusk' is neither white nor sky" "$work/x.exr" -- render specular-occlusion --scene builtin:corner --environment dusk -o "$work/x.exr"
-expect_error environment-ao "--environment: applies to specular-occlusion only" "$work/x.exr" -- render ao --scene builtin:corner --environment sky -o "$work/x.exr"
+expect_error environment-ao "--environment: applies to specular-occlusion, env-diffuse and env-specular only" "$work/x.exr" -- render ao --scene builtin:corner --environment sky -o "$work/x.exr"
 expect_ok lut lut specular-occlusion --size 8 -o "$work/lut"
 for ext in exr png h json; do
   [ -s "$work/lut/specular_occlusion_ggx_8.$ext" ] && pass || fail "lut: no .$ext"
@@ -48,7 +48,7 @@ expect_ok approx-on-gtao approx specular-occlusion --gbuffer "$so" --ao "$work/g
 expect_error gtao-uniform "gtao.exr: no ao.Vuniform channel" "$work/x.exr" -- approx specular-occlusion --gbuffer "$so" --ao "$work/gtao.exr" --ao-weighting uniform -o "$work/x.exr"
 expect_error not-ao "no channel ao.V" "$work/x.exr" -- approx specular-occlusion --gbuffer "$so" --ao "$so" -o "$work/x.exr"
 expect_error bad-roughness "--roughness" "$work/x.exr" -- render specular-occlusion --scene builtin:plane --roughness 1.5 -o "$work/x.exr"
-expect_error roughness-elsewhere "--roughness: applies to specular-occlusion only" "$work/x.exr" -- render ao --scene builtin:plane --roughness 0.5 -o "$work/x.exr"
+expect_error roughness-elsewhere "--roughness: applies to specular-occlusion and env-specular only" "$work/x.exr" -- render ao --scene builtin:plane --roughness 0.5 -o "$work/x.exr"
 expect_error bad-size "--size" "" -- lut specular-occlusion --size 1 -o "$work/lut2"
 expect_error unknown-table "unknown table" "" -- lut nope -o "$work/lut2"
 expect_error fit-unpaired "one --ao per --reference" "$work/f.json" -- fit aperture --reference "$so" -o "$work/f.json"

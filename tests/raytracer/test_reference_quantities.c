@@ -79,7 +79,8 @@ static void test_descriptors(void)
     CHECK(QUANTITY_GBUFFER->prepare == NULL && QUANTITY_GBUFFER->options == NULL);
     char names[512];
     reference_quantity_names(names, sizeof names);
-    CHECK_MSG(strcmp(names, "gbuffer, ao, multibounce, heightfield-ao, specular-occlusion, sphere-light, fog or volumetric-light") == 0,
+    CHECK_MSG(strcmp(names, "gbuffer, ao, multibounce, heightfield-ao, specular-occlusion, sphere-light, fog, "
+                            "volumetric-light, env-diffuse or env-specular") == 0,
               "%s", names);
 }
 
@@ -127,7 +128,9 @@ static void test_option_ownership(void)
     reference_option_owners(option_named("max-distance"), " and ", owners, sizeof owners);
     CHECK_MSG(strcmp(owners, "ao and heightfield-ao") == 0, "%s", owners);
     reference_option_owners(option_named("roughness"), ", ", owners, sizeof owners);
-    CHECK_MSG(strcmp(owners, "specular-occlusion") == 0, "%s", owners);
+    CHECK_MSG(strcmp(owners, "specular-occlusion, env-specular") == 0, "%s", owners);
+    reference_option_owners(option_named("environment"), " and ", owners, sizeof owners);
+    CHECK_MSG(strcmp(owners, "specular-occlusion, env-diffuse and env-specular") == 0, "%s", owners);
 }
 
 /* The messages tests/cli checks, and the values reaching the request. */

@@ -1,0 +1,314 @@
+#include "raytracer/environment_diffuse_integrator.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "core/hemisphere_sampling.h"
+#include "core/reference_schema.h"
+#include "scene/material_lookup.h"
+
+/* The first quantity of each RGB triple. */
+enum { TOTAL = 0, DIRECT = 3, UNOCCLUDED = 6 };
+
+/* ---- The plan -------------------------------------------------------------- */
+
+static int validate(const multibounce_settings *s, gt_error *e)
+{
+    if (s->bounces != MULTIBOUNCE_UNLIMITED && (s->bounces < 0 || s->bounces > MULTIBOUNCE_PATH_LIMIT))
+        return gt_error_set(e, "env-diffuse", "bounces %d outside [0, %d]", s->bounces, MULTIBOUNCE_PATH_LIMIT);
+    if (s->scene_albedo)
+        return s->albedo_count == 0 ? 0 : gt_error_set(e, "env-diffuse", "grey albedos given with the scene's");
+    if (s->albedo_count != 1)
+        return gt_error_set(e, "env-diffuse", "takes one grey albedo or 'scene', not %d albedos", s->albedo_count);
+    if (!(s->albedos[0] >= 0.0f && s->albedos[0] <= 1.0f))
+        return gt_error_set(e, "env-diffuse", "albedo %g outside [0, 1]", (double)s->albedos[0]);
+    return 0;
+}
+
+int environment_diffuse_plan_init(environment_diffuse_plan *plan, const environment_light *light,
+                                  const multibounce_settings *albedo, normal_mode normals, gt_error *e)
+{
+    memset(plan, 0, sizeof *plan);
+    if (validate(albedo, e) != 0)
+        return -1;
+    plan->light = light;
+    plan->albedo = *albedo;
+    plan->normals = normals;
+    static const char *const names[3][3] = {CH_ENV_DIFFUSE_RGB, CH_ENV_DIFFUSE_DIRECT_RGB,
+                                            CH_ENV_DIFFUSE_UNOCCLUDED_RGB};
+    for (int q = 0; q < ENV_DIFFUSE_QUANTITIES; ++q) {
+        snprintf(plan->quantities[q].name, IMAGE_NAME_MAX, "%s", names[q / 3][q % 3]);
+        plan->quantities[q].scale_exponent = light->scale_exponent;
+    }
+    return 0;
+}
+
+/* ---- Paths (the wavefront of raytracer/multibounce_integrator.c) --------------- */
+
+typedef struct {
+    vec3 origin, ng;
+    frame shading;
+    int sample; /* index within the batch */
+} env_vertex;
+
+/* throughput[w][k]: sample k's path weight, per albedo weight w (1 grey, or
+ * 3 colours): the product of the mixture weights and of rho (or rho / q)
+ * at the vertices after the first. */
+typedef struct {
+    const environment_diffuse_plan *plan;
+    const environment_light *light;
+    const embree_scene *scene;
+    const pixel_context *px;
+    uint32_t first_index;
+    int count, weights, unlimited, max_bounces, live, mixed;
+    unsigned surface_parts;
+    float *values;
+    env_vertex paths[SAMPLE_BATCH];
+    float throughput[3][SAMPLE_BATCH];
+} env_wavefront;
+
+static void wavefront_start(env_wavefront *wf, const integrator *self, const pixel_context *px,
+                            uint32_t first_index, int count, float *values)
+{
+    const environment_diffuse_plan *plan = self->settings;
+    wf->plan = plan;
+    wf->light = plan->light;
+    wf->scene = self->scene;
+    wf->px = px;
+    wf->first_index = first_index;
+    wf->count = wf->live = count;
+    wf->weights = plan->albedo.scene_albedo ? 3 : 1;
+    wf->unlimited = plan->albedo.bounces == MULTIBOUNCE_UNLIMITED;
+    wf->max_bounces = wf->unlimited ? MULTIBOUNCE_PATH_LIMIT : plan->albedo.bounces;
+    wf->mixed = plan->light->brdf_fraction < 1.0f;
+    wf->surface_parts = (plan->normals == NORMAL_SHADING ? SURFACE_SHADING_NORMAL : 0u) |
+                        (plan->albedo.scene_albedo ? SURFACE_TEXCOORDS : 0u);
+    wf->values = values;
+    memset(values, 0, sizeof(float) * ENV_DIFFUSE_QUANTITIES * SAMPLE_BATCH);
+    for (int k = 0; k < count; ++k) {
+        env_vertex *p = &wf->paths[k];
+        p->origin = px->ray_origin;
+        p->ng = px->surface->ng;
+        p->shading = px->shading;
+        p->sample = k;
+    }
+    for (int w = 0; w < wf->weights; ++w)
+        for (int k = 0; k < count; ++k)
+            wf->throughput[w][k] = 1.0f;
+}
+
+static void vertex_move_to(env_vertex *p, const surface_hit *hit, normal_mode normals)
+{
+    p->origin = offset_ray_origin(hit->p, hit->ng);
+    p->ng = hit->ng;
+    p->shading = frame_from_normal(normals == NORMAL_GEOMETRIC ? hit->ng : hit->ns);
+}
+
+static void vertex_albedos(const environment_diffuse_plan *plan, const scene *s, const surface_hit *hit, float *rho)
+{
+    if (!plan->albedo.scene_albedo) {
+        rho[0] = plan->albedo.albedos[0];
+        return;
+    }
+    material_sample m = material_lookup(s, hit->mesh, hit->uv);
+    for (int c = 0; c < 3; ++c)
+        rho[c] = fminf(fmaxf(m.base_color[c], 0.0f), 1.0f);
+}
+
+/* As multibounce's path_survives. */
+static int path_survives(env_wavefront *wf, const float *rho, float u, int k)
+{
+    if (!wf->unlimited) {
+        for (int w = 0; w < wf->weights; ++w)
+            wf->throughput[w][k] *= rho[w];
+        return 1;
+    }
+    float q = 0.0f;
+    for (int w = 0; w < wf->weights; ++w)
+        q = fmaxf(q, rho[w]);
+    if (!(u < q))
+        return 0;
+    for (int w = 0; w < wf->weights; ++w)
+        wf->throughput[w][k] *= rho[w] / q;
+    return 1;
+}
+
+/* Sample k's weight times L into the three channels starting at `first`. */
+static void add_light(env_wavefront *wf, int first, int k, const float light[3])
+{
+    for (int c = 0; c < 3; ++c)
+        wf->values[(first + c) * SAMPLE_BATCH + k] = wf->throughput[wf->weights == 3 ? c : 0][k] * light[c];
+}
+
+/* Sample k's path escapes from vertex `depth`, bringing radiance `light`. */
+static void path_escapes(env_wavefront *wf, int k, int depth, const float light[3])
+{
+    add_light(wf, TOTAL, k, light);
+    if (depth == 0)
+        add_light(wf, DIRECT, k, light);
+}
+
+/* As multibounce's live_points. */
+static void live_points(const env_wavefront *wf, uint32_t pair, float *u0, float *u1)
+{
+    const sample_pair_seeds seeds = sample_pair_seeds_for(wf->px, pair);
+    if (4 * wf->live < wf->count) {
+        for (int i = 0; i < wf->live; ++i) {
+            float u[2];
+            sample_pair_point(&seeds, wf->first_index + (uint32_t)wf->paths[i].sample, u);
+            u0[i] = u[0], u1[i] = u[1];
+        }
+        return;
+    }
+    float all0[SAMPLE_BATCH], all1[SAMPLE_BATCH];
+    sample_pair_points(&seeds, wf->first_index, wf->count, all0, all1);
+    for (int i = 0; i < wf->live; ++i)
+        u0[i] = all0[wf->paths[i].sample], u1[i] = all1[wf->paths[i].sample];
+}
+
+/* Which sampler each live path's direction comes from (1: the
+ * environment's), u0 rescaled to [0, 1) for it. */
+static void choose_strategies(const env_wavefront *wf, float *u0, unsigned char *from_env)
+{
+    const float c = wf->light->brdf_fraction;
+    for (int i = 0; i < wf->live; ++i) {
+        from_env[i] = !(u0[i] < c);
+        u0[i] = from_env[i] ? (u0[i] - c) / (1.0f - c) : u0[i] / c;
+        u0[i] = fminf(u0[i], 0x1.fffffep-1f);
+    }
+}
+
+/* (max(0, n.w) / pi) / p_mix: the mixture weight of direction w at p,
+ * the environment's density there being pdf_env. */
+static float lambert_weight(const env_wavefront *wf, const env_vertex *p, vec3 w, float pdf_env)
+{
+    double cos_n = v3_dot(w, p->shading.n);
+    if (!(cos_n > 0.0))
+        return 0.0f;
+    double p_brdf = cos_n / M_PI, c = wf->light->brdf_fraction;
+    return (float)(p_brdf / (c * p_brdf + (1.0 - c) * pdf_env));
+}
+
+/* The direction w leaving live path i at this depth and the radiance
+ * arriving along it (one texel lookup gives it and the environment's
+ * density); the mixture weight is folded into the throughput (mixture
+ * sampling only). Returns 0 if the direction carries nothing. */
+static int leave(env_wavefront *wf, int i, vec3 local, int from_env, float u0, float u1, vec3 *w, float light[3])
+{
+    const env_vertex *p = &wf->paths[i];
+    if (!from_env) {
+        *w = frame_to_world(&p->shading, local);
+    } else {
+        float pdf;
+        const float u[2] = {u0, u1};
+        *w = environment_sampler_sample(&wf->light->sampler, u, &pdf);
+    }
+    float pdf_env;
+    environment_sampler_lookup(&wf->light->sampler, *w, light, &pdf_env);
+    if (!wf->mixed)
+        return 1;
+    float weight = lambert_weight(wf, p, *w, pdf_env);
+    for (int k = 0; k < wf->weights; ++k)
+        wf->throughput[k][p->sample] *= weight;
+    return weight > 0.0f;
+}
+
+/* The rays leaving the live paths' vertices at `depth` (dimension pair
+ * depth), owner[r] the path of ray r and light[r] the radiance arriving
+ * along it should it escape. At depth 0 every direction adds to the
+ * unoccluded channels. A direction below the surface it leaves is blocked
+ * and gets no ray. Returns the number of rays. */
+static int leaving_rays(env_wavefront *wf, int depth, struct RTCRayHit *rays, int *owner, float (*light)[3])
+{
+    float u0[SAMPLE_BATCH], u1[SAMPLE_BATCH];
+    unsigned char from_env[SAMPLE_BATCH] = {0};
+    vec3 local[SAMPLE_BATCH];
+    live_points(wf, (uint32_t)depth, u0, u1);
+    if (wf->mixed)
+        choose_strategies(wf, u0, from_env);
+    sample_cosine_hemisphere_batch(u0, u1, wf->live, local);
+    int n = 0;
+    for (int i = 0; i < wf->live; ++i) {
+        const env_vertex *p = &wf->paths[i];
+        vec3 d;
+        if (!leave(wf, i, local[i], from_env[i], u0[i], u1[i], &d, light[n]))
+            continue;
+        if (depth == 0)
+            add_light(wf, UNOCCLUDED, p->sample, light[n]);
+        if (v3_dot(d, p->ng) <= 0.0f)
+            continue;
+        embree_ray_init(&rays[n].ray, p->origin, d, INFINITY);
+        owner[n++] = i;
+    }
+    return n;
+}
+
+/* The last vertex: only whether each ray escapes matters. */
+static void trace_last(env_wavefront *wf, int depth, const struct RTCRayHit *rays, const int *owner,
+                       const float (*light)[3], int n)
+{
+    _Alignas(16) struct RTCRay shadow[SAMPLE_BATCH];
+    for (int r = 0; r < n; ++r)
+        shadow[r] = rays[r].ray;
+    embree_unoccluded_stream(wf->scene, shadow, (unsigned)n);
+    for (int r = 0; r < n; ++r)
+        if (shadow[r].tfar >= 0.0f)
+            path_escapes(wf, wf->paths[owner[r]].sample, depth, light[r]);
+    wf->live = 0;
+}
+
+/* Closest hits: escapes add light, hits become the next vertices of the
+ * paths that survive them (compacted in place, in order). */
+static void trace_next(env_wavefront *wf, int depth, struct RTCRayHit *rays, const int *owner,
+                       const float (*light)[3], int n)
+{
+    float roulette[SAMPLE_BATCH], unused[SAMPLE_BATCH];
+    if (wf->unlimited)
+        live_points(wf, MULTIBOUNCE_ROULETTE_PAIRS + (uint32_t)depth + 1, roulette, unused);
+    embree_closest_hit_stream(wf->scene, rays, (unsigned)n);
+    int kept = 0;
+    for (int r = 0; r < n; ++r) {
+        env_vertex *p = &wf->paths[owner[r]];
+        if (rays[r].hit.geomID == RTC_INVALID_GEOMETRY_ID) {
+            path_escapes(wf, p->sample, depth, light[r]);
+            continue;
+        }
+        surface_hit hit;
+        float rho[3];
+        embree_surface_at(wf->scene, &rays[r], wf->surface_parts, &hit);
+        vertex_albedos(wf->plan, wf->scene->source, &hit, rho);
+        if (!path_survives(wf, rho, wf->unlimited ? roulette[owner[r]] : 0.0f, p->sample))
+            continue;
+        vertex_move_to(p, &hit, wf->plan->normals);
+        wf->paths[kept++] = *p;
+    }
+    wf->live = kept;
+}
+
+static int environment_diffuse_sample_batch(const integrator *self, const pixel_context *px, uint32_t first_index,
+                                            int count, float *values)
+{
+    env_wavefront wf;
+    wavefront_start(&wf, self, px, first_index, count, values);
+    int rays = 0;
+    for (int depth = 0; wf.live > 0; ++depth) {
+        _Alignas(16) struct RTCRayHit stream[SAMPLE_BATCH];
+        int owner[SAMPLE_BATCH];
+        float light[SAMPLE_BATCH][3];
+        int n = leaving_rays(&wf, depth, stream, owner, light);
+        rays += n;
+        if (depth == wf.max_bounces)
+            trace_last(&wf, depth, stream, owner, (const float(*)[3])light, n);
+        else
+            trace_next(&wf, depth, stream, owner, (const float(*)[3])light, n);
+    }
+    return rays;
+}
+
+integrator environment_diffuse_integrator(const embree_scene *es, const environment_diffuse_plan *plan)
+{
+    integrator it = {"env-diffuse", ENV_DIFFUSE_QUANTITIES, plan->quantities, NULL, environment_diffuse_sample_batch,
+                     es, plan};
+    return it;
+}
