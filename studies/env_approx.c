@@ -1,0 +1,269 @@
+/* The environment study: the environments and their lighting
+ * precomputations, the references of every scene under each, the cases
+ * scored (studies/env_approx_scores.c), the means, the specular-occlusion
+ * rankings against the white dome's and the talk's claim. */
+#include "studies/env_approx.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/environment_map.h"
+#include "core/progress.h"
+#include "raytracer/environment_light.h"
+#include "raytracer/environment_quantity.h"
+#include "raytracer/reference_render.h"
+#include "scene/builtin_scenes.h"
+#include "scene/scene_loaders.h"
+#include "studies/env_approx_lighting.h"
+#include "studies/env_approx_parts.h"
+
+#define BLENDER_WORLD "/usr/share/blender/datafiles/studiolights/world/"
+#define ENV_STUDY_DIR "environment"
+#define ENV_IMAGE_SCENE "cornell"
+
+static const char *const blender_preview[] = {"sunset", "interior"};
+static const char *const blender_all[] = {"city",   "courtyard", "forest", "interior",
+                                          "night", "studio",    "sunrise", "sunset"};
+static const char *const preview_scenes[] = {"sphere-on-plane", "boxes", "cornell"};
+
+typedef struct {
+    char spec[ENVIRONMENT_NAME_MAX]; /* what the references are given: "white", "sky", "sun" or the file */
+    environment_map map;
+    env_approx_precomputed lighting;
+} study_environment;
+
+typedef struct {
+    const study_context *ctx;
+    env_study_result *out;
+    char dir[2048];
+    dfg_lut dfg;
+    so_lut lut;
+    so_variant variants[ENV_STUDY_SO_VARIANTS];
+    study_environment envs[ENV_STUDY_MAX_ENVIRONMENTS];
+    env_case_scores sums[ENV_STUDY_MAX_ENVIRONMENTS];
+} env_state;
+
+/* ---- the environments ------------------------------------------------------------ */
+
+static int load_environment(env_state *st, const char *name, const char *file, gt_error *e)
+{
+    env_study_environment *row = &st->out->environments[st->out->environment_count];
+    study_environment *env = &st->envs[st->out->environment_count];
+    static const float white[3] = {1.0f, 1.0f, 1.0f};
+    environment_sun sun = environment_sun_default();
+    int rc = file                           ? environment_map_load(&env->map, file, e)
+             : strcmp(name, "white") == 0 ? environment_map_constant(&env->map, "white", white, e)
+             : strcmp(name, "sky") == 0   ? environment_map_sky(&env->map, e)
+                                          : environment_map_sun(&env->map, &sun, e);
+    if (rc != 0)
+        return -1;
+    snprintf(env->spec, sizeof env->spec, "%s", file ? file : name);
+    snprintf(row->name, sizeof row->name, "%s", name);
+    st->out->environment_count++;
+    env_approx_settings s = env_approx_default_settings(st->ctx->quality == QUALITY_PRODUCTION);
+    if (env_approx_precompute(&env->map, &s, &st->dfg, st->ctx->threads, &env->lighting, e) != 0)
+        return -1;
+    row->sh_seconds = env->lighting.sh_seconds, row->map_seconds = env->lighting.map_seconds;
+    row->prefiltered_seconds = env->lighting.prefiltered_seconds;
+    return 0;
+}
+
+static int load_environments(env_state *st, gt_error *e)
+{
+    static const char *const builtin[3] = {"white", "sky", "sun"};
+    int production = st->ctx->quality == QUALITY_PRODUCTION;
+    const char *const *blender = production ? blender_all : blender_preview;
+    int count = production ? 8 : 2;
+    for (int i = 0; i < 3; ++i)
+        if (load_environment(st, builtin[i], NULL, e) != 0)
+            return -1;
+    for (int i = 0; i < count; ++i) {
+        char path[512];
+        snprintf(path, sizeof path, BLENDER_WORLD "%s.exr", blender[i]);
+        if (load_environment(st, blender[i], path, e) != 0)
+            return -1;
+    }
+    return 0;
+}
+
+/* The DFG table and the GTSO LUT every environment shares, and the variants. */
+static int shared_tables(env_state *st, gt_error *e)
+{
+    if (dfg_lut_build(&st->dfg, 64, st->ctx->threads) != 0 ||
+        so_lut_build(&st->lut, 32, SO_LOBE_GGX, SO_AXES_ANGLES, st->ctx->threads) != 0)
+        return gt_error_set(e, "environment study", "out of memory building the DFG and GTSO tables");
+    for (int v = 0; v < ENV_STUDY_SO_VARIANTS; ++v) {
+        so_variant_parse(env_study_so_label(v), &st->variants[v]);
+        st->variants[v].lut = &st->lut;
+    }
+    return 0;
+}
+
+/* ---- the references -------------------------------------------------------------- */
+
+static int render(const env_state *st, const scene *s, const char *spec, const camera *cam, reference_quantity q,
+                  const char *environment, image *out, gt_error *e)
+{
+    environment_render_settings light;
+    environment_render_settings_default(&light);
+    snprintf(light.environment, sizeof light.environment, "%s", environment ? environment : "white");
+    light.f0 = 0.04f;
+    reference_request req = {.quantity = q,
+                             .sampling = {.spp = st->out->spp, .seed = 1, .threads = st->ctx->threads},
+                             .normals = NORMAL_SHADING, .max_distance = INFINITY, .roughness = -1.0f,
+                             .multibounce = {.scene_albedo = 1, .bounces = st->out->bounces},
+                             .settings = environment ? &light : NULL};
+    render_stats stats;
+    return reference_render(s, spec, cam, &req, out, &stats, e);
+}
+
+/* Adds a case's scores to the environment's sums and per-scene arrays. */
+static void accumulate(env_state *st, int env, int scene, const env_case_scores *c)
+{
+    env_case_scores *sum = &st->sums[env];
+    env_study_environment *row = &st->out->environments[env];
+    for (int s = 0; s < ENV_IRRADIANCE_SOURCES; ++s)
+        for (int k = 0; k < ENV_STUDY_OCCLUDED_KINDS; ++k)
+            for (int p = 0; p < ENV_PARTS; ++p) {
+                sum->diffuse[s][k][p].rmse += c->diffuse[s][k][p].rmse;
+                sum->diffuse[s][k][p].dssim += c->diffuse[s][k][p].dssim;
+            }
+    for (int v = 0; v < ENV_STUDY_SO_VARIANTS; ++v) {
+        for (int p = 0; p < ENV_PARTS; ++p) {
+            sum->specular[v][p].rmse += c->specular[v][p].rmse;
+            sum->specular[v][p].dssim += c->specular[v][p].dssim;
+        }
+        row->specular_case[v][scene] = c->specular[v][ENV_PART_TOTAL].rmse;
+    }
+    for (int p = 0; p < ENV_PARTS; ++p)
+        row->ao_n_case[p][scene] = c->diffuse[ENV_IRRADIANCE_MAP][ENV_DIFFUSE_AO_N - 1][p].rmse;
+    sum->reference_noise += c->reference_noise;
+    row->noise_case[scene] = c->reference_noise;
+}
+
+/* One environment on one scene: its two references, scored (and imaged for the image scene). */
+static int run_case(env_state *st, int env, int scene_index, const scene *s, const char *spec, const camera *cam,
+                    const image *ao, const char *scene_name, gt_error *e)
+{
+    image diffuse = {0}, specular = {0};
+    char what[256];
+    snprintf(what, sizeof what, "environment %s, scene %s", st->out->environments[env].name, scene_name);
+    int rc = render(st, s, spec, cam, &reference_quantity_env_diffuse, st->envs[env].spec, &diffuse, e);
+    if (rc == 0)
+        rc = render(st, s, spec, cam, &reference_quantity_env_specular, st->envs[env].spec, &specular, e);
+    env_case c = {ao, &diffuse, &specular, &st->envs[env].lighting.lighting, st->variants, what};
+    env_case_scores scores;
+    memset(&scores, 0, sizeof scores);
+    if (rc == 0)
+        rc = env_case_score(&c, &scores, e);
+    if (rc == 0)
+        accumulate(st, env, scene_index, &scores);
+    if (rc == 0 && strcmp(scene_name, ENV_IMAGE_SCENE) == 0) {
+        char stem[128];
+        snprintf(stem, sizeof stem, "%s_%s", st->out->environments[env].name, scene_name);
+        rc = env_case_images(&c, st->dir, stem, e);
+    }
+    image_free(&diffuse);
+    image_free(&specular);
+    return rc;
+}
+
+static int run_scene(env_state *st, const char *name, gt_error *e)
+{
+    char spec[128];
+    snprintf(spec, sizeof spec, "builtin:%s", name);
+    scene s;
+    camera cam;
+    image ao = {0};
+    if (scene_load(spec, &s, e) != 0)
+        return -1;
+    int scene_index = st->out->scene_count;
+    int rc = scene_choose_camera(&s, NULL, st->out->size, st->out->size, &cam, e);
+    if (rc == 0)
+        rc = render(st, &s, spec, &cam, QUANTITY_AO, NULL, &ao, e);
+    for (int env = 0; env < st->out->environment_count && rc == 0; ++env)
+        rc = run_case(st, env, scene_index, &s, spec, &cam, &ao, name, e);
+    if (rc == 0)
+        snprintf(st->out->scenes[st->out->scene_count++], sizeof st->out->scenes[0], "%s", name);
+    image_free(&ao);
+    scene_free(&s);
+    return rc;
+}
+
+static int run_scenes(env_state *st, gt_error *e)
+{
+    if (st->ctx->quality != QUALITY_PRODUCTION) {
+        for (size_t i = 0; i < sizeof preview_scenes / sizeof preview_scenes[0]; ++i)
+            if (run_scene(st, preview_scenes[i], e) != 0)
+                return -1;
+        return 0;
+    }
+    for (int i = 0; i < builtin_study_scene_count() && i < ENV_STUDY_MAX_SCENES; ++i)
+        if (run_scene(st, builtin_study_scene_at(i)->name, e) != 0)
+            return -1;
+    return 0;
+}
+
+/* ---- the results ----------------------------------------------------------------- */
+
+static void average(env_state *st)
+{
+    double n = st->out->scene_count;
+    for (int env = 0; env < st->out->environment_count; ++env) {
+        env_study_environment *row = &st->out->environments[env];
+        const env_case_scores *sum = &st->sums[env];
+        for (int s = 0; s < ENV_IRRADIANCE_SOURCES; ++s)
+            for (int k = 0; k < ENV_STUDY_OCCLUDED_KINDS; ++k)
+                for (int p = 0; p < ENV_PARTS; ++p) {
+                    row->diffuse[s][k][p].rmse = sum->diffuse[s][k][p].rmse / n;
+                    row->diffuse[s][k][p].dssim = sum->diffuse[s][k][p].dssim / n;
+                }
+        for (int v = 0; v < ENV_STUDY_SO_VARIANTS; ++v)
+            for (int p = 0; p < ENV_PARTS; ++p) {
+                row->specular[v][p].rmse = sum->specular[v][p].rmse / n;
+                row->specular[v][p].dssim = sum->specular[v][p].dssim / n;
+            }
+        row->reference_noise = sum->reference_noise / n;
+    }
+}
+
+static void free_state(env_state *st)
+{
+    for (int env = 0; env < ENV_STUDY_MAX_ENVIRONMENTS; ++env) {
+        env_approx_precomputed_free(&st->envs[env].lighting);
+        environment_map_free(&st->envs[env].map);
+    }
+    dfg_lut_free(&st->dfg);
+    so_lut_free(&st->lut);
+}
+
+int env_approx_study(const study_context *ctx, env_study_result *out, gt_error *e)
+{
+    double t0 = seconds_now();
+    int preview = ctx->quality != QUALITY_PRODUCTION;
+    memset(out, 0, sizeof *out);
+    out->size = preview ? 48 : 128, out->spp = preview ? 64 : 1024, out->bounces = 3;
+    env_state *st = calloc(1, sizeof *st);
+    if (!st)
+        return gt_error_set(e, "environment study", "out of memory");
+    st->ctx = ctx, st->out = out;
+    int rc = study_make_dir(ctx, ENV_STUDY_DIR, st->dir, sizeof st->dir, e);
+    if (rc == 0)
+        rc = shared_tables(st, e);
+    if (rc == 0)
+        rc = load_environments(st, e);
+    if (rc == 0)
+        rc = run_scenes(st, e);
+    if (rc == 0) {
+        average(st);
+        for (int env = 0; env < out->environment_count; ++env)
+            env_study_rank(out, env);
+        env_study_claim(out);
+    }
+    free_state(st);
+    free(st);
+    out->seconds = seconds_now() - t0;
+    return rc;
+}

@@ -1,0 +1,38 @@
+/* The engines' lighting precomputations for one environment
+ * (core/environment_map.h), as the environment study uses them: the 9 SH
+ * coefficients, the exact irradiance map, the pre-filtered radiance levels
+ * (the DFG LUT is the caller's, built once), with the time each took. A constant environment (no
+ * texels) is first written as a small map of its constant; the rotation is
+ * left to the caller (the study renders with none) and the intensity is
+ * applied to the texels. */
+#ifndef GTLAB_STUDIES_ENV_APPROX_LIGHTING_H
+#define GTLAB_STUDIES_ENV_APPROX_LIGHTING_H
+
+#include "core/environment_map.h"
+#include "core/error.h"
+#include "realtime/env_approx.h"
+
+typedef struct {
+    int map_width, map_reduction;          /* irradiance map: width x width/2, blocks of 2^reduction texels */
+    int prefiltered_width, prefiltered_levels, prefiltered_samples;
+} env_approx_settings;
+
+/* 64, 3; 256, 6, 512 (production: 1024 samples). */
+env_approx_settings env_approx_default_settings(int production);
+
+typedef struct {
+    sh9_rgb sh;
+    irradiance_map map;
+    prefiltered_radiance prefiltered;
+    multibounce_model multibounce; /* the talk's published coefficients */
+    env_approx_lighting lighting;  /* pointers into the above */
+    double sh_seconds, map_seconds, prefiltered_seconds;
+} env_approx_precomputed;
+
+/* Builds everything for env; dfg is kept as a pointer. Returns 0, or -1
+ * with e (out of memory). */
+int env_approx_precompute(const environment_map *env, const env_approx_settings *s, const dfg_lut *dfg, int threads,
+                          env_approx_precomputed *out, gt_error *e);
+void env_approx_precomputed_free(env_approx_precomputed *p);
+
+#endif
