@@ -55,12 +55,10 @@ GTLAB_STUDY_STAGE(all_stage_normals, normals, normals_section)
 
 static const cli_subcommand luts[] = {
     {"best-fit-normals", lut_best_fit_normals, "best-fit RGB8 G-buffer normals (Kaplanyan 2010): the scale table"},
-    {NULL, NULL, NULL},
-};
+    {NULL, NULL, NULL}};
 static const all_stage stages[] = {
     {"normals", "best-fit normals", all_stage_normals, NORMALS_DIR, NULL},
-    {NULL, NULL, NULL, NULL, NULL},
-};
+    {NULL, NULL, NULL, NULL, NULL}};
 
 const technique technique_normals = {.name = "normals", .subcommands = {[VERB_LUT] = luts}, .stages = stages};
 
@@ -124,11 +122,9 @@ GTLAB_STUDY_STAGE(all_stage_sg_ndf, sg_ndf, sg_ndf_section)
 
 static const cli_subcommand sg_fits[] = {
     {"sg-ndf", fit_sg_ndf, "spherical Gaussians fitted to anisotropic Ward/GGX NDFs (Kaplanyan 2010): JSON, C header"},
-    {NULL, NULL, NULL},
-};
+    {NULL, NULL, NULL}};
 static const all_stage sg_stages[] = {
     {"sg-ndf", "NDF fit with spherical Gaussians", all_stage_sg_ndf, NULL, NULL},
-    {NULL, NULL, NULL, NULL, NULL},
-};
+    {NULL, NULL, NULL, NULL, NULL}};
 
 const technique technique_sg_ndf = {.name = "sg-ndf", .subcommands = {[VERB_FIT] = sg_fits}, .stages = sg_stages};

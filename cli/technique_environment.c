@@ -1,16 +1,14 @@
 /* Environment lighting (issue 28): `gtlab bench env-diffuse`, the
  * environment-lit diffuse reference's samples/s against the white-dome
  * multibounce reference on the same scene (raytracer/environment_throughput.h). */
-#define _GNU_SOURCE
 #include <stdio.h>
-#include <string.h>
 
 #include "cli/cli.h"
 #include "cli/cli_options.h"
 #include "cli/technique.h"
 #include "core/threads.h"
 #include "raytracer/environment_throughput.h"
-#include "scene/scene_loaders.h"
+#include "studies/study.h"
 
 static const cli_option bench_options[] = {
     CLI_STRING("scene", "S", "builtin:NAME or a glTF file (default builtin:cornell)"),
@@ -48,12 +46,10 @@ static int bench_env_diffuse(int argc, char **argv)
     scene s;
     camera cam;
     gt_error e;
-    if (scene_load(spec, &s, &e) != 0)
-        return cli_fail(&e);
     environment_throughput r;
-    int rc = scene_choose_camera(&s, NULL, (int)width, (int)height, &cam, &e);
-    if (rc == 0)
-        rc = environment_throughput_run(&s, &cam, &albedo, &light, (int)spp, (int)threads, (int)repeats, &r, &e);
+    if (study_load_view(spec, (int)width, (int)height, &s, &cam, &e) != 0)
+        return cli_fail(&e);
+    int rc = environment_throughput_run(&s, &cam, &albedo, &light, (int)spp, (int)threads, (int)repeats, &r, &e);
     scene_free(&s);
     if (rc != 0)
         return cli_fail(&e);
@@ -69,8 +65,7 @@ static int bench_env_diffuse(int argc, char **argv)
 
 static const cli_subcommand benches[] = {
     {"env-diffuse", bench_env_diffuse, "environment-lit diffuse samples/s against the white-dome multibounce"},
-    {NULL, NULL, NULL},
-};
+    {NULL, NULL, NULL}};
 
 const technique technique_environment = {
     .name = "environment",

@@ -221,16 +221,13 @@ static const cli_subcommand approximations[] = {
     {"vo", approx_vo, "volumetric obscurance with 4 samples (Loos and Sloan 2010; CryENGINE 3)"},
     {"alchemy", approx_alchemy, "Alchemy ambient obscurance (McGuire et al. 2011), a baseline the GTAO talk cites"},
     {"crytek", approx_crytek, "CryENGINE 2's SSAO (Mittring 2007), a baseline the GTAO talk cites"},
-    {NULL, NULL, NULL},
-};
+    {NULL, NULL, NULL}};
 static const cli_subcommand fits[] = {
     {"gtao-params", fit_gtao_params, "GTAO radius, falloff and thickness against 3-D AO references"},
-    {NULL, NULL, NULL},
-};
+    {NULL, NULL, NULL}};
 static const cli_subcommand benches[] = {
     {"gtao", bench_gtao, "GTAO at 1920x1080 in the talk's configuration, every preset's cost per pixel"},
-    {NULL, NULL, NULL},
-};
+    {NULL, NULL, NULL}};
 /* GTAO is scored against the AO stage's references (its `needs`). */
 static int all_stage_gtao(report_context *ctx, gt_error *e)
 {
@@ -255,8 +252,7 @@ static int all_stage_gtao_shortcuts(report_context *ctx, gt_error *e)
 static const all_stage stages[] = {
     {"gtao", "GTAO validation", all_stage_gtao, GTAO_VALIDATION_DIR, "ao"},
     {"gtao-shortcuts", "GTAO's shortcuts", all_stage_gtao_shortcuts, NULL, "gtao"},
-    {NULL, NULL, NULL, NULL, NULL},
-};
+    {NULL, NULL, NULL, NULL, NULL}};
 
 const technique technique_gtao = {
     .name = "gtao",

@@ -200,23 +200,19 @@ static int fit_aperture(int argc, char **argv)
 static const cli_subcommand approximations[] = {
     {"specular-occlusion", approx_specular_occlusion,
      "GTSO and the other specular-occlusion variants from AO + bent normal"},
-    {NULL, NULL, NULL},
-};
+    {NULL, NULL, NULL}};
 static const cli_subcommand fits[] = {
     {"aperture", fit_aperture, "GTSO gloss-to-aperture u by DSSIM against specular-occlusion references"},
-    {NULL, NULL, NULL},
-};
+    {NULL, NULL, NULL}};
 static const cli_subcommand luts[] = {
     {"specular-occlusion", lut_specular_occlusion, "GTSO cone/lobe V_s(a_v, beta, r): EXR, 8-bit PNG, C header"},
-    {NULL, NULL, NULL},
-};
+    {NULL, NULL, NULL}};
 GTLAB_STUDY_STAGE_NO_REQUEST(all_stage_specular_occlusion, so_study_result, specular_occlusion_study,
                              specular_occlusion_section)
 
 static const all_stage stages[] = {
     {"specular-occlusion", "specular occlusion", all_stage_specular_occlusion, NULL, NULL},
-    {NULL, NULL, NULL, NULL, NULL},
-};
+    {NULL, NULL, NULL, NULL, NULL}};
 
 const technique technique_specular_occlusion = {
     .name = "specular-occlusion",

@@ -170,23 +170,19 @@ static int check_sphere_noh(int argc, char **argv)
 
 static const cli_subcommand fits[] = {
     {"sphere-light", fit_sphere_light, "Decima's sphere-light radius reduction and normalisation vs MC references"},
-    {NULL, NULL, NULL},
-};
+    {NULL, NULL, NULL}};
 static const cli_subcommand checks[] = {
     {"sphere-noh", check_sphere_noh,
      "GetNoHSquared (Karis, 1 and 2 Newton steps) against the brute-force max of (N.H)^2"},
-    {NULL, NULL, NULL},
-};
+    {NULL, NULL, NULL}};
 static const cli_subcommand benches[] = {
     {"sphere-light", bench_sphere_light, "cost of the Newton step: instructions and ns"},
-    {NULL, NULL, NULL},
-};
+    {NULL, NULL, NULL}};
 GTLAB_STUDY_STAGE_NO_REQUEST(all_stage_sphere_light, sphere_light_result, sphere_light_study, sphere_light_section)
 
 static const all_stage stages[] = {
     {"sphere-light", "GGX sphere lights", all_stage_sphere_light, NULL, NULL},
-    {NULL, NULL, NULL, NULL, NULL},
-};
+    {NULL, NULL, NULL, NULL, NULL}};
 
 const technique technique_sphere_light = {
     .name = "sphere-light",

@@ -11,7 +11,6 @@ static int all_stage_ray_throughput(report_context *ctx, gt_error *e)
 
 static const all_stage stages[] = {
     {"throughput", "ray throughput", all_stage_ray_throughput, NULL, NULL},
-    {NULL, NULL, NULL, NULL, NULL},
-};
+    {NULL, NULL, NULL, NULL, NULL}};
 
 const technique technique_throughput = {.name = "throughput", .stages = stages};

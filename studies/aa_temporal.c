@@ -270,7 +270,8 @@ static int write_png(const char *dir, const char *name, const float *rgb, const 
                                                                1.0f))
                                  : (float)srgb_to_linear(rgb[3 * k + c]);
     char path[4096 + 128];
-    snprintf(path, sizeof path, "%s/%s.png", dir, name);
+    if (rc == 0 && snprintf(path, sizeof path, "%s/%s.png", dir, name) >= (int)sizeof path)
+        rc = gt_error_set(e, dir, "path too long");
     if (rc == 0)
         rc = image_write_preview(path, (const float *const *)planes, 3, width, height, 1.0f, e);
     free(planes[0]), free(planes[1]), free(planes[2]);
