@@ -59,8 +59,8 @@ static int load_environment(env_state *st, const char *name, const char *file, g
                                           : environment_map_sun(&env->map, &sun, e);
     if (rc != 0)
         return -1;
-    snprintf(env->spec, sizeof env->spec, "%s", file ? file : name);
-    snprintf(row->name, sizeof row->name, "%s", name);
+    snprintf(env->spec, sizeof env->spec, "%.*s", (int)sizeof env->spec - 1, file ? file : name);
+    snprintf(row->name, sizeof row->name, "%.*s", (int)sizeof row->name - 1, name);
     st->out->environment_count++;
     env_approx_settings s = env_approx_default_settings(st->ctx->quality == QUALITY_PRODUCTION);
     if (env_approx_precompute(&env->map, &s, &st->dfg, st->ctx->threads, &env->lighting, e) != 0)
