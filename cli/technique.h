@@ -38,6 +38,11 @@ typedef struct {
     static const all_stage id##_stages[] = {{key, title, run, writes, NULL}, {NULL, NULL, NULL, NULL, NULL}}; \
     const technique technique_##id = {.name = key, .stages = id##_stages}
 
+/* A technique's tables written in place, the NULL terminator added:
+ * .subcommands = {[VERB_LUT] = CLI_SUBCOMMANDS({"name", fn, "help"}, ...)}, .stages = ALL_STAGES({...}). */
+#define CLI_SUBCOMMANDS(...) ((const cli_subcommand[]){__VA_ARGS__, {NULL, NULL, NULL}})
+#define ALL_STAGES(...) ((const all_stage[]){__VA_ARGS__, {NULL, NULL, NULL, NULL, NULL}})
+
 /* A stage function `fn` that runs a study at the run's quality and renders
  * its section: with GTLAB_STUDY_STAGE, the study's types and functions are
  * named by its prefix (P_result, P_request, P_default_request(quality),

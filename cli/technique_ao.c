@@ -7,12 +7,9 @@
 
 GTLAB_STUDY_STAGE(all_stage_ao_references, ao_references, ao_references_section)
 
-static const cli_subcommand benches[] = {
-    {"convergence", bench_convergence, "AO time to RMSE 0.01, plain against the height-field control variate"},
-    {NULL, NULL, NULL}};
-
-static const all_stage stages[] = {
-    {"ao", "AO references", all_stage_ao_references, AO_REFERENCES_DIR, NULL},
-    {NULL, NULL, NULL, NULL, NULL}};
-
-const technique technique_ao = {.name = "ao", .subcommands = {[VERB_BENCH] = benches}, .stages = stages};
+const technique technique_ao = {
+    .name = "ao",
+    .subcommands = {[VERB_BENCH] = CLI_SUBCOMMANDS(
+        {"convergence", bench_convergence, "AO time to RMSE 0.01, plain against the height-field control variate"})},
+    .stages = ALL_STAGES({"ao", "AO references", all_stage_ao_references, AO_REFERENCES_DIR, NULL}),
+};

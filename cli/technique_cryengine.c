@@ -53,20 +53,14 @@ static int lut_best_fit_normals(int argc, char **argv)
 
 GTLAB_STUDY_STAGE(all_stage_normals, normals, normals_section)
 
-static const cli_subcommand luts[] = {
-    {"best-fit-normals", lut_best_fit_normals, "best-fit RGB8 G-buffer normals (Kaplanyan 2010): the scale table"},
-    {NULL, NULL, NULL}};
-static const all_stage stages[] = {
-    {"normals", "best-fit normals", all_stage_normals, NORMALS_DIR, NULL},
-    {NULL, NULL, NULL, NULL, NULL}};
+const technique technique_normals = {
+    .name = "normals",
+    .subcommands = {[VERB_LUT] = CLI_SUBCOMMANDS(
+        {"best-fit-normals", lut_best_fit_normals, "best-fit RGB8 G-buffer normals (Kaplanyan 2010): the scale table"})},
+    .stages = ALL_STAGES({"normals", "best-fit normals", all_stage_normals, NORMALS_DIR, NULL}),
+};
 
-const technique technique_normals = {.name = "normals", .subcommands = {[VERB_LUT] = luts}, .stages = stages};
-
-static int all_stage_hdr_precision(report_context *ctx, gt_error *e)
-{
-    hdr_precision_result r;
-    return hdr_precision_study(&ctx->study, &r, e) != 0 ? -1 : hdr_precision_section(ctx, &r, e);
-}
+GTLAB_STUDY_STAGE_NO_REQUEST(all_stage_hdr_precision, hdr_precision_result, hdr_precision_study, hdr_precision_section)
 
 GTLAB_STAGE_TECHNIQUE(hdr_precision, "hdr-precision", "gamma vs linear and HDR lower bounds", all_stage_hdr_precision,
                       HDR_PRECISION_DIR);
@@ -120,11 +114,9 @@ static int fit_sg_ndf(int argc, char **argv)
 
 GTLAB_STUDY_STAGE(all_stage_sg_ndf, sg_ndf, sg_ndf_section)
 
-static const cli_subcommand sg_fits[] = {
-    {"sg-ndf", fit_sg_ndf, "spherical Gaussians fitted to anisotropic Ward/GGX NDFs (Kaplanyan 2010): JSON, C header"},
-    {NULL, NULL, NULL}};
-static const all_stage sg_stages[] = {
-    {"sg-ndf", "NDF fit with spherical Gaussians", all_stage_sg_ndf, NULL, NULL},
-    {NULL, NULL, NULL, NULL, NULL}};
-
-const technique technique_sg_ndf = {.name = "sg-ndf", .subcommands = {[VERB_FIT] = sg_fits}, .stages = sg_stages};
+const technique technique_sg_ndf = {
+    .name = "sg-ndf",
+    .subcommands = {[VERB_FIT] = CLI_SUBCOMMANDS(
+        {"sg-ndf", fit_sg_ndf, "spherical Gaussians fitted to anisotropic Ward/GGX NDFs (Kaplanyan 2010): JSON, C header"})},
+    .stages = ALL_STAGES({"sg-ndf", "NDF fit with spherical Gaussians", all_stage_sg_ndf, NULL, NULL}),
+};

@@ -41,11 +41,9 @@ static int lut_dfg(int argc, char **argv)
 
 GTLAB_STUDY_STAGE(all_stage_dfg, dfg, dfg_section)
 
-static const cli_subcommand luts[] = {
-    {"dfg", lut_dfg, "split-sum DFG (Karis 2013): scale, bias, albedo vs n.v and roughness: EXR, PNG, C, HLSL, GLSL"},
-    {NULL, NULL, NULL}};
-static const all_stage stages[] = {
-    {"dfg", "split-sum DFG LUT", all_stage_dfg, DFG_LUTS_DIR, NULL},
-    {NULL, NULL, NULL, NULL, NULL}};
-
-const technique technique_dfg = {.name = "dfg", .subcommands = {[VERB_LUT] = luts}, .stages = stages};
+const technique technique_dfg = {
+    .name = "dfg",
+    .subcommands = {[VERB_LUT] = CLI_SUBCOMMANDS(
+        {"dfg", lut_dfg, "split-sum DFG (Karis 2013): scale, bias, albedo vs n.v and roughness: EXR, PNG, C, HLSL, GLSL"})},
+    .stages = ALL_STAGES({"dfg", "split-sum DFG LUT", all_stage_dfg, DFG_LUTS_DIR, NULL}),
+};

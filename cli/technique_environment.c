@@ -63,11 +63,8 @@ static int bench_env_diffuse(int argc, char **argv)
     return EXIT_OK;
 }
 
-static const cli_subcommand benches[] = {
-    {"env-diffuse", bench_env_diffuse, "environment-lit diffuse samples/s against the white-dome multibounce"},
-    {NULL, NULL, NULL}};
-
 const technique technique_environment = {
     .name = "environment",
-    .subcommands = {[VERB_BENCH] = benches},
+    .subcommands = {[VERB_BENCH] = CLI_SUBCOMMANDS(
+        {"env-diffuse", bench_env_diffuse, "environment-lit diffuse samples/s against the white-dome multibounce"})},
 };

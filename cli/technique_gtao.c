@@ -215,19 +215,6 @@ static int bench_gtao(int argc, char **argv)
     return EXIT_OK;
 }
 
-static const cli_subcommand approximations[] = {
-    {"gtao", approx_gtao, "ground-truth AO (Jimenez et al. 2016): cosine-weighted horizons, bent normals"},
-    {"hbao", approx_hbao, "horizon-based AO (Bavoil et al. 2008): uniform weighting"},
-    {"vo", approx_vo, "volumetric obscurance with 4 samples (Loos and Sloan 2010; CryENGINE 3)"},
-    {"alchemy", approx_alchemy, "Alchemy ambient obscurance (McGuire et al. 2011), a baseline the GTAO talk cites"},
-    {"crytek", approx_crytek, "CryENGINE 2's SSAO (Mittring 2007), a baseline the GTAO talk cites"},
-    {NULL, NULL, NULL}};
-static const cli_subcommand fits[] = {
-    {"gtao-params", fit_gtao_params, "GTAO radius, falloff and thickness against 3-D AO references"},
-    {NULL, NULL, NULL}};
-static const cli_subcommand benches[] = {
-    {"gtao", bench_gtao, "GTAO at 1920x1080 in the talk's configuration, every preset's cost per pixel"},
-    {NULL, NULL, NULL}};
 /* GTAO is scored against the AO stage's references (its `needs`). */
 static int all_stage_gtao(report_context *ctx, gt_error *e)
 {
@@ -249,13 +236,21 @@ static int all_stage_gtao_shortcuts(report_context *ctx, gt_error *e)
     return gtao_checks_study(&ctx->study, &rq, &r, e) != 0 ? -1 : (gtao_checks_section(ctx, &r), 0);
 }
 
-static const all_stage stages[] = {
-    {"gtao", "GTAO validation", all_stage_gtao, GTAO_VALIDATION_DIR, "ao"},
-    {"gtao-shortcuts", "GTAO's shortcuts", all_stage_gtao_shortcuts, NULL, "gtao"},
-    {NULL, NULL, NULL, NULL, NULL}};
-
 const technique technique_gtao = {
     .name = "gtao",
-    .subcommands = {[VERB_APPROX] = approximations, [VERB_FIT] = fits, [VERB_BENCH] = benches},
-    .stages = stages,
+    .subcommands = {
+        [VERB_APPROX] = CLI_SUBCOMMANDS(
+            {"gtao", approx_gtao, "ground-truth AO (Jimenez et al. 2016): cosine-weighted horizons, bent normals"},
+            {"hbao", approx_hbao, "horizon-based AO (Bavoil et al. 2008): uniform weighting"},
+            {"vo", approx_vo, "volumetric obscurance with 4 samples (Loos and Sloan 2010; CryENGINE 3)"},
+            {"alchemy", approx_alchemy, "Alchemy ambient obscurance (McGuire et al. 2011), a baseline the GTAO talk cites"},
+            {"crytek", approx_crytek, "CryENGINE 2's SSAO (Mittring 2007), a baseline the GTAO talk cites"}),
+        [VERB_FIT] = CLI_SUBCOMMANDS(
+            {"gtao-params", fit_gtao_params, "GTAO radius, falloff and thickness against 3-D AO references"}),
+        [VERB_BENCH] = CLI_SUBCOMMANDS(
+            {"gtao", bench_gtao, "GTAO at 1920x1080 in the talk's configuration, every preset's cost per pixel"}),
+    },
+    .stages = ALL_STAGES(
+        {"gtao", "GTAO validation", all_stage_gtao, GTAO_VALIDATION_DIR, "ao"},
+        {"gtao-shortcuts", "GTAO's shortcuts", all_stage_gtao_shortcuts, NULL, "gtao"}),
 };

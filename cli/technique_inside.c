@@ -60,14 +60,14 @@ GTLAB_STUDY_STAGE(all_stage_bloom, bloom, bloom_section)
 
 GTLAB_STUDY_STAGE(all_stage_ao_decals, ao_decals, ao_decals_section)
 
-static const cli_subcommand luts[] = {{"blue-noise", lut_blue_noise, "void-and-cluster blue noise: EXR, PNG"},
-                                      {NULL, NULL, NULL}};
-static const cli_subcommand checks[] = {{"dither", check_dither, "RPDF/TPDF error moments against their laws"},
-                                        {NULL, NULL, NULL}};
-static const all_stage stages[] = {{"dither", "dithering and blue noise (INSIDE)", all_stage_dither, DITHER_DIR, NULL},
-                                   {"bloom", "bloom 13 -> 9 tap refit (INSIDE)", all_stage_bloom, BLOOM_DIR, NULL},
-                                   {"ao-decals", "AO decals (INSIDE)", all_stage_ao_decals, AO_DECALS_DIR, NULL},
-                                   {NULL, NULL, NULL, NULL, NULL}};
-
 const technique technique_inside = {
-    .name = "inside", .subcommands = {[VERB_LUT] = luts, [VERB_CHECK] = checks}, .stages = stages};
+    .name = "inside",
+    .subcommands = {
+        [VERB_LUT] = CLI_SUBCOMMANDS({"blue-noise", lut_blue_noise, "void-and-cluster blue noise: EXR, PNG"}),
+        [VERB_CHECK] = CLI_SUBCOMMANDS({"dither", check_dither, "RPDF/TPDF error moments against their laws"}),
+    },
+    .stages = ALL_STAGES(
+        {"dither", "dithering and blue noise (INSIDE)", all_stage_dither, DITHER_DIR, NULL},
+        {"bloom", "bloom 13 -> 9 tap refit (INSIDE)", all_stage_bloom, BLOOM_DIR, NULL},
+        {"ao-decals", "AO decals (INSIDE)", all_stage_ao_decals, AO_DECALS_DIR, NULL}),
+};

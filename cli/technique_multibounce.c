@@ -194,21 +194,16 @@ static int bench_multibounce(int argc, char **argv)
     return EXIT_OK;
 }
 
-static const cli_subcommand fits[] = {
-    {"multibounce", fit_multibounce, "GTAO multi-bounce cubic (per albedo and joint in rho) vs multibounce renders"},
-    {NULL, NULL, NULL}};
-static const cli_subcommand benches[] = {
-    {"multibounce", bench_multibounce, "multi-bounce paths/s against raw Embree; N albedos in one pass"},
-    {"fit", bench_fit, "a million-sample fit, 1- vs 1024-sample blocks"},
-    {NULL, NULL, NULL}};
 GTLAB_STUDY_STAGE_NO_REQUEST(all_stage_multibounce, multibounce_study_result, multibounce_study, multibounce_section)
-
-static const all_stage stages[] = {
-    {"multibounce", "multi-bounce refit", all_stage_multibounce, NULL, NULL},
-    {NULL, NULL, NULL, NULL, NULL}};
 
 const technique technique_multibounce = {
     .name = "multibounce",
-    .subcommands = {[VERB_FIT] = fits, [VERB_BENCH] = benches},
-    .stages = stages,
+    .subcommands = {
+        [VERB_FIT] = CLI_SUBCOMMANDS(
+            {"multibounce", fit_multibounce, "GTAO multi-bounce cubic (per albedo and joint in rho) vs multibounce renders"}),
+        [VERB_BENCH] = CLI_SUBCOMMANDS(
+            {"multibounce", bench_multibounce, "multi-bounce paths/s against raw Embree; N albedos in one pass"},
+            {"fit", bench_fit, "a million-sample fit, 1- vs 1024-sample blocks"}),
+    },
+    .stages = ALL_STAGES({"multibounce", "multi-bounce refit", all_stage_multibounce, NULL, NULL}),
 };

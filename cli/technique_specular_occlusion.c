@@ -197,25 +197,18 @@ static int fit_aperture(int argc, char **argv)
     return status;
 }
 
-static const cli_subcommand approximations[] = {
-    {"specular-occlusion", approx_specular_occlusion,
-     "GTSO and the other specular-occlusion variants from AO + bent normal"},
-    {NULL, NULL, NULL}};
-static const cli_subcommand fits[] = {
-    {"aperture", fit_aperture, "GTSO gloss-to-aperture u by DSSIM against specular-occlusion references"},
-    {NULL, NULL, NULL}};
-static const cli_subcommand luts[] = {
-    {"specular-occlusion", lut_specular_occlusion, "GTSO cone/lobe V_s(a_v, beta, r): EXR, 8-bit PNG, C header"},
-    {NULL, NULL, NULL}};
 GTLAB_STUDY_STAGE_NO_REQUEST(all_stage_specular_occlusion, so_study_result, specular_occlusion_study,
                              specular_occlusion_section)
 
-static const all_stage stages[] = {
-    {"specular-occlusion", "specular occlusion", all_stage_specular_occlusion, NULL, NULL},
-    {NULL, NULL, NULL, NULL, NULL}};
-
 const technique technique_specular_occlusion = {
     .name = "specular-occlusion",
-    .subcommands = {[VERB_APPROX] = approximations, [VERB_FIT] = fits, [VERB_LUT] = luts},
-    .stages = stages,
+    .subcommands = {
+        [VERB_APPROX] = CLI_SUBCOMMANDS(
+            {"specular-occlusion", approx_specular_occlusion, "GTSO and the other specular-occlusion variants from AO + bent normal"}),
+        [VERB_FIT] = CLI_SUBCOMMANDS(
+            {"aperture", fit_aperture, "GTSO gloss-to-aperture u by DSSIM against specular-occlusion references"}),
+        [VERB_LUT] = CLI_SUBCOMMANDS(
+            {"specular-occlusion", lut_specular_occlusion, "GTSO cone/lobe V_s(a_v, beta, r): EXR, 8-bit PNG, C header"}),
+    },
+    .stages = ALL_STAGES({"specular-occlusion", "specular occlusion", all_stage_specular_occlusion, NULL, NULL}),
 };

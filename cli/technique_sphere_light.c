@@ -168,24 +168,17 @@ static int check_sphere_noh(int argc, char **argv)
     return EXIT_OK;
 }
 
-static const cli_subcommand fits[] = {
-    {"sphere-light", fit_sphere_light, "Decima's sphere-light radius reduction and normalisation vs MC references"},
-    {NULL, NULL, NULL}};
-static const cli_subcommand checks[] = {
-    {"sphere-noh", check_sphere_noh,
-     "GetNoHSquared (Karis, 1 and 2 Newton steps) against the brute-force max of (N.H)^2"},
-    {NULL, NULL, NULL}};
-static const cli_subcommand benches[] = {
-    {"sphere-light", bench_sphere_light, "cost of the Newton step: instructions and ns"},
-    {NULL, NULL, NULL}};
 GTLAB_STUDY_STAGE_NO_REQUEST(all_stage_sphere_light, sphere_light_result, sphere_light_study, sphere_light_section)
-
-static const all_stage stages[] = {
-    {"sphere-light", "GGX sphere lights", all_stage_sphere_light, NULL, NULL},
-    {NULL, NULL, NULL, NULL, NULL}};
 
 const technique technique_sphere_light = {
     .name = "sphere-light",
-    .subcommands = {[VERB_FIT] = fits, [VERB_CHECK] = checks, [VERB_BENCH] = benches},
-    .stages = stages,
+    .subcommands = {
+        [VERB_FIT] = CLI_SUBCOMMANDS(
+            {"sphere-light", fit_sphere_light, "Decima's sphere-light radius reduction and normalisation vs MC references"}),
+        [VERB_CHECK] = CLI_SUBCOMMANDS(
+            {"sphere-noh", check_sphere_noh, "GetNoHSquared (Karis, 1 and 2 Newton steps) against the brute-force max of (N.H)^2"}),
+        [VERB_BENCH] = CLI_SUBCOMMANDS(
+            {"sphere-light", bench_sphere_light, "cost of the Newton step: instructions and ns"}),
+    },
+    .stages = ALL_STAGES({"sphere-light", "GGX sphere lights", all_stage_sphere_light, NULL, NULL}),
 };

@@ -3,14 +3,6 @@
 #include "cli/technique.h"
 #include "report/ray_throughput_section.h"
 
-static int all_stage_ray_throughput(report_context *ctx, gt_error *e)
-{
-    ray_throughput_result r;
-    return ray_throughput_study(&ctx->study, &r, e) != 0 ? -1 : ray_throughput_section(ctx, &r, e);
-}
-
-static const all_stage stages[] = {
-    {"throughput", "ray throughput", all_stage_ray_throughput, NULL, NULL},
-    {NULL, NULL, NULL, NULL, NULL}};
-
-const technique technique_throughput = {.name = "throughput", .stages = stages};
+GTLAB_STUDY_STAGE_NO_REQUEST(all_stage_ray_throughput, ray_throughput_result, ray_throughput_study,
+                             ray_throughput_section)
+GTLAB_STAGE_TECHNIQUE(throughput, "throughput", "ray throughput", all_stage_ray_throughput, NULL);

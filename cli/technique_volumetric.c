@@ -73,14 +73,13 @@ static int bench_raymarch(int argc, char **argv)
 
 GTLAB_STUDY_STAGE(all_stage_volumetric, vlight, vlight_section)
 
-static const cli_subcommand approx[] = {
-    {"raymarch", approx_raymarch, "INSIDE's volumetric-light ray-march (noise, steps, half res, frames)"},
-    {NULL, NULL, NULL}};
-static const cli_subcommand bench[] = {
-    {"raymarch", bench_raymarch, "volumetric-light ray-march: ns per pixel per sample"}, {NULL, NULL, NULL}};
-static const all_stage stages[] = {
-    {"volumetric", "volumetric lights (INSIDE)", all_stage_volumetric, VLIGHT_DIR, NULL},
-    {NULL, NULL, NULL, NULL, NULL}};
-
 const technique technique_volumetric = {
-    .name = "volumetric", .subcommands = {[VERB_APPROX] = approx, [VERB_BENCH] = bench}, .stages = stages};
+    .name = "volumetric",
+    .subcommands = {
+        [VERB_APPROX] = CLI_SUBCOMMANDS(
+            {"raymarch", approx_raymarch, "INSIDE's volumetric-light ray-march (noise, steps, half res, frames)"}),
+        [VERB_BENCH] = CLI_SUBCOMMANDS(
+            {"raymarch", bench_raymarch, "volumetric-light ray-march: ns per pixel per sample"}),
+    },
+    .stages = ALL_STAGES({"volumetric", "volumetric lights (INSIDE)", all_stage_volumetric, VLIGHT_DIR, NULL}),
+};
