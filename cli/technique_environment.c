@@ -8,7 +8,6 @@
 #include "cli/technique.h"
 #include "core/threads.h"
 #include "raytracer/environment_throughput.h"
-#include "studies/study.h"
 
 static const cli_option bench_options[] = {
     CLI_STRING("scene", "S", "builtin:NAME or a glTF file (default builtin:cornell)"),
@@ -39,28 +38,10 @@ static int bench_env_diffuse(int argc, char **argv)
                           (void *[]){&spec, &environment, &width, &height, &spp, &bounces, &threads, &repeats}, argc,
                           argv, &status) != 0)
         return status;
-    multibounce_settings albedo = {.albedo_count = 1, .albedos = {0.5f}, .bounces = (int)bounces};
-    environment_render_settings light;
-    environment_render_settings_default(&light);
-    snprintf(light.environment, sizeof light.environment, "%s", environment);
-    scene s;
-    camera cam;
+    environment_bench_request rq = {spec, environment, (int)width, (int)height,
+                                    (int)spp, (int)bounces, (int)threads, (int)repeats};
     gt_error e;
-    environment_throughput r;
-    if (study_load_view(spec, (int)width, (int)height, &s, &cam, &e) != 0)
-        return cli_fail(&e);
-    int rc = environment_throughput_run(&s, &cam, &albedo, &light, (int)spp, (int)threads, (int)repeats, &r, &e);
-    scene_free(&s);
-    if (rc != 0)
-        return cli_fail(&e);
-    printf("scene %s, %ldx%ld, %ld spp, albedo 0.5, %ld bounces, %d threads, best of %ld\n", spec, width, height, spp,
-           bounces, r.threads, repeats);
-    printf("environment %s\n\n", environment);
-    printf("%-34s %14s %14s\n", "", "samples/s", "rays/s");
-    printf("%-34s %14.4g %14.4g\n", "multibounce (white dome)", r.multibounce_samples_per_s, r.multibounce_rays_per_s);
-    printf("%-34s %14.4g %14.4g\n", "env-diffuse", r.environment_samples_per_s, r.environment_rays_per_s);
-    printf("\nratio env-diffuse / multibounce samples/s: %.3f (goal >= 0.7)\n", r.ratio);
-    return EXIT_OK;
+    return environment_throughput_bench(stdout, &rq, &e) == 0 ? EXIT_OK : cli_fail(&e);
 }
 
 const technique technique_environment = {

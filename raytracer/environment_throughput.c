@@ -1,9 +1,11 @@
 #include "raytracer/environment_throughput.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "raytracer/environment_diffuse_integrator.h"
+#include "scene/scene_loaders.h"
 
 /* One render of `it`: its samples/s and rays/s, kept when better. */
 static int time_render(const gbuffer *gb, const integrator *it, int spp, int threads, double *samples_per_s,
@@ -63,5 +65,37 @@ int environment_throughput_run(const scene *s, const camera *cam, const multibou
     }
     embree_scene_release(&es);
     environment_light_free(&light);
+    return rc;
+}
+
+static void print_table(FILE *out, const environment_bench_request *rq, const environment_throughput *r)
+{
+    fprintf(out, "scene %s, %dx%d, %d spp, albedo 0.5, %d bounces, %d threads, best of %d\n", rq->scene, rq->width,
+            rq->height, rq->spp, rq->bounces, r->threads, rq->repeats);
+    fprintf(out, "environment %s\n\n", rq->environment);
+    fprintf(out, "%-34s %14s %14s\n", "", "samples/s", "rays/s");
+    fprintf(out, "%-34s %14.4g %14.4g\n", "multibounce (white dome)", r->multibounce_samples_per_s,
+            r->multibounce_rays_per_s);
+    fprintf(out, "%-34s %14.4g %14.4g\n", "env-diffuse", r->environment_samples_per_s, r->environment_rays_per_s);
+    fprintf(out, "\nratio env-diffuse / multibounce samples/s: %.3f (goal >= 0.7)\n", r->ratio);
+}
+
+int environment_throughput_bench(FILE *out, const environment_bench_request *rq, gt_error *e)
+{
+    multibounce_settings albedo = {.albedo_count = 1, .albedos = {0.5f}, .bounces = rq->bounces};
+    environment_render_settings light;
+    environment_render_settings_default(&light);
+    snprintf(light.environment, sizeof light.environment, "%s", rq->environment);
+    scene s;
+    camera cam;
+    if (scene_load(rq->scene, &s, e) != 0)
+        return -1;
+    environment_throughput r;
+    int rc = scene_choose_camera(&s, NULL, rq->width, rq->height, &cam, e);
+    if (rc == 0)
+        rc = environment_throughput_run(&s, &cam, &albedo, &light, rq->spp, rq->threads, rq->repeats, &r, e);
+    scene_free(&s);
+    if (rc == 0)
+        print_table(out, rq, &r);
     return rc;
 }

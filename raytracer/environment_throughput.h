@@ -6,6 +6,8 @@
 #ifndef GTLAB_RAYTRACER_ENVIRONMENT_THROUGHPUT_H
 #define GTLAB_RAYTRACER_ENVIRONMENT_THROUGHPUT_H
 
+#include <stdio.h>
+
 #include "core/error.h"
 #include "raytracer/environment_light.h"
 #include "raytracer/multibounce_integrator.h"
@@ -23,5 +25,15 @@ typedef struct {
 int environment_throughput_run(const scene *s, const camera *cam, const multibounce_settings *settings,
                                const environment_render_settings *environment, int spp, int threads, int repeats,
                                environment_throughput *out, gt_error *e);
+
+/* `gtlab bench env-diffuse`: the scene (builtin:NAME or a glTF file) from
+ * its default camera at width x height, grey albedo 0.5, the environment
+ * (white, sky, sun or an image file), run as above and printed to out as a
+ * table with the ratio. Returns 0, or -1 with e. */
+typedef struct {
+    const char *scene, *environment;
+    int width, height, spp, bounces, threads, repeats;
+} environment_bench_request;
+int environment_throughput_bench(FILE *out, const environment_bench_request *rq, gt_error *e);
 
 #endif
