@@ -8,6 +8,8 @@
 #include "cli/technique.h"
 #include "core/threads.h"
 #include "raytracer/environment_throughput.h"
+#include "report/env_approx_section.h"
+#include "studies/env_approx.h"
 
 static const cli_option bench_options[] = {
     CLI_STRING("scene", "S", "builtin:NAME or a glTF file (default builtin:cornell)"),
@@ -44,8 +46,11 @@ static int bench_env_diffuse(int argc, char **argv)
     return environment_throughput_bench(stdout, &rq, &e) == 0 ? EXIT_OK : cli_fail(&e);
 }
 
+GTLAB_STUDY_STAGE_NO_REQUEST(all_stage_environment, env_study_result, env_approx_study, env_approx_section)
+
 const technique technique_environment = {
     .name = "environment",
     .subcommands = {[VERB_BENCH] = CLI_SUBCOMMANDS(
         {"env-diffuse", bench_env_diffuse, "environment-lit diffuse samples/s against the white-dome multibounce"})},
+    .stages = ALL_STAGES({"environment", "ambient terms under real environments", all_stage_environment, NULL, NULL}),
 };

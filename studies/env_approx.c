@@ -244,7 +244,7 @@ int env_approx_study(const study_context *ctx, env_study_result *out, gt_error *
     double t0 = seconds_now();
     int preview = ctx->quality != QUALITY_PRODUCTION;
     memset(out, 0, sizeof *out);
-    out->size = preview ? 48 : 128, out->spp = preview ? 64 : 1024, out->bounces = 3;
+    out->size = preview ? 48 : 128, out->spp = preview ? 512 : 4096, out->bounces = 3;
     env_state *st = calloc(1, sizeof *st);
     if (!st)
         return gt_error_set(e, "environment study", "out of memory");

@@ -6,7 +6,7 @@
 
 #include "core/progress.h"
 
-enum { CONSTANT_WIDTH = 16 };
+enum { CONSTANT_WIDTH = 256 }; /* blocks of 8 x 8 texels: 32 x 16 of them, as fine as a real map's */
 
 env_approx_settings env_approx_default_settings(int production)
 {
