@@ -6,7 +6,7 @@
 
 #include "core/hemisphere_sampling.h"
 #include "core/reference_schema.h"
-#include "scene/material_lookup.h"
+#include "raytracer/diffuse_path_wavefront.h"
 
 /* The first quantity of each RGB triple. */
 enum { TOTAL = 0, DIRECT = 3, UNOCCLUDED = 6 };
@@ -44,101 +44,32 @@ int environment_diffuse_plan_init(environment_diffuse_plan *plan, const environm
     return 0;
 }
 
-/* ---- Paths (the wavefront of raytracer/multibounce_integrator.c) --------------- */
+/* ---- Paths (raytracer/diffuse_path_wavefront.h) ----------------------------- */
 
+/* One batch's paths and where they score: values[q * SAMPLE_BATCH + k]. */
 typedef struct {
-    vec3 origin, ng;
-    frame shading;
-    int sample; /* index within the batch */
-} env_vertex;
-
-/* throughput[w][k]: sample k's path weight, per albedo weight w (1 grey, or
- * 3 colours): the product of the mixture weights and of rho (or rho / q)
- * at the vertices after the first. */
-typedef struct {
-    const environment_diffuse_plan *plan;
+    path_wavefront p;
     const environment_light *light;
-    const embree_scene *scene;
-    const pixel_context *px;
-    uint32_t first_index;
-    int count, weights, unlimited, max_bounces, live, mixed;
-    unsigned surface_parts;
+    int mixed; /* directions from a mixture of cosine and environment sampling */
     float *values;
-    env_vertex paths[SAMPLE_BATCH];
-    float throughput[3][SAMPLE_BATCH];
 } env_wavefront;
 
 static void wavefront_start(env_wavefront *wf, const integrator *self, const pixel_context *px,
                             uint32_t first_index, int count, float *values)
 {
     const environment_diffuse_plan *plan = self->settings;
-    wf->plan = plan;
+    path_wavefront_start(&wf->p, self->scene, px, first_index, count, &plan->albedo, plan->normals);
     wf->light = plan->light;
-    wf->scene = self->scene;
-    wf->px = px;
-    wf->first_index = first_index;
-    wf->count = wf->live = count;
-    wf->weights = plan->albedo.scene_albedo ? 3 : 1;
-    wf->unlimited = plan->albedo.bounces == MULTIBOUNCE_UNLIMITED;
-    wf->max_bounces = wf->unlimited ? MULTIBOUNCE_PATH_LIMIT : plan->albedo.bounces;
     wf->mixed = plan->light->brdf_fraction < 1.0f;
-    wf->surface_parts = (plan->normals == NORMAL_SHADING ? SURFACE_SHADING_NORMAL : 0u) |
-                        (plan->albedo.scene_albedo ? SURFACE_TEXCOORDS : 0u);
     wf->values = values;
     memset(values, 0, sizeof(float) * ENV_DIFFUSE_QUANTITIES * SAMPLE_BATCH);
-    for (int k = 0; k < count; ++k) {
-        env_vertex *p = &wf->paths[k];
-        p->origin = px->ray_origin;
-        p->ng = px->surface->ng;
-        p->shading = px->shading;
-        p->sample = k;
-    }
-    for (int w = 0; w < wf->weights; ++w)
-        for (int k = 0; k < count; ++k)
-            wf->throughput[w][k] = 1.0f;
-}
-
-static void vertex_move_to(env_vertex *p, const surface_hit *hit, normal_mode normals)
-{
-    p->origin = offset_ray_origin(hit->p, hit->ng);
-    p->ng = hit->ng;
-    p->shading = frame_from_normal(normals == NORMAL_GEOMETRIC ? hit->ng : hit->ns);
-}
-
-static void vertex_albedos(const environment_diffuse_plan *plan, const scene *s, const surface_hit *hit, float *rho)
-{
-    if (!plan->albedo.scene_albedo) {
-        rho[0] = plan->albedo.albedos[0];
-        return;
-    }
-    material_sample m = material_lookup(s, hit->mesh, hit->uv);
-    for (int c = 0; c < 3; ++c)
-        rho[c] = fminf(fmaxf(m.base_color[c], 0.0f), 1.0f);
-}
-
-/* As multibounce's path_survives. */
-static int path_survives(env_wavefront *wf, const float *rho, float u, int k)
-{
-    if (!wf->unlimited) {
-        for (int w = 0; w < wf->weights; ++w)
-            wf->throughput[w][k] *= rho[w];
-        return 1;
-    }
-    float q = 0.0f;
-    for (int w = 0; w < wf->weights; ++w)
-        q = fmaxf(q, rho[w]);
-    if (!(u < q))
-        return 0;
-    for (int w = 0; w < wf->weights; ++w)
-        wf->throughput[w][k] *= rho[w] / q;
-    return 1;
 }
 
 /* Sample k's weight times L into the three channels starting at `first`. */
 static void add_light(env_wavefront *wf, int first, int k, const float light[3])
 {
     for (int c = 0; c < 3; ++c)
-        wf->values[(first + c) * SAMPLE_BATCH + k] = wf->throughput[wf->weights == 3 ? c : 0][k] * light[c];
+        wf->values[(first + c) * SAMPLE_BATCH + k] = wf->p.throughput[wf->p.weights == 3 ? c : 0][k] * light[c];
 }
 
 /* Sample k's path escapes from vertex `depth`, bringing radiance `light`. */
@@ -149,30 +80,12 @@ static void path_escapes(env_wavefront *wf, int k, int depth, const float light[
         add_light(wf, DIRECT, k, light);
 }
 
-/* As multibounce's live_points. */
-static void live_points(const env_wavefront *wf, uint32_t pair, float *u0, float *u1)
-{
-    const sample_pair_seeds seeds = sample_pair_seeds_for(wf->px, pair);
-    if (4 * wf->live < wf->count) {
-        for (int i = 0; i < wf->live; ++i) {
-            float u[2];
-            sample_pair_point(&seeds, wf->first_index + (uint32_t)wf->paths[i].sample, u);
-            u0[i] = u[0], u1[i] = u[1];
-        }
-        return;
-    }
-    float all0[SAMPLE_BATCH], all1[SAMPLE_BATCH];
-    sample_pair_points(&seeds, wf->first_index, wf->count, all0, all1);
-    for (int i = 0; i < wf->live; ++i)
-        u0[i] = all0[wf->paths[i].sample], u1[i] = all1[wf->paths[i].sample];
-}
-
 /* Which sampler each live path's direction comes from (1: the
  * environment's), u0 rescaled to [0, 1) for it. */
 static void choose_strategies(const env_wavefront *wf, float *u0, unsigned char *from_env)
 {
     const float c = wf->light->brdf_fraction;
-    for (int i = 0; i < wf->live; ++i) {
+    for (int i = 0; i < wf->p.live; ++i) {
         from_env[i] = !(u0[i] < c);
         u0[i] = from_env[i] ? (u0[i] - c) / (1.0f - c) : u0[i] / c;
         u0[i] = fminf(u0[i], 0x1.fffffep-1f);
@@ -181,7 +94,7 @@ static void choose_strategies(const env_wavefront *wf, float *u0, unsigned char 
 
 /* (max(0, n.w) / pi) / p_mix: the mixture weight of direction w at p,
  * the environment's density there being pdf_env. */
-static float lambert_weight(const env_wavefront *wf, const env_vertex *p, vec3 w, float pdf_env)
+static float lambert_weight(const env_wavefront *wf, const path_vertex *p, vec3 w, float pdf_env)
 {
     double cos_n = v3_dot(w, p->shading.n);
     if (!(cos_n > 0.0))
@@ -196,7 +109,7 @@ static float lambert_weight(const env_wavefront *wf, const env_vertex *p, vec3 w
  * sampling only). Returns 0 if the direction carries nothing. */
 static int leave(env_wavefront *wf, int i, vec3 local, int from_env, float u0, float u1, vec3 *w, float light[3])
 {
-    const env_vertex *p = &wf->paths[i];
+    const path_vertex *p = &wf->p.paths[i];
     if (!from_env) {
         *w = frame_to_world(&p->shading, local);
     } else {
@@ -209,8 +122,8 @@ static int leave(env_wavefront *wf, int i, vec3 local, int from_env, float u0, f
     if (!wf->mixed)
         return 1;
     float weight = lambert_weight(wf, p, *w, pdf_env);
-    for (int k = 0; k < wf->weights; ++k)
-        wf->throughput[k][p->sample] *= weight;
+    for (int k = 0; k < wf->p.weights; ++k)
+        wf->p.throughput[k][p->sample] *= weight;
     return weight > 0.0f;
 }
 
@@ -224,13 +137,13 @@ static int leaving_rays(env_wavefront *wf, int depth, struct RTCRayHit *rays, in
     float u0[SAMPLE_BATCH], u1[SAMPLE_BATCH];
     unsigned char from_env[SAMPLE_BATCH] = {0};
     vec3 local[SAMPLE_BATCH];
-    live_points(wf, (uint32_t)depth, u0, u1);
+    path_wavefront_live_points(&wf->p, (uint32_t)depth, u0, u1);
     if (wf->mixed)
         choose_strategies(wf, u0, from_env);
-    sample_cosine_hemisphere_batch(u0, u1, wf->live, local);
+    sample_cosine_hemisphere_batch(u0, u1, wf->p.live, local);
     int n = 0;
-    for (int i = 0; i < wf->live; ++i) {
-        const env_vertex *p = &wf->paths[i];
+    for (int i = 0; i < wf->p.live; ++i) {
+        const path_vertex *p = &wf->p.paths[i];
         vec3 d;
         if (!leave(wf, i, local[i], from_env[i], u0[i], u1[i], &d, light[n]))
             continue;
@@ -251,11 +164,11 @@ static void trace_last(env_wavefront *wf, int depth, const struct RTCRayHit *ray
     _Alignas(16) struct RTCRay shadow[SAMPLE_BATCH];
     for (int r = 0; r < n; ++r)
         shadow[r] = rays[r].ray;
-    embree_unoccluded_stream(wf->scene, shadow, (unsigned)n);
+    embree_unoccluded_stream(wf->p.scene, shadow, (unsigned)n);
     for (int r = 0; r < n; ++r)
         if (shadow[r].tfar >= 0.0f)
-            path_escapes(wf, wf->paths[owner[r]].sample, depth, light[r]);
-    wf->live = 0;
+            path_escapes(wf, wf->p.paths[owner[r]].sample, depth, light[r]);
+    wf->p.live = 0;
 }
 
 /* Closest hits: escapes add light, hits become the next vertices of the
@@ -263,27 +176,19 @@ static void trace_last(env_wavefront *wf, int depth, const struct RTCRayHit *ray
 static void trace_next(env_wavefront *wf, int depth, struct RTCRayHit *rays, const int *owner,
                        const float (*light)[3], int n)
 {
-    float roulette[SAMPLE_BATCH], unused[SAMPLE_BATCH];
-    if (wf->unlimited)
-        live_points(wf, MULTIBOUNCE_ROULETTE_PAIRS + (uint32_t)depth + 1, roulette, unused);
-    embree_closest_hit_stream(wf->scene, rays, (unsigned)n);
+    float roulette[SAMPLE_BATCH];
+    if (wf->p.unlimited)
+        path_wavefront_roulette(&wf->p, depth, roulette);
+    embree_closest_hit_stream(wf->p.scene, rays, (unsigned)n);
     int kept = 0;
     for (int r = 0; r < n; ++r) {
-        env_vertex *p = &wf->paths[owner[r]];
-        if (rays[r].hit.geomID == RTC_INVALID_GEOMETRY_ID) {
+        path_vertex *p = &wf->p.paths[owner[r]];
+        if (rays[r].hit.geomID == RTC_INVALID_GEOMETRY_ID)
             path_escapes(wf, p->sample, depth, light[r]);
-            continue;
-        }
-        surface_hit hit;
-        float rho[3];
-        embree_surface_at(wf->scene, &rays[r], wf->surface_parts, &hit);
-        vertex_albedos(wf->plan, wf->scene->source, &hit, rho);
-        if (!path_survives(wf, rho, wf->unlimited ? roulette[owner[r]] : 0.0f, p->sample))
-            continue;
-        vertex_move_to(p, &hit, wf->plan->normals);
-        wf->paths[kept++] = *p;
+        else if (path_wavefront_continue(&wf->p, &rays[r], wf->p.unlimited ? roulette[owner[r]] : 0.0f, p))
+            wf->p.paths[kept++] = *p;
     }
-    wf->live = kept;
+    wf->p.live = kept;
 }
 
 static int environment_diffuse_sample_batch(const integrator *self, const pixel_context *px, uint32_t first_index,
@@ -292,13 +197,13 @@ static int environment_diffuse_sample_batch(const integrator *self, const pixel_
     env_wavefront wf;
     wavefront_start(&wf, self, px, first_index, count, values);
     int rays = 0;
-    for (int depth = 0; wf.live > 0; ++depth) {
+    for (int depth = 0; wf.p.live > 0; ++depth) {
         _Alignas(16) struct RTCRayHit stream[SAMPLE_BATCH];
         int owner[SAMPLE_BATCH];
         float light[SAMPLE_BATCH][3];
         int n = leaving_rays(&wf, depth, stream, owner, light);
         rays += n;
-        if (depth == wf.max_bounces)
+        if (depth == wf.p.max_bounces)
             trace_last(&wf, depth, stream, owner, (const float(*)[3])light, n);
         else
             trace_next(&wf, depth, stream, owner, (const float(*)[3])light, n);

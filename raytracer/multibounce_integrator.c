@@ -7,8 +7,8 @@
 #include <string.h>
 
 #include "core/hemisphere_sampling.h"
-#include "scene/material_lookup.h"
 #include "core/reference_schema.h"
+#include "raytracer/diffuse_path_wavefront.h"
 
 /* ---- Settings ---------------------------------------------------------------------- */
 
@@ -176,101 +176,20 @@ void multibounce_warn_albedo_range(const scene *s)
 
 /* ---- Paths ------------------------------------------------------------------------- */
 
-/* A live path at its current vertex. Its throughput lives apart, per sample
- * (wavefront.throughput), so compacting the live paths moves 64 bytes each. */
+/* One batch's paths (raytracer/diffuse_path_wavefront.h) and where they
+ * score: values[q * SAMPLE_BATCH + k]. */
 typedef struct {
-    vec3 origin, ng;
-    frame shading;
-    int sample; /* index within the batch */
-} path_vertex;
-
-/* One batch's paths as a wavefront: every live path takes one bounce before
- * any takes the next. throughput[w][k] is the product of rho / q (or rho at
- * fixed depth) over sample k's vertices after the first, per albedo or
- * colour channel w. */
-typedef struct {
-    const multibounce_plan *plan;
-    const embree_scene *scene;
-    const pixel_context *px;
-    uint32_t first_index;
-    int count, weights, unlimited, max_bounces, live;
-    unsigned surface_parts; /* what a vertex reads of its surface_hit */
+    path_wavefront p;
     float *values;
-    path_vertex paths[SAMPLE_BATCH];
-    float throughput[MULTIBOUNCE_MAX_ALBEDOS][SAMPLE_BATCH];
 } wavefront;
-
-static int weight_count(const multibounce_plan *plan)
-{
-    return plan->settings.scene_albedo ? 3 : plan->settings.albedo_count;
-}
 
 static void wavefront_start(wavefront *wf, const integrator *self, const pixel_context *px, uint32_t first_index,
                             int count, float *values)
 {
     const multibounce_plan *plan = self->settings;
-    wf->plan = plan;
-    wf->scene = self->scene;
-    wf->px = px;
-    wf->first_index = first_index;
-    wf->count = wf->live = count;
-    wf->weights = weight_count(plan);
-    wf->unlimited = plan->settings.bounces == MULTIBOUNCE_UNLIMITED;
-    wf->max_bounces = wf->unlimited ? MULTIBOUNCE_PATH_LIMIT : plan->settings.bounces;
-    wf->surface_parts = (plan->normals == NORMAL_SHADING ? SURFACE_SHADING_NORMAL : 0u) |
-                        (plan->settings.scene_albedo ? SURFACE_TEXCOORDS : 0u);
+    path_wavefront_start(&wf->p, self->scene, px, first_index, count, &plan->settings, plan->normals);
     wf->values = values;
     memset(values, 0, sizeof(float) * (size_t)plan->quantity_count * SAMPLE_BATCH);
-    for (int k = 0; k < count; ++k) {
-        path_vertex *p = &wf->paths[k];
-        p->origin = px->ray_origin;
-        p->ng = px->surface->ng;
-        p->shading = px->shading; /* already on the geometric normal under NORMAL_GEOMETRIC (gbuffer.h) */
-        p->sample = k;
-    }
-    for (int w = 0; w < wf->weights; ++w)
-        for (int k = 0; k < count; ++k)
-            wf->throughput[w][k] = 1.0f;
-}
-
-static void path_move_to(path_vertex *p, const surface_hit *hit, normal_mode normals)
-{
-    p->origin = offset_ray_origin(hit->p, hit->ng);
-    p->ng = hit->ng;
-    p->shading = frame_from_normal(normals == NORMAL_GEOMETRIC ? hit->ng : hit->ns);
-}
-
-/* The albedos of a surface point, per weight. */
-static void vertex_albedos(const multibounce_plan *plan, const scene *s, const surface_hit *hit, float *rho)
-{
-    if (!plan->settings.scene_albedo) {
-        memcpy(rho, plan->settings.albedos, sizeof(float) * (size_t)plan->settings.albedo_count);
-        return;
-    }
-    material_sample m = material_lookup(s, hit->mesh, hit->uv);
-    for (int c = 0; c < 3; ++c)
-        rho[c] = fminf(fmaxf(m.base_color[c], 0.0f), 1.0f);
-}
-
-/* Takes sample k's path through a new vertex of albedos rho: at fixed depth
- * the throughput is multiplied by rho; unlimited, the path survives Russian
- * roulette with probability q = max rho (u uniform in [0, 1)) and is
- * multiplied by rho / q. Returns 0 if the path ends here. */
-static int path_survives(wavefront *wf, const float *rho, float u, int k)
-{
-    if (!wf->unlimited) {
-        for (int w = 0; w < wf->weights; ++w)
-            wf->throughput[w][k] *= rho[w];
-        return 1;
-    }
-    float q = 0.0f;
-    for (int w = 0; w < wf->weights; ++w)
-        q = fmaxf(q, rho[w]);
-    if (!(u < q))
-        return 0;
-    for (int w = 0; w < wf->weights; ++w)
-        wf->throughput[w][k] *= rho[w] / q;
-    return 1;
 }
 
 /* Sample k's path escapes from vertex `depth`: it adds its throughput (prod
@@ -278,39 +197,19 @@ static int path_survives(wavefront *wf, const float *rho, float u, int k)
  * ao.V if depth = 0. */
 static void path_escapes(wavefront *wf, int k, int depth)
 {
-    for (int w = 0; w < wf->weights; ++w)
-        wf->values[w * SAMPLE_BATCH + k] = wf->throughput[w][k];
-    wf->values[wf->weights * SAMPLE_BATCH + k] = depth == 0 ? 1.0f : 0.0f;
-}
-
-/* The 2-D points of the live paths in dimension pair `pair`, in path order:
- * all of the batch's at once (the vectorised loop) while most paths live,
- * one by one once few do; the same values either way. */
-static void live_points(const wavefront *wf, uint32_t pair, float *u0, float *u1)
-{
-    const sample_pair_seeds seeds = sample_pair_seeds_for(wf->px, pair);
-    if (4 * wf->live < wf->count) {
-        for (int i = 0; i < wf->live; ++i) {
-            float u[2];
-            sample_pair_point(&seeds, wf->first_index + (uint32_t)wf->paths[i].sample, u);
-            u0[i] = u[0], u1[i] = u[1];
-        }
-        return;
-    }
-    float all0[SAMPLE_BATCH], all1[SAMPLE_BATCH];
-    sample_pair_points(&seeds, wf->first_index, wf->count, all0, all1);
-    for (int i = 0; i < wf->live; ++i)
-        u0[i] = all0[wf->paths[i].sample], u1[i] = all1[wf->paths[i].sample];
+    for (int w = 0; w < wf->p.weights; ++w)
+        wf->values[w * SAMPLE_BATCH + k] = wf->p.throughput[w][k];
+    wf->values[wf->p.weights * SAMPLE_BATCH + k] = depth == 0 ? 1.0f : 0.0f;
 }
 
 /* The rays leaving the live paths' vertices at `depth` (dimension pair
  * depth), owner[r] the path of ray r; a direction below the surface it
  * leaves is blocked and gets no ray. Returns the number of rays. */
-static int leaving_rays(const wavefront *wf, int depth, struct RTCRayHit *rays, int *owner)
+static int leaving_rays(const path_wavefront *wf, int depth, struct RTCRayHit *rays, int *owner)
 {
     float u0[SAMPLE_BATCH], u1[SAMPLE_BATCH];
     vec3 local[SAMPLE_BATCH];
-    live_points(wf, (uint32_t)depth, u0, u1);
+    path_wavefront_live_points(wf, (uint32_t)depth, u0, u1);
     sample_cosine_hemisphere_batch(u0, u1, wf->live, local);
     int n = 0;
     for (int i = 0; i < wf->live; ++i) {
@@ -331,38 +230,30 @@ static void trace_last(wavefront *wf, int depth, const struct RTCRayHit *rays, c
     _Alignas(16) struct RTCRay shadow[SAMPLE_BATCH];
     for (int r = 0; r < n; ++r)
         shadow[r] = rays[r].ray;
-    embree_unoccluded_stream(wf->scene, shadow, (unsigned)n);
+    embree_unoccluded_stream(wf->p.scene, shadow, (unsigned)n);
     for (int r = 0; r < n; ++r)
         if (shadow[r].tfar >= 0.0f)
-            path_escapes(wf, wf->paths[owner[r]].sample, depth);
-    wf->live = 0;
+            path_escapes(wf, wf->p.paths[owner[r]].sample, depth);
+    wf->p.live = 0;
 }
 
 /* Closest hits: escapes are scored, hits become the next vertices of the
  * paths that survive them (compacted in place, in order). */
 static void trace_next(wavefront *wf, int depth, struct RTCRayHit *rays, const int *owner, int n)
 {
-    float roulette[SAMPLE_BATCH], unused[SAMPLE_BATCH];
-    if (wf->unlimited)
-        live_points(wf, MULTIBOUNCE_ROULETTE_PAIRS + (uint32_t)depth + 1, roulette, unused);
-    embree_closest_hit_stream(wf->scene, rays, (unsigned)n);
+    float roulette[SAMPLE_BATCH];
+    if (wf->p.unlimited)
+        path_wavefront_roulette(&wf->p, depth, roulette);
+    embree_closest_hit_stream(wf->p.scene, rays, (unsigned)n);
     int kept = 0;
     for (int r = 0; r < n; ++r) {
-        path_vertex *p = &wf->paths[owner[r]];
-        if (rays[r].hit.geomID == RTC_INVALID_GEOMETRY_ID) {
+        path_vertex *p = &wf->p.paths[owner[r]];
+        if (rays[r].hit.geomID == RTC_INVALID_GEOMETRY_ID)
             path_escapes(wf, p->sample, depth);
-            continue;
-        }
-        surface_hit hit;
-        float rho[MULTIBOUNCE_MAX_ALBEDOS];
-        embree_surface_at(wf->scene, &rays[r], wf->surface_parts, &hit);
-        vertex_albedos(wf->plan, wf->scene->source, &hit, rho);
-        if (!path_survives(wf, rho, wf->unlimited ? roulette[owner[r]] : 0.0f, p->sample))
-            continue;
-        path_move_to(p, &hit, wf->plan->normals);
-        wf->paths[kept++] = *p;
+        else if (path_wavefront_continue(&wf->p, &rays[r], wf->p.unlimited ? roulette[owner[r]] : 0.0f, p))
+            wf->p.paths[kept++] = *p;
     }
-    wf->live = kept;
+    wf->p.live = kept;
 }
 
 /* Samples as a wavefront (above): each depth's rays go to Embree as one
@@ -374,12 +265,12 @@ static int multibounce_sample_batch(const integrator *self, const pixel_context 
     wavefront wf;
     wavefront_start(&wf, self, px, first_index, count, values);
     int rays = 0;
-    for (int depth = 0; wf.live > 0; ++depth) {
+    for (int depth = 0; wf.p.live > 0; ++depth) {
         _Alignas(16) struct RTCRayHit stream[SAMPLE_BATCH];
         int owner[SAMPLE_BATCH];
-        int n = leaving_rays(&wf, depth, stream, owner);
+        int n = leaving_rays(&wf.p, depth, stream, owner);
         rays += n;
-        if (depth == wf.max_bounces)
+        if (depth == wf.p.max_bounces)
             trace_last(&wf, depth, stream, owner, n);
         else
             trace_next(&wf, depth, stream, owner, n);
