@@ -32,27 +32,30 @@ int environment_sampler_init(environment_sampler *s, const environment_map *env,
     }
     double *w = texel_weights(env, &s->integral);
     size_t n = (size_t)env->width * (size_t)env->height;
-    s->texel_pdf = malloc(sizeof(float) * n);
+    s->texel = malloc(sizeof *s->texel * n);
     s->row_cos = malloc(sizeof(double) * (size_t)(env->height + 1));
-    if (!w || !s->texel_pdf || !s->row_cos || distribution_2d_init(&s->texels, w, env->height, env->width, e) != 0) {
+    if (!w || !s->texel || !s->row_cos || distribution_2d_init(&s->texels, w, env->height, env->width, e) != 0) {
         free(w);
-        free(s->texel_pdf);
+        free(s->texel);
         free(s->row_cos);
-        s->texel_pdf = NULL, s->row_cos = NULL;
+        s->texel = NULL, s->row_cos = NULL;
         return gt_error_set(e, env->name, "out of memory for the environment sampler");
     }
     for (int r = 0; r <= env->height; ++r)
         s->row_cos[r] = cos(M_PI * r / env->height);
     s->usable = s->integral > 0.0;
-    for (size_t i = 0; i < n; ++i)
-        s->texel_pdf[i] = s->usable ? (float)(environment_luminance(env->rgb + 3 * i) / s->integral) : 0.0f;
+    for (size_t i = 0; i < n; ++i) {
+        for (int c = 0; c < 3; ++c)
+            s->texel[i][c] = env->rgb[3 * i + (size_t)c] * env->intensity;
+        s->texel[i][3] = s->usable ? (float)(environment_luminance(env->rgb + 3 * i) / s->integral) : 0.0f;
+    }
     free(w);
     return 0;
 }
 
 void environment_sampler_free(environment_sampler *s)
 {
-    free(s->texel_pdf);
+    free(s->texel);
     free(s->row_cos);
     distribution_2d_free(&s->texels);
     memset(s, 0, sizeof *s);
@@ -86,7 +89,7 @@ vec3 environment_sampler_sample(const environment_sampler *s, const float u[2], 
     const double uu[2] = {u[0], u[1]};
     distribution_2d_sample(&s->texels, uu, &row, &column, t);
     vec3 m = texel_direction(s, row, column, t);
-    *pdf = s->texel_pdf[(size_t)row * s->env->width + column];
+    *pdf = s->texel[(size_t)row * s->env->width + column][3];
     return environment_map_to_world(s->env, m);
 }
 
@@ -94,7 +97,7 @@ float environment_sampler_pdf(const environment_sampler *s, vec3 w)
 {
     if (environment_map_is_constant(s->env))
         return s->usable ? (float)(0.25 / M_PI) : 0.0f;
-    return s->texel_pdf[environment_texel_of(s->env, environment_world_to_map(s->env, w))];
+    return s->texel[environment_texel_of(s->env, environment_world_to_map(s->env, w))][3];
 }
 
 void environment_sampler_lookup(const environment_sampler *s, vec3 w, float rgb[3], float *pdf)
@@ -107,6 +110,6 @@ void environment_sampler_lookup(const environment_sampler *s, vec3 w, float rgb[
     }
     size_t t = (size_t)environment_texel_of(env, environment_world_to_map(env, w));
     for (int c = 0; c < 3; ++c)
-        rgb[c] = env->rgb[3 * t + (size_t)c] * env->intensity;
-    *pdf = s->texel_pdf[t];
+        rgb[c] = s->texel[t][c];
+    *pdf = s->texel[t][3];
 }

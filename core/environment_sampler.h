@@ -41,7 +41,9 @@ typedef struct {
     const environment_map *env;
     int usable;            /* 0: luminance 0 everywhere (never sample) */
     double integral;       /* I = \int Y dw (intensity 1) */
-    float *texel_pdf;      /* Y / I per texel, per unit solid angle */
+    /* per texel: its radiance (intensity included) and Y / I, the density per
+     * unit solid angle, side by side: a lookup touches one cache line */
+    float (*texel)[4];
     double *row_cos;       /* cos(pi r / H), r = 0 .. H: the rows' bounds */
     distribution_2d texels;
 } environment_sampler;

@@ -55,7 +55,7 @@ static void test_pdf_integrates_to_one(const environment_sampler *s)
     double sum = 0.0;
     for (int r = 0; r < env->height; ++r)
         for (int c = 0; c < env->width; ++c)
-            sum += s->texel_pdf[r * env->width + c] * env->row_solid_angle[r];
+            sum += s->texel[r * env->width + c][3] * env->row_solid_angle[r];
     CHECK_NEAR(sum, 1.0, 1e-6);
     /* E[4 pi pdf(w)] over uniform w is \int pdf = 1. */
     double mean = 0.0, square = 0.0;
@@ -94,7 +94,7 @@ static void test_histogram(const environment_sampler *s)
     double chi2 = 0.0;
     int bins = 0;
     for (int t = 0; t < texels; ++t) {
-        double expected = n * s->texel_pdf[t] * env->row_solid_angle[t / env->width];
+        double expected = n * s->texel[t][3] * env->row_solid_angle[t / env->width];
         if (expected == 0.0) {
             CHECK_MSG(count[t] == 0, "texel %d of luminance 0 got %ld samples", t, count[t]);
             continue;
