@@ -12,6 +12,7 @@
 #include "scene/builtin_scenes.h"
 #include "scene/gltf_reader.h"
 #include "scene/gltf_writer.h"
+#include "scene/scene_describe.h"
 #include "scene/scene_loaders.h"
 
 static const cli_option no_options[] = {CLI_END};
@@ -26,17 +27,6 @@ static const cli_command write_command = {
     "Writes the built-in scene NAME (see 'gtlab scene list') as binary glTF 2.0 with its\n"
     "materials and camera; the file appears whole or not at all.",
     write_options, "NAME", NULL};
-/* Each line of the description indented under the scene's name. */
-static void print_scene(const builtin_scene *b)
-{
-    printf("%s\n", b->name);
-    for (const char *line = b->description; *line;) {
-        size_t n = strcspn(line, "\n");
-        printf("    %.*s\n", (int)n, line);
-        line += n + (line[n] == '\n');
-    }
-}
-
 static int scene_list(int argc, char **argv)
 {
     int status;
@@ -46,7 +36,7 @@ static int scene_list(int argc, char **argv)
            "Units are arbitrary (think metres); +Y is up; all normals are unit length.\n");
     for (int i = 0; i < builtin_scene_count(); ++i) {
         putchar('\n');
-        print_scene(builtin_scene_at(i));
+        builtin_scene_describe(stdout, builtin_scene_at(i));
     }
     return EXIT_OK;
 }
@@ -62,42 +52,6 @@ static const cli_command info_command = {
     "largest position quantization step in world units), sparse accessors, morph targets\n"
     "and skins applied in their default pose, and primitives without normals.",
     no_options, "SCENE", NULL};
-
-static void print_info(const scene *s)
-{
-    vec3 lo, hi;
-    scene_bounds(s, &lo, &hi);
-    printf("%s: %llu triangles in %d mesh%s, %d material%s, %d texture%s, %s\n", s->name,
-           (unsigned long long)scene_triangle_count(s), s->mesh_count, s->mesh_count == 1 ? "" : "es",
-           s->material_count, s->material_count == 1 ? "" : "s", s->texture_count, s->texture_count == 1 ? "" : "s",
-           s->has_camera ? "a camera" : "no camera (an automatic view is used)");
-    printf("bounds: (%g, %g, %g) to (%g, %g, %g)\n", lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
-    int flat = 0;
-    for (int i = 0; i < s->mesh_count; ++i) {
-        const scene_mesh *m = &s->meshes[i];
-        flat += m->flat;
-        printf("  mesh %d: %u triangles, %u vertices, material %d, %s\n", i, m->triangle_count, m->vertex_count,
-               m->material, m->flat ? "no normals: flat-shaded (face normals)" : "normals");
-    }
-    if (flat)
-        printf("%d of %d meshes had no normals and are flat-shaded, as glTF 2.0 requires\n", flat, s->mesh_count);
-}
-
-static void print_report(const gltf_report *r)
-{
-    const int *mode = r->primitives_by_mode;
-    printf("glTF extensions used: %s\n", r->extensions_used[0] ? r->extensions_used : "none");
-    printf("primitives: %d triangle lists, %d triangle strips, %d triangle fans; %d points/lines primitives skipped\n",
-           mode[4], mode[5], mode[6], mode[0] + mode[1] + mode[2] + mode[3]);
-    printf("quantized (KHR_mesh_quantization): %d primitives; Draco-compressed: %d primitives; "
-           "meshopt-compressed: %d bufferViews\n",
-           r->quantized_primitives, r->draco_primitives, r->meshopt_views);
-    if (r->position_step > 0.0)
-        printf("positions quantized to a grid of at most %.6g world units\n", r->position_step);
-    printf("sparse accessors: %d; morph targets applied: %d primitives; skinned (default pose): %d primitives; "
-           "without normals (flat-shaded): %d primitives\n",
-           r->sparse_accessors, r->morphed_primitives, r->skinned_primitives, r->primitives_without_normals);
-}
 
 /* builtin:NAME through the loader table, any other spec as a glTF file
  * with the reader's report. */
@@ -123,9 +77,9 @@ static int scene_info(int argc, char **argv)
     int is_gltf;
     if (load_for_info(spec.values[0], &s, &report, &is_gltf, &e) != 0)
         return cli_fail(&e);
-    print_info(&s);
+    scene_describe(stdout, &s);
     if (is_gltf)
-        print_report(&report);
+        gltf_report_describe(stdout, &report);
     scene_free(&s);
     return EXIT_OK;
 }
