@@ -14,7 +14,7 @@
 #include "report/report_context.h" /* the context of a stage of `gtlab all` */
 #include "cli/subcommands.h"
 
-typedef enum { VERB_APPROX, VERB_FIT, VERB_LUT, VERB_CHECK, VERB_BENCH, VERB_KIND_COUNT } technique_verb;
+typedef enum { VERB_APPROX, VERB_FIT, VERB_LUT, VERB_CHECK, VERB_BENCH, VERB_RENDER, VERB_KIND_COUNT } technique_verb;
 
 /* A section of `gtlab all`. */
 typedef struct {

@@ -6,6 +6,7 @@
 
 #include "cli/cli.h"
 #include "cli/cli_options.h"
+#include "cli/technique.h"
 #include "core/atomic_file.h"
 #include "core/exr_io.h"
 #include "raytracer/reference_render.h"
@@ -60,6 +61,10 @@ static void describe(char *help, const char *texts[MAX_QUANTITY_OPTIONS])
         k += snprintf(help + k, HELP_SIZE - (size_t)k, "\n  %-8s  ", reference_quantity_at(i)->name);
         append_indented(help, &k, reference_quantity_at(i)->help, 12);
     }
+    cli_subcommand more[8]; /* not reference quantities: a technique's own (their options: --help) */
+    for (size_t i = 0, n = technique_subcommands(VERB_RENDER, more, 8); i < n; ++i)
+        k += snprintf(help + k, HELP_SIZE - (size_t)k, "\n  %-8s  %s (own options: 'gtlab render %s --help')",
+                      more[i].name, more[i].summary, more[i].name);
     for (int i = 0; i < reference_option_count() && k < HELP_SIZE - 512; ++i) {
         const reference_option *option = reference_option_at(i);
         texts[i] = help + ++k;
@@ -165,6 +170,10 @@ static int render(const render_options *o)
 
 int verb_render(int argc, char **argv)
 {
+    cli_subcommand more[8];
+    for (size_t i = 0, n = technique_subcommands(VERB_RENDER, more, 8); argc >= 2 && i < n; ++i)
+        if (strcmp(argv[1], more[i].name) == 0)
+            return cli_reset_getopt(), more[i].run(argc - 1, argv + 1);
     render_options o = {.seed = 1};
     o.request.sampling.spp = 64;
     o.request.sampling.threads = threads_default();

@@ -196,11 +196,13 @@
 #define CH_MOTION_X "motion.X"           /* previous image position minus this one, pixels */
 #define CH_MOTION_Y "motion.Y"
 #define CH_DISOCCLUDED "disoccluded.V"   /* 1 where the previous frame did not see the point */
+#define CH_FRAME_TRUTH_RGB {"truth.R", "truth.G", "truth.B"} /* the supersampled, filtered truth of the frame */
 
 /* ---- Header attributes -------------------------------------------------- */
 /* text */
 #define ATTR_JITTER "gtlab.jitter"       /* a frame's sub-pixel jitter "x y" (frames) */
 #define ATTR_FRAME "gtlab.frame"         /* a frame's index on its camera path */
+#define ATTR_TRUTH "gtlab.truth"         /* how a frame's truth was made: "S x S strata, FILTER, seed N" */
 #define ATTR_VERSION "gtlab.version"     /* the gtlab version that wrote the file */
 #define ATTR_QUANTITY "gtlab.quantity"   /* "ao", "gbuffer", ..., "approx" */
 #define ATTR_SCENE "gtlab.scene"         /* the scene spec ("builtin:boxes", a path) */

@@ -10,7 +10,9 @@
 #include "core/image_io.h"
 #include "core/reference_schema.h"
 #include "luts/color_grade.h" /* srgb_to_linear */
+#include "core/pixel_filter.h"
 #include "raytracer/frames_render.h"
+#include "raytracer/shaded_frame.h"
 #include "realtime/taa_sampling.h"
 #include "scene/camera_path.h"
 
@@ -44,9 +46,27 @@ static camera_path request_path(const aa_frames_request *rq, const camera *cam)
     return path;
 }
 
-/* One frame's EXR: channels, its jitter and index. */
-static int write_frame_exr(const char *path, const frame_buffers *f, int width, int height, const float jitter[2],
-                           int k, gt_error *e)
+/* The truth's three planes and its header line, when it was rendered. */
+static int add_truth(image *img, const aa_frames_request *rq, const float *truth)
+{
+    static const char *const names[3] = CH_FRAME_TRUTH_RGB;
+    size_t px = image_pixel_count(img);
+    for (int c = 0; c < 3; ++c) {
+        float *plane = image_add_channel(img, names[c]);
+        if (!plane)
+            return -1;
+        for (size_t p = 0; p < px; ++p)
+            plane[p] = truth[3 * p + (size_t)c];
+    }
+    char text[128];
+    snprintf(text, sizeof text, "%d x %d strata, %s, seed %u", rq->truth_strata, rq->truth_strata,
+             pixel_filter_name(rq->truth_filter), AA_FRAMES_TRUTH_SEED);
+    return image_set_attribute(img, ATTR_TRUTH, text);
+}
+
+/* One frame's EXR: channels, its jitter and index, the truth if any. */
+static int write_frame_exr(const char *path, const aa_frames_request *rq, const frame_buffers *f, const float *truth,
+                           int width, int height, const float jitter[2], int k, gt_error *e)
 {
     static const char *const rgb[3] = CH_FRAME_RGB;
     image img;
@@ -65,6 +85,7 @@ static int write_frame_exr(const char *path, const frame_buffers *f, int width, 
     char text[64];
     snprintf(text, sizeof text, "%.9g %.9g", jitter[0], jitter[1]);
     ok = ok && image_set_attribute(&img, ATTR_JITTER, text) == 0 && schema_set_int(&img, ATTR_FRAME, k) == 0;
+    ok = ok && (!truth || add_truth(&img, rq, truth) == 0);
     int rc = ok ? exr_write(path, &img, e) : gt_error_set(e, path, "out of memory");
     image_free(&img);
     return rc;
@@ -93,23 +114,71 @@ static void unload(loaded_view *v)
     scene_free(&v->s);
 }
 
+/* The truth of one frame: (W s) x (H s) samples in `samples` and `xy`, resolved into truth. */
+static void render_truth(const aa_frames_request *rq, const loaded_view *v, const camera *cam, float *samples,
+                         float *xy, float *truth)
+{
+    const frame_lighting light = frame_lighting_default();
+    int s = rq->truth_strata;
+    shaded_frame_render_supersampled(&v->es, cam, &light, s, AA_FRAMES_TRUTH_SEED, rq->threads, samples, xy);
+    pixel_filter_resolve((pixel_filter)rq->truth_filter, samples, xy, cam->width, cam->height, s, rq->threads, truth);
+}
+
+/* Scratch for the truth: its samples, their positions and the image; all NULL without one. */
+typedef struct {
+    float *samples, *xy, *truth;
+} truth_buffers;
+
+static int truth_alloc(truth_buffers *t, const aa_frames_request *rq, int width, int height)
+{
+    size_t px = (size_t)width * height, s2 = (size_t)rq->truth_strata * (size_t)rq->truth_strata;
+    *t = (truth_buffers){NULL, NULL, NULL};
+    if (rq->truth_strata <= 0)
+        return 0;
+    t->samples = malloc(sizeof(float) * 3 * px * s2);
+    t->xy = malloc(sizeof(float) * 2 * px * s2);
+    t->truth = malloc(sizeof(float) * 3 * px);
+    return t->samples && t->xy && t->truth ? 0 : -1;
+}
+
+static void truth_free(truth_buffers *t)
+{
+    free(t->samples);
+    free(t->xy);
+    free(t->truth);
+}
+
+static int write_frames(const aa_frames_request *rq, const loaded_view *v, frame_buffers *f, truth_buffers *t,
+                        gt_error *e)
+{
+    const frame_lighting light = frame_lighting_default();
+    int rc = 0;
+    for (int k = 0; k < rq->frames && rc == 0; ++k) {
+        camera now = camera_path_at(&v->path, k), before = camera_path_at(&v->path, k > 0 ? k - 1 : 0);
+        float jitter[2];
+        technique_jitter(rq->technique, k, jitter);
+        frames_render(&v->es, &now, k > 0 ? &before : NULL, &light, jitter, rq->threads, f);
+        if (t->truth)
+            render_truth(rq, v, &now, t->samples, t->xy, t->truth);
+        char path[4096 + 32];
+        snprintf(path, sizeof path, "%s/frame_%03d.exr", rq->dir, k);
+        rc = write_frame_exr(path, rq, f, t->truth, v->cam.width, v->cam.height, jitter, k, e);
+    }
+    return rc;
+}
+
 int aa_frames_write(const aa_frames_request *rq, gt_error *e)
 {
     loaded_view v;
     frame_buffers f;
+    truth_buffers t = {NULL, NULL, NULL};
     if (load(rq, &v, e) != 0)
         return -1;
-    int rc = frame_buffers_alloc(&f, v.cam.width, v.cam.height) == 0 ? 0 : gt_error_set(e, rq->dir, "out of memory");
-    const frame_lighting light = frame_lighting_default();
-    for (int k = 0; k < rq->frames && rc == 0; ++k) {
-        camera now = camera_path_at(&v.path, k), before = camera_path_at(&v.path, k > 0 ? k - 1 : 0);
-        float jitter[2];
-        technique_jitter(rq->technique, k, jitter);
-        frames_render(&v.es, &now, k > 0 ? &before : NULL, &light, jitter, rq->threads, &f);
-        char path[4096 + 32];
-        snprintf(path, sizeof path, "%s/frame_%03d.exr", rq->dir, k);
-        rc = write_frame_exr(path, &f, v.cam.width, v.cam.height, jitter, k, e);
-    }
+    int rc = frame_buffers_alloc(&f, v.cam.width, v.cam.height) == 0 &&
+                     truth_alloc(&t, rq, v.cam.width, v.cam.height) == 0
+                 ? write_frames(rq, &v, &f, &t, e)
+                 : gt_error_set(e, rq->dir, "out of memory");
+    truth_free(&t);
     frame_buffers_free(&f);
     unload(&v);
     return rc;

@@ -2,7 +2,10 @@
  * (issue 19), kept out of cli/:
  *   aa_frames_write   frames of a scene along a camera path, one EXR each
  *                     (linear colour, depth, motion, disocclusion; names from
- *                     core/reference_schema.h), with a technique's jitter;
+ *                     core/reference_schema.h), with a technique's jitter,
+ *                     and if asked the frame's truth: S x S stratified
+ *                     jittered samples per pixel (the same strata every
+ *                     frame, as the study's) resolved by a pixel filter;
  *   aa_approx         a technique over those frames, one display PNG and EXR
  *                     (display values) per frame;
  *   aa_bench          milliseconds per 1920 x 1080 frame of each technique in C. */
@@ -14,6 +17,8 @@
 #include "core/error.h"
 #include "studies/aa_temporal.h"
 
+enum { AA_FRAMES_TRUTH_SEED = 1 }; /* the truth's strata jitter: the same every frame */
+
 typedef struct {
     const char *scene;       /* builtin:NAME or a glTF file */
     int width, height, frames;
@@ -21,6 +26,8 @@ typedef struct {
     int technique;           /* whose jitter (and, for aa_approx, which technique): 0 .. AA_T_TECHNIQUES - 1 */
     const char *dir;         /* output folder */
     int threads;
+    int truth_strata;        /* aa_frames_write: 0, or S (S x S samples a pixel) */
+    int truth_filter;        /* a pixel_filter (core/pixel_filter.h) */
 } aa_frames_request;
 
 /* The technique's index from its short name (none, fxaa, taa, edge-taa,
