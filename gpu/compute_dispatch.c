@@ -6,6 +6,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "gpu/spirv_bindings.h"
 #include "gpu/vulkan_device_handles.h"
 
 enum { MAX_BINDINGS = 32 };
@@ -73,6 +74,30 @@ static int make_buffers(gpu_device *g, dispatch_objects *o, const gpu_dispatch *
     for (int k = 0; k < d->buffer_count; ++k)
         if (make_buffer(g, o, k, &d->buffers[k], d->what, e) != 0)
             return -1;
+    return 0;
+}
+
+static const char *kind_name(int uniform) { return uniform ? "uniform block" : "storage buffer"; }
+
+/* Every binding the shader declares is one of d's, of the same kind: else
+ * the driver would be handed a pipeline its layout does not describe. */
+static int check_bindings(const gpu_dispatch *d, gt_error *e)
+{
+    gpu_declared_binding b[GPU_MAX_DECLARED];
+    int n = gpu_spirv_bindings(d->shader->words, d->shader->count, b);
+    if (n < 0)
+        return gt_error_set(e, d->what, "the compiled shader is not a SPIR-V module");
+    for (int i = 0; i < n; ++i) {
+        if (b[i].set != 0 || b[i].binding >= (uint32_t)d->buffer_count)
+            return gt_error_set(e, d->what, "the shader declares set %u, binding %u; gtlab binds set 0, bindings 0 to %d "
+                                "(docs/shaders.md)", b[i].set, b[i].binding, d->buffer_count - 1);
+        const gpu_buffer *buffer = &d->buffers[b[i].binding];
+        int want_uniform = buffer->kind == GPU_UNIFORM;
+        if (b[i].kind == GPU_DECLARED_OTHER || (b[i].kind == GPU_DECLARED_UNIFORM) != want_uniform)
+            return gt_error_set(e, d->what, "binding %u is declared as a %s; gtlab binds the %s %s there "
+                                "(docs/shaders.md)", b[i].binding, b[i].kind == GPU_DECLARED_OTHER ? "sampler or image"
+                                : kind_name(b[i].kind == GPU_DECLARED_UNIFORM), kind_name(want_uniform), buffer->name);
+    }
     return 0;
 }
 
@@ -241,7 +266,7 @@ int gpu_dispatch_run(gpu_device *g, const gpu_dispatch *d, double *seconds, gt_e
         return gt_error_set(e, d->what, "the device %s is still busy with a dispatch that timed out", g->name);
     dispatch_objects o;
     memset(&o, 0, sizeof o);
-    int rc = make_buffers(g, &o, d, e) != 0 || make_pipeline(g, &o, d, e) != 0 || make_descriptors(g, &o, d, e) != 0 ||
+    int rc = check_bindings(d, e) != 0 || make_buffers(g, &o, d, e) != 0 || make_pipeline(g, &o, d, e) != 0 || make_descriptors(g, &o, d, e) != 0 ||
                      record(g, &o, d, e) != 0 || submit(g, &o, d, seconds, e) != 0 || read_back(g, &o, d, e) != 0
                  ? -1
                  : 0;

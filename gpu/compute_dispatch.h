@@ -41,7 +41,9 @@ typedef struct {
     double timeout;       /* seconds the fence is waited for */
 } gpu_dispatch;
 
-/* Runs the dispatch. Returns 0, or -1 with e set: "<what>: device timeout
+/* Runs the dispatch. Returns 0, or -1 with e set: a binding the shader
+ * declares that is not one of d's or not of its kind (gpu/spirv_bindings.h),
+ * "<what>: device timeout
  * after <t> s" (the device is then left busy: gpu_device_close only forgets
  * it), "<what>: NaN in output <name> at element <i>" (the outputs are
  * overwritten all the same: the caller writes nothing), a Vulkan failure.

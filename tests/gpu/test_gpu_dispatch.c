@@ -105,6 +105,26 @@ static void test_nan(gpu_device *g)
     CHECK_MSG(strcmp(e.message, "nan.glsl: NaN in output y at element 0") == 0, "%s", e.message);
 }
 
+/* A binding outside the dispatch's, and a storage buffer where it binds a
+ * uniform block: one line each, before the driver sees the pipeline. */
+static void test_wrong_binding(gpu_device *g)
+{
+    static float y[COUNT];
+    char shader[sizeof kGlsl + 16];
+    gt_error e = {{0}};
+    snprintf(shader, sizeof shader, "%s", kGlsl);
+    memcpy(strstr(shader, "binding = 2"), "binding = 7", 11);
+    CHECK(run(g, shader, "seven.glsl", NULL, (params){1.0f, 0.0f, COUNT}, y, 10.0, &e) != 0);
+    CHECK_MSG(strncmp(e.message, "seven.glsl: the shader declares set 0, binding 7; gtlab binds set 0, bindings 0 to 2",
+                      84) == 0, "%s", e.message);
+    snprintf(shader, sizeof shader, "%s", kGlsl);
+    memcpy(strstr(shader, "binding = 0"), "binding = 1", 11);
+    memcpy(strstr(shader, "binding = 1) readonly"), "binding = 0) readonly", 21);
+    CHECK(run(g, shader, "swapped.glsl", NULL, (params){1.0f, 0.0f, COUNT}, y, 10.0, &e) != 0);
+    CHECK_MSG(strstr(e.message, "swapped.glsl: binding 1 is declared as a uniform block; gtlab binds the storage "
+                                "buffer x there") == e.message, "%s", e.message);
+}
+
 /* A loop whose exit the shader never reaches (n stays odd, count is even)
  * in 65535 x 64 invocations. llvmpipe ends any loop after 65535 iterations,
  * so there it is long, not endless: either way the fence times out. */
@@ -164,6 +184,7 @@ int main(void)
         test_affine(g, kGlsl, "affine.glsl", NULL);
         test_affine(g, kHlsl, "affine.hlsl", "CSMain");
         test_nan(g);
+        test_wrong_binding(g);
         gpu_device_close(g);
     }
     return check_report("test_gpu_dispatch");

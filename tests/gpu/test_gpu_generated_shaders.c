@@ -31,6 +31,7 @@
 #include "realtime/sphere_light.h"
 #include "realtime/sphere_light_shader.h"
 #include "tests/check.h"
+#include "tests/test_multibounce_models.h"
 
 static const double kU = 1.0 / 16777216.0; /* 2^-24 */
 
@@ -59,18 +60,7 @@ static char *compute_shader(shader_language language, const char *functions, con
 
 /* ---- Multi-bounce ---- */
 
-enum { MB_MODELS = 3, MB_X = 257, MB_RHO = 129, MB_SAMPLES = MB_X * MB_RHO };
-
-static void mb_models(multibounce_model m[MB_MODELS])
-{
-    static const double anchored[MULTIBOUNCE_ANCHORED_PARAMETERS] = {1.55525552, -1.02759191, 1.84048654, -1.96829179};
-    m[0] = multibounce_model_jimenez2016();
-    m[1] = (multibounce_model){.degree = 2,
-                               .a = {0.0577464678, 0.713961848, 2.29879408},
-                               .b = {-0.102705944, -2.06036548, -4.33118267},
-                               .c = {1.0453124, 1.33703475, 2.04820687}};
-    m[2] = multibounce_model_anchored(anchored);
-}
+enum { MB_MODELS = TEST_MULTIBOUNCE_MODELS, MB_X = 257, MB_RHO = 129, MB_SAMPLES = MB_X * MB_RHO };
 
 /* Sample s: V_d a little beyond [0, 1], three albedos over [-1/64, 1 + 1/64]. */
 static void mb_inputs(float *in)
@@ -127,7 +117,7 @@ static void test_multibounce(gpu_device *g, shader_language language)
     static const char *const names[MB_MODELS] = {"mb0", "mb1", "mb2"};
     multibounce_model m[MB_MODELS];
     multibounce_shader_function f[MB_MODELS];
-    mb_models(m);
+    test_multibounce_models(m);
     for (int k = 0; k < MB_MODELS; ++k)
         f[k] = (multibounce_shader_function){.name = names[k], .comment = "test", .model = m[k]};
     char *functions = multibounce_shader_source(language, "// gtlab test\n", f, MB_MODELS);
