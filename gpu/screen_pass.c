@@ -57,6 +57,7 @@ static int run_frames(gpu_device *device, gpu_dispatch *d, gpu_screen_globals *g
     for (int f = 0; f < frames; ++f) {
         double t = 0.0;
         globals->frame = f;
+        memset(frame_out, 0, count * sizeof *frame_out); /* a pixel a frame leaves unwritten is 0, not the last frame's */
         if (gpu_dispatch_run(device, d, &t, e) != 0)
             return -1;
         accumulate(out, frame_out, count, frames);

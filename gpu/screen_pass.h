@@ -11,8 +11,9 @@
  *              is zeros and its bit (1 << c) of Gtlab.present is clear
  *   binding 3  storage buffer float outputs[]: the shader's gtlab.output
  *              planes, plane k at k * width * height
- * Frames 0 .. frames-1 are dispatched in turn (Gtlab.frame), and the output
- * is their mean: a static camera's temporal accumulation. */
+ * Frames 0 .. frames-1 are dispatched in turn (Gtlab.frame), each into
+ * zeroed outputs, and the output is their mean: a static camera's temporal
+ * accumulation. */
 #ifndef GTLAB_GPU_SCREEN_PASS_H
 #define GTLAB_GPU_SCREEN_PASS_H
 

@@ -103,9 +103,15 @@ static int create_device(gpu_device *g, gt_error *e)
                                      .queueFamilyIndex = g->queue_family,
                                      .queueCount = 1,
                                      .pQueuePriorities = &priority};
+    /* Robust buffer access where the device has it: a shader's access past
+     * a buffer's end is dropped (reads give 0) instead of touching memory. */
+    VkPhysicalDeviceFeatures supported, enabled = {0};
+    vkGetPhysicalDeviceFeatures(g->physical, &supported);
+    enabled.robustBufferAccess = supported.robustBufferAccess;
     VkDeviceCreateInfo info = {.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
                                .queueCreateInfoCount = 1,
-                               .pQueueCreateInfos = &queue};
+                               .pQueueCreateInfos = &queue,
+                               .pEnabledFeatures = &enabled};
     VkResult r = vkCreateDevice(g->physical, &info, NULL, &g->device);
     if (r != VK_SUCCESS)
         return gt_error_set(e, "vulkan", "%s: cannot create the device (VkResult %d)", g->name, (int)r);

@@ -139,6 +139,38 @@ static const char *write_shader(const char *name, const char *text)
     return path;
 }
 
+/* --frames 3 with a shader that writes frame 0 only: the mean is 1/3 where
+ * it writes (each frame starts from zeros) and 0 in the background; and a
+ * write far past the outputs' end is dropped (robust buffer access). */
+static void test_frames_average(void)
+{
+    shader_run_request r = request(write_shader(
+        "frame0.glsl", "#version 450\n// gtlab.output ao.V\nlayout(local_size_x = 8, local_size_y = 8) in;\n"
+                       "layout(std140, binding = 0) uniform Gtlab { vec4 r, u, f; float t, a; int width, height, "
+                       "frame, frames, present, reserved; };\n"
+                       "layout(std430, binding = 2) readonly buffer G { float g[]; };\n"
+                       "layout(std430, binding = 3) writeonly buffer O { float o[]; };\n"
+                       "void main() { int i = int(gl_GlobalInvocationID.y) * width + int(gl_GlobalInvocationID.x);\n"
+                       "  if (gl_GlobalInvocationID.x < uint(width) && gl_GlobalInvocationID.y < uint(height) && "
+                       "frame == 0 && g[11 * width * height + i] != 0.0) o[i] = 1.0;\n"
+                       "  o[i + 50000000] = 7.0; }\n"));
+    r.frames = 3;
+    shader_run_result result;
+    gt_error e = {{0}};
+    image out, gbuffer;
+    int rc = shader_run(&r, &result, &e);
+    CHECK_MSG(rc == 0, "%s", e.message);
+    if (rc != 0 || exr_read(out_path, &out, &e) != 0 || exr_read(g_path, &gbuffer, &e) != 0)
+        return;
+    const float *v = image_channel_data(&out, "ao.V"), *mask = image_channel_data(&gbuffer, "mask.A");
+    int wrong = 0;
+    for (size_t i = 0; v && mask && i < (size_t)out.width * (size_t)out.height; ++i)
+        wrong += v[i] != (mask[i] != 0.0f ? 1.0f / 3.0f : 0.0f);
+    CHECK_MSG(v && mask && wrong == 0, "%d pixels are not the mean of frames 1, 0, 0", wrong);
+    image_free(&out);
+    image_free(&gbuffer);
+}
+
 static void test_failures(void)
 {
     shader_run_request r = request(GTLAB_SOURCE_DIR "/shaders/gtao.glsl");
@@ -165,6 +197,7 @@ int main(void)
     if (write_gbuffer() != 0 || c_gtao(&ao) != 0)
         return 1;
     test_gtao_matches_c(ao);
+    test_frames_average();
     test_failures();
     free(ao);
     return check_report("test_gpu_screen_pass");
