@@ -5,6 +5,9 @@
 # its OpenMP (libomp-dev) and LLVM's tools (llvm) are for the fuzz build and
 # the recursion audit (tests/fuzz, tests/audit). blender-data ships the eight
 # CC0 HDR environments (docs/decisions.md, "Environment lighting").
+# libvulkan-dev, mesa-vulkan-drivers (lavapipe: a Vulkan device on the CPU),
+# libshaderc-dev with glslang-dev and spirv-tools (static libraries shaderc
+# links) and glslc run shaders on Vulkan (gpu/, docs/shaders.md).
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -17,6 +20,7 @@ packages=(
   clang libclang-rt-14-dev libomp-dev llvm
   libsquish-dev liblcms2-dev
   blender-data
+  libvulkan-dev mesa-vulkan-drivers libshaderc-dev glslang-dev spirv-tools glslc
 )
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }

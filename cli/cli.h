@@ -21,6 +21,7 @@ int verb_check(int argc, char **argv);
 int verb_fit(int argc, char **argv);
 int verb_lut(int argc, char **argv);
 int verb_approx(int argc, char **argv);
+int verb_shader(int argc, char **argv);
 
 /* Subcommands in their own files (cli/<verb>_<name>.c), in the techniques'
  * registries (cli/technique_*.c). */

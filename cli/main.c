@@ -20,6 +20,7 @@ static const verb verbs[] = {
     {"fit", verb_fit, "fit a real-time model's constants to references (Ceres)"},
     {"bench", verb_bench, "throughput figures (rays/s) and their ratios, from one run"},
     {"check", verb_check, "accuracy checks against brute force (sphere-noh, ...)"},
+    {"shader", verb_shader, "run a GLSL/HLSL screen-space shader on Vulkan over a G-buffer, and score it"},
     {"lut", verb_lut, "lookup tables in every format (EXR, 8-bit PNG, C header)"},
     {"all", verb_all, "the main job: every reference and the accuracy report"},
 };

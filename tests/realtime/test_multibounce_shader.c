@@ -14,22 +14,14 @@
 #include "realtime/multibounce_shader.h"
 #include "tests/check.h"
 #include "tests/source_text.h"
+#include "tests/test_multibounce_models.h"
 
 
 /* The models the tests generate: the talk's (linear), a quadratic, the anchored form. */
-enum { MODELS = 3, GRID_X = 133, GRID_RHO = 69 };
+enum { MODELS = TEST_MULTIBOUNCE_MODELS, GRID_X = 133, GRID_RHO = 69 };
 static const char *const kNames[MODELS] = {"mb_test_linear", "mb_test_quadratic", "mb_test_anchored"};
 
-static void test_models(multibounce_model m[MODELS])
-{
-    static const double anchored[MULTIBOUNCE_ANCHORED_PARAMETERS] = {1.55525552, -1.02759191, 1.84048654, -1.96829179};
-    m[0] = multibounce_model_jimenez2016();
-    m[1] = (multibounce_model){.degree = 2,
-                               .a = {0.0577464678, 0.713961848, 2.29879408},
-                               .b = {-0.102705944, -2.06036548, -4.33118267},
-                               .c = {1.0453124, 1.33703475, 2.04820687}};
-    m[2] = multibounce_model_anchored(anchored);
-}
+static void test_models(multibounce_model m[MODELS]) { test_multibounce_models(m); }
 
 /* The grid: V_d and rho a little beyond [0, 1] on both sides. */
 static float grid_x(int i) { return (i * 4 - 8) / 512.0f; }

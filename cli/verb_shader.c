@@ -1,0 +1,68 @@
+/* gtlab shader run: a user's screen-space GLSL/HLSL on Vulkan over a G-buffer
+ * (docs/shaders.md; the work is studies/shader_run.c), optionally scored. */
+#include <stdio.h>
+
+#include "cli/cli.h"
+#include "cli/cli_options.h"
+#include "cli/subcommands.h"
+#include "studies/shader_run.h"
+
+enum { MAX_PARAMS = 64 };
+
+static const cli_option options[] = {
+    CLI_REQUIRED_STRING("shader", "F.glsl|F.hlsl", "the compute shader (the language by the extension)"),
+    CLI_STRING("entry", "NAME", "entry point (default main; GLSL's is always main)"),
+    CLI_REQUIRED_STRING("gbuffer", "G.exr", "G-buffer: depth.Z, N.X/Y/Z, mask.A (and P, albedo, roughness, bent)"),
+    CLI_STRING("camera", "C.json", "camera (default: the G-buffer's gtlab.camera or its sidecar)"),
+    CLI_CUSTOM("param", "NAME=VALUE", cli_list_add, "a gtlab.param of the shader (the option may repeat)"),
+    CLI_INT32("frames", "N", 1, 4096, "frames dispatched (Gtlab.frame 0..N-1) and averaged"),
+    CLI_DOUBLE("timeout", "S", 0.001, 86400, "seconds a frame may take before 'device timeout'"),
+    CLI_STRING("device", "NAME", "a Vulkan device whose name contains NAME (default: a GPU, else lavapipe)"),
+    CLI_OUTPUT("out.exr", 1, "the shader's outputs (its gtlab.output channels) and mask.A"),
+    CLI_STRING("reference", "R.exr", "score the output against this reference (DSSIM, RMSE, noise floor)"),
+    CLI_STRING("channel", "CH", "the channel scored (default: the shader's first output)"),
+    CLI_END};
+static const cli_command command = {"shader run", "Runs a screen-space compute shader on Vulkan over a G-buffer "
+                                    "(the binding contract:\ndocs/shaders.md) and writes its outputs.",
+                                    options, NULL, NULL};
+
+static void print_result(const shader_run_result *r)
+{
+    printf("%dx%d on %s: %.4g s per frame (device), %.4g s in all\n", r->width, r->height, r->device,
+           r->seconds_per_frame, r->total_seconds);
+    if (!r->scored)
+        return;
+    const metrics_pair_figures *f = &r->figures;
+    printf("%s: DSSIM %.6g, RMSE %.6g, max |A-B| %.6g", r->channel, f->ssim.dssim, f->error.rmse, f->error.max_abs);
+    if (f->has_floor_a)
+        printf(", reference noise floor DSSIM %.6g", f->floor_a.dssim);
+    printf("\n");
+}
+
+static int shader_run_command(int argc, char **argv)
+{
+    const char *params[MAX_PARAMS];
+    cli_list list = {params, 0, MAX_PARAMS, "--param"};
+    shader_run_request r = {.frames = 1, .timeout = 10.0};
+    void *dest[] = {&r.shader, &r.entry, &r.gbuffer, &r.camera, &list, &r.frames, &r.timeout, &r.device, &r.output,
+                    &r.reference, &r.channel};
+    int status;
+    if (cli_options_parse(&command, dest, argc, argv, &status) != 0)
+        return status;
+    r.params = list.values, r.param_count = list.count;
+    shader_run_result result;
+    gt_error e;
+    if (shader_run(&r, &result, &e) != 0)
+        return cli_fail(&e);
+    print_result(&result);
+    return EXIT_OK;
+}
+
+static const cli_subcommand subcommands[] = {{"run", shader_run_command, "a screen-space shader over a G-buffer"}};
+
+int verb_shader(int argc, char **argv)
+{
+    static const cli_subcommand_verb verb = {"shader", "run [options]", "subcommands", "shader subcommand",
+                                             subcommands, 1};
+    return cli_run_subcommand(&verb, argc, argv);
+}

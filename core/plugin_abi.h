@@ -1,0 +1,34 @@
+/* gtlab's C plug-in ABI (issue 15, item 5): approximations written in C, or
+ * anything with a C ABI, scored by gtlab beside its own variants. A plug-in
+ * is a shared library (dlopen'ed RTLD_NOW | RTLD_LOCAL) that includes only
+ * this header and exports, with C linkage:
+ *
+ *   int gtlab_plugin_abi(void);   returns GTLAB_PLUGIN_ABI, the version it was built for
+ *
+ * and the entry points of the quantities it approximates, each named with
+ * the version of its signature (a changed signature gets a new name; gtlab
+ * keeps loading the old ones):
+ *
+ *   gtlab_multibounce_v1   GTAOMultiBounce's quantity (realtime/multibounce.h):
+ *                          V'_d from the visibility V_d and one colour
+ *                          channel's albedo rho, for `count` samples
+ *
+ * An entry point must be pure: the same inputs give the same outputs, on
+ * any thread, and it may be called from several threads at once on disjoint
+ * arrays. examples/multibounce_plugin.c is an example. Only this header's C
+ * types cross the boundary. */
+#ifndef GTLAB_CORE_PLUGIN_ABI_H
+#define GTLAB_CORE_PLUGIN_ABI_H
+
+#include <stddef.h>
+
+#define GTLAB_PLUGIN_ABI 1
+
+#define GTLAB_PLUGIN_ABI_SYMBOL "gtlab_plugin_abi"
+typedef int (*gtlab_plugin_abi_fn)(void);
+
+#define GTLAB_MULTIBOUNCE_V1_SYMBOL "gtlab_multibounce_v1"
+/* out[i] = V'_d(visibility[i], albedo[i]), i < count. */
+typedef void (*gtlab_multibounce_v1_fn)(const float *visibility, const float *albedo, float *out, size_t count);
+
+#endif

@@ -1,0 +1,56 @@
+/* One compute dispatch on a gpu_device: the shader's buffers copied in,
+ * one vkCmdDispatch, a fence waited for with a time limit, the output
+ * buffers copied back and checked for NaN.
+ *
+ * Buffer k is binding k of descriptor set 0: a uniform block (std140) or a
+ * storage buffer (std430). A GLSL shader declares them as
+ *   layout(std140, binding = 0) uniform Params { ... };
+ *   layout(std430, binding = 1) readonly buffer In { float x[]; };
+ * and an HLSL one as
+ *   [[vk::binding(0)]] cbuffer Params { ... };
+ *   [[vk::binding(1)]] StructuredBuffer<float> x;  (RWStructuredBuffer for outputs). */
+#ifndef GTLAB_GPU_COMPUTE_DISPATCH_H
+#define GTLAB_GPU_COMPUTE_DISPATCH_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/error.h"
+#include "gpu/shader_compiler.h"
+#include "gpu/vulkan_device.h"
+
+typedef enum {
+    GPU_UNIFORM, /* a uniform block, read by the shader */
+    GPU_INPUT,   /* a storage buffer the shader reads */
+    GPU_OUTPUT   /* a storage buffer read back after the dispatch; its floats must not be NaN */
+} gpu_buffer_kind;
+
+typedef struct {
+    const char *name; /* for messages, e.g. "ao" */
+    gpu_buffer_kind kind;
+    void *data;       /* size bytes: uploaded before the dispatch; an output's read back after */
+    size_t size;      /* > 0 */
+} gpu_buffer;
+
+typedef struct {
+    const gpu_spirv *shader;
+    const char *what;     /* the shader's name in messages (its file) */
+    gpu_buffer *buffers;  /* buffer k is binding k */
+    int buffer_count;
+    uint32_t groups[3];   /* workgroups dispatched in x, y, z */
+    double timeout;       /* seconds the fence is waited for */
+} gpu_dispatch;
+
+/* Runs the dispatch. Returns 0, or -1 with e set: a binding the shader
+ * declares that is not one of d's or not of its kind (gpu/spirv_bindings.h),
+ * "<what>: device timeout
+ * after <t> s" (the device is then left busy: gpu_device_close only forgets
+ * it), "<what>: NaN in output <name> at element <i>" (the outputs are
+ * overwritten all the same: the caller writes nothing), a Vulkan failure.
+ * seconds (may be NULL): wall time from submission to the fence. */
+int gpu_dispatch_run(gpu_device *device, const gpu_dispatch *d, double *seconds, gt_error *e);
+
+/* The first NaN among count floats, or -1. */
+long gpu_first_nan(const float *values, size_t count);
+
+#endif

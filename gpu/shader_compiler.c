@@ -1,0 +1,120 @@
+#include "gpu/shader_compiler.h"
+
+#include <shaderc/shaderc.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+gpu_source_language gpu_source_language_of(const char *path)
+{
+    size_t n = strlen(path);
+    return n >= 5 && strcasecmp(path + n - 5, ".hlsl") == 0 ? GPU_SOURCE_HLSL : GPU_SOURCE_GLSL;
+}
+
+/* The line of `log` holding the first "error", or its first line. */
+static const char *first_error_line(const char *log, size_t *length)
+{
+    const char *at = strstr(log, "error");
+    const char *start = at ? at : log;
+    while (start > log && start[-1] != '\n')
+        --start;
+    *length = strcspn(start, "\n");
+    return start;
+}
+
+int gpu_compile_error_line(const char *log, const char *name, gt_error *e)
+{
+    size_t length;
+    const char *line = first_error_line(log ? log : "", &length);
+    const char *mark = strstr(line, ": error");
+    if (!mark || (size_t)(mark - line) >= length || mark - line >= 512)
+        return gt_error_set(e, name, "shader compilation failed: %.*s", (int)length, line);
+    /* "f.glsl:12: error: 'x' : undeclared identifier": subject "f.glsl:12". */
+    char subject[512];
+    snprintf(subject, sizeof subject, "%.*s", (int)(mark - line), line);
+    const char *problem = mark + 2;
+    return gt_error_set(e, subject, "%.*s", (int)(length - (size_t)(problem - line)), problem);
+}
+
+/* The SPIR-V of a successful result, copied out of shaderc's. */
+static int copy_spirv(shaderc_compilation_result_t result, const char *entry, const char *name, gpu_spirv *out,
+                      gt_error *e)
+{
+    size_t bytes = shaderc_result_get_length(result);
+    out->words = malloc(bytes ? bytes : 1);
+    if (!out->words)
+        return gt_error_set(e, name, "out of memory for %zu bytes of SPIR-V", bytes);
+    memcpy(out->words, shaderc_result_get_bytes(result), bytes);
+    out->count = bytes / sizeof(uint32_t);
+    snprintf(out->entry, sizeof out->entry, "%s", entry);
+    return 0;
+}
+
+/* Vulkan 1.1 SPIR-V, optimised for performance; HLSL with its own front end. */
+static shaderc_compile_options_t compile_options(gpu_source_language language)
+{
+    shaderc_compile_options_t options = shaderc_compile_options_initialize();
+    if (!options)
+        return NULL;
+    shaderc_compile_options_set_source_language(
+        options, language == GPU_SOURCE_HLSL ? shaderc_source_language_hlsl : shaderc_source_language_glsl);
+    shaderc_compile_options_set_target_env(options, shaderc_target_env_vulkan, shaderc_env_version_vulkan_1_1);
+    shaderc_compile_options_set_optimization_level(options, shaderc_optimization_level_performance);
+    return options;
+}
+
+int gpu_compile_compute(const char *source, const char *name, gpu_source_language language, const char *entry,
+                        gpu_spirv *out, gt_error *e)
+{
+    memset(out, 0, sizeof *out);
+    entry = entry ? entry : "main";
+    if (strlen(entry) >= sizeof out->entry)
+        return gt_error_set(e, name, "entry point name longer than %zu characters", sizeof out->entry - 1);
+    if (language == GPU_SOURCE_GLSL && strcmp(entry, "main") != 0)
+        return gt_error_set(e, name, "a GLSL shader's entry point is main, not %s", entry);
+    shaderc_compiler_t compiler = shaderc_compiler_initialize();
+    shaderc_compile_options_t options = compile_options(language);
+    if (!compiler || !options) {
+        shaderc_compile_options_release(options);
+        shaderc_compiler_release(compiler);
+        return gt_error_set(e, name, "cannot start the shaderc compiler");
+    }
+    shaderc_compilation_result_t result = shaderc_compile_into_spv(compiler, source, strlen(source),
+                                                                   shaderc_compute_shader, name, entry, options);
+    int rc = shaderc_result_get_compilation_status(result) == shaderc_compilation_status_success
+                 ? copy_spirv(result, entry, name, out, e)
+                 : gpu_compile_error_line(shaderc_result_get_error_message(result), name, e);
+    shaderc_result_release(result);
+    shaderc_compile_options_release(options);
+    shaderc_compiler_release(compiler);
+    return rc;
+}
+
+void gpu_spirv_free(gpu_spirv *spirv)
+{
+    free(spirv->words);
+    memset(spirv, 0, sizeof *spirv);
+}
+
+int gpu_read_source(const char *path, char **text, gt_error *e)
+{
+    enum { MAX_BYTES = 4 << 20 };
+    *text = NULL;
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return gt_error_set(e, path, "cannot open the shader");
+    char *buffer = malloc(MAX_BYTES + 1);
+    size_t n = buffer ? fread(buffer, 1, MAX_BYTES + 1, f) : 0;
+    int failed = ferror(f);
+    fclose(f);
+    if (!buffer || failed || n > MAX_BYTES || memchr(buffer, '\0', n)) {
+        free(buffer);
+        return gt_error_set(e, path, "%s", !buffer ? "out of memory" : failed ? "cannot read the shader"
+                                           : n > MAX_BYTES ? "larger than 4 MiB: not a shader"
+                                                           : "holds a NUL byte: not a shader's text");
+    }
+    buffer[n] = '\0';
+    *text = buffer;
+    return 0;
+}

@@ -1,0 +1,64 @@
+#include "studies/plugin.h"
+
+#include <dlfcn.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* dlsym's void * as a function pointer (POSIX guarantees the conversion). */
+static void *symbol(void *handle, const char *name)
+{
+    dlerror();
+    return dlsym(handle, name);
+}
+
+int plugin_open(const char *path, gtlab_plugin *p, gt_error *e)
+{
+    memset(p, 0, sizeof *p);
+    p->handle = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    if (!p->handle) {
+        const char *why = dlerror();
+        return gt_error_set(e, path, "cannot load the plug-in: %s", why ? why : "dlopen failed");
+    }
+    gtlab_plugin_abi_fn abi;
+    *(void **)&abi = symbol(p->handle, GTLAB_PLUGIN_ABI_SYMBOL);
+    int rc = !abi ? gt_error_set(e, path, "not a gtlab plug-in: no %s() (core/plugin_abi.h)", GTLAB_PLUGIN_ABI_SYMBOL)
+             : abi() != GTLAB_PLUGIN_ABI
+                 ? gt_error_set(e, path, "built for plug-in ABI %d; this gtlab loads ABI %d", abi(), GTLAB_PLUGIN_ABI)
+                 : 0;
+    if (rc == 0) {
+        *(void **)&p->multibounce_v1 = symbol(p->handle, GTLAB_MULTIBOUNCE_V1_SYMBOL);
+        if (!p->multibounce_v1)
+            rc = gt_error_set(e, path, "exports no entry point gtlab knows (%s)", GTLAB_MULTIBOUNCE_V1_SYMBOL);
+    }
+    if (rc != 0)
+        plugin_close(p);
+    return rc;
+}
+
+void plugin_close(gtlab_plugin *p)
+{
+    if (p->handle)
+        dlclose(p->handle);
+    memset(p, 0, sizeof *p);
+}
+
+int plugin_apply_multibounce(const gtlab_plugin *p, const char *what, const float *visibility, const float *mask,
+                             size_t n, float albedo, float *out, gt_error *e)
+{
+    if (!p->multibounce_v1)
+        return gt_error_set(e, what, "the plug-in has no %s", GTLAB_MULTIBOUNCE_V1_SYMBOL);
+    float *rho = calloc(n ? n : 1, sizeof *rho);
+    if (!rho)
+        return gt_error_set(e, what, "out of memory");
+    for (size_t i = 0; i < n; ++i)
+        rho[i] = albedo;
+    p->multibounce_v1(visibility, rho, out, n);
+    free(rho);
+    for (size_t i = 0; i < n; ++i) {
+        if (isnan(out[i]) && mask[i] != 0.0f)
+            return gt_error_set(e, what, "the plug-in returned NaN at sample %zu", i);
+        out[i] = mask[i] != 0.0f ? out[i] : 0.0f;
+    }
+    return 0;
+}
