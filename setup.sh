@@ -5,6 +5,8 @@
 # its OpenMP (libomp-dev) and LLVM's tools (llvm) are for the fuzz build and
 # the recursion audit (tests/fuzz, tests/audit). blender-data ships the eight
 # CC0 HDR environments (docs/decisions.md, "Environment lighting").
+# libopenmpi-dev and openmpi-bin build and test MPI renders (GTLAB_MPI=AUTO,
+# `mpirun -n N gtlab render ...`; docs/decisions.md, "Beyond one machine").
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -16,6 +18,7 @@ packages=(
   libdraco-dev libmeshoptimizer-dev gltfpack
   clang libclang-rt-14-dev libomp-dev llvm
   libsquish-dev liblcms2-dev
+  libopenmpi-dev openmpi-bin
   blender-data
 )
 

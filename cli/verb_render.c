@@ -8,6 +8,7 @@
 #include "cli/cli_options.h"
 #include "core/atomic_file.h"
 #include "core/exr_io.h"
+#include "raytracer/distributed_render.h"
 #include "raytracer/reference_render.h"
 #include "scene/scene_loaders.h"
 #include "core/threads.h"
@@ -138,7 +139,8 @@ static int render(const render_options *o)
     gt_error e;
     char camera_path[ATOMIC_PATH_MAX];
     camera_sidecar_path(o->output, camera_path, sizeof camera_path);
-    if (atomic_file_check_writable(o->output, &e) != 0 || atomic_file_check_writable(camera_path, &e) != 0)
+    if (atomic_file_check_writable(o->output, &e) != 0 || atomic_file_check_writable(camera_path, &e) != 0 ||
+        distributed_begin(&e) != 0)
         return cli_fail(&e);
     scene s;
     if (scene_load(o->scene, &s, &e) != 0)
@@ -151,9 +153,10 @@ static int render(const render_options *o)
         reference_render(&s, o->scene, &cam, &o->request, &out, &stats, &e) != 0) {
         status = cli_fail(&e);
     } else {
-        if (exr_write(o->output, &out, &e) != 0 || camera_write_json(camera_path, &cam, &e) != 0)
+        const int writer = distributed_is_writer(); /* under mpirun, rank 0 alone */
+        if (writer && (exr_write(o->output, &out, &e) != 0 || camera_write_json(camera_path, &cam, &e) != 0))
             status = cli_fail(&e);
-        else if (o->request.quantity->prepare /* sampled */)
+        else if (writer && o->request.quantity->prepare /* sampled */)
             printf("%s: %dx%d, %.3g samples, %.3g rays in %.2f s (%.3g rays/s)\n", o->output,
                     cam.width, cam.height, (double)stats.samples, (double)stats.rays, stats.seconds,
                     stats.seconds > 0 ? (double)stats.rays / stats.seconds : 0.0);
