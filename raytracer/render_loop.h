@@ -109,7 +109,7 @@ typedef struct {
 int render_estimates(const gbuffer *gb, const integrator *it, const sampling_settings *ss, mc_film *film,
                      render_stats *stats, gt_error *e);
 
-/* For a render in blocks: an empty film of
+/* For a render in blocks (raytracer/render_checkpoint.h): an empty film of
  * the integrator's quantities; then the samples of ss (a fixed spp, one
  * process) added at every masked pixel, stats added to. When *stop
  * becomes non-zero (stop may be NULL) the rows left are skipped and 1 is
