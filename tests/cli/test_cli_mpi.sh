@@ -7,7 +7,7 @@
 # --oversubscribe; samples and rows not divisible by 3) for ao, the
 # stopping target and fog. Only rank 0 writes. (Each mpirun costs seconds
 # of start-up, not of rendering: the -n 3 runs of the other types would
-# repeat the same code.)
+# repeat the same code.) And `gtlab bench scale` alone and on 2 ranks.
 gtlab=$1
 work=$2
 mpirun=$3
@@ -39,6 +39,14 @@ for name in "${!renders[@]}"; do
     [ "$(grep -c "out.exr: " "n$n-$name.log")" -eq 1 ] && pass || fail "$name -n $n: not one summary line"
   done
 done
+
+# gtlab bench scale, alone and on 2 ranks: one table, from rank 0.
+expect_ok bench-scale-1 bench scale
+grep -q "^  reduction .* 0 film(s)" "$work/stdout" && pass || fail "bench scale alone: $(cat "$work/stdout")"
+"$mpirun" --allow-run-as-root --oversubscribe --mca pml ob1 --mca btl self,vader -n 2 "$gtlab" bench scale >scale.log 2>&1 \
+  && pass || fail "bench scale -n 2: $(tail -c 600 scale.log)"
+[ "$(grep -c "^  reduction .* 1 film(s)" scale.log)" -eq 1 ] && [ "$(grep -c "^  projected" scale.log)" -eq 3 ] && pass \
+  || fail "bench scale -n 2 printed: $(cat scale.log)"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
