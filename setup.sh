@@ -8,6 +8,8 @@
 # libvulkan-dev, mesa-vulkan-drivers (lavapipe: a Vulkan device on the CPU),
 # libshaderc-dev with glslang-dev and spirv-tools (static libraries shaderc
 # links) and glslc run shaders on Vulkan (gpu/, docs/shaders.md).
+# libopenmpi-dev and openmpi-bin build and test MPI renders (GTLAB_MPI=AUTO,
+# `mpirun -n N gtlab render ...`; docs/decisions.md, "Beyond one machine").
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -19,6 +21,7 @@ packages=(
   libdraco-dev libmeshoptimizer-dev gltfpack
   clang libclang-rt-14-dev libomp-dev llvm
   libsquish-dev liblcms2-dev
+  libopenmpi-dev openmpi-bin
   blender-data
   libvulkan-dev mesa-vulkan-drivers libshaderc-dev glslang-dev spirv-tools glslc
 )

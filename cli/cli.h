@@ -14,6 +14,7 @@ enum { EXIT_OK = 0, EXIT_USER_ERROR = 1, EXIT_INTERNAL_ERROR = 2 };
 int verb_scene(int argc, char **argv);
 int verb_render(int argc, char **argv);
 int verb_merge(int argc, char **argv);
+int verb_plan(int argc, char **argv);
 int verb_compare(int argc, char **argv);
 int verb_bench(int argc, char **argv);
 int verb_all(int argc, char **argv);

@@ -15,6 +15,7 @@ static const verb verbs[] = {
     {"scene", verb_scene, "list the built-in scenes, or write one as .glb"},
     {"render", verb_render, "render a reference (gbuffer, ao, multibounce, heightfield-ao, ...) with Embree"},
     {"merge", verb_merge, "combine partial renders of disjoint sample blocks exactly"},
+    {"plan", verb_plan, "split a render into jobs for Slurm or any batch scheduler"},
     {"approx", verb_approx, "a real-time approximation on a G-buffer (gtao, hbao, vo, specular-occlusion)"},
     {"compare", verb_compare, "SSIM/DSSIM, RMSE and absolute errors between two EXRs"},
     {"fit", verb_fit, "fit a real-time model's constants to references (Ceres)"},

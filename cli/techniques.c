@@ -19,6 +19,7 @@
     T(atmosphere)           \
     T(fog)                  \
     T(environment)          \
+    T(scale)                \
     T(throughput)
 
 #define DECLARE(name) extern const technique technique_##name;

@@ -9,7 +9,10 @@
 #include "core/exr_io.h"
 #include "raytracer/reference_merge.h"
 
-static const cli_option options[] = {CLI_OUTPUT("F.exr", 0, "merged render"), CLI_END};
+static const cli_option options[] = {
+    CLI_OUTPUT("F.exr", 0, "merged render"),
+    CLI_STRING("expect-blocks", "S:K+N", "the parts of one plan ('gtlab plan'): refuse inputs with other\n"
+               "samples and a merge that leaves some of these out"), CLI_END};
 static const cli_command command = {
     "merge",
     "Combines reference renders of the same quantity, scene, camera and settings\n"
@@ -21,10 +24,10 @@ static const cli_command command = {
 
 int verb_merge(int argc, char **argv)
 {
-    const char *output = NULL;
+    const char *output = NULL, *planned = NULL;
     cli_arguments files;
     int status;
-    if (cli_options_parse(&command, (void *[]){&output, &files}, argc, argv, &status) != 0)
+    if (cli_options_parse(&command, (void *[]){&output, &planned, &files}, argc, argv, &status) != 0)
         return status;
     int count = files.count;
     if (count < 2)
@@ -45,7 +48,7 @@ int verb_merge(int argc, char **argv)
         }
     image merged;
     if (status == EXIT_OK) {
-        if (reference_merge(inputs, (const char *const *)files.values, count, &merged, &e) != 0 ||
+        if (reference_merge_planned(inputs, (const char *const *)files.values, count, planned, &merged, &e) != 0 ||
             exr_write(output, &merged, &e) != 0)
             status = cli_fail(&e);
         image_free(&merged);

@@ -9,7 +9,9 @@
 #include "cli/technique.h"
 #include "core/atomic_file.h"
 #include "core/exr_io.h"
+#include "raytracer/distributed_render.h"
 #include "raytracer/reference_render.h"
+#include "raytracer/render_checkpoint.h"
 #include "scene/scene_loaders.h"
 #include "core/threads.h"
 
@@ -31,6 +33,7 @@ static const cli_option common_options[] = {
                "(checked at 64, 128, 256, ... samples; default 0: never)"),
     CLI_CHOICE("normal", "shading|geometric", normal_name, 2, "normal the hemisphere is built on"),
     CLI_INT32("threads", "T", 1, 1024, "worker threads (default: all cores); the output does not\ndepend on it"),
+    CLI_FLAG("resume", "continue from F.checkpoint.exr, left by an interrupted render\n(the bits of an uninterrupted one)"),
     CLI_OUTPUT("F.exr", 0, "output EXR; the camera used goes to F.camera.json")};
 enum { COMMON_OPTIONS = sizeof common_options / sizeof common_options[0] };
 
@@ -106,7 +109,7 @@ static int parse_options(int argc, char **argv, render_options *o, int *status)
     const char *texts[MAX_QUANTITY_OPTIONS] = {0};
     sampling_settings *ss = &o->request.sampling;
     void *dest[COMMON_OPTIONS + MAX_QUANTITY_OPTIONS + 1] = {&o->scene, &o->camera, &o->width, &o->height, &ss->spp,
-        &o->seed, &o->sample_offset, &ss->target_stderr, &o->request.normals, &ss->threads, &o->output};
+        &o->seed, &o->sample_offset, &ss->target_stderr, &o->request.normals, &ss->threads, &o->request.resume, &o->output};
     int n = reference_option_count();
     if (n > MAX_QUANTITY_OPTIONS)
         return *status = cli_failf("render", "more than %d quantity options", MAX_QUANTITY_OPTIONS), 1;
@@ -141,9 +144,13 @@ static int parse_options(int argc, char **argv, render_options *o, int *status)
 static int render(const render_options *o)
 {
     gt_error e;
-    char camera_path[ATOMIC_PATH_MAX];
+    char camera_path[ATOMIC_PATH_MAX], checkpoint[ATOMIC_PATH_MAX];
     camera_sidecar_path(o->output, camera_path, sizeof camera_path);
-    if (atomic_file_check_writable(o->output, &e) != 0 || atomic_file_check_writable(camera_path, &e) != 0)
+    render_checkpoint_path(o->output, checkpoint, sizeof checkpoint);
+    reference_request request = o->request;
+    request.checkpoint = checkpoint;
+    if (atomic_file_check_writable(o->output, &e) != 0 || atomic_file_check_writable(camera_path, &e) != 0 ||
+        distributed_begin(&e) != 0)
         return cli_fail(&e);
     scene s;
     if (scene_load(o->scene, &s, &e) != 0)
@@ -153,15 +160,18 @@ static int render(const render_options *o)
     render_stats stats;
     int status = EXIT_OK;
     if (scene_choose_camera(&s, o->camera, (int)o->width, (int)o->height, &cam, &e) != 0 ||
-        reference_render(&s, o->scene, &cam, &o->request, &out, &stats, &e) != 0) {
+        reference_render(&s, o->scene, &cam, &request, &out, &stats, &e) != 0) {
         status = cli_fail(&e);
     } else {
-        if (exr_write(o->output, &out, &e) != 0 || camera_write_json(camera_path, &cam, &e) != 0)
+        const int writer = distributed_is_writer(); /* under mpirun, rank 0 alone */
+        if (writer && (exr_write(o->output, &out, &e) != 0 || camera_write_json(camera_path, &cam, &e) != 0))
             status = cli_fail(&e);
-        else if (o->request.quantity->prepare /* sampled */)
+        else if (writer && o->request.quantity->prepare /* sampled */)
             printf("%s: %dx%d, %.3g samples, %.3g rays in %.2f s (%.3g rays/s)\n", o->output,
                     cam.width, cam.height, (double)stats.samples, (double)stats.rays, stats.seconds,
                     stats.seconds > 0 ? (double)stats.rays / stats.seconds : 0.0);
+        if (writer && status == EXIT_OK)
+            remove(checkpoint); /* the render is whole: its checkpoint has served */
         image_free(&out);
     }
     scene_free(&s);

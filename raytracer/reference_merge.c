@@ -88,9 +88,39 @@ static int add_block(const sample_block *b, const char *name, sample_block *all,
     return 0;
 }
 
+/* The blocks a planned merge must hold (coalesced); count 0: no plan. */
+typedef struct {
+    sample_block blocks[SAMPLE_BLOCKS_MAX];
+    int count;
+    const char *text;
+} block_plan;
+
+static int check_planned(const sample_block *b, const block_plan *plan, const char *name, gt_error *e)
+{
+    if (plan->count == 0 || sample_blocks_within(b, plan->blocks, plan->count))
+        return 0;
+    return gt_error_set(e, name,
+                        "samples %" PRIu64 "..%" PRIu64 " of seed %" PRIu32
+                        " are not in the planned blocks '%s': a part of another render",
+                        b->begin, b->end - 1, b->seed, plan->text);
+}
+
+/* The merged blocks (coalesced) must be the whole plan. */
+static int check_complete(const sample_block *have, int n, const block_plan *plan, gt_error *e)
+{
+    sample_block gap;
+    if (plan->count == 0 || !sample_blocks_first_gap(have, n, plan->blocks, plan->count, &gap))
+        return 0;
+    return gt_error_set(e, "merge",
+                        "no input holds samples %" PRIu64 "..%" PRIu64 " of seed %" PRIu32
+                        " of the planned blocks '%s': a part is missing",
+                        gap.begin, gap.end - 1, gap.seed, plan->text);
+}
+
 /* Adds the input's blocks (its header attribute, read by
  * raytracer/sample_blocks.h) to the list. */
-static int add_blocks(const image *img, const char *name, sample_block *all, int *count, gt_error *e)
+static int add_blocks(const image *img, const char *name, const block_plan *plan, sample_block *all, int *count,
+                      gt_error *e)
 {
     sample_block *mine = malloc(sizeof *mine * SAMPLE_BLOCKS_MAX);
     int n = 0;
@@ -98,7 +128,7 @@ static int add_blocks(const image *img, const char *name, sample_block *all, int
         return gt_error_set(e, name, "out of memory");
     int rc = sample_blocks_parse(image_get_attribute(img, ATTR_BLOCKS), name, mine, SAMPLE_BLOCKS_MAX, &n, e);
     for (int i = 0; rc == 0 && i < n; ++i)
-        rc = add_block(&mine[i], name, all, count, e);
+        rc = check_planned(&mine[i], plan, name, e) != 0 ? -1 : add_block(&mine[i], name, all, count, e);
     free(mine);
     return rc;
 }
@@ -152,45 +182,84 @@ static int write_merged(const image *first, const mc_film *film, const sample_bl
     return rc;
 }
 
-int reference_merge(const image *inputs, const char *const *names, int count, image *out, gt_error *e)
+/* Checks input i against the first and adds its blocks and sums to the total. */
+static int merge_part(const image *inputs, const char *const *names, int i, const block_plan *plan, mc_film *total,
+                      sample_block *blocks, int *block_count, gt_error *e)
+{
+    mc_film part;
+    int rc = check_compatible(&inputs[0], &inputs[i], names[i], e);
+    if (rc == 0)
+        rc = check_not_adaptive(&inputs[i], names[i], e);
+    if (rc == 0)
+        rc = add_blocks(&inputs[i], names[i], plan, blocks, block_count, e);
+    if (rc == 0 && (rc = mc_film_read_channels(&inputs[i], names[i], &part, e)) == 0) {
+        rc = mc_film_merge(total, &part, names[i], e);
+        mc_film_free(&part);
+    }
+    return rc;
+}
+
+/* The first input's film, then every other input merged into it. */
+static int merge_all(const image *inputs, const char *const *names, int count, const block_plan *plan,
+                     mc_film *total, sample_block *blocks, int *block_count, gt_error *e)
+{
+    if (mc_film_read_channels(&inputs[0], names[0], total, e) != 0)
+        return -1;
+    int rc = mc_film_check_moments(total, names[0], e);
+    if (rc == 0)
+        rc = check_not_adaptive(&inputs[0], names[0], e);
+    if (rc == 0)
+        rc = add_blocks(&inputs[0], names[0], plan, blocks, block_count, e);
+    for (int i = 1; i < count && rc == 0; ++i)
+        rc = merge_part(inputs, names, i, plan, total, blocks, block_count, e);
+    if (rc == 0)
+        sample_blocks_coalesce(blocks, block_count);
+    if (rc == 0)
+        rc = check_complete(blocks, *block_count, plan, e);
+    if (rc != 0)
+        mc_film_free(total);
+    return rc;
+}
+
+static int read_plan(const char *planned, block_plan *plan, gt_error *e)
+{
+    plan->count = 0;
+    plan->text = planned;
+    if (!planned)
+        return 0;
+    if (sample_blocks_parse(planned, "--expect-blocks", plan->blocks, SAMPLE_BLOCKS_MAX, &plan->count, e) != 0)
+        return -1;
+    sample_blocks_coalesce(plan->blocks, &plan->count);
+    return 0;
+}
+
+int reference_merge_planned(const image *inputs, const char *const *names, int count, const char *planned,
+                            image *out, gt_error *e)
 {
     memset(out, 0, sizeof *out);
     if (count < 1)
         return gt_error_set(e, "merge", "no inputs");
     sample_block *blocks = malloc(sizeof *blocks * SAMPLE_BLOCKS_MAX);
+    block_plan *plan = malloc(sizeof *plan);
     mc_film total;
-    if (!blocks)
-        return gt_error_set(e, "merge", "out of memory");
-    int block_count = 0;
-    if (mc_film_read_channels(&inputs[0], names[0], &total, e) != 0) {
-        free(blocks);
-        return -1;
-    }
-    if (mc_film_check_moments(&total, names[0], e) != 0) {
-        mc_film_free(&total);
-        free(blocks);
-        return -1;
-    }
-    int rc = check_not_adaptive(&inputs[0], names[0], e);
+    int block_count = 0, rc = blocks && plan ? 0 : gt_error_set(e, "merge", "out of memory");
     if (rc == 0)
-        rc = add_blocks(&inputs[0], names[0], blocks, &block_count, e);
-    for (int i = 1; i < count && rc == 0; ++i) {
-        mc_film part;
-        rc = check_compatible(&inputs[0], &inputs[i], names[i], e);
-        if (rc == 0)
-            rc = check_not_adaptive(&inputs[i], names[i], e);
-        if (rc == 0)
-            rc = add_blocks(&inputs[i], names[i], blocks, &block_count, e);
-        if (rc == 0 && (rc = mc_film_read_channels(&inputs[i], names[i], &part, e)) == 0) {
-            rc = mc_film_merge(&total, &part, names[i], e);
-            mc_film_free(&part);
-        }
+        rc = read_plan(planned, plan, e);
+    if (rc == 0)
+        rc = merge_all(inputs, names, count, plan, &total, blocks, &block_count, e);
+    if (rc == 0) {
+        if (write_merged(&inputs[0], &total, blocks, block_count, out) != 0)
+            rc = gt_error_set(e, "merge", "out of memory");
+        mc_film_free(&total);
     }
-    if (rc == 0 && write_merged(&inputs[0], &total, blocks, block_count, out) != 0)
-        rc = gt_error_set(e, "merge", "out of memory");
     if (rc != 0)
         image_free(out);
-    mc_film_free(&total);
+    free(plan);
     free(blocks);
     return rc;
+}
+
+int reference_merge(const image *inputs, const char *const *names, int count, image *out, gt_error *e)
+{
+    return reference_merge_planned(inputs, names, count, NULL, out, e);
 }

@@ -12,4 +12,12 @@
 /* inputs[i] was read from names[i] (for errors). `out` is initialised here. */
 int reference_merge(const image *inputs, const char *const *names, int count, image *out, gt_error *e);
 
+/* reference_merge of the parts of one planned render (`gtlab plan`):
+ * `planned` is the sample blocks the parts must make up together
+ * (ATTR_BLOCKS' syntax, raytracer/sample_blocks.h). An input with samples
+ * outside them (another seed, another range) is refused naming it, and so
+ * is a merge that leaves some of them out ("a part is missing"). */
+int reference_merge_planned(const image *inputs, const char *const *names, int count, const char *planned,
+                            image *out, gt_error *e);
+
 #endif

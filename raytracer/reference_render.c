@@ -7,6 +7,8 @@
 #include <string.h>
 
 #include "core/reference_schema.h"
+#include "raytracer/distributed_render.h"
+#include "raytracer/render_checkpoint.h"
 #include "scene/scene_hash.h"
 
 int reference_set_attributef(image *img, const char *key, const char *fmt, ...)
@@ -59,6 +61,47 @@ static int write_header(const scene *s, const char *scene_spec, const camera *ca
     return rc;
 }
 
+/* The render's header as text ("key=value" lines): what a checkpoint must
+ * belong to. malloc'd, NULL when out of memory. */
+static char *render_identity(const reference_pass *pass)
+{
+    image header;
+    if (image_init(&header, 1, 1) != 0)
+        return NULL;
+    char *text = NULL;
+    size_t size = 1;
+    if (write_header(pass->scene, pass->scene_spec, pass->cam, pass->req, &header) == 0) {
+        for (int a = 0; a < header.attribute_count; ++a)
+            size += strlen(header.attributes[a].key) + strlen(header.attributes[a].value) + 2;
+        text = calloc(size, 1);
+    }
+    for (int a = 0; text && a < header.attribute_count; ++a)
+        strcat(strcat(strcat(strcat(text, header.attributes[a].key), "="), header.attributes[a].value), "\n");
+    image_free(&header);
+    return text;
+}
+
+/* With a checkpoint path, a fixed spp and one process: in blocks that
+ * survive an interruption (raytracer/render_checkpoint.h); else in one pass. */
+static int render_samples(const reference_pass *pass, const integrator *it, mc_film *film, render_stats *stats,
+                          gt_error *e)
+{
+    const reference_request *req = pass->req;
+    const sampling_settings *ss = &req->sampling;
+    const int adaptive = ss->target_stderr > 0.0 || ss->target_rel_stderr > 0.0;
+    if (req->resume && (adaptive || distributed_share().ranks > 1))
+        return gt_error_set(e, "--resume", "renders with a stopping target or under mpirun take no checkpoints");
+    if (!req->checkpoint || adaptive || distributed_share().ranks > 1)
+        return render_estimates(pass->gb, it, ss, film, stats, e);
+    char *identity = render_identity(pass);
+    if (!identity)
+        return gt_error_set(e, pass->scene_spec, "out of memory");
+    render_checkpoint cp = {req->checkpoint, identity, req->resume};
+    int rc = render_estimates_checkpointed(pass->gb, it, ss, &cp, film, stats, e);
+    free(identity);
+    return rc;
+}
+
 /* Samples the request's quantity at the G-buffer's surfaces into `out`:
  * the descriptor's integrator through the shared loop, then its derived
  * channels. */
@@ -70,7 +113,7 @@ static int render_quantity(const reference_pass *pass, image *out, render_stats 
     if (q->prepare(pass, &state, &it, e) != 0)
         return -1;
     mc_film film;
-    int estimated = render_estimates(pass->gb, &it, &pass->req->sampling, &film, stats, e);
+    int estimated = render_samples(pass, &it, &film, stats, e);
     if (q->release)
         q->release(state);
     if (estimated != 0)

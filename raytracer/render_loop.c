@@ -1,8 +1,10 @@
 #include "raytracer/render_loop.h"
 
 #include <math.h>
+#include <signal.h>
 
 #include "core/progress.h"
+#include "raytracer/distributed_render.h"
 
 enum { MAX_QUANTITIES = MC_FILM_MAX_QUANTITIES, MIN_ADAPTIVE_SPP = 64 };
 
@@ -91,8 +93,50 @@ static uint64_t render_pixel(const gbuffer *gb, const integrator *it, const samp
     return rays;
 }
 
-int render_estimates(const gbuffer *gb, const integrator *it, const sampling_settings *ss, mc_film *film,
-                     render_stats *stats, gt_error *e)
+/* This process's share of the render (raytracer/distributed_render.h): all
+ * of it alone; under MPI a block of every pixel's samples, or with a
+ * stopping target whole rows. */
+typedef struct {
+    sampling_settings samples;
+    int first_row, row_step;
+} work_share;
+
+static work_share share_of(const sampling_settings *ss)
+{
+    render_share share = distributed_share();
+    work_share w = {*ss, 0, 1};
+    if (share.ranks > 1 && adaptive(ss))
+        w.first_row = share.rank, w.row_step = share.ranks;
+    else if (share.ranks > 1)
+        w.samples = distributed_sample_share(ss, share);
+    return w;
+}
+
+/* The share's rows of the film, each pixel's samples ss; skips the rows
+ * left once *stop is set (stop may be NULL). */
+static void render_rows(const gbuffer *gb, const integrator *it, const work_share *w, mc_film *film,
+                        render_stats *stats, const volatile sig_atomic_t *stop)
+{
+    const int rows = (gb->height - w->first_row + w->row_step - 1) / w->row_step;
+    progress bar;
+    progress_begin(&bar, it->label, rows);
+    double start = seconds_now();
+    uint64_t rays = 0, samples = 0;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(w->samples.threads) reduction(+ : rays, samples)
+    for (int row = 0; row < rows; ++row) {
+        int y = w->first_row + row * w->row_step;
+        for (int x = 0; x < gb->width && !(stop && *stop); ++x)
+            if (gb->mask[y * gb->width + x])
+                rays += render_pixel(gb, it, &w->samples, film, x, y, &samples);
+        progress_advance(&bar, 1);
+    }
+    progress_end(&bar);
+    stats->rays += rays;
+    stats->samples += samples;
+    stats->seconds += seconds_now() - start;
+}
+
+static int init_film(const gbuffer *gb, const integrator *it, mc_film *film, gt_error *e)
 {
     if (it->quantity_count > MAX_QUANTITIES)
         return gt_error_set(e, it->label, "too many quantities");
@@ -100,20 +144,33 @@ int render_estimates(const gbuffer *gb, const integrator *it, const sampling_set
         return gt_error_set(e, it->label, "out of memory for the film");
     if (it->normalized_layer)
         mc_film_normalize_layer(film, it->normalized_layer);
-    progress bar;
-    progress_begin(&bar, it->label, gb->height);
-    double start = seconds_now();
-    uint64_t rays = 0, samples = 0;
-#pragma omp parallel for schedule(dynamic, 1) num_threads(ss->threads) reduction(+ : rays, samples)
-    for (int y = 0; y < gb->height; ++y) {
-        for (int x = 0; x < gb->width; ++x)
-            if (gb->mask[y * gb->width + x])
-                rays += render_pixel(gb, it, ss, film, x, y, &samples);
-        progress_advance(&bar, 1);
-    }
-    progress_end(&bar);
-    stats->seconds = seconds_now() - start;
-    stats->rays = rays;
-    stats->samples = samples;
     return 0;
+}
+
+int render_estimates(const gbuffer *gb, const integrator *it, const sampling_settings *ss, mc_film *film,
+                     render_stats *stats, gt_error *e)
+{
+    if (init_film(gb, it, film, e) != 0)
+        return -1;
+    const work_share w = share_of(ss);
+    *stats = (render_stats){0, 0, 0.0};
+    render_rows(gb, it, &w, film, stats, NULL);
+    if (distributed_reduce_film(film, stats, e) != 0) {
+        mc_film_free(film);
+        return -1;
+    }
+    return 0;
+}
+
+int render_estimates_film(const gbuffer *gb, const integrator *it, mc_film *film, gt_error *e)
+{
+    return init_film(gb, it, film, e);
+}
+
+int render_estimates_add(const gbuffer *gb, const integrator *it, const sampling_settings *ss, mc_film *film,
+                         render_stats *stats, const volatile sig_atomic_t *stop)
+{
+    const work_share w = {*ss, 0, 1};
+    render_rows(gb, it, &w, film, stats, stop);
+    return stop && *stop ? 1 : 0;
 }

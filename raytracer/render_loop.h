@@ -20,6 +20,7 @@
 #ifndef GTLAB_RAYTRACER_RENDER_LOOP_H
 #define GTLAB_RAYTRACER_RENDER_LOOP_H
 
+#include <signal.h>
 #include <stdint.h>
 
 #include "core/frame.h"
@@ -102,7 +103,19 @@ typedef struct {
     double seconds;
 } render_stats;
 
+/* Initialises the film and renders every masked pixel's samples into it
+ * (under MPI this process's share, the film the job's on rank 0:
+ * raytracer/distributed_render.h). */
 int render_estimates(const gbuffer *gb, const integrator *it, const sampling_settings *ss, mc_film *film,
                      render_stats *stats, gt_error *e);
+
+/* For a render in blocks (raytracer/render_checkpoint.h): an empty film of
+ * the integrator's quantities; then the samples of ss (a fixed spp, one
+ * process) added at every masked pixel, stats added to. When *stop
+ * becomes non-zero (stop may be NULL) the rows left are skipped and 1 is
+ * returned: the film then holds part of the block. */
+int render_estimates_film(const gbuffer *gb, const integrator *it, mc_film *film, gt_error *e);
+int render_estimates_add(const gbuffer *gb, const integrator *it, const sampling_settings *ss, mc_film *film,
+                         render_stats *stats, const volatile sig_atomic_t *stop);
 
 #endif

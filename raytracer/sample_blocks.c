@@ -106,3 +106,62 @@ char *sample_blocks_format(const sample_block *blocks, int count)
                                 blocks[i].seed, blocks[i].begin, blocks[i].end - blocks[i].begin);
     return text;
 }
+
+static int block_order(const void *a, const void *b)
+{
+    const sample_block *x = a, *y = b;
+    if (x->seed != y->seed)
+        return x->seed < y->seed ? -1 : 1;
+    return x->begin < y->begin ? -1 : x->begin > y->begin;
+}
+
+void sample_blocks_coalesce(sample_block *blocks, int *count)
+{
+    if (*count < 2)
+        return;
+    qsort(blocks, (size_t)*count, sizeof *blocks, block_order);
+    int kept = 1;
+    for (int i = 1; i < *count; ++i) {
+        sample_block *last = &blocks[kept - 1];
+        if (blocks[i].seed == last->seed && blocks[i].begin == last->end)
+            last->end = blocks[i].end;
+        else
+            blocks[kept++] = blocks[i];
+    }
+    *count = kept;
+}
+
+int sample_blocks_within(const sample_block *b, const sample_block *plan, int n)
+{
+    for (int i = 0; i < n; ++i)
+        if (plan[i].seed == b->seed && plan[i].begin <= b->begin && b->end <= plan[i].end)
+            return 1;
+    return 0;
+}
+
+/* The samples of one planned block that no block of `have` starts at, from
+ * its beginning on: 1 with *gap, or 0 when they tile it. */
+static int gap_in(const sample_block *have, int n_have, const sample_block *x, sample_block *gap)
+{
+    uint64_t at = x->begin;
+    for (int i = 0; i < n_have && at < x->end; ++i)
+        if (have[i].seed == x->seed && have[i].begin == at)
+            at = have[i].end;
+    if (at >= x->end)
+        return 0;
+    uint64_t next = x->end;
+    for (int i = 0; i < n_have; ++i)
+        if (have[i].seed == x->seed && have[i].begin > at && have[i].begin < next)
+            next = have[i].begin;
+    *gap = (sample_block){x->seed, at, next};
+    return 1;
+}
+
+int sample_blocks_first_gap(const sample_block *have, int n_have, const sample_block *plan, int n_plan,
+                            sample_block *gap)
+{
+    for (int i = 0; i < n_plan; ++i)
+        if (gap_in(have, n_have, &plan[i], gap))
+            return 1;
+    return 0;
+}

@@ -37,4 +37,15 @@ int sample_blocks_parse(const char *text, const char *what, sample_block *blocks
  * when out of memory. */
 char *sample_blocks_format(const sample_block *blocks, int count);
 
+/* Sorts blocks[0, *count) by seed and offset and joins the ones that touch
+ * ("1:16+16 1:0+16" becomes "1:0+32"), so one set of samples has one text
+ * whatever parts it was rendered in. The blocks must not overlap. */
+void sample_blocks_coalesce(sample_block *blocks, int *count);
+/* Whether every sample of b is in one of plan[0, n) (coalesced). */
+int sample_blocks_within(const sample_block *b, const sample_block *plan, int n);
+/* The first samples of plan[0, n_plan) in none of have[0, n_have) (both
+ * coalesced, have within plan): 1 with *gap set, or 0 when have covers plan. */
+int sample_blocks_first_gap(const sample_block *have, int n_have, const sample_block *plan, int n_plan,
+                            sample_block *gap);
+
 #endif

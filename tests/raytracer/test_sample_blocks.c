@@ -95,10 +95,38 @@ static void test_bounds(void)
     free(digits);
 }
 
+/* Coalescing sorts and joins touching blocks of one seed (the text of a
+ * merge of parts is the text of the whole); within and first_gap answer the
+ * plan checks of gtlab merge --expect-blocks. */
+static void test_coalesce_and_plan(void)
+{
+    int count;
+    gt_error e;
+    CHECK(parse("2:8+8 1:16+16 2:0+4 1:0+16 1:40+8", &count, &e) == 0 && count == 5);
+    sample_blocks_coalesce(blocks, &count);
+    char *text = sample_blocks_format(blocks, count);
+    CHECK_MSG(text && strcmp(text, "1:0+32 1:40+8 2:0+4 2:8+8") == 0, "coalesced to '%s'", text);
+    free(text);
+    sample_block plan[2] = {{1, 0, 48}, {2, 0, 16}};
+    sample_block inside = {1, 40, 48}, other_seed = {3, 0, 4}, past = {2, 12, 17};
+    CHECK(sample_blocks_within(&inside, plan, 2) && !sample_blocks_within(&other_seed, plan, 2) &&
+          !sample_blocks_within(&past, plan, 2));
+    sample_block gap;
+    CHECK(sample_blocks_first_gap(blocks, count, plan, 2, &gap) == 1);
+    CHECK_MSG(gap.seed == 1 && gap.begin == 32 && gap.end == 40, "gap %" PRIu32 ":%" PRIu64 "..%" PRIu64, gap.seed,
+              gap.begin, gap.end);
+    sample_block whole[2] = {{1, 0, 48}, {2, 0, 16}};
+    CHECK(sample_blocks_first_gap(whole, 2, plan, 2, &gap) == 0);
+    sample_block tail_missing[2] = {{1, 0, 48}, {2, 0, 8}};
+    CHECK(sample_blocks_first_gap(tail_missing, 2, plan, 2, &gap) == 1 && gap.seed == 2 && gap.begin == 8 &&
+          gap.end == 16);
+}
+
 int main(void)
 {
     test_round_trip();
     test_refused();
     test_bounds();
+    test_coalesce_and_plan();
     return check_report("test_sample_blocks");
 }

@@ -1,0 +1,185 @@
+/* Rendering in blocks with checkpoints (render_checkpoint.h). */
+#define _POSIX_C_SOURCE 200809L
+#include "raytracer/render_checkpoint.h"
+
+#include <inttypes.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "core/exr_io.h"
+#include "core/progress.h"
+#include "core/reference_schema.h"
+#include "raytracer/sample_blocks.h"
+
+static volatile sig_atomic_t stop_signal; /* the signal that asked to stop, or 0 */
+
+static void on_stop_signal(int signal_number) { stop_signal = signal_number; }
+
+static const int stop_signals[3] = {SIGINT, SIGTERM, SIGHUP};
+
+/* While rendering, the stop signals only set stop_signal (a signal the
+ * parent ignores stays ignored); `saved` keeps the handlers to restore. */
+static void catch_stop_signals(struct sigaction saved[3])
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_stop_signal;
+    sigemptyset(&sa.sa_mask);
+    stop_signal = 0;
+    for (int i = 0; i < 3; ++i)
+        if (sigaction(stop_signals[i], NULL, &saved[i]) == 0 && saved[i].sa_handler != SIG_IGN)
+            sigaction(stop_signals[i], &sa, NULL);
+}
+
+static void restore_stop_signals(const struct sigaction saved[3])
+{
+    for (int i = 0; i < 3; ++i)
+        sigaction(stop_signals[i], &saved[i], NULL);
+}
+
+void render_checkpoint_path(const char *output_path, char *out, int out_size)
+{
+    size_t n = strlen(output_path);
+    int stem = n >= 4 && strcmp(output_path + n - 4, ".exr") == 0 ? (int)n - 4 : (int)n;
+    snprintf(out, (size_t)out_size, "%.*s.checkpoint.exr", stem, output_path);
+}
+
+static double env_number(const char *name, double fallback)
+{
+    const char *text = getenv(name);
+    char *end;
+    double v = text ? strtod(text, &end) : fallback;
+    return text && (end == text || *end != '\0' || v < 0.0) ? fallback : v;
+}
+
+/* The film and the samples done, written as a hidden temporary (in the
+ * output set: a rollback removes it) and renamed onto cp->path outside it. */
+static int write_checkpoint(const render_checkpoint *cp, const sampling_settings *ss, uint32_t done,
+                            const mc_film *film, gt_error *e)
+{
+    char temp[4096];
+    snprintf(temp, sizeof temp, "%s.writing-%ld", cp->path, (long)getpid());
+    image img;
+    if (image_init(&img, film->width, film->height) != 0)
+        return gt_error_set(e, cp->path, "out of memory for the checkpoint");
+    int rc = mc_film_write_channels(film, NULL, &img) | image_set_attribute(&img, ATTR_CHECKPOINT_OF, cp->identity);
+    char blocks[64];
+    snprintf(blocks, sizeof blocks, "%" PRIu32 ":%" PRIu32 "+%" PRIu32, ss->seed, ss->sample_offset, done);
+    rc |= image_set_attribute(&img, ATTR_BLOCKS, blocks);
+    if (rc != 0)
+        rc = gt_error_set(e, cp->path, "out of memory for the checkpoint");
+    else if ((rc = exr_write(temp, &img, e)) == 0 && rename(temp, cp->path) != 0)
+        rc = gt_error_set(e, cp->path, "cannot rename the checkpoint into place");
+    image_free(&img);
+    return rc;
+}
+
+/* The samples the checkpoint holds: one block of this render's seed from
+ * its offset, at most its spp. */
+static int checkpoint_done(const image *img, const render_checkpoint *cp, const sampling_settings *ss,
+                           uint32_t *done, gt_error *e)
+{
+    const char *of = image_get_attribute(img, ATTR_CHECKPOINT_OF);
+    if (!of || strcmp(of, cp->identity) != 0)
+        return gt_error_set(e, cp->path, "a checkpoint of another render (its %s differs): remove it, or render "
+                                         "without --resume",
+                            ATTR_CHECKPOINT_OF);
+    sample_block b;
+    int n;
+    if (sample_blocks_parse(image_get_attribute(img, ATTR_BLOCKS), cp->path, &b, 1, &n, e) != 0)
+        return -1;
+    if (b.seed != ss->seed || b.begin != ss->sample_offset || b.end > (uint64_t)ss->sample_offset + ss->spp)
+        return gt_error_set(e, cp->path, "its %s is not a start of this render's samples", ATTR_BLOCKS);
+    *done = (uint32_t)(b.end - b.begin);
+    return 0;
+}
+
+/* With --resume and a checkpoint at cp->path, its sums into the (empty)
+ * film and the samples they hold; else 0 done. */
+static int resume_from(const render_checkpoint *cp, const sampling_settings *ss, mc_film *film, uint32_t *done,
+                       gt_error *e)
+{
+    *done = 0;
+    if (!cp->resume || access(cp->path, F_OK) != 0)
+        return 0;
+    image img;
+    mc_film saved;
+    if (exr_read(cp->path, &img, e) != 0)
+        return -1;
+    int rc = checkpoint_done(&img, cp, ss, done, e);
+    if (rc == 0 && (rc = mc_film_read_channels(&img, cp->path, &saved, e)) == 0) {
+        rc = mc_film_merge(film, &saved, cp->path, e);
+        mc_film_free(&saved);
+    }
+    image_free(&img);
+    return rc;
+}
+
+/* Block `b` of the render (CHECKPOINT_BLOCK samples from `done`) added to
+ * the film through a film of its own, so an interrupted block leaves the
+ * total as it was. Returns 0, 1 when stopped, or -1 with e. */
+static int render_block(const gbuffer *gb, const integrator *it, const sampling_settings *ss, uint32_t done,
+                        mc_film *film, render_stats *stats, const char *what, gt_error *e)
+{
+    sampling_settings b = *ss;
+    b.sample_offset = ss->sample_offset + done;
+    b.spp = ss->spp - (int)done < CHECKPOINT_BLOCK ? ss->spp - (int)done : CHECKPOINT_BLOCK;
+    mc_film block;
+    if (render_estimates_film(gb, it, &block, e) != 0)
+        return -1;
+    int rc = render_estimates_add(gb, it, &b, &block, stats, &stop_signal);
+    if (rc == 0)
+        rc = mc_film_merge(film, &block, what, e);
+    mc_film_free(&block);
+    return rc;
+}
+
+/* Renders the blocks after `done`, writing the checkpoint every interval
+ * and when stopped. */
+static int render_blocks(const gbuffer *gb, const integrator *it, const sampling_settings *ss,
+                         const render_checkpoint *cp, uint32_t done, mc_film *film, render_stats *stats, gt_error *e)
+{
+    const double interval = env_number("GTLAB_CHECKPOINT_SECONDS", CHECKPOINT_SECONDS);
+    const double stop_after = env_number("GTLAB_STOP_AFTER_BLOCKS", 0.0);
+    double last = seconds_now();
+    uint32_t written = done;
+    int rc = 0;
+    for (int blocks = 1; rc == 0 && done < (uint32_t)ss->spp && !stop_signal; ++blocks) {
+        if ((rc = render_block(gb, it, ss, done, film, stats, cp->path, e)) != 0)
+            break;
+        done += (uint32_t)(ss->spp - (int)done < CHECKPOINT_BLOCK ? ss->spp - (int)done : CHECKPOINT_BLOCK);
+        if (stop_after > 0 && blocks >= stop_after)
+            stop_signal = SIGTERM; /* the test hook: as if the scheduler stopped the job */
+        if (done < (uint32_t)ss->spp && seconds_now() - last >= interval) {
+            rc = write_checkpoint(cp, ss, done, film, e);
+            last = seconds_now(), written = done;
+        }
+    }
+    if (rc >= 0 && stop_signal && done > written)
+        return write_checkpoint(cp, ss, done, film, e);
+    return rc < 0 ? -1 : 0;
+}
+
+int render_estimates_checkpointed(const gbuffer *gb, const integrator *it, const sampling_settings *ss,
+                                  const render_checkpoint *cp, mc_film *film, render_stats *stats, gt_error *e)
+{
+    if (render_estimates_film(gb, it, film, e) != 0)
+        return -1;
+    *stats = (render_stats){0, 0, 0.0};
+    struct sigaction saved[3];
+    catch_stop_signals(saved);
+    uint32_t done;
+    int rc = resume_from(cp, ss, film, &done, e);
+    if (rc == 0)
+        rc = render_blocks(gb, it, ss, cp, done, film, stats, e);
+    const int stopped_by = stop_signal;
+    restore_stop_signals(saved);
+    if (stopped_by)
+        raise(stopped_by); /* gtlab's handler: roll back, exit 128 + signal */
+    if (rc != 0)
+        mc_film_free(film);
+    return rc;
+}

@@ -1,0 +1,49 @@
+/* A render that survives its interruption (issue 20): the samples are
+ * rendered in blocks of CHECKPOINT_BLOCK per pixel, and the exact
+ * accumulators of the completed blocks (core/mc_film.h) are saved beside
+ * the output as "F.checkpoint.exr" (render_checkpoint_path): every
+ * CHECKPOINT_SECONDS, and when SIGINT, SIGTERM or SIGHUP arrives (the block
+ * under way is dropped, the checkpoint written, then the signal takes its
+ * course: gtlab's handler rolls the outputs back and exits 128 + signal).
+ * A killed job (SIGKILL) keeps the last periodic checkpoint.
+ *
+ * Resuming reads the checkpoint and renders the blocks after it. Sums are
+ * exact integers, so the film is the one an uninterrupted render makes,
+ * bit for bit. The checkpoint names the render it belongs to (its header,
+ * ATTR_CHECKPOINT_OF) and holds the one block of samples done
+ * (ATTR_BLOCKS, "seed:offset+done"): another render's checkpoint is
+ * refused. It is written to a hidden temporary and renamed into place
+ * outside the verb's output set, so a rollback never removes it, and it is
+ * never the output path. gtlab render removes it once the output is
+ * written.
+ *
+ * For tests and operators two environment variables: GTLAB_STOP_AFTER_BLOCKS=K
+ * stops the render as SIGTERM would after K blocks of this run, and
+ * GTLAB_CHECKPOINT_SECONDS=S sets the interval (0: after every block).
+ *
+ * Only fixed-spp renders in one process take checkpoints: a stopping target
+ * decides per pixel over all its samples, and MPI ranks hold parts of the
+ * sums (docs/decisions.md, "Beyond one machine"). */
+#ifndef GTLAB_RAYTRACER_RENDER_CHECKPOINT_H
+#define GTLAB_RAYTRACER_RENDER_CHECKPOINT_H
+
+#include "core/error.h"
+#include "raytracer/render_loop.h"
+
+enum { CHECKPOINT_BLOCK = 64 };
+#define CHECKPOINT_SECONDS 60.0
+
+typedef struct {
+    const char *path;     /* the checkpoint file (render_checkpoint_path) */
+    const char *identity; /* the render's header as text: what the checkpoint must belong to */
+    int resume;           /* continue from the checkpoint at path, if there is one */
+} render_checkpoint;
+
+/* "F.checkpoint.exr" for the output "F.exr" (else "<output>.checkpoint.exr"). */
+void render_checkpoint_path(const char *output_path, char *out, int out_size);
+
+/* render_estimates in blocks, with checkpoints. Returns 0, or -1 with e. */
+int render_estimates_checkpointed(const gbuffer *gb, const integrator *it, const sampling_settings *ss,
+                                  const render_checkpoint *cp, mc_film *film, render_stats *stats, gt_error *e);
+
+#endif

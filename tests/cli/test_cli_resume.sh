@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Resume (issue 20, raytracer/render_checkpoint.h): a render stopped after
+# some blocks (the test hook GTLAB_STOP_AFTER_BLOCKS, as SIGTERM would),
+# by a real SIGTERM, or killed (SIGKILL, with a checkpoint after every
+# block) leaves F.checkpoint.exr and no F.exr; `--resume` finishes it into
+# the same file, byte for byte, as the uninterrupted render, and removes the
+# checkpoint. A checkpoint of another render is refused.
+gtlab=$1
+work=$2
+rm -rf "$work" && mkdir -p "$work"
+source "$(dirname "$0")/cli_test_lib.sh"
+cd "$work" || exit 1
+
+small=(ao --scene builtin:cornell --width 24 --height 16 --spp 320 --seed 9 --threads 1)
+expect_ok whole render "${small[@]}" -o whole.exr
+
+# stopped_render NAME STATUS ARGS...: gtlab must exit with STATUS, leave a
+# checkpoint and no output.
+stopped_render() {
+  local name=$1 expected=$2
+  shift 2
+  "$gtlab" render "$@" -o r.exr >/dev/null 2>stderr.txt
+  local status=$?
+  [ "$status" -eq "$expected" ] && pass || fail "$name: exit status $status, expected $expected: $(cat stderr.txt)"
+  [ ! -e r.exr ] && [ -s r.checkpoint.exr ] && pass || fail "$name: r.exr written or no r.checkpoint.exr"
+}
+# Stopped after 2 blocks, resumed and stopped after 1 more, resumed to the end.
+GTLAB_STOP_AFTER_BLOCKS=2 stopped_render hook-1 143 "${small[@]}"
+GTLAB_STOP_AFTER_BLOCKS=1 stopped_render hook-2 143 "${small[@]}" --resume
+expect_ok resume render "${small[@]}" --resume -o r.exr
+cmp -s whole.exr r.exr && pass || fail "stopped twice and resumed: not the uninterrupted file"
+[ ! -e r.checkpoint.exr ] && pass || fail "the checkpoint stayed after the render finished"
+
+# Another render's checkpoint (seed 10) is refused by --resume.
+other=(ao --scene builtin:cornell --width 24 --height 16 --spp 320 --seed 10 --threads 1)
+rm -f r.exr
+GTLAB_STOP_AFTER_BLOCKS=1 stopped_render other 143 "${other[@]}"
+expect_error other-checkpoint "r.checkpoint.exr: a checkpoint of another render" r.exr -- render "${small[@]}" --resume -o r.exr
+rm -f r.checkpoint.exr
+expect_error adaptive "--resume: renders with a stopping target" r.exr -- render "${small[@]}" --target-stderr 0.1 --resume -o r.exr
+
+# Real signals: SIGTERM, then SIGKILL (a killed job), once a checkpoint
+# exists (written after every block here); each resumed to the same file.
+big=(ao --scene builtin:cornell --width 48 --height 32 --spp 1600 --seed 4 --threads 1)
+expect_ok big-whole render "${big[@]}" -o big.exr
+for signal in TERM KILL; do
+  rm -f r.exr r.checkpoint.exr
+  GTLAB_CHECKPOINT_SECONDS=0 "$gtlab" render "${big[@]}" -o r.exr >/dev/null 2>&1 &
+  pid=$!
+  for _ in $(seq 600); do [ -e r.checkpoint.exr ] && break; sleep 0.05; done
+  kill -s "$signal" "$pid"
+  wait "$pid"
+  status=$?
+  expected=$((128 + $(kill -l "$signal")))
+  [ "$status" -eq "$expected" ] && pass || fail "SIG$signal: exit status $status, expected $expected (finished first?)"
+  [ ! -e r.exr ] && [ -s r.checkpoint.exr ] && pass || fail "SIG$signal: r.exr written or no checkpoint"
+  expect_ok "resume-$signal" render "${big[@]}" --resume -o r.exr
+  cmp -s big.exr r.exr && pass || fail "SIG$signal and resumed: not the uninterrupted file"
+done
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
