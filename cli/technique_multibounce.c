@@ -46,35 +46,6 @@ static const cli_command fit_command = {
     "         gtlab fit multibounce --data c.exr m.exr -o fit.json\n"
     "exit status: 0 success, 1 bad input, 2 internal error"};
 
-static void print_fit(const char *title, const multibounce_fit *f, const multibounce_errors *err)
-{
-    printf("%s (RMSE %.4g, max |error| %.4g):\n ", title, err->rmse, err->max_abs);
-    for (int i = 0; i < f->parameter_count; ++i) {
-        char name[8];
-        multibounce_fit_parameter_name(f, i, name, sizeof name);
-        printf(" %s = %.5f (±%.5f)", name, f->params[i], f->standard_errors[i]);
-    }
-    printf("\n");
-}
-
-static void print_summary(const multibounce_data *d, const multibounce_analysis *a)
-{
-    printf("%zu samples: %d scenes, %d albedos, --bounces %s\n", d->count, d->scene_count, d->albedo_count,
-           d->bounces);
-    for (int j = 0; j < MB_JOINT_COUNT; ++j)
-        if (a->has[j])
-            print_fit(multibounce_joint_names[j], &a->joint[j], &a->joint_err[j][1]);
-    printf("talk's coefficients on the same data: RMSE %.4g, max |error| %.4g\n", a->talk_err[1].rmse,
-           a->talk_err[1].max_abs);
-    if (a->heldout_count) {
-        printf("leave-one-scene-out mean RMSE:");
-        for (int j = 0; j < MB_JOINT_COUNT; ++j)
-            if (a->has[j])
-                printf(" %s %.4g,", multibounce_joint_names[j], a->heldout_mean[j]);
-        printf(" talk %.4g; chosen: %s\n", a->heldout_mean_talk, multibounce_joint_names[a->chosen]);
-    }
-}
-
 /* The fit_command line as one string, for the outputs' provenance. */
 static void command_text(int argc, char **argv, char *out, size_t size)
 {
@@ -116,7 +87,7 @@ static int fit_multibounce(int argc, char **argv)
              multibounce_write_outputs(&d, a, command_line, out.json, out.header, out.hlsl, out.glsl, &e) != 0)
         status = cli_fail(&e);
     else
-        print_summary(&d, a);
+        multibounce_analysis_print(stdout, &d, a);
     free(a);
     multibounce_data_free(&d);
     return status;
@@ -158,21 +129,6 @@ static const cli_command bench_command = {
     "Each figure is the best of R passes.",
     bench_options, NULL, NULL};
 
-static void print_report(const char *spec, const multibounce_settings *s, const multibounce_benchmark *b)
-{
-    printf("scene %s, %d albedos, %d spp, 1 and %d threads\n\n", spec, s->albedo_count, b->spp, b->threads);
-    printf("%-44s %14s %14s\n", "", "1 thread", "threads");
-    printf("%-44s %14.4g %14.4g\n", "gtlab multibounce paths/s", b->paths_per_s[0], b->paths_per_s[1]);
-    printf("%-44s %14.4g %14.4g\n", "gtlab multibounce rays/s", b->rays_per_s[0], b->rays_per_s[1]);
-    printf("%-44s %14.4g %14.4g\n", "raw Embree rtcIntersect1 rays/s", b->raw_intersect1[0], b->raw_intersect1[1]);
-    printf("%-44s %14.4g %14.4g\n", "raw Embree rtcIntersect1M (64) rays/s", b->raw_intersect1m[0],
-           b->raw_intersect1m[1]);
-    printf("%-44s %14.3f %14.3f\n", "ratio gtlab / raw rtcIntersect1", b->rays_per_s[0] / b->raw_intersect1[0],
-           b->rays_per_s[1] / b->raw_intersect1[1]);
-    printf("\n%d albedos in one pass: %.3f s; one render per albedo: %.3f s in all; ratio %.2f\n", s->albedo_count,
-           b->seconds_one_pass, b->seconds_separate, b->seconds_separate / b->seconds_one_pass);
-}
-
 static int bench_multibounce(int argc, char **argv)
 {
     const char *spec = "builtin:cornell";
@@ -190,7 +146,7 @@ static int bench_multibounce(int argc, char **argv)
     if (multibounce_bench_run(spec, (int)width, (int)height, &settings, (int)spp, (int)threads, (int)repeats, &b,
                               &e) != 0)
         return cli_fail(&e);
-    print_report(spec, &settings, &b);
+    multibounce_benchmark_print(stdout, spec, &settings, &b);
     return EXIT_OK;
 }
 

@@ -26,19 +26,6 @@ static const cli_command command = {"shader run", "Runs a screen-space compute s
                                     "(the binding contract:\ndocs/shaders.md) and writes its outputs.",
                                     options, NULL, NULL};
 
-static void print_result(const shader_run_result *r)
-{
-    printf("%dx%d on %s: %.4g s per frame (device), %.4g s in all\n", r->width, r->height, r->device,
-           r->seconds_per_frame, r->total_seconds);
-    if (!r->scored)
-        return;
-    const metrics_pair_figures *f = &r->figures;
-    printf("%s: DSSIM %.6g, RMSE %.6g, max |A-B| %.6g", r->channel, f->ssim.dssim, f->error.rmse, f->error.max_abs);
-    if (f->has_floor_a)
-        printf(", reference noise floor DSSIM %.6g", f->floor_a.dssim);
-    printf("\n");
-}
-
 static int shader_run_command(int argc, char **argv)
 {
     const char *params[MAX_PARAMS];
@@ -54,7 +41,7 @@ static int shader_run_command(int argc, char **argv)
     gt_error e;
     if (shader_run(&r, &result, &e) != 0)
         return cli_fail(&e);
-    print_result(&result);
+    shader_run_print(stdout, &result);
     return EXIT_OK;
 }
 

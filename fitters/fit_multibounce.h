@@ -18,6 +18,7 @@
 #define GTLAB_FITTERS_FIT_MULTIBOUNCE_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "core/error.h"
 #include "core/image.h"
@@ -173,6 +174,11 @@ typedef struct {
 /* Every fit: per albedo, the joint models, the talk's errors, and
  * leave-one-scene-out. Needs samples at 2+ albedos. */
 int multibounce_analyse(const multibounce_data *d, multibounce_analysis *out, gt_error *e);
+
+/* The analysis as `gtlab fit multibounce` prints it: the data's size, each
+ * joint model's coefficients with standard errors, the talk's error on the
+ * same data, the held-out errors and the model chosen. */
+void multibounce_analysis_print(FILE *out, const multibounce_data *d, const multibounce_analysis *a);
 
 /* Writes the JSON (coefficients, standard errors, covariance, errors, the
  * talk's errors, data used), a C header and HLSL and GLSL functions, each

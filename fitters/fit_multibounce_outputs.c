@@ -350,3 +350,32 @@ int multibounce_output_files_resolve(multibounce_output_files *f, gt_error *e)
             return -1;
     return 0;
 }
+
+static void print_fit(FILE *out, const char *title, const multibounce_fit *f, const multibounce_errors *err)
+{
+    fprintf(out, "%s (RMSE %.4g, max |error| %.4g):\n ", title, err->rmse, err->max_abs);
+    for (int i = 0; i < f->parameter_count; ++i) {
+        char name[8];
+        multibounce_fit_parameter_name(f, i, name, sizeof name);
+        fprintf(out, " %s = %.5f (±%.5f)", name, f->params[i], f->standard_errors[i]);
+    }
+    fprintf(out, "\n");
+}
+
+void multibounce_analysis_print(FILE *out, const multibounce_data *d, const multibounce_analysis *a)
+{
+    fprintf(out, "%zu samples: %d scenes, %d albedos, --bounces %s\n", d->count, d->scene_count, d->albedo_count,
+           d->bounces);
+    for (int j = 0; j < MB_JOINT_COUNT; ++j)
+        if (a->has[j])
+            print_fit(out, multibounce_joint_names[j], &a->joint[j], &a->joint_err[j][1]);
+    fprintf(out, "talk's coefficients on the same data: RMSE %.4g, max |error| %.4g\n", a->talk_err[1].rmse,
+           a->talk_err[1].max_abs);
+    if (a->heldout_count) {
+        fprintf(out, "leave-one-scene-out mean RMSE:");
+        for (int j = 0; j < MB_JOINT_COUNT; ++j)
+            if (a->has[j])
+                fprintf(out, " %s %.4g,", multibounce_joint_names[j], a->heldout_mean[j]);
+        fprintf(out, " talk %.4g; chosen: %s\n", a->heldout_mean_talk, multibounce_joint_names[a->chosen]);
+    }
+}

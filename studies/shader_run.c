@@ -167,3 +167,16 @@ int shader_run(const shader_run_request *r, shader_run_result *out, gt_error *e)
     release(&s);
     return rc;
 }
+
+void shader_run_print(FILE *out, const shader_run_result *r)
+{
+    fprintf(out, "%dx%d on %s: %.4g s per frame (device), %.4g s in all\n", r->width, r->height, r->device,
+           r->seconds_per_frame, r->total_seconds);
+    if (!r->scored)
+        return;
+    const metrics_pair_figures *f = &r->figures;
+    fprintf(out, "%s: DSSIM %.6g, RMSE %.6g, max |A-B| %.6g", r->channel, f->ssim.dssim, f->error.rmse, f->error.max_abs);
+    if (f->has_floor_a)
+        fprintf(out, ", reference noise floor DSSIM %.6g", f->floor_a.dssim);
+    fprintf(out, "\n");
+}

@@ -5,6 +5,8 @@
 #ifndef GTLAB_STUDIES_SHADER_RUN_H
 #define GTLAB_STUDIES_SHADER_RUN_H
 
+#include <stdio.h>
+
 #include "core/error.h"
 #include "metrics/image_pair.h"
 
@@ -36,5 +38,9 @@ typedef struct {
 /* Runs it. Returns 0, or -1 with e the one line naming the file at fault;
  * on failure nothing is written. */
 int shader_run(const shader_run_request *request, shader_run_result *result, gt_error *e);
+
+/* The run as `gtlab shader run` prints it: size, device, seconds per frame
+ * and, when scored, DSSIM, RMSE, max |A-B| and the reference's noise floor. */
+void shader_run_print(FILE *out, const shader_run_result *r);
 
 #endif
