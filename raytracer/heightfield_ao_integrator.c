@@ -88,6 +88,56 @@ static int behind_at(const heightfield_settings *hs, const screen_segment *sg, f
     return hs->gb->mask[j] && z > surface_depth(hs, j, x, y) * (1.0f + 1e-5f);
 }
 
+static float ray_depth(const screen_segment *sg, float u)
+{
+    float a = u * sg->z0 / ((1.0f - u) * sg->z1 + u * sg->z0);
+    return sg->z0 + a * (sg->z1 - sg->z0);
+}
+
+/* How far the ray's point at screen parameter u lies behind the surface of
+ * the pixel under it, in depth (> 0: behind); 0 when no surface counts there
+ * (off the image, background, the start's own pixel). */
+static int depth_behind(const heightfield_settings *hs, const screen_segment *sg, float u, float *h)
+{
+    const camera_view *v = &hs->gb->view;
+    float x = sg->x0 + u * (sg->x1 - sg->x0), y = sg->y0 + u * (sg->y1 - sg->y0);
+    int px = (int)floorf(x), py = (int)floorf(y);
+    if (px < 0 || py < 0 || px >= v->width || py >= v->height || (px == sg->x_start && py == sg->y_start))
+        return 0;
+    long j = (long)py * v->width + px;
+    if (!hs->gb->mask[j])
+        return 0;
+    *h = ray_depth(sg, u) - surface_depth(hs, j, x, y) * (1.0f + 1e-5f);
+    return 1;
+}
+
+/* Whether the ray enters the slab of the cell it crosses between screen
+ * parameters ua < ub (one pixel): some u with 0 < h(u) < T, h the depth
+ * behind the surface. 1/depth is linear in u for the ray, and for the
+ * surface where it is the pixel's unclamped tangent plane, so h = 1/a - 1/b
+ * (a, b linear) has at most one extremum, where b/a = sqrt(b'/a'); the range
+ * of h over the cell is spanned by the ends and that point, and it meets
+ * (0, T) iff its maximum is > 0 and its minimum < T. (Where the depth is
+ * clamped, the extremum is located from the end values.) */
+static int in_slab(const heightfield_settings *hs, const screen_segment *sg, float ua, float ub)
+{
+    float ha, hb;
+    if (!depth_behind(hs, sg, ua, &ha) || !depth_behind(hs, sg, ub, &hb))
+        return 0; /* both ends lie in one covered pixel, or the cell does not count */
+    float lo = fminf(ha, hb), hi = fmaxf(ha, hb);
+    float za = ray_depth(sg, ua), zb = ray_depth(sg, ub);
+    float a0 = 1.0f / za, a1 = (1.0f / zb - a0) / (ub - ua);
+    float b0 = 1.0f / (za - ha), b1 = (1.0f / (zb - hb) - b0) / (ub - ua);
+    if (a1 * b1 > 0.0f) {
+        float k = sqrtf(b1 / a1), s = (k * a0 - b0) / (b1 - k * a1), hc;
+        if (s > 0.0f && s < ub - ua && depth_behind(hs, sg, ua + s, &hc)) {
+            lo = fminf(lo, hc);
+            hi = fmaxf(hi, hc);
+        }
+    }
+    return hi > 0.0f && lo < hs->thickness;
+}
+
 /* Distance along the screen path (origin o, unit direction d) to the next
  * multiple of `size` beyond cell c on one axis. */
 static float boundary(float o, float d, int c, int size)
@@ -97,12 +147,6 @@ static float boundary(float o, float d, int c, int size)
     if (d < 0.0f)
         return ((float)(c / size * size) - o) / d;
     return INFINITY;
-}
-
-static float ray_depth(const screen_segment *sg, float u)
-{
-    float a = u * sg->z0 / ((1.0f - u) * sg->z1 + u * sg->z0);
-    return sg->z0 + a * (sg->z1 - sg->z0);
 }
 
 /* The screen path of the ray crosses pixel cells; in each, the ray is behind
@@ -134,6 +178,7 @@ int heightfield_settings_init(heightfield_settings *hs, const gbuffer *gb, float
     size_t n = (size_t)gb->width * (size_t)gb->height;
     hs->gb = gb;
     hs->max_distance = max_distance;
+    hs->thickness = INFINITY;
     int tiles_y[HEIGHTFIELD_LEVELS], ok = 1;
     hs->depth = malloc(sizeof *hs->depth * n);
     hs->depth_lo = malloc(sizeof *hs->depth_lo * n);
@@ -236,7 +281,9 @@ int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d)
         if (skipped)
             continue;
         float cell_exit = fmaxf(fminf(fminf(boundary(sg.x0, dx, cx, 1), boundary(sg.y0, dy, cy, 1)), tau_end), tau + eps);
-        if ((tau > 0.0f && behind_at(hs, &sg, (tau + eps) / length)) || behind_at(hs, &sg, (cell_exit - eps) / length))
+        if (isinf(hs->thickness) ? (tau > 0.0f && behind_at(hs, &sg, (tau + eps) / length)) ||
+                                       behind_at(hs, &sg, (cell_exit - eps) / length)
+                                 : in_slab(hs, &sg, (tau + eps) / length, (cell_exit - eps) / length))
             return 0;
         tau = cell_exit;
     }

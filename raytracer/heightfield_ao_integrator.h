@@ -11,7 +11,13 @@
  * (nothing beyond the screen is known). This is the quantity GTAO computes
  * exactly, given enough slices and samples, so GTAO minus this reference is
  * pure sampling/denoising error; this reference minus the 3-D one is the
- * height-field assumption's error. */
+ * height-field assumption's error.
+ *
+ * With a finite thickness T (`gtlab render heightfield-ao --thickness T`)
+ * each pixel's surface is a slab: a point blocks a ray only where its depth
+ * along the camera axis lies between the surface's depth d and d + T, so
+ * light passes behind thin objects (the occluder model of visibility-bitmask
+ * AO, realtime/vbao.h). T = INFINITY is the height field above, bit for bit. */
 #ifndef GTLAB_RAYTRACER_HEIGHTFIELD_AO_INTEGRATOR_H
 #define GTLAB_RAYTRACER_HEIGHTFIELD_AO_INTEGRATOR_H
 
@@ -27,15 +33,23 @@ typedef struct {
     float *tile_min[HEIGHTFIELD_LEVELS]; /* per tile of each level, the nearest depth of its surfaces (owned) */
     int tiles_x[HEIGHTFIELD_LEVELS];
     float max_distance; /* V = 1 beyond it along the ray; INFINITY for none */
+    float thickness;    /* each pixel's slab, depth d to d + thickness; INFINITY (init's default): solid behind */
 } heightfield_settings;
 
-/* Prepares the settings from a G-buffer (keeps a pointer to it). Returns 0,
- * or -1 when out of memory. */
+/* The heightfield-ao quantity's own settings block (reference_request.settings;
+ * NULL there: INFINITY): `--thickness T`. */
+typedef struct {
+    float thickness;
+} heightfield_ao_options;
+
+/* Prepares the settings from a G-buffer (keeps a pointer to it), thickness
+ * INFINITY. Returns 0, or -1 when out of memory. */
 int heightfield_settings_init(heightfield_settings *hs, const gbuffer *gb, float max_distance);
 void heightfield_settings_free(heightfield_settings *hs);
 
 /* 1 if the ray p + t d, t in (0, max_distance], stays in front of the
- * height field (exposed for tests). */
+ * height field, or with a finite thickness never enters a pixel's slab
+ * (exposed for tests). */
 int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d);
 
 /* The horizon of the half-slice of p that leaves it along s (unit, s . v = 0,

@@ -1,10 +1,54 @@
 /* `gtlab render heightfield-ao`: AO where only the depth buffer, taken as a
  * height field, blocks rays (raytracer/heightfield_ao_integrator.h). Shares
- * --max-distance and the settings header with ao. */
+ * --max-distance and the settings header with ao; --thickness T makes each
+ * pixel a slab of depth T (the header's settings then end in thickness=T). */
+#include <math.h>
 #include <stdlib.h>
 
+#include "core/number_parse.h"
+#include "core/reference_schema.h"
 #include "raytracer/ao_quantity.h"
 #include "raytracer/heightfield_ao_integrator.h"
+
+static float thickness_of(const reference_request *rq)
+{
+    const heightfield_ao_options *o = rq->settings;
+    return o ? o->thickness : INFINITY;
+}
+
+static int parse_thickness(reference_request *rq, const char *value, gt_error *e)
+{
+    double t;
+    if (parse_real_in("--thickness", value, 1e-30, 1e30, &t, e) != 0)
+        return -1;
+    ((heightfield_ao_options *)rq->settings)->thickness = (float)t;
+    return 0;
+}
+
+static const reference_option option_thickness = {
+    .name = "thickness",
+    .value = "T",
+    .help = "each pixel blocks rays only between its\ndepth d and d + T along the camera axis\n"
+            "(light passes behind thin objects;\ndefault: infinite, solid behind)",
+    .parse = parse_thickness,
+};
+
+static void set_defaults(reference_request *rq)
+{
+    ao_quantity_set_defaults(rq);
+    if (rq->settings)
+        ((heightfield_ao_options *)rq->settings)->thickness = INFINITY;
+}
+
+/* ao's settings (heightfield-ao has no fade), " thickness=T" appended when T is finite. */
+static int write_settings(const reference_request *rq, image *out)
+{
+    float t = thickness_of(rq);
+    if (isinf(t))
+        return ao_quantity_write_settings(rq, out);
+    return reference_set_attributef(out, ATTR_SETTINGS, "max_distance=%.9g target_stderr=%.9g thickness=%.9g",
+                                    rq->max_distance, rq->sampling.target_stderr, t);
+}
 
 static int prepare(const reference_pass *pass, void **state, integrator *it, gt_error *e)
 {
@@ -13,6 +57,7 @@ static int prepare(const reference_pass *pass, void **state, integrator *it, gt_
         free(hf);
         return gt_error_set(e, pass->scene_spec, "out of memory for the height field");
     }
+    hf->thickness = thickness_of(pass->req);
     *state = hf;
     *it = heightfield_ao_integrator(hf);
     return 0;
@@ -28,10 +73,12 @@ const reference_quantity_descriptor reference_quantity_heightfield_ao = {
     .name = "heightfield-ao",
     .help = "the G-buffer plus ao.V and ao.Vuniform where rays are blocked\n"
             "only by the depth buffer taken as a height field (infinite thickness,\n"
-            "rays leaving the image escape): what screen-space AO can know",
-    .options = (const reference_option *const[]){&reference_option_max_distance, NULL},
-    .set_defaults = ao_quantity_set_defaults,
+            "rays leaving the image escape): what screen-space AO can know;\n"
+            "with --thickness T, a slab of depth T behind each pixel instead",
+    .options = (const reference_option *const[]){&reference_option_max_distance, &option_thickness, NULL},
+    .settings_size = sizeof(heightfield_ao_options),
+    .set_defaults = set_defaults,
     .prepare = prepare,
     .release = release,
-    .write_settings = ao_quantity_write_settings,
+    .write_settings = write_settings,
 };

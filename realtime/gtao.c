@@ -249,8 +249,7 @@ float gtao_slice_weight(vec3 v, float phi)
     return v.z / (1.0f - dv * dv);
 }
 
-void gtao_search_slice(const ss_gbuffer *g, int x, int y, const gtao_params *p, float phi, float offset,
-                       gtao_slice *s)
+void gtao_slice_geometry(const ss_gbuffer *g, int x, int y, float phi, int fast_math, gtao_slice *s)
 {
     vec3 pc = ss_view_position(g, x, y), n = ss_view_normal(g, x, y);
     float dx = cosf(phi), dy = sinf(phi);
@@ -264,9 +263,16 @@ void gtao_search_slice(const ss_gbuffer *g, int x, int y, const gtao_params *p, 
     vec3 np = v3_sub(n, v3_scale(axis, v3_dot(n, axis)));
     s->n_len = v3_length(np);
     float cos_n = s->n_len > 0.0f ? v3_dot(np, s->v) / s->n_len : 1.0f;
-    float n_angle = acos_of(cos_n, p->fast_math);
+    float n_angle = acos_of(cos_n, fast_math);
     s->n = v3_dot(np, s->side) < 0.0f ? -n_angle : n_angle;
+}
 
+void gtao_search_slice(const ss_gbuffer *g, int x, int y, const gtao_params *p, float phi, float offset,
+                       gtao_slice *s)
+{
+    gtao_slice_geometry(g, x, y, phi, p->fast_math, s);
+    vec3 pc = ss_view_position(g, x, y);
+    float dx = cosf(phi), dy = sinf(phi);
     /* The hemisphere limits n -+ pi/2 as cosines from v: cos(n - pi/2) = sin n,
      * cos(n + pi/2) = -sin n. */
     float sin_n = sinf(s->n);
@@ -309,8 +315,9 @@ static vec3 slice_bent(const gtao_slice *s, float visibility, int halfway)
     return v3_add(v3_scale(s->v, bv), v3_scale(s->side, bs));
 }
 
-static void pixel_gtao(const ss_gbuffer *g, const gtao_params *p, int frame, int x, int y, float *ao, vec3 *bent)
+static void pixel_gtao(const ss_gbuffer *g, const void *params, int frame, int x, int y, float *ao, vec3 *bent)
 {
+    const gtao_params *p = params;
     float sum = 0.0f;
     vec3 b = v3(0.0f, 0.0f, 0.0f);
     float offset = gtao_step_offset(x, y, frame, p->pattern);
@@ -323,10 +330,12 @@ static void pixel_gtao(const ss_gbuffer *g, const gtao_params *p, int frame, int
     }
     *ao = sum / (float)p->slices;
     float len = v3_length(b);
-    *bent = len > 0.0f ? ss_world_direction(g, v3_scale(b, 1.0f / len)) : ss_world_direction(g, ss_view_normal(g, x, y));
+    if (bent)
+        *bent = len > 0.0f ? ss_world_direction(g, v3_scale(b, 1.0f / len))
+                           : ss_world_direction(g, ss_view_normal(g, x, y));
 }
 
-void gtao_frame(const ss_gbuffer *g, const gtao_params *p, int frame, float *ao, float *const *bent)
+void ss_pixel_frame(const ss_gbuffer *g, ss_pixel_fn fn, const void *params, int frame, float *ao, float *const *bent)
 {
 #pragma omp parallel for schedule(dynamic, 4)
     for (int y = 0; y < g->height; ++y)
@@ -335,7 +344,7 @@ void gtao_frame(const ss_gbuffer *g, const gtao_params *p, int frame, float *ao,
             float a = 0.0f;
             vec3 b = v3(0.0f, 0.0f, 0.0f);
             if (g->mask[i] != 0.0f)
-                pixel_gtao(g, p, frame, x, y, &a, &b);
+                fn(g, params, frame, x, y, &a, bent ? &b : NULL);
             ao[i] = a;
             if (bent) {
                 bent[0][i] = b.x;
@@ -346,24 +355,36 @@ void gtao_frame(const ss_gbuffer *g, const gtao_params *p, int frame, float *ao,
 }
 
 typedef struct {
-    const gtao_params *p;
+    ss_pixel_fn fn;
+    const void *params;
     int bent;
 } frame_job;
 
-/* Adapts gtao_frame to the shared frame loop: plane 0 AO, planes 1-3 the bent normal. */
+/* Adapts ss_pixel_frame to the shared frame loop: plane 0 AO, planes 1-3 the bent normal. */
 static void frame_planes(const ss_gbuffer *g, const void *params, int frame, float *const *planes)
 {
     const frame_job *job = params;
-    gtao_frame(g, job->p, frame, planes[0], job->bent ? planes + 1 : NULL);
+    ss_pixel_frame(g, job->fn, job->params, frame, planes[0], job->bent ? planes + 1 : NULL);
 }
 
-int gtao_render(const ss_gbuffer *g, const gtao_params *p, float *ao, float *const *bent)
+int ss_pixel_render(const ss_gbuffer *g, ss_pixel_fn fn, const void *params, int frames, int denoise, float *ao,
+                    float *const *bent)
 {
-    frame_job job = {p, bent != NULL};
+    frame_job job = {fn, params, bent != NULL};
     float *out[4] = {ao, job.bent ? bent[0] : NULL, job.bent ? bent[1] : NULL, job.bent ? bent[2] : NULL};
-    if (gtao_denoised_frames(g, frame_planes, &job, p->frames, p->denoise, job.bent ? 4 : 1, out) != 0)
+    if (gtao_denoised_frames(g, frame_planes, &job, frames, denoise, job.bent ? 4 : 1, out) != 0)
         return -1;
     if (job.bent)
         gtao_normalize_directions(g, bent);
     return 0;
+}
+
+void gtao_frame(const ss_gbuffer *g, const gtao_params *p, int frame, float *ao, float *const *bent)
+{
+    ss_pixel_frame(g, pixel_gtao, p, frame, ao, bent);
+}
+
+int gtao_render(const ss_gbuffer *g, const gtao_params *p, float *ao, float *const *bent)
+{
+    return ss_pixel_render(g, pixel_gtao, p, p->frames, p->denoise, ao, bent);
 }

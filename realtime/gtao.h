@@ -131,9 +131,23 @@ typedef struct {
  * estimates (1/pi) integral over psi exactly. 1 at the image centre. */
 float gtao_slice_weight(vec3 v, float phi);
 
+/* The slice's geometry at phi (v, side, n, n_len, weight), without horizons. */
+void gtao_slice_geometry(const ss_gbuffer *g, int x, int y, float phi, int fast_math, gtao_slice *s);
 /* Searches the horizons of one slice at phi with step offset `offset`. */
 void gtao_search_slice(const ss_gbuffer *g, int x, int y, const gtao_params *p, float phi, float offset,
                        gtao_slice *s);
+
+/* The frame of any per-pixel screen-space technique (GTAO, VBAO): fn gives
+ * one covered pixel's AO and, when bent is non-NULL, its world-space bent
+ * normal; ss_pixel_frame fills ao[i] (and bent[0..2][i] if non-NULL) over
+ * the image, background 0; ss_pixel_render runs it through GTAO's frame
+ * loop (`frames` frames, each denoised if `denoise`, averaged; gtao_denoiser.h)
+ * and normalises the bent normals. Deterministic for any thread count;
+ * ss_pixel_render returns 0, or -1 when out of memory. */
+typedef void (*ss_pixel_fn)(const ss_gbuffer *g, const void *params, int frame, int x, int y, float *ao, vec3 *bent);
+void ss_pixel_frame(const ss_gbuffer *g, ss_pixel_fn fn, const void *params, int frame, float *ao, float *const *bent);
+int ss_pixel_render(const ss_gbuffer *g, ss_pixel_fn fn, const void *params, int frames, int denoise, float *ao,
+                    float *const *bent);
 
 /* One frame of raw GTAO (no denoiser): ao[i] and, if bent is non-NULL, the
  * world-space bent normal in bent[0..2][i]. Background pixels get 0. */

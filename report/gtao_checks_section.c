@@ -1,6 +1,7 @@
 /* The GTAO talk's shortcuts and baselines (issue 25, items 9-13): the
  * section that holds their subsections. */
 #include "report/gtao_checks_section.h"
+#include "report/vbao_section.h"
 
 void gtao_checks_section(report_context *ctx, const gtao_checks_result *r)
 {
@@ -16,4 +17,5 @@ void gtao_checks_section(report_context *ctx, const gtao_checks_result *r)
     gtao_bent_normals_section(ctx, &r->bent, summary);
     gtao_thickness_section(ctx, &r->thickness, summary);
     gtao_distance_fade_section(ctx, &r->fade, summary);
+    vbao_section(ctx, &r->vbao, summary);
 }

@@ -55,6 +55,7 @@ static void time_talk(const bench_gbuffer *half, int threads, int repeats, float
     out->talk_seconds_1_thread = seconds_per_frame(half, &talk, repeats, ao);
     omp_set_num_threads(threads);
     out->talk_seconds_threads = seconds_per_frame(half, &talk, repeats, ao);
+    vbao_bench_time(&half->g, talk.radius, 0.2f * talk.radius, threads, repeats, ao, &out->vbao);
 }
 
 /* ns per pixel of one frame of every preset on the small image. */

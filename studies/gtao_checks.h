@@ -9,6 +9,7 @@
 #include "studies/gtao_distance_fade.h"
 #include "studies/gtao_fast_math.h"
 #include "studies/gtao_thickness.h"
+#include "studies/vbao_study.h"
 
 typedef struct {
     gtao_fast_math_result fast_math;
@@ -16,9 +17,10 @@ typedef struct {
     gtao_bent_normals_result bent;
     gtao_thickness_result thickness;
     gtao_distance_fade_result fade;
+    vbao_study_result vbao; /* issue 27, item 1 */
 } gtao_checks_result;
 
-/* Runs the five studies in that order; -1 with e at the first failure. */
+/* Runs the five studies in that order, then VBAO (with the sweep's best heuristic); -1 with e at the first failure. */
 int gtao_checks_study(const study_context *ctx, const gtao_shortcuts_request *rq, gtao_checks_result *out,
                       gt_error *e);
 

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "tests/check.h"
+#include "raytracer/heightfield_ao_integrator.h"
 #include "raytracer/reference_render.h"
 
 enum { MAX_OPTIONS = 64 };
@@ -157,7 +158,9 @@ static void test_apply(void)
     CHECK(rq.sphere_light.radiance == 1.0f && rq.sphere_light.shadows == 1);
     CHECK(apply(&rq, QUANTITY_AO, &e, (const char *[]){NULL}) == 0 && isinf(rq.max_distance));
     CHECK(apply(&rq, QUANTITY_HEIGHTFIELD_AO, &e, (const char *[]){"max-distance", "2.5", NULL}) == 0);
-    CHECK(rq.max_distance == 2.5f);
+    CHECK(rq.max_distance == 2.5f && isinf(((const heightfield_ao_options *)rq.settings)->thickness));
+    CHECK(apply(&rq, QUANTITY_HEIGHTFIELD_AO, &e, (const char *[]){"thickness", "0.25", NULL}) == 0);
+    CHECK(((const heightfield_ao_options *)rq.settings)->thickness == 0.25f);
     CHECK(apply(&rq, QUANTITY_SPECULAR_OCCLUSION, &e, (const char *[]){"environment", "sky", NULL}) == 0);
     CHECK(rq.environment == ENVIRONMENT_SKY && rq.roughness < 0.0f);
 }
