@@ -110,8 +110,8 @@ static void add_variant(so_state *st, const char *text, const so_lut *lut, int o
 }
 
 /* ao, lagarde, 4 cone-exact, 4 cone-oat, the LUTs (16, 32, [64], 32
- * cosines), 2 cone-horizon (not the talk's), the LUTs 16 and 32 in BC4, then ao, lagarde, cone-exact:exp2-alpha and lut
- * 32 on GTAO, and lut 32 on GTAO with the talk's two bent normals. */
+ * cosines), 2 cone-horizon (not the talk's), the LUTs 16 and 32 in BC4, sg (Unity HDRP's spherical Gaussians), then
+ * ao, lagarde, cone-exact:exp2-alpha, lut 32 and sg on GTAO, and lut 32 on GTAO with the talk's two bent normals. */
 static void setup_variants(so_state *st)
 {
     static const char *const cones[] = {"drobot", "uludag", "exp2-alpha", "exp2-perceptual"};
@@ -131,10 +131,12 @@ static void setup_variants(so_state *st)
     add_variant(st, "cone-horizon:exp2-perceptual", NULL, 0);
     for (int s = 0; s < BC4_SIZES; ++s)
         add_variant(st, "lut", &st->bc4[s], 0);
+    add_variant(st, "sg", NULL, 0);
     add_variant(st, "ao", NULL, 1);
     add_variant(st, "lagarde", NULL, 1);
     add_variant(st, "cone-exact:exp2-alpha", NULL, 1);
     add_variant(st, "lut", &st->luts[1], 1);
+    add_variant(st, "sg", NULL, 1);
     add_variant(st, "lut", &st->luts[1], SO_GTAO_HALFWAY);
     add_variant(st, "lut", &st->luts[1], SO_GTAO_HORIZON_VECTORS);
     so_study_heatmap_rows(st->out, st->heatmaps);
