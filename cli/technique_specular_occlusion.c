@@ -30,7 +30,8 @@ static const cli_option approx_options[] = {
     CLI_REQUIRED_STRING("ao", "F.exr", "ao.V, bent.X/Y/Z and ao.Vuniform (may be the same file; a\n"
                         "'gtlab approx gtao' output serves the cosine weighting)"),
     CLI_STRING("variant", "V", "lut (GTSO cone/lobe), ao (AO as specular occlusion),\n"
-               "lagarde (Lagarde 2014), cone-exact:M or cone-oat:M (cone/cone\n"
+               "lagarde (Lagarde 2014), sg (Unity HDRP's spherical Gaussians),\n"
+               "cone-exact:M or cone-oat:M (cone/cone\n"
                "with the exact cap intersection or Oat 2007's), M the\n"
                "reflection-cone mapping: drobot, uludag, phong-u (with --u),\n"
                "exp2-alpha (2^(-3.32193 alpha^2)), exp2-perceptual\n(2^(-3.32193 r^2), r perceptual)"),

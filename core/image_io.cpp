@@ -8,6 +8,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -103,20 +104,16 @@ extern "C" int image_write_preview(const char *path, const float *const *planes,
     return write_8bit(path, encoded, e);
 }
 
-extern "C" int image_write_heatmap(const char *path, const float *values, const float *mask, int width, int height,
-                                   float vmax, const char *map_name, gt_error *e)
+namespace {
+
+// `scaled` (values in [0, 1]) through the colour map, black where mask is
+// non-NULL and 0, sRGB-encoded, with `description` (may be NULL) in the
+// file's metadata. OIIO stores its maps linear (the perceptual ones are
+// matplotlib's, linearised), so the result is encoded like a preview.
+int write_colour_mapped(const char *path, const float *scaled, const float *mask, int width, int height,
+                        const char *map_name, const char *description, gt_error *e)
 {
-    if (!valid_size(width, height))
-        return gt_error_set(e, path, "cannot write a %d x %d heatmap", width, height);
-    if (!(vmax > 0.0f) || !std::isfinite(vmax))
-        return gt_error_set(e, path, "heatmap range must be a positive finite number, not %g", (double)vmax);
-    size_t n = (size_t)width * (size_t)height;
-    std::vector<float> scaled(n);
-    for (size_t i = 0; i < n; ++i)
-        scaled[i] = clamp01(values[i] / vmax);
-    ImageBuf map_input(ImageSpec(width, height, 1, TypeDesc::FLOAT), scaled.data());
-    // OIIO stores its maps linear (the perceptual ones are matplotlib's,
-    // linearised), so the result is sRGB-encoded like a preview.
+    ImageBuf map_input(ImageSpec(width, height, 1, TypeDesc::FLOAT), const_cast<float *>(scaled));
     ImageBuf colours;
     if (!OIIO::ImageBufAlgo::color_map(colours, map_input, 0, map_name))
         return gt_error_set(e, path, "colour map \"%s\": %s", map_name, one_line(colours.geterror()).c_str());
@@ -130,7 +127,57 @@ extern "C" int image_write_heatmap(const char *path, const float *values, const 
     ImageBuf encoded;
     if (!encode_srgb(encoded, colours, path, e))
         return -1;
+    if (description)
+        encoded.specmod().attribute("ImageDescription", description);
     return write_8bit(path, encoded, e);
+}
+
+// values / vmax clamped to [0, 1] into scaled[0 .. width height).
+int scale_heatmap(const char *path, const float *values, int width, int height, float vmax, float *scaled,
+                  gt_error *e)
+{
+    if (!valid_size(width, height))
+        return gt_error_set(e, path, "cannot write a %d x %d heatmap", width, height);
+    if (!(vmax > 0.0f) || !std::isfinite(vmax))
+        return gt_error_set(e, path, "heatmap range must be a positive finite number, not %g", (double)vmax);
+    for (size_t i = 0; i < (size_t)width * (size_t)height; ++i)
+        scaled[i] = clamp01(values[i] / vmax);
+    return 0;
+}
+
+} // namespace
+
+extern "C" int image_write_heatmap(const char *path, const float *values, const float *mask, int width, int height,
+                                   float vmax, const char *map_name, gt_error *e)
+{
+    std::vector<float> scaled(valid_size(width, height) ? (size_t)width * (size_t)height : 0);
+    if (scale_heatmap(path, values, width, height, vmax, scaled.data(), e) != 0)
+        return -1;
+    return write_colour_mapped(path, scaled.data(), mask, width, height, map_name, nullptr, e);
+}
+
+extern "C" int image_heatmap_bar_rows(int height) { return height / 16 > 4 ? height / 16 : 4; }
+
+extern "C" int image_write_heatmap_with_bar(const char *path, const float *values, const float *mask, int width,
+                                            int height, float vmax, const char *map_name, gt_error *e)
+{
+    int bar = image_heatmap_bar_rows(height), total = height + 2 * bar;
+    size_t n = valid_size(width, height) ? (size_t)width * (size_t)height : 0;
+    std::vector<float> scaled((size_t)width * (size_t)total * (n > 0)), full_mask(scaled.size(), 1.0f);
+    if (scale_heatmap(path, values, width, height, vmax, scaled.data(), e) != 0)
+        return -1;
+    for (size_t i = 0; mask && i < n; ++i)
+        full_mask[i] = mask[i];
+    for (int y = height; y < total; ++y)
+        for (int x = 0; x < width; ++x) {
+            size_t i = (size_t)y * (size_t)width + (size_t)x;
+            full_mask[i] = y >= height + bar ? 1.0f : 0.0f; // a black gap, then the bar
+            scaled[i] = width > 1 ? (float)x / (float)(width - 1) : 0.0f;
+        }
+    char description[128];
+    snprintf(description, sizeof description, "%s heatmap; colour bar below: 0 (left) to %g (right)", map_name,
+             (double)vmax);
+    return write_colour_mapped(path, scaled.data(), full_mask.data(), width, total, map_name, description, e);
 }
 
 extern "C" int image_write_data8(const char *path, const float *values, int width, int height,

@@ -22,6 +22,14 @@ int image_write_preview(const char *path, const float *const *planes, int channe
 int image_write_heatmap(const char *path, const float *values, const float *mask, int width, int height,
                         float vmax, const char *map_name, gt_error *e);
 
+/* The same heatmap with a colour bar below it: image_heatmap_bar_rows(height)
+ * black rows, then as many rows of the map's ramp from 0 (left) to vmax
+ * (right column); the file is height + 2 image_heatmap_bar_rows(height) rows
+ * high and its ImageDescription states the bar's range. Returns 0 or -1. */
+int image_write_heatmap_with_bar(const char *path, const float *values, const float *mask, int width, int height,
+                                 float vmax, const char *map_name, gt_error *e);
+int image_heatmap_bar_rows(int height); /* max(4, height / 16) */
+
 /* Data (not a picture): one channel of values in [0, 1] quantised linearly
  * to 8 bits (no sRGB encoding), as a LUT a shader samples; `description`
  * (may be NULL) goes to the file's ImageDescription metadata (a PNG tEXt

@@ -154,7 +154,8 @@ int metrics_pair_measure(const metrics_pair *pair, const image *a, const char *w
 {
     memset(out, 0, sizeof *out);
     if (image_error_compute(pair->a, pair->b, pair->mask, pair->width, pair->height, what_a, &out->error, e) != 0 ||
-        ssim_compute(pair->a, pair->b, pair->mask, pair->width, pair->height, what_a, ssim_map, &out->ssim, e) != 0)
+        ssim_compute(pair->a, pair->b, pair->mask, pair->width, pair->height, what_a, ssim_map, &out->ssim, e) != 0 ||
+        flip_grey(pair->a, pair->b, pair->mask, pair->width, pair->height, what_a, NULL, &out->flip, e) != 0)
         return -1;
     return noise_floor ? measure_noise_floors(pair, a, what_a, b, what_b, out, e) : 0;
 }

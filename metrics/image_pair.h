@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/image.h"
+#include "metrics/flip.h"
 #include "metrics/image_error.h"
 #include "metrics/ssim.h"
 
@@ -37,6 +38,7 @@ void metrics_pair_free(metrics_pair *pair);
 typedef struct {
     image_error_stats error; /* RMSE, mean and max |A-B|, means (image_error.h) */
     ssim_result ssim;        /* SSIM and DSSIM of A against B (ssim.h) */
+    flip_result flip;        /* mean FLIP of B with A the reference, over the mask (flip.h: flip_grey) */
     int has_floor_a, has_floor_b;
     ssim_result floor_a, floor_b; /* DSSIM of the even- against the odd-sample means */
 } metrics_pair_figures;
@@ -45,7 +47,7 @@ typedef struct {
  * `channel` (its CH_SUFFIX_SUM channel), so that its noise floor exists. */
 int metrics_is_reference_of(const image *img, const char *channel);
 
-/* The error statistics and the SSIM of the pair (a and b are the images the
+/* The error statistics, the SSIM and the mean FLIP of the pair (a and b are the images the
  * pair was set up from); with `noise_floor`, the noise floor of a (which must
  * be a reference render) and of b when it is one. ssim_map, when not NULL,
  * receives the per-window SSIM (width x height; NaN where no window is

@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "realtime/specular_occlusion_sg.h"
+
 void so_inputs_free(so_pixel_inputs *in)
 {
     free(in->mask);
@@ -87,6 +89,8 @@ int so_variant_parse(const char *text, so_variant *v)
         return v->kind = SO_VARIANT_LAGARDE, 0;
     if (strcmp(text, "lut") == 0)
         return v->kind = SO_VARIANT_LUT, 0;
+    if (strcmp(text, "sg") == 0)
+        return v->kind = SO_VARIANT_SG, 0;
     return parse_cone(text, v);
 }
 
@@ -98,6 +102,7 @@ void so_variant_label(const so_variant *v, char *text, size_t size)
     switch (v->kind) {
     case SO_VARIANT_AO: snprintf(text, size, "ao"); break;
     case SO_VARIANT_LAGARDE: snprintf(text, size, "lagarde"); break;
+    case SO_VARIANT_SG: snprintf(text, size, "sg"); break;
     case SO_VARIANT_LUT:
         snprintf(text, size, "lut-%s-%d", v->lut ? so_lobe_name(v->lut->lobe) : "?", v->lut ? v->lut->size : 0);
         break;
@@ -117,6 +122,7 @@ double so_approx_pixel(const so_pixel_inputs *in, const so_variant *v, size_t p)
     case SO_VARIANT_AO: return ao;
     case SO_VARIANT_LAGARDE: return so_lagarde(in->n_dot_v[p], in->ao_cosine[p], r * r);
     case SO_VARIANT_LUT: return so_lut_lookup(v->lut, acos(cos_av), in->beta[p], r);
+    case SO_VARIANT_SG: return so_sg_occlusion(cos_av, cos(in->beta[p]), in->n_dot_v[p], r * r);
     case SO_VARIANT_CONE_HORIZON:
         return so_cone_cone_above_horizon(cos_av, so_reflection_cos_aperture(v->mapping, r, v->u), in->beta[p],
                                           in->n_dot_v[p]);

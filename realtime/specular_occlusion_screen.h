@@ -49,7 +49,8 @@ typedef enum {
     SO_VARIANT_CONE_EXACT,
     SO_VARIANT_CONE_OAT,
     SO_VARIANT_LUT,
-    SO_VARIANT_CONE_HORIZON /* exact caps, normalised above the horizon (so_cone_cone_above_horizon) */
+    SO_VARIANT_CONE_HORIZON, /* exact caps, normalised above the horizon (so_cone_cone_above_horizon) */
+    SO_VARIANT_SG            /* spherical Gaussians, Unity HDRP (realtime/specular_occlusion_sg.h) */
 } so_variant_kind;
 
 typedef struct {
@@ -60,8 +61,8 @@ typedef struct {
     const so_lut *lut;           /* SO_VARIANT_LUT */
 } so_variant;
 
-/* "ao", "lagarde", "lut", "cone-exact:<mapping>", "cone-oat:<mapping>" with
- * <mapping> one of so_aperture_name's. Returns 0 or -1. */
+/* "ao", "lagarde", "lut", "sg", "cone-exact:<mapping>", "cone-oat:<mapping>"
+ * with <mapping> one of so_aperture_name's. Returns 0 or -1. */
 int so_variant_parse(const char *text, so_variant *v);
 void so_variant_label(const so_variant *v, char *text, size_t size);
 
@@ -69,6 +70,7 @@ void so_variant_label(const so_variant *v, char *text, size_t size);
  *   ao       the AO of the variant's weighting
  *   lagarde  so_lagarde(n.v, cosine AO, r^2)
  *   lut      so_lut_lookup(a_v, beta, r), a_v from the AO (so_visibility_cos_aperture)
+ *   sg       so_sg_occlusion(cos a_v, cos beta, n.v, r^2)
  *   cone-*   so_cone_cone(cos a_v, cos a_s(mapping, r, u), beta). */
 double so_approx_pixel(const so_pixel_inputs *in, const so_variant *v, size_t p);
 /* V_s of every pixel into out (0 outside the mask). */

@@ -88,17 +88,28 @@ static void mean_cell(const void *row, char *text, size_t size)
         text[0] = '\0';
 }
 
+static void flip_cell(const void *row, char *text, size_t size)
+{
+    const score_line *l = row;
+    if (l->variant)
+        snprintf(text, size, "%.4f", l->variant->mean_flip);
+    else
+        text[0] = '\0';
+}
+
 static const report_column score_columns[] = {
     REPORT_CELL("variant", label_cell),         REPORT_CELL("DSSIM r=0.25", dssim_cell_0),
     REPORT_CELL("DSSIM r=0.5", dssim_cell_1),   REPORT_CELL("DSSIM r=0.8", dssim_cell_2),
-    REPORT_CELL("mean DSSIM", mean_cell),       REPORT_CELL("RMSE r=0.25", rmse_cell_0),
-    REPORT_CELL("RMSE r=0.5", rmse_cell_1),     REPORT_CELL("RMSE r=0.8", rmse_cell_2),
+    REPORT_CELL("mean DSSIM", mean_cell),       REPORT_CELL("mean FLIP", flip_cell),
+    REPORT_CELL("RMSE r=0.25", rmse_cell_0),    REPORT_CELL("RMSE r=0.5", rmse_cell_1),
+    REPORT_CELL("RMSE r=0.8", rmse_cell_2),
 };
 
 /* summary.json's variants: the scalars from columns, the per-roughness means as arrays. */
 static const report_column variant_columns[] = {
     REPORT_TEXT(NULL, "variant", so_variant_row, label),
     REPORT_REAL(NULL, "mean_dssim", NULL, so_variant_row, mean_dssim),
+    REPORT_REAL(NULL, "mean_flip", NULL, so_variant_row, mean_flip),
 };
 
 static void add_array(cJSON *o, const char *key, const double *values, int count)
@@ -117,6 +128,7 @@ static void variants_json(const so_study_result *r, cJSON *json)
         cJSON *o = cJSON_GetArrayItem(list, v);
         add_array(o, "mean_dssim_by_roughness", r->variants[v].dssim, SO_STUDY_ROUGHNESSES);
         add_array(o, "mean_rmse_by_roughness", r->variants[v].rmse, SO_STUDY_ROUGHNESSES);
+        add_array(o, "mean_flip_by_roughness", r->variants[v].flip, SO_STUDY_ROUGHNESSES);
     }
 }
 
@@ -128,7 +140,8 @@ static void report_scores(report_context *ctx, const so_study_result *r, cJSON *
                      "0.25, 0.5 and 0.8 on every built-in scene. Variants run on the AO reference's cosine AO and bent "
                      "normal, so their error is their own; the rows 'on GTAO' run the main variants on GTAO's AO and "
                      "bent normal instead (high preset, one frame, no radius limit, on the same G-buffer), which is "
-                     "what a renderer ships. Columns average DSSIM and RMSE over the scenes; the last row is the "
+                     "what a renderer ships. Columns average DSSIM, mean FLIP (LDR-FLIP at 67 pixels per degree, V_s "
+                     "the reference; metrics/flip.h) and RMSE over the scenes; the last row is the "
                      "references' own noise floor.", r->spp, r->size, r->size);
     score_line lines[SO_STUDY_MAX_VARIANTS + 1];
     for (int v = 0; v < r->variant_count; ++v)
@@ -464,6 +477,11 @@ static void add_figures(report_context *ctx, const so_study_result *r)
         const char *p[5] = {paths[0], paths[1], paths[2], paths[3], paths[4]};
         const char *c[5] = {captions[0], captions[1], captions[2], captions[3], captions[4]};
         report_figures(ctx->doc, 5, p, c);
+        for (int k = 0; k < SO_STUDY_HEATMAPS; ++k) {
+            snprintf(paths[1 + k], 256, "figures/specocc_flip_%s_%d.png", r->scenes[i], k);
+            snprintf(captions[1 + k], 128, "FLIP of %s (magma, 0 to 1)", shown[k]);
+        }
+        report_figures(ctx->doc, SO_STUDY_HEATMAPS, p + 1, c + 1);
     }
     const char *p[3] = {"figures/aperture_fit_gtso.png", "figures/aperture_fit_d_only.png", "figures/aperture_fit_phong.png"};
     const char *c[3] = {"gloss-to-aperture fits against GTSO's V_s (GGX f_r): the talk's cone and the cone of "

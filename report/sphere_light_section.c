@@ -238,6 +238,9 @@ static const report_column scene_columns[] = {
     REPORT_REAL("Decima", "decima", "%.4g", sphere_scene_row, decima),
     REPORT_REAL("Decima refit", "decima_refit", "%.4g", sphere_scene_row, refit),
     REPORT_REAL("noise floor", "noise_floor_dssim", "%.2g", sphere_scene_row, noise_floor),
+    REPORT_REAL("FLIP Karis", "karis_flip", "%.4f", sphere_scene_row, karis_flip),
+    REPORT_REAL("FLIP Decima", "decima_flip", "%.4f", sphere_scene_row, decima_flip),
+    REPORT_REAL("FLIP Decima refit", "decima_refit_flip", "%.4f", sphere_scene_row, refit_flip),
 };
 
 static void scene_figures(report *doc, const sphere_scene_row *s)
@@ -255,6 +258,13 @@ static void scene_figures(report *doc, const sphere_scene_row *s)
     report_paragraph(doc, "%s:", s->title);
     report_figures(doc, 4, figs, caps);
     report_figures(doc, 3, figs + 4, caps + 4);
+    char flips[SPHERE_SCENE_APPROX][256];
+    const char *flip_caps[SPHERE_SCENE_APPROX] = {"FLIP of Karis", "FLIP of Decima", "FLIP of the refit"};
+    for (int m = 0; m < SPHERE_SCENE_APPROX; ++m) {
+        snprintf(flips[m], 256, "sphere_light/scene_%s_%s_flip.png", s->name, sphere_scene_approx_files[m]);
+        figs[m] = flips[m];
+    }
+    report_figures(doc, SPHERE_SCENE_APPROX, figs, flip_caps);
 }
 
 static const report_column shadow_json[] = {
@@ -271,8 +281,9 @@ static void report_scenes(report_context *ctx, const sphere_light_result *r, cJS
                      "unshadowed. Reference: 'gtlab render sphere-light' (MIS over the light, Fresnel inside the "
                      "integral). Approximations evaluated per pixel from the reference's G-buffer, with the exact "
                      "Lambert part (Frostbite's illuminance) in all three, so they differ only in the specular. "
-                     "DSSIM on linear radiance (green channel; the scenes are grey); previews and heatmaps scaled "
-                     "by the reference's 99th percentile.",
+                     "DSSIM on linear radiance (green channel; the scenes are grey), and mean FLIP (HDR-FLIP where "
+                     "the reference exceeds 1, its exposures the reference's; metrics/flip.h); previews and heatmaps "
+                     "scaled by the reference's 99th percentile, FLIP maps on [0, 1].",
                      SPHERE_FLOOR_ALBEDO, SPHERE_FLOOR_ROUGHNESS, SPHERE_F0_DIELECTRIC);
     report_rows(doc, cJSON_AddArrayToObject(json, "scenes"), scene_columns, COLUMNS(scene_columns), r->scenes,
                 sizeof r->scenes[0], SPHERE_SCENES);

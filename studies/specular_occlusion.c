@@ -11,6 +11,7 @@
 #include "core/progress.h"
 #include "core/reference_schema.h"
 #include "core/spherical_caps.h"
+#include "metrics/flip.h"
 #include "metrics/image_error.h"
 #include "metrics/ssim.h"
 #include "raytracer/reference_render.h"
@@ -40,6 +41,7 @@ typedef struct {
     so_variant variants[SO_STUDY_MAX_VARIANTS];
     int heatmaps[SO_STUDY_HEATMAPS];
     double dssim[SO_STUDY_MAX_VARIANTS][SO_STUDY_ROUGHNESSES], rmse[SO_STUDY_MAX_VARIANTS][SO_STUDY_ROUGHNESSES];
+    double flip[SO_STUDY_MAX_VARIANTS][SO_STUDY_ROUGHNESSES];
     double case_dssim[SO_STUDY_MAX_VARIANTS][CASES_MAX]; /* per scored case, for paired differences */
     so_lut lut_phong;                              /* the talk's setting's cone/lobe table, 32^3 angles */
     so_ranking_scores ranking[SO_SETTINGS];        /* the rankings' variants in each setting */
@@ -108,8 +110,8 @@ static void add_variant(so_state *st, const char *text, const so_lut *lut, int o
 }
 
 /* ao, lagarde, 4 cone-exact, 4 cone-oat, the LUTs (16, 32, [64], 32
- * cosines), 2 cone-horizon (not the talk's), the LUTs 16 and 32 in BC4, then ao, lagarde, cone-exact:exp2-alpha and lut
- * 32 on GTAO, and lut 32 on GTAO with the talk's two bent normals. */
+ * cosines), 2 cone-horizon (not the talk's), the LUTs 16 and 32 in BC4, sg (Unity HDRP's spherical Gaussians), then
+ * ao, lagarde, cone-exact:exp2-alpha, lut 32 and sg on GTAO, and lut 32 on GTAO with the talk's two bent normals. */
 static void setup_variants(so_state *st)
 {
     static const char *const cones[] = {"drobot", "uludag", "exp2-alpha", "exp2-perceptual"};
@@ -129,10 +131,12 @@ static void setup_variants(so_state *st)
     add_variant(st, "cone-horizon:exp2-perceptual", NULL, 0);
     for (int s = 0; s < BC4_SIZES; ++s)
         add_variant(st, "lut", &st->bc4[s], 0);
+    add_variant(st, "sg", NULL, 0);
     add_variant(st, "ao", NULL, 1);
     add_variant(st, "lagarde", NULL, 1);
     add_variant(st, "cone-exact:exp2-alpha", NULL, 1);
     add_variant(st, "lut", &st->luts[1], 1);
+    add_variant(st, "sg", NULL, 1);
     add_variant(st, "lut", &st->luts[1], SO_GTAO_HALFWAY);
     add_variant(st, "lut", &st->luts[1], SO_GTAO_HORIZON_VECTORS);
     so_study_heatmap_rows(st->out, st->heatmaps);
@@ -229,7 +233,8 @@ static int ratio_noise_floor(const image *ref, const char *what, const char *cha
     return rc;
 }
 
-/* The reference V_s and the |error| heatmaps of the heatmap rows. */
+/* The reference V_s, and the |error| heatmaps and FLIP maps (magma, 0 to
+ * 1, with a colour bar) of the heatmap rows. */
 static int write_heatmaps(const so_state *st, const image *ref, const so_pixel_inputs *in, const char *name, gt_error *e)
 {
     char path[4096];
@@ -246,22 +251,32 @@ static int write_heatmaps(const so_state *st, const image *ref, const so_pixel_i
             err[i] = fabsf(approx[i] - vs[i]);
         snprintf(path, sizeof path, "%s/specocc_err_%s_%d.png", st->figures, name, k);
         rc = image_write_heatmap(path, err, in->mask, ref->width, ref->height, 0.5f, "inferno", e);
+        flip_result f;
+        rc = rc == 0 ? flip_grey(vs, approx, in->mask, ref->width, ref->height, name, err, &f, e) : rc;
+        snprintf(path, sizeof path, "%s/specocc_flip_%s_%d.png", st->figures, name, k);
+        rc = rc == 0 ? image_write_heatmap_with_bar(path, err, in->mask, ref->width, ref->height, 1.0f, "magma", e)
+                     : rc;
     }
     free(approx);
     free(err);
     return rc;
 }
 
-/* DSSIM and RMSE of approx against truth over the mask, added to the sums. */
+/* DSSIM and RMSE of approx against truth over the mask, and its mean FLIP
+ * (truth the reference) when flip_sum is not NULL, added to the sums. */
 static int add_scores(const float *truth, const float *approx, const float *mask, int width, int height,
-                      const char *what, double *dssim_sum, double *rmse_sum, gt_error *e)
+                      const char *what, double *dssim_sum, double *rmse_sum, double *flip_sum, gt_error *e)
 {
     ssim_result s;
     image_error_stats err;
+    flip_result f = {0};
     if (ssim_compute(truth, approx, mask, width, height, what, NULL, &s, e) != 0 ||
-        image_error_compute(truth, approx, mask, width, height, what, &err, e) != 0)
+        image_error_compute(truth, approx, mask, width, height, what, &err, e) != 0 ||
+        (flip_sum && flip_grey(truth, approx, mask, width, height, what, NULL, &f, e) != 0))
         return -1;
     *dssim_sum += s.dssim, *rmse_sum += err.rmse;
+    if (flip_sum)
+        *flip_sum += f.mean;
     return 0;
 }
 
@@ -273,7 +288,7 @@ static int score_splits(so_state *st, const image *ref, const char *what, int ri
     const float *truth = image_channel_data(ref, CH_SPLIT_TRUTH), *mask = image_channel_data(ref, CH_MASK);
     for (int k = 0; k < 2; ++k)
         if (add_scores(truth, image_channel_data(ref, approximations[k]), mask, ref->width, ref->height, what,
-                       &st->split_dssim[k][ri], &st->split_rmse[k][ri], e) != 0)
+                       &st->split_dssim[k][ri], &st->split_rmse[k][ri], NULL, e) != 0)
             return -1;
     ssim_result floor;
     if (ssim_noise_floor(ref, what, CH_SPLIT_TRUTH, mask, &floor, e) != 0)
@@ -312,7 +327,7 @@ static int score_variants(so_state *st, const aperture_case *c, const so_pixel_i
         so_approx_evaluate(g ? &on_gtao[g - 1] : in, &st->variants[v], approx);
         double before = st->dssim[v][ri];
         rc = add_scores(c->reference, approx, in->mask, in->width, in->height, what, &st->dssim[v][ri],
-                        &st->rmse[v][ri], e);
+                        &st->rmse[v][ri], &st->flip[v][ri], e);
         st->case_dssim[v][st->scored] = st->dssim[v][ri] - before;
     }
     st->scored++;
@@ -517,10 +532,11 @@ static void average(const so_state *st, so_study_result *out)
     int n = out->scene_count;
     for (int v = 0; v < out->variant_count; ++v) {
         so_variant_row *row = &out->variants[v];
-        row->mean_dssim = 0.0;
+        row->mean_dssim = row->mean_flip = 0.0;
         for (int k = 0; k < SO_STUDY_ROUGHNESSES; ++k) {
-            row->dssim[k] = st->dssim[v][k] / n, row->rmse[k] = st->rmse[v][k] / n;
+            row->dssim[k] = st->dssim[v][k] / n, row->rmse[k] = st->rmse[v][k] / n, row->flip[k] = st->flip[v][k] / n;
             row->mean_dssim += row->dssim[k] / SO_STUDY_ROUGHNESSES;
+            row->mean_flip += row->flip[k] / SO_STUDY_ROUGHNESSES;
         }
     }
     for (int k = 0; k < SO_STUDY_ROUGHNESSES; ++k) {

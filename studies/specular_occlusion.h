@@ -16,7 +16,8 @@
  *    generation time, quadrature error estimate and trilinear interpolation
  *    error at random points;
  *  - every variant (realtime/specular_occlusion_screen.h) scored per
- *    roughness by DSSIM and RMSE against specocc.V, means over the scenes;
+ *    roughness by DSSIM, RMSE and mean FLIP against specocc.V, means over
+ *    the scenes;
  *    the main ones again on GTAO's inputs;
  *  - the noise floor of specocc.V, a ratio: DSSIM between the ratios of the
  *    even and of the odd samples' means;
@@ -28,7 +29,8 @@
  *
  * Writes <output>/figures/specocc_ref_<scene>.png (V_s at r = 0.5) and
  * specocc_err_<scene>_<k>.png, |error| heatmaps (0 to 0.5) at r = 0.5 of the
- * rows so_study_heatmap_rows names, k = 0..3. */
+ * rows so_study_heatmap_rows names, k = 0..3, and specocc_flip_<scene>_<k>.png,
+ * their FLIP maps (magma, 0 to 1, colour bar below). */
 #ifndef GTLAB_STUDIES_SPECULAR_OCCLUSION_H
 #define GTLAB_STUDIES_SPECULAR_OCCLUSION_H
 
@@ -65,7 +67,8 @@ typedef struct {
                                     (0: the reference's inputs) */
     char label[64];              /* for display: "cone-exact:exp2-alpha", "lut-ggx-32 on GTAO" */
     double dssim[SO_STUDY_ROUGHNESSES], rmse[SO_STUDY_ROUGHNESSES]; /* means over the scenes */
-    double mean_dssim;           /* mean of dssim over the roughnesses */
+    double flip[SO_STUDY_ROUGHNESSES]; /* mean FLIP (metrics/flip.h, V_s the reference), means over the scenes */
+    double mean_dssim, mean_flip;      /* means of dssim and flip over the roughnesses */
 } so_variant_row;
 
 /* One cone/lobe table. */

@@ -108,6 +108,7 @@ extern const char *const sphere_scene_approx_files[SPHERE_SCENE_APPROX];
 typedef struct {
     const char *name, *title;
     double karis, decima, refit; /* DSSIM against the reference */
+    double karis_flip, decima_flip, refit_flip; /* mean FLIP, the reference the reference (metrics/flip.h) */
     double noise_floor;          /* DSSIM of the reference's even against odd samples */
     int width, height;
 } sphere_scene_row;
@@ -122,7 +123,8 @@ typedef struct {
  * Decima with `refit` per pixel from the reference's G-buffer (the exact
  * Lambert part in all three), and the shadowed sphere-on-plane. Writes
  * DIR/scene_<name>.exr, the previews scene_<name>_{reference,karis,...}.png,
- * heatmaps scene_<name>_<approx>_error.png and scene_shadows_*.png. */
+ * heatmaps scene_<name>_<approx>_error.png, FLIP maps
+ * scene_<name>_<approx>_flip.png and scene_shadows_*.png. */
 int sphere_scenes_study(const study_context *ctx, const char *dir, const decima_sphere_constants *refit,
                         sphere_scene_row rows[SPHERE_SCENES], sphere_shadow_result *shadows, gt_error *e);
 

@@ -14,6 +14,7 @@
 #include "core/exr_io.h"
 #include "core/image_io.h"
 #include "core/reference_schema.h"
+#include "metrics/flip.h"
 #include "metrics/ssim.h"
 #include "raytracer/reference_render.h"
 #include "scene/scene_loaders.h"
@@ -94,21 +95,37 @@ static sphere_light_gbuffer gbuffer_of(const image *ref)
     return g;
 }
 
-/* Approximation m of the scene: its DSSIM, preview and heatmap. */
+/* The FLIP map of approx against the reference `want` (magma, 0 to 1, with
+ * a colour bar); its mean into *flip. */
+static int flip_map(const char *dir, const light_scene *ls, const image *ref, int m, const float *want,
+                    const float *approx, const float *mask, float *map, double *flip, gt_error *e)
+{
+    flip_result f;
+    char path[8192];
+    snprintf(path, sizeof path, "%s/scene_%s_%s_flip.png", dir, ls->name, sphere_scene_approx_files[m]);
+    if (flip_grey(want, approx, mask, ref->width, ref->height, path, map, &f, e) != 0)
+        return -1;
+    *flip = f.mean;
+    return image_write_heatmap_with_bar(path, map, mask, ref->width, ref->height, 1.0f, "magma", e);
+}
+
+/* Approximation m of the scene: its DSSIM and FLIP, preview, heatmap and FLIP map. */
 static int score_approx(const char *dir, const light_scene *ls, const image *ref, vec3 eye, int m,
                         const decima_sphere_constants *k, float scale, float *approx, float *err, double *dssim,
-                        gt_error *e)
+                        double *flip, gt_error *e)
 {
     sphere_light_gbuffer g = gbuffer_of(ref);
     const float *want = image_channel_data(ref, CH_SPHERE_G);
     sphere_light_shade(&g, eye, &ls->light, SPHERE_F0_DIELECTRIC, k, approx);
-    for (size_t i = 0; i < g.count; ++i)
-        err[i] = fabsf(approx[i] - want[i]);
     ssim_result r;
     char path[8192];
     if (ssim_compute(approx, want, g.mask, ref->width, ref->height, approx_names[m], NULL, &r, e) != 0)
         return -1;
     *dssim = r.dssim;
+    if (flip_map(dir, ls, ref, m, want, approx, g.mask, err, flip, e) != 0)
+        return -1;
+    for (size_t i = 0; i < g.count; ++i)
+        err[i] = fabsf(approx[i] - want[i]);
     snprintf(path, sizeof path, "%s/scene_%s_%s.png", dir, ls->name, sphere_scene_approx_files[m]);
     if (image_write_preview(path, (const float *const *)&approx, 1, ref->width, ref->height, 1.0f / scale, e) != 0)
         return -1;
@@ -135,9 +152,10 @@ static int score_scene(const char *dir, const light_scene *ls, const image *ref,
         return -1;
     float *approx = malloc(n * sizeof *approx), *err = malloc(n * sizeof *err);
     double *dssim[SPHERE_SCENE_APPROX] = {&row->karis, &row->decima, &row->refit};
+    double *flip[SPHERE_SCENE_APPROX] = {&row->karis_flip, &row->decima_flip, &row->refit_flip};
     int rc = approx && err ? 0 : gt_error_set(e, dir, "out of memory");
     for (int m = 0; m < SPHERE_SCENE_APPROX && rc == 0; ++m)
-        rc = score_approx(dir, ls, ref, eye, m, models[m], scale, approx, err, dssim[m], e);
+        rc = score_approx(dir, ls, ref, eye, m, models[m], scale, approx, err, dssim[m], flip[m], e);
     free(approx), free(err);
     return rc;
 }

@@ -144,6 +144,50 @@ static void test_heatmap(const char *map, const int first[3], const int last[3])
     oiio_test_image_free(&img);
 }
 
+/* The colour bar: the heatmap's pixels unchanged above, then black rows,
+ * then rows whose left pixel is map(0) and right pixel map(1), ramping
+ * monotonically in the map's lightness between (magma, FLIP's map). */
+static void test_heatmap_bar(void)
+{
+    printf("colour bar\n");
+    enum { BW = 40, BH = 8 };
+    float values[BW * BH], mask[BW * BH];
+    for (int i = 0; i < BW * BH; ++i)
+        values[i] = (float)(i % BW) / BW, mask[i] = i % 5 != 0;
+    const char *plain = in_test_dir("bar_plain.png");
+    char plain_path[1200];
+    snprintf(plain_path, sizeof plain_path, "%s", plain);
+    const char *path = in_test_dir("bar.png");
+    gt_error e;
+    CHECK(image_write_heatmap(plain_path, values, mask, BW, BH, 0.5f, "magma", &e) == 0);
+    CHECK_MSG(image_write_heatmap_with_bar(path, values, mask, BW, BH, 0.5f, "magma", &e) == 0, "%s", e.message);
+    oiio_test_image a, b;
+    if (oiio_test_read(plain_path, &a) != 0 || oiio_test_read(path, &b) != 0) {
+        CHECK_MSG(0, "cannot read the bar heatmaps");
+        return;
+    }
+    int bar = image_heatmap_bar_rows(BH);
+    CHECK(bar == 4 && b.width == BW && b.height == BH + 2 * bar);
+    for (int y = 0; y < BH; ++y)
+        for (int x = 0; x < BW; ++x)
+            for (int c = 0; c < 3; ++c)
+                CHECK(byte_at(&a, x, y, c) == byte_at(&b, x, y, c));
+    float first[3], last[3];
+    CHECK(oiio_test_color_map("magma", 0.0f, first) == 0 && oiio_test_color_map("magma", 1.0f, last) == 0);
+    for (int c = 0; c < 3; ++c) {
+        CHECK(byte_at(&b, 3, BH, c) == 0);
+        CHECK(abs(byte_at(&b, 0, BH + bar, c) - srgb8(first[c])) <= 1);
+        CHECK(abs(byte_at(&b, BW - 1, b.height - 1, c) - srgb8(last[c])) <= 1);
+    }
+    int rising = 1;
+    for (int x = 1; x < BW; ++x)
+        rising &= byte_at(&b, x, BH + bar, 0) + byte_at(&b, x, BH + bar, 1) >=
+                  byte_at(&b, x - 1, BH + bar, 0) + byte_at(&b, x - 1, BH + bar, 1) - 1;
+    CHECK_MSG(rising, "the bar does not ramp from the map's dark end to its light end");
+    oiio_test_image_free(&a);
+    oiio_test_image_free(&b);
+}
+
 static void test_errors(void)
 {
     printf("errors\n");
@@ -180,6 +224,7 @@ int main(void)
      * 0.329415), 1 = (0.993248, 0.906157, 0.143936); times 255. */
     test_heatmap("inferno", (const int[3]){0, 0, 4}, (const int[3]){252, 255, 164});
     test_heatmap("viridis", (const int[3]){68, 1, 84}, (const int[3]){253, 231, 37});
+    test_heatmap_bar();
     test_errors();
 
     CHECK_MSG(leftover_temp_files_in(test_dir) == 0, "temporary files left in %s", test_dir);

@@ -38,6 +38,9 @@ static void test_figures_are_the_metrics(void)
     CHECK(ssim_compute(pair.a, pair.b, pair.mask, W, H, "a", NULL, &ssim, &e) == 0);
     CHECK(f.error.pixels == error.pixels && f.error.rmse == error.rmse && f.error.max_abs == error.max_abs);
     CHECK(f.ssim.ssim == ssim.ssim && f.ssim.centres == ssim.centres);
+    flip_result flip; /* the figures' FLIP is flip_grey's, a the reference */
+    CHECK(flip_grey(pair.a, pair.b, pair.mask, W, H, "a", NULL, &flip, &e) == 0);
+    CHECK(f.flip.mean == flip.mean && f.flip.hdr == flip.hdr && f.flip.mean > 0.0 && f.flip.mean <= 1.0);
     CHECK(!f.has_floor_a && !f.has_floor_b);
     CHECK(!metrics_is_reference_of(&a, "ao.V"));
     CHECK(image_add_channel(&a, "ao.V.sum") != NULL);

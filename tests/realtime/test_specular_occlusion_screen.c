@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "realtime/specular_occlusion_screen.h"
+#include "realtime/specular_occlusion_sg.h"
 #include "tests/check.h"
 
 enum { PIXELS = 4 };
@@ -70,6 +71,9 @@ static void check_variant(const so_pixel_inputs *in, const so_variant *v)
             CHECK(at == ao);
         if (v->kind == SO_VARIANT_LAGARDE)
             CHECK(at == so_lagarde(in->n_dot_v[p], in->ao_cosine[p], r * r));
+        if (v->kind == SO_VARIANT_SG)
+            CHECK(at == so_sg_occlusion(so_visibility_cos_aperture(ao, v->weighting), cos(in->beta[p]),
+                                        in->n_dot_v[p], r * r));
     }
 }
 
@@ -80,12 +84,12 @@ static void check_variants(void)
     so_lut lut;
     CHECK(so_inputs_compute(&b, v3(0, 0, 5), -1.0, &in) == 0);
     CHECK(so_lut_build(&lut, 8, SO_LOBE_GGX, SO_AXES_ANGLES, 1) == 0);
-    static const char *const kinds[] = {"ao", "lagarde", "lut", "cone-exact:", "cone-oat:"};
-    for (int k = 0; k < 5; ++k)
-        for (int m = 0; m < (k < 3 ? 1 : SO_APERTURE_COUNT); ++m)
+    static const char *const kinds[] = {"ao", "lagarde", "lut", "sg", "cone-exact:", "cone-oat:"};
+    for (int k = 0; k < 6; ++k)
+        for (int m = 0; m < (k < 4 ? 1 : SO_APERTURE_COUNT); ++m)
             for (int w = 0; w < 2; ++w) {
                 char text[64];
-                snprintf(text, sizeof text, "%s%s", kinds[k], k < 3 ? "" : so_aperture_name((so_aperture_mapping)m));
+                snprintf(text, sizeof text, "%s%s", kinds[k], k < 4 ? "" : so_aperture_name((so_aperture_mapping)m));
                 so_variant v;
                 CHECK(so_variant_parse(text, &v) == 0);
                 v.lut = &lut, v.u = 0.05, v.weighting = w ? SO_AO_UNIFORM : SO_AO_COSINE;
@@ -97,11 +101,11 @@ static void check_variants(void)
 
 static void check_labels(void)
 {
-    static const char *const texts[] = {"ao", "lagarde", "cone-exact:drobot", "cone-oat:exp2-perceptual",
+    static const char *const texts[] = {"ao", "lagarde", "sg", "cone-exact:drobot", "cone-oat:exp2-perceptual",
                                         "cone-exact:exp2-alpha"};
     char label[64];
     so_variant v;
-    for (int i = 0; i < 5; ++i) {
+    for (int i = 0; i < 6; ++i) {
         CHECK(so_variant_parse(texts[i], &v) == 0);
         so_variant_label(&v, label, sizeof label);
         CHECK_MSG(strcmp(label, texts[i]) == 0, "%s -> %s", texts[i], label);
