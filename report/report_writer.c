@@ -1,3 +1,4 @@
+#define _GNU_SOURCE
 #include "report/report_writer.h"
 
 #include <ctype.h>
@@ -25,6 +26,17 @@ static void append(char **buf, size_t *len, size_t *cap, int *failed, const char
     }
     memcpy(*buf + *len, text, n + 1);
     *len += n;
+}
+
+/* Inserts text into a growing buffer at offset `at` (<= *len). */
+static void insert(char **buf, size_t *len, size_t *cap, int *failed, size_t at, const char *text)
+{
+    size_t n = strlen(text), old = *len;
+    append(buf, len, cap, failed, text); /* grows it by n */
+    if (*failed)
+        return;
+    memmove(*buf + at + n, *buf + at, old - at);
+    memcpy(*buf + at, text, n);
 }
 
 static void md(report *r, const char *text) { append(&r->md, &r->md_len, &r->md_cap, &r->failed, text); }
@@ -57,6 +69,39 @@ static void finding_html(report *r, const char *text, int escaped)
         append_escaped(&r->findings_html, &r->findings_html_len, &r->findings_html_cap, &r->failed, text);
     else
         append(&r->findings_html, &r->findings_html_len, &r->findings_html_cap, &r->failed, text);
+}
+
+static void section_md(report *r, const char *text)
+{
+    append(&r->section_md, &r->section_md_len, &r->section_md_cap, &r->failed, text);
+}
+
+static void section_html(report *r, const char *text, int escaped)
+{
+    if (escaped)
+        append_escaped(&r->section_html, &r->section_html_len, &r->section_html_cap, &r->failed, text);
+    else
+        append(&r->section_html, &r->section_html_len, &r->section_html_cap, &r->failed, text);
+}
+
+/* The current level-2 section's findings, as its conclusions, inserted just
+ * after its heading; the section is closed. */
+static void close_section(report *r)
+{
+    if (r->section_md_len > 0) {
+        insert(&r->section_md, &r->section_md_len, &r->section_md_cap, &r->failed, 0, "Conclusions:\n\n");
+        section_md(r, "\n");
+        insert(&r->md, &r->md_len, &r->md_cap, &r->failed, r->section_md_at, r->section_md);
+        insert(&r->section_html, &r->section_html_len, &r->section_html_cap, &r->failed, 0,
+               "<ul class=\"conclusions\">\n");
+        section_html(r, "</ul>\n", 0);
+        insert(&r->html, &r->html_len, &r->html_cap, &r->failed, r->section_html_at, r->section_html);
+    }
+    r->section_md_len = r->section_html_len = 0;
+    if (r->section_md)
+        r->section_md[0] = '\0';
+    if (r->section_html)
+        r->section_html[0] = '\0';
 }
 
 static void contents_md(report *r, const char *text)
@@ -135,6 +180,10 @@ void report_init(report *r, const char *title)
             "text-align:right}th{background:#f3f3f3}td:first-child,th:first-child{text-align:left}\n"
             "figure{display:inline-block;margin:.5em;text-align:center}figure img{max-width:256px;"
             "image-rendering:pixelated;border:1px solid #ddd}figcaption{font-size:.85em;color:#555}\n"
+            "table.glance td{text-align:left}table.glance tr.sig td:last-child{font-weight:bold}\n"
+            "ul.conclusions{background:#f6f8fa;border-left:4px solid #4a7;padding:.5em 1em .5em 2em}\n"
+            "details{margin:.6em 0}details>summary{cursor:pointer;color:#444}"
+            "details[open]>summary .lead{display:none}\n"
             "</style></head><body>\n<h1>");
     html_escaped(r, title);
     html(r, "</h1>\n");
@@ -146,6 +195,7 @@ void report_heading(report *r, int level, const char *text)
     char tag[8], anchor[128];
     heading_anchor(r, text, anchor, sizeof anchor);
     if (level == 2) {
+        close_section(r);
         snprintf(r->section_anchor, sizeof r->section_anchor, "%s", anchor);
         add_contents_entry(r, text, anchor);
     }
@@ -164,6 +214,36 @@ void report_heading(report *r, int level, const char *text)
     html(r, "</");
     html(r, tag);
     html(r, ">\n");
+    if (level == 2) {
+        r->section_md_at = r->md_len;
+        r->section_html_at = r->html_len;
+    }
+}
+
+/* The length of text's opening words: its first sentence (up to ". "),
+ * cut at a space before REPORT_FOLD_CHARACTERS / 2 characters if longer. */
+static size_t lead_length(const char *text)
+{
+    const char *stop = strstr(text, ". ");
+    size_t n = stop ? (size_t)(stop - text) + 1 : strlen(text), limit = REPORT_FOLD_CHARACTERS / 2;
+    if (n <= limit)
+        return n;
+    while (limit > 0 && text[limit] != ' ')
+        --limit;
+    return limit > 0 ? limit : REPORT_FOLD_CHARACTERS / 2;
+}
+
+/* A long paragraph in report.html: folded, its opening words showing. */
+static void folded_paragraph(report *r, const char *text)
+{
+    char lead[REPORT_FOLD_CHARACTERS];
+    size_t n = lead_length(text);
+    snprintf(lead, sizeof lead, "%.*s", (int)n, text);
+    html(r, "<details><summary><span class=\"lead\">");
+    html_escaped(r, lead);
+    html(r, text[n] ? " &hellip;</span> <i>(more)</i></summary><p>" : "</span></summary><p>");
+    html_escaped(r, text);
+    html(r, "</p></details>\n");
 }
 
 void report_paragraph(report *r, const char *fmt, ...)
@@ -175,9 +255,13 @@ void report_paragraph(report *r, const char *fmt, ...)
     va_end(ap);
     md(r, text);
     md(r, "\n\n");
-    html(r, "<p>");
-    html_escaped(r, text);
-    html(r, "</p>\n");
+    if (strlen(text) > REPORT_FOLD_CHARACTERS)
+        folded_paragraph(r, text);
+    else {
+        html(r, "<p>");
+        html_escaped(r, text);
+        html(r, "</p>\n");
+    }
 }
 
 /* A Markdown table cell: a '|' inside it would end the cell, so it is
@@ -288,6 +372,27 @@ void report_finding(report *r, const char *topic, const char *fmt, ...)
     finding_html(r, anchor[0] ? "</a></b>: " : "</b>: ", 0);
     finding_html(r, text, 1);
     finding_html(r, "</li>\n", 0);
+    if (!anchor[0])
+        return;
+    section_md(r, "- **");
+    section_md(r, topic);
+    section_md(r, "**: ");
+    section_md(r, text);
+    section_md(r, "\n");
+    section_html(r, "<li><b>", 0);
+    section_html(r, topic, 1);
+    section_html(r, "</b>: ", 0);
+    section_html(r, text, 1);
+    section_html(r, "</li>\n", 0);
+}
+
+void report_add_headline(report *r, const report_headline *h)
+{
+    if (r->headline_count >= HEADLINES_MAX)
+        return;
+    report_headline *row = &r->headlines[r->headline_count++];
+    *row = *h;
+    snprintf(row->anchor, sizeof row->anchor, "%s", r->section_anchor);
 }
 
 /* `body` with the sections glance and contents (each with its head and
@@ -312,24 +417,47 @@ static int write_with_sections(const char *path, const char *body, size_t at, co
     return rc;
 }
 
+/* The heads of the "At a glance" section: its title, the summary table and
+ * the findings list's opening (malloc'd; NULL when out of memory). */
+static int glance_heads(const report *r, char **md_head, char **html_head)
+{
+    char *table_md = NULL, *table_html = NULL;
+    *md_head = *html_head = NULL;
+    if (headlines_render(r->headlines, r->headline_count, &table_md, &table_html) == 0 &&
+        (asprintf(md_head, "## At a glance\n\n%s", table_md) < 0 ||
+         asprintf(html_head, "<h2 id=\"at-a-glance\">At a glance</h2>\n%s<ul>\n", table_html) < 0))
+        *md_head = *html_head = NULL; /* asprintf leaves them undefined */
+    free(table_md);
+    free(table_html);
+    return *md_head && *html_head ? 0 : -1;
+}
+
 int report_write(report *r, const char *dir, gt_error *e)
 {
+    close_section(r);
     html(r, "</body></html>\n");
-    if (r->failed)
+    char *md_head, *html_head;
+    if (glance_heads(r, &md_head, &html_head) != 0 || r->failed) {
+        free(md_head), free(html_head);
         return gt_error_set(e, dir, "out of memory while writing the report");
-    int glance = r->findings_md_len > 0, contents = r->findings_html_at > 0 && r->contents_md_len > 0;
-    const char *const glance_md[3] = {"## At a glance\n\n", r->findings_md, "\n"};
+    }
+    int glance = r->findings_md_len > 0 || r->headline_count > 0;
+    int contents = r->findings_html_at > 0 && r->contents_md_len > 0;
+    const char *const glance_md[3] = {md_head, r->findings_md ? r->findings_md : "", "\n"};
     const char *const contents_md[3] = {"## Contents\n\n", r->contents_md, "\n"};
-    const char *const glance_html[3] = {"<h2 id=\"at-a-glance\">At a glance</h2>\n<ul>\n", r->findings_html, "</ul>\n"};
+    const char *const glance_html[3] = {html_head, r->findings_html ? r->findings_html : "", "</ul>\n"};
     const char *const contents_html[3] = {"<h2 id=\"contents\">Contents</h2>\n<ul>\n", r->contents_html, "</ul>\n"};
     char path[4096];
     snprintf(path, sizeof path, "%s/report.md", dir);
-    if (write_with_sections(path, r->md, glance || contents ? r->findings_md_at : 0, glance ? glance_md : NULL,
-                            contents ? contents_md : NULL, e) != 0)
-        return -1;
+    int rc = write_with_sections(path, r->md, glance || contents ? r->findings_md_at : 0, glance ? glance_md : NULL,
+                                 contents ? contents_md : NULL, e);
     snprintf(path, sizeof path, "%s/report.html", dir);
-    return write_with_sections(path, r->html, glance || contents ? r->findings_html_at : 0,
-                               glance ? glance_html : NULL, contents ? contents_html : NULL, e);
+    if (rc == 0)
+        rc = write_with_sections(path, r->html, glance || contents ? r->findings_html_at : 0,
+                                 glance ? glance_html : NULL, contents ? contents_html : NULL, e);
+    free(md_head);
+    free(html_head);
+    return rc;
 }
 
 void report_free(report *r)
@@ -341,5 +469,7 @@ void report_free(report *r)
     free(r->contents_md);
     free(r->contents_html);
     free(r->anchors);
+    free(r->section_md);
+    free(r->section_html);
     memset(r, 0, sizeof *r);
 }
