@@ -8,6 +8,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -130,7 +131,42 @@ extern "C" int image_write_heatmap(const char *path, const float *values, const 
     ImageBuf encoded;
     if (!encode_srgb(encoded, colours, path, e))
         return -1;
+    char scale[96];
+    snprintf(scale, sizeof scale, "gtlab heatmap: %s, 0 to %g", map_name, (double)vmax);
+    encoded.specmod().attribute("ImageDescription", scale);
     return write_8bit(path, encoded, e);
+}
+
+extern "C" int image_colour_map_srgb(const char *map_name, int count, unsigned char *rgb)
+{
+    if (count < 2)
+        return -1;
+    std::vector<float> ramp((size_t)count);
+    for (int k = 0; k < count; ++k)
+        ramp[(size_t)k] = (float)k / (float)(count - 1);
+    ImageBuf values(ImageSpec(count, 1, 1, TypeDesc::FLOAT), ramp.data()), colours, encoded;
+    gt_error e;
+    if (!OIIO::ImageBufAlgo::color_map(colours, values, 0, map_name) || !encode_srgb(encoded, colours, map_name, &e))
+        return -1;
+    std::vector<float> pixels((size_t)count * 3);
+    if (!encoded.get_pixels(OIIO::ROI(0, count, 0, 1, 0, 1, 0, 3), TypeDesc::FLOAT, pixels.data()))
+        return -1;
+    for (size_t i = 0; i < pixels.size(); ++i)
+        rgb[i] = (unsigned char)std::lround(clamp01(pixels[i]) * 255.0f);
+    return 0;
+}
+
+extern "C" int image_read_description(const char *path, char *text, size_t size)
+{
+    auto in = OIIO::ImageInput::open(path);
+    if (!in)
+        return -1;
+    std::string description = in->spec().get_string_attribute("ImageDescription");
+    in->close();
+    if (description.empty() || size == 0)
+        return -1;
+    snprintf(text, size, "%s", description.c_str());
+    return 0;
 }
 
 extern "C" int image_write_data8(const char *path, const float *values, int width, int height,

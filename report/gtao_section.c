@@ -92,20 +92,21 @@ static void render_statement(report *doc, const gtao_validation_scene *s)
                      ultra->label, ultra->rmse_hf, converged_text);
 }
 
+/* The references, GTAO and the errors of one scene in a comparison view. */
 static void render_heatmaps(report *doc, const char *scene)
 {
-    static const char *const stems[3] = {"gtao_err_hf_vs_3d", "gtao_err_medium_vs_hf", "gtao_err_medium_vs_3d"};
-    static const char *const what[3] = {"height-field vs 3-D reference", "GTAO medium (1 frame) vs height field",
-                                        "GTAO medium (1 frame) vs 3-D"};
-    char paths[3][256], captions[3][128];
-    const char *p[3], *c[3];
-    for (int k = 0; k < 3; ++k) {
+    static const char *const stems[6] = {"ao", "gtao_hf", "gtao_medium", "gtao_err_hf_vs_3d", "gtao_err_medium_vs_hf",
+                                         "gtao_err_medium_vs_3d"};
+    static const char *const what[6] = {"3-D reference", "height-field reference", "GTAO medium (1 frame)",
+                                        "|height field - 3-D|", "|GTAO medium - height field|", "|GTAO medium - 3-D|"};
+    char paths[6][256], caption[256];
+    const char *p[6];
+    for (int k = 0; k < 6; ++k) {
         snprintf(paths[k], sizeof paths[k], "figures/%s_%s.png", stems[k], scene);
-        snprintf(captions[k], sizeof captions[k], "%s: |error| of %s (0 to 0.25)", scene, what[k]);
         p[k] = paths[k];
-        c[k] = captions[k];
     }
-    report_figures(doc, 3, p, c);
+    snprintf(caption, sizeof caption, "%s: the references, GTAO medium and their |errors| (0 to 0.25)", scene);
+    report_comparison(doc, 6, p, what, 3, caption);
 }
 
 static void render_scene(report *doc, cJSON *list, const gtao_validation_scene *s)

@@ -8,6 +8,8 @@
 #include <string.h>
 
 #include "core/atomic_file.h"
+#include "report/compare_viewer.h"
+#include "report/figure_resolve.h"
 
 static void append(char **buf, size_t *len, size_t *cap, int *failed, const char *text)
 {
@@ -184,7 +186,13 @@ void report_init(report *r, const char *title)
             "ul.conclusions{background:#f6f8fa;border-left:4px solid #4a7;padding:.5em 1em .5em 2em}\n"
             "details{margin:.6em 0}details>summary{cursor:pointer;color:#444}"
             "details[open]>summary .lead{display:none}\n"
-            "</style></head><body>\n<h1>");
+            "figure:has(img[src$=\".svg\"]){display:block}figure img[src$=\".svg\"]{max-width:100%;width:100%;"
+            "image-rendering:auto;border:0}\n"
+            ".cbar{display:flex;align-items:center;gap:.3em;font-size:.8em;max-width:256px;margin:2px auto}"
+            ".cbar-ramp{flex:1;height:10px;border:1px solid #999}\n"
+            "</style>\n");
+    html(r, compare_viewer_head());
+    html(r, "</head><body>\n<h1>");
     html_escaped(r, title);
     html(r, "</h1>\n");
     append(&r->anchors, &r->anchors_len, &r->anchors_cap, &r->failed, "at-a-glance\ncontents\n"); /* report_write's */
@@ -315,27 +323,73 @@ void report_table_end(report *r)
     html(r, "</table>\n");
 }
 
-void report_figures(report *r, int count, const char *const *paths, const char *const *captions)
+/* An image's source and its colour bar's place, marked for
+ * figures_resolve (report/figure_resolve.h): FIGURE_SRC path FIGURE_SRC. */
+static void html_marked(report *r, const char *mark, const char *path)
 {
-    html(r, "<div>\n");
+    html(r, mark);
+    html(r, path);
+    html(r, mark);
+}
+
+/* The Markdown of a row of figures: the images with their captions. */
+static void md_figures(report *r, int count, const char *const *paths, const char *const *captions)
+{
     for (int i = 0; i < count; ++i) {
         md(r, "![");
         md(r, captions[i]);
         md(r, "](");
         md(r, paths[i]);
         md(r, ") ");
+    }
+    md(r, "\n\n");
+}
+
+void report_figures(report *r, int count, const char *const *paths, const char *const *captions)
+{
+    md_figures(r, count, paths, captions);
+    html(r, "<div>\n");
+    for (int i = 0; i < count; ++i) {
         html(r, "<figure><a href=\"");
-        html_escaped(r, paths[i]);
+        html_marked(r, FIGURE_SRC, paths[i]);
         html(r, "\"><img src=\"");
-        html_escaped(r, paths[i]);
+        html_marked(r, FIGURE_SRC, paths[i]);
         html(r, "\" alt=\"");
         html_escaped(r, captions[i]);
-        html(r, "\"></a><figcaption>");
+        html(r, "\"></a>");
+        html_marked(r, FIGURE_BAR, paths[i]);
+        html(r, "<figcaption>");
         html_escaped(r, captions[i]);
         html(r, "</figcaption></figure>\n");
     }
-    md(r, "\n\n");
     html(r, "</div>\n");
+}
+
+void report_comparison(report *r, int count, const char *const *paths, const char *const *labels, int exposed,
+                       const char *caption)
+{
+    char attribute[64];
+    md(r, caption);
+    md(r, ":\n\n");
+    md_figures(r, count, paths, labels);
+    snprintf(attribute, sizeof attribute, "<div class=\"cmp\" tabindex=\"0\" data-exposed=\"%d\">\n", exposed);
+    html(r, attribute);
+    html(r, "<div class=\"cmp-panes\">\n");
+    for (int i = 0; i < count; ++i) {
+        html(r, "<figure class=\"cmp-pane\"><div class=\"cmp-clip\"><img src=\"");
+        html_marked(r, FIGURE_SRC, paths[i]);
+        html(r, "\" alt=\"");
+        html_escaped(r, labels[i]);
+        html(r, "\" draggable=\"false\"></div>");
+        html_marked(r, FIGURE_BAR, paths[i]);
+        html(r, "<figcaption>");
+        html_escaped(r, labels[i]);
+        html(r, "</figcaption></figure>\n");
+    }
+    html(r, "</div><p class=\"cmp-cap\">");
+    html_escaped(r, caption);
+    html(r, " <i>(click or keys 1-9, n, p to flip; s side by side; wheel to zoom, drag to pan, 0 to reset)</i></p>"
+            "</div>\n");
 }
 
 void report_findings_here(report *r)
@@ -398,7 +452,7 @@ void report_add_headline(report *r, const report_headline *h)
 /* `body` with the sections glance and contents (each with its head and
  * tail, or nothing when NULL) inserted at offset `at`, written atomically. */
 static int write_with_sections(const char *path, const char *body, size_t at, const char *const glance[3],
-                               const char *const contents[3], gt_error *e)
+                               const char *const contents[3], const char *resolve_dir, gt_error *e)
 {
     const char *parts[6];
     size_t n = strlen(body) + 1;
@@ -412,7 +466,10 @@ static int write_with_sections(const char *path, const char *body, size_t at, co
         return gt_error_set(e, path, "out of memory");
     snprintf(text, n, "%.*s%s%s%s%s%s%s%s", (int)at, body, parts[0], parts[1], parts[2], parts[3], parts[4],
              parts[5], body + at);
-    int rc = atomic_write_text(path, text, e);
+    char *resolved = resolve_dir ? figures_resolve(text, resolve_dir) : NULL;
+    int rc = resolve_dir && !resolved ? gt_error_set(e, path, "out of memory")
+                                      : atomic_write_text(path, resolved ? resolved : text, e);
+    free(resolved);
     free(text);
     return rc;
 }
@@ -450,11 +507,11 @@ int report_write(report *r, const char *dir, gt_error *e)
     char path[4096];
     snprintf(path, sizeof path, "%s/report.md", dir);
     int rc = write_with_sections(path, r->md, glance || contents ? r->findings_md_at : 0, glance ? glance_md : NULL,
-                                 contents ? contents_md : NULL, e);
+                                 contents ? contents_md : NULL, NULL, e);
     snprintf(path, sizeof path, "%s/report.html", dir);
     if (rc == 0)
         rc = write_with_sections(path, r->html, glance || contents ? r->findings_html_at : 0,
-                                 glance ? glance_html : NULL, contents ? contents_html : NULL, e);
+                                 glance ? glance_html : NULL, contents ? contents_html : NULL, dir, e);
     free(md_head);
     free(html_head);
     return rc;

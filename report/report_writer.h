@@ -55,8 +55,16 @@ void report_paragraph(report *r, const char *fmt, ...) __attribute__((format(pri
 void report_table_begin(report *r, int columns, const char *const *headers);
 void report_table_row(report *r, const char *const *cells);
 void report_table_end(report *r);
-/* A row of figures: image paths relative to the report, with captions. */
+/* A row of figures: image paths relative to the report, with captions. In
+ * report.html a gnuplot plot is shown as its SVG at full width, and a
+ * heatmap with its colour bar (report/figure_resolve.h). */
 void report_figures(report *r, int count, const char *const *paths, const char *const *captions);
+/* One view shown several ways (report/compare_viewer.h): in report.html the
+ * images flip in one place, zoom and pan together, the first `exposed`
+ * (radiance previews) under an exposure slider, the rest (error maps) not;
+ * in report.md a row of figures. Paths relative to the report. */
+void report_comparison(report *r, int count, const char *const *paths, const char *const *labels, int exposed,
+                       const char *caption);
 /* Marks where the "At a glance" section and the contents go. */
 void report_findings_here(report *r);
 /* One finding for that section: a topic and a sentence computed from the

@@ -267,9 +267,7 @@ static void scene_figures(report *doc, const sphere_scene_row *s)
     }
     for (int j = 0; j < 7; ++j)
         figs[j] = paths[j];
-    report_paragraph(doc, "%s:", s->title);
-    report_figures(doc, 4, figs, caps);
-    report_figures(doc, 3, figs + 4, caps + 4);
+    report_comparison(doc, 7, figs, caps, 4, s->title);
 }
 
 static const report_column shadow_json[] = {

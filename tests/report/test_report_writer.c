@@ -4,14 +4,18 @@
  * table of the sections' headline rows (report/report_headline.c: best and
  * runner-up ranked from the figures, the verdict from a paired difference or
  * a noise floor); each section opens with its own findings; a long paragraph
- * is folded in HTML, whole; HTML special characters are escaped; a report
- * without findings has no such section. */
+ * is folded in HTML, whole; in HTML a plot is shown as its SVG twin, a
+ * heatmap with its colour bar and range, and a comparison view holds its
+ * images (report/figure_resolve.c, report/compare_viewer.c); HTML special
+ * characters are escaped; a report without findings has no such section. */
 #include "report/report_writer.h"
+#include "core/image_io.h"
 #include "tests/check.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 static char *read_all(const char *path)
 {
@@ -223,8 +227,66 @@ static void test_conclusions_first_and_folding(void)
     report_free(&r);
 }
 
+static int count_of(const char *text, const char *what)
+{
+    int n = 0;
+    for (const char *p = text; p && (p = strstr(p, what)) != NULL; p += strlen(what))
+        ++n;
+    return n;
+}
+
+static void write_text(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (f) {
+        fputs(text, f);
+        fclose(f);
+    }
+}
+
+/* Figures as written: the plot (a PNG with an SVG twin) as its SVG, the
+ * heatmap with a colour bar carrying its map and range, a plain image as it
+ * was; no mark left; report.md keeps the PNGs. A comparison view holds its
+ * images and says how many take the exposure. */
+static void test_figures_resolved(void)
+{
+    char dir[1024], path[1200];
+    snprintf(dir, sizeof dir, "%s/figures", check_tmp_dir());
+    mkdir(dir, 0777);
+    const float values[4] = {0.0f, 0.1f, 0.2f, 0.5f};
+    gt_error e;
+    snprintf(path, sizeof path, "%s/heat.png", dir);
+    CHECK_MSG(image_write_heatmap(path, values, NULL, 2, 2, 0.5f, "viridis", &e) == 0, "%s", e.message);
+    snprintf(path, sizeof path, "%s/plot.png", dir);
+    write_text(path, "not read");
+    snprintf(path, sizeof path, "%s/plot.svg", dir);
+    write_text(path, "<svg xmlns=\"http://www.w3.org/2000/svg\"/>");
+    report r;
+    report_init(&r, "title");
+    const char *p[3] = {"figures/heat.png", "figures/plot.png", "figures/none.png"}, *c[3] = {"h", "p", "n"};
+    report_figures(&r, 3, p, c);
+    report_comparison(&r, 2, p, c, 1, "view");
+    char *md, *html;
+    write_and_read(&r, &md, &html);
+    CHECK(html && count_of(html, "src=\"figures/plot.svg\"") == 2 && !strstr(html, "figures/plot.png"));
+    CHECK(html && strstr(html, "<img src=\"figures/heat.png\" alt=\"h\"></a><div class=\"cbar\" title=\"viridis, "
+                               "linear from 0 to 0.5, clamped\"><span>0</span>"));
+    CHECK(html && strstr(html, "<span>0.5</span></div><figcaption>h</figcaption>"));
+    CHECK(html && count_of(html, "class=\"cbar\"") == 2);
+    CHECK(html && strstr(html, "<img src=\"figures/none.png\" alt=\"n\"></a><figcaption>n</figcaption>"));
+    CHECK(html && !strchr(html, '\x1f') && !strchr(html, '\x1e'));
+    CHECK(html && strstr(html, "<div class=\"cmp\" tabindex=\"0\" data-exposed=\"1\">"));
+    CHECK(html && count_of(html, "<figure class=\"cmp-pane\">") == 2 && strstr(html, "function gtlabViewer("));
+    CHECK(md && strstr(md, "![p](figures/plot.png)") && strstr(md, "view:\n\n![h](figures/heat.png) ![p](figures/plot.png)"));
+    free(md);
+    free(html);
+    report_free(&r);
+}
+
 int main(void)
 {
+    test_figures_resolved();
     test_headline_verdicts();
     test_headline_table();
     test_conclusions_first_and_folding();
