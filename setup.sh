@@ -4,7 +4,8 @@
 # info). Safe to run again. clang, its libFuzzer runtime (libclang-rt-14-dev),
 # its OpenMP (libomp-dev) and LLVM's tools (llvm) are for the fuzz build and
 # the recursion audit (tests/fuzz, tests/audit). blender-data ships the eight
-# CC0 HDR environments (docs/decisions.md, "Environment lighting").
+# CC0 HDR environments (docs/decisions.md, "Environment lighting"). chromium
+# (headless) loads report.html in the browser test (tests/report).
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -17,6 +18,7 @@ packages=(
   clang libclang-rt-14-dev libomp-dev llvm
   libsquish-dev liblcms2-dev
   blender-data
+  chromium
 )
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
