@@ -65,12 +65,18 @@ static void finding_md(report *r, const char *text)
     append(&r->findings_md, &r->findings_md_len, &r->findings_md_cap, &r->failed, text);
 }
 
-static void finding_html(report *r, const char *text, int escaped)
+/* text appended to one of r's HTML buffers, escaped or as it is. */
+static void put_html(report *r, char **buf, size_t *len, size_t *cap, const char *text, int escaped)
 {
     if (escaped)
-        append_escaped(&r->findings_html, &r->findings_html_len, &r->findings_html_cap, &r->failed, text);
+        append_escaped(buf, len, cap, &r->failed, text);
     else
-        append(&r->findings_html, &r->findings_html_len, &r->findings_html_cap, &r->failed, text);
+        append(buf, len, cap, &r->failed, text);
+}
+
+static void finding_html(report *r, const char *text, int escaped)
+{
+    put_html(r, &r->findings_html, &r->findings_html_len, &r->findings_html_cap, text, escaped);
 }
 
 static void section_md(report *r, const char *text)
@@ -80,10 +86,7 @@ static void section_md(report *r, const char *text)
 
 static void section_html(report *r, const char *text, int escaped)
 {
-    if (escaped)
-        append_escaped(&r->section_html, &r->section_html_len, &r->section_html_cap, &r->failed, text);
-    else
-        append(&r->section_html, &r->section_html_len, &r->section_html_cap, &r->failed, text);
+    put_html(r, &r->section_html, &r->section_html_len, &r->section_html_cap, text, escaped);
 }
 
 /* The current level-2 section's findings, as its conclusions, inserted just
@@ -113,10 +116,7 @@ static void contents_md(report *r, const char *text)
 
 static void contents_html(report *r, const char *text, int escaped)
 {
-    if (escaped)
-        append_escaped(&r->contents_html, &r->contents_html_len, &r->contents_html_cap, &r->failed, text);
-    else
-        append(&r->contents_html, &r->contents_html_len, &r->contents_html_cap, &r->failed, text);
+    put_html(r, &r->contents_html, &r->contents_html_len, &r->contents_html_cap, text, escaped);
 }
 
 /* The heading's slug (report_writer.h), without the repeat suffix. */
@@ -345,23 +345,32 @@ static void md_figures(report *r, int count, const char *const *paths, const cha
     md(r, "\n\n");
 }
 
+/* One image with its caption: linked to itself in a row of figures, or
+ * as a pane of a comparison view; its colour bar's place marked. */
+static void html_figure(report *r, int in_view, const char *path, const char *caption)
+{
+    html(r, in_view ? "<figure class=\"cmp-pane\"><div class=\"cmp-clip\">" : "<figure><a href=\"");
+    if (!in_view) {
+        html_marked(r, FIGURE_SRC, path);
+        html(r, "\">");
+    }
+    html(r, "<img src=\"");
+    html_marked(r, FIGURE_SRC, path);
+    html(r, "\" alt=\"");
+    html_escaped(r, caption);
+    html(r, in_view ? "\" draggable=\"false\"></div>" : "\"></a>");
+    html_marked(r, FIGURE_BAR, path);
+    html(r, "<figcaption>");
+    html_escaped(r, caption);
+    html(r, "</figcaption></figure>\n");
+}
+
 void report_figures(report *r, int count, const char *const *paths, const char *const *captions)
 {
     md_figures(r, count, paths, captions);
     html(r, "<div>\n");
-    for (int i = 0; i < count; ++i) {
-        html(r, "<figure><a href=\"");
-        html_marked(r, FIGURE_SRC, paths[i]);
-        html(r, "\"><img src=\"");
-        html_marked(r, FIGURE_SRC, paths[i]);
-        html(r, "\" alt=\"");
-        html_escaped(r, captions[i]);
-        html(r, "\"></a>");
-        html_marked(r, FIGURE_BAR, paths[i]);
-        html(r, "<figcaption>");
-        html_escaped(r, captions[i]);
-        html(r, "</figcaption></figure>\n");
-    }
+    for (int i = 0; i < count; ++i)
+        html_figure(r, 0, paths[i], captions[i]);
     html(r, "</div>\n");
 }
 
@@ -375,17 +384,8 @@ void report_comparison(report *r, int count, const char *const *paths, const cha
     snprintf(attribute, sizeof attribute, "<div class=\"cmp\" tabindex=\"0\" data-exposed=\"%d\">\n", exposed);
     html(r, attribute);
     html(r, "<div class=\"cmp-panes\">\n");
-    for (int i = 0; i < count; ++i) {
-        html(r, "<figure class=\"cmp-pane\"><div class=\"cmp-clip\"><img src=\"");
-        html_marked(r, FIGURE_SRC, paths[i]);
-        html(r, "\" alt=\"");
-        html_escaped(r, labels[i]);
-        html(r, "\" draggable=\"false\"></div>");
-        html_marked(r, FIGURE_BAR, paths[i]);
-        html(r, "<figcaption>");
-        html_escaped(r, labels[i]);
-        html(r, "</figcaption></figure>\n");
-    }
+    for (int i = 0; i < count; ++i)
+        html_figure(r, 1, paths[i], labels[i]);
     html(r, "</div><p class=\"cmp-cap\">");
     html_escaped(r, caption);
     html(r, " <i>(click or keys 1-9, n, p to flip; s side by side; wheel to zoom, drag to pan, 0 to reset)</i></p>"
@@ -398,6 +398,32 @@ void report_findings_here(report *r)
     r->findings_html_at = r->html_len;
 }
 
+/* One finding as a list item of a Markdown and an HTML list; with an
+ * anchor, its topic links there. */
+static void finding_item(report *r, void (*put_md)(report *, const char *),
+                         void (*put)(report *, const char *, int), const char *anchor, const char *topic,
+                         const char *text)
+{
+    put_md(r, anchor ? "- **[" : "- **");
+    put_md(r, topic);
+    if (anchor) {
+        put_md(r, "](#");
+        put_md(r, anchor);
+        put_md(r, ")");
+        put(r, "<li><b><a href=\"#", 0);
+        put(r, anchor, 0);
+        put(r, "\">", 0);
+    } else
+        put(r, "<li><b>", 0);
+    put_md(r, "**: ");
+    put_md(r, text);
+    put_md(r, "\n");
+    put(r, topic, 1);
+    put(r, anchor ? "</a></b>: " : "</b>: ", 0);
+    put(r, text, 1);
+    put(r, "</li>\n", 0);
+}
+
 void report_finding(report *r, const char *topic, const char *fmt, ...)
 {
     char text[2048];
@@ -405,39 +431,10 @@ void report_finding(report *r, const char *topic, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
-    const char *anchor = r->section_anchor;
-    finding_md(r, anchor[0] ? "- **[" : "- **");
-    finding_md(r, topic);
-    if (anchor[0]) {
-        finding_md(r, "](#");
-        finding_md(r, anchor);
-        finding_md(r, ")");
-    }
-    finding_md(r, "**: ");
-    finding_md(r, text);
-    finding_md(r, "\n");
-    finding_html(r, "<li><b>", 0);
-    if (anchor[0]) {
-        finding_html(r, "<a href=\"#", 0);
-        finding_html(r, anchor, 0);
-        finding_html(r, "\">", 0);
-    }
-    finding_html(r, topic, 1);
-    finding_html(r, anchor[0] ? "</a></b>: " : "</b>: ", 0);
-    finding_html(r, text, 1);
-    finding_html(r, "</li>\n", 0);
-    if (!anchor[0])
-        return;
-    section_md(r, "- **");
-    section_md(r, topic);
-    section_md(r, "**: ");
-    section_md(r, text);
-    section_md(r, "\n");
-    section_html(r, "<li><b>", 0);
-    section_html(r, topic, 1);
-    section_html(r, "</b>: ", 0);
-    section_html(r, text, 1);
-    section_html(r, "</li>\n", 0);
+    const char *anchor = r->section_anchor[0] ? r->section_anchor : NULL;
+    finding_item(r, finding_md, finding_html, anchor, topic, text);
+    if (anchor) /* the section's own conclusions */
+        finding_item(r, section_md, section_html, NULL, topic, text);
 }
 
 void report_add_headline(report *r, const report_headline *h)
