@@ -128,6 +128,7 @@ static const char kHead[] =
     "  }\n"
     "  root.addEventListener('keydown', ev => {\n"
     "    const k = ev.key;\n"
+    "    if (ev.target.tagName === 'INPUT' || ev.target.tagName === 'BUTTON' && (k === ' ' || k === 'Enter')) return;\n"
     "    if (k >= '1' && k <= '9' && k - 1 < panes.length) show(k - 1);\n"
     "    else if (k === 'n' || k === ' ' || k === 'ArrowRight') show(view.on + 1);\n"
     "    else if (k === 'p' || k === 'Backspace' || k === 'ArrowLeft') show(view.on - 1);\n"
