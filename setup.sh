@@ -4,7 +4,8 @@
 # info). Safe to run again. clang, its libFuzzer runtime (libclang-rt-14-dev),
 # its OpenMP (libomp-dev) and LLVM's tools (llvm) are for the fuzz build and
 # the recursion audit (tests/fuzz, tests/audit). blender-data ships the eight
-# CC0 HDR environments (docs/decisions.md, "Environment lighting").
+# CC0 HDR environments (docs/decisions.md, "Environment lighting"). chromium
+# (headless) loads report.html in the browser test (tests/report).
 # libvulkan-dev, mesa-vulkan-drivers (lavapipe: a Vulkan device on the CPU),
 # libshaderc-dev with glslang-dev and spirv-tools (static libraries shaderc
 # links) and glslc run shaders on Vulkan (gpu/, docs/shaders.md).
@@ -24,6 +25,7 @@ packages=(
   libopenmpi-dev openmpi-bin
   blender-data
   libvulkan-dev mesa-vulkan-drivers libshaderc-dev glslang-dev spirv-tools glslc
+  chromium
 )
 
 as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }

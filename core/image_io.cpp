@@ -153,7 +153,9 @@ extern "C" int image_write_heatmap(const char *path, const float *values, const 
     std::vector<float> scaled(valid_size(width, height) ? (size_t)width * (size_t)height : 0);
     if (scale_heatmap(path, values, width, height, vmax, scaled.data(), e) != 0)
         return -1;
-    return write_colour_mapped(path, scaled.data(), mask, width, height, map_name, nullptr, e);
+    char scale[96]; // what report/heatmap_colour_bar.c reads back to draw the bar beside it
+    snprintf(scale, sizeof scale, "gtlab heatmap: %s, 0 to %g", map_name, (double)vmax);
+    return write_colour_mapped(path, scaled.data(), mask, width, height, map_name, scale, e);
 }
 
 extern "C" int image_heatmap_bar_rows(int height) { return height / 16 > 4 ? height / 16 : 4; }
@@ -178,6 +180,38 @@ extern "C" int image_write_heatmap_with_bar(const char *path, const float *value
     snprintf(description, sizeof description, "%s heatmap; colour bar below: 0 (left) to %g (right)", map_name,
              (double)vmax);
     return write_colour_mapped(path, scaled.data(), full_mask.data(), width, total, map_name, description, e);
+}
+
+extern "C" int image_colour_map_srgb(const char *map_name, int count, unsigned char *rgb)
+{
+    if (count < 2)
+        return -1;
+    std::vector<float> ramp((size_t)count);
+    for (int k = 0; k < count; ++k)
+        ramp[(size_t)k] = (float)k / (float)(count - 1);
+    ImageBuf values(ImageSpec(count, 1, 1, TypeDesc::FLOAT), ramp.data()), colours, encoded;
+    gt_error e;
+    if (!OIIO::ImageBufAlgo::color_map(colours, values, 0, map_name) || !encode_srgb(encoded, colours, map_name, &e))
+        return -1;
+    std::vector<float> pixels((size_t)count * 3);
+    if (!encoded.get_pixels(OIIO::ROI(0, count, 0, 1, 0, 1, 0, 3), TypeDesc::FLOAT, pixels.data()))
+        return -1;
+    for (size_t i = 0; i < pixels.size(); ++i)
+        rgb[i] = (unsigned char)std::lround(clamp01(pixels[i]) * 255.0f);
+    return 0;
+}
+
+extern "C" int image_read_description(const char *path, char *text, size_t size)
+{
+    auto in = OIIO::ImageInput::open(path);
+    if (!in)
+        return -1;
+    std::string description = in->spec().get_string_attribute("ImageDescription");
+    in->close();
+    if (description.empty() || size == 0)
+        return -1;
+    snprintf(text, size, "%s", description.c_str());
+    return 0;
 }
 
 extern "C" int image_write_data8(const char *path, const float *values, int width, int height,

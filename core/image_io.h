@@ -7,6 +7,8 @@
 #ifndef GTLAB_CORE_IMAGE_IO_H
 #define GTLAB_CORE_IMAGE_IO_H
 
+#include <stddef.h>
+
 #include "core/error.h"
 
 /* A preview of 1 (grey) or 3 (RGB) planar float channels holding linear values:
@@ -18,7 +20,9 @@ int image_write_preview(const char *path, const float *const *planes, int channe
 /* A heatmap of `values` through OIIO's colour map `map_name` ("inferno",
  * "viridis", "magma", "plasma", "turbo"), with values mapped linearly from
  * [0, vmax] to [0, 1] and clamped. Pixels where mask is non-NULL and mask[i]
- * is 0 are written black. Returns 0 or -1 with e. */
+ * is 0 are written black. The file's ImageDescription records its scale,
+ * "gtlab heatmap: <map_name>, 0 to <vmax as %g>", for a colour bar
+ * (report/heatmap_colour_bar.h). Returns 0 or -1 with e. */
 int image_write_heatmap(const char *path, const float *values, const float *mask, int width, int height,
                         float vmax, const char *map_name, gt_error *e);
 
@@ -29,6 +33,15 @@ int image_write_heatmap(const char *path, const float *values, const float *mask
 int image_write_heatmap_with_bar(const char *path, const float *values, const float *mask, int width, int height,
                                  float vmax, const char *map_name, gt_error *e);
 int image_heatmap_bar_rows(int height); /* max(4, height / 16) */
+
+/* The colours a heatmap gives `count` (>= 2) evenly spaced values from 0 to
+ * vmax: map_name's colours at k / (count - 1), sRGB-encoded to 8 bits as in
+ * the heatmap's file (rgb[3 k + c]). Returns 0, or -1 for an unknown map. */
+int image_colour_map_srgb(const char *map_name, int count, unsigned char *rgb);
+
+/* A file's ImageDescription (its header only read) into text; 0, or -1
+ * when the file cannot be read or has none. */
+int image_read_description(const char *path, char *text, size_t size);
 
 /* Data (not a picture): one channel of values in [0, 1] quantised linearly
  * to 8 bits (no sRGB encoding), as a LUT a shader samples; `description`

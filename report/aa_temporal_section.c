@@ -93,6 +93,20 @@ static void figures(report_context *ctx, const char *path)
     report_figures(ctx->doc, 5, ep, captions + 1);
 }
 
+/* The summary table's row: the four techniques of the pan (rows[4]) by
+ * DSSIM against the truth; no interval for the gap. */
+static void add_headline(report *doc, const aa_temporal_row *const rows[4])
+{
+    const char *labels[4];
+    double errors[4];
+    for (int i = 0; i < 4; ++i)
+        labels[i] = rows[i]->technique, errors[i] = rows[i]->dssim;
+    report_headline h = {.topic = "temporal anti-aliasing", .measure = "DSSIM vs the truth, pan over thin geometry",
+                         .significance = HEADLINE_NOT_COMPUTED};
+    if (headline_rank(&h, 4, labels, errors) == 0)
+        report_add_headline(doc, &h);
+}
+
 void aa_temporal_section(report_context *ctx, cJSON *json, const aa_temporal_result *r)
 {
     if (r->row_count == 0)
@@ -117,6 +131,8 @@ void aa_temporal_section(report_context *ctx, cJSON *json, const aa_temporal_res
     add_claims(ctx, r);
     const aa_temporal_row *none = find(r, "pan", T_NONE), *edge = find(r, "pan", T_EDGE), *taa = find(r, "pan", T_TAA),
                           *checker = find(r, "pan", T_CHECKER);
+    if (none && edge && taa && checker)
+        add_headline(ctx->doc, (const aa_temporal_row *[]){none, taa, edge, checker});
     if (none && edge && taa && checker)
         report_finding(ctx->doc, "temporal anti-aliasing",
                        "On the pan over thin geometry, DSSIM against the truth: no AA %.4f, accumulating TAA %.4f, "

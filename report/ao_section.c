@@ -36,17 +36,16 @@ static const report_column columns[] = {
 
 static void add_figures(report *doc, const ao_references_result *r)
 {
+    static const char *const labels[3] = {"cosine AO", "bent normal (0.5 + 0.5 n)", "standard error of AO"};
     for (int i = 0; i < r->count; ++i) {
         const char *name = r->rows[i].scene;
-        char paths[3][256], captions[3][256];
+        char paths[3][256], caption[256];
         snprintf(paths[0], 256, "figures/ao_%s.png", name);
         snprintf(paths[1], 256, "figures/bent_%s.png", name);
         snprintf(paths[2], 256, "figures/ao_stderr_%s.png", name);
-        snprintf(captions[0], 256, "%s: cosine AO", name);
-        snprintf(captions[1], 256, "%s: bent normal (0.5 + 0.5 n)", name);
-        snprintf(captions[2], 256, "%s: standard error of AO", name);
-        const char *p[3] = {paths[0], paths[1], paths[2]}, *c[3] = {captions[0], captions[1], captions[2]};
-        report_figures(doc, 3, p, c);
+        snprintf(caption, sizeof caption, "%s: the AO reference, its bent normal and its standard error", name);
+        const char *p[3] = {paths[0], paths[1], paths[2]};
+        report_comparison(doc, 3, p, labels, 1, caption);
     }
 }
 

@@ -19,21 +19,31 @@ static const char *png_terminal(void)
     return chosen;
 }
 
-/* The script file's path: png_path with .gp for .png. */
-static void script_path(const char *png_path, char *out, size_t size)
+/* path with its ".png" replaced by `extension` (".gp", ".svg"). */
+static void sibling_path(const char *png_path, const char *extension, char *out, size_t size)
 {
     size_t n = strlen(png_path);
     if (n > 4 && strcmp(png_path + n - 4, ".png") == 0)
         n -= 4;
-    snprintf(out, size, "%.*s.gp", (int)n, png_path);
+    snprintf(out, size, "%.*s%s", (int)n, png_path, extension);
+}
+
+/* The terminal line of the PNG, or of the SVG (its font scaled with width). */
+static char *terminal_line(int svg, int width, int height)
+{
+    char *text = NULL;
+    int font = (GNUPLOT_SVG_FONT * width + 450) / 900;
+    int rc = svg ? asprintf(&text, "set terminal svg size %d,%d font 'sans,%d' background '#ffffff'", width, height,
+                            font < 11 ? 11 : font)
+                 : asprintf(&text, "set terminal %s size %d,%d font ',10'", png_terminal(), width, height);
+    return rc < 0 ? NULL : text;
 }
 
 /* The terminal and output lines, then the caller's plot commands. */
-static char *full_script(const char *script, const char *output, int width, int height)
+static char *full_script(const char *terminal, const char *script, const char *output)
 {
     char *text = NULL;
-    if (asprintf(&text, "set terminal %s size %d,%d font ',10'\nset output '%s'\n%s\nunset output\n", png_terminal(),
-                 width, height, output, script) < 0)
+    if (!terminal || asprintf(&text, "%s\nset output '%s'\n%s\nunset output\n", terminal, output, script) < 0)
         return NULL;
     return text;
 }
@@ -63,29 +73,43 @@ static int run_gnuplot(const char *text, const char *log_path, const char *png_p
     return gt_error_set(e, png_path, "gnuplot failed: %s", line + strspn(line, " \t"));
 }
 
+/* Draws `script` into `path` (atomically) on the PNG or the SVG terminal;
+ * with `kept`, the full script is also written there. */
+static int render_to(const char *script, const char *path, int svg, int width, int height, const char *kept,
+                     gt_error *e)
+{
+    atomic_file out;
+    if (atomic_file_begin(&out, path, e) != 0)
+        return -1;
+    char log_path[ATOMIC_PATH_MAX + 8];
+    snprintf(log_path, sizeof log_path, "%s.log", out.temp_path);
+    char *terminal = terminal_line(svg, width, height);
+    char *shown = kept ? full_script(terminal, script, path) : NULL, *run = full_script(terminal, script, out.temp_path);
+    int rc = run && (shown || !kept) ? 0 : gt_error_set(e, path, "out of memory");
+    if (rc == 0 && kept)
+        rc = atomic_write_text(kept, shown, e);
+    if (rc == 0)
+        rc = run_gnuplot(run, log_path, path, e);
+    remove(log_path);
+    free(terminal);
+    free(shown);
+    free(run);
+    if (rc == 0)
+        return atomic_file_commit(&out, e);
+    atomic_file_abort(&out);
+    return -1;
+}
+
 int gnuplot_render(const char *script, const char *png_path, int width, int height, gt_error *e)
 {
     if (strchr(png_path, '\'') != NULL)
         return gt_error_set(e, png_path, "a path with a single quote cannot be given to gnuplot");
     if (!gnuplot_available())
         return gt_error_set(e, png_path, "gnuplot not found (Debian package gnuplot-nox)");
-    atomic_file png;
-    if (atomic_file_begin(&png, png_path, e) != 0)
+    char gp[ATOMIC_PATH_MAX], svg[ATOMIC_PATH_MAX];
+    sibling_path(png_path, ".gp", gp, sizeof gp);
+    sibling_path(png_path, ".svg", svg, sizeof svg);
+    if (render_to(script, png_path, 0, width, height, gp, e) != 0)
         return -1;
-    char gp[ATOMIC_PATH_MAX], log_path[ATOMIC_PATH_MAX + 8];
-    script_path(png_path, gp, sizeof gp);
-    snprintf(log_path, sizeof log_path, "%s.log", png.temp_path);
-    char *kept = full_script(script, png_path, width, height), *run = full_script(script, png.temp_path, width, height);
-    int rc = kept && run ? 0 : gt_error_set(e, png_path, "out of memory");
-    if (rc == 0)
-        rc = atomic_write_text(gp, kept, e);
-    if (rc == 0)
-        rc = run_gnuplot(run, log_path, png_path, e);
-    remove(log_path);
-    free(kept);
-    free(run);
-    if (rc == 0)
-        return atomic_file_commit(&png, e);
-    atomic_file_abort(&png);
-    return -1;
+    return render_to(script, svg, 1, width, height, NULL, e);
 }

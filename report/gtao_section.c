@@ -3,6 +3,7 @@
  * rendered into the report: per scene the variants' table, where the error
  * of the talk's configuration comes from and the heatmaps; the convergence
  * plot; GTAO's parameters tuned to the 3-D references. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -91,20 +92,21 @@ static void render_statement(report *doc, const gtao_validation_scene *s)
                      ultra->label, ultra->rmse_hf, converged_text);
 }
 
+/* The references, GTAO and the errors of one scene in a comparison view. */
 static void render_heatmaps(report *doc, const char *scene)
 {
-    static const char *const stems[3] = {"gtao_err_hf_vs_3d", "gtao_err_medium_vs_hf", "gtao_err_medium_vs_3d"};
-    static const char *const what[3] = {"height-field vs 3-D reference", "GTAO medium (1 frame) vs height field",
-                                        "GTAO medium (1 frame) vs 3-D"};
-    char paths[3][256], captions[3][128];
-    const char *p[3], *c[3];
-    for (int k = 0; k < 3; ++k) {
+    static const char *const stems[6] = {"ao", "gtao_hf", "gtao_medium", "gtao_err_hf_vs_3d", "gtao_err_medium_vs_hf",
+                                         "gtao_err_medium_vs_3d"};
+    static const char *const what[6] = {"3-D reference", "height-field reference", "GTAO medium (1 frame)",
+                                        "|height field - 3-D|", "|GTAO medium - height field|", "|GTAO medium - 3-D|"};
+    char paths[6][256], caption[256];
+    const char *p[6];
+    for (int k = 0; k < 6; ++k) {
         snprintf(paths[k], sizeof paths[k], "figures/%s_%s.png", stems[k], scene);
-        snprintf(captions[k], sizeof captions[k], "%s: |error| of %s (0 to 0.25)", scene, what[k]);
         p[k] = paths[k];
-        c[k] = captions[k];
     }
-    report_figures(doc, 3, p, c);
+    snprintf(caption, sizeof caption, "%s: the references, GTAO medium and their |errors| (0 to 0.25)", scene);
+    report_comparison(doc, 6, p, what, 3, caption);
 }
 
 static void render_scene(report *doc, cJSON *list, const gtao_validation_scene *s)
@@ -177,6 +179,28 @@ static void render_fit(report *doc, const gtao_fit_request *rq, const gtao_fit_r
                    better, held_out, r->value[0], r->value[1], r->value[2]);
 }
 
+/* The summary table's row: the variants (by label, as run on the first
+ * scene) ranked by their mean RMSE against the 3-D reference over the
+ * scenes; the study has no interval for the gap. */
+static void add_headline(report *doc, const gtao_validation_result *r)
+{
+    const gtao_validation_scene *first = &r->scenes[0];
+    const char *labels[GTAO_VALIDATION_MAX_VARIANTS];
+    double mean[GTAO_VALIDATION_MAX_VARIANTS];
+    for (int v = 0; v < first->variant_count; ++v) {
+        const ao_variant_row *x = &first->variants[v];
+        labels[v] = x->label, mean[v] = 0.0;
+        for (int i = 0; i < r->scene_count; ++i) {
+            const ao_variant_row *y = gtao_validation_find(&r->scenes[i], x->technique, x->preset, x->converged);
+            mean[v] += (y ? y->rmse_3d : NAN) / r->scene_count;
+        }
+    }
+    report_headline h = {.topic = "GTAO, HBAO, VO", .significance = HEADLINE_NOT_COMPUTED};
+    snprintf(h.measure, sizeof h.measure, "mean RMSE vs the 3-D reference (%d scenes)", r->scene_count);
+    if (r->scene_count > 0 && headline_rank(&h, first->variant_count, labels, mean) == 0)
+        report_add_headline(doc, &h);
+}
+
 int gtao_section(report_context *ctx, const gtao_validation_result *r, gt_error *e)
 {
     render_introduction(ctx->doc, r);
@@ -186,6 +210,7 @@ int gtao_section(report_context *ctx, const gtao_validation_result *r, gt_error 
     if (render_convergence(ctx, e) != 0 || write_fit(ctx, r, e) != 0)
         return -1;
     render_fit(ctx->doc, &r->fit_request, &r->fit);
+    add_headline(ctx->doc, r);
     gtao_shortcuts_section(ctx, &r->shortcuts);
     return 0;
 }

@@ -211,6 +211,24 @@ static void fit_tables(report_context *ctx, const multibounce_study_result *r)
                 r->heldout_rows);
 }
 
+/* The summary table's row: the linear refit against the talk's
+ * coefficients, each scored on scenes it was not fitted to; the jackknife
+ * over scenes says whether the two coefficient sets differ. */
+static void add_headline(report *doc, const multibounce_study_result *r)
+{
+    const multibounce_fit_summary *s = &r->fit;
+    const char *labels[2] = {"refit (linear in rho)", "the talk's coefficients"};
+    const double errors[2] = {s->heldout_mean_rmse_linear, s->heldout_mean_rmse_talk};
+    report_headline h = {.topic = "GTAO multi-bounce"};
+    snprintf(h.measure, sizeof h.measure, "held-out weighted RMSE (mean of %d scenes)", s->heldout_scenes);
+    if (headline_rank(&h, 2, labels, errors) != 0)
+        return;
+    double sigmas = r->findings.farthest_scenes_sigmas;
+    h.significance = sigmas > CLAIM_Z ? HEADLINE_SIGNIFICANT : HEADLINE_NOT_SIGNIFICANT;
+    snprintf(h.basis, sizeof h.basis, "the talk's coefficients at most %.1f jackknife s.e. from the refit's", sigmas);
+    report_add_headline(doc, &h);
+}
+
 static void findings(report_context *ctx, const multibounce_study_result *r)
 {
     const multibounce_fit_summary *s = &r->fit;
@@ -260,6 +278,7 @@ static void findings(report_context *ctx, const multibounce_study_result *r)
                    c[0].ours, c[1].ours, c[2].ours, c[3].ours, c[4].ours, c[5].ours, s->rmse_ours, s->rmse_talk,
                    s->heldout_mean_rmse_linear, s->heldout_mean_rmse_talk, f->talk_better_heldout, s->heldout_scenes,
                    f->farthest_scenes_sigmas);
+    add_headline(ctx->doc, r);
 }
 
 /* ---- Figures -------------------------------------------------------------------------------- */

@@ -1,3 +1,4 @@
+#define _GNU_SOURCE
 #include "report/report_writer.h"
 
 #include <ctype.h>
@@ -7,6 +8,8 @@
 #include <string.h>
 
 #include "core/atomic_file.h"
+#include "report/compare_viewer.h"
+#include "report/figure_resolve.h"
 
 static void append(char **buf, size_t *len, size_t *cap, int *failed, const char *text)
 {
@@ -25,6 +28,17 @@ static void append(char **buf, size_t *len, size_t *cap, int *failed, const char
     }
     memcpy(*buf + *len, text, n + 1);
     *len += n;
+}
+
+/* Inserts text into a growing buffer at offset `at` (<= *len). */
+static void insert(char **buf, size_t *len, size_t *cap, int *failed, size_t at, const char *text)
+{
+    size_t n = strlen(text), old = *len;
+    append(buf, len, cap, failed, text); /* grows it by n */
+    if (*failed)
+        return;
+    memmove(*buf + at + n, *buf + at, old - at);
+    memcpy(*buf + at, text, n);
 }
 
 static void md(report *r, const char *text) { append(&r->md, &r->md_len, &r->md_cap, &r->failed, text); }
@@ -51,12 +65,48 @@ static void finding_md(report *r, const char *text)
     append(&r->findings_md, &r->findings_md_len, &r->findings_md_cap, &r->failed, text);
 }
 
-static void finding_html(report *r, const char *text, int escaped)
+/* text appended to one of r's HTML buffers, escaped or as it is. */
+static void put_html(report *r, char **buf, size_t *len, size_t *cap, const char *text, int escaped)
 {
     if (escaped)
-        append_escaped(&r->findings_html, &r->findings_html_len, &r->findings_html_cap, &r->failed, text);
+        append_escaped(buf, len, cap, &r->failed, text);
     else
-        append(&r->findings_html, &r->findings_html_len, &r->findings_html_cap, &r->failed, text);
+        append(buf, len, cap, &r->failed, text);
+}
+
+static void finding_html(report *r, const char *text, int escaped)
+{
+    put_html(r, &r->findings_html, &r->findings_html_len, &r->findings_html_cap, text, escaped);
+}
+
+static void section_md(report *r, const char *text)
+{
+    append(&r->section_md, &r->section_md_len, &r->section_md_cap, &r->failed, text);
+}
+
+static void section_html(report *r, const char *text, int escaped)
+{
+    put_html(r, &r->section_html, &r->section_html_len, &r->section_html_cap, text, escaped);
+}
+
+/* The current level-2 section's findings, as its conclusions, inserted just
+ * after its heading; the section is closed. */
+static void close_section(report *r)
+{
+    if (r->section_md_len > 0) {
+        insert(&r->section_md, &r->section_md_len, &r->section_md_cap, &r->failed, 0, "Conclusions:\n\n");
+        section_md(r, "\n");
+        insert(&r->md, &r->md_len, &r->md_cap, &r->failed, r->section_md_at, r->section_md);
+        insert(&r->section_html, &r->section_html_len, &r->section_html_cap, &r->failed, 0,
+               "<ul class=\"conclusions\">\n");
+        section_html(r, "</ul>\n", 0);
+        insert(&r->html, &r->html_len, &r->html_cap, &r->failed, r->section_html_at, r->section_html);
+    }
+    r->section_md_len = r->section_html_len = 0;
+    if (r->section_md)
+        r->section_md[0] = '\0';
+    if (r->section_html)
+        r->section_html[0] = '\0';
 }
 
 static void contents_md(report *r, const char *text)
@@ -66,10 +116,7 @@ static void contents_md(report *r, const char *text)
 
 static void contents_html(report *r, const char *text, int escaped)
 {
-    if (escaped)
-        append_escaped(&r->contents_html, &r->contents_html_len, &r->contents_html_cap, &r->failed, text);
-    else
-        append(&r->contents_html, &r->contents_html_len, &r->contents_html_cap, &r->failed, text);
+    put_html(r, &r->contents_html, &r->contents_html_len, &r->contents_html_cap, text, escaped);
 }
 
 /* The heading's slug (report_writer.h), without the repeat suffix. */
@@ -135,7 +182,17 @@ void report_init(report *r, const char *title)
             "text-align:right}th{background:#f3f3f3}td:first-child,th:first-child{text-align:left}\n"
             "figure{display:inline-block;margin:.5em;text-align:center}figure img{max-width:256px;"
             "image-rendering:pixelated;border:1px solid #ddd}figcaption{font-size:.85em;color:#555}\n"
-            "</style></head><body>\n<h1>");
+            "table.glance td{text-align:left}table.glance tr.sig td:last-child{font-weight:bold}\n"
+            "ul.conclusions{background:#f6f8fa;border-left:4px solid #4a7;padding:.5em 1em .5em 2em}\n"
+            "details{margin:.6em 0}details>summary{cursor:pointer;color:#444}"
+            "details[open]>summary .lead{display:none}\n"
+            "figure:has(img[src$=\".svg\"]){display:block}figure img[src$=\".svg\"]{max-width:100%;width:100%;"
+            "image-rendering:auto;border:0}\n"
+            ".cbar{display:flex;align-items:center;gap:.3em;font-size:.8em;max-width:256px;margin:2px auto}"
+            ".cbar-ramp{flex:1;height:10px;border:1px solid #999}\n"
+            "</style>\n");
+    html(r, compare_viewer_head());
+    html(r, "</head><body>\n<h1>");
     html_escaped(r, title);
     html(r, "</h1>\n");
     append(&r->anchors, &r->anchors_len, &r->anchors_cap, &r->failed, "at-a-glance\ncontents\n"); /* report_write's */
@@ -146,6 +203,7 @@ void report_heading(report *r, int level, const char *text)
     char tag[8], anchor[128];
     heading_anchor(r, text, anchor, sizeof anchor);
     if (level == 2) {
+        close_section(r);
         snprintf(r->section_anchor, sizeof r->section_anchor, "%s", anchor);
         add_contents_entry(r, text, anchor);
     }
@@ -164,6 +222,36 @@ void report_heading(report *r, int level, const char *text)
     html(r, "</");
     html(r, tag);
     html(r, ">\n");
+    if (level == 2) {
+        r->section_md_at = r->md_len;
+        r->section_html_at = r->html_len;
+    }
+}
+
+/* The length of text's opening words: its first sentence (up to ". "),
+ * cut at a space before REPORT_FOLD_CHARACTERS / 2 characters if longer. */
+static size_t lead_length(const char *text)
+{
+    const char *stop = strstr(text, ". ");
+    size_t n = stop ? (size_t)(stop - text) + 1 : strlen(text), limit = REPORT_FOLD_CHARACTERS / 2;
+    if (n <= limit)
+        return n;
+    while (limit > 0 && text[limit] != ' ')
+        --limit;
+    return limit > 0 ? limit : REPORT_FOLD_CHARACTERS / 2;
+}
+
+/* A long paragraph in report.html: folded, its opening words showing. */
+static void folded_paragraph(report *r, const char *text)
+{
+    char lead[REPORT_FOLD_CHARACTERS];
+    size_t n = lead_length(text);
+    snprintf(lead, sizeof lead, "%.*s", (int)n, text);
+    html(r, "<details><summary><span class=\"lead\">");
+    html_escaped(r, lead);
+    html(r, text[n] ? " &hellip;</span> <i>(more)</i></summary><p>" : "</span></summary><p>");
+    html_escaped(r, text);
+    html(r, "</p></details>\n");
 }
 
 void report_paragraph(report *r, const char *fmt, ...)
@@ -175,9 +263,13 @@ void report_paragraph(report *r, const char *fmt, ...)
     va_end(ap);
     md(r, text);
     md(r, "\n\n");
-    html(r, "<p>");
-    html_escaped(r, text);
-    html(r, "</p>\n");
+    if (strlen(text) > REPORT_FOLD_CHARACTERS)
+        folded_paragraph(r, text);
+    else {
+        html(r, "<p>");
+        html_escaped(r, text);
+        html(r, "</p>\n");
+    }
 }
 
 /* A Markdown table cell: a '|' inside it would end the cell, so it is
@@ -231,33 +323,105 @@ void report_table_end(report *r)
     html(r, "</table>\n");
 }
 
-void report_figures(report *r, int count, const char *const *paths, const char *const *captions)
+/* An image's source and its colour bar's place, marked for
+ * figures_resolve (report/figure_resolve.h): FIGURE_SRC path FIGURE_SRC. */
+static void html_marked(report *r, const char *mark, const char *path)
 {
-    html(r, "<div>\n");
+    html(r, mark);
+    html(r, path);
+    html(r, mark);
+}
+
+/* The Markdown of a row of figures: the images with their captions. */
+static void md_figures(report *r, int count, const char *const *paths, const char *const *captions)
+{
     for (int i = 0; i < count; ++i) {
         md(r, "![");
         md(r, captions[i]);
         md(r, "](");
         md(r, paths[i]);
         md(r, ") ");
-        html(r, "<figure><a href=\"");
-        html_escaped(r, paths[i]);
-        html(r, "\"><img src=\"");
-        html_escaped(r, paths[i]);
-        html(r, "\" alt=\"");
-        html_escaped(r, captions[i]);
-        html(r, "\"></a><figcaption>");
-        html_escaped(r, captions[i]);
-        html(r, "</figcaption></figure>\n");
     }
     md(r, "\n\n");
+}
+
+/* One image with its caption: linked to itself in a row of figures, or
+ * as a pane of a comparison view; its colour bar's place marked. */
+static void html_figure(report *r, int in_view, const char *path, const char *caption)
+{
+    html(r, in_view ? "<figure class=\"cmp-pane\"><div class=\"cmp-clip\">" : "<figure><a href=\"");
+    if (!in_view) {
+        html_marked(r, FIGURE_SRC, path);
+        html(r, "\">");
+    }
+    html(r, "<img src=\"");
+    html_marked(r, FIGURE_SRC, path);
+    html(r, "\" alt=\"");
+    html_escaped(r, caption);
+    html(r, in_view ? "\" draggable=\"false\"></div>" : "\"></a>");
+    html_marked(r, FIGURE_BAR, path);
+    html(r, "<figcaption>");
+    html_escaped(r, caption);
+    html(r, "</figcaption></figure>\n");
+}
+
+void report_figures(report *r, int count, const char *const *paths, const char *const *captions)
+{
+    md_figures(r, count, paths, captions);
+    html(r, "<div>\n");
+    for (int i = 0; i < count; ++i)
+        html_figure(r, 0, paths[i], captions[i]);
     html(r, "</div>\n");
+}
+
+void report_comparison(report *r, int count, const char *const *paths, const char *const *labels, int exposed,
+                       const char *caption)
+{
+    char attribute[64];
+    md(r, caption);
+    md(r, ":\n\n");
+    md_figures(r, count, paths, labels);
+    snprintf(attribute, sizeof attribute, "<div class=\"cmp\" tabindex=\"0\" data-exposed=\"%d\">\n", exposed);
+    html(r, attribute);
+    html(r, "<div class=\"cmp-panes\">\n");
+    for (int i = 0; i < count; ++i)
+        html_figure(r, 1, paths[i], labels[i]);
+    html(r, "</div><p class=\"cmp-cap\">");
+    html_escaped(r, caption);
+    html(r, " <i>(click or keys 1-9, n, p to flip; s side by side; wheel to zoom, drag to pan, 0 to reset)</i></p>"
+            "</div>\n");
 }
 
 void report_findings_here(report *r)
 {
     r->findings_md_at = r->md_len;
     r->findings_html_at = r->html_len;
+}
+
+/* One finding as a list item of a Markdown and an HTML list; with an
+ * anchor, its topic links there. */
+static void finding_item(report *r, void (*put_md)(report *, const char *),
+                         void (*put)(report *, const char *, int), const char *anchor, const char *topic,
+                         const char *text)
+{
+    put_md(r, anchor ? "- **[" : "- **");
+    put_md(r, topic);
+    if (anchor) {
+        put_md(r, "](#");
+        put_md(r, anchor);
+        put_md(r, ")");
+        put(r, "<li><b><a href=\"#", 0);
+        put(r, anchor, 0);
+        put(r, "\">", 0);
+    } else
+        put(r, "<li><b>", 0);
+    put_md(r, "**: ");
+    put_md(r, text);
+    put_md(r, "\n");
+    put(r, topic, 1);
+    put(r, anchor ? "</a></b>: " : "</b>: ", 0);
+    put(r, text, 1);
+    put(r, "</li>\n", 0);
 }
 
 void report_finding(report *r, const char *topic, const char *fmt, ...)
@@ -267,33 +431,25 @@ void report_finding(report *r, const char *topic, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
-    const char *anchor = r->section_anchor;
-    finding_md(r, anchor[0] ? "- **[" : "- **");
-    finding_md(r, topic);
-    if (anchor[0]) {
-        finding_md(r, "](#");
-        finding_md(r, anchor);
-        finding_md(r, ")");
-    }
-    finding_md(r, "**: ");
-    finding_md(r, text);
-    finding_md(r, "\n");
-    finding_html(r, "<li><b>", 0);
-    if (anchor[0]) {
-        finding_html(r, "<a href=\"#", 0);
-        finding_html(r, anchor, 0);
-        finding_html(r, "\">", 0);
-    }
-    finding_html(r, topic, 1);
-    finding_html(r, anchor[0] ? "</a></b>: " : "</b>: ", 0);
-    finding_html(r, text, 1);
-    finding_html(r, "</li>\n", 0);
+    const char *anchor = r->section_anchor[0] ? r->section_anchor : NULL;
+    finding_item(r, finding_md, finding_html, anchor, topic, text);
+    if (anchor) /* the section's own conclusions */
+        finding_item(r, section_md, section_html, NULL, topic, text);
+}
+
+void report_add_headline(report *r, const report_headline *h)
+{
+    if (r->headline_count >= HEADLINES_MAX)
+        return;
+    report_headline *row = &r->headlines[r->headline_count++];
+    *row = *h;
+    snprintf(row->anchor, sizeof row->anchor, "%s", r->section_anchor);
 }
 
 /* `body` with the sections glance and contents (each with its head and
  * tail, or nothing when NULL) inserted at offset `at`, written atomically. */
 static int write_with_sections(const char *path, const char *body, size_t at, const char *const glance[3],
-                               const char *const contents[3], gt_error *e)
+                               const char *const contents[3], const char *resolve_dir, gt_error *e)
 {
     const char *parts[6];
     size_t n = strlen(body) + 1;
@@ -307,29 +463,55 @@ static int write_with_sections(const char *path, const char *body, size_t at, co
         return gt_error_set(e, path, "out of memory");
     snprintf(text, n, "%.*s%s%s%s%s%s%s%s", (int)at, body, parts[0], parts[1], parts[2], parts[3], parts[4],
              parts[5], body + at);
-    int rc = atomic_write_text(path, text, e);
+    char *resolved = resolve_dir ? figures_resolve(text, resolve_dir) : NULL;
+    int rc = resolve_dir && !resolved ? gt_error_set(e, path, "out of memory")
+                                      : atomic_write_text(path, resolved ? resolved : text, e);
+    free(resolved);
     free(text);
     return rc;
 }
 
+/* The heads of the "At a glance" section: its title, the summary table and
+ * the findings list's opening (malloc'd; NULL when out of memory). */
+static int glance_heads(const report *r, char **md_head, char **html_head)
+{
+    char *table_md = NULL, *table_html = NULL;
+    *md_head = *html_head = NULL;
+    if (headlines_render(r->headlines, r->headline_count, &table_md, &table_html) == 0 &&
+        (asprintf(md_head, "## At a glance\n\n%s", table_md) < 0 ||
+         asprintf(html_head, "<h2 id=\"at-a-glance\">At a glance</h2>\n%s<ul>\n", table_html) < 0))
+        *md_head = *html_head = NULL; /* asprintf leaves them undefined */
+    free(table_md);
+    free(table_html);
+    return *md_head && *html_head ? 0 : -1;
+}
+
 int report_write(report *r, const char *dir, gt_error *e)
 {
+    close_section(r);
     html(r, "</body></html>\n");
-    if (r->failed)
+    char *md_head, *html_head;
+    if (glance_heads(r, &md_head, &html_head) != 0 || r->failed) {
+        free(md_head), free(html_head);
         return gt_error_set(e, dir, "out of memory while writing the report");
-    int glance = r->findings_md_len > 0, contents = r->findings_html_at > 0 && r->contents_md_len > 0;
-    const char *const glance_md[3] = {"## At a glance\n\n", r->findings_md, "\n"};
+    }
+    int glance = r->findings_md_len > 0 || r->headline_count > 0;
+    int contents = r->findings_html_at > 0 && r->contents_md_len > 0;
+    const char *const glance_md[3] = {md_head, r->findings_md ? r->findings_md : "", "\n"};
     const char *const contents_md[3] = {"## Contents\n\n", r->contents_md, "\n"};
-    const char *const glance_html[3] = {"<h2 id=\"at-a-glance\">At a glance</h2>\n<ul>\n", r->findings_html, "</ul>\n"};
+    const char *const glance_html[3] = {html_head, r->findings_html ? r->findings_html : "", "</ul>\n"};
     const char *const contents_html[3] = {"<h2 id=\"contents\">Contents</h2>\n<ul>\n", r->contents_html, "</ul>\n"};
     char path[4096];
     snprintf(path, sizeof path, "%s/report.md", dir);
-    if (write_with_sections(path, r->md, glance || contents ? r->findings_md_at : 0, glance ? glance_md : NULL,
-                            contents ? contents_md : NULL, e) != 0)
-        return -1;
+    int rc = write_with_sections(path, r->md, glance || contents ? r->findings_md_at : 0, glance ? glance_md : NULL,
+                                 contents ? contents_md : NULL, NULL, e);
     snprintf(path, sizeof path, "%s/report.html", dir);
-    return write_with_sections(path, r->html, glance || contents ? r->findings_html_at : 0,
-                               glance ? glance_html : NULL, contents ? contents_html : NULL, e);
+    if (rc == 0)
+        rc = write_with_sections(path, r->html, glance || contents ? r->findings_html_at : 0,
+                                 glance ? glance_html : NULL, contents ? contents_html : NULL, dir, e);
+    free(md_head);
+    free(html_head);
+    return rc;
 }
 
 void report_free(report *r)
@@ -341,5 +523,7 @@ void report_free(report *r)
     free(r->contents_md);
     free(r->contents_html);
     free(r->anchors);
+    free(r->section_md);
+    free(r->section_html);
     memset(r, 0, sizeof *r);
 }

@@ -8,13 +8,22 @@
  * and '_' dropped, and "-1", "-2", ... added to repeats (GitHub's rule for
  * Markdown headings, ASCII only), so links into report.md on a forge and
  * into report.html agree. The level-2 headings make the table of contents,
- * and each finding links to the section it came from. */
+ * and each finding links to the section it came from.
+ *
+ * Read at a glance: the top holds the summary table (report_headline.h: one
+ * row per technique that ranks variants) and the findings; each level-2
+ * section opens with its own findings (its conclusions, each with its
+ * number), and in report.html a paragraph longer than
+ * REPORT_FOLD_CHARACTERS is folded into <details> under its opening words. */
 #ifndef GTLAB_CLI_REPORT_WRITER_H
 #define GTLAB_CLI_REPORT_WRITER_H
 
 #include <stdio.h>
 
 #include "core/error.h"
+#include "report/report_headline.h"
+
+enum { REPORT_FOLD_CHARACTERS = 320 };
 
 typedef struct {
     char *md, *html;   /* growing texts */
@@ -31,6 +40,12 @@ typedef struct {
     char *contents_md, *contents_html, *anchors;
     size_t contents_md_len, contents_html_len, anchors_len, contents_md_cap, contents_html_cap, anchors_cap;
     char section_anchor[128];
+    /* The current level-2 section's findings and where they go (just after
+     * its heading), inserted when the next one starts or at report_write. */
+    char *section_md, *section_html;
+    size_t section_md_len, section_html_len, section_md_cap, section_html_cap, section_md_at, section_html_at;
+    int headline_count;
+    report_headline headlines[HEADLINES_MAX];
 } report;
 
 void report_init(report *r, const char *title);
@@ -40,13 +55,24 @@ void report_paragraph(report *r, const char *fmt, ...) __attribute__((format(pri
 void report_table_begin(report *r, int columns, const char *const *headers);
 void report_table_row(report *r, const char *const *cells);
 void report_table_end(report *r);
-/* A row of figures: image paths relative to the report, with captions. */
+/* A row of figures: image paths relative to the report, with captions. In
+ * report.html a gnuplot plot is shown as its SVG at full width, and a
+ * heatmap with its colour bar (report/figure_resolve.h). */
 void report_figures(report *r, int count, const char *const *paths, const char *const *captions);
+/* One view shown several ways (report/compare_viewer.h): in report.html the
+ * images flip in one place, zoom and pan together, the first `exposed`
+ * (radiance previews) under an exposure slider, the rest (error maps) not;
+ * in report.md a row of figures. Paths relative to the report. */
+void report_comparison(report *r, int count, const char *const *paths, const char *const *labels, int exposed,
+                       const char *caption);
 /* Marks where the "At a glance" section and the contents go. */
 void report_findings_here(report *r);
 /* One finding for that section: a topic and a sentence computed from the
  * run's numbers (plain text), linked to the current level-2 section. */
 void report_finding(report *r, const char *topic, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+/* One row of the summary table, linked to the current level-2 section
+ * (ignored beyond HEADLINES_MAX rows). */
+void report_add_headline(report *r, const report_headline *h);
 /* Writes <dir>/report.md and <dir>/report.html atomically. */
 int report_write(report *r, const char *dir, gt_error *e);
 void report_free(report *r);

@@ -126,6 +126,20 @@ static const report_column errors_json[] = {
     REPORT_REAL(NULL, "rms_log_error_stderr", NULL, sphere_light_errors, rms_stderr),
 };
 
+/* The summary table's row: the three models by held-out mean |log error|;
+ * their standard errors are not paired, so the gap has no interval. */
+static void fit_headline(report *doc, const sphere_fit_outcome *o)
+{
+    const char *labels[SPHERE_FIT_MODELS];
+    double errors[SPHERE_FIT_MODELS];
+    for (int m = 0; m < SPHERE_FIT_MODELS; ++m)
+        labels[m] = o->held_out[m].method, errors[m] = o->held_out[m].errors.mean_abs;
+    report_headline h = {.topic = "GGX sphere lights", .measure = "held-out mean |log error|",
+                         .significance = HEADLINE_NOT_COMPUTED};
+    if (headline_rank(&h, SPHERE_FIT_MODELS, labels, errors) == 0)
+        report_add_headline(doc, &h);
+}
+
 static void report_fit(report_context *ctx, const sphere_fit_settings *fs, const sphere_fit_outcome *o, cJSON *json)
 {
     report *doc = ctx->doc;
@@ -159,6 +173,7 @@ static void report_fit(report_context *ctx, const sphere_fit_settings *fs, const
     cJSON *held = cJSON_AddObjectToObject(json, "held_out");
     for (int m = 0; m < SPHERE_FIT_MODELS; ++m)
         report_object(held, o->held_out[m].key, errors_json, COLUMNS(errors_json), &o->held_out[m].errors);
+    fit_headline(doc, o);
     report_finding(doc, "GGX sphere lights",
                    "held-out mean |log error| Karis %.3f, Decima as published %.3f, Decima refit %.3f "
                    "(radius reduction %.3g ± %.2g, published %g).",
@@ -255,9 +270,7 @@ static void scene_figures(report *doc, const sphere_scene_row *s)
     }
     for (int j = 0; j < 7; ++j)
         figs[j] = paths[j];
-    report_paragraph(doc, "%s:", s->title);
-    report_figures(doc, 4, figs, caps);
-    report_figures(doc, 3, figs + 4, caps + 4);
+    report_comparison(doc, 7, figs, caps, 4, s->title);
     char flips[SPHERE_SCENE_APPROX][256];
     const char *flip_caps[SPHERE_SCENE_APPROX] = {"FLIP of Karis", "FLIP of Decima", "FLIP of the refit"};
     for (int m = 0; m < SPHERE_SCENE_APPROX; ++m) {

@@ -190,10 +190,21 @@ static int heatmap(const char *figures, const char *stem, const char *scene_name
     return rc;
 }
 
+/* figures/<stem>_<scene>.png: the AO `ao` as a grey preview (the report's
+ * comparison view shows it beside the references and the heatmaps). */
+static int preview(const char *figures, const char *stem, const char *scene_name, const scene_data *d,
+                   const float *ao, gt_error *e)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s_%s.png", figures, stem, scene_name);
+    return image_write_preview(path, &ao, 1, d->g->width, d->g->height, 1.0f, e);
+}
+
 static int write_heatmaps(const char *figures, const char *name, const scene_data *d, const float *medium,
                           gt_error *e)
 {
-    if (heatmap(figures, "gtao_err_hf_vs_3d", name, d, d->hf, d->ref3d, e) != 0 ||
+    if (preview(figures, "gtao_hf", name, d, d->hf, e) != 0 || preview(figures, "gtao_medium", name, d, medium, e) != 0 ||
+        heatmap(figures, "gtao_err_hf_vs_3d", name, d, d->hf, d->ref3d, e) != 0 ||
         heatmap(figures, "gtao_err_medium_vs_hf", name, d, medium, d->hf, e) != 0)
         return -1;
     return heatmap(figures, "gtao_err_medium_vs_3d", name, d, medium, d->ref3d, e);

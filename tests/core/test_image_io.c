@@ -132,6 +132,17 @@ static void test_heatmap(const char *map, const int first[3], const int last[3])
             CHECK_MSG(abs(got - expected) <= 1, "%s pixel %d channel %d: %d, expected %d", map, i, c, got, expected);
         }
     }
+    /* The file records its scale, and the colour bar's colours at 0, 1/2
+     * and 1 (image_colour_map_srgb) are the pixels holding 0, vmax/2, vmax. */
+    char description[128], expected_description[128];
+    snprintf(expected_description, sizeof expected_description, "gtlab heatmap: %s, 0 to 0.25", map);
+    CHECK(image_read_description(path, description, sizeof description) == 0 &&
+          strcmp(description, expected_description) == 0);
+    unsigned char bar[9];
+    CHECK(image_colour_map_srgb(map, 3, bar) == 0);
+    for (int k = 0; k < 9; ++k)
+        CHECK_MSG(abs(bar[k] - byte_at(&img, k / 3, 0, k % 3)) <= 1, "%s bar stop %d channel %d: %d vs %d", map,
+                  k / 3, k % 3, bar[k], byte_at(&img, k / 3, 0, k % 3));
     /* matplotlib's own 8-bit end colours (OIIO stores its maps linearised
      * and decimated, so within 1 level). */
     for (int c = 0; c < 3; ++c) {
@@ -207,6 +218,10 @@ static void test_errors(void)
     check_error(image_write_preview(p, planes, 3, 0, 2, 1.0f, &e), &e, p, "zero width");
     p = in_test_dir("badmap.png");
     check_error(image_write_heatmap(p, v, NULL, 2, 2, 1.0f, "no-such-map", &e), &e, p, "unknown colour map");
+    unsigned char rgb[6];
+    CHECK(image_colour_map_srgb("no-such-map", 2, rgb) == -1 && image_colour_map_srgb("inferno", 1, rgb) == -1);
+    char text[16];
+    CHECK(image_read_description(p, text, sizeof text) == -1); /* no such file */
     p = in_test_dir("badrange.png");
     check_error(image_write_heatmap(p, v, NULL, 2, 2, 0.0f, "inferno", &e), &e, p, "vmax 0");
     check_error(image_write_heatmap(p, v, NULL, 2, 2, NAN, "inferno", &e), &e, p, "vmax NaN");

@@ -1,5 +1,6 @@
-/* report/gnuplot_plot.c: a good script gives a PNG (and keeps its .gp script),
- * a broken one gives an error naming the PNG and leaves no file behind. */
+/* report/gnuplot_plot.c: a good script gives a PNG (and keeps its .gp script)
+ * and an SVG of the same plot beside it, a broken one gives an error naming
+ * the PNG and leaves no file behind. */
 #include "report/gnuplot_plot.h"
 #include "tests/check.h"
 
@@ -15,6 +16,19 @@ static int png_signature(const char *path)
     size_t n = fread(head, 1, 8, f);
     fclose(f);
     return n == 8 && memcmp(head, "\x89PNG\r\n\x1a\n", 8) == 0;
+}
+
+/* Whether the file holds an SVG document with `text` in it. */
+static int svg_with(const char *path, const char *text)
+{
+    char buf[65536] = {0};
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return 0;
+    size_t n = fread(buf, 1, sizeof buf - 1, f);
+    fclose(f);
+    buf[n] = '\0';
+    return strstr(buf, "<svg") != NULL && strstr(buf, text) != NULL;
 }
 
 static int leftovers(const char *dir)
@@ -34,15 +48,20 @@ int main(void)
         fprintf(stderr, "gnuplot not installed (setup.sh installs gnuplot-nox): skipped\n");
         return 77;
     }
-    char png[1024], gp[1024], bad[1024];
+    char png[1024], gp[1024], bad[1024], svg[1024], bad_svg[1024];
     snprintf(png, sizeof png, "%s/plot_test.png", check_tmp_dir());
     snprintf(gp, sizeof gp, "%s/plot_test.gp", check_tmp_dir());
     snprintf(bad, sizeof bad, "%s/plot_bad.png", check_tmp_dir());
+    snprintf(svg, sizeof svg, "%s/plot_test.svg", check_tmp_dir());
+    snprintf(bad_svg, sizeof bad_svg, "%s/plot_bad.svg", check_tmp_dir());
     remove(png);
     remove(bad);
+    remove(svg);
+    remove(bad_svg);
     gt_error e;
     CHECK_MSG(gnuplot_render("plot x*x title 'x^2'\n", png, 320, 240, &e) == 0, "%s", e.message);
     CHECK(png_signature(png));
+    CHECK(svg_with(svg, "width=\"320\"") && svg_with(svg, "font-size=\"11"));
     FILE *script = fopen(gp, "r");
     CHECK(script != NULL);
     if (script)
@@ -53,6 +72,7 @@ int main(void)
     CHECK(none == NULL);
     if (none)
         fclose(none);
+    CHECK(!svg_with(bad_svg, "<svg"));
     CHECK(leftovers(check_tmp_dir()) == 0);
     return check_report("cli_gnuplot_plot");
 }

@@ -1,12 +1,21 @@
 /* report/report_writer.c: the report's Markdown and HTML say the same thing;
  * findings gathered while stages run land in one "At a glance" section right
- * after the introduction, before every stage's section; HTML special
+ * after the introduction, before every stage's section, after the summary
+ * table of the sections' headline rows (report/report_headline.c: best and
+ * runner-up ranked from the figures, the verdict from a paired difference or
+ * a noise floor); each section opens with its own findings; a long paragraph
+ * is folded in HTML, whole; in HTML a plot is shown as its SVG twin, a
+ * heatmap with its colour bar and range, and a comparison view holds its
+ * images (report/figure_resolve.c, report/compare_viewer.c); HTML special
  * characters are escaped; a report without findings has no such section. */
 #include "report/report_writer.h"
+#include "core/image_io.h"
 #include "tests/check.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 static char *read_all(const char *path)
 {
@@ -133,8 +142,154 @@ static void test_pipe_in_cell(void)
     report_free(&r);
 }
 
+/* Ranking leaves NaNs out and keeps the two lowest; the verdicts follow
+ * |d| > z s (strictly) and gap > floor. */
+static void test_headline_verdicts(void)
+{
+    report_headline h = {.topic = "t"};
+    const char *labels[4] = {"a", "b", "c", "d"};
+    CHECK(headline_rank(&h, 4, labels, (const double[]){0.3, NAN, 0.1, 0.2}) == 0);
+    CHECK(!strcmp(h.best, "c") && !strcmp(h.runner_up, "d") && h.best_error == 0.1 && h.runner_up_error == 0.2);
+    CHECK(headline_rank(&h, 2, labels, (const double[]){NAN, 1.0}) == -1 && !strcmp(h.best, "c"));
+    headline_from_difference(&h, 0.3, 0.1, "over 6 scenes");
+    CHECK(h.significance == HEADLINE_SIGNIFICANT && strstr(h.basis, "over 6 scenes"));
+    headline_from_difference(&h, -0.19, 0.1, "x");
+    CHECK(h.significance == HEADLINE_NOT_SIGNIFICANT);
+    headline_from_difference(&h, -0.2, 0.1, "x");
+    CHECK(h.significance == HEADLINE_SIGNIFICANT);
+    headline_from_difference(&h, 0.2, NAN, "x");
+    CHECK(h.significance == HEADLINE_NOT_COMPUTED);
+    headline_from_noise_floor(&h, 0.2); /* gap 0.1 */
+    CHECK(h.significance == HEADLINE_NOT_SIGNIFICANT && strstr(h.basis, "below"));
+    headline_from_noise_floor(&h, 0.05);
+    CHECK(h.significance == HEADLINE_ABOVE_NOISE_FLOOR && strstr(h.basis, "above"));
+}
+
+/* Headline rows make the summary table at the top, in the order registered,
+ * linked to their sections, with their verdicts; then the findings. */
+static void test_headline_table(void)
+{
+    report r;
+    report_init(&r, "title");
+    report_findings_here(&r);
+    report_heading(&r, 2, "Stage one");
+    report_headline h = {.topic = "AO <x>", .measure = "RMSE", .best = "b1", .runner_up = "r1", .best_error = 0.125,
+                         .runner_up_error = 0.25};
+    report_add_headline(&r, &h);
+    report_finding(&r, "AO", "first");
+    report_heading(&r, 2, "Stage two");
+    h = (report_headline){.topic = "GTAO", .measure = "DSSIM", .best = "b2", .runner_up = "r2", .best_error = 1,
+                          .runner_up_error = 2};
+    headline_from_difference(&h, 1.0, 0.25, "paired");
+    report_add_headline(&r, &h);
+    char *md, *html;
+    write_and_read(&r, &md, &html);
+    CHECK(occurs_before(md, "## At a glance\n\n| technique |", "| [AO <x>](#stage-one) | RMSE | b1 | 0.125 | r1 | 0.25 | not computed |"));
+    CHECK(occurs_before(md, "| [AO <x>](#stage-one) |", "| [GTAO](#stage-two) | DSSIM | b2 | 1 | r2 | 2 | significant at 95% (difference +1 +- 0.25, paired) |"));
+    CHECK(occurs_before(md, "| [GTAO](#stage-two) |", "- **[AO](#stage-one)**: first"));
+    CHECK(occurs_before(html, "<table class=\"glance\">", "<td><a href=\"#stage-one\">AO &lt;x&gt;</a></td><td>RMSE</td>"));
+    CHECK(occurs_before(html, "<tr class=\"sig\"><td><a href=\"#stage-two\">GTAO</a>", "<ul>\n<li><b><a href=\"#stage-one\">AO</a>"));
+    free(md);
+    free(html);
+    report_free(&r);
+}
+
+/* A section's findings open it (after its heading, before its body), in
+ * both files; a paragraph over REPORT_FOLD_CHARACTERS is folded in HTML
+ * under its first sentence, its whole text inside; Markdown keeps it. */
+static void test_conclusions_first_and_folding(void)
+{
+    char long_text[REPORT_FOLD_CHARACTERS + 64];
+    memset(long_text, 'w', sizeof long_text);
+    memcpy(long_text, "Lead <one>. ", 12);
+    long_text[sizeof long_text - 1] = '\0';
+    report r;
+    report_init(&r, "title");
+    report_findings_here(&r);
+    report_heading(&r, 2, "Stage one");
+    report_paragraph(&r, "body");
+    report_paragraph(&r, "%s", long_text);
+    report_finding(&r, "AO", "error %.2f", 0.25);
+    report_heading(&r, 2, "Stage two");
+    report_paragraph(&r, "second body");
+    report_finding(&r, "GTAO", "second");
+    char *md, *html;
+    write_and_read(&r, &md, &html);
+    CHECK(occurs_before(md, "## Stage one\n\nConclusions:\n\n- **AO**: error 0.25\n\nbody", long_text));
+    CHECK(md && strstr(md, "## Stage two\n\nConclusions:\n\n- **GTAO**: second\n\nsecond body"));
+    CHECK(md && !strstr(md, "<details>"));
+    CHECK(occurs_before(html, "<h2 id=\"stage-one\">Stage one</h2>\n<ul class=\"conclusions\">\n<li><b>AO</b>: error 0.25</li>\n</ul>\n<p>body</p>",
+                        "<details><summary><span class=\"lead\">Lead &lt;one&gt;. &hellip;</span>"));
+    CHECK(html && strstr(html, "<p>Lead &lt;one&gt;. www"));
+    CHECK(occurs_before(html, "<ul class=\"conclusions\">\n<li><b>GTAO</b>: second</li>\n</ul>\n<p>second body</p>", "</body>"));
+    free(md);
+    free(html);
+    report_free(&r);
+}
+
+static int count_of(const char *text, const char *what)
+{
+    int n = 0;
+    for (const char *p = text; p && (p = strstr(p, what)) != NULL; p += strlen(what))
+        ++n;
+    return n;
+}
+
+static void write_text(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (f) {
+        fputs(text, f);
+        fclose(f);
+    }
+}
+
+/* Figures as written: the plot (a PNG with an SVG twin) as its SVG, the
+ * heatmap with a colour bar carrying its map and range, a plain image as it
+ * was; no mark left; report.md keeps the PNGs. A comparison view holds its
+ * images and says how many take the exposure. */
+static void test_figures_resolved(void)
+{
+    char dir[1024], path[1200];
+    snprintf(dir, sizeof dir, "%s/figures", check_tmp_dir());
+    mkdir(dir, 0777);
+    const float values[4] = {0.0f, 0.1f, 0.2f, 0.5f};
+    gt_error e;
+    snprintf(path, sizeof path, "%s/heat.png", dir);
+    CHECK_MSG(image_write_heatmap(path, values, NULL, 2, 2, 0.5f, "viridis", &e) == 0, "%s", e.message);
+    snprintf(path, sizeof path, "%s/plot.png", dir);
+    write_text(path, "not read");
+    snprintf(path, sizeof path, "%s/plot.svg", dir);
+    write_text(path, "<svg xmlns=\"http://www.w3.org/2000/svg\"/>");
+    report r;
+    report_init(&r, "title");
+    const char *p[3] = {"figures/heat.png", "figures/plot.png", "figures/none.png"}, *c[3] = {"h", "p", "n"};
+    report_figures(&r, 3, p, c);
+    report_comparison(&r, 2, p, c, 1, "view");
+    char *md, *html;
+    write_and_read(&r, &md, &html);
+    CHECK(html && count_of(html, "src=\"figures/plot.svg\"") == 2 && !strstr(html, "figures/plot.png"));
+    CHECK(html && strstr(html, "<img src=\"figures/heat.png\" alt=\"h\"></a><div class=\"cbar\" title=\"viridis, "
+                               "linear from 0 to 0.5, clamped\"><span>0</span>"));
+    CHECK(html && strstr(html, "<span>0.5</span></div><figcaption>h</figcaption>"));
+    CHECK(html && count_of(html, "class=\"cbar\"") == 2);
+    CHECK(html && strstr(html, "<img src=\"figures/none.png\" alt=\"n\"></a><figcaption>n</figcaption>"));
+    CHECK(html && !strchr(html, '\x1f') && !strchr(html, '\x1e'));
+    CHECK(html && strstr(html, "<div class=\"cmp\" tabindex=\"0\" data-exposed=\"1\">"));
+    CHECK(html && count_of(html, "<figure class=\"cmp-pane\">") == 2 && strstr(html, "function gtlabViewer("));
+    CHECK(md && strstr(md, "![p](figures/plot.png)") && strstr(md, "view:\n\n![h](figures/heat.png) ![p](figures/plot.png)"));
+    free(md);
+    free(html);
+    report_free(&r);
+}
+
 int main(void)
 {
+    test_figures_resolved();
+    test_headline_verdicts();
+    test_headline_table();
+    test_conclusions_first_and_folding();
     test_pipe_in_cell();
     test_findings_after_introduction();
     test_no_findings_no_section();

@@ -1,0 +1,62 @@
+/* The report's summary table ("At a glance"): one row per technique that
+ * ranks variants, registered by its section while `gtlab all` runs and
+ * rendered once, at the top, by the writer (report_writer.c). A row holds
+ * the best variant and its error, the runner-up and its error on the same
+ * measure, and whether the gap between them is significant, taken from a
+ * figure the section already has, never typed in:
+ *
+ *   significant      a paired difference d with standard error s over the
+ *                    scenes has |d| > z s, z the 95% two-sided normal
+ *                    quantile (claims_table.h's CLAIM_Z);
+ *   not significant  |d| <= z s, or the gap is smaller than the
+ *                    references' own noise floor (their halves' distance);
+ *   above the noise floor  the gap exceeds that floor, with no interval;
+ *   not computed     the section has no figure for it.
+ *
+ *   report_headline h = {.topic = "GGX sphere lights", .measure = "...",
+ *                        .best = "Decima refit", .best_error = 0.149, ...};
+ *   headline_from_difference(&h, d, s, "paired over 6 scenes");
+ *   report_add_headline(ctx->doc, &h);   (the current section's anchor) */
+#ifndef GTLAB_REPORT_HEADLINE_H
+#define GTLAB_REPORT_HEADLINE_H
+
+enum { HEADLINES_MAX = 48, HEADLINE_TEXT = 160 };
+
+typedef enum {
+    HEADLINE_NOT_COMPUTED,
+    HEADLINE_SIGNIFICANT,
+    HEADLINE_NOT_SIGNIFICANT,
+    HEADLINE_ABOVE_NOISE_FLOOR
+} headline_significance;
+
+typedef struct {
+    char topic[HEADLINE_TEXT];   /* the technique */
+    char measure[HEADLINE_TEXT]; /* what the errors are: "mean DSSIM vs the Monte Carlo reference" */
+    char best[HEADLINE_TEXT], runner_up[HEADLINE_TEXT];
+    double best_error, runner_up_error;
+    headline_significance significance;
+    char basis[HEADLINE_TEXT];   /* the figure the verdict rests on */
+    char anchor[128];            /* the section's (set by report_add_headline) */
+} report_headline;
+
+/* Sets best and runner-up (and their errors) to the two lowest of
+ * errors[0..count), NaNs left out (ties keep the earlier); -1 (h unchanged)
+ * when fewer than two are numbers. */
+int headline_rank(report_headline *h, int count, const char *const *labels, const double *errors);
+
+/* The verdict of a paired difference d +- s (its mean and standard error);
+ * `over` says what it is paired over. A NaN s leaves it not computed. */
+void headline_from_difference(report_headline *h, double d, double s, const char *over);
+/* The verdict of the gap |best - runner-up| against a noise floor on the
+ * same measure (the distance between two halves of the reference). */
+void headline_from_noise_floor(report_headline *h, double floor);
+
+/* "significant at 95%", "not significant at this quality", "above the
+ * noise floor (no interval)", "not computed". */
+const char *headline_significance_name(headline_significance s);
+
+/* The summary table as Markdown and HTML (malloc'd, NULL-terminated; both
+ * NULL when out of memory); an empty string for no rows. */
+int headlines_render(const report_headline *rows, int count, char **md, char **html);
+
+#endif

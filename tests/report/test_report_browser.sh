@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# The report in a real browser (issue 14, item 5): a small 'gtlab all' run's
+# report.html loaded by Debian's headless Chromium must log nothing to the
+# console (the report's script logs nothing, so any line is an error or a
+# stray message), load every image (naturalWidth > 0: the plots' SVGs, the
+# heatmaps, the previews), resolve every #anchor link, and run its
+# comparison views' script; a screenshot is kept beside it. The checker
+# (report_check.html) reports from a frame, which file:// allows with
+# --allow-file-access-from-files; a copy of the report with a missing image,
+# a dangling anchor and a console error must fail it (the check can fail).
+# Skipped (77) without chromium.
+gtlab=$1
+work=$2
+checker=$3
+command -v chromium >/dev/null || { echo "chromium not found (Debian package chromium): skipped"; exit 77; }
+rm -rf "$work" && mkdir -p "$work"
+source "$(dirname "$0")/../cli/cli_test_lib.sh"
+out=$work/out
+
+browser() {
+  timeout 120 chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --user-data-dir="$work/profile" \
+    --enable-logging=stderr --v=0 "$@"
+}
+
+# check PAGE: loads PAGE through the checker; the console lines in $work/console.
+check() {
+  sed "s|src=\"report.html\"|src=\"$1\"|" "$checker" >"$out/check_$1"
+  browser --allow-file-access-from-files --virtual-time-budget=20000 --dump-dom "file://$out/check_$1" \
+    >"$work/dom" 2>"$work/log"
+  grep -a 'INFO:CONSOLE' "$work/log" >"$work/console" || true
+}
+
+expect_ok all all --stages ao,hdr-precision --quality preview --threads 2 -o "$out"
+check report.html
+strays=$(grep -v 'GTLAB-CHECK' "$work/console")
+[ -z "$strays" ] && pass || fail "report.html logged to the console: $strays"
+grep -q 'GTLAB-CHECK: PASS' "$work/console" && pass || fail "$(grep -o 'GTLAB-CHECK: [^"]*' "$work/console")"
+summary=$(grep -o 'GTLAB-CHECK: PASS[^"]*' "$work/console")
+echo "$summary"
+# What was checked is there: the AO previews and standard-error heatmaps
+# with their colour bars, their comparison views, the HDR section's plot as
+# SVG, the contents' and the summary's links.
+for what in 'images=[1-9][0-9]' 'svg=[1-9]' 'bars=[1-9]' 'views=[1-9]' 'anchors=[1-9]'; do
+  echo "$summary" | grep -q "$what" && pass || fail "expected $what in: $summary"
+done
+
+# The check fails on a broken copy.
+sed -e 's|</body>|<img src="figures/no_such.png"><a href="#no-such-anchor">x</a><script>console.error("broken")</script></body>|' \
+  "$out/report.html" >"$out/broken.html"
+check broken.html
+grep -q 'GTLAB-CHECK: image not loaded: figures/no_such.png' "$work/console" && pass || fail "missing image not caught"
+grep -q 'GTLAB-CHECK: anchor does not resolve: #no-such-anchor' "$work/console" && pass || fail "dangling anchor not caught"
+grep -v 'GTLAB-CHECK' "$work/console" | grep -q '"broken"' && pass || fail "console error not caught"
+
+browser --screenshot="$out/report_screenshot.png" --window-size=1280,2400 "file://$out/report.html" >/dev/null 2>&1
+[ -s "$out/report_screenshot.png" ] && pass || fail "no screenshot"
+echo "screenshot: $out/report_screenshot.png"
+echo "passed $passed, failed $failed"
+[ "$failed" -eq 0 ]
