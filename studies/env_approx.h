@@ -18,7 +18,8 @@
  * exact irradiance map; specular, the split sum times each specular-
  * occlusion variant (AO as V_s, Lagarde, cone/cone with the talk's exp2
  * aperture, the GTSO cone/lobe LUT 32^3, cone/cone normalised above the
- * horizon). The one-bounce combinations are scored against the direct
+ * horizon, the spherical-Gaussian cone/lobe product of Unity HDRP,
+ * realtime/specular_occlusion_sg.h). The one-bounce combinations are scored against the direct
  * diffuse reference, the multi-bounce ones against the reference with
  * inter-reflections.
  *
@@ -43,13 +44,13 @@ enum {
     ENV_STUDY_MAX_ENVIRONMENTS = 12,
     ENV_STUDY_MAX_SCENES = 8,
     ENV_STUDY_OCCLUDED_KINDS = ENV_DIFFUSE_KINDS - 1, /* ao-n .. multibounce-bent */
-    ENV_STUDY_SO_VARIANTS = 5
+    ENV_STUDY_SO_VARIANTS = 6
 };
 typedef enum { ENV_PART_LIGHTING, ENV_PART_OCCLUSION, ENV_PART_TOTAL, ENV_PARTS } env_error_part;
 const char *env_error_part_name(env_error_part p); /* "lighting", "occlusion", "total" */
 
 /* The specular-occlusion variants, in this order. */
-const char *env_study_so_label(int variant); /* "ao", "lagarde", "cone-exact:exp2-alpha", "lut", "cone-horizon:exp2-alpha" */
+const char *env_study_so_label(int variant); /* "ao", "lagarde", "cone-exact:exp2-alpha", "lut", "cone-horizon:exp2-alpha", "sg" */
 
 typedef struct {
     double rmse, dssim; /* relative RMSE, DSSIM (header) */

@@ -8,7 +8,7 @@
 #include "studies/env_approx.h"
 
 static const char *const so_labels[ENV_STUDY_SO_VARIANTS] = {"ao", "lagarde", "cone-exact:exp2-alpha", "lut",
-                                                             "cone-horizon:exp2-alpha"};
+                                                             "cone-horizon:exp2-alpha", "sg"};
 const char *env_study_so_label(int variant)
 {
     return variant >= 0 && variant < ENV_STUDY_SO_VARIANTS ? so_labels[variant] : "?";
