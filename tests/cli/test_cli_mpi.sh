@@ -11,6 +11,13 @@
 gtlab=$1
 work=$2
 mpirun=$3
+# Under AddressSanitizer (CI's second build) Open MPI's components, loaded
+# at run time, keep allocations until exit and are unloaded before
+# LeakSanitizer reports, so they show as "<unknown module>" and no
+# suppression by library name (.ci/lsan.supp) matches them: these runs go
+# without leak detection (every other sanitizer check stays on; the
+# renders' own code is leak-checked by the single-process tests).
+export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
 rm -rf "$work" && mkdir -p "$work"
 source "$(dirname "$0")/cli_test_lib.sh"
 cd "$work" || exit 1
@@ -31,7 +38,7 @@ for name in "${!renders[@]}"; do
   case $name in ao | ao-target | fog) counts=(2 3) ;; esac
   for n in "${counts[@]}"; do
     mkdir -p "n$n-$name"
-    if "$mpirun" --allow-run-as-root --oversubscribe --mca pml ob1 --mca btl self,vader -n "$n" "$gtlab" render "${args[@]}" "${size[@]}" \
+    if "$mpirun" -x ASAN_OPTIONS --allow-run-as-root --oversubscribe --mca pml ob1 --mca btl self,vader -n "$n" "$gtlab" render "${args[@]}" "${size[@]}" \
         -o "n$n-$name/out.exr" >"n$n-$name.log" 2>&1; then pass; else fail "$name -n $n: $(tail -c 600 "n$n-$name.log")"; fi
     cmp -s "$name-1.exr" "n$n-$name/out.exr" && pass || fail "$name: mpirun -n $n differs from one process"
     # rank 0 alone wrote: the output and its camera, nothing else.
@@ -43,7 +50,7 @@ done
 # gtlab bench scale, alone and on 2 ranks: one table, from rank 0.
 expect_ok bench-scale-1 bench scale
 grep -q "^  reduction .* 0 film(s)" "$work/stdout" && pass || fail "bench scale alone: $(cat "$work/stdout")"
-"$mpirun" --allow-run-as-root --oversubscribe --mca pml ob1 --mca btl self,vader -n 2 "$gtlab" bench scale >scale.log 2>&1 \
+"$mpirun" -x ASAN_OPTIONS --allow-run-as-root --oversubscribe --mca pml ob1 --mca btl self,vader -n 2 "$gtlab" bench scale >scale.log 2>&1 \
   && pass || fail "bench scale -n 2: $(tail -c 600 scale.log)"
 [ "$(grep -c "^  reduction .* 1 film(s)" scale.log)" -eq 1 ] && [ "$(grep -c "^  projected" scale.log)" -eq 3 ] && pass \
   || fail "bench scale -n 2 printed: $(cat scale.log)"
