@@ -214,6 +214,6 @@ static int environment_diffuse_sample_batch(const integrator *self, const pixel_
 integrator environment_diffuse_integrator(const embree_scene *es, const environment_diffuse_plan *plan)
 {
     integrator it = {"env-diffuse", ENV_DIFFUSE_QUANTITIES, plan->quantities, NULL, environment_diffuse_sample_batch,
-                     es, plan};
+                     es, plan, 0};
     return it;
 }
