@@ -113,3 +113,80 @@ void environment_sampler_lookup(const environment_sampler *s, vec3 w, float rgb[
         rgb[c] = s->texel[t][c];
     *pdf = s->texel[t][3];
 }
+
+/* ---- Many at once (see the header) ------------------------------------------ */
+
+enum { CHUNK = 64 }; /* directions per pass: the prefetches in flight */
+
+/* Passes 1 and 2 of n <= CHUNK draws: each row (offset t0) and, through
+ * its guide entry, where its column search starts (lo), prefetching the
+ * next pass's loads. */
+static void draw_rows(const environment_sampler *s, int n, const float (*u)[2], int *row, double *t0, int *lo)
+{
+    const distribution_2d *d = &s->texels;
+    const int *guide[CHUNK];
+    for (int i = 0; i < n; ++i) {
+        row[i] = distribution_1d_sample(&d->marginal, u[i][0], &t0[i]);
+        guide[i] = distribution_1d_guide_of(&d->conditional[row[i]], u[i][1]);
+        __builtin_prefetch(guide[i]);
+    }
+    for (int i = 0; i < n; ++i) {
+        lo[i] = *guide[i];
+        __builtin_prefetch(&d->conditional[row[i]].cdf[lo[i]]);
+        __builtin_prefetch(&d->conditional[row[i]].cdf[lo[i] + 1]);
+    }
+}
+
+/* n <= CHUNK draws of a sampled (non-constant) environment. */
+static void sample_chunk(const environment_sampler *s, int n, const float (*u)[2], vec3 *w)
+{
+    int row[CHUNK], lo[CHUNK];
+    double t0[CHUNK];
+    draw_rows(s, n, u, row, t0, lo);
+    for (int i = 0; i < n; ++i) {
+        double t[2] = {t0[i], 0.0};
+        int column = distribution_1d_sample_from(&s->texels.conditional[row[i]], u[i][1], lo[i], &t[1]);
+        __builtin_prefetch(s->texel[(size_t)row[i] * s->env->width + column]);
+        w[i] = environment_map_to_world(s->env, texel_direction(s, row[i], column, t));
+    }
+}
+
+void environment_sampler_sample_many(const environment_sampler *s, int n, const float (*u)[2], vec3 *w)
+{
+    float pdf;
+    for (int first = 0; first < n; first += CHUNK) {
+        int m = n - first < CHUNK ? n - first : CHUNK;
+        if (environment_map_is_constant(s->env))
+            for (int i = first; i < first + m; ++i)
+                w[i] = environment_sampler_sample(s, u[i], &pdf);
+        else
+            sample_chunk(s, m, u + first, w + first);
+    }
+}
+
+/* n <= CHUNK lookups in a map with texels: the indices (prefetched), then the loads. */
+static void lookup_chunk(const environment_sampler *s, int n, const vec3 *w, float (*rgb)[3], float *pdf)
+{
+    size_t t[CHUNK];
+    for (int i = 0; i < n; ++i) {
+        t[i] = (size_t)environment_texel_of(s->env, environment_world_to_map(s->env, w[i]));
+        __builtin_prefetch(s->texel[t[i]]);
+    }
+    for (int i = 0; i < n; ++i) {
+        for (int c = 0; c < 3; ++c)
+            rgb[i][c] = s->texel[t[i]][c];
+        pdf[i] = s->texel[t[i]][3];
+    }
+}
+
+void environment_sampler_lookup_many(const environment_sampler *s, int n, const vec3 *w, float (*rgb)[3], float *pdf)
+{
+    for (int first = 0; first < n; first += CHUNK) {
+        int m = n - first < CHUNK ? n - first : CHUNK;
+        if (environment_map_is_constant(s->env))
+            for (int i = first; i < first + m; ++i)
+                environment_sampler_lookup(s, w[i], rgb[i], &pdf[i]);
+        else
+            lookup_chunk(s, m, w + first, rgb + first, pdf + first);
+    }
+}
