@@ -52,7 +52,8 @@
  * Scores per case: RMSE over RGB (terrain pixels, sky pixels, the whole
  * image; the fisheye's circle) and DSSIM (metrics/ssim.h) of the green
  * channel with both images divided by the reference's largest green value
- * (SSIM's dynamic range L = 1), and RMSE relative to the reference's RMS.
+ * (SSIM's dynamic range L = 1), RMSE relative to the reference's RMS, and
+ * the median over pixels of |model - reference| / reference (green).
  * No sun disc in either image. Files (in the directory given):
  * aerial_<weather>_sunNN.exr and fisheye_<weather>_sunNN.exr (channels
  * aerial_reference.*, aerial_model.* (published), aerial_model_corrected.*,
@@ -89,7 +90,8 @@ typedef struct {
     double rmse_terrain[AERIAL_MODELS], rmse_sky, rmse_view[AERIAL_MODELS];    /* RGB */
     double relative_rmse_view[AERIAL_MODELS]; /* rmse_view / the reference's RMS */
     double dssim_view[AERIAL_MODELS];
-    double rmse_fisheye, relative_rmse_fisheye, dssim_fisheye;
+    double median_relative_view[AERIAL_MODELS]; /* median over pixels of |model - reference| / reference, green */
+    double rmse_fisheye, relative_rmse_fisheye, dssim_fisheye, median_relative_fisheye;
     double reference_error;    /* the quadrature's largest estimate, relative to its scale */
 } aerial_case;
 

@@ -65,6 +65,29 @@ static int green_dssim(const aerial_rays *rays, const float *model, const float 
     return rc;
 }
 
+/* |model - reference| / reference (0 where the reference is 0), malloc'd; NULL out of memory. */
+static float *relative_error_plane(const float *model, const float *reference, size_t n)
+{
+    float *rel = malloc(n * sizeof(float));
+    for (size_t i = 0; rel && i < n; ++i)
+        rel[i] = reference[i] > 0.0f ? fabsf(model[i] - reference[i]) / reference[i] : 0.0f;
+    return rel;
+}
+
+/* The median over select of |model - reference| / reference. */
+static int median_relative(const aerial_rays *rays, const float *model, const float *reference, const float *select,
+                           double *median, gt_error *e)
+{
+    size_t n = (size_t)rays->width * rays->height;
+    float *rel = relative_error_plane(model, reference, n), value = 0.0f;
+    if (!rel)
+        return gt_error_set(e, WHAT, "out of memory");
+    int rc = metrics_percentile(rel, select, n, 50.0, WHAT, &value, e);
+    *median = value;
+    free(rel);
+    return rc;
+}
+
 static int score_view(const aerial_rays *rays, const aerial_planes *p, aerial_case *c, gt_error *e)
 {
     size_t n = (size_t)rays->width * rays->height;
@@ -84,6 +107,8 @@ static int score_view(const aerial_rays *rays, const aerial_planes *p, aerial_ca
         c->rmse_view[m] = rgb_rmse(p->model[m], p->reference, NULL, n);
         c->relative_rmse_view[m] = rms > 0.0 ? c->rmse_view[m] / rms : 0.0;
         rc = green_dssim(rays, p->model[m][1], p->reference[1], NULL, &c->dssim_view[m], e);
+        if (rc == 0)
+            rc = median_relative(rays, p->model[m][1], p->reference[1], NULL, &c->median_relative_view[m], e);
     }
     free(sky);
     return rc;
@@ -99,7 +124,9 @@ int aerial_score(const aerial_rays *rays, const aerial_planes *planes, int is_vi
     c->rmse_fisheye = rgb_rmse(planes->model[0], planes->reference, rays->inside, n);
     double rms = rgb_rmse(planes->reference, NULL, rays->inside, n);
     c->relative_rmse_fisheye = rms > 0.0 ? c->rmse_fisheye / rms : 0.0;
-    return green_dssim(rays, planes->model[0][1], planes->reference[1], rays->inside, &c->dssim_fisheye, e);
+    if (green_dssim(rays, planes->model[0][1], planes->reference[1], rays->inside, &c->dssim_fisheye, e) != 0)
+        return -1;
+    return median_relative(rays, planes->model[0][1], planes->reference[1], rays->inside, &c->median_relative_fisheye, e);
 }
 
 /* ---- Files ----------------------------------------------------------------- */
@@ -158,13 +185,10 @@ static int write_side_by_side(const char *path, const aerial_rays *rays, const a
 /* |model - reference| / reference of the published model, green. */
 static int write_error(const char *path, const aerial_rays *rays, const aerial_planes *p, gt_error *e)
 {
-    size_t n = (size_t)rays->width * rays->height;
-    float *rel = calloc(n, sizeof(float));
+    float *rel = relative_error_plane(p->model[AERIAL_MODEL_PUBLISHED][1], p->reference[1],
+                                      (size_t)rays->width * rays->height);
     if (!rel)
         return gt_error_set(e, WHAT, "out of memory");
-    const float *r = p->reference[1], *m = p->model[AERIAL_MODEL_PUBLISHED][1];
-    for (size_t i = 0; i < n; ++i)
-        rel[i] = r[i] > 0.0f ? fabsf(m[i] - r[i]) / r[i] : 0.0f;
     int rc = image_write_heatmap(path, rel, rays->inside, rays->width, rays->height, 0.5f, "inferno", e);
     free(rel);
     return rc;
