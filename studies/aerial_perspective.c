@@ -30,23 +30,6 @@ typedef struct {
     atmosphere_luts luts;
 } aerial_atmosphere;
 
-/* The distinct t values of the sizes' t axes into t (at most 3 x 256). */
-static int distinct_blends(const atmosphere_lut_sizes *sizes, double *t)
-{
-    const int *axes[3] = {sizes->inscatter, sizes->sun, sizes->sky};
-    int count = 0;
-    for (int a = 0; a < 3; ++a)
-        for (int i = 0; i < axes[a][ATMOSPHERE_AXIS_WEATHER]; ++i) {
-            double v = atmosphere_lut_axis_value(ATMOSPHERE_AXIS_WEATHER, i, axes[a][ATMOSPHERE_AXIS_WEATHER], 0.0);
-            int seen = 0;
-            for (int k = 0; k < count; ++k)
-                seen |= t[k] == v;
-            if (!seen)
-                t[count++] = v;
-        }
-    return count;
-}
-
 static void atmosphere_free(aerial_atmosphere *a)
 {
     for (int k = 0; k < a->count; ++k)
@@ -63,7 +46,7 @@ static int atmosphere_prepare(const aerial_perspective_request *rq, int threads,
     memset(a, 0, sizeof *a);
     if (atmosphere_lut_sizes_check(&rq->sizes, msg, sizeof msg) != 0)
         return gt_error_set(e, "aerial perspective", "%s", msg);
-    int n = distinct_blends(&rq->sizes, t);
+    int n = atmosphere_lut_blends(&rq->sizes, t);
     atmosphere_model m = atmosphere_model_default();
     a->solutions = calloc((size_t)n, sizeof *a->solutions);
     for (int k = 0; a->solutions && k < n; ++k, ++a->count)

@@ -87,6 +87,7 @@ typedef struct {
     double fog_scale_height;   /* the fitted H [m] */
     int terrain_pixels, sky_pixels, fisheye_pixels;
     double reference_mean_terrain, reference_mean_sky, reference_mean_fisheye; /* green */
+    double model_mean_terrain[AERIAL_MODELS], model_mean_sky, model_mean_fisheye;  /* green */
     double rmse_terrain[AERIAL_MODELS], rmse_sky, rmse_view[AERIAL_MODELS];    /* RGB */
     double relative_rmse_view[AERIAL_MODELS]; /* rmse_view / the reference's RMS */
     double dssim_view[AERIAL_MODELS];

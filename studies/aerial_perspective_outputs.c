@@ -99,10 +99,12 @@ static int score_view(const aerial_rays *rays, const aerial_planes *p, aerial_ca
     c->terrain_pixels = count_inside(rays->terrain, n), c->sky_pixels = count_inside(sky, n);
     c->reference_mean_terrain = plane_mean(p->reference[1], rays->terrain, n);
     c->reference_mean_sky = plane_mean(p->reference[1], sky, n);
+    c->model_mean_sky = plane_mean(p->model[0][1], sky, n);
     c->rmse_sky = rgb_rmse(p->model[0], p->reference, sky, n);
     double rms = rgb_rmse(p->reference, NULL, NULL, n);
     int rc = 0;
     for (int m = 0; m < AERIAL_MODELS && rc == 0; ++m) {
+        c->model_mean_terrain[m] = plane_mean(p->model[m][1], rays->terrain, n);
         c->rmse_terrain[m] = rgb_rmse(p->model[m], p->reference, rays->terrain, n);
         c->rmse_view[m] = rgb_rmse(p->model[m], p->reference, NULL, n);
         c->relative_rmse_view[m] = rms > 0.0 ? c->rmse_view[m] / rms : 0.0;
@@ -121,6 +123,7 @@ int aerial_score(const aerial_rays *rays, const aerial_planes *planes, int is_vi
     size_t n = (size_t)rays->width * rays->height;
     c->fisheye_pixels = count_inside(rays->inside, n);
     c->reference_mean_fisheye = plane_mean(planes->reference[1], rays->inside, n);
+    c->model_mean_fisheye = plane_mean(planes->model[0][1], rays->inside, n);
     c->rmse_fisheye = rgb_rmse(planes->model[0], planes->reference, rays->inside, n);
     double rms = rgb_rmse(planes->reference, NULL, rays->inside, n);
     c->relative_rmse_fisheye = rms > 0.0 ? c->rmse_fisheye / rms : 0.0;
