@@ -45,6 +45,11 @@ static const report_column fisheye_columns[] = {
     REPORT_REAL("rel. RMSE", "relative_rmse_fisheye", "%.3f", ROW, relative_rmse_fisheye),
     REPORT_REAL("DSSIM", "dssim_fisheye", "%.4f", ROW, dssim_fisheye),
     REPORT_REAL("median rel. error", "median_relative_fisheye", "%.3f", ROW, median_relative_fisheye),
+    REPORT_REAL("rel. RMSE, finer LUT", "relative_rmse_fisheye_fine", "%.3f", ROW, relative_rmse_fisheye_fine),
+    REPORT_REAL("median rel. error, finer LUT", "median_relative_fisheye_fine", "%.3f", ROW,
+                median_relative_fisheye_fine),
+    REPORT_REAL(NULL, "rmse_fisheye_fine", NULL, ROW, rmse_fisheye_fine),
+    REPORT_REAL(NULL, "dssim_fisheye_fine", NULL, ROW, dssim_fisheye_fine),
     REPORT_INT(NULL, "fisheye_pixels", ROW, fisheye_pixels),
 };
 #undef ROW
@@ -96,8 +101,12 @@ void aerial_perspective_section(report_context *ctx, cJSON *json, const char *di
         cJSON_AddNumberToObject(section, "seconds", r->seconds);
     report_rows(ctx->doc, section ? cJSON_AddArrayToObject(section, "views") : NULL, view_columns,
                 (int)(sizeof view_columns / sizeof view_columns[0]), r->cases, sizeof r->cases[0], r->case_count);
+    const int *f = rq->fine.inscatter;
     report_paragraph(ctx->doc, "The sky alone: the fisheye from the ground, LUT (L_background at y = 0) against the "
-                               "reference; this isolates the tables' sky error, theta_sv included.");
+                               "reference; this isolates the tables' sky error, theta_sv included. Again with a "
+                               "finer in-scatter table (%d, %d, %d, %d), %.0f KB: what remains is not the "
+                               "tables' resolution.", f[0], f[1], f[2], f[3],
+                     atmosphere_lut_bytes(ATMOSPHERE_TABLE_INSCATTER, f) / 1024.0);
     report_rows(ctx->doc, section ? cJSON_AddArrayToObject(section, "fisheyes") : NULL, fisheye_columns,
                 (int)(sizeof fisheye_columns / sizeof fisheye_columns[0]), r->cases, sizeof r->cases[0],
                 r->case_count);

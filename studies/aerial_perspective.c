@@ -16,7 +16,7 @@ static const char *const weathers[2] = {"sunny", "dense"};
 aerial_perspective_request aerial_perspective_default_request(study_quality quality)
 {
     aerial_perspective_request rq = {96, 64, 64, AERIAL_SUNS, {5.0, 20.0, 60.0}, 1e-5, ATMOSPHERE_ADAPTIVE,
-                                     atmosphere_lut_sizes_talk()};
+                                     atmosphere_lut_sizes_talk(), {{32, 128, 8, 2}, {64, 1, 1, 2}, {64, 1, 1, 2}}};
     if (quality == QUALITY_PRODUCTION)
         rq.width = 384, rq.height = 256, rq.fisheye = 192, rq.tolerance = 1e-6, rq.method = ATMOSPHERE_REFERENCE;
     return rq;
@@ -27,7 +27,7 @@ aerial_perspective_request aerial_perspective_default_request(study_quality qual
 typedef struct {
     int count;
     atmosphere_solution *solutions;
-    atmosphere_luts luts;
+    atmosphere_luts luts, fine;
 } aerial_atmosphere;
 
 static void atmosphere_free(aerial_atmosphere *a)
@@ -36,6 +36,7 @@ static void atmosphere_free(aerial_atmosphere *a)
         atmosphere_solution_free(&a->solutions[k]);
     free(a->solutions);
     atmosphere_luts_free(&a->luts);
+    atmosphere_luts_free(&a->fine);
     memset(a, 0, sizeof *a);
 }
 
@@ -44,7 +45,8 @@ static int atmosphere_prepare(const aerial_perspective_request *rq, int threads,
     double t[3 * ATMOSPHERE_LUT_MAX_AXIS];
     char msg[256];
     memset(a, 0, sizeof *a);
-    if (atmosphere_lut_sizes_check(&rq->sizes, msg, sizeof msg) != 0)
+    if (atmosphere_lut_sizes_check(&rq->sizes, msg, sizeof msg) != 0 ||
+        atmosphere_lut_sizes_check(&rq->fine, msg, sizeof msg) != 0)
         return gt_error_set(e, "aerial perspective", "%s", msg);
     int n = atmosphere_lut_blends(&rq->sizes, t);
     atmosphere_model m = atmosphere_model_default();
@@ -56,7 +58,8 @@ static int atmosphere_prepare(const aerial_perspective_request *rq, int threads,
         atmosphere_free(a);
         return gt_error_set(e, "aerial perspective", "out of memory");
     }
-    if (atmosphere_luts_build_from(&a->luts, a->solutions, n, &rq->sizes, threads, msg, sizeof msg) != 0) {
+    if (atmosphere_luts_build_from(&a->luts, a->solutions, n, &rq->sizes, threads, msg, sizeof msg) != 0 ||
+        atmosphere_luts_build_from(&a->fine, a->solutions, n, &rq->fine, threads, msg, sizeof msg) != 0) {
         atmosphere_free(a);
         return gt_error_set(e, "aerial perspective", "%s", msg);
     }
@@ -131,9 +134,15 @@ static int run_image(const aerial_light *light, const aerial_rays *rays, const a
         return gt_error_set(e, "aerial perspective", "out of memory");
     aerial_render(light, rays, rq, threads, &planes);
     c->reference_error = fmax(c->reference_error, planes.reference_error);
-    int rc = aerial_score(rays, &planes, strcmp(kind, "aerial") == 0, c, e);
+    int is_view = strcmp(kind, "aerial") == 0, rc = aerial_score(rays, &planes, is_view, c, e);
     if (rc == 0)
         rc = aerial_write(dir, kind, rays, &planes, c, e);
+    if (rc == 0 && !is_view) { /* the sky again from the finer tables */
+        aerial_light fine = *light;
+        fine.luts = light->fine;
+        aerial_render_models(&fine, rays, threads, &planes);
+        rc = aerial_score_fine(rays, &planes, c, e);
+    }
     aerial_planes_free(&planes);
     return rc;
 }
@@ -148,7 +157,7 @@ static int run_case(const aerial_atmosphere *a, const aerial_rays *view, const a
     snprintf(c->weather, sizeof c->weather, "%s", weathers[weather]);
     c->sun_elevation_deg = rq->sun_elevations[sun];
     c->fog_scale_height = aerial_fog_scale_height(&a->luts.model, weather, view->camera_y);
-    aerial_light light = {solution_at(a, weather), &a->luts, weather, p.sun_direction};
+    aerial_light light = {solution_at(a, weather), &a->luts, &a->fine, weather, p.sun_direction};
     if (!light.solution)
         return gt_error_set(e, "aerial perspective", "the LUTs' t axes do not hold t = %d", weather);
     if (run_image(&light, view, rq, threads, dir, "aerial", c, e) != 0)

@@ -47,7 +47,10 @@
  * rho, cos theta, -sin theta v / rho): image right is +X, image up -Z. All of
  * it is sky: the reference's full rays against L_background of the LUTs at
  * y = 0. This isolates the LUT's sky error, including the theta_sv the talk
- * keeps only through the phases.
+ * keeps only through the phases; scored again with finer in-scatter
+ * tables (request.fine: by default 4x theta_s and 2x theta_v, the two axes
+ * item 5 found to dominate), whatever error remains there is not the
+ * tables' resolution.
  *
  * Scores per case: RMSE over RGB (terrain pixels, sky pixels, the whole
  * image; the fisheye's circle) and DSSIM (metrics/ssim.h) of the green
@@ -79,6 +82,7 @@ typedef struct {
     double tolerance;       /* the reference's quadrature, relative to each integral's scale */
     atmosphere_method method; /* its transmittances: ADAPTIVE (the grid) or REFERENCE (quadrature) */
     atmosphere_lut_sizes sizes; /* the LUTs of the model; their t axes need at least 2 points (t = 0, 1) */
+    atmosphere_lut_sizes fine;  /* finer LUTs for the fisheye's *_fine scores (their blends among the above) */
 } aerial_perspective_request;
 
 typedef struct {
@@ -93,6 +97,7 @@ typedef struct {
     double dssim_view[AERIAL_MODELS];
     double median_relative_view[AERIAL_MODELS]; /* median over pixels of |model - reference| / reference, green */
     double rmse_fisheye, relative_rmse_fisheye, dssim_fisheye, median_relative_fisheye;
+    double rmse_fisheye_fine, relative_rmse_fisheye_fine, dssim_fisheye_fine, median_relative_fisheye_fine;
     double reference_error;    /* the quadrature's largest estimate, relative to its scale */
 } aerial_case;
 
@@ -104,7 +109,7 @@ typedef struct {
 } aerial_perspective_result;
 
 /* Preview: 96x64, fisheye 64, suns 5, 20 and 60 degrees, ADAPTIVE at 1e-5,
- * the talk's LUT sizes; production: 384x256, fisheye 192, REFERENCE at 1e-6. */
+ * the talk's LUT sizes, fine (32, 128, 8, 2); production: 384x256, fisheye 192, REFERENCE at 1e-6. */
 aerial_perspective_request aerial_perspective_default_request(study_quality quality);
 
 /* The study: writes its files into dir (which exists). 0, or -1 with e. */

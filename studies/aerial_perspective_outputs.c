@@ -116,6 +116,19 @@ static int score_view(const aerial_rays *rays, const aerial_planes *p, aerial_ca
     return rc;
 }
 
+/* Model 0 against the reference inside the fisheye's circle. */
+static int score_sky(const aerial_rays *rays, const aerial_planes *p, double *rmse, double *relative, double *dssim,
+                     double *median, gt_error *e)
+{
+    size_t n = (size_t)rays->width * rays->height;
+    *rmse = rgb_rmse(p->model[0], p->reference, rays->inside, n);
+    double rms = rgb_rmse(p->reference, NULL, rays->inside, n);
+    *relative = rms > 0.0 ? *rmse / rms : 0.0;
+    if (green_dssim(rays, p->model[0][1], p->reference[1], rays->inside, dssim, e) != 0)
+        return -1;
+    return median_relative(rays, p->model[0][1], p->reference[1], rays->inside, median, e);
+}
+
 int aerial_score(const aerial_rays *rays, const aerial_planes *planes, int is_view, aerial_case *c, gt_error *e)
 {
     if (is_view)
@@ -124,12 +137,14 @@ int aerial_score(const aerial_rays *rays, const aerial_planes *planes, int is_vi
     c->fisheye_pixels = count_inside(rays->inside, n);
     c->reference_mean_fisheye = plane_mean(planes->reference[1], rays->inside, n);
     c->model_mean_fisheye = plane_mean(planes->model[0][1], rays->inside, n);
-    c->rmse_fisheye = rgb_rmse(planes->model[0], planes->reference, rays->inside, n);
-    double rms = rgb_rmse(planes->reference, NULL, rays->inside, n);
-    c->relative_rmse_fisheye = rms > 0.0 ? c->rmse_fisheye / rms : 0.0;
-    if (green_dssim(rays, planes->model[0][1], planes->reference[1], rays->inside, &c->dssim_fisheye, e) != 0)
-        return -1;
-    return median_relative(rays, planes->model[0][1], planes->reference[1], rays->inside, &c->median_relative_fisheye, e);
+    return score_sky(rays, planes, &c->rmse_fisheye, &c->relative_rmse_fisheye, &c->dssim_fisheye,
+                     &c->median_relative_fisheye, e);
+}
+
+int aerial_score_fine(const aerial_rays *rays, const aerial_planes *planes, aerial_case *c, gt_error *e)
+{
+    return score_sky(rays, planes, &c->rmse_fisheye_fine, &c->relative_rmse_fisheye_fine, &c->dssim_fisheye_fine,
+                     &c->median_relative_fisheye_fine, e);
 }
 
 /* ---- Files ----------------------------------------------------------------- */

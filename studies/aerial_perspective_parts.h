@@ -27,7 +27,7 @@ typedef struct {
  * reference), the LUTs (the model) and the sun. */
 typedef struct {
     const atmosphere_solution *solution;
-    const atmosphere_luts *luts;
+    const atmosphere_luts *luts, *fine; /* the request's sizes and its finer ones */
     double t;
     vec3 sun;
 } aerial_light;
@@ -42,13 +42,16 @@ int aerial_planes_alloc(aerial_planes *p, size_t n);
 void aerial_planes_free(aerial_planes *p);
 
 /* Renders every inside pixel: the reference and the models (parallel; bits
- * independent of `threads`). */
+ * independent of `threads`); aerial_render_models the models alone. */
+void aerial_render_models(const aerial_light *light, const aerial_rays *rays, int threads, aerial_planes *out);
 void aerial_render(const aerial_light *light, const aerial_rays *rays, const aerial_perspective_request *rq,
                    int threads, aerial_planes *out);
 
 /* Scores one rendered image into the case (the view: is_view, else the
  * fisheye); 0, or -1 with e. */
 int aerial_score(const aerial_rays *rays, const aerial_planes *planes, int is_view, aerial_case *c, gt_error *e);
+/* The fisheye's *_fine scores: planes' model 0 from the finer LUTs. */
+int aerial_score_fine(const aerial_rays *rays, const aerial_planes *planes, aerial_case *c, gt_error *e);
 /* Writes <kind>_<weather>_sunNN.exr, .png and _error.png into dir. */
 int aerial_write(const char *dir, const char *kind, const aerial_rays *rays, const aerial_planes *planes,
                  const aerial_case *c, gt_error *e);

@@ -147,26 +147,37 @@ static void pixel_model(const aerial_light *light, const height_fog_param *p, co
                          out[AERIAL_MODEL_SKY_ATTENUATED], transmittance);
 }
 
-void aerial_render(const aerial_light *light, const aerial_rays *rays, const aerial_perspective_request *rq,
-                   int threads, aerial_planes *out)
+void aerial_render_models(const aerial_light *light, const aerial_rays *rays, int threads, aerial_planes *out)
 {
     height_fog_param p;
     aerial_fog_param(light->luts, light->t, rays->camera_y, light->sun, &p);
     long n = (long)rays->width * rays->height;
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (long k = 0; k < n; ++k) {
+        float model[AERIAL_MODELS][3];
+        if (rays->inside[k] < 0.5f)
+            continue;
+        pixel_model(light, &p, rays, (size_t)k, model);
+        for (int m = 0; m < AERIAL_MODELS; ++m)
+            for (int c = 0; c < 3; ++c)
+                out->model[m][c][k] = model[m][c];
+    }
+}
+
+void aerial_render(const aerial_light *light, const aerial_rays *rays, const aerial_perspective_request *rq,
+                   int threads, aerial_planes *out)
+{
+    long n = (long)rays->width * rays->height;
     double worst = 0.0;
 #pragma omp parallel for schedule(dynamic, 8) num_threads(threads) reduction(max : worst)
     for (long k = 0; k < n; ++k) {
+        double L[3];
         if (rays->inside[k] < 0.5f)
             continue;
-        double L[3];
-        float model[AERIAL_MODELS][3];
         worst = fmax(worst, pixel_reference(light, rays, rq, (size_t)k, L));
-        pixel_model(light, &p, rays, (size_t)k, model);
-        for (int c = 0; c < 3; ++c) {
+        for (int c = 0; c < 3; ++c)
             out->reference[c][k] = (float)L[c];
-            for (int m = 0; m < AERIAL_MODELS; ++m)
-                out->model[m][c][k] = model[m][c];
-        }
     }
     out->reference_error = worst;
+    aerial_render_models(light, rays, threads, out);
 }
