@@ -178,8 +178,7 @@ int atmosphere_luts_build(atmosphere_luts *luts, const atmosphere_model *m, cons
     return rc;
 }
 
-/* The solution of blend t among `count`, or NULL. */
-static const atmosphere_solution *solution_of(const atmosphere_solution *solutions, int count, double t)
+const atmosphere_solution *atmosphere_solution_find(const atmosphere_solution *solutions, int count, double t)
 {
     for (int k = 0; k < count; ++k)
         if (solutions[k].t == t)
@@ -201,7 +200,7 @@ int atmosphere_luts_build_from(atmosphere_luts *luts, const atmosphere_solution 
     double start = omp_get_wtime(), blends[MAX_BLENDS];
     int n = atmosphere_lut_blends(sizes, blends);
     for (int k = 0; k < n; ++k)
-        if (!solution_of(solutions, count, blends[k])) {
+        if (!atmosphere_solution_find(solutions, count, blends[k])) {
             snprintf(msg, msg_size, "atmosphere LUTs: no precomputed solution for t = %.9g", blends[k]);
             return -1;
         }
@@ -211,7 +210,7 @@ int atmosphere_luts_build_from(atmosphere_luts *luts, const atmosphere_solution 
         return -1;
     }
     for (int k = 0; k < n; ++k)
-        fill_blend(luts, solution_of(solutions, count, blends[k]), threads);
+        fill_blend(luts, atmosphere_solution_find(solutions, count, blends[k]), threads);
     luts->build_seconds = omp_get_wtime() - start;
     return 0;
 }

@@ -91,6 +91,8 @@ void atmosphere_luts_free(atmosphere_luts *luts);
  * 3 ATMOSPHERE_LUT_MAX_AXIS), in table order; returns their count: the
  * solutions atmosphere_luts_build_from needs. */
 int atmosphere_lut_blends(const atmosphere_lut_sizes *sizes, double *blends);
+/* The solution of blend t among `count`, or NULL. */
+const atmosphere_solution *atmosphere_solution_find(const atmosphere_solution *solutions, int count, double t);
 
 /* The value of an axis' grid point i of n. */
 double atmosphere_lut_axis_value(int axis, int i, int n, double max_altitude);

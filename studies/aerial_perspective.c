@@ -66,15 +66,6 @@ static int atmosphere_prepare(const aerial_perspective_request *rq, int threads,
     return 0;
 }
 
-/* The precomputation of blend t (0 or 1: a weather), or NULL. */
-static const atmosphere_solution *solution_at(const aerial_atmosphere *a, double t)
-{
-    for (int k = 0; k < a->count; ++k)
-        if (a->solutions[k].t == t)
-            return &a->solutions[k];
-    return NULL;
-}
-
 /* ---- The terrain's rays -------------------------------------------------- */
 
 static void fill_view_rays(const gbuffer *gb, aerial_rays *rays)
@@ -157,7 +148,8 @@ static int run_case(const aerial_atmosphere *a, const aerial_rays *view, const a
     snprintf(c->weather, sizeof c->weather, "%s", weathers[weather]);
     c->sun_elevation_deg = rq->sun_elevations[sun];
     c->fog_scale_height = aerial_fog_scale_height(&a->luts.model, weather, view->camera_y);
-    aerial_light light = {solution_at(a, weather), &a->luts, &a->fine, weather, p.sun_direction};
+    aerial_light light = {atmosphere_solution_find(a->solutions, a->count, weather), &a->luts, &a->fine, weather,
+                          p.sun_direction};
     if (!light.solution)
         return gt_error_set(e, "aerial perspective", "the LUTs' t axes do not hold t = %d", weather);
     if (run_image(&light, view, rq, threads, dir, "aerial", c, e) != 0)

@@ -73,7 +73,8 @@ static double green_column(const atmosphere_model *m, double t, double y, double
     for (int w = 0; w < ATMOSPHERE_WEATHERS; ++w) {
         const atmosphere_weather *x = &m->weathers[w];
         double hr = x->rayleigh_scale_height, hm = x->mie_scale_height;
-        column += weight[w] * (x->rayleigh_scattering[1] * hr * -expm1(-y / hr) + x->mie_extinction[1] * hm * -expm1(-y / hm));
+        column += weight[w] * (x->rayleigh_scattering[1] * hr * -expm1(-y / hr) +
+                               x->mie_extinction[1] * hm * -expm1(-y / hm));
         *at_ground += weight[w] * (x->rayleigh_scattering[1] + x->mie_extinction[1]);
     }
     return column;

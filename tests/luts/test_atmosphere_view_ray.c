@@ -107,7 +107,8 @@ static void test_difference_of_two_rays(const atmosphere_solution *s)
     for (int j = 0; j < 3; ++j) {
         double r = m->bottom_radius + 1500.0;
         double nu = mu[j] * mu_s + sqrt((1.0 - mu[j] * mu[j]) * (1.0 - mu_s * mu_s)) * cos(phi);
-        double r_d = atmosphere_radius_at(r, mu[j], d), mu_d = (r * mu[j] + d) / r_d, mu_s_d = (r * mu_s + d * nu) / r_d;
+        double r_d = atmosphere_radius_at(r, mu[j], d), mu_d = (r * mu[j] + d) / r_d;
+        double mu_s_d = (r * mu_s + d * nu) / r_d;
         atmosphere_view_ray whole = {r, mu[j], mu_s, nu, atmosphere_distance_to_boundary(m, r, mu[j])};
         atmosphere_view_ray near = whole, far = {r_d, mu_d, mu_s_d, nu, atmosphere_distance_to_boundary(m, r_d, mu_d)};
         near.length = d;

@@ -80,6 +80,7 @@ int main(void)
         for (int m = 0; m < AERIAL_MODELS; ++m)
             CHECK(isfinite(c->rmse_view[m]) && c->rmse_view[m] > 0.0 && isfinite(c->dssim_view[m]));
         CHECK(isfinite(c->rmse_fisheye) && c->rmse_fisheye > 0.0 && isfinite(c->dssim_fisheye));
+        CHECK(isfinite(c->rmse_fisheye_fine) && c->rmse_fisheye_fine > 0.0 && c->rmse_fisheye_fine != c->rmse_fisheye);
         printf("%s sun %g: H %.0f m, view rel. RMSE %.3f / %.3f, fisheye %.3f\n", c->weather, c->sun_elevation_deg,
                c->fog_scale_height, c->relative_rmse_view[0], c->relative_rmse_view[1], c->relative_rmse_fisheye);
     }
