@@ -18,7 +18,7 @@ static const char *const weathers[2] = {"sunny", "dense"};
 
 height_fog_request height_fog_default_request(study_quality quality)
 {
-    height_fog_request rq = {96, 64, 64, {5.0, 20.0, 60.0}};
+    height_fog_request rq = {96, 64, 64, {5.0, 20.0, 60.0}, aerial_perspective_default_request(quality)};
     if (quality == QUALITY_PRODUCTION)
         rq.width = 384, rq.height = 256, rq.spp = 1024;
     return rq;
@@ -331,7 +331,10 @@ int height_fog_study(const study_context *ctx, const height_fog_request *rq, hei
         return -1;
     height_fog_regimes(out->regimes);
     height_fog_time_models(1 << 20, out->analytic_ns_per_pixel);
-    return 0;
+    char dir[2048];
+    if (study_make_dir(ctx, HEIGHT_FOG_DIR, dir, sizeof dir, e) != 0)
+        return -1;
+    return aerial_perspective_study(ctx, dir, &rq->aerial, &out->aerial, e);
 }
 
 int height_fog_approx_image(const image *gbuffer, const char *what, const char *weather, double sun_elevation_deg,
