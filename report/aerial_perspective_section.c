@@ -4,7 +4,6 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "report/claims_table.h"
 #include "report/report_table.h"
 #include "studies/atmosphere_luts.h"
 
@@ -56,7 +55,7 @@ static const report_column fisheye_columns[] = {
 };
 #undef ROW
 
-double aerial_perspective_claim_figure(const aerial_perspective_result *r)
+double aerial_perspective_worst_median(const aerial_perspective_result *r)
 {
     double worst = 0.0;
     for (int i = 0; i < r->case_count; ++i)
@@ -114,9 +113,13 @@ void aerial_perspective_section(report_context *ctx, cJSON *json, const char *di
                 r->case_count);
     for (int i = 0; i < r->case_count; ++i)
         case_figures(ctx, dir, &r->cases[i]);
-    claims_table_add_figure(ctx->claims, "Decima 2017, Height fog: Results",
-                            "LUTs + the analytic height fog give a realistic aerial perspective",
-                            "largest over weathers and suns of the median pixel's |model - reference| / reference "
-                            "(green, terrain view, published HeightFog); tolerance: Weber's fraction",
-                            aerial_perspective_claim_figure(r), 0.0, 0.0, ATMOSPHERE_TOLERANCE);
+    double worst = aerial_perspective_worst_median(r);
+    if (section)
+        cJSON_AddNumberToObject(section, "worst_median_relative_view", worst);
+    report_finding(ctx->doc, "Aerial perspective",
+                   "LUTs + the published HeightFog against the atmosphere on the terrain view: the median pixel is "
+                   "within %.1f%% in every weather and sun angle scored (worst case), %.1f times the eye's contrast "
+                   "threshold (2%%). No verdict on the talk's \"realistic aerial perspective\": it is not a numeric "
+                   "claim, and the talk's own setting (its artists' fog over its atmosphere) is not reproduced.",
+                   100.0 * worst, worst / ATMOSPHERE_TOLERANCE);
 }

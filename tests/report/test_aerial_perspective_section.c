@@ -1,9 +1,9 @@
 /* The combination images' part of the height fog's section
  * (report/aerial_perspective_section.c) from a results struct made up here
  * (no study runs): summary.json carries the cases in "views" and
- * "fisheyes" exactly, and the claims row's figure is the largest median
- * relative error of the published combination over the cases, judged
- * against Weber's fraction: 0.15 refuted, 0.01 reproduced. */
+ * "fisheyes" exactly, its figure is the largest median relative error of
+ * the published combination over the cases, and no claims row is added
+ * (the talk's "realistic" is not a numeric claim). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -29,7 +29,7 @@ static aerial_perspective_result made_up(double worst_median)
     return r;
 }
 
-static claim_verdict verdict_for(double worst_median)
+static void check_section(double worst_median)
 {
     aerial_perspective_result r = made_up(worst_median);
     report doc;
@@ -41,16 +41,15 @@ static claim_verdict verdict_for(double worst_median)
     CHECK(cJSON_GetArraySize(cJSON_GetObjectItem(a, "views")) == 2);
     const cJSON *fisheye = cJSON_GetArrayItem(cJSON_GetObjectItem(a, "fisheyes"), 1);
     CHECK(cJSON_GetNumberValue(cJSON_GetObjectItem(fisheye, "rmse_fisheye")) == 1.0 / 3.0);
-    CHECK(claims.count == 1 && claims.rows[0].figure == worst_median);
-    claim_verdict v = claims.count == 1 ? claims.rows[0].verdict : CLAIM_NOT_SIGNIFICANT;
+    CHECK(cJSON_GetNumberValue(cJSON_GetObjectItem(a, "worst_median_relative_view")) == worst_median);
+    CHECK(claims.count == 0);
     cJSON_Delete(ctx.summary);
     report_free(&doc);
-    return v;
 }
 
 int main(void)
 {
-    CHECK(verdict_for(0.15) == CLAIM_REFUTED);
-    CHECK(verdict_for(0.01) == CLAIM_REPRODUCED);
+    check_section(0.15);
+    check_section(0.01);
     return check_report("test_aerial_perspective_section");
 }
