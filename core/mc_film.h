@@ -147,5 +147,9 @@ int mc_film_check_moments(const mc_film *film, const char *what, gt_error *e);
 /* dst += src (same size and quantities). Exact. Refuses films without
  * moment sums (mc_film_check_moments), naming the file. */
 int mc_film_merge(mc_film *dst, const mc_film *src, const char *what, gt_error *e);
+/* Empties the pixels of rows [first_row, end_row): sums, moments and
+ * counts back to the state mc_film_init leaves (an interrupted block of
+ * rows, taken back). */
+void mc_film_clear_rows(mc_film *film, int first_row, int end_row);
 
 #endif

@@ -221,6 +221,7 @@
 #define ATTR_SETTINGS "gtlab.settings"   /* the integrator's options, for people to read */
 #define ATTR_BLOCKS "gtlab.sample_blocks" /* "seed:offset+count ..." */
 #define ATTR_CHECKPOINT_OF "gtlab.checkpoint_of" /* a checkpoint: the header of the render it belongs to */
+#define ATTR_CHECKPOINT_ROWS "gtlab.checkpoint_rows" /* an adaptive render's checkpoint: the rows finished */
 #define ATTR_ALBEDOS "gtlab.albedos"     /* multibounce: the albedo list */
 #define ATTR_BOUNCES "gtlab.bounces"     /* multibounce: bounce count or "inf" */
 #define ATTR_NORMALIZED "gtlab.normalized" /* "layer layer ...": vector layers written normalised */
