@@ -153,15 +153,18 @@ static int measure_noises(vlight_run *r, vlight_result *out, image_score (*ratio
     const vlight_request *rq = r->rq;
     for (int n = 0; n < RAYMARCH_NOISE_COUNT; ++n)
         for (int k = 0; k < rq->spp_count; ++k) {
-            image_score single[VLIGHT_MAX_SEEDS], acc[VLIGHT_MAX_SEEDS];
+            image_score single[VLIGHT_MAX_SEEDS] = {{0}}, acc[VLIGHT_MAX_SEEDS] = {{0}};
             int seeds = n == RAYMARCH_NOISE_NONE ? 1 : rq->seeds;
             for (int s = 0; s < seeds; ++s)
                 if (measure(r, (raymarch_noise)n, rq->spp[k], s, 0, &single[s], &acc[s], e) != 0)
                     return -1;
             out->single[n][k] = summarise(single, seeds);
             out->accumulated[n][k] = summarise(acc, seeds);
-            if (rq->spp[k] == 3)
-                memcpy(ratio_scores[n], acc, sizeof acc), memcpy(single_scores[n], single, sizeof single);
+            if (rq->spp[k] != 3)
+                continue;
+            memcpy(ratio_scores[n], acc, sizeof acc), memcpy(single_scores[n], single, sizeof single);
+            for (int s = 0; s < VLIGHT_MAX_SEEDS; ++s)
+                out->rmse3_accumulated_by_seed[n][s] = s < seeds ? acc[s].rmse : NAN;
         }
     return 0;
 }

@@ -61,6 +61,9 @@ typedef struct {
     vlight_error single[RAYMARCH_NOISE_COUNT][VLIGHT_MAX_SPP];
     vlight_error accumulated[RAYMARCH_NOISE_COUNT][VLIGHT_MAX_SPP];
     vlight_error uniform128;                        /* none, 128 steps, one frame: the target */
+    /* each seed's relative RMSE at 3 spp, frames accumulated: the jitter
+     * patterns' gaps paired over the seeds */
+    double rmse3_accumulated_by_seed[RAYMARCH_NOISE_COUNT][VLIGHT_MAX_SEEDS];
     double spp_needed_single[RAYMARCH_NOISE_COUNT]; /* to reach uniform128's RMSE; INFINITY: not reached */
     double spp_needed_accumulated[RAYMARCH_NOISE_COUNT];
     int talk_spp[VLIGHT_TALK_SPP];                  /* 3, 6, 9 at half resolution */
