@@ -51,6 +51,13 @@ typedef struct {
 void sphere_light_measure(sphere_light_model model, const decima_sphere_constants *k,
                           const sphere_light_sample *samples, size_t count, sphere_light_errors *out);
 
+/* The same from residuals of any method, one at a time. */
+typedef struct {
+    double n, sum_abs, sum_abs2, sum_sq, sum_sq2;
+} sphere_light_error_sums;
+void sphere_light_error_add(sphere_light_error_sums *s, double residual);
+void sphere_light_error_finish(const sphere_light_error_sums *s, sphere_light_errors *out);
+
 /* Parameters, in order: radius_reduction, norm_scale, norm_alpha. */
 #define SPHERE_FIT_PARAMS 3
 /* The profile over the radius reduction: 10 coarse points 0, 0.05, ...,

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 
 #include "core/vec3.h" /* M_PI */
-#include "luts/ltc_ggx_c.h"
+#include "luts/dfg_lut_c.h"
 #include "luts/dfg_lut.inc"
 
 const char *ltc_ggx_description(void)
@@ -68,7 +68,7 @@ void ltc_table_sample(const ltc_table *t, float n_dot_v, float roughness, float 
 {
     float u = sqrtf(fmaxf(0.0f, 1.0f - n_dot_v));
     for (int c = 0; c < LTC_CHANNELS; ++c) {
-        dfg_table table = {t, c};
+        dfg_table table = {t->data, t->size, LTC_CHANNELS, c};
         out[c] = dfg_lookup(table, u, roughness);
     }
 }

@@ -14,7 +14,7 @@
  *
  * (the edge's angle from atan2(|p_i x p_j|, p_i . p_j), exact and stable in
  * float down to the sun's size, instead of the shipped code's fitted
- * theta / sin(theta)). Vertices are held as a common centre plus offsets,
+ * theta / sin(theta): see realtime/sphere_light_ltc.c). Vertices are held as a common centre plus offsets,
  * so the cross products of a tiny polygon's nearly parallel vertices are
  * taken of the offsets (C x (O_j - O_i) + O_i x O_j): no cancellation.
  *
@@ -56,5 +56,9 @@ float ltc_sphere_ggx(const ltc_table *t, vec3 v, vec3 lc, float sin_sigma, float
 /* The same with Schlick's Fresnel of f0 through the table's Fresnel term:
  * (f0 E + (1 - f0) B) ltc_sphere_integral / (pi sin^2 sigma). */
 float ltc_sphere_ggx_fresnel(const ltc_table *t, vec3 v, vec3 lc, float sin_sigma, float roughness, float f0);
+
+/* ltc_sphere_ggx_fresnel as a sphere_specular_fn (realtime/sphere_light.h):
+ * user is the ltc_table. */
+float ltc_sphere_specular(const void *table, vec3 v, vec3 lc, float sin_sigma, float roughness, float f0);
 
 #endif

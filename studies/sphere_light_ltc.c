@@ -1,0 +1,74 @@
+/* The LTC sphere light scored on the refit's held-out configurations
+ * (studies/sphere_light.h, "LTC sphere lights"): its residual, the paired
+ * differences against Karis and Decima, and the N-gon's own error. */
+#include <math.h>
+
+#include "fitters/fit_sphere_light.h"
+#include "realtime/sphere_light_ltc.h"
+#include "studies/sphere_light.h"
+
+double sphere_ltc_residual(const ltc_table *t, const sphere_light_sample *s)
+{
+    double value = ltc_sphere_ggx(t, s->v, s->lc, s->sin_sigma, sqrtf(s->alpha));
+    return log((value + SPHERE_FIT_FLOOR) / (s->reference + SPHERE_FIT_FLOOR));
+}
+
+/* |residual| of sample s under held-out model m of the outcome. */
+static double other_abs_residual(const sphere_fit_outcome *fit, int m, const sphere_light_sample *s)
+{
+    const decima_sphere_constants published = decima_sphere_published();
+    if (m == SPHERE_FIT_KARIS)
+        return fabs(sphere_light_residual(SPHERE_MODEL_KARIS, NULL, s));
+    const decima_sphere_constants *k = m == SPHERE_FIT_PUBLISHED ? &published : &fit->fit.constants;
+    return fabs(sphere_light_residual(SPHERE_MODEL_DECIMA, k, s));
+}
+
+/* Mean and standard error of the mean from sums over n values. */
+static void mean_and_se(double sum, double sum_sq, int n, double *mean, double *se)
+{
+    *mean = sum / n;
+    *se = n > 1 ? sqrt(fmax(0.0, sum_sq / n - *mean * *mean) / (n - 1)) : NAN;
+}
+
+/* The N-gon's own error at sample s in the residual's terms:
+ * |ln((ngon + 0.01)/(exact + 0.01))|, both as radiance per unit normal
+ * illuminance (E times the LTC integral over pi sin^2 sigma), the exact
+ * disk being the 1024-gon. */
+double sphere_ltc_ngon_error(const ltc_table *t, const sphere_light_sample *s, int sides)
+{
+    float texel[LTC_CHANNELS];
+    ltc_table_sample(t, s->v.z, sqrtf(s->alpha), texel);
+    double scale = texel[LTC_MAGNITUDE] / (M_PI * s->sin_sigma * s->sin_sigma);
+    double exact = scale * ltc_sphere_integral(texel, s->v, s->lc, s->sin_sigma, LTC_MAX_SIDES);
+    double ngon = scale * ltc_sphere_integral(texel, s->v, s->lc, s->sin_sigma, sides);
+    return fabs(log((ngon + SPHERE_FIT_FLOOR) / (exact + SPHERE_FIT_FLOOR)));
+}
+
+static void score_ngon(const ltc_table *t, const sphere_light_sample *test, int count, sphere_ltc_result *out)
+{
+    double sum = 0.0, worst = 0.0;
+    for (int i = 0; i < count; ++i) {
+        double err = sphere_ltc_ngon_error(t, &test[i], LTC_SPHERE_SIDES);
+        sum += err, worst = fmax(worst, err);
+    }
+    out->ngon_mean = sum / count, out->ngon_max = worst;
+}
+
+void sphere_ltc_score(const ltc_table *t, const sphere_light_sample *test, int count, const sphere_fit_outcome *fit,
+                      sphere_ltc_result *out)
+{
+    double d[SPHERE_FIT_MODELS] = {0}, d_sq[SPHERE_FIT_MODELS] = {0};
+    sphere_light_error_sums sums = {0};
+    for (int i = 0; i < count; ++i) {
+        double residual = sphere_ltc_residual(t, &test[i]), r = fabs(residual);
+        sphere_light_error_add(&sums, residual);
+        for (int m = 0; m < SPHERE_FIT_MODELS; ++m) {
+            double gap = other_abs_residual(fit, m, &test[i]) - r;
+            d[m] += gap, d_sq[m] += gap * gap;
+        }
+    }
+    sphere_light_error_finish(&sums, &out->held_out);
+    for (int m = 0; m < SPHERE_FIT_MODELS; ++m)
+        mean_and_se(d[m], d_sq[m], count, &out->paired[m], &out->paired_se[m]);
+    score_ngon(t, test, count, out);
+}
