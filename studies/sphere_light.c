@@ -385,16 +385,17 @@ void sphere_cost_study(long count, int repeats, sphere_cost *out)
 
 /* ---- The stage ---- */
 
-/* The LTC table (16^2 at preview, 64^2 as shipped) and its held-out scores. */
+/* The LTC table (16^2 at preview, 64^2 as shipped), its files
+ * <output>/luts/ltc_ggx.{exr,h,hlsl,glsl} and its held-out scores. */
 static int fit_ltc(const study_context *ctx, const sphere_fit_settings *fs, const sphere_fit_outcome *fit,
                    ltc_table *t, sphere_ltc_result *out, gt_error *e)
 {
-    double t0 = seconds_now();
     sphere_light_sample *test = NULL;
+    char luts[4096];
     out->table_size = ctx->quality == QUALITY_PREVIEW ? 16 : 64;
-    if (ltc_fit_table(t, out->table_size, ctx->threads, e) != 0)
+    if (study_make_dir(ctx, "luts", luts, sizeof luts, e) != 0 ||
+        sphere_ltc_write_table(luts, out->table_size, ctx->threads, t, &out->fit_seconds, e) != 0)
         return -1;
-    out->fit_seconds = seconds_now() - t0;
     out->mean_fit_error = t->mean_error, out->max_fit_error = t->max_error;
     if (sphere_fit_held_out_samples(fs, &test, e) != 0) {
         ltc_table_free(t);

@@ -9,8 +9,10 @@
  *
  * Writes under <output>/sphere_light: sphere_noh{,_map,_by_nv}.csv,
  * fit_profile.csv, errors_*.csv, scene_*.exr and the scenes' previews and
- * heatmaps (PNG). The fit's own files (fits/sphere_light.json, .h, .hlsl,
- * .glsl) are the caller's to write from the results. */
+ * heatmaps (PNG), and the LTC table it fits under <output>/luts/ltc_ggx.{exr,
+ * h,hlsl,glsl} (luts/ltc_ggx_writers.h). The fit's own files
+ * (fits/sphere_light.json, .h, .hlsl, .glsl) are the caller's to write from
+ * the results. */
 #ifndef GTLAB_STUDIES_SPHERE_LIGHT_H
 #define GTLAB_STUDIES_SPHERE_LIGHT_H
 
@@ -248,6 +250,12 @@ typedef struct {
     double paired[SPHERE_FIT_MODELS], paired_se[SPHERE_FIT_MODELS]; /* vs held_out rows of sphere_fit_outcome */
     double ngon_mean, ngon_max;
 } sphere_ltc_result;
+
+/* Fits a size^2 LTC table (fitters/ltc_fit.h, `threads` workers) into *t
+ * and writes DIR/ltc_ggx.{exr,h,hlsl,glsl} (luts/ltc_ggx_writers.h, C and
+ * shader identifier LTC_GGX); *seconds: the fit's wall time. On failure t
+ * is left empty. */
+int sphere_ltc_write_table(const char *dir, int size, int threads, ltc_table *t, double *seconds, gt_error *e);
 
 /* The residual of one sample under the LTC sphere light with table t. */
 double sphere_ltc_residual(const ltc_table *t, const sphere_light_sample *s);

@@ -3,9 +3,25 @@
  * differences against Karis and Decima, and the N-gon's own error. */
 #include <math.h>
 
+#include "core/progress.h"
 #include "fitters/fit_sphere_light.h"
+#include "fitters/ltc_fit.h"
+#include "luts/ltc_ggx_writers.h"
 #include "realtime/sphere_light_ltc.h"
 #include "studies/sphere_light.h"
+
+int sphere_ltc_write_table(const char *dir, int size, int threads, ltc_table *t, double *seconds, gt_error *e)
+{
+    double t0 = seconds_now();
+    if (ltc_fit_table(t, size, threads, e) != 0)
+        return -1;
+    *seconds = seconds_now() - t0;
+    if (ltc_ggx_write_all(dir, "ltc_ggx", "LTC_GGX", t, e) != 0) {
+        ltc_table_free(t);
+        return -1;
+    }
+    return 0;
+}
 
 double sphere_ltc_residual(const ltc_table *t, const sphere_light_sample *s)
 {
