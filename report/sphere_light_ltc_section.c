@@ -23,8 +23,8 @@ static void ltc_json(const sphere_light_result *r, cJSON *json)
         cJSON_AddNumberToObject(row, "stderr", l->paired_se[m]);
     }
     cJSON_AddNumberToObject(json, "ngon_sides", LTC_SPHERE_SIDES);
-    cJSON_AddNumberToObject(json, "ngon_mean_relative_error", l->ngon_mean);
-    cJSON_AddNumberToObject(json, "ngon_max_relative_error", l->ngon_max);
+    cJSON_AddNumberToObject(json, "ngon_mean_abs_log_error", l->ngon_mean);
+    cJSON_AddNumberToObject(json, "ngon_max_abs_log_error", l->ngon_max);
     cJSON_AddNumberToObject(json, "ns_per_pixel_karis", r->cost.ns_karis_full);
     cJSON_AddNumberToObject(json, "ns_per_pixel_decima", r->cost.ns_decima_full);
     cJSON_AddNumberToObject(json, "ns_per_pixel_ltc", r->cost.ns_ltc);
@@ -54,8 +54,8 @@ void sphere_ltc_section(report_context *ctx, const sphere_light_result *r, cJSON
                      "%.1f s; total-variation distance between the LTC and the normalised BRDF lobe per texel, mean "
                      "%.3f, worst %.3f (at grazing views). The sphere is the disk facing the shading point that "
                      "subtends its cap, integrated as an equal-area %d-gon through the clipped polygon integral; "
-                     "its own error against a 1024-gon on the held-out configurations: mean %.2e, worst %.2e "
-                     "(relative). Specular with the table's Fresnel term (F0 E + (1 - F0) B); the maps and scenes "
+                     "its own error against a 1024-gon (the exact disk) on the held-out configurations, "
+                     "|ln((8-gon + 0.01)/(exact + 0.01))|: mean %.2e, worst %.2e. Specular with the table's Fresnel term (F0 E + (1 - F0) B); the maps and scenes "
                      "above carry it as the column 'LTC'.",
                      l->table_size, l->table_size, l->fit_seconds, l->mean_fit_error, l->max_fit_error,
                      LTC_SPHERE_SIDES, l->ngon_mean, l->ngon_max);

@@ -385,14 +385,14 @@ void sphere_cost_study(long count, int repeats, sphere_cost *out)
 
 /* ---- The stage ---- */
 
-/* The LTC table (16^2 at preview, 64^2 as shipped), its files
+/* The LTC table (32^2 at preview, 64^2 as shipped), its files
  * <output>/luts/ltc_ggx.{exr,h,hlsl,glsl} and its held-out scores. */
 static int fit_ltc(const study_context *ctx, const sphere_fit_settings *fs, const sphere_fit_outcome *fit,
                    ltc_table *t, sphere_ltc_result *out, gt_error *e)
 {
     sphere_light_sample *test = NULL;
     char luts[4096];
-    out->table_size = ctx->quality == QUALITY_PREVIEW ? 16 : 64;
+    out->table_size = ctx->quality == QUALITY_PREVIEW ? 32 : 64;
     if (study_make_dir(ctx, "luts", luts, sizeof luts, e) != 0 ||
         sphere_ltc_write_table(luts, out->table_size, ctx->threads, t, &out->fit_seconds, e) != 0)
         return -1;
