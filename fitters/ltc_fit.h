@@ -1,6 +1,6 @@
 /* Fitting the GGX LTC table (luts/ltc_ggx.h) with Ceres (fitters/ceres_bridge.h).
  *
- * Objective. Heitz et al. 2016 (section 4 and their fitLTC code) minimise
+ * Objective. Heitz et al. 2016 (their fitting code, fitLTC) minimise
  * an L3 error estimated by importance sampling the BRDF and the LTC. gtlab
  * minimises the L2 distance between the normalised target t(l) =
  * f_r(v, l)(n.l) / E and the LTC D(l), over the whole sphere,

@@ -2,10 +2,10 @@
  * shader looks up, its layout and the distribution it describes.
  *
  * Heitz, Dupuy, Hill & Neubelt 2016, "Real-Time Polygonal-Light Shading
- * with Linearly Transformed Cosines" (SIGGRAPH), section 3: a distribution
- * D on the sphere is the clamped cosine D_o(w_o) = max(0, w_o.z) / pi seen
- * through a 3x3 matrix M. With w_o = M^-1 w / |M^-1 w|, the Jacobian of
- * that change of variables gives
+ * with Linearly Transformed Cosines" (SIGGRAPH), their linearly transformed
+ * distributions: a distribution D on the sphere is the clamped cosine
+ * D_o(w_o) = max(0, w_o.z) / pi seen through a 3x3 matrix M. With
+ * w_o = M^-1 w / |M^-1 w|, the Jacobian of that change of variables gives
  *
  *   D(w) = D_o(w_o) |det M^-1| / |M^-1 w|^3
  *

@@ -6,8 +6,8 @@
  * Heitz, Dupuy, Hill & Neubelt 2016, "Real-Time Polygonal-Light Shading
  * with Linearly Transformed Cosines": the integral of the LTC D over a
  * polygon P is the form factor of the polygon M^-1 P, clipped to the
- * cosine's hemisphere z >= 0, which Lambert's formula gives in closed form
- * (their eq. 11; Arvo 1995):
+ * cosine's hemisphere z >= 0, which Lambert's formula for a polygon gives
+ * in closed form (Arvo 1995, "Applications of Irradiance Tensors"):
  *
  *   F(P) = 1/(2 pi) sum_edges theta_ij (p_i x p_j).z / |p_i x p_j|,
  *   theta_ij = angle between p_i and p_j
