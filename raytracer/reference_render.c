@@ -119,7 +119,7 @@ static int render_quantity(const reference_pass *pass, image *out, render_stats 
     if (estimated != 0)
         return -1;
     int rc = 0;
-    if (mc_film_write_channels(&film, image_channel_data(out, CH_MASK), out) != 0 || (q->finish && q->finish(out) != 0))
+    if (mc_film_write_channels(&film, out) != 0 || (q->finish && q->finish(out) != 0))
         rc = gt_error_set(e, pass->scene_spec, "out of memory for the output image");
     mc_film_free(&film);
     return rc;

@@ -65,7 +65,7 @@ static int write_checkpoint(const render_checkpoint *cp, const sampling_settings
     image img;
     if (image_init(&img, film->width, film->height) != 0)
         return gt_error_set(e, cp->path, "out of memory for the checkpoint");
-    int rc = mc_film_write_channels(film, NULL, &img) | image_set_attribute(&img, ATTR_CHECKPOINT_OF, cp->identity);
+    int rc = mc_film_write_channels(film, &img) | image_set_attribute(&img, ATTR_CHECKPOINT_OF, cp->identity);
     char blocks[64];
     snprintf(blocks, sizeof blocks, "%" PRIu32 ":%" PRIu32 "+%" PRIu32, ss->seed, ss->sample_offset, done);
     rc |= image_set_attribute(&img, ATTR_BLOCKS, blocks);

@@ -126,7 +126,7 @@ static void render_rows(const gbuffer *gb, const integrator *it, const work_shar
     for (int row = 0; row < rows; ++row) {
         int y = w->first_row + row * w->row_step;
         for (int x = 0; x < gb->width && !(stop && *stop); ++x)
-            if (gb->mask[y * gb->width + x])
+            if (gb->mask[y * gb->width + x] || it->covers_background)
                 rays += render_pixel(gb, it, &w->samples, film, x, y, &samples);
         progress_advance(&bar, 1);
     }

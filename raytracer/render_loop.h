@@ -87,6 +87,9 @@ typedef struct integrator {
                         float *values);
     const embree_scene *scene;
     const void *settings; /* the integrator's own parameters */
+    /* 1: the background pixels too (primary ray escapes: px->surface->t is
+     * +infinity, px->pixel names the pixel); 0: only the covered pixels */
+    int covers_background;
 } integrator;
 
 typedef struct {

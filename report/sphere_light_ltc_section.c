@@ -73,22 +73,41 @@ void sphere_ltc_section(report_context *ctx, const sphere_light_result *r, cJSON
     ltc_json(r, cJSON_AddObjectToObject(summary, "ltc"));
 }
 
+/* |residual of a| - |residual of b| paired over the held-out
+ * configurations, with its standard error; index SPHERE_FIT_MODELS is the LTC. */
+static void paired_gap(const sphere_light_result *r, int a, int b, double *d, double *se)
+{
+    if (a < SPHERE_FIT_MODELS && b < SPHERE_FIT_MODELS)
+        *d = r->fit.paired_abs[a][b], *se = r->fit.paired_abs_se[a][b];
+    else if (a == SPHERE_FIT_MODELS)
+        *d = -r->ltc.paired[b], *se = r->ltc.paired_se[b];
+    else
+        *d = r->ltc.paired[a], *se = r->ltc.paired_se[a];
+}
+
+static int label_index(const char *const *labels, int count, const char *label)
+{
+    for (int m = 0; m < count; ++m)
+        if (!strcmp(labels[m], label))
+            return m;
+    return 0;
+}
+
 void sphere_ltc_headline(report *doc, const sphere_light_result *r)
 {
-    const char *labels[SPHERE_FIT_MODELS + 1];
-    double errors[SPHERE_FIT_MODELS + 1];
+    enum { METHODS = SPHERE_FIT_MODELS + 1 };
+    const char *labels[METHODS];
+    double errors[METHODS], d, se;
     for (int m = 0; m < SPHERE_FIT_MODELS; ++m)
         labels[m] = r->fit.held_out[m].method, errors[m] = r->fit.held_out[m].errors.mean_abs;
     labels[SPHERE_FIT_MODELS] = "LTC", errors[SPHERE_FIT_MODELS] = r->ltc.held_out.mean_abs;
     report_headline h = {.topic = "GGX sphere lights", .measure = "held-out mean |log error|",
                          .significance = HEADLINE_NOT_COMPUTED};
-    if (headline_rank(&h, SPHERE_FIT_MODELS + 1, labels, errors) != 0)
+    if (headline_rank(&h, METHODS, labels, errors) != 0)
         return;
-    for (int m = 0; m < SPHERE_FIT_MODELS; ++m) {
-        int pair = (!strcmp(h.best, "LTC") && !strcmp(h.runner_up, labels[m])) ||
-                   (!strcmp(h.runner_up, "LTC") && !strcmp(h.best, labels[m]));
-        if (pair)
-            headline_from_difference(&h, r->ltc.paired[m], r->ltc.paired_se[m], "paired over held-out configurations");
-    }
+    paired_gap(r, label_index(labels, METHODS, h.runner_up), label_index(labels, METHODS, h.best), &d, &se);
+    char over[64];
+    snprintf(over, sizeof over, "paired over %d held-out configurations", r->fit_settings.test);
+    headline_from_difference(&h, d, se, over);
     report_add_headline(doc, &h);
 }

@@ -5,6 +5,7 @@
  * Carlo reference, scene renders, shadows and the cost of the Newton step. */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "report/sphere_light_section_parts.h"
 #include "report/sphere_light_section.h"

@@ -25,8 +25,8 @@ void sphere_sun_section(report_context *ctx, const sphere_sun_result *s, cJSON *
 void sphere_ltc_section(report_context *ctx, const sphere_light_result *r, cJSON *summary);
 
 /* The held-out headline of the section: the four methods ranked by mean
- * |log error|, significance from the paired difference when the LTC is one
- * of the two best. */
+ * |log error|, the gap between the two best from their difference paired
+ * over the held-out configurations. */
 void sphere_ltc_headline(report *doc, const sphere_light_result *r);
 
 #endif

@@ -2,8 +2,10 @@
  * (studies/sphere_light.h, "LTC sphere lights"): its residual, the paired
  * differences against Karis and Decima, and the N-gon's own error. */
 #include <math.h>
+#include <stdlib.h>
 
 #include "core/progress.h"
+#include "core/sample_mean.h"
 #include "fitters/fit_sphere_light.h"
 #include "fitters/ltc_fit.h"
 #include "luts/ltc_ggx_writers.h"
@@ -39,13 +41,6 @@ static double other_abs_residual(const sphere_fit_outcome *fit, int m, const sph
     return fabs(sphere_light_residual(SPHERE_MODEL_DECIMA, k, s));
 }
 
-/* Mean and standard error of the mean from sums over n values. */
-static void mean_and_se(double sum, double sum_sq, int n, double *mean, double *se)
-{
-    *mean = sum / n;
-    *se = n > 1 ? sqrt(fmax(0.0, sum_sq / n - *mean * *mean) / (n - 1)) : NAN;
-}
-
 /* The N-gon's own error at sample s in the residual's terms:
  * |ln((ngon + 0.01)/(exact + 0.01))|, both as radiance per unit normal
  * illuminance (E times the LTC integral over pi sin^2 sigma), the exact
@@ -70,21 +65,30 @@ static void score_ngon(const ltc_table *t, const sphere_light_sample *test, int 
     out->ngon_mean = sum / count, out->ngon_max = worst;
 }
 
+/* Per model of the outcome, the paired mean of |other| - |LTC| and its
+ * standard error (d: count doubles of scratch). */
+static void score_pairs(const ltc_table *t, const sphere_light_sample *test, int count, const sphere_fit_outcome *fit,
+                        double *d, sphere_ltc_result *out)
+{
+    for (int m = 0; m < SPHERE_FIT_MODELS; ++m) {
+        for (int i = 0; i < count; ++i)
+            d[i] = other_abs_residual(fit, m, &test[i]) - fabs(sphere_ltc_residual(t, &test[i]));
+        sample_mean_se(d, count, &out->paired[m], &out->paired_se[m]);
+    }
+}
+
 void sphere_ltc_score(const ltc_table *t, const sphere_light_sample *test, int count, const sphere_fit_outcome *fit,
                       sphere_ltc_result *out)
 {
-    double d[SPHERE_FIT_MODELS] = {0}, d_sq[SPHERE_FIT_MODELS] = {0};
     sphere_light_error_sums sums = {0};
-    for (int i = 0; i < count; ++i) {
-        double residual = sphere_ltc_residual(t, &test[i]), r = fabs(residual);
-        sphere_light_error_add(&sums, residual);
-        for (int m = 0; m < SPHERE_FIT_MODELS; ++m) {
-            double gap = other_abs_residual(fit, m, &test[i]) - r;
-            d[m] += gap, d_sq[m] += gap * gap;
-        }
-    }
+    for (int i = 0; i < count; ++i)
+        sphere_light_error_add(&sums, sphere_ltc_residual(t, &test[i]));
     sphere_light_error_finish(&sums, &out->held_out);
+    double *d = malloc(sizeof *d * (size_t)(count > 0 ? count : 1));
     for (int m = 0; m < SPHERE_FIT_MODELS; ++m)
-        mean_and_se(d[m], d_sq[m], count, &out->paired[m], &out->paired_se[m]);
+        out->paired[m] = out->paired_se[m] = NAN;
+    if (d)
+        score_pairs(t, test, count, fit, d, out);
+    free(d);
     score_ngon(t, test, count, out);
 }
