@@ -185,6 +185,10 @@
 #define CH_DFG_A "dfg.A"
 #define CH_DFG_B "dfg.B"
 #define CH_DFG_E "dfg.E"
+/* The GGX LTC table (luts/ltc_ggx.h): M^-1's a, b, c, d, the magnitude E,
+ * the Fresnel term B, and the fit's total-variation error per texel. */
+#define CH_LTC_NAMES {"ltc.a", "ltc.b", "ltc.c", "ltc.d", "ltc.E", "ltc.B"}
+#define CH_LTC_ERROR "ltc.error"
 /* The best-fit normals table (luts/best_fit_normals.h): the scale t per texel. */
 #define CH_BEST_FIT_SCALE "best_fit.t"
 /* Blue-noise dither textures (luts/blue_noise.h): one channel per seed. */

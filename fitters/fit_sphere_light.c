@@ -19,22 +19,31 @@ double sphere_light_residual(sphere_light_model model, const decima_sphere_const
     return log((value + SPHERE_FIT_FLOOR) / (s->reference + SPHERE_FIT_FLOOR));
 }
 
+void sphere_light_error_add(sphere_light_error_sums *s, double r)
+{
+    s->n += 1.0;
+    s->sum_abs += fabs(r), s->sum_abs2 += r * r;
+    s->sum_sq += r * r, s->sum_sq2 += r * r * r * r;
+}
+
+void sphere_light_error_finish(const sphere_light_error_sums *s, sphere_light_errors *out)
+{
+    double n = s->n;
+    double mean_abs = s->sum_abs / n, mean_sq = s->sum_sq / n;
+    out->mean_abs = mean_abs;
+    out->mean_abs_stderr = sqrt(fmax(0.0, s->sum_abs2 / n - mean_abs * mean_abs) / (n - 1.0));
+    out->rms = sqrt(mean_sq);
+    double mean_sq_stderr = sqrt(fmax(0.0, s->sum_sq2 / n - mean_sq * mean_sq) / (n - 1.0));
+    out->rms_stderr = out->rms > 0.0 ? mean_sq_stderr / (2.0 * out->rms) : 0.0;
+}
+
 void sphere_light_measure(sphere_light_model model, const decima_sphere_constants *k,
                           const sphere_light_sample *samples, size_t count, sphere_light_errors *out)
 {
-    double sum_abs = 0, sum_abs2 = 0, sum_sq = 0, sum_sq2 = 0;
-    for (size_t i = 0; i < count; ++i) {
-        double r = sphere_light_residual(model, k, &samples[i]);
-        sum_abs += fabs(r), sum_abs2 += r * r;
-        sum_sq += r * r, sum_sq2 += r * r * r * r;
-    }
-    double n = (double)count;
-    double mean_abs = sum_abs / n, mean_sq = sum_sq / n;
-    out->mean_abs = mean_abs;
-    out->mean_abs_stderr = sqrt(fmax(0.0, sum_abs2 / n - mean_abs * mean_abs) / (n - 1.0));
-    out->rms = sqrt(mean_sq);
-    double mean_sq_stderr = sqrt(fmax(0.0, sum_sq2 / n - mean_sq * mean_sq) / (n - 1.0));
-    out->rms_stderr = out->rms > 0.0 ? mean_sq_stderr / (2.0 * out->rms) : 0.0;
+    sphere_light_error_sums sums = {0};
+    for (size_t i = 0; i < count; ++i)
+        sphere_light_error_add(&sums, sphere_light_residual(model, k, &samples[i]));
+    sphere_light_error_finish(&sums, out);
 }
 
 void sphere_light_paired_abs(sphere_light_model a, const decima_sphere_constants *ka, sphere_light_model b,

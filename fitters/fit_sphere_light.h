@@ -51,6 +51,13 @@ typedef struct {
 void sphere_light_measure(sphere_light_model model, const decima_sphere_constants *k,
                           const sphere_light_sample *samples, size_t count, sphere_light_errors *out);
 
+/* The same from residuals of any method, one at a time. */
+typedef struct {
+    double n, sum_abs, sum_abs2, sum_sq, sum_sq2;
+} sphere_light_error_sums;
+void sphere_light_error_add(sphere_light_error_sums *s, double residual);
+void sphere_light_error_finish(const sphere_light_error_sums *s, sphere_light_errors *out);
+
 /* The paired difference |residual_a| - |residual_b| over the same samples:
  * its mean and the standard error of that mean over the configurations
  * (core/sample_mean.h), so that two models' gap has an interval even where

@@ -227,7 +227,7 @@ void dfg_lut_free(dfg_lut *lut)
 void dfg_lut_sample(const dfg_lut *lut, float n_dot_v, float roughness, float out[3])
 {
     for (int c = 0; c < DFG_CHANNELS; ++c) {
-        dfg_table table = {lut, c};
+        dfg_table table = {lut->data, lut->size, DFG_CHANNELS, c};
         out[c] = dfg_lookup(table, n_dot_v, roughness);
     }
 }

@@ -1,6 +1,7 @@
 /* The C dialect of luts/dfg_lut.inc: what its primitives mean when
- * luts/dfg_lut.c compiles it for dfg_lut_sample, one channel of the
- * interleaved table at a time, in float, with C's fminf/fmaxf clamp. */
+ * luts/dfg_lut.c compiles it for dfg_lut_sample (and luts/ltc_ggx.c for
+ * ltc_table_sample), one channel of an interleaved table at a time, in
+ * float, with C's fminf/fmaxf clamp. */
 #ifndef GTLAB_LUTS_DFG_LUT_C_H
 #define GTLAB_LUTS_DFG_LUT_C_H
 
@@ -15,10 +16,12 @@
 #define dfg_int(x) ((int)(x))
 
 typedef float dfg_value;
-/* Channel `channel` (DFG_SCALE, DFG_BIAS, DFG_ALBEDO) of `lut`. */
+/* Channel `channel` of an interleaved size x size table of `channels`
+ * floats per texel: the DFG table (DFG_SCALE, DFG_BIAS, DFG_ALBEDO of
+ * DFG_CHANNELS) and the LTC table (luts/ltc_ggx.h) alike. */
 typedef struct {
-    const dfg_lut *lut;
-    int channel;
+    const float *data;
+    int size, channels, channel;
 } dfg_table;
 typedef struct {
     int i0, i1;
@@ -26,10 +29,10 @@ typedef struct {
 } dfg_axis;
 
 static inline float dfg_saturate(float u) { return fminf(fmaxf(u, 0.0f), 1.0f); }
-static inline int dfg_table_size(dfg_table t) { return t.lut->size; }
+static inline int dfg_table_size(dfg_table t) { return t.size; }
 static inline float dfg_texel(dfg_table t, int i, int j)
 {
-    return t.lut->data[((size_t)j * t.lut->size + i) * DFG_CHANNELS + t.channel];
+    return t.data[((size_t)j * t.size + i) * t.channels + t.channel];
 }
 
 #endif

@@ -158,30 +158,46 @@ float sphere_illuminance_representative(float cos_theta, float sin_sigma)
     return (float)M_PI * sin_sigma * sin_sigma * sl_saturate(cos_rep);
 }
 
-/* One pixel of sphere_light_shade. */
+/* The talks' specular with Schlick's Fresnel: Karis (k == NULL) or Decima
+ * with the constants k (one Newton step). */
+static float talk_specular(const void *user, vec3 v, vec3 lc, float sin_sigma, float roughness, float f0)
+{
+    const decima_sphere_constants *k = user;
+    float alpha = (float)ggx_alpha(roughness);
+    float l_dot_h = sqrtf(fmaxf(0.0f, 0.5f + 0.5f * v3_dot(v, lc)));
+    return k ? decima_sphere_ggx(lc.z, v.z, v3_dot(v, lc), l_dot_h, sin_sigma, alpha, f0, k, 1)
+             : karis_sphere_ggx(v, lc, sin_sigma, alpha) * fresnel_schlick(l_dot_h, f0);
+}
+
+/* One pixel of sphere_light_shade_specular. */
 static float shade_point(vec3 p, vec3 n, float albedo, float roughness, vec3 eye, const sphere_light_source *light,
-                         float f0, const decima_sphere_constants *k)
+                         float f0, sphere_specular_fn specular, const void *user)
 {
     frame f = frame_from_normal(v3_normalize(n));
     vec3 to_light = v3_sub(light->position, p);
-    float d = v3_length(to_light), sin_sigma = light->radius / d, alpha = (float)ggx_alpha(roughness);
+    float d = v3_length(to_light), sin_sigma = light->radius / d;
     vec3 v = frame_to_local(&f, v3_normalize(v3_sub(eye, p))), lc = frame_to_local(&f, v3_scale(to_light, 1.0f / d));
     if (!(v.z > 0.0f))
         return 0.0f;
     float e_perp = (float)sphere_light_normal_illuminance(sin_sigma);
     float diffuse = albedo / (float)M_PI * sphere_illuminance_frostbite(lc.z, sin_sigma);
-    float l_dot_h = sqrtf(fmaxf(0.0f, 0.5f + 0.5f * v3_dot(v, lc)));
-    float spec = k ? decima_sphere_ggx(lc.z, v.z, v3_dot(v, lc), l_dot_h, sin_sigma, alpha, f0, k, 1)
-                   : karis_sphere_ggx(v, lc, sin_sigma, alpha) * fresnel_schlick(l_dot_h, f0);
-    return light->radiance * (diffuse + e_perp * spec);
+    return light->radiance * (diffuse + e_perp * specular(user, v, lc, sin_sigma, roughness, f0));
+}
+
+void sphere_light_shade_specular(const sphere_light_gbuffer *g, vec3 eye, const sphere_light_source *light, float f0,
+                                 sphere_specular_fn specular, const void *user, float *out)
+{
+    for (size_t i = 0; i < g->count; ++i) {
+        vec3 p = v3(g->position[0][i], g->position[1][i], g->position[2][i]);
+        vec3 n = v3(g->normal[0][i], g->normal[1][i], g->normal[2][i]);
+        out[i] = g->mask[i] != 0.0f
+                     ? shade_point(p, n, g->albedo[i], g->roughness[i], eye, light, f0, specular, user)
+                     : 0.0f;
+    }
 }
 
 void sphere_light_shade(const sphere_light_gbuffer *g, vec3 eye, const sphere_light_source *light, float f0,
                         const decima_sphere_constants *k, float *out)
 {
-    for (size_t i = 0; i < g->count; ++i) {
-        vec3 p = v3(g->position[0][i], g->position[1][i], g->position[2][i]);
-        vec3 n = v3(g->normal[0][i], g->normal[1][i], g->normal[2][i]);
-        out[i] = g->mask[i] != 0.0f ? shade_point(p, n, g->albedo[i], g->roughness[i], eye, light, f0, k) : 0.0f;
-    }
+    sphere_light_shade_specular(g, eye, light, f0, talk_specular, k, out);
 }

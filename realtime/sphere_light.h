@@ -159,4 +159,14 @@ typedef struct {
 void sphere_light_shade(const sphere_light_gbuffer *g, vec3 eye, const sphere_light_source *light, float f0,
                         const decima_sphere_constants *k, float *out);
 
+/* A specular term per unit normal illuminance, Fresnel of f0 included, in
+ * the local frame (n = +z); user is the method's data. */
+typedef float (*sphere_specular_fn)(const void *user, vec3 v, vec3 lc, float sin_sigma, float roughness, float f0);
+
+/* The same shading with another specular (sphere_light_shade is this with
+ * the talks' Karis or Decima specular): the exact Lambert part plus
+ * E_perp * specular. */
+void sphere_light_shade_specular(const sphere_light_gbuffer *g, vec3 eye, const sphere_light_source *light, float f0,
+                                 sphere_specular_fn specular, const void *user, float *out);
+
 #endif

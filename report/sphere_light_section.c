@@ -127,28 +127,6 @@ static const report_column errors_json[] = {
     REPORT_REAL(NULL, "rms_log_error_stderr", NULL, sphere_light_errors, rms_stderr),
 };
 
-/* The summary table's row: the three models by held-out mean |log error|,
- * the gap's interval from the difference paired over the held-out
- * configurations. */
-static void fit_headline(report *doc, const sphere_fit_settings *fs, const sphere_fit_outcome *o)
-{
-    const char *labels[SPHERE_FIT_MODELS];
-    double errors[SPHERE_FIT_MODELS];
-    for (int m = 0; m < SPHERE_FIT_MODELS; ++m)
-        labels[m] = o->held_out[m].method, errors[m] = o->held_out[m].errors.mean_abs;
-    report_headline h = {.topic = "GGX sphere lights", .measure = "held-out mean |log error|",
-                         .significance = HEADLINE_NOT_COMPUTED};
-    if (headline_rank(&h, SPHERE_FIT_MODELS, labels, errors) != 0)
-        return;
-    int best = 0, second = 0;
-    for (int m = 0; m < SPHERE_FIT_MODELS; ++m)
-        best = !strcmp(labels[m], h.best) ? m : best, second = !strcmp(labels[m], h.runner_up) ? m : second;
-    char over[64];
-    snprintf(over, sizeof over, "paired over %d held-out configurations", fs->test);
-    headline_from_difference(&h, o->paired_abs[second][best], o->paired_abs_se[second][best], over);
-    report_add_headline(doc, &h);
-}
-
 static void report_fit(report_context *ctx, const sphere_fit_settings *fs, const sphere_fit_outcome *o, cJSON *json)
 {
     report *doc = ctx->doc;
@@ -182,7 +160,6 @@ static void report_fit(report_context *ctx, const sphere_fit_settings *fs, const
     cJSON *held = cJSON_AddObjectToObject(json, "held_out");
     for (int m = 0; m < SPHERE_FIT_MODELS; ++m)
         report_object(held, o->held_out[m].key, errors_json, COLUMNS(errors_json), &o->held_out[m].errors);
-    fit_headline(doc, fs, o);
     report_finding(doc, "GGX sphere lights",
                    "held-out mean |log error| Karis %.3f, Decima as published %.3f, Decima refit %.3f "
                    "(radius reduction %.3g ± %.2g, published %g).",
@@ -208,24 +185,25 @@ static int plot_profile(const char *dir, gt_error *e)
 
 /* ---- Error maps ---- */
 
-/* The three methods side by side on a common colour scale, from DIR/<name>.csv. */
+/* The four methods side by side on a common colour scale, from DIR/<name>.csv. */
 static int plot_map(const char *dir, const sphere_map_row *m, gt_error *e)
 {
-    char path[8192], commands[32768];
+    char path[8192], commands[49152];
     snprintf(path, sizeof path, "%s/%s.csv", dir, m->name);
     snprintf(commands, sizeof commands,
              "set datafile separator ','\n"
-             "set multiplot layout 1,3 title '%s: mean |ln((approx + 0.01)/(reference + 0.01))| near the highlight'\n"
+             "set multiplot layout 1,4 title '%s: mean |ln((approx + 0.01)/(reference + 0.01))| near the highlight'\n"
              "set xlabel '%s'\nset ylabel 'angular radius (deg)'\nset logscale y\n"
              "set palette rgb 21,22,23\nset cbrange [0:1]\nset xrange [%g:%g]\nset yrange [%g:%g]\n"
              "set title 'Karis'\nplot '%s' using 1:2:3 with image notitle\n"
              "set title 'Decima (published)'\nplot '%s' using 1:2:4 with image notitle\n"
              "set title 'Decima refit'\nplot '%s' using 1:2:5 with image notitle\n"
+             "set title 'LTC'\nplot '%s' using 1:2:6 with image notitle\n"
              "unset multiplot\n",
              m->title, m->xlabel, SPHERE_MAP_X_LO, SPHERE_MAP_X_HI, asin(SPHERE_MAP_SIN_LO) * 180.0 / M_PI,
-             asin(SPHERE_MAP_SIN_HI) * 180.0 / M_PI, path, path, path);
+             asin(SPHERE_MAP_SIN_HI) * 180.0 / M_PI, path, path, path, path);
     snprintf(path, sizeof path, "%s/%s.png", dir, m->name);
-    return gnuplot_render(commands, path, 1500, 460, e);
+    return gnuplot_render(commands, path, 2000, 460, e);
 }
 
 static const report_column map_columns[] = {
@@ -233,6 +211,7 @@ static const report_column map_columns[] = {
     REPORT_REAL("Karis", "Karis", "%.4f", sphere_map_row, karis),
     REPORT_REAL("Decima", "Decima", "%.4f", sphere_map_row, decima),
     REPORT_REAL("Decima refit", "Decima refit", "%.4f", sphere_map_row, refit),
+    REPORT_REAL("LTC", "LTC", "%.4f", sphere_map_row, ltc),
 };
 
 static void report_maps(report_context *ctx, const sphere_light_result *r, cJSON *json)
@@ -265,23 +244,29 @@ static const report_column scene_columns[] = {
     REPORT_REAL("FLIP Karis", "karis_flip", "%.4f", sphere_scene_row, karis_flip),
     REPORT_REAL("FLIP Decima", "decima_flip", "%.4f", sphere_scene_row, decima_flip),
     REPORT_REAL("FLIP Decima refit", "decima_refit_flip", "%.4f", sphere_scene_row, refit_flip),
+    REPORT_REAL("LTC", "ltc", "%.4g", sphere_scene_row, ltc),
+    REPORT_REAL("FLIP LTC", "ltc_flip", "%.4f", sphere_scene_row, ltc_flip),
 };
 
 static void scene_figures(report *doc, const sphere_scene_row *s)
 {
-    char paths[7][256];
-    const char *figs[7], *caps[7] = {"reference", "Karis", "Decima", "Decima refit",
-                                     "|Karis - reference|", "|Decima - reference|", "|refit - reference|"};
+    enum { FIGS = 1 + 2 * SPHERE_SCENE_APPROX };
+    char paths[FIGS][256];
+    const char *figs[FIGS], *caps[FIGS] = {"reference", "Karis", "Decima", "Decima refit", "LTC",
+                                           "|Karis - reference|", "|Decima - reference|", "|refit - reference|",
+                                           "|LTC - reference|"};
     snprintf(paths[0], 256, "sphere_light/scene_%s_reference.png", s->name);
     for (int m = 0; m < SPHERE_SCENE_APPROX; ++m) {
         snprintf(paths[1 + m], 256, "sphere_light/scene_%s_%s.png", s->name, sphere_scene_approx_files[m]);
-        snprintf(paths[4 + m], 256, "sphere_light/scene_%s_%s_error.png", s->name, sphere_scene_approx_files[m]);
+        snprintf(paths[1 + SPHERE_SCENE_APPROX + m], 256, "sphere_light/scene_%s_%s_error.png", s->name,
+                 sphere_scene_approx_files[m]);
     }
-    for (int j = 0; j < 7; ++j)
+    for (int j = 0; j < FIGS; ++j)
         figs[j] = paths[j];
-    report_comparison(doc, 7, figs, caps, 4, s->title);
+    report_comparison(doc, FIGS, figs, caps, 1 + SPHERE_SCENE_APPROX, s->title);
     char flips[SPHERE_SCENE_APPROX][256];
-    const char *flip_caps[SPHERE_SCENE_APPROX] = {"FLIP of Karis", "FLIP of Decima", "FLIP of the refit"};
+    const char *flip_caps[SPHERE_SCENE_APPROX] = {"FLIP of Karis", "FLIP of Decima", "FLIP of the refit",
+                                                  "FLIP of the LTC"};
     for (int m = 0; m < SPHERE_SCENE_APPROX; ++m) {
         snprintf(flips[m], 256, "sphere_light/scene_%s_%s_flip.png", s->name, sphere_scene_approx_files[m]);
         figs[m] = flips[m];
@@ -302,7 +287,7 @@ static void report_scenes(report_context *ctx, const sphere_light_result *r, cJS
                      "A grey dielectric floor (albedo %.2f, roughness %.2f, F0 %.2f) seen from 0.5 units above it, "
                      "unshadowed. Reference: 'gtlab render sphere-light' (MIS over the light, Fresnel inside the "
                      "integral). Approximations evaluated per pixel from the reference's G-buffer, with the exact "
-                     "Lambert part (Frostbite's illuminance) in all three, so they differ only in the specular. "
+                     "Lambert part (Frostbite's illuminance) in all four, so they differ only in the specular. "
                      "DSSIM on linear radiance (green channel; the scenes are grey), and mean FLIP (HDR-FLIP where "
                      "the reference exceeds 1, its exposures the reference's; metrics/flip.h); previews and heatmaps "
                      "scaled by the reference's 99th percentile, FLIP maps on [0, 1].",
@@ -389,6 +374,8 @@ int sphere_light_section(report_context *ctx, const sphere_light_result *r, gt_e
     report_maps(ctx, r, json);
     report_scenes(ctx, r, json);
     report_cost(ctx, &r->cost, json);
+    sphere_ltc_section(ctx, r, json);
+    sphere_ltc_headline(ctx->doc, r);
     sphere_sun_section(ctx, &r->sun, json);
     sphere_terminator_section(ctx, &r->terminator, json);
     sphere_units_section(ctx, &r->units, json);

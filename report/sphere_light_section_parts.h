@@ -19,4 +19,14 @@ void sphere_units_section(report_context *ctx, const sphere_units_result *u, cJS
 /* The sun at grazing angles (item 9; sphere_light_sun_section.c). */
 void sphere_sun_section(report_context *ctx, const sphere_sun_result *s, cJSON *summary);
 
+/* LTC sphere lights (issue 27, item 2; sphere_light_ltc_section.c): the
+ * table's fit, the held-out scores with paired differences, the N-gon's
+ * error and the cost per pixel. */
+void sphere_ltc_section(report_context *ctx, const sphere_light_result *r, cJSON *summary);
+
+/* The held-out headline of the section: the four methods ranked by mean
+ * |log error|, the gap between the two best from their difference paired
+ * over the held-out configurations. */
+void sphere_ltc_headline(report *doc, const sphere_light_result *r);
+
 #endif

@@ -14,8 +14,10 @@
 #include "core/ggx.h"
 #include "core/progress.h"
 #include "core/sobol.h"
+#include "fitters/ltc_fit.h"
 #include "raytracer/sphere_light_reference.h"
 #include "realtime/sphere_light.h"
+#include "realtime/sphere_light_ltc.h"
 
 /* ---- The refit ---- */
 
@@ -122,6 +124,11 @@ int sphere_fit_study(const sphere_fit_settings *s, sphere_fit_outcome *out, gt_e
     return rc;
 }
 
+int sphere_fit_held_out_samples(const sphere_fit_settings *s, sphere_light_sample **out, gt_error *e)
+{
+    return make_samples(s->seed, (uint32_t)s->train, s->test, s->mc_samples, s->threads, out, e);
+}
+
 /* The profile over the radius reduction: DIR/fit_profile.csv. */
 static int write_profile(const char *dir, const sphere_fit_outcome *o, gt_error *e)
 {
@@ -142,12 +149,12 @@ static const double offset_delta[SPHERE_MAP_OFFSETS] = {0.0, 0.5, 0.5, 0.5, 1.0,
 static const double offset_psi[SPHERE_MAP_OFFSETS] = {0.0,       0.0, 1.5707963, 3.1415927,
                                                       0.0,       1.5707963, 3.1415927, 1.5707963};
 
-enum { MAP_METHODS = 3 };
+enum { MAP_METHODS = 4 };
 
 /* Mean |ln((model + 0.01)/(reference + 0.01))| of each method over the
  * offsets of one cell (x, sin_sigma). */
 static void cell_errors(const sphere_map_row *m, double x, double sin_sigma, uint32_t samples, uint32_t seed,
-                        const decima_sphere_constants *refit, double err[MAP_METHODS])
+                        const decima_sphere_constants *refit, const ltc_table *ltc, double err[MAP_METHODS])
 {
     double roughness = m->x_is_roughness ? x : m->fixed, n_dot_v = m->x_is_roughness ? m->fixed : x;
     const decima_sphere_constants published = decima_sphere_published();
@@ -160,6 +167,7 @@ static void cell_errors(const sphere_map_row *m, double x, double sin_sigma, uin
         err[0] += fabs(sphere_light_residual(SPHERE_MODEL_KARIS, NULL, &s)) / SPHERE_MAP_OFFSETS;
         err[1] += fabs(sphere_light_residual(SPHERE_MODEL_DECIMA, &published, &s)) / SPHERE_MAP_OFFSETS;
         err[2] += fabs(sphere_light_residual(SPHERE_MODEL_DECIMA, refit, &s)) / SPHERE_MAP_OFFSETS;
+        err[3] += fabs(sphere_ltc_residual(ltc, &s)) / SPHERE_MAP_OFFSETS;
     }
 }
 
@@ -179,20 +187,21 @@ static int write_map(const char *path, sphere_map_row *m, const double *err, int
     FILE *mem = open_memstream(&text, &len);
     if (!mem)
         return gt_error_set(e, path, "out of memory");
-    fprintf(mem, "%s,angular_radius_deg,karis,decima,decima_refit\n", m->x_is_roughness ? "roughness" : "n_dot_v");
-    double means[MAP_METHODS] = {0.0, 0.0, 0.0};
+    fprintf(mem, "%s,angular_radius_deg,karis,decima,decima_refit,ltc\n",
+            m->x_is_roughness ? "roughness" : "n_dot_v");
+    double means[MAP_METHODS] = {0.0, 0.0, 0.0, 0.0};
     for (int j = 0; j < size; ++j) {
         for (int i = 0; i < size; ++i) {
             const double *c = err + MAP_METHODS * (j * size + i);
             double sigma_deg = asin(map_sin_sigma(j, size)) * 180.0 / M_PI;
-            fprintf(mem, "%.6g,%.6g,%.6g,%.6g,%.6g\n", map_x(i, size), sigma_deg, c[0], c[1], c[2]);
+            fprintf(mem, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", map_x(i, size), sigma_deg, c[0], c[1], c[2], c[3]);
             for (int k = 0; k < MAP_METHODS; ++k)
                 means[k] += c[k] / (size * size);
         }
         fprintf(mem, "\n");
     }
     fclose(mem);
-    m->karis = means[0], m->decima = means[1], m->refit = means[2];
+    m->karis = means[0], m->decima = means[1], m->refit = means[2], m->ltc = means[3];
     int rc = atomic_write_text(path, text, e);
     free(text);
     return rc;
@@ -200,7 +209,7 @@ static int write_map(const char *path, sphere_map_row *m, const double *err, int
 
 /* One map: DIR/<name>.csv and the means. */
 static int run_map(const study_context *ctx, const char *dir, sphere_map_row *m, int size, uint32_t samples,
-                   const decima_sphere_constants *refit, gt_error *e)
+                   const decima_sphere_constants *refit, const ltc_table *ltc, gt_error *e)
 {
     double *err = malloc((size_t)size * size * MAP_METHODS * sizeof *err);
     if (!err)
@@ -208,7 +217,7 @@ static int run_map(const study_context *ctx, const char *dir, sphere_map_row *m,
 #pragma omp parallel for schedule(dynamic, 1) num_threads(ctx->threads)
     for (int cell = 0; cell < size * size; ++cell)
         cell_errors(m, map_x(cell % size, size), map_sin_sigma(cell / size, size), samples,
-                    hash_combine(0x5f1e, (uint32_t)cell), refit, err + MAP_METHODS * cell);
+                    hash_combine(0x5f1e, (uint32_t)cell), refit, ltc, err + MAP_METHODS * cell);
     char path[8192];
     snprintf(path, sizeof path, "%s/%s.csv", dir, m->name);
     int rc = write_map(path, m, err, size, e);
@@ -217,10 +226,10 @@ static int run_map(const study_context *ctx, const char *dir, sphere_map_row *m,
 }
 
 static const sphere_map_row map_definitions[SPHERE_MAPS] = {
-    {"errors_nv_size_r015", "roughness 0.15", "n.v", 0, 0.15, 0, 0, 0},
-    {"errors_nv_size_r04", "roughness 0.4", "n.v", 0, 0.4, 0, 0, 0},
-    {"errors_nv_size_r07", "roughness 0.7", "n.v", 0, 0.7, 0, 0, 0},
-    {"errors_roughness_size_nv03", "n.v = 0.3", "roughness", 1, 0.3, 0, 0, 0},
+    {"errors_nv_size_r015", "roughness 0.15", "n.v", 0, 0.15, 0, 0, 0, 0},
+    {"errors_nv_size_r04", "roughness 0.4", "n.v", 0, 0.4, 0, 0, 0, 0},
+    {"errors_nv_size_r07", "roughness 0.7", "n.v", 0, 0.7, 0, 0, 0, 0},
+    {"errors_roughness_size_nv03", "n.v = 0.3", "roughness", 1, 0.3, 0, 0, 0, 0},
 };
 
 /* ---- The cost of the Newton step ---- */
@@ -284,6 +293,75 @@ static double time_function(noh_fn f, const noh_input *in, long count, int repea
     return 1e9 * best / count;
 }
 
+/* The whole specular per pixel, from local vectors, as each method's
+ * shader would run it; sphere_specular_fn's signature (F0 = 1). */
+static float karis_full(const void *user, vec3 v, vec3 lc, float sin_sigma, float roughness, float f0)
+{
+    (void)user, (void)f0;
+    return karis_sphere_ggx(v, lc, sin_sigma, roughness * roughness);
+}
+
+static float decima_full(const void *user, vec3 v, vec3 lc, float sin_sigma, float roughness, float f0)
+{
+    (void)f0;
+    return decima_sphere_ggx_local(v, lc, sin_sigma, roughness * roughness, user, 1);
+}
+
+static float ltc_full(const void *user, vec3 v, vec3 lc, float sin_sigma, float roughness, float f0)
+{
+    (void)f0;
+    return ltc_sphere_ggx(user, v, lc, sin_sigma, roughness);
+}
+
+typedef struct {
+    vec3 v, lc;
+    float sin_sigma, roughness;
+} spec_input;
+
+/* Configurations of the realistic distribution. */
+static void make_spec_inputs(spec_input *in, long count)
+{
+    for (long i = 0; i < count; ++i) {
+        sphere_light_config c = sphere_light_realistic_config(0x7c05, (uint32_t)i);
+        in[i] = (spec_input){c.v, c.lc, (float)c.sin_sigma, (float)sqrt(c.alpha)};
+    }
+}
+
+static double time_specular(sphere_specular_fn f, const void *user, const spec_input *in, long count, int repeats,
+                            volatile float *sink)
+{
+    double best = INFINITY;
+    for (int r = 0; r < repeats; ++r) {
+        double t0 = seconds_now();
+        float sum = 0.0f;
+        for (long i = 0; i < count; ++i)
+            sum += f(user, in[i].v, in[i].lc, in[i].sin_sigma, in[i].roughness, 1.0f);
+        best = fmin(best, seconds_now() - t0);
+        *sink = sum;
+    }
+    return 1e9 * best / count;
+}
+
+/* Karis, Decima and the LTC (a 16^2 table: the lookup's cost does not
+ * depend on the size) on count / 8 configurations. */
+static void time_full_specular(long count, int repeats, sphere_cost *out, volatile float *sink)
+{
+    out->ns_karis_full = out->ns_decima_full = out->ns_ltc = NAN;
+    count = count / 8 > 1 ? count / 8 : 1;
+    spec_input *in = malloc((size_t)count * sizeof *in);
+    ltc_table t;
+    gt_error e;
+    if (in && ltc_fit_table(&t, 16, 1, &e) == 0) {
+        const decima_sphere_constants published = decima_sphere_published();
+        make_spec_inputs(in, count);
+        out->ns_karis_full = time_specular(karis_full, NULL, in, count, repeats, sink);
+        out->ns_decima_full = time_specular(decima_full, &published, in, count, repeats, sink);
+        out->ns_ltc = time_specular(ltc_full, &t, in, count, repeats, sink);
+        ltc_table_free(&t);
+    }
+    free(in);
+}
+
 void sphere_cost_study(long count, int repeats, sphere_cost *out)
 {
     noh_input *in = malloc((size_t)count * sizeof *in);
@@ -293,6 +371,7 @@ void sphere_cost_study(long count, int repeats, sphere_cost *out)
     count_instructions("sphere_noh_squared_karis", &out->instructions_karis, &out->calls_karis);
     count_instructions("sphere_noh_squared_decima", &out->instructions_decima, &out->calls_decima);
     out->ns_karis = out->ns_decima = NAN;
+    out->ns_karis_full = out->ns_decima_full = out->ns_ltc = NAN;
     if (!in)
         return;
     make_inputs(in, count);
@@ -304,9 +383,46 @@ void sphere_cost_study(long count, int repeats, sphere_cost *out)
     out->ns_karis = time_function(sphere_noh_squared_karis, in, count, repeats, &sink);
     out->ns_decima = time_function(sphere_noh_squared_decima, in, count, repeats, &sink);
     free(in);
+    time_full_specular(count, repeats, out, &sink);
 }
 
 /* ---- The stage ---- */
+
+/* The LTC table (32^2 at preview, 64^2 as shipped), its files
+ * <output>/luts/ltc_ggx.{exr,h,hlsl,glsl} and its held-out scores. */
+static int fit_ltc(const study_context *ctx, const sphere_fit_settings *fs, const sphere_fit_outcome *fit,
+                   ltc_table *t, sphere_ltc_result *out, gt_error *e)
+{
+    sphere_light_sample *test = NULL;
+    char luts[4096];
+    out->table_size = ctx->quality == QUALITY_PREVIEW ? 32 : 64;
+    if (study_make_dir(ctx, "luts", luts, sizeof luts, e) != 0 ||
+        sphere_ltc_write_table(luts, out->table_size, ctx->threads, t, &out->fit_seconds, e) != 0)
+        return -1;
+    out->mean_fit_error = t->mean_error, out->max_fit_error = t->max_error;
+    if (sphere_fit_held_out_samples(fs, &test, e) != 0) {
+        ltc_table_free(t);
+        return -1;
+    }
+    sphere_ltc_score(t, test, fs->test, fit, out);
+    free(test);
+    return 0;
+}
+
+/* The maps and scenes, with the LTC beside the talks' methods. */
+static int ltc_stage_parts(const study_context *ctx, const char *dir, const ltc_table *ltc, sphere_light_result *out,
+                           gt_error *e)
+{
+    const int preview = ctx->quality == QUALITY_PREVIEW;
+    out->map_size = preview ? 16 : 40;
+    out->map_samples = preview ? 256u : 1024u;
+    for (int k = 0; k < SPHERE_MAPS; ++k) {
+        out->maps[k] = map_definitions[k];
+        if (run_map(ctx, dir, &out->maps[k], out->map_size, out->map_samples, &out->fit.fit.constants, ltc, e) != 0)
+            return -1;
+    }
+    return sphere_scenes_study(ctx, dir, &out->fit.fit.constants, ltc, out->scenes, &out->shadows, e);
+}
 
 int sphere_light_study(const study_context *ctx, sphere_light_result *out, gt_error *e)
 {
@@ -322,14 +438,12 @@ int sphere_light_study(const study_context *ctx, sphere_light_result *out, gt_er
                                               1u, ctx->threads};
     if (sphere_fit_study(&out->fit_settings, &out->fit, e) != 0 || write_profile(dir, &out->fit, e) != 0)
         return -1;
-    out->map_size = preview ? 16 : 40;
-    out->map_samples = preview ? 256u : 1024u;
-    for (int k = 0; k < SPHERE_MAPS; ++k) {
-        out->maps[k] = map_definitions[k];
-        if (run_map(ctx, dir, &out->maps[k], out->map_size, out->map_samples, &out->fit.fit.constants, e) != 0)
-            return -1;
-    }
-    if (sphere_scenes_study(ctx, dir, &out->fit.fit.constants, out->scenes, &out->shadows, e) != 0)
+    ltc_table ltc;
+    if (fit_ltc(ctx, &out->fit_settings, &out->fit, &ltc, &out->ltc, e) != 0)
+        return -1;
+    int rc = ltc_stage_parts(ctx, dir, &ltc, out, e);
+    ltc_table_free(&ltc);
+    if (rc != 0)
         return -1;
     sphere_cost_study(preview ? 1L << 20 : 1L << 22, 3, &out->cost);
     if (sphere_terminator_study(preview ? 2000 : 20000, preview ? 512u : 1024u, &out->terminator) != 0)

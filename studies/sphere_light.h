@@ -9,14 +9,17 @@
  *
  * Writes under <output>/sphere_light: sphere_noh{,_map,_by_nv}.csv,
  * fit_profile.csv, errors_*.csv, scene_*.exr and the scenes' previews and
- * heatmaps (PNG). The fit's own files (fits/sphere_light.json, .h, .hlsl,
- * .glsl) are the caller's to write from the results. */
+ * heatmaps (PNG), and the LTC table it fits under <output>/luts/ltc_ggx.{exr,
+ * h,hlsl,glsl} (luts/ltc_ggx_writers.h). The fit's own files
+ * (fits/sphere_light.json, .h, .hlsl, .glsl) are the caller's to write from
+ * the results. */
 #ifndef GTLAB_STUDIES_SPHERE_LIGHT_H
 #define GTLAB_STUDIES_SPHERE_LIGHT_H
 
 #include <stdint.h>
 
 #include "fitters/fit_sphere_light_outputs.h"
+#include "luts/ltc_ggx.h"
 #include "raytracer/sphere_light_reference.h"
 #include "studies/study.h"
 
@@ -68,6 +71,11 @@ int sphere_noh_study(const sphere_noh_sweep *sweep, const char *dir, sphere_noh_
  * (the settings, the outcome and its files: fitters/fit_sphere_light_outputs.h). */
 int sphere_fit_study(const sphere_fit_settings *s, sphere_fit_outcome *out, gt_error *e);
 
+/* The held-out configurations of that study (s->test of them after the
+ * s->train training ones, with their references): the same samples
+ * sphere_fit_study measures, into a malloc'd array. */
+int sphere_fit_held_out_samples(const sphere_fit_settings *s, sphere_light_sample **out, gt_error *e);
+
 /* Configuration i of that distribution under a seed. */
 sphere_light_config sphere_light_realistic_config(uint32_t seed, uint32_t i);
 /* A configuration with its reference (`samples` MIS samples), as radiance
@@ -92,11 +100,12 @@ typedef struct {
     int x_is_roughness;                /* x: roughness (else n.v) */
     double fixed;                      /* the other of roughness / n.v */
     double karis, decima, refit;       /* means over the map */
+    double ltc;                        /* the LTC sphere light (realtime/sphere_light_ltc.h) */
 } sphere_map_row;
 
 /* ---- Scene renders ---- */
 
-enum { SPHERE_SCENES = 2, SPHERE_SCENE_APPROX = 3 };
+enum { SPHERE_SCENES = 2, SPHERE_SCENE_APPROX = 4 };
 /* File stems of the approximations: scene_<scene>_<stem>.png. */
 extern const char *const sphere_scene_approx_files[SPHERE_SCENE_APPROX];
 
@@ -109,6 +118,7 @@ typedef struct {
     const char *name, *title;
     double karis, decima, refit; /* DSSIM against the reference */
     double karis_flip, decima_flip, refit_flip; /* mean FLIP, the reference the reference (metrics/flip.h) */
+    double ltc, ltc_flip;        /* the LTC sphere light: DSSIM, mean FLIP */
     double noise_floor;          /* DSSIM of the reference's even against odd samples */
     int width, height;
 } sphere_scene_row;
@@ -119,14 +129,16 @@ typedef struct {
     double share_darkened;  /* of the visible pixels, losing more than a tenth */
 } sphere_shadow_result;
 
-/* Renders the sun and large-light floor scenes, compares Karis, Decima and
- * Decima with `refit` per pixel from the reference's G-buffer (the exact
- * Lambert part in all three), and the shadowed sphere-on-plane. Writes
+/* Renders the sun and large-light floor scenes, compares Karis, Decima,
+ * Decima with `refit` and the LTC sphere light with the table `ltc` per
+ * pixel from the reference's G-buffer (the exact Lambert part in all), and
+ * the shadowed sphere-on-plane. Writes
  * DIR/scene_<name>.exr, the previews scene_<name>_{reference,karis,...}.png,
  * heatmaps scene_<name>_<approx>_error.png, FLIP maps
  * scene_<name>_<approx>_flip.png and scene_shadows_*.png. */
 int sphere_scenes_study(const study_context *ctx, const char *dir, const decima_sphere_constants *refit,
-                        sphere_scene_row rows[SPHERE_SCENES], sphere_shadow_result *shadows, gt_error *e);
+                        const ltc_table *ltc, sphere_scene_row rows[SPHERE_SCENES], sphere_shadow_result *shadows,
+                        gt_error *e);
 
 /* ---- The cost of the Newton step ---- */
 
@@ -137,6 +149,8 @@ typedef struct {
     int instructions_karis, instructions_decima; /* -1 if objdump is unavailable */
     int calls_karis, calls_decima;               /* call instructions inside them (0: straight code) */
     double ns_karis, ns_decima;                  /* best of the passes; NaN: out of memory */
+    double ns_karis_full, ns_decima_full, ns_ltc; /* whole specular per pixel: karis_sphere_ggx,
+                                                     decima_sphere_ggx_local, ltc_sphere_ggx (16^2 table); NaN: not run */
     long count;                                  /* configurations per pass */
     double share_early_out;                      /* R inside the light: both return 1 at once */
 } sphere_cost;
@@ -219,6 +233,43 @@ typedef struct {
 
 int sphere_units_study(int train, int test, uint32_t samples, int threads, sphere_units_result *out, gt_error *e);
 
+/* ---- LTC sphere lights (issue 27, item 2) ---- */
+
+/* The GGX LTC table fitted by gtlab (fitters/ltc_fit.h) and the sphere as
+ * an equal-area N-gon (realtime/sphere_light_ltc.h), scored on the refit's
+ * held-out configurations beside Karis and Decima (published, refit):
+ * the residual ln((ltc + 0.01)/(reference + 0.01)), and the paired
+ * difference of |residual| (other minus LTC, positive: the LTC is closer)
+ * with its standard error over the configurations. The N-gon's own error:
+ * sphere_ltc_ngon_error of the shipped LTC_SPHERE_SIDES over the same
+ * configurations, mean and worst. */
+typedef struct {
+    int table_size;
+    double fit_seconds, mean_fit_error, max_fit_error; /* the fit's total-variation error per texel */
+    sphere_light_errors held_out;
+    double paired[SPHERE_FIT_MODELS], paired_se[SPHERE_FIT_MODELS]; /* vs held_out rows of sphere_fit_outcome */
+    double ngon_mean, ngon_max;
+} sphere_ltc_result;
+
+/* Fits a size^2 LTC table (fitters/ltc_fit.h, `threads` workers) into *t
+ * and writes DIR/ltc_ggx.{exr,h,hlsl,glsl} (luts/ltc_ggx_writers.h, C and
+ * shader identifier LTC_GGX); *seconds: the fit's wall time. On failure t
+ * is left empty. */
+int sphere_ltc_write_table(const char *dir, int size, int threads, ltc_table *t, double *seconds, gt_error *e);
+
+/* The residual of one sample under the LTC sphere light with table t. */
+double sphere_ltc_residual(const ltc_table *t, const sphere_light_sample *s);
+
+/* |ln((ngon + 0.01)/(exact + 0.01))| of the LTC sphere light at s with a
+ * `sides`-gon, the exact disk being the LTC_MAX_SIDES-gon (both radiance per
+ * unit normal illuminance, as the residual). */
+double sphere_ltc_ngon_error(const ltc_table *t, const sphere_light_sample *s, int sides);
+
+/* Scores the table on the held-out samples (count of them) against the
+ * outcome's three models. */
+void sphere_ltc_score(const ltc_table *t, const sphere_light_sample *test, int count, const sphere_fit_outcome *fit,
+                      sphere_ltc_result *out);
+
 /* ---- The whole stage ---- */
 
 typedef struct {
@@ -235,6 +286,7 @@ typedef struct {
     sphere_terminator_result terminator;
     sphere_units_result units;
     sphere_sun_result sun;
+    sphere_ltc_result ltc;
 } sphere_light_result;
 
 int sphere_light_study(const study_context *ctx, sphere_light_result *out, gt_error *e);

@@ -19,10 +19,18 @@
 #include "raytracer/reference_render.h"
 #include "scene/scene_loaders.h"
 #include "realtime/sphere_light.h"
+#include "realtime/sphere_light_ltc.h"
 #include "studies/sphere_light.h"
 
-const char *const sphere_scene_approx_files[SPHERE_SCENE_APPROX] = {"karis", "decima", "decima_refit"};
-static const char *const approx_names[SPHERE_SCENE_APPROX] = {"Karis", "Decima", "Decima refit"};
+const char *const sphere_scene_approx_files[SPHERE_SCENE_APPROX] = {"karis", "decima", "decima_refit", "ltc"};
+static const char *const approx_names[SPHERE_SCENE_APPROX] = {"Karis", "Decima", "Decima refit", "LTC"};
+
+/* Approximation m's specular: the talks' (Karis, Decima with constants) or
+ * the LTC's with its table. */
+typedef struct {
+    sphere_specular_fn specular; /* NULL: sphere_light_shade with k */
+    const void *user;
+} scene_model;
 
 typedef struct {
     const char *name, *title;
@@ -111,12 +119,15 @@ static int flip_map(const char *dir, const light_scene *ls, const image *ref, in
 
 /* Approximation m of the scene: its DSSIM and FLIP, preview, heatmap and FLIP map. */
 static int score_approx(const char *dir, const light_scene *ls, const image *ref, vec3 eye, int m,
-                        const decima_sphere_constants *k, float scale, float *approx, float *err, double *dssim,
+                        const scene_model *model, float scale, float *approx, float *err, double *dssim,
                         double *flip, gt_error *e)
 {
     sphere_light_gbuffer g = gbuffer_of(ref);
     const float *want = image_channel_data(ref, CH_SPHERE_G);
-    sphere_light_shade(&g, eye, &ls->light, SPHERE_F0_DIELECTRIC, k, approx);
+    if (model->specular)
+        sphere_light_shade_specular(&g, eye, &ls->light, SPHERE_F0_DIELECTRIC, model->specular, model->user, approx);
+    else
+        sphere_light_shade(&g, eye, &ls->light, SPHERE_F0_DIELECTRIC, model->user, approx);
     ssim_result r;
     char path[8192];
     if (ssim_compute(approx, want, g.mask, ref->width, ref->height, approx_names[m], NULL, &r, e) != 0)
@@ -135,8 +146,7 @@ static int score_approx(const char *dir, const light_scene *ls, const image *ref
 
 /* The reference's EXR, noise floor and preview; then each approximation. */
 static int score_scene(const char *dir, const light_scene *ls, const image *ref, vec3 eye,
-                       const decima_sphere_constants *models[SPHERE_SCENE_APPROX], sphere_scene_row *row,
-                       gt_error *e)
+                       const scene_model models[SPHERE_SCENE_APPROX], sphere_scene_row *row, gt_error *e)
 {
     size_t n = image_pixel_count(ref);
     const float *mask = image_channel_data(ref, CH_MASK), *want = image_channel_data(ref, CH_SPHERE_G);
@@ -151,18 +161,19 @@ static int score_scene(const char *dir, const light_scene *ls, const image *ref,
     if (image_write_preview(path, &want, 1, ref->width, ref->height, 1.0f / scale, e) != 0)
         return -1;
     float *approx = malloc(n * sizeof *approx), *err = malloc(n * sizeof *err);
-    double *dssim[SPHERE_SCENE_APPROX] = {&row->karis, &row->decima, &row->refit};
-    double *flip[SPHERE_SCENE_APPROX] = {&row->karis_flip, &row->decima_flip, &row->refit_flip};
+    double *dssim[SPHERE_SCENE_APPROX] = {&row->karis, &row->decima, &row->refit, &row->ltc};
+    double *flip[SPHERE_SCENE_APPROX] = {&row->karis_flip, &row->decima_flip, &row->refit_flip, &row->ltc_flip};
     int rc = approx && err ? 0 : gt_error_set(e, dir, "out of memory");
     for (int m = 0; m < SPHERE_SCENE_APPROX && rc == 0; ++m)
-        rc = score_approx(dir, ls, ref, eye, m, models[m], scale, approx, err, dssim[m], flip[m], e);
+        rc = score_approx(dir, ls, ref, eye, m, &models[m], scale, approx, err, dssim[m], flip[m], e);
     free(approx), free(err);
     return rc;
 }
 
 /* Renders one scene, compares, writes EXR, previews and heatmaps. */
 static int compare_scene(const study_context *ctx, const char *dir, const light_scene *ls,
-                         const decima_sphere_constants *refit, sphere_scene_row *row, gt_error *e)
+                         const decima_sphere_constants *refit, const ltc_table *ltc, sphere_scene_row *row,
+                         gt_error *e)
 {
     const int preview = ctx->quality == QUALITY_PREVIEW;
     /* Half a unit above the floor, looking 6 units ahead: grazing view. */
@@ -172,7 +183,8 @@ static int compare_scene(const study_context *ctx, const char *dir, const light_
     if (render_floor(ctx, ls, &cam, &ref, e) != 0)
         return -1;
     const decima_sphere_constants published = decima_sphere_published();
-    const decima_sphere_constants *models[SPHERE_SCENE_APPROX] = {NULL, &published, refit};
+    const scene_model models[SPHERE_SCENE_APPROX] = {
+        {NULL, NULL}, {NULL, &published}, {NULL, refit}, {ltc_sphere_specular, ltc}};
     row->name = ls->name, row->title = ls->title;
     row->width = ref.width, row->height = ref.height;
     int rc = score_scene(dir, ls, &ref, cam.position, models, row, e);
@@ -245,7 +257,8 @@ static int shadow_comparison(const study_context *ctx, const char *dir, sphere_s
 }
 
 int sphere_scenes_study(const study_context *ctx, const char *dir, const decima_sphere_constants *refit,
-                        sphere_scene_row rows[SPHERE_SCENES], sphere_shadow_result *shadows, gt_error *e)
+                        const ltc_table *ltc, sphere_scene_row rows[SPHERE_SCENES], sphere_shadow_result *shadows,
+                        gt_error *e)
 {
     /* The sun: 0.27 deg, 6 deg above the horizon ahead of the camera, its
      * radiance such that its normal illuminance is 1. A large light: radius
@@ -258,7 +271,7 @@ int sphere_scenes_study(const study_context *ctx, const char *dir, const decima_
         {"large", "large light: radius 1 at 9 units, 1.5 units up", {v3(0.0f, 1.5f, -9.0f), 1.0f, (float)(25.0 / M_PI)}},
     };
     for (int k = 0; k < SPHERE_SCENES; ++k)
-        if (compare_scene(ctx, dir, &scenes[k], refit, &rows[k], e) != 0)
+        if (compare_scene(ctx, dir, &scenes[k], refit, ltc, &rows[k], e) != 0)
             return -1;
     return shadow_comparison(ctx, dir, shadows, e);
 }

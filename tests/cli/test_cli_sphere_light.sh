@@ -57,6 +57,16 @@ expect_shader_compiles sl-glsl "$work/fit.glsl" glsl \
   "vec4(EvaluateSphericalAreaGGX(v.x, v.y, v.z, v.w, 0.1, 0.3, vec3(0.04)), GetNoHSquared(0.1, v.x, v.y, v.z))"
 no_leftovers "$work"
 
+# gtlab lut ltc: the GGX LTC table, its four files, the same bits for 1 and 2 threads.
+expect_error lut-ltc-size "--size: 2 is out of range" "$work/ltc/ltc_ggx.exr" -- lut ltc --size 2 -o "$work/ltc"
+expect_ok lut-ltc lut ltc --size 8 --threads 2 -o "$work/ltc"
+for f in ltc_ggx.exr ltc_ggx.h ltc_ggx.hlsl ltc_ggx.glsl; do
+  [ -s "$work/ltc/$f" ] && pass || fail "lut ltc did not write $f"
+done
+expect_ok lut-ltc-one-thread lut ltc --size 8 --threads 1 -o "$work/ltc1"
+cmp -s "$work/ltc/ltc_ggx.h" "$work/ltc1/ltc_ggx.h" && pass || fail "lut ltc differs between 1 and 2 threads"
+no_leftovers "$work/ltc"
+
 # Same seed, same bits, whatever the thread count.
 expect_ok fit-one-thread fit sphere-light --train 300 --test 200 --samples 128 --threads 1 -o "$work/fit1.json"
 cmp -s "$work/fit.h" "$work/fit1.h" && pass || fail "fit differs between 1 and 2 threads"
