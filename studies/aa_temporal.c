@@ -60,6 +60,7 @@ struct aa_work {
     frame_buffers in[INPUTS];
     float *truth, *truth16, *prev_truth, *out[AA_T_TECHNIQUES], *prev_out[AA_T_TECHNIQUES];
     float *sharp, *plain, *prev_sharp, *samples, *xy, *luma_a, *luma_b, *strip[AA_T_TECHNIQUES + 1];
+    float *ssim_map, *dssim_sum[AA_T_TECHNIQUES]; /* a frame's SSIM map; each technique's per-pixel DSSIM summed */
     checkerboard_grid grid, prev_grid;
     double seconds[AA_T_TECHNIQUES]; /* time spent in each technique */
 };
@@ -88,7 +89,9 @@ static int work_alloc(work *w, int width, int height, int with_truth)
         w->strip[t] = floats(3 * STRIP * w->px, &ok);
     if (with_truth)
         w->samples = floats(3 * 64 * w->px, &ok), w->xy = floats(2 * 64 * w->px, &ok);
-    w->luma_a = floats(w->px, &ok), w->luma_b = floats(w->px, &ok);
+    w->luma_a = floats(w->px, &ok), w->luma_b = floats(w->px, &ok), w->ssim_map = floats(w->px, &ok);
+    for (int t = 0; t < AA_T_TECHNIQUES; ++t)
+        w->dssim_sum[t] = floats(w->px, &ok);
     return ok ? 0 : -1;
 }
 
@@ -97,11 +100,11 @@ static void work_free(work *w)
     for (int i = 0; i < INPUTS; ++i)
         frame_buffers_free(&w->in[i]);
     float *all[] = {w->truth, w->truth16, w->prev_truth, w->sharp, w->plain, w->prev_sharp, w->samples, w->xy,
-                    w->luma_a, w->luma_b};
+                    w->luma_a, w->luma_b, w->ssim_map};
     for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)
         free(all[i]);
     for (int t = 0; t < AA_T_TECHNIQUES; ++t)
-        free(w->out[t]), free(w->prev_out[t]);
+        free(w->out[t]), free(w->prev_out[t]), free(w->dssim_sum[t]);
     for (int t = 0; t <= AA_T_TECHNIQUES; ++t)
         free(w->strip[t]);
     checkerboard_grid_free(&w->grid), checkerboard_grid_free(&w->prev_grid);
@@ -203,15 +206,41 @@ static void display_luma(const float *rgb, size_t pixels, float *luma)
         luma[k] = 0.2126f * rgb[3 * k] + 0.7152f * rgb[3 * k + 1] + 0.0722f * rgb[3 * k + 2];
 }
 
-static int dssim(work *w, const float *got, const float *truth, double *out, gt_error *e)
+/* DSSIM of got against truth (display luma); with per_pixel, the frame's
+ * per-pixel DSSIM (1 - SSIM) / 2 is added to it (NaN off the valid centres). */
+static int dssim(work *w, const float *got, const float *truth, double *out, float *per_pixel, gt_error *e)
 {
     display_luma(got, w->px, w->luma_a);
     display_luma(truth, w->px, w->luma_b);
     ssim_result s;
-    if (ssim_compute(w->luma_b, w->luma_a, NULL, w->width, w->height, "temporal anti-aliasing", NULL, &s, e) != 0)
+    if (ssim_compute(w->luma_b, w->luma_a, NULL, w->width, w->height, "temporal anti-aliasing",
+                     per_pixel ? w->ssim_map : NULL, &s, e) != 0)
         return -1;
+    for (size_t p = 0; per_pixel && p < w->px; ++p)
+        per_pixel[p] += 0.5f * (1.0f - w->ssim_map[p]);
     *out = s.dssim;
     return 0;
+}
+
+/* Each technique's DSSIM minus every other's, per pixel averaged over the
+ * frames, as a mean over the valid SSIM centres with its 8x8-block standard
+ * error (metrics/cluster_mean.h): the rankings' paired interval. */
+static void paired_dssim(const work *w, aa_temporal_row *rows)
+{
+    float *diff = malloc(w->px * sizeof(float)), *valid = malloc(w->px * sizeof(float));
+    for (int a = 0; diff && valid && a < AA_T_TECHNIQUES; ++a)
+        for (int b = 0; b < AA_T_TECHNIQUES; ++b) {
+            for (size_t p = 0; p < w->px; ++p) {
+                diff[p] = w->dssim_sum[a][p] - w->dssim_sum[b][p];
+                valid[p] = isnan(diff[p]) ? 0.0f : 1.0f;
+                diff[p] = valid[p] > 0.0f ? diff[p] : 0.0f;
+            }
+            cluster_mean m = {NAN, NAN, 0, 0};
+            if (cluster_mean_compute(diff, valid, w->width, w->height, CLUSTER_MEAN_SIDE, &m) == 0 && rows[a].frames)
+                m.mean /= rows[a].frames, m.se /= rows[a].frames;
+            rows[a].dssim_minus[b] = m;
+        }
+    free(diff), free(valid);
 }
 
 /* Flicker and ghosting sums of technique t at frame k >= 1. */
@@ -236,7 +265,8 @@ static int score_frame(work *w, int k, score_sums sums[AA_T_TECHNIQUES], aa_temp
         rows[t].rmse_frame[k] = r64;
         if (k < AA_T_WARMUP)
             continue;
-        if (dssim(w, w->out[t], w->truth, &d64, e) != 0 || dssim(w, w->out[t], w->truth16, &d16, e) != 0)
+        if (dssim(w, w->out[t], w->truth, &d64, w->dssim_sum[t], e) != 0 ||
+            dssim(w, w->out[t], w->truth16, &d16, NULL, e) != 0)
             return -1;
         score_sums *s = &sums[t];
         s->rmse += r64, s->dssim += d64, s->rmse16 += rmse(w->out[t], w->truth16, 3 * w->px), s->dssim16 += d16;
@@ -315,7 +345,7 @@ static void finish_rows(const score_sums sums[AA_T_TECHNIQUES], aa_temporal_row 
         const score_sums *s = &sums[t];
         int n = s->frames > 0 ? s->frames : 1;
         rows[t].rmse = s->rmse / n, rows[t].dssim = s->dssim / n, rows[t].rmse16 = s->rmse16 / n;
-        rows[t].dssim16 = s->dssim16 / n;
+        rows[t].dssim16 = s->dssim16 / n, rows[t].frames = s->frames;
         rows[t].flicker = s->flicker_n ? sqrt(s->flicker_sq / s->flicker_n) : 0.0;
         rows[t].ghost_rmse = s->ghost_n ? sqrt(s->ghost_sq / s->ghost_n) : 0.0;
     }
@@ -341,6 +371,8 @@ static int run_path(const study_context *ctx, const aa_temporal_request *rq, con
     score_sums sums[AA_T_TECHNIQUES];
     double tsum[3] = {0.0, 0.0, 0.0};
     memset(sums, 0, sizeof sums);
+    for (int t = 0; t < AA_T_TECHNIQUES; ++t)
+        memset(w->dssim_sum[t], 0, w->px * sizeof(float));
     for (int k = 0; k < rq->frames; ++k) {
         camera now = camera_path_at(&path, k), before = camera_path_at(&path, k > 0 ? k - 1 : 0);
         render_truth(es, &now, 8, rq->seed, ctx->threads, w, w->truth); /* same strata every frame: a */
@@ -354,6 +386,7 @@ static int run_path(const study_context *ctx, const aa_temporal_request *rq, con
         keep_frame(w, k, rq->frames);
     }
     finish_rows(sums, rows);
+    paired_dssim(w, rows);
     int n = rq->frames - AA_T_WARMUP;
     truth->truth16_rmse = tsum[0] / n, truth->truth_change = sqrt(tsum[1] / n), truth->disoccluded = tsum[2] / n;
     return 0;

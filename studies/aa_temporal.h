@@ -23,6 +23,7 @@
 #define GTLAB_STUDIES_AA_TEMPORAL_H
 
 #include "core/error.h"
+#include "metrics/cluster_mean.h"
 #include "raytracer/embree_scene.h"
 #include "scene/camera.h"
 #include "studies/study.h"
@@ -43,6 +44,10 @@ typedef struct {
     double flicker;         /* RMS of the change the truth does not have */
     double ghost_rmse;      /* RMSE over disoccluded pixels (0 if none) */
     double rmse_frame[AA_T_MAX_FRAMES];
+    int frames; /* scored (after the warm-up) */
+    /* this technique's DSSIM minus each other's on the same path, per pixel
+     * averaged over the scored frames, with its 8x8-block standard error */
+    cluster_mean dssim_minus[AA_T_TECHNIQUES];
 } aa_temporal_row;
 
 typedef struct {

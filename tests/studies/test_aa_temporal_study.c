@@ -4,7 +4,10 @@
  * - with a static camera, no AA and FXAA see the same samples every frame
  *   and the truth does not change: their flicker is exactly 0;
  * - the pan disoccludes pixels, so ghosting is measured there;
- * - every score is finite and the same bits on 1 and 2 threads. */
+ * - every score is finite and the same bits on 1 and 2 threads;
+ * - the paired per-pixel DSSIM differences are antisymmetric, 0 against
+ *   themselves, and their means are the differences of the DSSIMs (the same
+ *   pixels, frames averaged per pixel). */
 #include <math.h>
 #include <string.h>
 
@@ -41,5 +44,14 @@ int main(void)
                   "%s %s", r->path, r->technique);
         CHECK_MSG(memcmp(r, &b.rows[i], sizeof *r) == 0, "%s %s differs between 1 and 2 threads", r->path, r->technique);
     }
+    for (int p = 0; p < AA_T_PATHS; ++p)
+        for (int t = 0; t < AA_T_TECHNIQUES; ++t)
+            for (int u = 0; u < AA_T_TECHNIQUES; ++u) {
+                const aa_temporal_row *x = &a.rows[p * AA_T_TECHNIQUES + t], *y = &a.rows[p * AA_T_TECHNIQUES + u];
+                const cluster_mean *d = &x->dssim_minus[u];
+                CHECK_MSG(fabs(d->mean - (x->dssim - y->dssim)) < 1e-5 && d->mean == -y->dssim_minus[t].mean,
+                          "%s %s - %s: %g vs %g", x->path, x->technique, y->technique, d->mean, x->dssim - y->dssim);
+                CHECK(t == u ? d->mean == 0.0 && d->se == 0.0 : d->se >= 0.0 && d->blocks > 1);
+            }
     return check_report("studies_aa_temporal");
 }
