@@ -18,7 +18,7 @@ int main(void)
 {
     height_fog_request rq = height_fog_default_request(QUALITY_PREVIEW);
     rq.width = 32, rq.height = 24, rq.spp = 16;
-    study_context ctx = {check_tmp_dir(), QUALITY_PREVIEW, 2};
+    study_context ctx = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL};
     static height_fog_result r;
     gt_error e;
     CHECK_MSG(height_fog_study(&ctx, &rq, &r, &e) == 0, "%s", e.message);
