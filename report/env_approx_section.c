@@ -119,7 +119,8 @@ static void images(report_context *ctx, const env_study_result *r)
     int n = 0;
     for (int env = 0; env < r->environment_count; ++env)
         for (int k = 0; k < 3; ++k, ++n) {
-            snprintf(paths[n], sizeof paths[n], "environment/%s_cornell_%s.png", r->environments[env].name, parts[k]);
+            snprintf(paths[n], sizeof paths[n], "environment/%s_%s_%s.png", r->environments[env].name,
+                     r->image_scene, parts[k]);
             snprintf(captions[n], sizeof captions[n], "%s: %s", r->environments[env].name, what[k]);
             p[n] = paths[n], c[n] = captions[n];
         }

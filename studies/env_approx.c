@@ -159,7 +159,7 @@ static int run_case(env_state *st, int env, int scene_index, const scene *s, con
         rc = env_case_score(&c, &scores, e);
     if (rc == 0)
         accumulate(st, env, scene_index, &scores);
-    if (rc == 0 && strcmp(scene_name, ENV_IMAGE_SCENE) == 0) {
+    if (rc == 0 && strcmp(scene_name, st->out->image_scene) == 0) {
         char stem[128];
         snprintf(stem, sizeof stem, "%s_%s", st->out->environments[env].name, scene_name);
         rc = env_case_images(&c, st->dir, stem, e);
@@ -240,6 +240,8 @@ int env_approx_study(const study_context *ctx, env_study_result *out, gt_error *
     double t0 = seconds_now();
     int preview = ctx->quality != QUALITY_PRODUCTION;
     memset(out, 0, sizeof *out);
+    snprintf(out->image_scene, sizeof out->image_scene, "%s",
+             ctx->scenes ? study_scene_at(ctx, 0)->label : ENV_IMAGE_SCENE);
     out->size = preview ? 48 : 128, out->spp = preview ? 512 : 4096, out->bounces = 3;
     env_state *st = calloc(1, sizeof *st);
     if (!st)

@@ -308,9 +308,9 @@ static int convergence_rows(const scene_data *d, float *ao, gtao_validation_resu
             x->steps = p.steps = gtao_convergence_steps[a];
             double unused;
             if (gtao_render(d->g, &p, ao, NULL) != 0)
-                return gt_error_set(e, GTAO_CONVERGENCE_SCENE, "out of memory");
-            if (compare(d, ao, d->hf, GTAO_CONVERGENCE_SCENE, &unused, &x->rmse_hf, e) != 0 ||
-                compare(d, ao, d->ref3d, GTAO_CONVERGENCE_SCENE, &unused, &x->rmse_3d, e) != 0)
+                return gt_error_set(e, r->convergence_scene, "out of memory");
+            if (compare(d, ao, d->hf, r->convergence_scene, &unused, &x->rmse_hf, e) != 0 ||
+                compare(d, ao, d->ref3d, r->convergence_scene, &unused, &x->rmse_3d, e) != 0)
                 return -1;
         }
     return 0;
@@ -332,13 +332,13 @@ static int write_convergence(const gtao_validation_result *r, const char *path, 
     return atomic_write_text(path, data, e);
 }
 
-/* The convergence on GTAO_CONVERGENCE_SCENE, against the height-field
+/* The convergence on r->convergence_scene, against the height-field
  * reference this study wrote to dir. */
 static int convergence(const char *refs_dir, const char *dir, gtao_validation_result *r, gt_error *e)
 {
     char ref_path[4096], hf_path[4096], data_path[4096];
-    snprintf(ref_path, sizeof ref_path, "%s/%s.exr", refs_dir, GTAO_CONVERGENCE_SCENE);
-    snprintf(hf_path, sizeof hf_path, "%s/%s_heightfield.exr", dir, GTAO_CONVERGENCE_SCENE);
+    snprintf(ref_path, sizeof ref_path, "%s/%s.exr", refs_dir, r->convergence_scene);
+    snprintf(hf_path, sizeof hf_path, "%s/%s_heightfield.exr", dir, r->convergence_scene);
     snprintf(data_path, sizeof data_path, "%s/%s", dir, GTAO_CONVERGENCE_DATA);
     approx_input in;
     image hf;
@@ -350,7 +350,7 @@ static int convergence(const char *refs_dir, const char *dir, gtao_validation_re
     }
     scene_data d = {&in.g, image_channel_data(&hf, CH_AO), image_channel_data(&in.img, CH_AO), in.g.mask, 1.0f};
     float *ao = malloc(sizeof *ao * image_pixel_count(&hf));
-    int rc = ao ? convergence_rows(&d, ao, r, e) : gt_error_set(e, GTAO_CONVERGENCE_SCENE, "out of memory");
+    int rc = ao ? convergence_rows(&d, ao, r, e) : gt_error_set(e, r->convergence_scene, "out of memory");
     if (rc == 0)
         rc = write_convergence(r, data_path, e);
     free(ao);
@@ -384,6 +384,8 @@ int gtao_validation_study(const study_context *ctx, const gtao_validation_reques
         study_make_dir(ctx, "figures", figures, sizeof figures, e) != 0)
         return -1;
     memset(out, 0, sizeof *out);
+    snprintf(out->convergence_scene, sizeof out->convergence_scene, "%s",
+             ctx->scenes ? study_scene_at(ctx, 0)->label : GTAO_CONVERGENCE_SCENE);
     int preview = ctx->quality == QUALITY_PREVIEW;
     out->heightfield_spp = preview ? 32 : 1024;
     out->converged_frames = preview ? PREVIEW_FRAMES : FULL_CYCLE;

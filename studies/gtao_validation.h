@@ -96,6 +96,7 @@ typedef struct {
     int converged_frames; /* 24 (the talk's full cycle) or 6 at preview quality */
     int scene_count;
     gtao_validation_scene scenes[GTAO_VALIDATION_MAX_SCENES]; /* study_scene_at order */
+    char convergence_scene[64]; /* GTAO_CONVERGENCE_SCENE, or a project's first scene */
     int convergence_count;
     gtao_convergence_row convergence[GTAO_CONVERGENCE_STEPS * GTAO_CONVERGENCE_SLICES]; /* by steps, then slices */
     gtao_fit_request fit_request; /* train/test point into fit_train/fit_test */
