@@ -137,8 +137,10 @@ static int render_convergence(report_context *ctx, const char *scene, gt_error *
     char caption[128];
     snprintf(caption, sizeof caption, "GTAO error against slices x samples (%s)", scene);
     const char *p[1] = {"figures/gtao_convergence.png"}, *c[1] = {caption};
-    report_paragraph(ctx->doc, "Convergence of brute-force GTAO on %s: RMSE against the height-field "
-                               "reference (solid) and the 3-D reference (dashed). Data: gtao/gtao_convergence.dat.", scene);
+    report_paragraph(ctx->doc,
+                     "Convergence of brute-force GTAO on %s: RMSE against the height-field reference (solid) "
+                     "and the 3-D reference (dashed). Data: gtao/gtao_convergence.dat.",
+                     scene);
     report_figures(ctx->doc, 1, p, c);
     return 0;
 }
@@ -166,7 +168,8 @@ static void render_fit(report *doc, const gtao_fit_request *rq, const gtao_fit_r
                      "%.2f), thickness %.3f +- %.3f (start %.2f); standard errors treat pixels as independent and "
                      "are optimistic. Fitted on %s; held out: %s.",
                      rq->preset, r->iterations, r->converged ? "" : ", not converged", r->value[0], r->se[0],
-                     r->start[0], r->value[1], r->se[1], r->start[1], r->value[2], r->se[2], r->start[2], rq->train, rq->test);
+                     r->start[0], r->value[1], r->se[1], r->start[1], r->value[2], r->se[2], r->start[2], rq->train,
+                     rq->test);
     report_rows(doc, NULL, fit_score_columns, COUNT(fit_score_columns), r->scores, sizeof r->scores[0],
                 r->score_count);
     int better = 0, held_out = 0;

@@ -43,11 +43,12 @@ expect_ok init-runs all --project "$work/gtlab.json" --stages ao --threads 2
 expect_ok scene-write scene write sphere-on-plane -o "$work/user.glb"
 label=user-shop
 cat >"$work/project.json" <<JSON
-{"_comment": "a test project", "quality": "preview", "stages": ["specular-occlusion"], "output": "unused",
+{"_comment": "a test project", "quality": "production", "stages": ["specular-occlusion"], "output": "unused",
  "scenes": [{"path": "user.glb", "label": "$label", "cameras": [{"gltf": 0}]}]}
 JSON
-expect_ok project all --project "$work/project.json" --stages "$stages" --threads 2 -o "$work/out"
+expect_ok project all --project "$work/project.json" --quality preview --stages "$stages" --threads 2 -o "$work/out"
 [ ! -e "$work/unused" ] && pass || fail "-o did not override the project's output"
+json_is quality == "'preview'" "$work/out/summary.json" && pass || fail "--quality did not override the project's quality"
 python3 - "$work/out/summary.json" "$label" "$stages" <<'PY' && pass || fail "summary.json: $(tail -c 400 "$work/stdout")"
 import json, sys
 summary, label, stages = json.load(open(sys.argv[1])), sys.argv[2], sys.argv[3]
@@ -88,5 +89,9 @@ bad camera-file "scenes\[0\]\.cameras\[0\]\.file: .*nocam.json" '{"scenes": [{"p
 bad same-label "scenes\[1\]: label 'user' is used twice" '{"scenes": [{"path": "user.glb"}, {"path": "user.glb"}]}'
 bad unknown-key ".*unknown key 'scene'" '{"scene": []}'
 bad quality "quality: 'preview' or 'production'" '{"quality": "fast"}'
+# The file's stages apply when the command line names none: gtao alone
+# needs the ao stage's output, which a new folder does not have.
+printf '{"stages": ["gtao"], "scenes": [{"path": "user.glb"}]}' >"$work/bad.json"
+expect_error file-stages "stage gtao reads what stage ao writes" "$work/bad_out" -- all --project "$work/bad.json" -o "$work/bad_out"
 bad not-json ".*at line 1, column 13" '{"scenes": ['
 finish
