@@ -8,6 +8,7 @@
 
 #include "report/claims_table.h"
 #include "report/report_table.h"
+#include "report/scene_list_section.h"
 
 typedef struct {
     char environment[64];
@@ -184,6 +185,7 @@ int env_approx_section(report_context *ctx, const env_study_result *r, gt_error 
                      r->scene_count, r->size, r->size, r->spp, r->bounces, r->environments[0].reference_noise,
                      r->seconds);
     cJSON *json = cJSON_AddObjectToObject(ctx->summary, "environment");
+    scene_names_json(json, (const char(*)[64])r->scenes, r->scene_count);
     report_heading(ctx->doc, 3, "Diffuse: AO x irradiance and the multi-bounce function");
     diffuse_table(ctx, r, json);
     report_heading(ctx->doc, 3, "Specular: split sum x specular occlusion");

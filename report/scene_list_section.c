@@ -36,6 +36,13 @@ static cJSON *files_json(const char (*files)[STUDY_SCENE_PATH_MAX], int count)
     return a;
 }
 
+void scene_names_json(cJSON *parent, const char (*names)[64], int count)
+{
+    cJSON *a = cJSON_AddArrayToObject(parent, "scenes");
+    for (int i = 0; i < count; ++i)
+        cJSON_AddItemToArray(a, cJSON_CreateString(names[i]));
+}
+
 void scene_list_section(report_context *ctx, const study_project *project, const char *path)
 {
     if (!path)

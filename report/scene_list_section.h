@@ -9,6 +9,11 @@
 #include "report/report_context.h"
 #include "studies/study_project.h"
 
+/* parent's "scenes": the names of the scenes a section averaged over, so
+ * that summary.json says which scenes (a project's, or the built-in ones)
+ * stand behind every section. */
+void scene_names_json(cJSON *parent, const char (*names)[64], int count);
+
 /* Nothing when path is NULL (no project file). */
 void scene_list_section(report_context *ctx, const study_project *project, const char *path);
 

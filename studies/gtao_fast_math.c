@@ -286,15 +286,15 @@ static int refits(const study_context *ctx, replay_scene *rs, gtao_fast_math_res
         r->iterations[model] = res.iterations;
         r->poly[model == 0 ? FAST_ACOS_SLOPE : FAST_ACOS_BOTH] = poly_of(full);
         r->at_bound[model] = on_bound(full);
-        for (int s = 0; s < n; ++s) {
-            double p[2] = {full[0], full[1]};
-            if (fit_poly(rs, n, s, model == 0, ctx->threads, p, &res, NULL, e) != 0)
+        for (int s = 0; s < n; ++s) { /* one scene (a project's) leaves none to fit: no held-out figure (NaN) */
+            double p[2] = {n > 1 ? full[0] : NAN, n > 1 ? full[1] : NAN};
+            if (n > 1 && fit_poly(rs, n, s, model == 0, ctx->threads, p, &res, NULL, e) != 0)
                 return -1;
             gtao_acos_poly held = poly_of(p);
             slopes[s] = p[0];
             both[0][s] = p[0];
             both[1][s] = p[1];
-            gains[model][s] = heldout_gain(&rs[s], &held, &talk, a, b);
+            gains[model][s] = n > 1 ? heldout_gain(&rs[s], &held, &talk, a, b) : NAN;
             if (model == 0)
                 r->scenes[s].heldout_slope_gain = gains[0][s];
             else
