@@ -179,9 +179,10 @@ static void render_fit(report *doc, const gtao_fit_request *rq, const gtao_fit_r
         better += x->held_out && x->dssim_after < x->dssim_before;
     }
     report_finding(doc, "GTAO auto-tune",
-                   "Tuning GTAO's radius, falloff and thickness by DSSIM on three scenes lowers DSSIM on %d of the %d "
+                   "Tuning GTAO's radius, falloff and thickness by DSSIM on %d scene%s lowers DSSIM on %d of the %d "
                    "held-out scenes (radius %.2f of the camera distance, falloff %.2f, thickness %.2f).",
-                   better, held_out, r->value[0], r->value[1], r->value[2]);
+                   r->score_count - held_out, r->score_count - held_out == 1 ? "" : "s", better, held_out,
+                   r->value[0], r->value[1], r->value[2]);
 }
 
 /* The summary table's row: the variants (by label, as run on the first
