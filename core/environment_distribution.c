@@ -37,11 +37,16 @@ void distribution_1d_free(distribution_1d *d)
     memset(d, 0, sizeof *d);
 }
 
-/* The i with cdf_i <= u < cdf_{i+1}: never a bin of weight 0. */
-int distribution_1d_sample(const distribution_1d *d, double u, double *offset)
+const int *distribution_1d_guide_of(const distribution_1d *d, double u)
 {
     int j = (int)(u * d->count);
-    int lo = d->guide[j < 0 ? 0 : (j < d->count ? j : d->count - 1)];
+    return &d->guide[j < 0 ? 0 : (j < d->count ? j : d->count - 1)];
+}
+
+/* The i with cdf_i <= u < cdf_{i+1}, walking up from `lo`: never a bin of
+ * weight 0. */
+int distribution_1d_sample_from(const distribution_1d *d, double u, int lo, double *offset)
+{
     while (lo < d->count - 1 && d->cdf[lo + 1] <= u)
         ++lo;
     if (offset) {
@@ -50,6 +55,11 @@ int distribution_1d_sample(const distribution_1d *d, double u, double *offset)
         *offset = t < 0.0 ? 0.0 : (t < 1.0 ? t : 0x1.fffffffffffffp-1);
     }
     return lo;
+}
+
+int distribution_1d_sample(const distribution_1d *d, double u, double *offset)
+{
+    return distribution_1d_sample_from(d, u, *distribution_1d_guide_of(d, u), offset);
 }
 
 double distribution_1d_probability(const distribution_1d *d, int i)

@@ -39,6 +39,13 @@ void distribution_1d_free(distribution_1d *d);
  * in [0, 1). Only when total > 0. */
 int distribution_1d_sample(const distribution_1d *d, double u, double *offset);
 
+/* distribution_1d_sample in two steps, for callers that prefetch between
+ * them (the guide entry and the CDF are each a cache miss in a large
+ * table): the guide entry of u, where the search starts, and the search
+ * itself from that entry's value `lo`. The same bin and offset. */
+const int *distribution_1d_guide_of(const distribution_1d *d, double u);
+int distribution_1d_sample_from(const distribution_1d *d, double u, int lo, double *offset);
+
 /* P(i) = f_i / total. */
 double distribution_1d_probability(const distribution_1d *d, int i);
 

@@ -63,6 +63,23 @@ float environment_sampler_pdf(const environment_sampler *s, vec3 w);
  * environment_sampler_pdf at once. */
 void environment_sampler_lookup(const environment_sampler *s, vec3 w, float rgb[3], float *pdf);
 
+/* Many at once, the same bits as one at a time: environment_sampler_sample's
+ * directions w[i] for the points u[i] (i < n; only when usable), and
+ * environment_sampler_lookup's radiance and density at the unit world
+ * directions w[i]. A lookup is a cache miss into 16 bytes per texel and a
+ * draw two more (the conditional row's guide entry, then the CDF where the
+ * search starts: a 1024 x 512 map has 6 MB of tables), each waiting on the
+ * one before. So these take all n together, prefetching
+ * (__builtin_prefetch) ahead of each read: the draws' rows (the marginal
+ * is small) with their guide entries prefetched, then one loop that reads
+ * draw i + 6's guide entry and prefetches its CDF line while it finishes
+ * draw i (search, direction, drawn texel prefetched); the lookups' texel
+ * indices (prefetched), then their loads. The misses of many directions
+ * overlap instead of following one another. */
+void environment_sampler_sample_many(const environment_sampler *s, int n, const float (*u)[2], vec3 *w);
+void environment_sampler_lookup_many(const environment_sampler *s, int n, const vec3 *w, float (*rgb)[3],
+                                     float *pdf);
+
 /* The one-sample balance-heuristic weight of strategy a, chosen with
  * probability c_a, against strategy b: c_a p_a / (c_a p_a + c_b p_b)
  * (0 when both densities are 0). */

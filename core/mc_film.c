@@ -209,6 +209,21 @@ int mc_film_check_moments(const mc_film *film, const char *what, gt_error *e)
                         "standard errors are wrong on dim pixels and cannot be merged; render it again");
 }
 
+void mc_film_clear_rows(mc_film *film, int first_row, int end_row)
+{
+    size_t first = (size_t)first_row * (size_t)film->width, n = (size_t)(end_row - first_row) * (size_t)film->width;
+    if (end_row <= first_row)
+        return;
+    for (int q = 0; q < film->quantity_count; ++q) {
+        size_t at = (size_t)q * pixel_count(film) + first;
+        memset(film->sum + at, 0, n * sizeof *film->sum);
+        memset(film->sum_even + at, 0, n * sizeof *film->sum_even);
+        memset(film->moments + at, 0, n * sizeof *film->moments);
+    }
+    memset(film->count + first, 0, n * sizeof *film->count);
+    memset(film->count_even + first, 0, n * sizeof *film->count_even);
+}
+
 int mc_film_merge(mc_film *dst, const mc_film *src, const char *what, gt_error *e)
 {
     if (mc_film_check_moments(src, what, e) != 0 || mc_film_check_moments(dst, "the first input", e) != 0)

@@ -127,9 +127,10 @@ double mc_film_stderr(const mc_film *film, int quantity, int pixel);
  * "Q.m<moment>_<limb>[lo]" (CH_SUFFIX_LIMB_FMT) of every quantity, and
  * CH_SPP, CH_SPP_EVEN with their lo parts; a sum's third part ("<lo>2",
  * CH_SUFFIX_THIRD_PART) only when some pixel needs it; and the attributes ATTR_NORMALIZED and ATTR_EXPONENTS,
- * so a film read back accumulates on the same grid. Pixels with
- * mask[pixel] == 0 (background; mask may be NULL) get 0 in Q and Q.stderr. */
-int mc_film_write_channels(const mc_film *film, const float *mask, image *img);
+ * so a film read back accumulates on the same grid. Pixels without a sample
+ * (the background of a quantity that samples surfaces only) get 0 in Q and
+ * Q.stderr. */
+int mc_film_write_channels(const mc_film *film, image *img);
 /* Means of one half of the samples only (half 0: even indices, 1: odd) into
  * channels named as the quantities. */
 int mc_film_write_half_means(const mc_film *film, int half, image *img);
@@ -146,5 +147,9 @@ int mc_film_check_moments(const mc_film *film, const char *what, gt_error *e);
 /* dst += src (same size and quantities). Exact. Refuses films without
  * moment sums (mc_film_check_moments), naming the file. */
 int mc_film_merge(mc_film *dst, const mc_film *src, const char *what, gt_error *e);
+/* Empties the pixels of rows [first_row, end_row): sums, moments and
+ * counts back to the state mc_film_init leaves (an interrupted block of
+ * rows, taken back). */
+void mc_film_clear_rows(mc_film *film, int first_row, int end_row);
 
 #endif

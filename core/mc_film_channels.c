@@ -163,7 +163,7 @@ static int write_moments(const mc_film *film, int q, image *img, int64_t *units)
 }
 
 /* Quantity q's channels: mean, standard error, grid sums, moment sums. */
-static int write_quantity(const mc_film *film, int q, const float *mask, image *img, int64_t *units)
+static int write_quantity(const mc_film *film, int q, image *img, int64_t *units)
 {
     size_t np = pixel_count(film);
     const char *name = film->quantities[q].name;
@@ -177,7 +177,7 @@ static int write_quantity(const mc_film *film, int q, const float *mask, image *
         write_moments(film, q, img, units) != 0)
         return -1;
     for (size_t p = 0; p < np; ++p) {
-        int background = mask && mask[p] == 0.0f;
+        int background = film->count[p] == 0;
         mean[p] = background ? 0.0f : (float)mc_film_mean(film, q, (int)p);
         err[p] = background ? 0.0f : (float)mc_film_stderr(film, q, (int)p);
     }
@@ -196,12 +196,12 @@ static int write_counts(const mc_film *film, image *img, int64_t *units)
     return write_exact(img, CH_SPP_EVEN, CH_SPP_EVEN_LO, units, np, 1.0);
 }
 
-int mc_film_write_channels(const mc_film *film, const float *mask, image *img)
+int mc_film_write_channels(const mc_film *film, image *img)
 {
     int64_t *units = malloc(sizeof *units * pixel_count(film));
     int rc = units ? 0 : -1;
     for (int q = 0; q < film->quantity_count && rc == 0; ++q)
-        rc = write_quantity(film, q, mask, img, units);
+        rc = write_quantity(film, q, img, units);
     rc = rc == 0 ? write_counts(film, img, units) : -1;
     free(units);
     if (rc != 0)

@@ -70,3 +70,66 @@ double quadrature_gk15_split(quadrature_fn f, void *ctx, const double *points, i
         *error = local;
     return total;
 }
+
+/* ---- Several components at once ------------------------------------------ */
+
+typedef struct {
+    quadrature_vector_fn f;
+    void *ctx;
+    int count;
+} vector_problem;
+
+/* K15 into k[], G7 into g[], on [a, b]. */
+static void vector_rule(const vector_problem *q, double a, double b, double *k, double *g)
+{
+    double centre = 0.5 * (a + b), half = 0.5 * (b - a), lo[QUADRATURE_MAX_COMPONENTS], hi[QUADRATURE_MAX_COMPONENTS];
+    q->f(centre, q->ctx, lo);
+    for (int c = 0; c < q->count; ++c)
+        k[c] = wgk[7] * lo[c], g[c] = wg[3] * lo[c];
+    for (int j = 0; j < 7; ++j) {
+        q->f(centre - half * xgk[j], q->ctx, lo);
+        q->f(centre + half * xgk[j], q->ctx, hi);
+        for (int c = 0; c < q->count; ++c) {
+            k[c] += wgk[j] * (lo[c] + hi[c]);
+            g[c] += (j & 1) ? wg[j / 2] * (lo[c] + hi[c]) : 0.0;
+        }
+    }
+    for (int c = 0; c < q->count; ++c)
+        k[c] *= half, g[c] *= half;
+}
+
+static void vector_adapt(const vector_problem *q, double a, double b, const double *tol, int depth, double *sum,
+                         double *error)
+{
+    double k[QUADRATURE_MAX_COMPONENTS], g[QUADRATURE_MAX_COMPONENTS];
+    vector_rule(q, a, b, k, g);
+    int refine = 0;
+    for (int c = 0; c < q->count; ++c) {
+        double estimate = fabs(k[c] - g[c]);
+        refine |= !(estimate <= tol[c] || estimate <= ROUNDING_LEVEL * fabs(k[c]));
+    }
+    if (!refine || depth >= MAX_DEPTH || !(b > a)) {
+        for (int c = 0; c < q->count; ++c)
+            sum[c] += k[c], error[c] += fabs(k[c] - g[c]);
+        return;
+    }
+    double half_tol[QUADRATURE_MAX_COMPONENTS], mid = 0.5 * (a + b);
+    for (int c = 0; c < q->count; ++c)
+        half_tol[c] = 0.5 * tol[c];
+    vector_adapt(q, a, mid, half_tol, depth + 1, sum, error);
+    vector_adapt(q, mid, b, half_tol, depth + 1, sum, error);
+}
+
+void quadrature_gk15_vector_split(quadrature_vector_fn f, void *ctx, int count, const double *points, int n,
+                                  const double *abs_tol, double *result, double *error)
+{
+    vector_problem q = {f, ctx, count};
+    double tol[QUADRATURE_MAX_COMPONENTS], local[QUADRATURE_MAX_COMPONENTS];
+    for (int c = 0; c < count; ++c)
+        tol[c] = abs_tol[c] / (n - 1), result[c] = 0.0, local[c] = 0.0;
+    for (int i = 0; i + 1 < n; ++i)
+        if (points[i + 1] > points[i])
+            vector_adapt(&q, points[i], points[i + 1], tol, 0, result, local);
+    for (int c = 0; error && c < count; ++c)
+        error[c] = local[c];
+}

@@ -20,4 +20,17 @@ double quadrature_gk15(quadrature_fn f, void *ctx, double a, double b, double ab
 double quadrature_gk15_split(quadrature_fn f, void *ctx, const double *points, int count, double abs_tol,
                              double *error);
 
+/* Several integrands evaluated together (they share their costly parts, e.g.
+ * the transmittance of every species and channel): f(x, ctx, values)
+ * writes `count` <= QUADRATURE_MAX_COMPONENTS values. The same rule and
+ * bisection as above, over [points[0], points[n-1]] split at the given
+ * points; an interval is accepted when every component's |K15 - G7| is
+ * within its share of abs_tol[k] (or at the rounding level of its integral),
+ * so each component meets its own tolerance. result[k] and error[k] (may be
+ * NULL) as above, per component. */
+enum { QUADRATURE_MAX_COMPONENTS = 16 };
+typedef void (*quadrature_vector_fn)(double x, void *ctx, double *values);
+void quadrature_gk15_vector_split(quadrature_vector_fn f, void *ctx, int count, const double *points, int n,
+                                  const double *abs_tol, double *result, double *error);
+
 #endif

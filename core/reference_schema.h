@@ -144,6 +144,15 @@
 #define CH_FOG_PUBLISHED_ERROR "fog_published_error.G"
 #define CH_FOG_CORRECTED_ERROR "fog_corrected_error.G"
 
+/* The combination images of the Decima fog (studies/aerial_perspective.h,
+ * fog/aerial_<weather>_sunNN.exr and fog/fisheye_<weather>_sunNN.exr): the
+ * atmosphere's radiance towards the camera by quadrature (reference), the
+ * LUTs + published HeightFog() (model) and + the corrected one (sun and sky
+ * attenuated); mask.A marks the terrain (aerial) or the fisheye's circle. */
+#define CH_AERIAL_REFERENCE_RGB {"aerial_reference.R", "aerial_reference.G", "aerial_reference.B"}
+#define CH_AERIAL_MODEL_RGB {"aerial_model.R", "aerial_model.G", "aerial_model.B"}
+#define CH_AERIAL_CORRECTED_RGB {"aerial_model_corrected.R", "aerial_model_corrected.G", "aerial_model_corrected.B"}
+
 /* ---- Volumetric light (render volumetric-light; raytracer/volumetric_light_integrator.h) */
 /* Radiance a spot or point light scatters once towards the camera through a
  * homogeneous medium, shadowed, up to the first surface. */
@@ -212,6 +221,7 @@
 #define ATTR_SETTINGS "gtlab.settings"   /* the integrator's options, for people to read */
 #define ATTR_BLOCKS "gtlab.sample_blocks" /* "seed:offset+count ..." */
 #define ATTR_CHECKPOINT_OF "gtlab.checkpoint_of" /* a checkpoint: the header of the render it belongs to */
+#define ATTR_CHECKPOINT_ROWS "gtlab.checkpoint_rows" /* an adaptive render's checkpoint: the rows finished */
 #define ATTR_ALBEDOS "gtlab.albedos"     /* multibounce: the albedo list */
 #define ATTR_BOUNCES "gtlab.bounces"     /* multibounce: bounce count or "inf" */
 #define ATTR_NORMALIZED "gtlab.normalized" /* "layer layer ...": vector layers written normalised */

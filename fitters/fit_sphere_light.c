@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/sample_mean.h"
 #include "fitters/ceres_bridge.h"
 
 double sphere_light_residual(sphere_light_model model, const decima_sphere_constants *k,
@@ -34,6 +35,20 @@ void sphere_light_measure(sphere_light_model model, const decima_sphere_constant
     out->rms = sqrt(mean_sq);
     double mean_sq_stderr = sqrt(fmax(0.0, sum_sq2 / n - mean_sq * mean_sq) / (n - 1.0));
     out->rms_stderr = out->rms > 0.0 ? mean_sq_stderr / (2.0 * out->rms) : 0.0;
+}
+
+void sphere_light_paired_abs(sphere_light_model a, const decima_sphere_constants *ka, sphere_light_model b,
+                             const decima_sphere_constants *kb, const sphere_light_sample *samples, size_t count,
+                             double *mean, double *stderr_)
+{
+    double *d = malloc(sizeof *d * (count ? count : 1));
+    *mean = *stderr_ = NAN;
+    if (!d)
+        return;
+    for (size_t i = 0; i < count; ++i)
+        d[i] = fabs(sphere_light_residual(a, ka, &samples[i])) - fabs(sphere_light_residual(b, kb, &samples[i]));
+    sample_mean_se(d, (int)count, mean, stderr_);
+    free(d);
 }
 
 #define FIT_BLOCK 256 /* residuals per Ceres block (ceres_bridge.h: many per block is faster) */

@@ -51,6 +51,14 @@ typedef struct {
 void sphere_light_measure(sphere_light_model model, const decima_sphere_constants *k,
                           const sphere_light_sample *samples, size_t count, sphere_light_errors *out);
 
+/* The paired difference |residual_a| - |residual_b| over the same samples:
+ * its mean and the standard error of that mean over the configurations
+ * (core/sample_mean.h), so that two models' gap has an interval even where
+ * their own standard errors overlap. */
+void sphere_light_paired_abs(sphere_light_model a, const decima_sphere_constants *ka, sphere_light_model b,
+                             const decima_sphere_constants *kb, const sphere_light_sample *samples, size_t count,
+                             double *mean, double *stderr_);
+
 /* Parameters, in order: radius_reduction, norm_scale, norm_alpha. */
 #define SPHERE_FIT_PARAMS 3
 /* The profile over the radius reduction: 10 coarse points 0, 0.05, ...,

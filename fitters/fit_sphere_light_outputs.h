@@ -40,6 +40,9 @@ typedef struct {
     sphere_light_fit_result fit;
     sphere_fit_constant constants[SPHERE_FIT_PARAMS];
     sphere_fit_errors_row held_out[SPHERE_FIT_MODELS];
+    /* |residual_a| - |residual_b| paired over the held-out configurations
+     * (sphere_light_paired_abs): its mean and standard error */
+    double paired_abs[SPHERE_FIT_MODELS][SPHERE_FIT_MODELS], paired_abs_se[SPHERE_FIT_MODELS][SPHERE_FIT_MODELS];
     double mean_reference_rel_stderr; /* mean stderr / (reference + floor) of the held-out set */
     double seconds;
 } sphere_fit_outcome;

@@ -5,18 +5,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/bootstrap.h"
+#include "core/splitmix64.h"
 #include "core/vec3.h" /* M_PI */
 
 static const double SINGLE_TOLERANCE = 1e-7, MULTIPLE_TOLERANCE = 1e-6, FLOOR = 1e-3;
-
-/* splitmix64. */
-static double uniform01(unsigned long long *state)
-{
-    unsigned long long z = (*state += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return (double)((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-}
 
 /* The three tables' values at p by `how` into v[table][k]; returns the
  * references' largest error estimate. */
@@ -45,10 +38,10 @@ static void draw_points(atmosphere_lut_reference *ref, const atmosphere_solution
     unsigned long long state = (unsigned long long)seed * 0x2545f4914f6cdd1dull + 7u;
     for (int i = 0; i < ref->count; ++i) {
         atmosphere_lut_point *p = &ref->points[i];
-        p->theta_s = uniform01(&state) * ATMOSPHERE_LUT_THETA_S_MAX;
-        p->altitude = uniform01(&state) * ATMOSPHERE_LUT_MAX_ALTITUDE;
+        p->theta_s = splitmix64_uniform01(&state) * ATMOSPHERE_LUT_THETA_S_MAX;
+        p->altitude = splitmix64_uniform01(&state) * ATMOSPHERE_LUT_MAX_ALTITUDE;
         double r = solutions[0].model.bottom_radius, horizon = 0.5 * M_PI + acos(r / (r + p->altitude));
-        p->theta_v = uniform01(&state) * horizon;
+        p->theta_v = splitmix64_uniform01(&state) * horizon;
         p->t = solutions[i % count].t;
     }
 }
@@ -105,22 +98,20 @@ static double point_error(const double *a, const double *b, int n, double floor)
     return worst;
 }
 
-static int compare_doubles(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-/* max, rms and 95th percentile (nearest rank) of errors[0..n); sorts them. */
+/* max, rms, 95th percentile (nearest rank) of errors[0..n) and the
+ * percentile's bootstrap standard error (2000 resamples, a fixed seed);
+ * sorts them. */
 static atmosphere_error_stats stats_of(double *errors, int n)
 {
-    atmosphere_error_stats s = {0.0, 0.0, 0.0};
-    double sum = 0.0;
+    atmosphere_error_stats s = {0.0, 0.0, 0.0, 0.0};
+    double sum = 0.0, p = 0.95;
     for (int i = 0; i < n; ++i)
         sum += errors[i] * errors[i];
-    qsort(errors, (size_t)n, sizeof *errors, compare_doubles);
-    if (n > 0)
-        s.max = errors[n - 1], s.rms = sqrt(sum / n), s.p95 = errors[(int)ceil(0.95 * n) - 1];
+    if (n > 0) {
+        s.p95 = quantile_nearest_rank(errors, n, p);
+        s.p95_se = n > 1 ? bootstrap_standard_error(errors, n, bootstrap_quantile, &p, 2000, 95u) : 0.0;
+        s.max = errors[n - 1], s.rms = sqrt(sum / n);
+    }
     return s;
 }
 

@@ -127,8 +127,7 @@ static void fill_blend(atmosphere_luts *luts, const atmosphere_solution *s, int 
     }
 }
 
-/* The distinct blends of the three tables' t axes; returns their count. */
-static int distinct_blends(const atmosphere_lut_sizes *sizes, double *blends)
+int atmosphere_lut_blends(const atmosphere_lut_sizes *sizes, double *blends)
 {
     int count = 0;
     for (int table = 0; table < ATMOSPHERE_TABLES; ++table) {
@@ -163,7 +162,7 @@ int atmosphere_luts_build(atmosphere_luts *luts, const atmosphere_model *m, cons
     if (atmosphere_lut_sizes_check(sizes, msg, msg_size) != 0 || atmosphere_model_check(m, msg, msg_size) != 0)
         return -1;
     double start = omp_get_wtime(), blends[MAX_BLENDS];
-    int rc = allocate(luts), count = distinct_blends(sizes, blends);
+    int rc = allocate(luts), count = atmosphere_lut_blends(sizes, blends);
     for (int k = 0; k < count && rc == 0; ++k) {
         atmosphere_solution s;
         rc = atmosphere_solve(m, blends[k], threads, &s);
@@ -179,8 +178,7 @@ int atmosphere_luts_build(atmosphere_luts *luts, const atmosphere_model *m, cons
     return rc;
 }
 
-/* The solution of blend t among `count`, or NULL. */
-static const atmosphere_solution *solution_of(const atmosphere_solution *solutions, int count, double t)
+const atmosphere_solution *atmosphere_solution_find(const atmosphere_solution *solutions, int count, double t)
 {
     for (int k = 0; k < count; ++k)
         if (solutions[k].t == t)
@@ -200,9 +198,9 @@ int atmosphere_luts_build_from(atmosphere_luts *luts, const atmosphere_solution 
     if (atmosphere_lut_sizes_check(sizes, msg, msg_size) != 0)
         return -1;
     double start = omp_get_wtime(), blends[MAX_BLENDS];
-    int n = distinct_blends(sizes, blends);
+    int n = atmosphere_lut_blends(sizes, blends);
     for (int k = 0; k < n; ++k)
-        if (!solution_of(solutions, count, blends[k])) {
+        if (!atmosphere_solution_find(solutions, count, blends[k])) {
             snprintf(msg, msg_size, "atmosphere LUTs: no precomputed solution for t = %.9g", blends[k]);
             return -1;
         }
@@ -212,7 +210,7 @@ int atmosphere_luts_build_from(atmosphere_luts *luts, const atmosphere_solution 
         return -1;
     }
     for (int k = 0; k < n; ++k)
-        fill_blend(luts, solution_of(solutions, count, blends[k]), threads);
+        fill_blend(luts, atmosphere_solution_find(solutions, count, blends[k]), threads);
     luts->build_seconds = omp_get_wtime() - start;
     return 0;
 }

@@ -87,6 +87,12 @@ int atmosphere_luts_build(atmosphere_luts *luts, const atmosphere_model *m, cons
 int atmosphere_luts_build_from(atmosphere_luts *luts, const atmosphere_solution *solutions, int count,
                                const atmosphere_lut_sizes *sizes, int threads, char *msg, size_t msg_size);
 void atmosphere_luts_free(atmosphere_luts *luts);
+/* The distinct blends t of the three tables' t axes into blends (room for
+ * 3 ATMOSPHERE_LUT_MAX_AXIS), in table order; returns their count: the
+ * solutions atmosphere_luts_build_from needs. */
+int atmosphere_lut_blends(const atmosphere_lut_sizes *sizes, double *blends);
+/* The solution of blend t among `count`, or NULL. */
+const atmosphere_solution *atmosphere_solution_find(const atmosphere_solution *solutions, int count, double t);
 
 /* The value of an axis' grid point i of n. */
 double atmosphere_lut_axis_value(int axis, int i, int n, double max_altitude);

@@ -101,6 +101,39 @@ double atmosphere_multiple_scattering(const atmosphere_solution *s, atmosphere_m
 double atmosphere_sky_mean_radiance(const atmosphere_solution *s, atmosphere_method how, double r, double mu_s,
                                     double tol, double out[ATMOSPHERE_CHANNELS]);
 
+/* ---- A view ray with the sun at its true azimuth (the combination images,
+ * studies/aerial_perspective.h) ----------------------------------------------
+ * The tables drop the view-sun azimuth; a pixel has it. The segment
+ * [0, length] of the ray from radius r with zenith cosine mu, the sun at
+ * zenith cosine mu_s and at cosine nu to the ray (nu = mu mu_s +
+ * sqrt((1 - mu^2)(1 - mu_s^2)) cos phi, phi the azimuth between them): the
+ * sun's zenith cosine at distance s is exactly (r mu_s + s nu) / r_s (the
+ * functions above take nu = mu mu_s, the azimuthal mean). length at most
+ * atmosphere_distance_to_boundary. */
+typedef struct {
+    double r, mu, mu_s, nu, length;
+} atmosphere_view_ray;
+
+/* The integrands at distance dist along the ray: single[i][c] = E_sun
+ * T(x, x_s) beta_s^i(x_s) T_sun(x_s) and multiple[c] = T(x, x_s) J(x_s), J
+ * the grid's density of the orders >= 2 at the point's zenith cosines
+ * (trilinear); either may be NULL. */
+void atmosphere_view_integrands(const atmosphere_solution *s, atmosphere_method how, const atmosphere_view_ray *ray,
+                                double dist, double single[ATMOSPHERE_SPECIES][ATMOSPHERE_CHANNELS],
+                                double multiple[ATMOSPHERE_CHANNELS]);
+
+/* The radiance the segment scatters towards the ray's origin,
+ *   L = sum_i p_i(nu) S_i + M,   S_i = \int_0^length single_i ds,   M = \int_0^length multiple ds,
+ * p_R Rayleigh, p_M Cornette-Shanks (the model's g): the nine integrals by
+ * one adaptive Gauss-Kronrod (core/quadrature.h, vector form) split at the
+ * ray rule's breaks, each to tol times its scale (E_sun beta_s^i(0) H_i;
+ * M: Rayleigh's), the transmittances as `how` says (FAST is taken as
+ * ADAPTIVE). S (may be NULL) receives S_i, M (may be NULL) M. Returns the
+ * largest error estimate relative to its scale. */
+double atmosphere_view_radiance(const atmosphere_solution *s, atmosphere_method how, const atmosphere_view_ray *ray,
+                                double tol, double L[ATMOSPHERE_CHANNELS],
+                                double S[ATMOSPHERE_SPECIES][ATMOSPHERE_CHANNELS], double M[ATMOSPHERE_CHANNELS]);
+
 /* Pbar_i(mu_a, mu_b) = (1/2pi) \int_0^{2pi} p_i(mu_a mu_b + sqrt((1 - mu_a^2)(1 - mu_b^2)) cos phi) dphi. */
 double atmosphere_azimuthal_phase(int species, double g, double mu_a, double mu_b);
 

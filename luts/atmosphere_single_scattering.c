@@ -31,18 +31,34 @@ void atmosphere_ray_rule(double d, double s[ATMOSPHERE_RAY_NODES], double w[ATMO
     }
 }
 
-void atmosphere_single_integrand(const atmosphere_solution *s, atmosphere_method how, double r, double mu,
-                                 double mu_s, double dist, double out[ATMOSPHERE_SPECIES][ATMOSPHERE_CHANNELS])
+void atmosphere_view_integrands(const atmosphere_solution *s, atmosphere_method how, const atmosphere_view_ray *ray,
+                                double dist, double single[ATMOSPHERE_SPECIES][ATMOSPHERE_CHANNELS],
+                                double multiple[ATMOSPHERE_CHANNELS])
 {
     const atmosphere_model *m = &s->model;
-    double r_s = atmosphere_radius_at(r, mu, dist), mu_s_at = (r * mu_s + dist * mu * mu_s) / r_s;
-    double view[3], sun[3];
-    atmosphere_transmittance(s, how, r, mu, dist, view);
-    atmosphere_transmittance_to_sun(s, how, r_s, fmax(-1.0, fmin(1.0, mu_s_at)), sun);
+    double r_s = atmosphere_radius_at(ray->r, ray->mu, dist);
+    double mu_s_at = fmax(-1.0, fmin(1.0, (ray->r * ray->mu_s + dist * ray->nu) / r_s)), view[3], sun[3], J[3];
+    atmosphere_transmittance(s, how, ray->r, ray->mu, dist, view);
+    if (multiple) {
+        double mu_at = fmax(-1.0, fmin(1.0, (ray->r * ray->mu + dist) / r_s));
+        atmosphere_ms_lookup(m, s->density, r_s, mu_at, mu_s_at, J);
+        for (int c = 0; c < 3; ++c)
+            multiple[c] = view[c] * J[c];
+    }
+    if (!single)
+        return;
+    atmosphere_transmittance_to_sun(s, how, r_s, mu_s_at, sun);
     atmosphere_coefficients k = atmosphere_coefficients_at(m, s->t, r_s - m->bottom_radius);
     for (int i = 0; i < ATMOSPHERE_SPECIES; ++i)
         for (int c = 0; c < 3; ++c)
-            out[i][c] = m->solar_irradiance[c] * view[c] * sun[c] * k.scattering[i][c];
+            single[i][c] = m->solar_irradiance[c] * view[c] * sun[c] * k.scattering[i][c];
+}
+
+void atmosphere_single_integrand(const atmosphere_solution *s, atmosphere_method how, double r, double mu,
+                                 double mu_s, double dist, double out[ATMOSPHERE_SPECIES][ATMOSPHERE_CHANNELS])
+{
+    atmosphere_view_ray ray = {r, mu, mu_s, mu * mu_s, dist};
+    atmosphere_view_integrands(s, how, &ray, dist, out, NULL);
 }
 
 double atmosphere_single_scale(const atmosphere_solution *s, int species, int c)

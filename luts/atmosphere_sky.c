@@ -17,13 +17,8 @@ typedef struct {
 static void ms_integrand(const atmosphere_solution *s, atmosphere_method how, double r, double mu, double mu_s,
                          double dist, double out[3])
 {
-    double r_s = atmosphere_radius_at(r, mu, dist), T[3], J[3];
-    double mu_at = fmax(-1.0, fmin(1.0, (r * mu + dist) / r_s));
-    double mu_s_at = fmax(-1.0, fmin(1.0, (r * mu_s + dist * mu * mu_s) / r_s));
-    atmosphere_transmittance(s, how, r, mu, dist, T);
-    atmosphere_ms_lookup(&s->model, s->density, r_s, mu_at, mu_s_at, J);
-    for (int c = 0; c < 3; ++c)
-        out[c] = T[c] * J[c];
+    atmosphere_view_ray ray = {r, mu, mu_s, mu * mu_s, dist};
+    atmosphere_view_integrands(s, how, &ray, dist, NULL, out);
 }
 
 static double ms_component_at(double dist, void *ctx)

@@ -10,6 +10,7 @@
 
 #include "core/ggx.h"
 #include "core/quadrature.h"
+#include "core/splitmix64.h"
 #include "core/vec3.h" /* M_PI */
 #include "luts/dfg_lut_c.h"
 #include "luts/dfg_lut.inc"
@@ -231,22 +232,13 @@ void dfg_lut_sample(const dfg_lut *lut, float n_dot_v, float roughness, float ou
     }
 }
 
-/* splitmix64: the study's points. */
-static double uniform01(unsigned long long *state)
-{
-    unsigned long long z = (*state += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return (double)((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-}
-
 /* The study's points (as floats, the lookup's argument type) and the exact
  * values at them: uv[2k], uv[2k+1]; exact[3k + c]. */
 static void study_points(int points, unsigned seed, int threads, float *uv, double *exact)
 {
     unsigned long long state = (unsigned long long)seed * 0x2545f4914f6cdd1dull + 1u;
     for (int k = 0; k < 2 * points; ++k)
-        uv[k] = (float)uniform01(&state);
+        uv[k] = (float)splitmix64_uniform01(&state);
 #pragma omp parallel for schedule(dynamic, 4) num_threads(threads)
     for (int k = 0; k < points; ++k)
         dfg_integrate(uv[2 * k], uv[2 * k + 1], exact + 3 * k);

@@ -10,6 +10,7 @@
 #include "core/ggx.h"
 #include "core/phong.h"
 #include "core/quadrature.h"
+#include "core/splitmix64.h"
 #include "core/vec3.h" /* M_PI */
 
 enum { MAX_BREAKS = 40 };
@@ -199,20 +200,11 @@ double so_lut_lookup(const so_lut *lut, double alpha_v, double beta, double roug
     return value;
 }
 
-/* splitmix64: the random test points' generator. */
-static double uniform01(unsigned long long *state)
-{
-    unsigned long long z = (*state += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return (double)((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-}
-
 /* The lookup's error at random point s (its own generator state). */
 static double interpolation_error_at(const so_lut *lut, unsigned seed, int s)
 {
     unsigned long long state = ((unsigned long long)seed << 32) ^ (unsigned long long)s;
-    double t[3] = {uniform01(&state), uniform01(&state), uniform01(&state)}, av, beta, r;
+    double t[3] = {splitmix64_uniform01(&state), splitmix64_uniform01(&state), splitmix64_uniform01(&state)}, av, beta, r;
     so_lut_point(lut->axes, t, &av, &beta, &r);
     double exact = so_cone_lobe(lut->lobe, av, beta, r, so_lobe_normaliser(lut->lobe, r), NULL);
     return fabs(so_lut_lookup(lut, av, beta, r) - exact);

@@ -93,6 +93,6 @@ static int ao_sample_batch(const integrator *self, const pixel_context *px, uint
 integrator ao_integrator(const embree_scene *es, const ao_settings *settings)
 {
     integrator it = {"ao", AO_QUANTITY_COUNT, settings->control_variate ? ao_cv_quantities : ao_quantities, "bent",
-                     ao_sample_batch, es, settings};
+                     ao_sample_batch, es, settings, 0};
     return it;
 }

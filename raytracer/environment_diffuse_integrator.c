@@ -103,25 +103,54 @@ static float lambert_weight(const env_wavefront *wf, const path_vertex *p, vec3 
     return (float)(p_brdf / (c * p_brdf + (1.0 - c) * pdf_env));
 }
 
-/* The direction w leaving live path i at this depth and the radiance
- * arriving along it (one texel lookup gives it and the environment's
- * density); the mixture weight is folded into the throughput (mixture
- * sampling only). Returns 0 if the direction carries nothing. */
-static int leave(env_wavefront *wf, int i, vec3 local, int from_env, float u0, float u1, vec3 *w, float light[3])
+/* The directions leaving the live paths: cosine-sampled in each path's
+ * shading frame, or drawn from the environment (from_env), all of the
+ * latter in one call so that their table lookups overlap. */
+static void directions(const env_wavefront *wf, const vec3 *local, const unsigned char *from_env, const float *u0,
+                       const float *u1, vec3 *dir)
 {
-    const path_vertex *p = &wf->p.paths[i];
-    if (!from_env) {
-        *w = frame_to_world(&p->shading, local);
-    } else {
-        float pdf;
-        const float u[2] = {u0, u1};
-        *w = environment_sampler_sample(&wf->light->sampler, u, &pdf);
+    float u[SAMPLE_BATCH][2];
+    int which[SAMPLE_BATCH], m = 0;
+    vec3 drawn[SAMPLE_BATCH];
+    for (int i = 0; i < wf->p.live; ++i)
+        if (from_env[i])
+            u[m][0] = u0[i], u[m][1] = u1[i], which[m++] = i;
+        else
+            dir[i] = frame_to_world(&wf->p.paths[i].shading, local[i]);
+    environment_sampler_sample_many(&wf->light->sampler, m, (const float(*)[2])u, drawn);
+    for (int k = 0; k < m; ++k)
+        dir[which[k]] = drawn[k];
+}
+
+/* The radiance arriving along each direction and the environment's density
+ * there, from one texel lookup each (all at once), for the directions that
+ * can carry light: under the mixture, those above the shading horizon
+ * (lambert_weight is 0 below it and reads neither). The others get 0. */
+static void arriving_light(const env_wavefront *wf, const vec3 *dir, float (*light)[3], float *pdf_env)
+{
+    vec3 w[SAMPLE_BATCH];
+    int which[SAMPLE_BATCH], m = 0;
+    float rgb[SAMPLE_BATCH][3], pdf[SAMPLE_BATCH];
+    for (int i = 0; i < wf->p.live; ++i) {
+        light[i][0] = light[i][1] = light[i][2] = pdf_env[i] = 0.0f;
+        if (!wf->mixed || v3_dot(dir[i], wf->p.paths[i].shading.n) > 0.0f)
+            w[m] = dir[i], which[m++] = i;
     }
-    float pdf_env;
-    environment_sampler_lookup(&wf->light->sampler, *w, light, &pdf_env);
+    environment_sampler_lookup_many(&wf->light->sampler, m, w, rgb, pdf);
+    for (int k = 0; k < m; ++k) {
+        memcpy(light[which[k]], rgb[k], sizeof rgb[k]);
+        pdf_env[which[k]] = pdf[k];
+    }
+}
+
+/* Live path i's mixture weight for direction w, folded into its throughput
+ * (mixture sampling only). Returns 0 if the direction carries nothing. */
+static int weigh(env_wavefront *wf, int i, vec3 w, float pdf_env)
+{
     if (!wf->mixed)
         return 1;
-    float weight = lambert_weight(wf, p, *w, pdf_env);
+    const path_vertex *p = &wf->p.paths[i];
+    float weight = lambert_weight(wf, p, w, pdf_env);
     for (int k = 0; k < wf->p.weights; ++k)
         wf->p.throughput[k][p->sample] *= weight;
     return weight > 0.0f;
@@ -134,24 +163,26 @@ static int leave(env_wavefront *wf, int i, vec3 local, int from_env, float u0, f
  * and gets no ray. Returns the number of rays. */
 static int leaving_rays(env_wavefront *wf, int depth, struct RTCRayHit *rays, int *owner, float (*light)[3])
 {
-    float u0[SAMPLE_BATCH], u1[SAMPLE_BATCH];
+    float u0[SAMPLE_BATCH], u1[SAMPLE_BATCH], arriving[SAMPLE_BATCH][3], pdf_env[SAMPLE_BATCH];
     unsigned char from_env[SAMPLE_BATCH] = {0};
-    vec3 local[SAMPLE_BATCH];
+    vec3 local[SAMPLE_BATCH], dir[SAMPLE_BATCH];
     path_wavefront_live_points(&wf->p, (uint32_t)depth, u0, u1);
     if (wf->mixed)
         choose_strategies(wf, u0, from_env);
     sample_cosine_hemisphere_batch(u0, u1, wf->p.live, local);
+    directions(wf, local, from_env, u0, u1, dir);
+    arriving_light(wf, dir, arriving, pdf_env);
     int n = 0;
     for (int i = 0; i < wf->p.live; ++i) {
         const path_vertex *p = &wf->p.paths[i];
-        vec3 d;
-        if (!leave(wf, i, local[i], from_env[i], u0[i], u1[i], &d, light[n]))
+        if (!weigh(wf, i, dir[i], pdf_env[i]))
             continue;
         if (depth == 0)
-            add_light(wf, UNOCCLUDED, p->sample, light[n]);
-        if (v3_dot(d, p->ng) <= 0.0f)
+            add_light(wf, UNOCCLUDED, p->sample, arriving[i]);
+        if (v3_dot(dir[i], p->ng) <= 0.0f)
             continue;
-        embree_ray_init(&rays[n].ray, p->origin, d, INFINITY);
+        memcpy(light[n], arriving[i], sizeof arriving[i]);
+        embree_ray_init(&rays[n].ray, p->origin, dir[i], INFINITY);
         owner[n++] = i;
     }
     return n;
@@ -214,6 +245,6 @@ static int environment_diffuse_sample_batch(const integrator *self, const pixel_
 integrator environment_diffuse_integrator(const embree_scene *es, const environment_diffuse_plan *plan)
 {
     integrator it = {"env-diffuse", ENV_DIFFUSE_QUANTITIES, plan->quantities, NULL, environment_diffuse_sample_batch,
-                     es, plan};
+                     es, plan, 0};
     return it;
 }

@@ -129,6 +129,6 @@ static int environment_specular_sample_batch(const integrator *self, const pixel
 integrator environment_specular_integrator(const embree_scene *es, const environment_specular_plan *plan)
 {
     integrator it = {"env-specular", ENV_SPECULAR_QUANTITIES, plan->quantities, NULL,
-                     environment_specular_sample_batch, es, plan};
+                     environment_specular_sample_batch, es, plan, 0};
     return it;
 }

@@ -44,7 +44,8 @@ static void name_quantities(fog_plan *plan)
     }
 }
 
-int fog_plan_init(fog_plan *plan, const fog_settings *settings, const embree_scene *es, vec3 eye, gt_error *e)
+int fog_plan_init(fog_plan *plan, const fog_settings *settings, const embree_scene *es, const camera_view *view,
+                  gt_error *e)
 {
     memset(plan, 0, sizeof *plan);
     if (height_fog_weather(settings->weather, settings->sun_elevation_deg, &plan->medium) != 0)
@@ -56,7 +57,7 @@ int fog_plan_init(fog_plan *plan, const fog_settings *settings, const embree_sce
     if (settings->scattering == FOG_MULTIPLE && settings->max_scatterings < 1)
         return gt_error_set(e, "fog", "the most scatterings per path must be >= 1");
     plan->scattering = settings->scattering;
-    plan->eye = eye;
+    plan->view = *view;
     plan->path.lighting.medium = &plan->medium;
     plan->path.lighting.sun_extinction = !settings->no_sun_extinction;
     plan->path.lighting.occluders = settings->no_shadows ? NULL : es;
@@ -70,31 +71,47 @@ static int quadrature_values(const fog_plan *plan, vec3 dir, double distance, fo
 {
     if (plan->scattering == FOG_QUADRATURE) {
         /* Relative to the unattenuated bound: far below the studies' noise floors. */
-        fog_single_scatter(&plan->path.lighting, plan->eye, dir, distance, 1e-6, q);
+        fog_single_scatter(&plan->path.lighting, plan->view.origin, dir, distance, 1e-6, q);
         return (int)q->rays;
     }
     double beta_t[3];
     height_fog_extinction(&plan->medium, beta_t);
-    double d_int = fog_ray_density(&plan->medium, plan->eye.y, dir.y, distance);
+    double d_int = fog_ray_density(&plan->medium, plan->view.origin.y, dir.y, distance);
     for (int c = 0; c < 3; ++c)
         q->transmittance[c] = beta_t[c] > 0.0 ? exp(-beta_t[c] * d_int) : 1.0;
     return 0;
+}
+
+/* The ray of a pixel: towards its surface, or, for a background pixel,
+ * its primary ray out to infinity. */
+static void pixel_ray(const fog_plan *plan, const pixel_context *px, vec3 *dir, double *distance)
+{
+    if (isinf(px->surface->t)) {
+        vec3 origin;
+        int x = px->pixel % plan->view.width, y = px->pixel / plan->view.width;
+        camera_ray(&plan->view, (float)x + 0.5f, (float)y + 0.5f, &origin, dir);
+        *distance = INFINITY;
+        return;
+    }
+    vec3 to_surface = v3_sub(px->surface->p, plan->view.origin);
+    *distance = v3_length(to_surface);
+    *dir = v3_scale(to_surface, (float)(1.0 / *distance));
 }
 
 static int fog_sample_batch(const integrator *self, const pixel_context *px, uint32_t first_index, int count,
                             float *values)
 {
     const fog_plan *plan = self->settings;
-    vec3 to_surface = v3_sub(px->surface->p, plan->eye);
-    double distance = v3_length(to_surface);
-    vec3 dir = v3_scale(to_surface, (float)(1.0 / distance));
+    vec3 dir;
+    double distance;
+    pixel_ray(plan, px, &dir, &distance);
     fog_ray_estimate q;
     int rays = quadrature_values(plan, dir, distance, &q);
     for (int k = 0; k < count; ++k) {
         double l[3] = {q.inscatter[0], q.inscatter[1], q.inscatter[2]};
         uint32_t index = first_index + (uint32_t)k;
         if (plan->scattering != FOG_QUADRATURE)
-            rays += fog_path_sample(&plan->path, plan->eye, dir, distance, px->half_seed[index & 1u], index, l);
+            rays += fog_path_sample(&plan->path, plan->view.origin, dir, distance, px->half_seed[index & 1u], index, l);
         for (int c = 0; c < 3; ++c) {
             values[c * SAMPLE_BATCH + k] = (float)l[c];
             values[(3 + c) * SAMPLE_BATCH + k] = (float)q.transmittance[c];
@@ -107,6 +124,6 @@ static int fog_sample_batch(const integrator *self, const pixel_context *px, uin
 
 integrator fog_integrator(const embree_scene *es, const fog_plan *plan)
 {
-    integrator it = {"fog", plan->quantity_count, plan->quantities, NULL, fog_sample_batch, es, plan};
+    integrator it = {"fog", plan->quantity_count, plan->quantities, NULL, fog_sample_batch, es, plan, 1};
     return it;
 }

@@ -19,7 +19,9 @@
  * assumes) and no_shadows (the scene neither shadows the sun nor blocks
  * scattered paths). A surface's own radiance is not rendered: composite as
  * the talk does, background * fog.T + fog.L. Pixels whose primary ray
- * misses the scene are not sampled (the shared loop samples surfaces). */
+ * misses the scene get the fog along the whole ray to infinity (fog.T there
+ * is the sky's transmittance: 0 for rays that never leave an infinite
+ * layer, i.e. level or descending ones). */
 #ifndef GTLAB_RAYTRACER_FOG_INTEGRATOR_H
 #define GTLAB_RAYTRACER_FOG_INTEGRATOR_H
 
@@ -45,13 +47,14 @@ typedef struct {
     height_fog_param medium;
     fog_path_settings path;
     fog_scattering scattering;
-    vec3 eye;
+    camera_view view; /* the G-buffer's camera: the background pixels' rays */
     int quantity_count;
     mc_quantity quantities[FOG_QUANTITIES];
 } fog_plan;
 
 /* Builds the plan; -1 with e naming "fog" when a setting is bad. */
-int fog_plan_init(fog_plan *plan, const fog_settings *settings, const embree_scene *es, vec3 eye, gt_error *e);
+int fog_plan_init(fog_plan *plan, const fog_settings *settings, const embree_scene *es, const camera_view *view,
+                  gt_error *e);
 integrator fog_integrator(const embree_scene *es, const fog_plan *plan);
 const char *fog_scattering_name(fog_scattering s);
 /* "quadrature" / "single" / "multiple" -> s; -1 if unknown. */

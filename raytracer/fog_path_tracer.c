@@ -53,6 +53,44 @@ static int free_flight(const height_fog_param *p, const double beta_t[3], const 
     return collides;
 }
 
+/* The camera leg's collision, forced inside the medium (a path that leaves
+ * the camera's segment without colliding carries no in-scattered light, so
+ * that event only adds variance: rare on rays through a thick but finite
+ * layer, it would leave the per-pixel standard error blind to it). With
+ * D the leg's density integral, channel c* uniform and the optical depth
+ * u in [0, D) from the truncated exponential of beta_t,c*,
+ *   u = -log1p(xi expm1(-beta_t,c* D)) / beta_t,c*,
+ * the mixture density is q(u) = (1/m) sum_k beta_t,k e^{-beta_t,k u} / (1 - e^{-beta_t,k D})
+ * over the m channels with medium on the leg (c* uniform among them), and
+ * weight[c] = beta_t,c e^{-beta_t,c u} / q(u): the same estimator as
+ * free_flight's with the leaving event integrated out. Returns 0 (no
+ * collision) only where the leg holds no medium. */
+static int forced_flight(const height_fog_param *p, const double beta_t[3], const path_leg *leg, fog_rng *r,
+                         double *t, double weight[3])
+{
+    double pick = rng_next(r), xi = rng_next(r), total = fog_ray_density(p, leg->origin.y, leg->dir.y, leg->length);
+    double inside[3], pdf = 0.0;
+    int with_medium[3], m = 0;
+    for (int k = 0; k < 3; ++k) {
+        inside[k] = beta_t[k] > 0.0 ? -expm1(-beta_t[k] * total) : 0.0; /* 1 - e^{-beta D}; 1 for D = inf */
+        if (inside[k] > 0.0)
+            with_medium[m++] = k;
+    }
+    if (m == 0) {
+        weight[0] = weight[1] = weight[2] = 1.0; /* no medium: the leg transmits everything */
+        return 0;
+    }
+    int c = with_medium[(int)fmin(m * pick, m - 1)];
+    double depth = -log1p(-xi * inside[c]) / beta_t[c];
+    for (int k = 0; k < 3; ++k)
+        pdf += inside[k] > 0.0 ? beta_t[k] * exp(-beta_t[k] * depth) / inside[k] / m : 0.0;
+    for (int k = 0; k < 3; ++k)
+        weight[k] = beta_t[k] * exp(-beta_t[k] * depth) / pdf;
+    double at = height_fog_distance_at(p, leg->origin.y, leg->dir.y, depth);
+    *t = at < leg->length ? at : leg->length; /* rounding at the far end */
+    return 1;
+}
+
 /* 1 when nothing of the scene lies between x and the sun. */
 static double sun_visible(const embree_scene *occluders, vec3 x, vec3 sun, int *rays)
 {
@@ -147,7 +185,8 @@ int fog_path_sample(const fog_path_settings *s, vec3 o, vec3 w, double distance,
     radiance[0] = radiance[1] = radiance[2] = 0.0;
     for (int n = 0;; ++n) {
         double t, weight[3];
-        int collides = free_flight(p, beta_t, &leg, &r, &t, weight);
+        int collides = n == 0 ? forced_flight(p, beta_t, &leg, &r, &t, weight)
+                              : free_flight(p, beta_t, &leg, &r, &t, weight);
         for (int c = 0; c < 3; ++c)
             throughput[c] *= weight[c];
         if (!collides) {

@@ -12,7 +12,12 @@
  *   w_c = beta_t,c e^{-beta_t,c D} / ((1/3) sum_k beta_t,k e^{-beta_t,k D})
  *
  * (rho cancels), and a path leaving the segment weighs e^{-beta_t,c D} over
- * the average of the same. At each collision:
+ * the average of the same. The camera's own segment is the exception: its
+ * collision is forced inside the medium (truncated exponentials, the leaving
+ * event integrated out; forced_flight in the .c), because a path that
+ * leaves it carries no in-scattered light: that event only adds variance,
+ * and where it is rare (a thick but finite layer along a rising ray) the
+ * per-pixel standard error would not see it. At each collision:
  *   - the sun is added by next-event estimation: w_c E_c S_sun,c(mu) T_sun,c
  *     V_sun / beta_t,c (S_sun: core/height_fog_medium.h; T_sun the fog's
  *     transmittance towards the sun when sun_extinction, V_sun a shadow ray

@@ -85,7 +85,7 @@ static int prepare(const reference_pass *pass, void **state, integrator *it, gt_
     fog_plan *plan = malloc(sizeof *plan);
     if (!plan)
         return gt_error_set(e, pass->scene_spec, "out of memory");
-    if (!pass->req->settings || fog_plan_init(plan, pass->req->settings, pass->es, pass->gb->view.origin, e) != 0) {
+    if (!pass->req->settings || fog_plan_init(plan, pass->req->settings, pass->es, &pass->gb->view, e) != 0) {
         free(plan);
         return pass->req->settings ? -1 : gt_error_set(e, "fog", "no settings");
     }

@@ -28,6 +28,8 @@ int gbuffer_render(const embree_scene *es, const camera *cam, normal_mode normal
             vec3 o, d;
             camera_ray(&gb->view, (float)x + 0.5f, (float)y + 0.5f, &o, &d);
             gb->mask[i] = (unsigned char)embree_closest_hit(es, o, d, INFINITY, &gb->hits[i]);
+            if (!gb->mask[i])
+                gb->hits[i] = (surface_hit){.t = INFINITY, .mesh = -1, .triangle = -1};
             if (gb->mask[i] && normals == NORMAL_GEOMETRIC)
                 gb->hits[i].ns = gb->hits[i].ng;
         }

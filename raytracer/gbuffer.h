@@ -14,7 +14,8 @@ typedef enum { NORMAL_SHADING, NORMAL_GEOMETRIC } normal_mode;
 
 typedef struct {
     int width, height;
-    surface_hit *hits;     /* per pixel; ns == ng under NORMAL_GEOMETRIC */
+    surface_hit *hits;     /* per pixel; ns == ng under NORMAL_GEOMETRIC; where the
+                              primary ray escapes, t = +infinity, mesh = -1, the rest 0 */
     unsigned char *mask;   /* 1 where the primary ray hit a surface */
     camera_view view;
 } gbuffer;

@@ -358,6 +358,6 @@ static int hf_sample_batch(const integrator *self, const pixel_context *px, uint
 
 integrator heightfield_ao_integrator(const heightfield_settings *settings)
 {
-    integrator it = {"heightfield-ao", HF_QUANTITY_COUNT, hf_quantities, NULL, hf_sample_batch, NULL, settings};
+    integrator it = {"heightfield-ao", HF_QUANTITY_COUNT, hf_quantities, NULL, hf_sample_batch, NULL, settings, 0};
     return it;
 }

@@ -280,6 +280,6 @@ static int multibounce_sample_batch(const integrator *self, const pixel_context 
 
 integrator multibounce_integrator(const embree_scene *es, const multibounce_plan *plan)
 {
-    integrator it = {"multibounce", plan->quantity_count, plan->quantities, NULL, multibounce_sample_batch, es, plan};
+    integrator it = {"multibounce", plan->quantity_count, plan->quantities, NULL, multibounce_sample_batch, es, plan, 0};
     return it;
 }

@@ -160,7 +160,7 @@ static int write_merged(const image *first, const mc_film *film, const sample_bl
             return -1;
         memcpy(dst, ch->data, sizeof(float) * image_pixel_count(first));
     }
-    if (mc_film_write_channels(film, image_channel_data(out, CH_MASK), out) != 0)
+    if (mc_film_write_channels(film, out) != 0)
         return -1;
     /* Derived channels (ratios) from the merged sums: the quantity's finish. */
     const char *name = image_get_attribute(first, ATTR_QUANTITY);

@@ -81,17 +81,17 @@ static char *render_identity(const reference_pass *pass)
     return text;
 }
 
-/* With a checkpoint path, a fixed spp and one process: in blocks that
- * survive an interruption (raytracer/render_checkpoint.h); else in one pass. */
+/* With a checkpoint path and one process: in blocks (of samples, or of rows
+ * when adaptive) that survive an interruption (raytracer/render_checkpoint.h);
+ * else in one pass. */
 static int render_samples(const reference_pass *pass, const integrator *it, mc_film *film, render_stats *stats,
                           gt_error *e)
 {
     const reference_request *req = pass->req;
     const sampling_settings *ss = &req->sampling;
-    const int adaptive = ss->target_stderr > 0.0 || ss->target_rel_stderr > 0.0;
-    if (req->resume && (adaptive || distributed_share().ranks > 1))
-        return gt_error_set(e, "--resume", "renders with a stopping target or under mpirun take no checkpoints");
-    if (!req->checkpoint || adaptive || distributed_share().ranks > 1)
+    if (req->resume && distributed_share().ranks > 1)
+        return gt_error_set(e, "--resume", "renders under mpirun take no checkpoints");
+    if (!req->checkpoint || distributed_share().ranks > 1)
         return render_estimates(pass->gb, it, ss, film, stats, e);
     char *identity = render_identity(pass);
     if (!identity)
@@ -119,7 +119,7 @@ static int render_quantity(const reference_pass *pass, image *out, render_stats 
     if (estimated != 0)
         return -1;
     int rc = 0;
-    if (mc_film_write_channels(&film, image_channel_data(out, CH_MASK), out) != 0 || (q->finish && q->finish(out) != 0))
+    if (mc_film_write_channels(&film, out) != 0 || (q->finish && q->finish(out) != 0))
         rc = gt_error_set(e, pass->scene_spec, "out of memory for the output image");
     mc_film_free(&film);
     return rc;

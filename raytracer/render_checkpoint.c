@@ -47,6 +47,22 @@ void render_checkpoint_path(const char *output_path, char *out, int out_size)
     snprintf(out, (size_t)out_size, "%.*s.checkpoint.exr", stem, output_path);
 }
 
+/* What a block is: CHECKPOINT_BLOCK samples of every pixel (a fixed spp),
+ * or CHECKPOINT_ROWS rows, each pixel to its stopping target (adaptive). */
+typedef struct {
+    int by_rows;
+    uint32_t total, step; /* samples or rows */
+} block_units;
+
+static block_units units_of(const gbuffer *gb, const sampling_settings *ss)
+{
+    int by_rows = ss->target_stderr > 0.0 || ss->target_rel_stderr > 0.0;
+    int rows = ss->threads * 4 > CHECKPOINT_ROWS ? ss->threads * 4 : CHECKPOINT_ROWS; /* keep every thread busy */
+    block_units u = {by_rows, by_rows ? (uint32_t)gb->height : (uint32_t)ss->spp,
+                     by_rows ? (uint32_t)rows : CHECKPOINT_BLOCK};
+    return u;
+}
+
 static double env_number(const char *name, double fallback)
 {
     const char *text = getenv(name);
@@ -57,7 +73,7 @@ static double env_number(const char *name, double fallback)
 
 /* The film and the samples done, written as a hidden temporary (in the
  * output set: a rollback removes it) and renamed onto cp->path outside it. */
-static int write_checkpoint(const render_checkpoint *cp, const sampling_settings *ss, uint32_t done,
+static int write_checkpoint(const render_checkpoint *cp, const sampling_settings *ss, block_units u, uint32_t done,
                             const mc_film *film, gt_error *e)
 {
     char temp[4096];
@@ -65,10 +81,14 @@ static int write_checkpoint(const render_checkpoint *cp, const sampling_settings
     image img;
     if (image_init(&img, film->width, film->height) != 0)
         return gt_error_set(e, cp->path, "out of memory for the checkpoint");
-    int rc = mc_film_write_channels(film, NULL, &img) | image_set_attribute(&img, ATTR_CHECKPOINT_OF, cp->identity);
-    char blocks[64];
-    snprintf(blocks, sizeof blocks, "%" PRIu32 ":%" PRIu32 "+%" PRIu32, ss->seed, ss->sample_offset, done);
+    int rc = mc_film_write_channels(film, &img) | image_set_attribute(&img, ATTR_CHECKPOINT_OF, cp->identity);
+    char blocks[64], rows[32];
+    snprintf(blocks, sizeof blocks, "%" PRIu32 ":%" PRIu32 "+%" PRIu32, ss->seed, ss->sample_offset,
+             u.by_rows ? (uint32_t)ss->spp : done);
     rc |= image_set_attribute(&img, ATTR_BLOCKS, blocks);
+    snprintf(rows, sizeof rows, "%" PRIu32, done);
+    if (u.by_rows)
+        rc |= image_set_attribute(&img, ATTR_CHECKPOINT_ROWS, rows);
     if (rc != 0)
         rc = gt_error_set(e, cp->path, "out of memory for the checkpoint");
     else if ((rc = exr_write(temp, &img, e)) == 0 && rename(temp, cp->path) != 0)
@@ -77,10 +97,23 @@ static int write_checkpoint(const render_checkpoint *cp, const sampling_settings
     return rc;
 }
 
+/* The rows an adaptive render's checkpoint holds, at most the image's. */
+static int checkpoint_rows(const image *img, const render_checkpoint *cp, block_units u, uint32_t *done,
+                           gt_error *e)
+{
+    const char *text = image_get_attribute(img, ATTR_CHECKPOINT_ROWS);
+    char *end;
+    unsigned long rows = text ? strtoul(text, &end, 10) : 0;
+    if (!text || end == text || *end != '\0' || rows > u.total)
+        return gt_error_set(e, cp->path, "no valid %s (the rows an adaptive render finished)", ATTR_CHECKPOINT_ROWS);
+    *done = (uint32_t)rows;
+    return 0;
+}
+
 /* The samples the checkpoint holds: one block of this render's seed from
- * its offset, at most its spp. */
+ * its offset, at most its spp (adaptive: all of them, and the rows done). */
 static int checkpoint_done(const image *img, const render_checkpoint *cp, const sampling_settings *ss,
-                           uint32_t *done, gt_error *e)
+                           block_units u, uint32_t *done, gt_error *e)
 {
     const char *of = image_get_attribute(img, ATTR_CHECKPOINT_OF);
     if (!of || strcmp(of, cp->identity) != 0)
@@ -91,16 +124,17 @@ static int checkpoint_done(const image *img, const render_checkpoint *cp, const 
     int n;
     if (sample_blocks_parse(image_get_attribute(img, ATTR_BLOCKS), cp->path, &b, 1, &n, e) != 0)
         return -1;
-    if (b.seed != ss->seed || b.begin != ss->sample_offset || b.end > (uint64_t)ss->sample_offset + ss->spp)
+    if (b.seed != ss->seed || b.begin != ss->sample_offset || b.end > (uint64_t)ss->sample_offset + ss->spp ||
+        (u.by_rows && b.end != (uint64_t)ss->sample_offset + ss->spp))
         return gt_error_set(e, cp->path, "its %s is not a start of this render's samples", ATTR_BLOCKS);
     *done = (uint32_t)(b.end - b.begin);
-    return 0;
+    return u.by_rows ? checkpoint_rows(img, cp, u, done, e) : 0;
 }
 
 /* With --resume and a checkpoint at cp->path, its sums into the (empty)
  * film and the samples they hold; else 0 done. */
-static int resume_from(const render_checkpoint *cp, const sampling_settings *ss, mc_film *film, uint32_t *done,
-                       gt_error *e)
+static int resume_from(const render_checkpoint *cp, const sampling_settings *ss, block_units u, mc_film *film,
+                       uint32_t *done, gt_error *e)
 {
     *done = 0;
     if (!cp->resume || access(cp->path, F_OK) != 0)
@@ -109,7 +143,7 @@ static int resume_from(const render_checkpoint *cp, const sampling_settings *ss,
     mc_film saved;
     if (exr_read(cp->path, &img, e) != 0)
         return -1;
-    int rc = checkpoint_done(&img, cp, ss, done, e);
+    int rc = checkpoint_done(&img, cp, ss, u, done, e);
     if (rc == 0 && (rc = mc_film_read_channels(&img, cp->path, &saved, e)) == 0) {
         rc = mc_film_merge(film, &saved, cp->path, e);
         mc_film_free(&saved);
@@ -118,15 +152,34 @@ static int resume_from(const render_checkpoint *cp, const sampling_settings *ss,
     return rc;
 }
 
-/* Block `b` of the render (CHECKPOINT_BLOCK samples from `done`) added to
- * the film through a film of its own, so an interrupted block leaves the
- * total as it was. Returns 0, 1 when stopped, or -1 with e. */
-static int render_block(const gbuffer *gb, const integrator *it, const sampling_settings *ss, uint32_t done,
-                        mc_film *film, render_stats *stats, const char *what, gt_error *e)
+/* The block after `done` (u.step samples or rows, fewer at the end). */
+static uint32_t block_size(block_units u, uint32_t done)
+{
+    return u.total - done < u.step ? u.total - done : u.step;
+}
+
+/* A block of rows straight into the film: its rows were empty before, so
+ * an interrupted block is taken back by emptying them again. */
+static int render_row_block(const gbuffer *gb, const integrator *it, const sampling_settings *ss, uint32_t done,
+                            uint32_t size, mc_film *film, render_stats *stats)
+{
+    int rc = render_estimates_add_rows(gb, it, ss, (int)done, (int)(done + size), film, stats, &stop_signal);
+    if (rc != 0)
+        mc_film_clear_rows(film, (int)done, (int)(done + size));
+    return rc;
+}
+
+/* The block after `done` added to the film (samples through a film of
+ * their own, merged), so an interrupted block leaves the total as it was.
+ * Returns 0, 1 when stopped, or -1 with e. */
+static int render_block(const gbuffer *gb, const integrator *it, const sampling_settings *ss, block_units u,
+                        uint32_t done, mc_film *film, render_stats *stats, const char *what, gt_error *e)
 {
     sampling_settings b = *ss;
-    b.sample_offset = ss->sample_offset + done;
-    b.spp = ss->spp - (int)done < CHECKPOINT_BLOCK ? ss->spp - (int)done : CHECKPOINT_BLOCK;
+    uint32_t size = block_size(u, done);
+    if (u.by_rows)
+        return render_row_block(gb, it, ss, done, size, film, stats);
+    b.sample_offset = ss->sample_offset + done, b.spp = (int)size;
     mc_film block;
     if (render_estimates_film(gb, it, &block, e) != 0)
         return -1;
@@ -140,26 +193,27 @@ static int render_block(const gbuffer *gb, const integrator *it, const sampling_
 /* Renders the blocks after `done`, writing the checkpoint every interval
  * and when stopped. */
 static int render_blocks(const gbuffer *gb, const integrator *it, const sampling_settings *ss,
-                         const render_checkpoint *cp, uint32_t done, mc_film *film, render_stats *stats, gt_error *e)
+                         const render_checkpoint *cp, block_units u, uint32_t done, mc_film *film, render_stats *stats,
+                         gt_error *e)
 {
     const double interval = env_number("GTLAB_CHECKPOINT_SECONDS", CHECKPOINT_SECONDS);
     const double stop_after = env_number("GTLAB_STOP_AFTER_BLOCKS", 0.0);
     double last = seconds_now();
     uint32_t written = done;
     int rc = 0;
-    for (int blocks = 1; rc == 0 && done < (uint32_t)ss->spp && !stop_signal; ++blocks) {
-        if ((rc = render_block(gb, it, ss, done, film, stats, cp->path, e)) != 0)
+    for (int blocks = 1; rc == 0 && done < u.total && !stop_signal; ++blocks) {
+        if ((rc = render_block(gb, it, ss, u, done, film, stats, cp->path, e)) != 0)
             break;
-        done += (uint32_t)(ss->spp - (int)done < CHECKPOINT_BLOCK ? ss->spp - (int)done : CHECKPOINT_BLOCK);
+        done += block_size(u, done);
         if (stop_after > 0 && blocks >= stop_after)
             stop_signal = SIGTERM; /* the test hook: as if the scheduler stopped the job */
-        if (done < (uint32_t)ss->spp && seconds_now() - last >= interval) {
-            rc = write_checkpoint(cp, ss, done, film, e);
+        if (done < u.total && seconds_now() - last >= interval) {
+            rc = write_checkpoint(cp, ss, u, done, film, e);
             last = seconds_now(), written = done;
         }
     }
     if (rc >= 0 && stop_signal && done > written)
-        return write_checkpoint(cp, ss, done, film, e);
+        return write_checkpoint(cp, ss, u, done, film, e);
     return rc < 0 ? -1 : 0;
 }
 
@@ -172,9 +226,10 @@ int render_estimates_checkpointed(const gbuffer *gb, const integrator *it, const
     struct sigaction saved[3];
     catch_stop_signals(saved);
     uint32_t done;
-    int rc = resume_from(cp, ss, film, &done, e);
+    block_units u = units_of(gb, ss);
+    int rc = resume_from(cp, ss, u, film, &done, e);
     if (rc == 0)
-        rc = render_blocks(gb, it, ss, cp, done, film, stats, e);
+        rc = render_blocks(gb, it, ss, cp, u, done, film, stats, e);
     const int stopped_by = stop_signal;
     restore_stop_signals(saved);
     if (stopped_by)

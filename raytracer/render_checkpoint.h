@@ -21,16 +21,23 @@
  * stops the render as SIGTERM would after K blocks of this run, and
  * GTLAB_CHECKPOINT_SECONDS=S sets the interval (0: after every block).
  *
- * Only fixed-spp renders in one process take checkpoints: a stopping target
- * decides per pixel over all its samples, and MPI ranks hold parts of the
- * sums (docs/decisions.md, "Beyond one machine"). */
+ * A render with a stopping target (--target-stderr, --target-rel-stderr)
+ * decides per pixel over all its samples, so its blocks are rows instead:
+ * CHECKPOINT_ROWS rows at a time (or 4 per thread if more), every pixel to
+ * its target, the rows
+ * finished in ATTR_CHECKPOINT_ROWS (its ATTR_BLOCKS names the whole sample
+ * range). A pixel's samples depend only on the pixel and the seed, so the
+ * resumed film is again the uninterrupted one, bit for bit.
+ *
+ * Only renders in one process take checkpoints: MPI ranks hold parts of
+ * the sums (docs/decisions.md, "Beyond one machine"). */
 #ifndef GTLAB_RAYTRACER_RENDER_CHECKPOINT_H
 #define GTLAB_RAYTRACER_RENDER_CHECKPOINT_H
 
 #include "core/error.h"
 #include "raytracer/render_loop.h"
 
-enum { CHECKPOINT_BLOCK = 64 };
+enum { CHECKPOINT_BLOCK = 64, CHECKPOINT_ROWS = 8 };
 #define CHECKPOINT_SECONDS 60.0
 
 typedef struct {

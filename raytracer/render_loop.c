@@ -1,5 +1,6 @@
 #include "raytracer/render_loop.h"
 
+#include <limits.h>
 #include <math.h>
 #include <signal.h>
 
@@ -98,13 +99,13 @@ static uint64_t render_pixel(const gbuffer *gb, const integrator *it, const samp
  * stopping target whole rows. */
 typedef struct {
     sampling_settings samples;
-    int first_row, row_step;
+    int first_row, row_step, end_row; /* rows first_row, first_row + row_step, ... below end_row */
 } work_share;
 
 static work_share share_of(const sampling_settings *ss)
 {
     render_share share = distributed_share();
-    work_share w = {*ss, 0, 1};
+    work_share w = {*ss, 0, 1, INT_MAX};
     if (share.ranks > 1 && adaptive(ss))
         w.first_row = share.rank, w.row_step = share.ranks;
     else if (share.ranks > 1)
@@ -117,7 +118,8 @@ static work_share share_of(const sampling_settings *ss)
 static void render_rows(const gbuffer *gb, const integrator *it, const work_share *w, mc_film *film,
                         render_stats *stats, const volatile sig_atomic_t *stop)
 {
-    const int rows = (gb->height - w->first_row + w->row_step - 1) / w->row_step;
+    const int end = w->end_row < gb->height ? w->end_row : gb->height;
+    const int rows = end > w->first_row ? (end - w->first_row + w->row_step - 1) / w->row_step : 0;
     progress bar;
     progress_begin(&bar, it->label, rows);
     double start = seconds_now();
@@ -126,7 +128,7 @@ static void render_rows(const gbuffer *gb, const integrator *it, const work_shar
     for (int row = 0; row < rows; ++row) {
         int y = w->first_row + row * w->row_step;
         for (int x = 0; x < gb->width && !(stop && *stop); ++x)
-            if (gb->mask[y * gb->width + x])
+            if (gb->mask[y * gb->width + x] || it->covers_background)
                 rays += render_pixel(gb, it, &w->samples, film, x, y, &samples);
         progress_advance(&bar, 1);
     }
@@ -170,7 +172,13 @@ int render_estimates_film(const gbuffer *gb, const integrator *it, mc_film *film
 int render_estimates_add(const gbuffer *gb, const integrator *it, const sampling_settings *ss, mc_film *film,
                          render_stats *stats, const volatile sig_atomic_t *stop)
 {
-    const work_share w = {*ss, 0, 1};
+    return render_estimates_add_rows(gb, it, ss, 0, gb->height, film, stats, stop);
+}
+
+int render_estimates_add_rows(const gbuffer *gb, const integrator *it, const sampling_settings *ss, int first_row,
+                              int end_row, mc_film *film, render_stats *stats, const volatile sig_atomic_t *stop)
+{
+    const work_share w = {*ss, first_row, 1, end_row};
     render_rows(gb, it, &w, film, stats, stop);
     return stop && *stop ? 1 : 0;
 }

@@ -87,6 +87,9 @@ typedef struct integrator {
                         float *values);
     const embree_scene *scene;
     const void *settings; /* the integrator's own parameters */
+    /* 1: the background pixels too (primary ray escapes: px->surface->t is
+     * +infinity, px->pixel names the pixel); 0: only the covered pixels */
+    int covers_background;
 } integrator;
 
 typedef struct {
@@ -117,5 +120,9 @@ int render_estimates(const gbuffer *gb, const integrator *it, const sampling_set
 int render_estimates_film(const gbuffer *gb, const integrator *it, mc_film *film, gt_error *e);
 int render_estimates_add(const gbuffer *gb, const integrator *it, const sampling_settings *ss, mc_film *film,
                          render_stats *stats, const volatile sig_atomic_t *stop);
+/* The same over the rows [first_row, end_row) only, every pixel to its
+ * stopping target when ss has one (an adaptive render in blocks of rows). */
+int render_estimates_add_rows(const gbuffer *gb, const integrator *it, const sampling_settings *ss, int first_row,
+                              int end_row, mc_film *film, render_stats *stats, const volatile sig_atomic_t *stop);
 
 #endif

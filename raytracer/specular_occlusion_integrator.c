@@ -94,7 +94,7 @@ static int so_sample_batch(const integrator *self, const pixel_context *px, uint
 integrator specular_occlusion_integrator(const embree_scene *es, const specular_occlusion_settings *settings)
 {
     int count = settings->environment == ENVIRONMENT_SKY ? WITH_SPLIT_QUANTITY_COUNT : SO_QUANTITY_COUNT;
-    integrator it = {"specular-occlusion", count, so_quantities, NULL, so_sample_batch, es, settings};
+    integrator it = {"specular-occlusion", count, so_quantities, NULL, so_sample_batch, es, settings, 0};
     return it;
 }
 

@@ -174,6 +174,6 @@ static int sphere_light_sample_batch(const integrator *self, const pixel_context
 
 integrator sphere_light_integrator(const embree_scene *es, const sphere_light_plan *plan)
 {
-    integrator it = {"sphere-light", 3, plan->quantities, NULL, sphere_light_sample_batch, es, plan};
+    integrator it = {"sphere-light", 3, plan->quantities, NULL, sphere_light_sample_batch, es, plan, 0};
     return it;
 }

@@ -135,6 +135,6 @@ static int vlight_sample_batch(const integrator *self, const pixel_context *px, 
 integrator volumetric_light_integrator(const embree_scene *es, const volumetric_light_plan *plan)
 {
     integrator it = {"volumetric-light", plan->quantity_count, plan->quantities, NULL, vlight_sample_batch, es,
-                     plan};
+                     plan, 0};
     return it;
 }

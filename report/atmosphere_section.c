@@ -43,7 +43,9 @@ static const report_column columns[] = {
     REPORT_REAL("quadrature p95", "quadrature_p95", "%.2e", ROW, error.quadrature.p95),
     REPORT_REAL(NULL, "quadrature_max", NULL, ROW, error.quadrature.max),
     REPORT_REAL("total p95", "total_p95", "%.3g", ROW, error.total.p95),
+    REPORT_REAL("its s.e.", "total_p95_se", "%.2g", ROW, error.total.p95_se),
     REPORT_REAL("total p95, sun >= 10 deg", "day_total_p95", "%.3g", ROW, error.day_total.p95),
+    REPORT_REAL("its s.e.", "day_total_p95_se", "%.2g", ROW, error.day_total.p95_se),
     REPORT_CELL("within 2%", verdict_cell),
 };
 static const report_column summary_columns[] = {
@@ -91,10 +93,10 @@ static void add_claims(report_context *ctx, const atmosphere_luts_result *r)
                  "quadrature's %.1e)", x->error.quadrature.p95);
         double high = fmax(ATMOSPHERE_TOLERANCE, x->error.quadrature.p95);
         claims_table_add_figure(ctx->claims, "Kojima 2017, Height fog: Precomputation", statement, quantity,
-                                x->error.total.p95, 0.0, 0.0, high);
+                                x->error.total.p95, x->error.total.p95_se, 0.0, high);
         strncat(statement, ", sun 10 deg or more above the horizon", sizeof statement - strlen(statement) - 1);
         claims_table_add_figure(ctx->claims, "Kojima 2017, Height fog: Precomputation", statement, quantity,
-                                x->error.day_total.p95, 0.0, 0.0, high);
+                                x->error.day_total.p95, x->error.day_total.p95_se, 0.0, high);
     }
 }
 
@@ -112,10 +114,10 @@ static void render_findings(report_context *ctx, const atmosphere_luts_result *r
         else
             snprintf(smallest, sizeof smallest, "no evaluated size (one axis at a time) is within 2%%");
         report_finding(ctx->doc, "Atmosphere LUTs",
-                       "%s at the talk's size (%.0f bytes): 95%% of lookups within %.1f%% of direct integration "
+                       "%s at the talk's size (%.0f bytes): 95%% of lookups within %.1f%% +- %.1f%% of direct integration "
                        "(interpolation %.1f%%, quadrature %.2f%%), worst %.0f%%; with the sun 10 degrees or more "
                        "above the horizon, within %.1f%%; %s.",
-                       TABLE_NAMES[table], x->bytes, 100.0 * x->error.total.p95,
+                       TABLE_NAMES[table], x->bytes, 100.0 * x->error.total.p95, 100.0 * x->error.total.p95_se,
                        100.0 * x->error.interpolation.p95, 100.0 * x->error.quadrature.p95,
                        100.0 * x->error.interpolation.max, 100.0 * x->error.day_total.p95, smallest);
     }
@@ -138,7 +140,8 @@ int atmosphere_section(report_context *ctx, const atmosphere_luts_result *r, gt_
         "sizes builds in %.1f s. Each table is scored at %d random points (theta_v over the sky, t off the grid) "
         "against direct integration (every optical depth by quadrature; its own error estimate %.1e), as the 95th "
         "percentile and the maximum of the relative error (floor 1e-3 of the table's brightest value), split into "
-        "the lookup's interpolation and the build's quadrature.",
+        "the lookup's interpolation and the build's quadrature; each percentile's standard error is a bootstrap over "
+        "the points (2000 resamples).",
         ATMOSPHERE_LUT_MAX_ALTITUDE, r->build_seconds, r->request.points, r->quadrature_estimate);
     cJSON *json = cJSON_AddObjectToObject(ctx->summary, "atmosphere_luts");
     report_object(json, "study", summary_columns, (int)(sizeof summary_columns / sizeof summary_columns[0]), r);

@@ -12,12 +12,13 @@
 static const report_column row_columns[] = {
     REPORT_TEXT("scene", "scene", baseline_row, scene),
     REPORT_TEXT("technique", "technique", baseline_row, technique),
-    REPORT_REAL("mean AO", "mean_ao", "%.3f", baseline_row, mean_ao),
-    REPORT_REAL("RMSE vs height field", "rmse_hf", "%.4f", baseline_row, rmse_hf),
-    REPORT_REAL("RMSE vs 3-D", "rmse_3d", "%.4f", baseline_row, rmse_3d),
-    REPORT_REAL("DSSIM vs 3-D", "dssim_3d", "%.4f", baseline_row, dssim_3d),
-    REPORT_REAL("MSE - MSE(GTAO) vs 3-D", "paired_mse", "%+.2e", baseline_row, vs_gtao_3d.mean),
-    REPORT_REAL("s.e. (8x8 blocks)", "paired_mse_se", "%.1e", baseline_row, vs_gtao_3d.se),
+    REPORT_REAL("mean AO", "mean_ao", "%.3f", baseline_row, score.mean_ao),
+    REPORT_REAL("RMSE vs height field", "rmse_hf", "%.4f", baseline_row, score.rmse_hf),
+    REPORT_REAL("RMSE vs 3-D", "rmse_3d", "%.4f", baseline_row, score.rmse_3d),
+    REPORT_REAL("DSSIM vs 3-D", "dssim_3d", "%.4f", baseline_row, score.dssim_3d),
+    REPORT_REAL("FLIP vs 3-D", "flip_3d", "%.4f", baseline_row, score.flip_3d),
+    REPORT_REAL("MSE - MSE(GTAO) vs 3-D", "paired_mse", "%+.2e", baseline_row, score.vs_gtao_3d.mean),
+    REPORT_REAL("s.e. (8x8 blocks)", "paired_mse_se", "%.1e", baseline_row, score.vs_gtao_3d.se),
     REPORT_REAL("ms per frame", "ms_per_frame", "%.2f", baseline_row, ms_per_frame),
 };
 

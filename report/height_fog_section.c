@@ -5,6 +5,7 @@
 #include <stdio.h>
 
 #include "core/reference_schema.h"
+#include "report/aerial_perspective_section.h"
 #include "report/report_table.h"
 
 #define ROW height_fog_case
@@ -101,5 +102,6 @@ int height_fog_section(report_context *ctx, const height_fog_result *r, gt_error
                    dense->sun_elevation_deg, dense->rmse_l[FOG_MODEL_PUBLISHED],
                    dense->rmse_l[FOG_MODEL_SUN_ATTENUATED], dense->rmse_l[FOG_MODEL_SKY_ATTENUATED]);
     add_claims(ctx, r);
+    aerial_perspective_section(ctx, section, HEIGHT_FOG_DIR, &r->aerial);
     return 0;
 }

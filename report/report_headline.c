@@ -5,11 +5,15 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
+#include "core/sample_mean.h"
 #include "report/claims_table.h"
 #include "report/html_text.h"
 
-int headline_rank(report_headline *h, int count, const char *const *labels, const double *errors)
+/* The indices of the two lowest of errors[0..count) (NaNs left out, ties
+ * keep the earlier) into best and second; -1 when fewer than two. */
+static int two_lowest(int count, const double *errors, int *best_out, int *second_out)
 {
     int best = -1, second = -1;
     for (int i = 0; i < count; ++i) {
@@ -20,13 +24,82 @@ int headline_rank(report_headline *h, int count, const char *const *labels, cons
         else if (second < 0 || errors[i] < errors[second])
             second = i;
     }
-    if (second < 0)
-        return -1;
+    *best_out = best, *second_out = second;
+    return second < 0 ? -1 : 0;
+}
+
+static void set_ranked(report_headline *h, const char *const *labels, const double *errors, int best, int second)
+{
     snprintf(h->best, sizeof h->best, "%s", labels[best]);
     snprintf(h->runner_up, sizeof h->runner_up, "%s", labels[second]);
     h->best_error = errors[best];
     h->runner_up_error = errors[second];
+}
+
+int headline_rank(report_headline *h, int count, const char *const *labels, const double *errors)
+{
+    int best, second;
+    if (two_lowest(count, errors, &best, &second) != 0)
+        return -1;
+    set_ranked(h, labels, errors, best, second);
     return 0;
+}
+
+/* The mean of each candidate's numeric cases into means (NaN if none). */
+static void case_means(int count, const double *errors, int cases, double *means)
+{
+    for (int i = 0; i < count; ++i) {
+        double sum = 0.0;
+        int n = 0;
+        for (int k = 0; k < cases; ++k)
+            if (!isnan(errors[i * cases + k]))
+                sum += errors[i * cases + k], ++n;
+        means[i] = n ? sum / n : NAN;
+    }
+}
+
+/* The verdict of errors[second] - errors[best] paired over the cases both have. */
+static void pair_indices(report_headline *h, const double *errors, int stride, int cases, int best, int second,
+                         const char *over)
+{
+    double diff[256], d = NAN, s = NAN;
+    int n = 0;
+    for (int k = 0; k < cases && n < 256; ++k)
+        if (!isnan(errors[second * stride + k]) && !isnan(errors[best * stride + k]))
+            diff[n++] = errors[second * stride + k] - errors[best * stride + k];
+    sample_mean_se(diff, n, &d, &s);
+    headline_from_difference(h, d, s, over);
+}
+
+int headline_rank_paired(report_headline *h, int count, const char *const *labels, const double *errors, int cases,
+                         const char *over)
+{
+    double *means = malloc(sizeof *means * (size_t)(count > 0 ? count : 1));
+    int best, second;
+    if (!means)
+        return -1;
+    case_means(count, errors, cases, means);
+    int rc = two_lowest(count, means, &best, &second);
+    if (rc == 0) {
+        set_ranked(h, labels, means, best, second);
+        pair_indices(h, errors, cases, cases, best, second, over);
+    }
+    free(means);
+    return rc;
+}
+
+void headline_pair_cases(report_headline *h, int count, const char *const *labels, const double *errors, int stride,
+                         int cases, const char *over)
+{
+    int best = -1, second = -1;
+    for (int i = 0; i < count; ++i) {
+        best = !strcmp(labels[i], h->best) ? i : best;
+        second = !strcmp(labels[i], h->runner_up) ? i : second;
+    }
+    if (best < 0 || second < 0)
+        headline_from_difference(h, NAN, NAN, over);
+    else
+        pair_indices(h, errors, stride, cases, best, second, over);
 }
 
 void headline_from_difference(report_headline *h, double d, double s, const char *over)

@@ -44,6 +44,21 @@ typedef struct {
  * when fewer than two are numbers. */
 int headline_rank(report_headline *h, int count, const char *const *labels, const double *errors);
 
+/* headline_rank over each candidate's mean over `cases` per-case errors
+ * (errors[i * cases + k]: candidate i, case k, e.g. a scene), then the
+ * verdict of the paired difference runner-up - best over the cases, its
+ * mean and standard error over the cases where both are numbers
+ * (core/sample_mean.h; NaN cases left out); `over` names the cases ("6
+ * scenes"). -1 (h unchanged) when fewer than two candidates have a mean. */
+int headline_rank_paired(report_headline *h, int count, const char *const *labels, const double *errors, int cases,
+                         const char *over);
+
+/* After a ranking (headline_rank): the verdict of the paired difference
+ * runner-up - best over per-case errors (errors[i * stride + k], case k <
+ * cases of candidate i, labels[i] as ranked), as headline_rank_paired's. */
+void headline_pair_cases(report_headline *h, int count, const char *const *labels, const double *errors, int stride,
+                         int cases, const char *over);
+
 /* The verdict of a paired difference d +- s (its mean and standard error);
  * `over` says what it is paired over. A NaN s leaves it not computed. */
 void headline_from_difference(report_headline *h, double d, double s, const char *over);

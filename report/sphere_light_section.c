@@ -5,6 +5,7 @@
  * Carlo reference, scene renders, shadows and the cost of the Newton step. */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "report/sphere_light_section_parts.h"
 #include "report/sphere_light_section.h"
@@ -126,9 +127,10 @@ static const report_column errors_json[] = {
     REPORT_REAL(NULL, "rms_log_error_stderr", NULL, sphere_light_errors, rms_stderr),
 };
 
-/* The summary table's row: the three models by held-out mean |log error|;
- * their standard errors are not paired, so the gap has no interval. */
-static void fit_headline(report *doc, const sphere_fit_outcome *o)
+/* The summary table's row: the three models by held-out mean |log error|,
+ * the gap's interval from the difference paired over the held-out
+ * configurations. */
+static void fit_headline(report *doc, const sphere_fit_settings *fs, const sphere_fit_outcome *o)
 {
     const char *labels[SPHERE_FIT_MODELS];
     double errors[SPHERE_FIT_MODELS];
@@ -136,8 +138,15 @@ static void fit_headline(report *doc, const sphere_fit_outcome *o)
         labels[m] = o->held_out[m].method, errors[m] = o->held_out[m].errors.mean_abs;
     report_headline h = {.topic = "GGX sphere lights", .measure = "held-out mean |log error|",
                          .significance = HEADLINE_NOT_COMPUTED};
-    if (headline_rank(&h, SPHERE_FIT_MODELS, labels, errors) == 0)
-        report_add_headline(doc, &h);
+    if (headline_rank(&h, SPHERE_FIT_MODELS, labels, errors) != 0)
+        return;
+    int best = 0, second = 0;
+    for (int m = 0; m < SPHERE_FIT_MODELS; ++m)
+        best = !strcmp(labels[m], h.best) ? m : best, second = !strcmp(labels[m], h.runner_up) ? m : second;
+    char over[64];
+    snprintf(over, sizeof over, "paired over %d held-out configurations", fs->test);
+    headline_from_difference(&h, o->paired_abs[second][best], o->paired_abs_se[second][best], over);
+    report_add_headline(doc, &h);
 }
 
 static void report_fit(report_context *ctx, const sphere_fit_settings *fs, const sphere_fit_outcome *o, cJSON *json)
@@ -173,7 +182,7 @@ static void report_fit(report_context *ctx, const sphere_fit_settings *fs, const
     cJSON *held = cJSON_AddObjectToObject(json, "held_out");
     for (int m = 0; m < SPHERE_FIT_MODELS; ++m)
         report_object(held, o->held_out[m].key, errors_json, COLUMNS(errors_json), &o->held_out[m].errors);
-    fit_headline(doc, o);
+    fit_headline(doc, fs, o);
     report_finding(doc, "GGX sphere lights",
                    "held-out mean |log error| Karis %.3f, Decima as published %.3f, Decima refit %.3f "
                    "(radius reduction %.3g ± %.2g, published %g).",

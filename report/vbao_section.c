@@ -12,11 +12,12 @@
 static const report_column row_columns[] = {
     REPORT_TEXT("scene", "scene", vbao_row, scene),
     REPORT_TEXT("technique", "technique", vbao_row, technique),
-    REPORT_REAL("RMSE vs height field", "rmse_hf", "%.4f", vbao_row, rmse_hf),
-    REPORT_REAL("RMSE vs 3-D", "rmse_3d", "%.4f", vbao_row, rmse_3d),
-    REPORT_REAL("DSSIM vs 3-D", "dssim_3d", "%.4f", vbao_row, dssim_3d),
-    REPORT_REAL("MSE - MSE(GTAO medium) vs 3-D", "paired_mse", "%+.2e", vbao_row, vs_gtao_3d.mean),
-    REPORT_REAL("s.e. (8x8 blocks)", "paired_mse_se", "%.1e", vbao_row, vs_gtao_3d.se),
+    REPORT_REAL("RMSE vs height field", "rmse_hf", "%.4f", vbao_row, score.rmse_hf),
+    REPORT_REAL("RMSE vs 3-D", "rmse_3d", "%.4f", vbao_row, score.rmse_3d),
+    REPORT_REAL("DSSIM vs 3-D", "dssim_3d", "%.4f", vbao_row, score.dssim_3d),
+    REPORT_REAL("FLIP vs 3-D", "flip_3d", "%.4f", vbao_row, score.flip_3d),
+    REPORT_REAL("MSE - MSE(GTAO medium) vs 3-D", "paired_mse", "%+.2e", vbao_row, score.vs_gtao_3d.mean),
+    REPORT_REAL("s.e. (8x8 blocks)", "paired_mse_se", "%.1e", vbao_row, score.vs_gtao_3d.se),
     REPORT_REAL("ms per frame", "ms_per_frame", "%.2f", vbao_row, ms_per_frame),
 };
 

@@ -155,15 +155,20 @@ static void compare_fits(ao_decals_result *out, const decal_view *a)
     ao_decal_published_params(params[AO_DECAL_PUBLISHED]);
     memcpy(params[AO_DECAL_REFIT_K2], out->fit_k2.params, sizeof params[0]);
     memcpy(params[AO_DECAL_REFIT_FREE], out->fit.params, sizeof params[0]);
-    out->fitted_count = a->samples.count, out->held_out_count = 0;
+    out->fitted_count = a->samples.count, out->held_out_count = 0, out->held_out_scenes = 0;
     for (int m = 0; m < AO_DECAL_COMPARED; ++m)
         fitted[m] = squared_error(&a->samples, params[m]);
     for (int k = 0; k < out->scenes.view_count; ++k) {
         ao_decal_samples s = scene_samples(&out->scenes.views[k]);
-        int fit_here = is_fitted_scene(&out->scenes.views[k]);
+        int fit_here = is_fitted_scene(&out->scenes.views[k]), j = out->held_out_scenes;
         *(fit_here ? &out->fitted_count : &out->held_out_count) += s.count;
-        for (int m = 0; m < AO_DECAL_COMPARED; ++m)
-            *(fit_here ? &fitted[m] : &held[m]) += squared_error(&s, params[m]);
+        for (int m = 0; m < AO_DECAL_COMPARED; ++m) {
+            double sq = squared_error(&s, params[m]);
+            *(fit_here ? &fitted[m] : &held[m]) += sq;
+            if (!fit_here)
+                out->held_out_scene_rmse[m][j] = s.count ? sqrt(sq / (double)s.count) : NAN;
+        }
+        out->held_out_scenes += !fit_here;
     }
     for (int m = 0; m < AO_DECAL_COMPARED; ++m) {
         out->fitted_rmse[m] = sqrt(fitted[m] / (double)out->fitted_count);

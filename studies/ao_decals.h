@@ -44,6 +44,9 @@ typedef struct {
      * box-in-corner, overlap-on-plane), per AO_DECAL_PUBLISHED .. AO_DECAL_REFIT_FREE */
     double fitted_rmse[AO_DECAL_COMPARED], held_out_rmse[AO_DECAL_COMPARED];
     size_t fitted_count, held_out_count;
+    /* each held-out scene's own RMSE, [model][scene], for the gap's paired interval */
+    double held_out_scene_rmse[AO_DECAL_COMPARED][AO_DECAL_SCENE_VIEWS_MAX];
+    int held_out_scenes;
     size_t floor_pixels[AO_DECAL_VIEWS];
     ao_decals_scenes_result scenes; /* the pill, crate, corner and overlap scenes (views freed) */
 } ao_decals_result;

@@ -38,7 +38,7 @@
 #define AO_DECAL_DSSIM_MAP_MAX 0.05f
 #define AO_DECAL_SIGNIFICANT 0.02 /* an occluder counts towards a region above this occlusion */
 
-enum { AO_DECAL_SCENE_ROWS_MAX = 32, AO_DECAL_REGIONS = 3 };
+enum { AO_DECAL_SCENE_ROWS_MAX = 32, AO_DECAL_REGIONS = 3, AO_DECAL_SCENE_VIEWS_MAX = 8 };
 typedef enum { AO_REGION_SINGLE, AO_REGION_OVERLAP, AO_REGION_CLIPPED } ao_decal_region;
 
 typedef struct {
@@ -66,7 +66,7 @@ typedef struct {
     int row_count;
     ao_decal_scene_row rows[AO_DECAL_SCENE_ROWS_MAX];
     int view_count;
-    ao_decal_scene_view views[8];
+    ao_decal_scene_view views[AO_DECAL_SCENE_VIEWS_MAX];
 } ao_decals_scenes_result;
 
 /* Renders every decal scene at size^2 pixels and spp samples (seed), scores the decals and writes

@@ -8,8 +8,6 @@
 #include <string.h>
 
 #include "core/progress.h"
-#include "metrics/image_error.h"
-#include "metrics/ssim.h"
 #include "realtime/alchemy_ao.h"
 #include "realtime/crytek_ssao.h"
 #include "realtime/gtao_sin_n_pitfall.h"
@@ -51,24 +49,6 @@ static int render(const gtao_scene_refs *s, baseline_technique t, float *ao)
     }
 }
 
-static int score(const gtao_scene_refs *s, const float *ao, const float *gtao, baseline_row *x, gt_error *e)
-{
-    image_error_stats hf, r3;
-    ssim_result ss;
-    if (image_error_compute(ao, s->hf_ao, s->mask, s->width, s->height, s->scene, &hf, e) != 0 ||
-        image_error_compute(ao, s->ref3d, s->mask, s->width, s->height, s->scene, &r3, e) != 0 ||
-        ssim_compute(ao, s->ref3d, s->mask, s->width, s->height, s->scene, NULL, &ss, e) != 0)
-        return -1;
-    x->rmse_hf = hf.rmse;
-    x->rmse_3d = r3.rmse;
-    x->mean_ao = r3.mean_a;
-    x->dssim_3d = ss.dssim;
-    if (cluster_mean_paired_sq_error(ao, gtao, s->ref3d, s->mask, s->width, s->height, CLUSTER_MEAN_SIDE,
-                                   &x->vs_gtao_3d) != 0)
-        return gt_error_set(e, s->scene, "out of memory");
-    return 0;
-}
-
 /* Every technique on one scene; GTAO first, kept in gtao for the pairing. */
 static int study_scene(const gtao_scene_refs *s, float *ao, float *gtao, baseline_row *rows, gt_error *e)
 {
@@ -80,7 +60,7 @@ static int study_scene(const gtao_scene_refs *s, float *ao, float *gtao, baselin
         if (render(s, (baseline_technique)t, t == BASELINE_GTAO ? gtao : ao) != 0)
             return gt_error_set(e, s->scene, "out of memory");
         x->ms_per_frame = 1e3 * (seconds_now() - t0);
-        if (score(s, t == BASELINE_GTAO ? gtao : ao, gtao, x, e) != 0)
+        if (ao_image_score_compute(s, t == BASELINE_GTAO ? gtao : ao, gtao, &x->score, e) != 0)
             return -1;
     }
     return 0;
@@ -88,19 +68,9 @@ static int study_scene(const gtao_scene_refs *s, float *ao, float *gtao, baselin
 
 static void pool(gtao_baselines_result *r)
 {
-    for (int t = 0; t < BASELINE_COUNT; ++t) {
-        cluster_mean parts[BASELINES_MAX_SCENES];
-        double mse = 0.0;
-        size_t pixels = 0;
-        for (int s = 0; s < r->scene_count; ++s) {
-            const baseline_row *x = &r->rows[s][t];
-            parts[s] = x->vs_gtao_3d;
-            mse += x->rmse_3d * x->rmse_3d * (double)x->vs_gtao_3d.pixels;
-            pixels += x->vs_gtao_3d.pixels;
-        }
-        r->pooled_vs_gtao_3d[t] = cluster_mean_pool(parts, r->scene_count);
-        r->pooled_rmse_3d[t] = pixels ? sqrt(mse / (double)pixels) : 0.0;
-    }
+    for (int t = 0; t < BASELINE_COUNT; ++t)
+        ao_image_score_pool(&r->rows[0][t].score, sizeof r->rows[0], r->scene_count, &r->pooled_vs_gtao_3d[t],
+                            &r->pooled_rmse_3d[t]);
 }
 
 int gtao_baselines_study(const study_context *ctx, const gtao_shortcuts_request *rq, gtao_baselines_result *out,

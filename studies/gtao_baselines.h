@@ -14,6 +14,7 @@
 #define GTLAB_STUDIES_GTAO_BASELINES_H
 
 #include "metrics/cluster_mean.h"
+#include "studies/ao_image_score.h"
 #include "studies/gtao_fast_math.h"
 #include "studies/study.h"
 
@@ -33,8 +34,7 @@ enum { BASELINES_MAX_SCENES = 16 };
 typedef struct {
     char scene[64];
     char technique[48];
-    double rmse_hf, rmse_3d, dssim_3d, mean_ao;
-    cluster_mean vs_gtao_3d; /* mean (AO - 3-D)^2 - (GTAO medium - 3-D)^2: > 0 when worse than GTAO */
+    ao_image_score score; /* vs_gtao_3d > 0 when worse than GTAO */
     double ms_per_frame;
 } baseline_row;
 

@@ -12,6 +12,7 @@
 #include "core/image_io.h"
 #include "core/progress.h"
 #include "core/reference_schema.h"
+#include "metrics/flip.h"
 #include "metrics/image_error.h"
 #include "metrics/noise_corrected.h"
 #include "metrics/ssim.h"
@@ -38,26 +39,31 @@ typedef struct {
     float vo_radius; /* VO needs a finite sphere: a quarter of the camera's distance to its target */
 } scene_data;
 
-/* DSSIM and RMSE of ao against a reference over the mask. */
+/* DSSIM and RMSE of ao against a reference over the mask, and its mean
+ * FLIP when flip is not NULL. */
 static int compare(const scene_data *d, const float *ao, const float *ref, const char *what, double *dssim,
-                   double *rmse, gt_error *e)
+                   double *rmse, double *flip, gt_error *e)
 {
     ssim_result s;
     image_error_stats st;
+    flip_result f = {0};
     if (ssim_compute(ao, ref, d->mask, d->g->width, d->g->height, what, NULL, &s, e) != 0 ||
-        image_error_compute(ao, ref, d->mask, d->g->width, d->g->height, what, &st, e) != 0)
+        image_error_compute(ao, ref, d->mask, d->g->width, d->g->height, what, &st, e) != 0 ||
+        (flip && flip_grey(ref, ao, d->mask, d->g->width, d->g->height, what, NULL, &f, e) != 0))
         return -1;
     *dssim = s.dssim;
     *rmse = st.rmse;
+    if (flip)
+        *flip = f.mean;
     return 0;
 }
 
 static int score_against_both(const scene_data *d, const float *ao, double ms, ao_variant_row *x, gt_error *e)
 {
     x->ms_per_frame = ms;
-    if (compare(d, ao, d->hf, x->label, &x->dssim_hf, &x->rmse_hf, e) != 0)
+    if (compare(d, ao, d->hf, x->label, &x->dssim_hf, &x->rmse_hf, NULL, e) != 0)
         return -1;
-    return compare(d, ao, d->ref3d, x->label, &x->dssim_3d, &x->rmse_3d, e);
+    return compare(d, ao, d->ref3d, x->label, &x->dssim_3d, &x->rmse_3d, &x->flip_3d, e);
 }
 
 /* The GTAO parameters of the study: the preset with no radius limit. */
@@ -258,7 +264,7 @@ static int score_scene(const scene_data *d, const image *hf, const char *figures
     int rc = ao && medium ? 0 : gt_error_set(e, s->scene, "out of memory");
     if (rc == 0)
         rc = run_variants(d, s, ao, medium, e) != 0 ||
-                     compare(d, d->hf, d->ref3d, s->scene, &s->hf_vs_3d_dssim, &s->hf_vs_3d_rmse, e) != 0 ||
+                     compare(d, d->hf, d->ref3d, s->scene, &s->hf_vs_3d_dssim, &s->hf_vs_3d_rmse, NULL, e) != 0 ||
                      ssim_noise_floor(hf, s->scene, CH_AO, d->mask, &floor, e) != 0 ||
                      write_heatmaps(figures, s->scene, d, medium, e) != 0
                  ? -1
@@ -309,8 +315,8 @@ static int convergence_rows(const scene_data *d, float *ao, gtao_validation_resu
             double unused;
             if (gtao_render(d->g, &p, ao, NULL) != 0)
                 return gt_error_set(e, r->convergence_scene, "out of memory");
-            if (compare(d, ao, d->hf, r->convergence_scene, &unused, &x->rmse_hf, e) != 0 ||
-                compare(d, ao, d->ref3d, r->convergence_scene, &unused, &x->rmse_3d, e) != 0)
+            if (compare(d, ao, d->hf, r->convergence_scene, &unused, &x->rmse_hf, NULL, e) != 0 ||
+                compare(d, ao, d->ref3d, r->convergence_scene, &unused, &x->rmse_3d, NULL, e) != 0)
                 return -1;
         }
     return 0;

@@ -61,6 +61,7 @@ typedef struct {
     char label[48]; /* "GTAO medium, 1 frame" */
     double dssim_hf, rmse_hf; /* against the height-field reference */
     double dssim_3d, rmse_3d; /* against the 3-D reference */
+    double flip_3d;           /* mean LDR-FLIP against the 3-D reference (metrics/flip.h) */
     double ms_per_frame;      /* wall clock on this machine */
 } ao_variant_row;
 

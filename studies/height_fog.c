@@ -18,7 +18,7 @@ static const char *const weathers[2] = {"sunny", "dense"};
 
 height_fog_request height_fog_default_request(study_quality quality)
 {
-    height_fog_request rq = {96, 64, 64, {5.0, 20.0, 60.0}};
+    height_fog_request rq = {96, 64, 64, {5.0, 20.0, 60.0}, aerial_perspective_default_request(quality)};
     if (quality == QUALITY_PRODUCTION)
         rq.width = 384, rq.height = 256, rq.spp = 1024;
     return rq;
@@ -232,14 +232,25 @@ static int add_error_maps(image *ref, const model_planes *mp, gt_error *e)
     if (!image_add_channel(ref, CH_FOG_PUBLISHED_ERROR) || !image_add_channel(ref, CH_FOG_CORRECTED_ERROR))
         return gt_error_set(e, "fog study", "out of memory");
     /* Looked up once both exist (adding a channel may move the planes). */
-    const float *l = image_channel_data(ref, CH_FOG_L_G);
+    const float *l = image_channel_data(ref, CH_FOG_L_G), *mask = image_channel_data(ref, CH_MASK);
     float *published = image_channel_data(ref, CH_FOG_PUBLISHED_ERROR);
     float *corrected = image_channel_data(ref, CH_FOG_CORRECTED_ERROR);
     for (size_t i = 0; i < image_pixel_count(ref); ++i) {
-        published[i] = mp->l[FOG_MODEL_PUBLISHED][1][i] - l[i];
-        corrected[i] = mp->l[FOG_MODEL_SUN_ATTENUATED][1][i] - l[i];
+        float surface = mask[i] > 0.5f ? 1.0f : 0.0f; /* the models are scored on surfaces */
+        published[i] = surface * (mp->l[FOG_MODEL_PUBLISHED][1][i] - l[i]);
+        corrected[i] = surface * (mp->l[FOG_MODEL_SUN_ATTENUATED][1][i] - l[i]);
     }
     return 0;
+}
+
+/* The reference's fog.L (green) on the surfaces, 0 on the background: the
+ * models are evaluated on surfaces only, so SSIM's windows at the horizon
+ * must not see the sky's fog on one side alone. */
+static void surface_plane(const image *ref, float *out)
+{
+    const float *l = image_channel_data(ref, CH_FOG_L_G), *mask = image_channel_data(ref, CH_MASK);
+    for (size_t i = 0; i < image_pixel_count(ref); ++i)
+        out[i] = mask[i] > 0.5f ? l[i] : 0.0f;
 }
 
 static int score_case(const height_fog_param *p, image *ref, const image *single, vec3 eye, height_fog_case *out,
@@ -247,10 +258,12 @@ static int score_case(const height_fog_param *p, image *ref, const image *single
 {
     size_t n = image_pixel_count(ref);
     model_planes mp;
-    float *block = calloc(2 * HEIGHT_FOG_MODELS * 3 * n, sizeof(float));
+    float *block = calloc((2 * HEIGHT_FOG_MODELS * 3 + 1) * n, sizeof(float));
     if (!block)
         return gt_error_set(e, "fog study", "out of memory");
     model_planes_bind(&mp, block, n);
+    float *reference_l = block + 2 * HEIGHT_FOG_MODELS * 3 * n;
+    surface_plane(ref, reference_l);
     evaluate_models(p, ref, eye, &mp);
     const float *mask = image_channel_data(ref, CH_MASK);
     static const char *const l_names[3] = CH_FOG_L_RGB, *const t_names[3] = CH_FOG_T_RGB;
@@ -261,8 +274,7 @@ static int score_case(const height_fog_param *p, image *ref, const image *single
         out->rmse_l[m] = rmse_rgb(mp.l[m], ref, l_names, mask);
         out->rmse_t[m] = rmse_rgb(mp.t[m], ref, t_names, mask);
         ssim_result s;
-        rc = ssim_compute(mp.l[m][1], image_channel_data(ref, CH_FOG_L_G), mask, ref->width, ref->height, "fog", NULL,
-                          &s, e);
+        rc = ssim_compute(mp.l[m][1], reference_l, mask, ref->width, ref->height, "fog", NULL, &s, e);
         out->dssim_l[m] = s.dssim;
     }
     if (rc == 0)
@@ -319,7 +331,10 @@ int height_fog_study(const study_context *ctx, const height_fog_request *rq, hei
         return -1;
     height_fog_regimes(out->regimes);
     height_fog_time_models(1 << 20, out->analytic_ns_per_pixel);
-    return 0;
+    char dir[2048];
+    if (study_make_dir(ctx, HEIGHT_FOG_DIR, dir, sizeof dir, e) != 0)
+        return -1;
+    return aerial_perspective_study(ctx, dir, &rq->aerial, &out->aerial, e);
 }
 
 int height_fog_approx_image(const image *gbuffer, const char *what, const char *weather, double sun_elevation_deg,

@@ -24,6 +24,7 @@
 
 #include "core/error.h"
 #include "core/image.h"
+#include "studies/aerial_perspective.h"
 #include "studies/study.h"
 
 #define HEIGHT_FOG_DIR "fog"
@@ -38,6 +39,7 @@ typedef enum {
 typedef struct {
     int width, height, spp;
     double sun_elevations[HEIGHT_FOG_SUNS];
+    aerial_perspective_request aerial; /* the combination images (studies/aerial_perspective.h) */
 } height_fog_request;
 
 typedef struct {
@@ -68,6 +70,7 @@ typedef struct {
     height_fog_case cases[HEIGHT_FOG_CASES];
     height_fog_regime regimes[HEIGHT_FOG_REGIMES];
     double analytic_ns_per_pixel[HEIGHT_FOG_MODELS];
+    aerial_perspective_result aerial;
 } height_fog_result;
 
 height_fog_request height_fog_default_request(study_quality quality);

@@ -91,11 +91,14 @@ static void tabulate_fit(const sphere_light_sample *test, int count, const decim
     static const char *const keys[SPHERE_FIT_MODELS] = {"karis", "decima_published", "decima_refit"};
     for (int m = 0; m < SPHERE_FIT_MODELS; ++m)
         o->held_out[m].method = methods[m], o->held_out[m].key = keys[m];
-    sphere_light_measure(SPHERE_MODEL_KARIS, NULL, test, (size_t)count, &o->held_out[SPHERE_FIT_KARIS].errors);
-    sphere_light_measure(SPHERE_MODEL_DECIMA, published, test, (size_t)count,
-                         &o->held_out[SPHERE_FIT_PUBLISHED].errors);
-    sphere_light_measure(SPHERE_MODEL_DECIMA, &o->fit.constants, test, (size_t)count,
-                         &o->held_out[SPHERE_FIT_REFIT].errors);
+    const sphere_light_model model[SPHERE_FIT_MODELS] = {SPHERE_MODEL_KARIS, SPHERE_MODEL_DECIMA, SPHERE_MODEL_DECIMA};
+    const decima_sphere_constants *k[SPHERE_FIT_MODELS] = {NULL, published, &o->fit.constants};
+    for (int m = 0; m < SPHERE_FIT_MODELS; ++m) {
+        sphere_light_measure(model[m], k[m], test, (size_t)count, &o->held_out[m].errors);
+        for (int n = 0; n < SPHERE_FIT_MODELS; ++n)
+            sphere_light_paired_abs(model[m], k[m], model[n], k[n], test, (size_t)count, &o->paired_abs[m][n],
+                                    &o->paired_abs_se[m][n]);
+    }
     double rel = 0.0;
     for (int i = 0; i < count; ++i)
         rel += test[i].reference_stderr / (test[i].reference + SPHERE_FIT_FLOOR);

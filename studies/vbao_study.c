@@ -9,9 +9,7 @@
 #include "core/exr_io.h"
 #include "core/progress.h"
 #include "core/reference_schema.h"
-#include "metrics/image_error.h"
 #include "metrics/noise_corrected.h"
-#include "metrics/ssim.h"
 #include "raytracer/heightfield_ao_integrator.h"
 #include "raytracer/reference_render.h"
 #include "realtime/vbao.h"
@@ -71,24 +69,6 @@ static double mse_3d(const scene_run *s, const float *ao)
     return count ? sum / (double)count : 0.0;
 }
 
-static int score_row(const scene_run *s, const float *ao, vbao_row *x, gt_error *e)
-{
-    const gtao_scene_refs *r = &s->refs;
-    image_error_stats hf, r3;
-    ssim_result ss;
-    if (image_error_compute(ao, r->hf_ao, r->mask, r->width, r->height, r->scene, &hf, e) != 0 ||
-        image_error_compute(ao, r->ref3d, r->mask, r->width, r->height, r->scene, &r3, e) != 0 ||
-        ssim_compute(ao, r->ref3d, r->mask, r->width, r->height, r->scene, NULL, &ss, e) != 0)
-        return -1;
-    x->rmse_hf = hf.rmse;
-    x->rmse_3d = r3.rmse;
-    x->dssim_3d = ss.dssim;
-    if (cluster_mean_paired_sq_error(ao, s->gtao, r->ref3d, r->mask, r->width, r->height, CLUSTER_MEAN_SIDE,
-                                     &x->vs_gtao_3d) != 0)
-        return gt_error_set(e, r->scene, "out of memory");
-    return 0;
-}
-
 /* Every row of one scene; GTAO medium first, kept for the pairing. */
 static int rank_scene(const scene_run *s, float thickness, vbao_row *rows, gt_error *e)
 {
@@ -101,7 +81,7 @@ static int rank_scene(const scene_run *s, float thickness, vbao_row *rows, gt_er
         if (render_row(s, (vbao_row_kind)k, thickness, ao) != 0)
             return gt_error_set(e, s->refs.scene, "out of memory");
         x->ms_per_frame = 1e3 * (seconds_now() - t0);
-        if (score_row(s, ao, x, e) != 0)
+        if (ao_image_score_compute(&s->refs, ao, s->gtao, &x->score, e) != 0)
             return -1;
     }
     return 0;
@@ -224,19 +204,9 @@ static int study_scene(const study_context *ctx, const gtao_shortcuts_request *r
 
 static void pool(vbao_study_result *r)
 {
-    for (int k = 0; k < VBAO_ROW_COUNT; ++k) {
-        cluster_mean parts[VBAO_MAX_SCENES];
-        double mse = 0.0;
-        size_t pixels = 0;
-        for (int s = 0; s < r->scene_count; ++s) {
-            const vbao_row *x = &r->rows[s][k];
-            parts[s] = x->vs_gtao_3d;
-            mse += x->rmse_3d * x->rmse_3d * (double)x->vs_gtao_3d.pixels;
-            pixels += x->vs_gtao_3d.pixels;
-        }
-        r->pooled_vs_gtao_3d[k] = cluster_mean_pool(parts, r->scene_count);
-        r->pooled_rmse_3d[k] = pixels ? sqrt(mse / (double)pixels) : 0.0;
-    }
+    for (int k = 0; k < VBAO_ROW_COUNT; ++k)
+        ao_image_score_pool(&r->rows[0][k].score, sizeof r->rows[0], r->scene_count, &r->pooled_vs_gtao_3d[k],
+                            &r->pooled_rmse_3d[k]);
 }
 
 int vbao_study(const study_context *ctx, const gtao_shortcuts_request *rq, float heuristic, vbao_study_result *out,

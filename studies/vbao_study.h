@@ -22,6 +22,7 @@
 #define GTLAB_STUDIES_VBAO_STUDY_H
 
 #include "metrics/cluster_mean.h"
+#include "studies/ao_image_score.h"
 #include "studies/gtao_fast_math.h"
 
 #define VBAO_THICKNESS_FRACTION 0.05
@@ -41,8 +42,7 @@ extern const char *const vbao_row_names[VBAO_ROW_COUNT];
 typedef struct {
     char scene[64];
     char technique[48];
-    double rmse_3d, dssim_3d, rmse_hf; /* rmse_hf: against the infinite height field */
-    cluster_mean vs_gtao_3d;           /* (AO - 3-D)^2 - (GTAO medium - 3-D)^2: < 0 when closer */
+    ao_image_score score; /* rmse_hf: against the infinite height field */
     double ms_per_frame;
 } vbao_row;
 

@@ -2,7 +2,8 @@
 # Environment-lit references as a user runs them (issue 28): env-diffuse
 # and env-specular under a Blender HDR (DWAB EXR), the sky and the sun,
 # blocks merging into the whole render (the white dome against multibounce:
-# tests/raytracer/test_environment_render.c), and
+# tests/raytracer/test_environment_render.c), `bench env-diffuse`'s verdict on
+# its ratio, and
 # bad input (one error line naming the file or option, exit 1, no output).
 gtlab=$1
 work=$2
@@ -23,6 +24,15 @@ for channel in env_diffuse.R env_diffuse_direct.B.stderr env_diffuse_unoccluded.
   cp "$work/stdout" "$work/merged.json"
   json_is max_abs == 0 "$work/merged.json" && pass || fail "merged $channel differs: $(cat "$work/merged.json")"
 done
+# the throughput bench prints its ratio and whether issue 28's goal (>= 0.7) is met, agreeing with that ratio
+expect_ok bench bench env-diffuse --scene builtin:corner --width 16 --height 16 --spp 2 --repeats 1 --threads 1
+line=$(grep '^ratio env-diffuse / multibounce samples/s: ' "$work/stdout")
+python3 - "$line" <<'PY' && pass || fail "bench: no ratio line agreeing with its verdict: '$line'"
+import re, sys
+m = re.fullmatch(r"ratio [^:]*: ([0-9.]+) \(goal >= 0\.7: (met|not met)\)", sys.argv[1])
+ratio = float(m.group(1)) if m else None
+sys.exit(0 if m and (abs(ratio - 0.7) <= 5e-4 or (ratio >= 0.7) == (m.group(2) == "met")) else 1)
+PY
 expect_error other-light "gtlab.settings" "$work/x.exr" -- merge "$work/b1.exr" "$work/hdr.exr" -o "$work/x.exr"
 expect_error missing-file "$work/none.exr: cannot read image" "$work/x.exr" -- render env-diffuse "${common[@]}" --environment "$work/none.exr" --albedo 0.5 -o "$work/x.exr"
 expect_error not-an-hdr "$work/sky.exr" "$work/x.exr" -- render env-diffuse "${common[@]}" --environment "$work/sky.exr" --albedo 0.5 -o "$work/x.exr"

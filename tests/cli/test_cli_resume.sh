@@ -4,7 +4,8 @@
 # by a real SIGTERM, or killed (SIGKILL, with a checkpoint after every
 # block) leaves F.checkpoint.exr and no F.exr; `--resume` finishes it into
 # the same file, byte for byte, as the uninterrupted render, and removes the
-# checkpoint. A checkpoint of another render is refused.
+# checkpoint. A checkpoint of another render is refused. Renders with a
+# stopping target checkpoint by rows, with the same guarantee.
 gtlab=$1
 work=$2
 rm -rf "$work" && mkdir -p "$work"
@@ -37,7 +38,16 @@ rm -f r.exr
 GTLAB_STOP_AFTER_BLOCKS=1 stopped_render other 143 "${other[@]}"
 expect_error other-checkpoint "r.checkpoint.exr: a checkpoint of another render" r.exr -- render "${small[@]}" --resume -o r.exr
 rm -f r.checkpoint.exr
-expect_error adaptive "--resume: renders with a stopping target" r.exr -- render "${small[@]}" --target-stderr 0.1 --resume -o r.exr
+
+# A render with a stopping target checkpoints by rows (8 at a time here):
+# stopped after 1 block of rows, resumed, the bits of the whole render.
+adaptive=(ao --scene builtin:cornell --width 24 --height 20 --spp 4096 --target-stderr 0.02 --seed 9 --threads 1)
+expect_ok adaptive-whole render "${adaptive[@]}" -o adaptive.exr
+GTLAB_STOP_AFTER_BLOCKS=1 stopped_render adaptive-stop 143 "${adaptive[@]}"
+GTLAB_STOP_AFTER_BLOCKS=1 stopped_render adaptive-stop-2 143 "${adaptive[@]}" --resume
+expect_ok adaptive-resume render "${adaptive[@]}" --resume -o r.exr
+cmp -s adaptive.exr r.exr && pass || fail "adaptive, stopped twice and resumed: not the uninterrupted file"
+rm -f r.exr r.checkpoint.exr
 
 # Real signals: SIGTERM, then SIGKILL (a killed job), once a checkpoint
 # exists (written after every block here); each resumed to the same file.

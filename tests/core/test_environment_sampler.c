@@ -7,7 +7,8 @@
  * one-sample balance-heuristic weights sum to 1, and the mixture estimator
  * of the unoccluded Lambertian integral (1/pi) \int L max(0, n.w) dw agrees
  * with its texel-by-texel quadrature within 4 standard errors; a sun-only
- * environment (one bright texel) gets every sample, each with L / pdf = I. */
+ * environment (one bright texel) gets every sample, each with L / pdf = I;
+ * the batched draws and lookups are the single ones' bits. */
 #include <stdint.h>
 #include <string.h>
 
@@ -209,6 +210,30 @@ static void test_mis_ggx(const environment_sampler *s, double c)
     CHECK(worst_sum < 1e-12);
 }
 
+/* environment_sampler_sample_many and _lookup_many (the passes with
+ * prefetches) against one at a time: the same bits, over more directions
+ * than one pass takes, rotated, and for a constant environment. */
+static void test_many_equals_one(const environment_sampler *s)
+{
+    enum { N = 150 };
+    float u[N][2], rgb[N][3], pdf[N];
+    vec3 w[N];
+    for (int i = 0; i < N; ++i)
+        u[i][0] = uniform01(), u[i][1] = uniform01();
+    u[0][0] = u[0][1] = 0.0f, u[1][0] = u[1][1] = 0x1.fffffep-1f;
+    environment_sampler_sample_many(s, N, (const float(*)[2])u, w);
+    environment_sampler_lookup_many(s, N, w, rgb, pdf);
+    int differ = 0;
+    for (int i = 0; i < N; ++i) {
+        float pdf_one, rgb_one[3], pdf_lookup;
+        vec3 one = environment_sampler_sample(s, u[i], &pdf_one);
+        environment_sampler_lookup(s, one, rgb_one, &pdf_lookup);
+        differ += memcmp(&one, &w[i], sizeof one) != 0 || memcmp(rgb_one, rgb[i], sizeof rgb_one) != 0 ||
+                  memcmp(&pdf_lookup, &pdf[i], sizeof pdf_lookup) != 0;
+    }
+    CHECK_MSG(differ == 0, "%d of %d batched directions differ from one at a time", differ, N);
+}
+
 static void test_rotation(environment_map *env)
 {
     gt_error e;
@@ -223,6 +248,7 @@ static void test_rotation(environment_map *env)
     }
     CHECK_MSG(mismatched <= 2, "%d of 20000 rotated samples disagree with the lookup's density", mismatched);
     test_pdf_integrates_to_one(&s);
+    test_many_equals_one(&s);
     environment_sampler_free(&s);
     CHECK(environment_map_transform(env, 0.0f, 1.0f, &e) == 0);
 }
@@ -271,10 +297,17 @@ int main(void)
     test_mis(&s, 0.0);
     test_mis_ggx(&s, 0.5);
     test_mis_ggx(&s, 1.0);
+    test_many_equals_one(&s);
     environment_sampler_free(&s);
     test_rotation(&env);
     environment_map_free(&env);
     test_sun_only();
+    float grey[3] = {0.25f, 0.5f, 1.0f};
+    CHECK(environment_map_constant(&env, "grey", grey, &e) == 0);
+    CHECK(environment_sampler_init(&s, &env, &e) == 0 && s.usable);
+    test_many_equals_one(&s);
+    environment_sampler_free(&s);
+    environment_map_free(&env);
     float zero[3] = {0, 0, 0};
     CHECK(environment_map_constant(&env, "black", zero, &e) == 0);
     CHECK(environment_sampler_init(&s, &env, &e) == 0 && !s.usable);

@@ -215,7 +215,7 @@ static void test_exr_round_trip(void)
     add_in_order(&film, 0, NULL);
     image written;
     image_init(&written, W, H);
-    CHECK(mc_film_write_channels(&film, NULL, &written) == 0);
+    CHECK(mc_film_write_channels(&film, &written) == 0);
     char path[1200];
     snprintf(path, sizeof path, "%s/mc_film_round_trip.exr", check_tmp_dir());
     gt_error e;
@@ -254,7 +254,7 @@ static void test_exr_round_trip(void)
      * standard errors, accumulators) has the bits of the original's. */
     image again;
     image_init(&again, W, H);
-    CHECK(mc_film_write_channels(&back, NULL, &again) == 0);
+    CHECK(mc_film_write_channels(&back, &again) == 0);
     CHECK(again.channel_count == written.channel_count);
     for (int c = 0; c < written.channel_count; ++c) {
         const float *a = written.channels[c].data;
@@ -286,7 +286,7 @@ static void test_resume_from_file(void)
     add_in_order(&first, 0, early);
     image img;
     image_init(&img, W, H);
-    mc_film_write_channels(&first, NULL, &img);
+    mc_film_write_channels(&first, &img);
     mc_film resumed;
     gt_error e;
     if (mc_film_read_channels(&img, "partial.exr", &resumed, &e) != 0) {
@@ -341,7 +341,7 @@ static void test_half_means_and_normalised_layer(void)
 
     image img;
     image_init(&img, W, H);
-    CHECK(mc_film_write_channels(&film, NULL, &img) == 0);
+    CHECK(mc_film_write_channels(&film, &img) == 0);
     const char *layers = image_get_attribute(&img, "gtlab.normalized");
     CHECK(layers && strcmp(layers, "bent") == 0);
     const float *b[3] = {image_channel_data(&img, "bent.X"), image_channel_data(&img, "bent.Y"),
@@ -362,17 +362,22 @@ static void test_half_means_and_normalised_layer(void)
         CHECK_NEAR(ao[p], (double)direct(p, 0, -1).mean, 1e-6);
     }
 
-    /* Background pixels (mask 0) hold 0 in the means and standard errors. */
-    float mask[PIXELS];
-    for (int p = 0; p < PIXELS; ++p)
-        mask[p] = p % 2 ? 0.0f : 1.0f;
+    /* Pixels without a sample (a surface-only quantity's background) hold 0
+     * in the means and standard errors; the others their mean. */
+    mc_film sparse;
+    CHECK(mc_film_init(&sparse, W, H, quantities, QUANTITIES) == 0);
+    const float values[QUANTITIES] = {0.25f, 0.5f, 0.5f, 0.5f, 0.5f};
+    for (int p = 0; p < PIXELS; p += 2)
+        for (uint32_t k = 0; k < 4; ++k)
+            mc_film_add_sample(&sparse, p, k, values);
     image masked;
     image_init(&masked, W, H);
-    CHECK(mc_film_write_channels(&film, mask, &masked) == 0);
+    CHECK(mc_film_write_channels(&sparse, &masked) == 0);
     const float *mv = image_channel_data(&masked, "ao.V"), *ms = image_channel_data(&masked, "ao.V.stderr");
-    for (int p = 1; p < PIXELS; p += 2)
-        CHECK(mv[p] == 0.0f && ms[p] == 0.0f);
+    for (int p = 0; p < PIXELS; ++p)
+        CHECK(mv[p] == (p % 2 ? 0.0f : 0.25f) && ms[p] == 0.0f);
     image_free(&masked);
+    mc_film_free(&sparse);
     image_free(&img);
     mc_film_free(&film);
 }
@@ -400,7 +405,7 @@ static void test_bad_images(void)
     init_film(&good);
     add_in_order(&good, 0, NULL);
     image_init(&img, W, H);
-    mc_film_write_channels(&good, NULL, &img);
+    mc_film_write_channels(&good, &img);
     image_channel_data(&img, "spp.Neven")[4] = image_channel_data(&img, "spp.N")[4] + 1.0f;
     CHECK(mc_film_read_channels(&img, "counts.exr", &film, &e) == -1);
     CHECK_MSG(strstr(e.message, "counts.exr") == e.message, "%s", e.message);
@@ -450,7 +455,7 @@ static void test_legacy_and_corrupt_moments(void)
     add_in_order(&film, 0, NULL);
     image img, old;
     image_init(&img, W, H);
-    mc_film_write_channels(&film, NULL, &img);
+    mc_film_write_channels(&film, &img);
     make_legacy(&img, &old);
     gt_error e;
     mc_film legacy;
@@ -511,7 +516,7 @@ static int through_file(const mc_film *film, mc_film *back, image *kept)
     image img;
     gt_error e;
     image_init(&img, film->width, film->height);
-    int rc = mc_film_write_channels(film, NULL, &img) == 0 ? mc_film_read_channels(&img, "counts.exr", back, &e) : -1;
+    int rc = mc_film_write_channels(film, &img) == 0 ? mc_film_read_channels(&img, "counts.exr", back, &e) : -1;
     if (rc != 0)
         fprintf(stderr, "through_file: %s\n", e.message);
     if (kept)
@@ -627,6 +632,27 @@ static void test_sums_beyond_48_bits(void)
         mc_film_free(films[i]);
 }
 
+/* Rows taken back (an interrupted block of an adaptive render): emptying
+ * row 1 of a full film and adding that row's samples again gives the full
+ * film's accumulators exactly; the other rows are never touched. */
+static int in_row_1(int pixel) { return pixel / W == 1; }
+
+static void test_clear_rows(void)
+{
+    mc_film whole, film;
+    init_film(&whole), init_film(&film);
+    add_in_order(&whole, 0, NULL);
+    add_in_order(&film, 0, NULL);
+    mc_film_clear_rows(&film, 1, 2);
+    for (int p = 0; p < PIXELS; ++p)
+        CHECK(in_row_1(p) ? film.count[p] == 0 && film.sum[p] == 0 : film.count[p] == whole.count[p]);
+    for (int p = 0; p < PIXELS; ++p)
+        for (int k = 0; in_row_1(p) && k < sample_count[p]; ++k)
+            mc_film_add_sample(&film, p, (uint32_t)k, samples[p][k]);
+    CHECK_MSG(same_accumulators(&whole, &film), "a row emptied and rendered again differs");
+    mc_film_free(&whole), mc_film_free(&film);
+}
+
 int main(void)
 {
     make_samples();
@@ -641,5 +667,6 @@ int main(void)
     test_counts_beyond_2_24();
     test_counts_to_2_32();
     test_sums_beyond_48_bits();
+    test_clear_rows();
     return check_report("test_mc_film");
 }

@@ -16,16 +16,14 @@
 
 #include "core/quadrature.h"
 #include "core/spherical_caps.h"
+#include "core/splitmix64.h"
 #include "core/vec3.h"
 #include "tests/check.h"
 
 static unsigned long long rng_state = 12345;
 static double uniform01(void)
 {
-    unsigned long long z = (rng_state += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return (double)((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+    return splitmix64_uniform01(&rng_state);
 }
 
 /* Monte Carlo: caps about z and about (sin g, 0, cos g). */

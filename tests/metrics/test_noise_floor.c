@@ -30,7 +30,7 @@ static void make_reference(image *img, int samples_per_pixel, float even_value, 
             mc_film_add_sample(&film, p, (uint32_t)s, v);
         }
     CHECK(image_init(img, W, H) == 0);
-    CHECK(mc_film_write_channels(&film, NULL, img) == 0);
+    CHECK(mc_film_write_channels(&film, img) == 0);
     mc_film_free(&film);
 }
 

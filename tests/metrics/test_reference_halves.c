@@ -40,7 +40,7 @@ static void make_reference(image *img)
     float *plane = image_add_channel(img, CH_MASK);
     for (int p = 0; plane && p < PIXELS; ++p)
         plane[p] = mask[p];
-    CHECK(mc_film_write_channels(&film, mask, img) == 0);
+    CHECK(mc_film_write_channels(&film, img) == 0);
     mc_film_free(&film);
 }
 

@@ -165,6 +165,28 @@ static void test_headline_verdicts(void)
     CHECK(h.significance == HEADLINE_ABOVE_NOISE_FLOOR && strstr(h.basis, "above"));
 }
 
+/* Paired ranking: means over the cases rank the candidates; the verdict is
+ * the per-case difference runner-up - best, by hand: a (1, 2, 3, NaN),
+ * b (2, 2.5, 3.5, 9), c (0.5, 2.6, 4.9, 0) rank a (mean 2) before b (4.25)
+ * and c (2); ties keep the earlier, so a then c; c - a over the cases both
+ * have = (-0.5, 0.6, 1.9): mean 2/3, s.e. sqrt(1.4433 / 3) = 0.6936 ->
+ * not significant. With c far behind, b is the runner-up, and b - a =
+ * (1, 0.5, 0.5) is 2/3 +- 1/6: significant. */
+static void test_headline_paired(void)
+{
+    report_headline h = {.topic = "t"};
+    const char *labels[3] = {"a", "b", "c"};
+    double e[12] = {1, 2, 3, NAN, 2, 2.5, 3.5, 9, 0.5, 2.6, 4.9, 0};
+    CHECK(headline_rank_paired(&h, 3, labels, e, 4, "over 4 cases") == 0);
+    CHECK(!strcmp(h.best, "a") && !strcmp(h.runner_up, "c") && h.best_error == 2.0 && h.runner_up_error == 2.0);
+    CHECK(h.significance == HEADLINE_NOT_SIGNIFICANT && strstr(h.basis, "+0.6667 +- 0.69"));
+    double far[12] = {1, 2, 3, NAN, 2, 2.5, 3.5, 9, 10.5, 12.6, 14.9, 40};
+    CHECK(headline_rank_paired(&h, 3, labels, far, 4, "x") == 0 && !strcmp(h.runner_up, "b"));
+    CHECK(h.significance == HEADLINE_SIGNIFICANT);
+    double one[4] = {1, NAN, NAN, NAN};
+    CHECK(headline_rank_paired(&h, 1, labels, one, 4, "x") == -1);
+}
+
 /* Headline rows make the summary table at the top, in the order registered,
  * linked to their sections, with their verdicts; then the findings. */
 static void test_headline_table(void)
@@ -288,6 +310,7 @@ int main(void)
 {
     test_figures_resolved();
     test_headline_verdicts();
+    test_headline_paired();
     test_headline_table();
     test_conclusions_first_and_folding();
     test_pipe_in_cell();

@@ -18,6 +18,8 @@ int main(void)
 {
     height_fog_request rq = height_fog_default_request(QUALITY_PREVIEW);
     rq.width = 32, rq.height = 24, rq.spp = 16;
+    rq.aerial.width = 24, rq.aerial.height = 16, rq.aerial.fisheye = 16, rq.aerial.sun_count = 1;
+    rq.aerial.sizes.inscatter[3] = rq.aerial.sizes.sun[3] = rq.aerial.sizes.sky[3] = 2; /* t = 0, 1 */
     study_context ctx = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL};
     static height_fog_result r;
     gt_error e;
@@ -45,6 +47,7 @@ int main(void)
     CHECK(r.regimes[0].published_depth_error < 0.0051); /* down: exact, or the clamp's f(1e-2) where |dy| < H/100 */
     CHECK(fabs(r.regimes[3].published_depth_error - 0.005) < 1e-4); /* horizontal: f(1e-2) */
     CHECK(r.regimes[4].published_depth_error > 0.9);                /* up: most of the depth lost */
+    CHECK(r.aerial.case_count == 2); /* the combination images ran (tests/studies/test_aerial_perspective_study.c) */
     for (int m = 0; m < HEIGHT_FOG_MODELS; ++m)
         CHECK(r.analytic_ns_per_pixel[m] > 0.0 && r.analytic_ns_per_pixel[m] < 1e4);
     /* The error map of the dense, low-sun case is the published model minus the reference. */

@@ -1,0 +1,23 @@
+/* The combination images of the Decima height fog (studies/aerial_perspective.h):
+ * the tables of the terrain views and the ground fisheyes, their images,
+ * and a finding on the talk's "realistic aerial perspective" (no claims row:
+ * the talk's claim is not numeric). Part of the height fog's section. */
+#ifndef GTLAB_REPORT_AERIAL_PERSPECTIVE_SECTION_H
+#define GTLAB_REPORT_AERIAL_PERSPECTIVE_SECTION_H
+
+#include <cjson/cJSON.h>
+
+#include "report/report_context.h"
+#include "studies/aerial_perspective.h"
+
+/* The finding's figure: the largest over the cases of the median pixel's
+ * relative error of the published combination on the terrain view, set
+ * beside Weber's fraction (studies/atmosphere_luts.h, ATMOSPHERE_TOLERANCE):
+ * the contrast the eye can tell. */
+double aerial_perspective_worst_median(const aerial_perspective_result *r);
+
+/* Adds the subsection to ctx's report, to json (the height fog's object:
+ * key "aerial_perspective") and its finding. */
+void aerial_perspective_section(report_context *ctx, cJSON *json, const char *dir, const aerial_perspective_result *r);
+
+#endif
