@@ -5,8 +5,9 @@
 # by `gtlab scene write`, named in a project with a label and a glTF camera:
 # `gtlab all --project` puts that label's rows in every section it runs (the
 # report and each section of summary.json) and no built-in scene's; the
-# command line overrides the file's stages and output. Bad projects: one line
-# naming the file and the JSON path, exit 1, nothing written.
+# command line overrides the file's quality, stages and output; two cameras
+# of one scene are two labelled entries. Bad projects: one line naming the
+# file and the JSON path, exit 1, nothing written.
 gtlab=$1
 work=$2
 schema=$3
@@ -74,6 +75,23 @@ PY
 grep -q "$label" "$work/out/report.md" && pass || fail "report.md does not name $label"
 grep -q -- "--project" "$work/out/report.md" && pass || fail "report.md does not say how it was made"
 [ -s "$work/out/ao/$label.exr" ] && pass || fail "no ao/$label.exr"
+
+# Two cameras of one scene: two entries, <label>-cam0 (its own camera) and
+# <label>-door (a camera JSON file, whose pose the reference keeps; the
+# stage sets the width, the file's aspect ratio the height).
+printf '{"position":[0.5,1.5,4],"target":[0,0,0],"up":[0,1,0],"yfov_deg":40,"width":64,"height":32}' >"$work/door.json"
+printf '{"scenes": [{"path": "builtin:plane", "label": "floor", "cameras": [{}, {"file": "door.json", "label": "door"}]}]}' \
+  >"$work/two.json"
+expect_ok two-cameras all --project "$work/two.json" --stages ao --threads 2 -o "$work/two"
+python3 - "$work/two" <<'PY' && pass || fail "two cameras: $(ls "$work/two/ao" 2>&1)"
+import json, sys
+rows = json.load(open(sys.argv[1] + "/summary.json"))["ao_references"]
+assert [r["scene"] for r in rows] == ["floor-cam0", "floor-door"], rows
+door = json.load(open(sys.argv[1] + "/ao/floor-door.camera.json"))
+assert door["position"] == [0.5, 1.5, 4] and (door["width"], door["height"]) == (256, 128), door
+own = json.load(open(sys.argv[1] + "/ao/floor-cam0.camera.json"))
+assert own["position"] != door["position"], own
+PY
 
 # Bad projects: the file and the JSON path named, nothing written.
 bad() {  # bad NAME PATTERN JSON
