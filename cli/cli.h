@@ -18,6 +18,7 @@ int verb_plan(int argc, char **argv);
 int verb_compare(int argc, char **argv);
 int verb_bench(int argc, char **argv);
 int verb_all(int argc, char **argv);
+int verb_init(int argc, char **argv);
 int verb_check(int argc, char **argv);
 int verb_fit(int argc, char **argv);
 int verb_lut(int argc, char **argv);

@@ -24,6 +24,7 @@ static const verb verbs[] = {
     {"shader", verb_shader, "run a GLSL/HLSL screen-space shader on Vulkan over a G-buffer, and score it"},
     {"lut", verb_lut, "lookup tables in every format (EXR, 8-bit PNG, C header)"},
     {"all", verb_all, "the main job: every reference and the accuracy report"},
+    {"init", verb_init, "write an example project file (gtlab.json) for 'gtlab all --project'"},
 };
 
 static void print_help(FILE *out)

@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 
 #include "report/report_context.h"
+#include "report/scene_list_section.h"
 #include "cli/cli.h"
 #include "cli/cli_options.h"
 #include "cli/technique.h"
@@ -31,12 +32,14 @@ static const cli_option options[] = {
                "the report then holds those sections only. A stage that reads\n"
                "another's output uses it from this run, or from an earlier run\n"
                "into the same DIR"),
+    CLI_STRING("project", "FILE", "a project file (gtlab init writes one): its scenes instead of the\n"
+               "built-in ones; its quality, stages and output unless given here"),
     CLI_END};
 
 /* The help's paragraph, with the registered stages. */
 static void describe(char *text, size_t size)
 {
-    int k = snprintf(text, size, "Runs every stage on the built-in scenes and writes the accuracy report:\n"
+    int k = snprintf(text, size, "Runs every stage on the built-in (or --project) scenes; writes the accuracy report:\n"
                      "  DIR/report.md, DIR/report.html   the report (figures under DIR/figures)\n"
                      "  DIR/summary.json                 every figure of the report, machine-readable\n"
                      "  DIR/ao/*.exr                     the references (with their .camera.json)\nStages:");
@@ -77,26 +80,34 @@ static int write_summary(const report_context *ctx, gt_error *e)
     return rc;
 }
 
-/* Parses the options into ctx and selected; 1 and the exit status to stop. */
-static int parse_options(int argc, char **argv, report_context *ctx, int selected[STAGE_MAX], const char **stage_list,
-                         int *status)
-{
-    char description[8192];
-    describe(description, sizeof description);
-    const cli_command command = {"all", description, options, NULL, NULL};
-    study_context *s = &ctx->study;
-    if (cli_options_parse(&command, (void *[]){&s->quality, &s->output_dir, &s->threads, stage_list}, argc, argv,
-                          status) != 0)
-        return 1;
-    return *stage_list && select_stages(*stage_list, selected) != 0 ? (*status = EXIT_USER_ERROR, 1) : 0;
-}
-
 static int stage_index(const char *key)
 {
     for (int i = 0; i < stage_count; ++i)
         if (strcmp(stages[i]->key, key) == 0)
             return i;
     return -1;
+}
+
+static int stage_known(const char *key) { return stage_index(key) >= 0; }
+
+static study_project project_file; /* --project FILE */
+
+/* Parses the options into ctx and selected; 1 and the exit status to stop. */
+static int parse_options(int argc, char **argv, report_context *ctx, int selected[STAGE_MAX], const char **stage_list,
+                         const char **project, int *status)
+{
+    char description[8192];
+    describe(description, sizeof description);
+    const cli_command command = {"all", description, options, NULL, NULL};
+    study_context *s = &ctx->study;
+    gt_error e;
+    if (cli_options_parse(&command, (void *[]){&s->quality, &s->output_dir, &s->threads, stage_list, project}, argc,
+                          argv, status) != 0)
+        return 1;
+    if (*project && study_project_read(*project, stage_known, &project_file, &e) != 0)
+        return *status = cli_fail(&e), 1;
+    study_project_apply(*project ? &project_file : NULL, s, stage_list);
+    return *stage_list && select_stages(*stage_list, selected) != 0 ? (*status = EXIT_USER_ERROR, 1) : 0;
 }
 
 /* Every selected stage's input is made earlier in this run or was made by an
@@ -121,14 +132,15 @@ static int check_inputs(const report_context *ctx, const int selected[STAGE_MAX]
 }
 
 /* The introduction: how the report was made. */
-static void introduce(report_context *ctx, const char *stage_list)
+static void introduce(report_context *ctx, const char *stage_list, const char *project)
 {
     const char *quality = ctx->study.quality == QUALITY_PREVIEW ? "preview" : "production";
     cJSON_AddStringToObject(ctx->summary, "gtlab_version", GTLAB_VERSION);
     cJSON_AddStringToObject(ctx->summary, "quality", quality);
     char stage_option[512] = "";
-    if (stage_list)
-        snprintf(stage_option, sizeof stage_option, " --stages %s", stage_list);
+    if (stage_list || project)
+        snprintf(stage_option, sizeof stage_option, "%s%s%s%s", stage_list ? " --stages " : "",
+                 stage_list ? stage_list : "", project ? " --project " : "", project ? project : "");
     report_paragraph(ctx->doc,
                      "Made by gtlab %s with 'gtlab all --quality %s%s'. Every figure below comes from that run; "
                      "rerunning the command reproduces the images bit for bit (timings vary with the machine). "
@@ -163,13 +175,13 @@ int verb_all(int argc, char **argv)
 {
     stage_count = (int)technique_stages(stages, STAGE_MAX);
     static claims_table claims;
-    report_context ctx = {{"results", QUALITY_PREVIEW, threads_default()}, NULL, NULL, &claims};
+    report_context ctx = {{NULL, (study_quality)-1, threads_default(), NULL}, NULL, NULL, &claims};
     int selected[STAGE_MAX];
     for (int i = 0; i < STAGE_MAX; ++i)
         selected[i] = 1;
-    const char *stage_list = NULL;
+    const char *stage_list = NULL, *project = NULL;
     int status;
-    if (parse_options(argc, argv, &ctx, selected, &stage_list, &status) != 0)
+    if (parse_options(argc, argv, &ctx, selected, &stage_list, &project, &status) != 0)
         return status;
     if (check_inputs(&ctx, selected) != 0)
         return EXIT_USER_ERROR;
@@ -184,11 +196,27 @@ int verb_all(int argc, char **argv)
     report_init(&doc, "gtlab accuracy report");
     ctx.doc = &doc;
     ctx.summary = cJSON_CreateObject();
-    introduce(&ctx, stage_list);
+    introduce(&ctx, stage_list, project);
+    scene_list_section(&ctx, &project_file, project);
     status = run_stages(&ctx, selected);
     if (status == EXIT_OK)
         printf("report: %s/report.html and %s/report.md\n", ctx.study.output_dir, ctx.study.output_dir);
     report_free(&doc);
     cJSON_Delete(ctx.summary);
     return status;
+}
+
+static const cli_option init_options[] = {CLI_OUTPUT("FILE", 0, "the project file to write (default gtlab.json)"),
+                                          CLI_END};
+
+int verb_init(int argc, char **argv)
+{
+    const char *path = "gtlab.json";
+    int status;
+    const char *about = "Writes an example project file for 'gtlab all --project FILE'; never overwrites one.";
+    const cli_command command = {"init", about, init_options, NULL, NULL};
+    gt_error e;
+    if (cli_options_parse(&command, (void *[]){&path}, argc, argv, &status) != 0)
+        return status;
+    return study_project_write_example(path, &e) != 0 ? cli_fail(&e) : (printf("wrote %s\n", path), EXIT_OK);
 }

@@ -8,6 +8,7 @@
 
 #include "report/claims_table.h"
 #include "report/report_table.h"
+#include "report/scene_list_section.h"
 
 typedef struct {
     char environment[64];
@@ -119,7 +120,8 @@ static void images(report_context *ctx, const env_study_result *r)
     int n = 0;
     for (int env = 0; env < r->environment_count; ++env)
         for (int k = 0; k < 3; ++k, ++n) {
-            snprintf(paths[n], sizeof paths[n], "environment/%s_cornell_%s.png", r->environments[env].name, parts[k]);
+            snprintf(paths[n], sizeof paths[n], "environment/%s_%s_%s.png", r->environments[env].name,
+                     r->image_scene, parts[k]);
             snprintf(captions[n], sizeof captions[n], "%s: %s", r->environments[env].name, what[k]);
             p[n] = paths[n], c[n] = captions[n];
         }
@@ -183,6 +185,7 @@ int env_approx_section(report_context *ctx, const env_study_result *r, gt_error 
                      r->scene_count, r->size, r->size, r->spp, r->bounces, r->environments[0].reference_noise,
                      r->seconds);
     cJSON *json = cJSON_AddObjectToObject(ctx->summary, "environment");
+    scene_names_json(json, (const char(*)[64])r->scenes, r->scene_count);
     report_heading(ctx->doc, 3, "Diffuse: AO x irradiance and the multi-bounce function");
     diffuse_table(ctx, r, json);
     report_heading(ctx->doc, 3, "Specular: split sum x specular occlusion");

@@ -121,7 +121,7 @@ static void render_scene(report *doc, cJSON *list, const gtao_validation_scene *
 
 /* RMSE against slices x steps from the study's data file, solid against the
  * height field and dashed against the 3-D reference, one line per steps. */
-static int render_convergence(report_context *ctx, gt_error *e)
+static int render_convergence(report_context *ctx, const char *scene, gt_error *e)
 {
     char data[4096], png[4096], script[16384];
     snprintf(data, sizeof data, "%s/%s/%s", ctx->study.output_dir, GTAO_VALIDATION_DIR, GTAO_CONVERGENCE_DATA);
@@ -132,12 +132,16 @@ static int render_convergence(report_context *ctx, gt_error *e)
              "set title 'GTAO on %s: regular slices, no denoiser'\nset key outside\n"
              "plot for [i=0:3] '%s' index i using 3:4 with linespoints title sprintf('vs height field, %%d steps', 2**(i+1)), "
              "for [i=0:3] '%s' index i using 3:5 with lines dashtype 2 title sprintf('vs 3-D, %%d steps', 2**(i+1))\n",
-             GTAO_CONVERGENCE_SCENE, data, data);
+             scene, data, data);
     if (gnuplot_render(script, png, 800, 500, e) != 0)
         return -1;
-    const char *p[1] = {"figures/gtao_convergence.png"}, *c[1] = {"GTAO error against slices x samples (boxes)"};
-    report_paragraph(ctx->doc, "Convergence of brute-force GTAO on boxes: RMSE against the height-field "
-                               "reference (solid) and the 3-D reference (dashed). Data: gtao/gtao_convergence.dat.");
+    char caption[128];
+    snprintf(caption, sizeof caption, "GTAO error against slices x samples (%s)", scene);
+    const char *p[1] = {"figures/gtao_convergence.png"}, *c[1] = {caption};
+    report_paragraph(ctx->doc,
+                     "Convergence of brute-force GTAO on %s: RMSE against the height-field reference (solid) "
+                     "and the 3-D reference (dashed). Data: gtao/gtao_convergence.dat.",
+                     scene);
     report_figures(ctx->doc, 1, p, c);
     return 0;
 }
@@ -163,9 +167,10 @@ static void render_fit(report *doc, const gtao_fit_request *rq, const gtao_fit_r
                      "'gtlab fit gtao-params --refs ao' (Ceres, DSSIM objective, %s preset, %d iterations%s): radius "
                      "%.3f +- %.3f of the camera's distance to its target (start %.2f), falloff %.3f +- %.3f (start "
                      "%.2f), thickness %.3f +- %.3f (start %.2f); standard errors treat pixels as independent and "
-                     "are optimistic. Fitted on boxes, corner and cornell; menger and sphere-on-plane are held out.",
+                     "are optimistic. Fitted on %s; held out: %s.",
                      rq->preset, r->iterations, r->converged ? "" : ", not converged", r->value[0], r->se[0],
-                     r->start[0], r->value[1], r->se[1], r->start[1], r->value[2], r->se[2], r->start[2]);
+                     r->start[0], r->value[1], r->se[1], r->start[1], r->value[2], r->se[2], r->start[2], rq->train,
+                     rq->test);
     report_rows(doc, NULL, fit_score_columns, COUNT(fit_score_columns), r->scores, sizeof r->scores[0],
                 r->score_count);
     int better = 0, held_out = 0;
@@ -175,9 +180,10 @@ static void render_fit(report *doc, const gtao_fit_request *rq, const gtao_fit_r
         better += x->held_out && x->dssim_after < x->dssim_before;
     }
     report_finding(doc, "GTAO auto-tune",
-                   "Tuning GTAO's radius, falloff and thickness by DSSIM on three scenes lowers DSSIM on %d of the %d "
+                   "Tuning GTAO's radius, falloff and thickness by DSSIM on %d scene%s lowers DSSIM on %d of the %d "
                    "held-out scenes (radius %.2f of the camera distance, falloff %.2f, thickness %.2f).",
-                   better, held_out, r->value[0], r->value[1], r->value[2]);
+                   r->score_count - held_out, r->score_count - held_out == 1 ? "" : "s", better, held_out,
+                   r->value[0], r->value[1], r->value[2]);
 }
 
 /* The summary table's row: the variants (by label, as run on the first
@@ -211,7 +217,7 @@ int gtao_section(report_context *ctx, const gtao_validation_result *r, gt_error 
     cJSON *list = cJSON_AddArrayToObject(ctx->summary, "gtao");
     for (int i = 0; i < r->scene_count; ++i)
         render_scene(ctx->doc, list, &r->scenes[i]);
-    if (render_convergence(ctx, e) != 0 || write_fit(ctx, r, e) != 0)
+    if (render_convergence(ctx, r->convergence_scene, e) != 0 || write_fit(ctx, r, e) != 0)
         return -1;
     render_fit(ctx->doc, &r->fit_request, &r->fit);
     add_headline(ctx->doc, r);

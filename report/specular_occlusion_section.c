@@ -14,6 +14,7 @@
 #include "report/claims_table.h"
 #include "report/specular_occlusion_section_parts.h"
 #include "report/report_table.h"
+#include "report/scene_list_section.h"
 #include "studies/specular_occlusion.h"
 
 /* ---- the LUTs ------------------------------------------------------------------ */
@@ -516,6 +517,7 @@ static void add_figures(report_context *ctx, const so_study_result *r)
 int specular_occlusion_section(report_context *ctx, const so_study_result *r, gt_error *e)
 {
     cJSON *json = cJSON_AddObjectToObject(ctx->summary, "specular_occlusion");
+    scene_names_json(json, (const char(*)[64])r->scenes, r->scene_count);
     report_heading(ctx->doc, 2, "Specular occlusion (GTSO)");
     report_luts(ctx, r, json);
     report_scores(ctx, r, json);

@@ -147,6 +147,8 @@ struct Loader {
     std::set<int> sparse_seen;        /* sparse accessors read */
     std::vector<uv_transform> material_uv; /* per material: KHR_texture_transform, baked into texcoords */
     gltf_report *report;
+    int camera_wanted = -1;           /* glTF camera index to use as the scene camera; -1: the first met */
+    const char *camera_name = nullptr; /* or the glTF camera of this name */
 
     int fail(const char *fmt, ...) __attribute__((format(printf, 2, 3)))
     {

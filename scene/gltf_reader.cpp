@@ -834,23 +834,40 @@ int flatten(Loader &L)
         const tinygltf::Node &node = L.model.nodes[(size_t)index];
         if (add_node_meshes(L, index, world) != 0)
             return -1;
-        if (node.camera >= 0 && !L.s->has_camera && set_camera(L, index, world) != 0)
+        const bool wanted = L.camera_wanted < 0 || node.camera == L.camera_wanted;
+        if (node.camera >= 0 && wanted && !L.s->has_camera && set_camera(L, index, world) != 0)
             return -1;
         stack.insert(stack.end(), node.children.rbegin(), node.children.rend());
     }
+    if (L.camera_wanted >= 0 && !L.s->has_camera)
+        return L.fail("camera %d is not a perspective camera on a node of the scene", L.camera_wanted);
+    return 0;
+}
+
+/* The camera asked for by name or index, checked to exist in the file. */
+int resolve_camera(Loader &L)
+{
+    const size_t count = L.model.cameras.size();
+    for (size_t i = 0; L.camera_name && i < count; ++i)
+        if (L.model.cameras[i].name == L.camera_name)
+            L.camera_wanted = (int)i;
+    if (L.camera_name && L.camera_wanted < 0)
+        return L.fail("no camera named '%s' (%zu cameras)", printable(L.camera_name).c_str(), count);
+    if (L.camera_wanted >= 0 && (size_t)L.camera_wanted >= count)
+        return L.fail("camera %d does not exist (%zu cameras)", L.camera_wanted, count);
     return 0;
 }
 
 int load(Loader &L, const unsigned char *bytes, size_t size, const std::string &base_dir)
 {
-    if (parse_bytes(L, bytes, size, base_dir) != 0 || check_node_graph(L) != 0 || convert_materials(L) != 0 ||
-        flatten(L) != 0)
+    if (parse_bytes(L, bytes, size, base_dir) != 0 || resolve_camera(L) != 0 || check_node_graph(L) != 0 ||
+        convert_materials(L) != 0 || flatten(L) != 0)
         return -1;
     return scene_validate(L.s, L.path, L.e);
 }
 
 int load_guarded(const unsigned char *bytes, size_t size, const char *name, const std::string &base_dir, scene *s,
-                 gltf_report *report, gt_error *e)
+                 gltf_report *report, const gltf_camera_choice *choice, gt_error *e)
 {
     int rc;
     try {
@@ -859,6 +876,8 @@ int load_guarded(const unsigned char *bytes, size_t size, const char *name, cons
         L.e = e;
         L.s = s;
         L.report = report;
+        L.camera_wanted = choice ? choice->index : -1;
+        L.camera_name = choice ? choice->name : nullptr;
         const char *slash = std::strrchr(name, '/');
         std::snprintf(s->name, sizeof s->name, "%s", slash ? slash + 1 : name);
         rc = load(L, bytes, size, base_dir);
@@ -872,14 +891,14 @@ int load_guarded(const unsigned char *bytes, size_t size, const char *name, cons
 }
 
 int load_memory(const void *bytes, size_t size, const char *name, const char *base_dir, scene *s,
-                gltf_report *report, gt_error *e)
+                gltf_report *report, const gltf_camera_choice *choice, gt_error *e)
 {
     gltf_report unused;
     report = report ? report : &unused;
     std::memset(report, 0, sizeof *report);
     std::memset(s, 0, sizeof *s);
     int rc = load_guarded(static_cast<const unsigned char *>(bytes), size, name, base_dir ? base_dir : "", s, report,
-                          e);
+                          choice, e);
     if (rc != 0)
         scene_free(s);
     return rc;
@@ -894,10 +913,11 @@ using gltf_detail::read_whole_file;
 extern "C" int gltf_load_memory(const void *bytes, size_t size, const char *name, const char *base_dir, scene *s,
                                 gt_error *e)
 {
-    return load_memory(bytes, size, name, base_dir, s, nullptr, e);
+    return load_memory(bytes, size, name, base_dir, s, nullptr, nullptr, e);
 }
 
-extern "C" int gltf_load_report(const char *path, scene *s, gltf_report *report, gt_error *e)
+/* Reads the file and loads it; choice may be NULL (the first camera met). */
+static int load_file(const char *path, scene *s, gltf_report *report, const gltf_camera_choice *choice, gt_error *e)
 {
     std::memset(s, 0, sizeof *s);
     int rc;
@@ -905,14 +925,24 @@ extern "C" int gltf_load_report(const char *path, scene *s, gltf_report *report,
         std::vector<unsigned char> bytes;
         rc = read_whole_file(path, bytes, e);
         if (rc == 0)
-            rc = load_memory(bytes.data(), bytes.size(), path, directory_of(path).c_str(), s, report, e);
+            rc = load_memory(bytes.data(), bytes.size(), path, directory_of(path).c_str(), s, report, choice, e);
     } catch (const std::bad_alloc &) {
         rc = gt_error_set(e, path, "out of memory");
     }
     return rc;
 }
 
+extern "C" int gltf_load_report(const char *path, scene *s, gltf_report *report, gt_error *e)
+{
+    return load_file(path, s, report, nullptr, e);
+}
+
 extern "C" int gltf_load(const char *path, scene *s, gt_error *e)
 {
     return gltf_load_report(path, s, nullptr, e);
+}
+
+extern "C" int gltf_load_with_camera(const char *path, const gltf_camera_choice *choice, scene *s, gt_error *e)
+{
+    return load_file(path, s, nullptr, choice, e);
 }

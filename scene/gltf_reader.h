@@ -27,6 +27,19 @@
 
 int gltf_load(const char *path, scene *s, gt_error *e);
 
+/* Which glTF camera becomes the scene camera: the one at `index` in the
+ * file's cameras, or (name not NULL) the one named so; the first node of the
+ * hierarchy walk that instances it places it. Index -1 and name NULL: the
+ * first perspective camera met, as gltf_load. */
+typedef struct {
+    int index;
+    const char *name;
+} gltf_camera_choice;
+
+/* gltf_load with the scene camera chosen; an unknown camera, or one no node
+ * of the scene places (or not perspective), is an error naming the file. */
+int gltf_load_with_camera(const char *path, const gltf_camera_choice *choice, scene *s, gt_error *e);
+
 /* What the reader met and did, for `gtlab scene info`: counts over the
  * primitives drawn (a mesh used by two nodes counts twice). */
 typedef struct {

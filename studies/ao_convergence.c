@@ -9,8 +9,7 @@
 #include "core/progress.h"
 #include "core/reference_schema.h"
 #include "raytracer/reference_render.h"
-#include "scene/builtin_scenes.h"
-#include "scene/scene_loaders.h"
+#include "studies/study_scenes.h"
 
 enum { SERIES_SEED = 1, REFERENCE_SEED = 7 };
 
@@ -94,19 +93,16 @@ static int run_series(const scene *s, const camera *cam, const image *ref, const
     return 0;
 }
 
-static int measure_scene(const char *name, const ao_convergence_request *rq, ao_convergence_scene *out, gt_error *e)
+static int measure_scene(const study_scene_entry *entry, const ao_convergence_request *rq, ao_convergence_scene *out,
+                         gt_error *e)
 {
-    char spec[80];
-    snprintf(spec, sizeof spec, "builtin:%s", name);
-    snprintf(out->scene, sizeof out->scene, "%s", name);
+    snprintf(out->scene, sizeof out->scene, "%s", entry->label);
     scene s;
     camera cam;
-    if (scene_load(spec, &s, e) != 0)
+    if (study_scene_view(entry, rq->width, rq->height, &s, &cam, e) != 0)
         return -1;
     image ref;
-    int rc = scene_choose_camera(&s, NULL, rq->width, rq->height, &cam, e);
-    if (rc == 0)
-        rc = render_ao(&s, &cam, AO_CONTROL_VARIATE_HEIGHTFIELD, rq->reference_spp, REFERENCE_SEED, rq->threads, &ref,
+    int rc = render_ao(&s, &cam, AO_CONTROL_VARIATE_HEIGHTFIELD, rq->reference_spp, REFERENCE_SEED, rq->threads, &ref,
                        &out->reference_seconds, e);
     if (rc == 0) {
         for (int mode = 0; mode < CONVERGENCE_MODES && rc == 0; ++mode)
@@ -122,10 +118,10 @@ int ao_convergence_run(const ao_convergence_request *rq, ao_convergence_result *
 {
     memset(out, 0, sizeof *out);
     out->request = *rq;
-    out->scene_count = builtin_study_scene_count() < AO_CONVERGENCE_MAX_SCENES ? builtin_study_scene_count()
-                                                                          : AO_CONVERGENCE_MAX_SCENES;
+    const int count = study_scene_count(NULL); /* the built-in study scenes */
+    out->scene_count = count < AO_CONVERGENCE_MAX_SCENES ? count : AO_CONVERGENCE_MAX_SCENES;
     for (int i = 0; i < out->scene_count; ++i)
-        if (measure_scene(builtin_study_scene_at(i)->name, rq, &out->scenes[i], e) != 0)
+        if (measure_scene(study_scene_at(NULL, i), rq, &out->scenes[i], e) != 0)
             return -1;
     return 0;
 }

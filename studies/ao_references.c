@@ -9,8 +9,7 @@
 #include "core/reference_schema.h"
 #include "metrics/ssim.h"
 #include "raytracer/reference_render.h"
-#include "scene/scene_loaders.h"
-#include "scene/builtin_scenes.h"
+#include "studies/study_scenes.h"
 
 /* Samples, standard errors and throughput over the covered pixels. */
 static void measure(const image *img, const render_stats *stats, ao_reference_row *r)
@@ -76,25 +75,21 @@ static int write_previews(const image *img, const char *figures, const char *nam
                                img->width, img->height, (float)fmax(max_stderr, 1e-6), "inferno", e);
 }
 
-/* The reference of one scene, rendered at its default camera. */
-static int render_scene(const builtin_scene *b, const reference_request *req, int size, image *img, camera *cam,
+/* The reference of one scene, rendered at its entry's camera. */
+static int render_scene(const study_scene_entry *b, const reference_request *req, int size, image *img, camera *cam,
                         render_stats *stats, uint64_t *triangles, gt_error *e)
 {
-    char spec[128];
-    snprintf(spec, sizeof spec, "builtin:%s", b->name);
     scene s;
-    if (scene_load(spec, &s, e) != 0)
+    if (study_scene_view(b, size, 0, &s, cam, e) != 0)
         return -1;
-    int rc = scene_choose_camera(&s, NULL, size, 0, cam, e);
-    if (rc == 0)
-        rc = reference_render(&s, spec, cam, req, img, stats, e);
+    int rc = reference_render(&s, b->spec, cam, req, img, stats, e);
     *triangles = scene_triangle_count(&s);
     scene_free(&s);
     return rc;
 }
 
 /* Renders, measures and writes one scene's reference and previews. */
-static int study_scene(const builtin_scene *b, const reference_request *req, int size, const char *refs,
+static int study_scene(const study_scene_entry *b, const reference_request *req, int size, const char *refs,
                        const char *figures, ao_reference_row *row, gt_error *e)
 {
     char path[4096];
@@ -102,22 +97,22 @@ static int study_scene(const builtin_scene *b, const reference_request *req, int
     image img;
     render_stats stats;
     memset(row, 0, sizeof *row);
-    snprintf(row->scene, sizeof row->scene, "%s", b->name);
+    snprintf(row->scene, sizeof row->scene, "%s", b->label);
     if (render_scene(b, req, size, &img, &cam, &stats, &row->triangles, e) != 0)
         return -1;
     measure(&img, &stats, row);
     ssim_result floor;
-    snprintf(path, sizeof path, "%s/%s.exr", refs, b->name);
+    snprintf(path, sizeof path, "%s/%s.exr", refs, b->label);
     int rc = ssim_noise_floor(&img, path, CH_AO, image_channel_data(&img, CH_MASK), &floor, e);
     row->noise_floor_dssim = floor.dssim;
     if (rc == 0)
         rc = exr_write(path, &img, e);
     if (rc == 0) {
-        snprintf(path, sizeof path, "%s/%s.camera.json", refs, b->name);
+        snprintf(path, sizeof path, "%s/%s.camera.json", refs, b->label);
         rc = camera_write_json(path, &cam, e);
     }
     if (rc == 0)
-        rc = write_previews(&img, figures, b->name, row->max_stderr, e);
+        rc = write_previews(&img, figures, b->label, row->max_stderr, e);
     image_free(&img);
     return rc;
 }
@@ -142,10 +137,10 @@ int ao_references_study(const study_context *ctx, const ao_references_request *r
     if (study_make_dir(ctx, AO_REFERENCES_DIR, refs, sizeof refs, e) != 0 ||
         study_make_dir(ctx, "figures", figures, sizeof figures, e) != 0)
         return -1;
-    int scenes = rq->scene_count > 0 && rq->scene_count < builtin_study_scene_count() ? rq->scene_count
-                                                                                 : builtin_study_scene_count();
+    int scenes = rq->scene_count > 0 && rq->scene_count < study_scene_count(ctx) ? rq->scene_count
+                                                                                 : study_scene_count(ctx);
     for (int i = 0; i < scenes && i < AO_REFERENCES_MAX_SCENES; ++i, ++out->count)
-        if (study_scene(builtin_study_scene_at(i), &req, rq->size, refs, figures, &out->rows[i], e) != 0)
+        if (study_scene(study_scene_at(ctx, i), &req, rq->size, refs, figures, &out->rows[i], e) != 0)
             return -1;
     return 0;
 }

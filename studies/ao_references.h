@@ -40,7 +40,7 @@ typedef struct {
 typedef struct {
     ao_references_request request;
     int count;
-    ao_reference_row rows[AO_REFERENCES_MAX_SCENES]; /* builtin_study_scene_at order */
+    ao_reference_row rows[AO_REFERENCES_MAX_SCENES]; /* study_scene_at order */
 } ao_references_result;
 
 /* The request of `gtlab all` at a quality: preview 256 px, 256 spp;

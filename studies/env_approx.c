@@ -14,8 +14,7 @@
 #include "raytracer/environment_light.h"
 #include "raytracer/environment_quantity.h"
 #include "raytracer/reference_render.h"
-#include "scene/builtin_scenes.h"
-#include "scene/scene_loaders.h"
+#include "studies/study_scenes.h"
 #include "studies/env_approx_lighting.h"
 #include "studies/env_approx_parts.h"
 
@@ -160,7 +159,7 @@ static int run_case(env_state *st, int env, int scene_index, const scene *s, con
         rc = env_case_score(&c, &scores, e);
     if (rc == 0)
         accumulate(st, env, scene_index, &scores);
-    if (rc == 0 && strcmp(scene_name, ENV_IMAGE_SCENE) == 0) {
+    if (rc == 0 && strcmp(scene_name, st->out->image_scene) == 0) {
         char stem[128];
         snprintf(stem, sizeof stem, "%s_%s", st->out->environments[env].name, scene_name);
         rc = env_case_images(&c, st->dir, stem, e);
@@ -170,19 +169,16 @@ static int run_case(env_state *st, int env, int scene_index, const scene *s, con
     return rc;
 }
 
-static int run_scene(env_state *st, const char *name, gt_error *e)
+static int run_scene(env_state *st, const study_scene_entry *entry, gt_error *e)
 {
-    char spec[128];
-    snprintf(spec, sizeof spec, "builtin:%s", name);
+    const char *spec = entry->spec, *name = entry->label;
     scene s;
     camera cam;
     image ao = {0};
-    if (scene_load(spec, &s, e) != 0)
+    if (study_scene_view(entry, st->out->size, st->out->size, &s, &cam, e) != 0)
         return -1;
     int scene_index = st->out->scene_count;
-    int rc = scene_choose_camera(&s, NULL, st->out->size, st->out->size, &cam, e);
-    if (rc == 0)
-        rc = render(st, &s, spec, &cam, QUANTITY_AO, NULL, &ao, e);
+    int rc = render(st, &s, spec, &cam, QUANTITY_AO, NULL, &ao, e);
     for (int env = 0; env < st->out->environment_count && rc == 0; ++env)
         rc = run_case(st, env, scene_index, &s, spec, &cam, &ao, name, e);
     if (rc == 0)
@@ -194,14 +190,14 @@ static int run_scene(env_state *st, const char *name, gt_error *e)
 
 static int run_scenes(env_state *st, gt_error *e)
 {
-    if (st->ctx->quality != QUALITY_PRODUCTION) {
+    if (st->ctx->quality != QUALITY_PRODUCTION && !st->ctx->scenes) { /* a project's scenes run at any quality */
         for (size_t i = 0; i < sizeof preview_scenes / sizeof preview_scenes[0]; ++i)
-            if (run_scene(st, preview_scenes[i], e) != 0)
+            if (run_scene(st, study_scene_find(st->ctx, preview_scenes[i]), e) != 0)
                 return -1;
         return 0;
     }
-    for (int i = 0; i < builtin_study_scene_count() && i < ENV_STUDY_MAX_SCENES; ++i)
-        if (run_scene(st, builtin_study_scene_at(i)->name, e) != 0)
+    for (int i = 0; i < study_scene_count(st->ctx) && i < ENV_STUDY_MAX_SCENES; ++i)
+        if (run_scene(st, study_scene_at(st->ctx, i), e) != 0)
             return -1;
     return 0;
 }
@@ -244,6 +240,8 @@ int env_approx_study(const study_context *ctx, env_study_result *out, gt_error *
     double t0 = seconds_now();
     int preview = ctx->quality != QUALITY_PRODUCTION;
     memset(out, 0, sizeof *out);
+    snprintf(out->image_scene, sizeof out->image_scene, "%s",
+             ctx->scenes ? study_scene_at(ctx, 0)->label : ENV_IMAGE_SCENE);
     out->size = preview ? 48 : 128, out->spp = preview ? 512 : 4096, out->bounces = 3;
     env_state *st = calloc(1, sizeof *st);
     if (!st)

@@ -90,6 +90,7 @@ typedef struct {
     int size, spp, bounces; /* of every reference */
     int scene_count, environment_count;
     char scenes[ENV_STUDY_MAX_SCENES][64];
+    char image_scene[64]; /* the scene whose images are written: cornell, or a project's first */
     env_study_environment environments[ENV_STUDY_MAX_ENVIRONMENTS]; /* [0] is the white dome */
     env_so_ranking rankings[ENV_STUDY_MAX_ENVIRONMENTS];             /* [0]: the white dome's own order */
     /* the talk's claim: AO x probe (map, exact AO) occlusion part, relative

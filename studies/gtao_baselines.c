@@ -13,7 +13,7 @@
 #include "realtime/gtao_sin_n_pitfall.h"
 #include "realtime/hbao.h"
 #include "realtime/volumetric_obscurance.h"
-#include "scene/builtin_scenes.h"
+#include "studies/study_scenes.h"
 #include "studies/gtao_scene_refs.h"
 
 const char *const baseline_names[BASELINE_COUNT] = {
@@ -76,12 +76,11 @@ static void pool(gtao_baselines_result *r)
 int gtao_baselines_study(const study_context *ctx, const gtao_shortcuts_request *rq, gtao_baselines_result *out,
                          gt_error *e)
 {
-    (void)ctx;
     memset(out, 0, sizeof *out);
-    out->scene_count = builtin_study_scene_count() < BASELINES_MAX_SCENES ? builtin_study_scene_count() : BASELINES_MAX_SCENES;
+    out->scene_count = study_scene_count(ctx) < BASELINES_MAX_SCENES ? study_scene_count(ctx) : BASELINES_MAX_SCENES;
     for (int i = 0; i < out->scene_count; ++i) {
         gtao_scene_refs s;
-        if (gtao_scene_refs_load(rq->ao_references_dir, rq->gtao_dir, builtin_study_scene_at(i)->name, &s, e) != 0)
+        if (gtao_scene_refs_load(rq->ao_references_dir, rq->gtao_dir, study_scene_at(ctx, i)->label, &s, e) != 0)
             return -1;
         size_t n = (size_t)s.width * s.height;
         float *ao = malloc(sizeof *ao * n), *gtao = malloc(sizeof *gtao * n);

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "realtime/gtao_bent_horizons.h"
-#include "scene/builtin_scenes.h"
+#include "studies/study_scenes.h"
 #include "studies/gtao_scene_refs.h"
 
 const char *const bent_estimator_names[BENT_ESTIMATORS] = {"average of the horizon vectors",
@@ -140,9 +140,9 @@ int gtao_bent_normals_study(const study_context *ctx, const gtao_shortcuts_reque
     int preview = ctx->quality == QUALITY_PREVIEW;
     out->slices = preview ? 4 : 8;
     out->steps = preview ? 8 : 16;
-    out->scene_count = builtin_study_scene_count() < BENT_MAX_SCENES ? builtin_study_scene_count() : BENT_MAX_SCENES;
+    out->scene_count = study_scene_count(ctx) < BENT_MAX_SCENES ? study_scene_count(ctx) : BENT_MAX_SCENES;
     for (int i = 0; i < out->scene_count; ++i)
-        if (study_scene(rq, builtin_study_scene_at(i)->name, out, i, e) != 0)
+        if (study_scene(rq, study_scene_at(ctx, i)->label, out, i, e) != 0)
             return -1;
     out->pooled_halfway_vs_horizons = cluster_mean_pool(out->halfway_vs_horizons, out->scene_count);
     for (int k = 0; k < BENT_ESTIMATORS; ++k) {

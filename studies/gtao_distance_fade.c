@@ -9,18 +9,18 @@
 
 #include "core/reference_schema.h"
 #include "raytracer/reference_render.h"
-#include "scene/builtin_scenes.h"
+#include "studies/study_scenes.h"
 #include "scene/scene_loaders.h"
 #include "studies/gtao_scene_refs.h"
 
 #define FADE_START_FRACTION 0.75f /* 150 / 200 */
 
 /* The 3-D AO reference with the fade at s's camera. */
-static int render_faded(const gtao_scene_refs *s, const gtao_distance_fade_result *r, int threads, float end,
-                        image *out, gt_error *e)
+static int render_faded(const study_context *ctx, const gtao_scene_refs *s, const gtao_distance_fade_result *r,
+                        float end, image *out, gt_error *e)
 {
-    char spec[128];
-    snprintf(spec, sizeof spec, "builtin:%s", s->scene);
+    const char *spec = study_scene_spec(ctx, s->scene);
+    const int threads = ctx->threads;
     scene sc;
     if (scene_load(spec, &sc, e) != 0)
         return -1;
@@ -69,13 +69,13 @@ static int study_scene(const study_context *ctx, const gtao_shortcuts_request *r
 {
     gtao_scene_refs s;
     fade_row *x = &r->rows[i];
-    if (gtao_scene_refs_load(rq->ao_references_dir, rq->gtao_dir, builtin_study_scene_at(i)->name, &s, e) != 0)
+    if (gtao_scene_refs_load(rq->ao_references_dir, rq->gtao_dir, study_scene_at(ctx, i)->label, &s, e) != 0)
         return -1;
     snprintf(x->scene, sizeof x->scene, "%s", s.scene);
     x->fade_end = s.vo_radius;
     x->fade_start = FADE_START_FRACTION * s.vo_radius;
     image faded = {0};
-    int rc = render_faded(&s, r, ctx->threads, s.vo_radius, &faded, e);
+    int rc = render_faded(ctx, &s, r, s.vo_radius, &faded, e);
     size_t n = (size_t)s.width * s.height;
     float *ao = malloc(sizeof *ao * n), *d = malloc(sizeof *d * n);
     if (rc == 0 && (!ao || !d))
@@ -106,7 +106,7 @@ int gtao_distance_fade_study(const study_context *ctx, const gtao_shortcuts_requ
     out->slices = preview ? 4 : 8;
     out->steps = preview ? 8 : 16;
     out->spp = preview ? 64 : 1024;
-    out->scene_count = builtin_study_scene_count() < FADE_MAX_SCENES ? builtin_study_scene_count() : FADE_MAX_SCENES;
+    out->scene_count = study_scene_count(ctx) < FADE_MAX_SCENES ? study_scene_count(ctx) : FADE_MAX_SCENES;
     cluster_mean a[FADE_MAX_SCENES], b[FADE_MAX_SCENES], c[FADE_MAX_SCENES];
     for (int i = 0; i < out->scene_count; ++i) {
         if (study_scene(ctx, rq, out, i, e) != 0)

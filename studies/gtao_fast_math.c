@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "fitters/ceres_bridge.h"
-#include "scene/builtin_scenes.h"
+#include "studies/study_scenes.h"
 #include "studies/gtao_scene_refs.h"
 
 const char *const fast_acos_variant_names[FAST_ACOS_VARIANTS] = {
@@ -286,15 +286,15 @@ static int refits(const study_context *ctx, replay_scene *rs, gtao_fast_math_res
         r->iterations[model] = res.iterations;
         r->poly[model == 0 ? FAST_ACOS_SLOPE : FAST_ACOS_BOTH] = poly_of(full);
         r->at_bound[model] = on_bound(full);
-        for (int s = 0; s < n; ++s) {
-            double p[2] = {full[0], full[1]};
-            if (fit_poly(rs, n, s, model == 0, ctx->threads, p, &res, NULL, e) != 0)
+        for (int s = 0; s < n; ++s) { /* one scene (a project's) leaves none to fit: no held-out figure (NaN) */
+            double p[2] = {n > 1 ? full[0] : NAN, n > 1 ? full[1] : NAN};
+            if (n > 1 && fit_poly(rs, n, s, model == 0, ctx->threads, p, &res, NULL, e) != 0)
                 return -1;
             gtao_acos_poly held = poly_of(p);
             slopes[s] = p[0];
             both[0][s] = p[0];
             both[1][s] = p[1];
-            gains[model][s] = heldout_gain(&rs[s], &held, &talk, a, b);
+            gains[model][s] = n > 1 ? heldout_gain(&rs[s], &held, &talk, a, b) : NAN;
             if (model == 0)
                 r->scenes[s].heldout_slope_gain = gains[0][s];
             else
@@ -361,17 +361,17 @@ static void setup(const study_context *ctx, gtao_fast_math_result *r)
     r->poly[FAST_ACOS_TALK] = gtao_acos_poly_talk();
     r->poly[FAST_ACOS_TRANSCRIBED] = r->poly[FAST_ACOS_TALK];
     r->poly[FAST_ACOS_TRANSCRIBED].magic = GTAO_FAST_SQRT_MAGIC_AS_TRANSCRIBED;
-    r->scene_count = builtin_study_scene_count() < FAST_MATH_MAX_SCENES ? builtin_study_scene_count() : FAST_MATH_MAX_SCENES;
+    r->scene_count = study_scene_count(ctx) < FAST_MATH_MAX_SCENES ? study_scene_count(ctx) : FAST_MATH_MAX_SCENES;
 }
 
 /* Loads every scene's references; returns the largest pixel count, or 0 with e. */
-static size_t load_scenes(const gtao_shortcuts_request *rq, gtao_scene_refs *refs, gtao_fast_math_result *r,
-                          gt_error *e)
+static size_t load_scenes(const study_context *ctx, const gtao_shortcuts_request *rq, gtao_scene_refs *refs,
+                          gtao_fast_math_result *r, gt_error *e)
 {
     size_t most = 0;
     for (int s = 0; s < r->scene_count; ++s) {
         gtao_fast_math_scene *x = &r->scenes[s];
-        snprintf(x->scene, sizeof x->scene, "%s", builtin_study_scene_at(s)->name);
+        snprintf(x->scene, sizeof x->scene, "%s", study_scene_at(ctx, s)->label);
         if (gtao_scene_refs_load(rq->ao_references_dir, rq->gtao_dir, x->scene, &refs[s], e) != 0)
             return 0;
         r->hf_mean_variance += mean_variance(&refs[s]) / r->scene_count;
@@ -406,7 +406,7 @@ int gtao_fast_math_study(const study_context *ctx, const gtao_shortcuts_request 
     replay_scene rs[FAST_MATH_MAX_SCENES];
     memset(refs, 0, sizeof refs);
     memset(rs, 0, sizeof rs);
-    size_t pixels = load_scenes(rq, refs, out, e);
+    size_t pixels = load_scenes(ctx, rq, refs, out, e);
     float *a = pixels ? malloc(sizeof *a * pixels) : NULL, *b = pixels ? malloc(sizeof *b * pixels) : NULL;
     int rc = !pixels ? -1 : a && b ? run(ctx, refs, rs, out, a, b, e) : gt_error_set(e, "gtao", "out of memory");
     for (int s = 0; s < out->scene_count; ++s) {

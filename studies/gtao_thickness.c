@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "scene/builtin_scenes.h"
+#include "studies/study_scenes.h"
 #include "studies/gtao_scene_refs.h"
 
 const float gtao_thickness_values[THICKNESS_VALUES] = {0.05f, 0.1f, 0.25f, 0.5f};
@@ -62,10 +62,11 @@ static int score_scene(const gtao_scene_refs *s, const gtao_params *base, float 
     return 0;
 }
 
-static int study_scene(const gtao_shortcuts_request *rq, gtao_thickness_result *r, int i, gt_error *e)
+static int study_scene(const study_context *ctx, const gtao_shortcuts_request *rq, gtao_thickness_result *r, int i,
+                       gt_error *e)
 {
     gtao_scene_refs s;
-    if (gtao_scene_refs_load(rq->ao_references_dir, rq->gtao_dir, builtin_study_scene_at(i)->name, &s, e) != 0)
+    if (gtao_scene_refs_load(rq->ao_references_dir, rq->gtao_dir, study_scene_at(ctx, i)->label, &s, e) != 0)
         return -1;
     gtao_params p = gtao_scene_params(&s, GTAO_PRESET_REFERENCE);
     p.slices = r->slices;
@@ -87,11 +88,11 @@ int gtao_thickness_study(const study_context *ctx, const gtao_shortcuts_request 
     out->slices = preview ? 4 : 8;
     out->steps = preview ? 8 : 16;
     out->corner_scene = -1;
-    out->scene_count = builtin_study_scene_count() < THICKNESS_MAX_SCENES ? builtin_study_scene_count() : THICKNESS_MAX_SCENES;
+    out->scene_count = study_scene_count(ctx) < THICKNESS_MAX_SCENES ? study_scene_count(ctx) : THICKNESS_MAX_SCENES;
     for (int i = 0; i < out->scene_count; ++i) {
-        if (study_scene(rq, out, i, e) != 0)
+        if (study_scene(ctx, rq, out, i, e) != 0)
             return -1;
-        if (strcmp(builtin_study_scene_at(i)->name, "corner") == 0)
+        if (strcmp(study_scene_at(ctx, i)->spec, "builtin:corner") == 0)
             out->corner_scene = i;
     }
     for (int k = 0; k < THICKNESS_VALUES; ++k) {

@@ -19,7 +19,7 @@
 #include "raytracer/reference_render.h"
 #include "realtime/hbao.h"
 #include "realtime/volumetric_obscurance.h"
-#include "scene/builtin_scenes.h"
+#include "studies/study_scenes.h"
 #include "scene/scene_loaders.h"
 #include "studies/gbuffer_input.h"
 
@@ -240,10 +240,10 @@ static int render_heightfield(const study_context *ctx, const char *spec, const 
 static int scene_references(const study_context *ctx, const char *refs_dir, const char *dir, const char *name,
                             int spp, approx_input *in, image *hf, gt_error *e)
 {
-    char ref_path[4096], hf_path[4096], spec[128];
+    char ref_path[4096], hf_path[4096];
     snprintf(ref_path, sizeof ref_path, "%s/%s.exr", refs_dir, name);
     snprintf(hf_path, sizeof hf_path, "%s/%s_heightfield.exr", dir, name);
-    snprintf(spec, sizeof spec, "builtin:%s", name);
+    const char *spec = study_scene_spec(ctx, name);
     if (approx_load(ref_path, NULL, in, e) != 0)
         return -1;
     if (render_heightfield(ctx, spec, &in->cam, spp, hf_path, hf, e) != 0) {
@@ -314,9 +314,9 @@ static int convergence_rows(const scene_data *d, float *ao, gtao_validation_resu
             x->steps = p.steps = gtao_convergence_steps[a];
             double unused;
             if (gtao_render(d->g, &p, ao, NULL) != 0)
-                return gt_error_set(e, GTAO_CONVERGENCE_SCENE, "out of memory");
-            if (compare(d, ao, d->hf, GTAO_CONVERGENCE_SCENE, &unused, &x->rmse_hf, NULL, e) != 0 ||
-                compare(d, ao, d->ref3d, GTAO_CONVERGENCE_SCENE, &unused, &x->rmse_3d, NULL, e) != 0)
+                return gt_error_set(e, r->convergence_scene, "out of memory");
+            if (compare(d, ao, d->hf, r->convergence_scene, &unused, &x->rmse_hf, NULL, e) != 0 ||
+                compare(d, ao, d->ref3d, r->convergence_scene, &unused, &x->rmse_3d, NULL, e) != 0)
                 return -1;
         }
     return 0;
@@ -338,13 +338,13 @@ static int write_convergence(const gtao_validation_result *r, const char *path, 
     return atomic_write_text(path, data, e);
 }
 
-/* The convergence on GTAO_CONVERGENCE_SCENE, against the height-field
+/* The convergence on r->convergence_scene, against the height-field
  * reference this study wrote to dir. */
 static int convergence(const char *refs_dir, const char *dir, gtao_validation_result *r, gt_error *e)
 {
     char ref_path[4096], hf_path[4096], data_path[4096];
-    snprintf(ref_path, sizeof ref_path, "%s/%s.exr", refs_dir, GTAO_CONVERGENCE_SCENE);
-    snprintf(hf_path, sizeof hf_path, "%s/%s_heightfield.exr", dir, GTAO_CONVERGENCE_SCENE);
+    snprintf(ref_path, sizeof ref_path, "%s/%s.exr", refs_dir, r->convergence_scene);
+    snprintf(hf_path, sizeof hf_path, "%s/%s_heightfield.exr", dir, r->convergence_scene);
     snprintf(data_path, sizeof data_path, "%s/%s", dir, GTAO_CONVERGENCE_DATA);
     approx_input in;
     image hf;
@@ -356,13 +356,30 @@ static int convergence(const char *refs_dir, const char *dir, gtao_validation_re
     }
     scene_data d = {&in.g, image_channel_data(&hf, CH_AO), image_channel_data(&in.img, CH_AO), in.g.mask, 1.0f};
     float *ao = malloc(sizeof *ao * image_pixel_count(&hf));
-    int rc = ao ? convergence_rows(&d, ao, r, e) : gt_error_set(e, GTAO_CONVERGENCE_SCENE, "out of memory");
+    int rc = ao ? convergence_rows(&d, ao, r, e) : gt_error_set(e, r->convergence_scene, "out of memory");
     if (rc == 0)
         rc = write_convergence(r, data_path, e);
     free(ao);
     image_free(&hf);
     approx_input_free(&in);
     return rc;
+}
+
+/* The GTAO fit's split: the talk's on the built-in scenes; on a project's
+ * scenes the first half (rounded up) trains and the rest is held out, and a
+ * single scene is both (the held-out score is then in-sample). */
+static void fit_split(const study_context *ctx, gtao_validation_result *out)
+{
+    int n = study_scene_count(ctx), train = n > 1 ? (n + 1) / 2 : n;
+    snprintf(out->fit_train, sizeof out->fit_train, "%s", ctx->scenes ? "" : GTAO_FIT_DEFAULT_TRAIN);
+    snprintf(out->fit_test, sizeof out->fit_test, "%s", ctx->scenes ? "" : GTAO_FIT_DEFAULT_TEST);
+    for (int i = 0; ctx->scenes && i < n; ++i) {
+        char *list = i < train ? out->fit_train : out->fit_test;
+        size_t used = strlen(list), size = i < train ? sizeof out->fit_train : sizeof out->fit_test;
+        snprintf(list + used, size - used, "%s%s", used ? "," : "", study_scene_at(ctx, i)->label);
+    }
+    if (n == 1 && ctx->scenes)
+        snprintf(out->fit_test, sizeof out->fit_test, "%s", out->fit_train);
 }
 
 int gtao_validation_study(const study_context *ctx, const gtao_validation_request *rq, gtao_validation_result *out,
@@ -373,21 +390,24 @@ int gtao_validation_study(const study_context *ctx, const gtao_validation_reques
         study_make_dir(ctx, "figures", figures, sizeof figures, e) != 0)
         return -1;
     memset(out, 0, sizeof *out);
+    snprintf(out->convergence_scene, sizeof out->convergence_scene, "%s",
+             ctx->scenes ? study_scene_at(ctx, 0)->label : GTAO_CONVERGENCE_SCENE);
     int preview = ctx->quality == QUALITY_PREVIEW;
     out->heightfield_spp = preview ? 32 : 1024;
     out->converged_frames = preview ? PREVIEW_FRAMES : FULL_CYCLE;
-    for (int i = 0; i < builtin_study_scene_count(); ++i) {
+    for (int i = 0; i < study_scene_count(ctx); ++i) {
         if (i == GTAO_VALIDATION_MAX_SCENES)
-            return gt_error_set(e, "gtao", "more than %d built-in scenes", GTAO_VALIDATION_MAX_SCENES);
+            return gt_error_set(e, "gtao", "more than %d scenes", GTAO_VALIDATION_MAX_SCENES);
         gtao_validation_scene *s = &out->scenes[out->scene_count++];
-        snprintf(s->scene, sizeof s->scene, "%s", builtin_study_scene_at(i)->name);
+        snprintf(s->scene, sizeof s->scene, "%s", study_scene_at(ctx, i)->label);
         if (study_scene(ctx, rq->ao_references_dir, dir, figures, out, s, e) != 0)
             return -1;
     }
     gtao_shortcuts_finish(&out->shortcuts);
     if (convergence(rq->ao_references_dir, dir, out, e) != 0)
         return -1;
-    out->fit_request = (gtao_fit_request){rq->ao_references_dir, GTAO_FIT_DEFAULT_TRAIN, GTAO_FIT_DEFAULT_TEST,
+    fit_split(ctx, out);
+    out->fit_request = (gtao_fit_request){rq->ao_references_dir, out->fit_train, out->fit_test,
                                           GTAO_FIT_DEFAULT_PRESET, GTAO_FIT_DSSIM};
     return gtao_params_study(&out->fit_request, &out->fit, e);
 }

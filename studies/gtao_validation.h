@@ -96,10 +96,12 @@ typedef struct {
     int heightfield_spp;  /* samples per pixel of the height-field references */
     int converged_frames; /* 24 (the talk's full cycle) or 6 at preview quality */
     int scene_count;
-    gtao_validation_scene scenes[GTAO_VALIDATION_MAX_SCENES]; /* builtin_study_scene_at order */
+    gtao_validation_scene scenes[GTAO_VALIDATION_MAX_SCENES]; /* study_scene_at order */
+    char convergence_scene[64]; /* GTAO_CONVERGENCE_SCENE, or a project's first scene */
     int convergence_count;
     gtao_convergence_row convergence[GTAO_CONVERGENCE_STEPS * GTAO_CONVERGENCE_SLICES]; /* by steps, then slices */
-    gtao_fit_request fit_request;
+    gtao_fit_request fit_request; /* train/test point into fit_train/fit_test */
+    char fit_train[GTAO_VALIDATION_MAX_SCENES * 48], fit_test[GTAO_VALIDATION_MAX_SCENES * 48];
     gtao_fit_result fit;
     gtao_shortcuts_result shortcuts; /* issue 25, items 6-8 (studies/gtao_shortcuts.h) */
 } gtao_validation_result;

@@ -18,8 +18,7 @@
 #include "raytracer/specular_occlusion_integrator.h"
 #include "realtime/gtao.h"
 #include "realtime/gtao_bent_horizons.h"
-#include "scene/builtin_scenes.h"
-#include "scene/scene_loaders.h"
+#include "studies/study_scenes.h"
 #include "studies/specular_occlusion_inputs.h"
 #include "studies/specular_occlusion_rankings.h"
 
@@ -478,22 +477,19 @@ static int score_roughnesses(so_state *st, const scene *s, const char *spec, con
 }
 
 /* One scene: its AO reference, GTAO on it, then the roughnesses. */
-static int run_scene(so_state *st, const builtin_scene *b, gt_error *e)
+static int run_scene(so_state *st, const study_scene_entry *b, gt_error *e)
 {
-    char spec[128];
-    snprintf(spec, sizeof spec, "builtin:%s", b->name);
+    const char *spec = b->spec;
     scene s;
-    if (scene_load(spec, &s, e) != 0)
-        return -1;
     camera cam;
+    if (study_scene_view(b, st->out->size, 0, &s, &cam, e) != 0)
+        return -1;
     image ao = {0}, gtao[SO_GTAO_INPUTS] = {{0}};
-    int rc = scene_choose_camera(&s, NULL, st->out->size, 0, &cam, e);
+    int rc = render(st, &s, spec, &cam, QUANTITY_AO, -1.0f, &ao, e);
     if (rc == 0)
-        rc = render(st, &s, spec, &cam, QUANTITY_AO, -1.0f, &ao, e);
+        rc = gtao_inputs(&ao, &cam, b->label, gtao, e);
     if (rc == 0)
-        rc = gtao_inputs(&ao, &cam, b->name, gtao, e);
-    if (rc == 0)
-        rc = score_roughnesses(st, &s, spec, &cam, &ao, gtao, b->name, e);
+        rc = score_roughnesses(st, &s, spec, &cam, &ao, gtao, b->label, e);
     image_free(&ao);
     for (int k = 0; k < SO_GTAO_INPUTS; ++k)
         image_free(&gtao[k]);
@@ -603,11 +599,11 @@ static int run(so_state *st, gt_error *e)
 {
     int rc = build_luts(st, e);
     setup_variants(st);
-    for (int i = 0; i < builtin_study_scene_count() && i < SO_STUDY_MAX_SCENES && rc == 0; ++i) {
-        const builtin_scene *b = builtin_study_scene_at(i);
+    for (int i = 0; i < study_scene_count(st->ctx) && i < SO_STUDY_MAX_SCENES && rc == 0; ++i) {
+        const study_scene_entry *b = study_scene_at(st->ctx, i);
         rc = run_scene(st, b, e);
         if (rc == 0)
-            snprintf(st->out->scenes[st->out->scene_count++], sizeof st->out->scenes[0], "%s", b->name);
+            snprintf(st->out->scenes[st->out->scene_count++], sizeof st->out->scenes[0], "%s", b->label);
     }
     if (rc == 0) {
         average(st, st->out);

@@ -172,7 +172,7 @@ typedef struct {
     int size, spp;  /* of every reference (square images) */
     int lut_points; /* random points of the interpolation error */
     int scene_count;
-    char scenes[SO_STUDY_MAX_SCENES][64]; /* builtin_study_scene_at order */
+    char scenes[SO_STUDY_MAX_SCENES][64]; /* study_scene_at order */
     double roughness[SO_STUDY_ROUGHNESSES];
     int lut_count;
     so_lut_row luts[SO_STUDY_MAX_LUTS];

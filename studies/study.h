@@ -15,10 +15,13 @@
 
 typedef enum { QUALITY_PREVIEW, QUALITY_PRODUCTION } study_quality;
 
+typedef struct study_scene_list study_scene_list; /* studies/study_scenes.h */
+
 typedef struct {
     const char *output_dir; /* everything a study writes goes below it */
     study_quality quality;
     int threads;            /* results do not depend on it */
+    const study_scene_list *scenes; /* the scenes the studies run over; NULL: the built-in ones */
 } study_context;
 
 /* "<output_dir>/<sub>" with the folder created. */

@@ -13,7 +13,7 @@
 #include "raytracer/heightfield_ao_integrator.h"
 #include "raytracer/reference_render.h"
 #include "realtime/vbao.h"
-#include "scene/builtin_scenes.h"
+#include "studies/study_scenes.h"
 #include "scene/scene_loaders.h"
 #include "studies/gtao_scene_refs.h"
 
@@ -151,8 +151,8 @@ static void split_scene(const scene_run *s, float thickness, vbao_split_row *x)
 static int render_thick(const study_context *ctx, const char *gtao_dir, int spp, float thickness, scene_run *s,
                         gt_error *e)
 {
-    char spec[128], path[4096];
-    snprintf(spec, sizeof spec, "builtin:%s", s->refs.scene);
+    char path[4096];
+    const char *spec = study_scene_spec(ctx, s->refs.scene);
     snprintf(path, sizeof path, "%s/%s_heightfield_thickness.exr", gtao_dir, s->refs.scene);
     scene sc;
     if (scene_load(spec, &sc, e) != 0)
@@ -192,7 +192,7 @@ static int study_scene(const study_context *ctx, const gtao_shortcuts_request *r
                        gt_error *e)
 {
     scene_run s = {.heuristic = (float)r->heuristic_thickness};
-    if (gtao_scene_refs_load(rq->ao_references_dir, rq->gtao_dir, builtin_study_scene_at(i)->name, &s.refs, e) != 0)
+    if (gtao_scene_refs_load(rq->ao_references_dir, rq->gtao_dir, study_scene_at(ctx, i)->label, &s.refs, e) != 0)
         return -1;
     int rc = run_scene(ctx, rq, r, &s, i, e);
     free(s.ao);
@@ -215,7 +215,7 @@ int vbao_study(const study_context *ctx, const gtao_shortcuts_request *rq, float
     memset(out, 0, sizeof *out);
     out->heightfield_spp = ctx->quality == QUALITY_PREVIEW ? 8 : 1024; /* preview: cheap, the split is noise-corrected */
     out->heuristic_thickness = heuristic;
-    int count = builtin_study_scene_count();
+    int count = study_scene_count(ctx);
     out->scene_count = count < VBAO_MAX_SCENES ? count : VBAO_MAX_SCENES;
     for (int i = 0; i < out->scene_count; ++i)
         if (study_scene(ctx, rq, out, i, e) != 0)

@@ -55,5 +55,17 @@ grep -v 'GTLAB-CHECK' "$work/console" | grep -q '"broken"' && pass || fail "cons
 browser --screenshot="$out/report_screenshot.png" --window-size=1280,2400 "file://$out/report.html" >/dev/null 2>&1
 [ -s "$out/report_screenshot.png" ] && pass || fail "no screenshot"
 echo "screenshot: $out/report_screenshot.png"
+# The same for a report made from a project file on a user's glTF: its
+# scene's previews load, and its label is in the report.
+out=$work/project
+mkdir -p "$out"
+"$gtlab" scene write sphere-on-plane -o "$out/user.glb" >/dev/null || fail "scene write"
+printf '{"scenes": [{"path": "user.glb", "label": "user-glb", "cameras": [{"gltf": 0}]}]}' >"$out/gtlab.json"
+expect_ok project all --project "$out/gtlab.json" --stages ao --quality preview --threads 2 -o "$out"
+check report.html
+strays=$(grep -v 'GTLAB-CHECK' "$work/console")
+[ -z "$strays" ] && pass || fail "the project's report.html logged to the console: $strays"
+grep -q 'GTLAB-CHECK: PASS.*images=[1-9]' "$work/console" && pass || fail "project: $(grep -o 'GTLAB-CHECK: [^"]*' "$work/console")"
+grep -q 'figures/ao_user-glb.png' "$out/report.html" && pass || fail "the project's report shows no preview of user-glb"
 echo "passed $passed, failed $failed"
 [ "$failed" -eq 0 ]

@@ -1,0 +1,63 @@
+#include "report/scene_list_section.h"
+
+#include <stdio.h>
+
+#include "report/report_table.h"
+
+/* "its own", "glTF camera 2", "glTF camera 'Top'" or the camera file. */
+static void camera_cell(const void *row, char *text, size_t size)
+{
+    const study_scene_entry *x = row;
+    if (x->camera_json[0])
+        snprintf(text, size, "%s", x->camera_json);
+    else if (x->gltf_camera_name[0])
+        snprintf(text, size, "glTF camera '%s'", x->gltf_camera_name);
+    else if (x->gltf_camera >= 0)
+        snprintf(text, size, "glTF camera %d", x->gltf_camera);
+    else
+        snprintf(text, size, "the scene's own");
+}
+
+static const report_column columns[] = {
+    REPORT_TEXT("label", "label", study_scene_entry, label),
+    REPORT_TEXT("scene", "scene", study_scene_entry, spec),
+    REPORT_CELL("camera", camera_cell),
+    REPORT_TEXT(NULL, "camera_json", study_scene_entry, camera_json),
+    REPORT_INT(NULL, "gltf_camera", study_scene_entry, gltf_camera),
+    REPORT_TEXT(NULL, "gltf_camera_name", study_scene_entry, gltf_camera_name),
+};
+
+/* A list of file names as a JSON array. */
+static cJSON *files_json(const char (*files)[STUDY_SCENE_PATH_MAX], int count)
+{
+    cJSON *a = cJSON_CreateArray();
+    for (int i = 0; i < count; ++i)
+        cJSON_AddItemToArray(a, cJSON_CreateString(files[i]));
+    return a;
+}
+
+void scene_names_json(cJSON *parent, const char (*names)[64], int count)
+{
+    cJSON *a = cJSON_AddArrayToObject(parent, "scenes");
+    for (int i = 0; i < count; ++i)
+        cJSON_AddItemToArray(a, cJSON_CreateString(names[i]));
+}
+
+void scene_list_section(report_context *ctx, const study_project *project, const char *path)
+{
+    if (!path)
+        return;
+    const study_scene_list *list = study_scenes_of(&ctx->study);
+    cJSON *json = cJSON_AddObjectToObject(ctx->summary, "project");
+    cJSON_AddStringToObject(json, "file", path);
+    cJSON *rows = cJSON_AddArrayToObject(json, "scenes");
+    report_paragraph(ctx->doc, "The scene-driven sections run on the %d scene view%s of the project file %s "
+                     "(the other sections keep their purpose-built scenes):", list->count,
+                     list->count == 1 ? "" : "s", path);
+    report_rows(ctx->doc, rows, columns, (int)(sizeof columns / sizeof columns[0]), list->scenes,
+                sizeof list->scenes[0], list->count);
+    cJSON_AddItemToObject(json, "shaders", files_json((const char(*)[STUDY_SCENE_PATH_MAX])project->shaders,
+                                                      project->shader_count));
+    cJSON_AddItemToObject(json, "plugins", files_json((const char(*)[STUDY_SCENE_PATH_MAX])project->plugins,
+                                                      project->plugin_count));
+}

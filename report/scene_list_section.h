@@ -1,0 +1,20 @@
+/* The scenes of a run (studies/study_scenes.h) at the top of the report:
+ * when `gtlab all --project` gave the user's scenes, a table of each entry's
+ * label, scene file and camera, and in summary.json "project" (the file, its
+ * scenes, and the shaders and plug-ins it lists). The built-in scenes need
+ * no table: each section names them. */
+#ifndef GTLAB_REPORT_SCENE_LIST_SECTION_H
+#define GTLAB_REPORT_SCENE_LIST_SECTION_H
+
+#include "report/report_context.h"
+#include "studies/study_project.h"
+
+/* parent's "scenes": the names of the scenes a section averaged over, so
+ * that summary.json says which scenes (a project's, or the built-in ones)
+ * stand behind every section. */
+void scene_names_json(cJSON *parent, const char (*names)[64], int count);
+
+/* Nothing when path is NULL (no project file). */
+void scene_list_section(report_context *ctx, const study_project *project, const char *path);
+
+#endif
