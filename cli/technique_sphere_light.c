@@ -102,21 +102,7 @@ static int bench_sphere_light(int argc, char **argv)
     sphere_cost_study(count, (int)repeats, &cost);
     if (isnan(cost.ns_karis))
         return cli_failf("bench sphere-light", "out of memory for %ld configurations", count);
-    printf("GetNoHSquared, %ld configurations (R inside the light in %.1f%%), best of %ld passes\n", count,
-           100.0 * cost.share_early_out, repeats);
-    printf("%-24s %14s %14s\n", "", "Karis", "Decima (+1 step)");
-    if (cost.instructions_karis > 0 && cost.instructions_decima > 0)
-        printf("%-24s %14d %14d   %+.0f%% (calls inside: %d, %d)\n", "x86-64 instructions", cost.instructions_karis,
-               cost.instructions_decima,
-               100.0 * (cost.instructions_decima - cost.instructions_karis) / cost.instructions_karis, cost.calls_karis,
-               cost.calls_decima);
-    else
-        printf("%-24s %14s %14s   (objdump not found)\n", "x86-64 instructions", "n/a", "n/a");
-    printf("%-24s %14.2f %14.2f   %+.0f%%\n", "ns per call", cost.ns_karis, cost.ns_decima,
-           100.0 * (cost.ns_decima - cost.ns_karis) / cost.ns_karis);
-    printf("the talk: +87%% GPU cycles\n");
-    printf("%-24s %14.2f %14.2f %14.2f (LTC, 16^2 table, 8-gon)\n", "ns per pixel, specular", cost.ns_karis_full,
-           cost.ns_decima_full, cost.ns_ltc);
+    sphere_cost_print(stdout, &cost, count, (int)repeats);
     return EXIT_OK;
 }
 

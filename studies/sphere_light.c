@@ -362,6 +362,25 @@ static void time_full_specular(long count, int repeats, sphere_cost *out, volati
     free(in);
 }
 
+void sphere_cost_print(FILE *out, const sphere_cost *cost, long count, int repeats)
+{
+    fprintf(out, "GetNoHSquared, %ld configurations (R inside the light in %.1f%%), best of %d passes\n", count,
+            100.0 * cost->share_early_out, repeats);
+    fprintf(out, "%-24s %14s %14s\n", "", "Karis", "Decima (+1 step)");
+    if (cost->instructions_karis > 0 && cost->instructions_decima > 0)
+        fprintf(out, "%-24s %14d %14d   %+.0f%% (calls inside: %d, %d)\n", "x86-64 instructions",
+                cost->instructions_karis, cost->instructions_decima,
+                100.0 * (cost->instructions_decima - cost->instructions_karis) / cost->instructions_karis,
+                cost->calls_karis, cost->calls_decima);
+    else
+        fprintf(out, "%-24s %14s %14s   (objdump not found)\n", "x86-64 instructions", "n/a", "n/a");
+    fprintf(out, "%-24s %14.2f %14.2f   %+.0f%%\n", "ns per call", cost->ns_karis, cost->ns_decima,
+            100.0 * (cost->ns_decima - cost->ns_karis) / cost->ns_karis);
+    fprintf(out, "the talk: +87%% GPU cycles\n");
+    fprintf(out, "%-24s %14.2f %14.2f %14.2f (LTC, 16^2 table, 8-gon)\n", "ns per pixel, specular",
+            cost->ns_karis_full, cost->ns_decima_full, cost->ns_ltc);
+}
+
 void sphere_cost_study(long count, int repeats, sphere_cost *out)
 {
     noh_input *in = malloc((size_t)count * sizeof *in);

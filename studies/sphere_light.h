@@ -17,6 +17,7 @@
 #define GTLAB_STUDIES_SPHERE_LIGHT_H
 
 #include <stdint.h>
+#include <stdio.h>
 
 #include "fitters/fit_sphere_light_outputs.h"
 #include "luts/ltc_ggx.h"
@@ -156,6 +157,9 @@ typedef struct {
 } sphere_cost;
 
 void sphere_cost_study(long count, int repeats, sphere_cost *out);
+/* The cost as `gtlab bench sphere-light` prints it: instructions, ns per
+ * call and per pixel, beside the talk's +87%. */
+void sphere_cost_print(FILE *out, const sphere_cost *cost, long count, int repeats);
 
 /* ---- Near the terminator (issue 26, item 8) ---- */
 
