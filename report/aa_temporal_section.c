@@ -113,7 +113,7 @@ static void add_headline(report *doc, const aa_temporal_row *const rows[4], cons
     const cluster_mean *d = &rows[second]->dssim_minus[ids[best]];
     char over[96];
     snprintf(over, sizeof over, "per-pixel DSSIM over %d 8x8 blocks, %d frames", d->blocks, rows[second]->frames);
-    headline_from_difference(&h, d->mean, d->se, over);
+    headline_from_paired_cases(&h, d->mean, d->se, d->blocks, over);
     report_add_headline(doc, &h);
 }
 

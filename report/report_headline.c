@@ -68,7 +68,7 @@ static void pair_indices(report_headline *h, const double *errors, int stride, i
         if (!isnan(errors[second * stride + k]) && !isnan(errors[best * stride + k]))
             diff[n++] = errors[second * stride + k] - errors[best * stride + k];
     sample_mean_se(diff, n, &d, &s);
-    headline_from_difference(h, d, s, over);
+    headline_from_paired_cases(h, d, s, n, over);
 }
 
 int headline_rank_paired(report_headline *h, int count, const char *const *labels, const double *errors, int cases,
@@ -119,6 +119,17 @@ void headline_from_noise_floor(report_headline *h, double floor)
     h->significance = gap > floor ? HEADLINE_ABOVE_NOISE_FLOOR : HEADLINE_NOT_SIGNIFICANT;
     snprintf(h->basis, sizeof h->basis, "gap %.2g %s the references' noise floor %.2g", gap,
              gap > floor ? "above" : "below", floor);
+}
+
+void headline_from_paired_cases(report_headline *h, double d, double s, int cases, const char *over)
+{
+    headline_from_difference(h, d, s, over);
+    if (h->significance == HEADLINE_NOT_COMPUTED)
+        return;
+    double t = student_t_975(cases - 1);
+    h->significance = fabs(d) > t * s ? HEADLINE_SIGNIFICANT : HEADLINE_NOT_SIGNIFICANT;
+    size_t k = strlen(h->basis);
+    snprintf(h->basis + k, sizeof h->basis - k, "; t(%d) = %.3g", cases - 1, t);
 }
 
 const char *headline_significance_name(headline_significance s)

@@ -59,6 +59,12 @@ int headline_rank_paired(report_headline *h, int count, const char *const *label
 void headline_pair_cases(report_headline *h, int count, const char *const *labels, const double *errors, int stride,
                          int cases, const char *over);
 
+/* The verdict of the mean d of `cases` paired differences with its own
+ * standard error s: |d| > t s with Student's t quantile for cases - 1
+ * degrees of freedom (core/sample_mean.h), not the normal 1.96, so a few
+ * cases are not over-trusted (3 scenes: 4.30). */
+void headline_from_paired_cases(report_headline *h, double d, double s, int cases, const char *over);
+
 /* The verdict of a paired difference d +- s (its mean and standard error);
  * `over` says what it is paired over. A NaN s leaves it not computed. */
 void headline_from_difference(report_headline *h, double d, double s, const char *over);

@@ -108,6 +108,6 @@ void sphere_ltc_headline(report *doc, const sphere_light_result *r)
     paired_gap(r, label_index(labels, METHODS, h.runner_up), label_index(labels, METHODS, h.best), &d, &se);
     char over[64];
     snprintf(over, sizeof over, "paired over %d held-out configurations", r->fit_settings.test);
-    headline_from_difference(&h, d, se, over);
+    headline_from_paired_cases(&h, d, se, r->fit_settings.test, over);
     report_add_headline(doc, &h);
 }

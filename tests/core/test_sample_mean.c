@@ -16,5 +16,12 @@ int main(void)
     CHECK(fabs(se - sqrt(1.0 / 3.0)) < 1e-9); /* s^2 = 1 */
     sample_mean_se(x, 1, &mean, &se);
     CHECK(mean == 1.0 && isnan(se));
+    /* Student's t: the table's ends, the approximation beyond it against
+     * t(40) = 2.021 and t(120) = 1.980 (Abramowitz and Stegun, table 26.10),
+     * decreasing towards the normal quantile. */
+    CHECK(student_t_975(2) == 4.303 && student_t_975(30) == 2.042 && isinf(student_t_975(0)));
+    CHECK(fabs(student_t_975(40) - 2.021) < 1e-3 && fabs(student_t_975(120) - 1.980) < 1e-3);
+    for (int dof = 1; dof < 200; ++dof)
+        CHECK(student_t_975(dof + 1) < student_t_975(dof) && student_t_975(dof) > 1.959963984540054);
     return check_report("core_sample_mean");
 }

@@ -171,7 +171,10 @@ static void test_headline_verdicts(void)
  * and c (2); ties keep the earlier, so a then c; c - a over the cases both
  * have = (-0.5, 0.6, 1.9): mean 2/3, s.e. sqrt(1.4433 / 3) = 0.6936 ->
  * not significant. With c far behind, b is the runner-up, and b - a =
- * (1, 0.5, 0.5) is 2/3 +- 1/6: significant. */
+ * (1, 0.5, 0.5) is 2/3 +- 1/6: 4.0 standard errors, significant by the
+ * normal 1.96 but not by Student's t with 2 degrees of freedom (4.303),
+ * which the paired verdict uses; b = (2, 2.6, 3.55, 9) makes it
+ * (1, 0.6, 0.55), 0.7167 +- 0.1424, 5.03 standard errors: significant. */
 static void test_headline_paired(void)
 {
     report_headline h = {.topic = "t"};
@@ -182,7 +185,9 @@ static void test_headline_paired(void)
     CHECK(h.significance == HEADLINE_NOT_SIGNIFICANT && strstr(h.basis, "+0.6667 +- 0.69"));
     double far[12] = {1, 2, 3, NAN, 2, 2.5, 3.5, 9, 10.5, 12.6, 14.9, 40};
     CHECK(headline_rank_paired(&h, 3, labels, far, 4, "x") == 0 && !strcmp(h.runner_up, "b"));
-    CHECK(h.significance == HEADLINE_SIGNIFICANT);
+    CHECK(h.significance == HEADLINE_NOT_SIGNIFICANT && strstr(h.basis, "t(2) = 4.3"));
+    far[5] = 2.6, far[6] = 3.55;
+    CHECK(headline_rank_paired(&h, 3, labels, far, 4, "x") == 0 && h.significance == HEADLINE_SIGNIFICANT);
     double one[4] = {1, NAN, NAN, NAN};
     CHECK(headline_rank_paired(&h, 1, labels, one, 4, "x") == -1);
 }
