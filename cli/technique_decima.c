@@ -126,12 +126,12 @@ static int bench_fog(int argc, char **argv)
     int status;
     if (cli_options_parse(&command, (void *[]){&threads}, argc, argv, &status) != 0)
         return status;
-    double rays, ns[HEIGHT_FOG_MODELS];
+    double rays;
+    height_fog_timing t;
     gt_error e;
-    if (height_fog_bench((int)threads, &rays, ns, &e) != 0)
+    if (height_fog_bench((int)threads, &rays, &t, &e) != 0)
         return cli_fail(&e);
-    printf("reference: %.3g rays/s\nanalytic: %.2f ns/pixel published, %.2f clamp fixed, %.2f sun attenuated, "
-           "%.2f sky attenuated\n", rays, ns[0], ns[1], ns[2], ns[3]);
+    height_fog_bench_print(stdout, rays, &t);
     return EXIT_OK;
 }
 

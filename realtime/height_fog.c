@@ -4,45 +4,47 @@
 
 #include <math.h>
 
-#define PI_F 3.14159265358979323846f
+#include "realtime/height_fog_published.h"
 
-static float rayleigh_f(float mu)
+void height_fog_uniforms_init(const height_fog_param *p, height_fog_uniforms *u)
 {
-    return 3.0f / 4.0f * 1.0f / (4.0f * PI_F) * (1.0f + mu * mu);
-}
-
-/* pow(d, 1.5) as d sqrt(d): the same function (HLSL compilers expand pow
- * into exp2(1.5 log2(d)) anyway), without a general powf per pixel. */
-static float mie_f(float mu, float g)
-{
-    float d = 1.0f + g * g - 2.0f * g * mu;
-    return (1.0f - g * g) / ((4.0f * PI_F) * (d * sqrtf(d)));
+    float g = (float)p->mie_g, ms = (float)p->beta_ms;
+    u->scale_height = (float)p->scale_height;
+    for (int c = 0; c < 3; ++c) {
+        float rs = (float)p->beta_rs[c];
+        u->beta_t[c] = rs + (ms + (float)p->beta_ma);
+        u->rayleigh_weight[c] = (float)p->albedo_r[c] * rs;
+        u->mie_weight[c] = (float)p->albedo_m[c] * ms;
+        u->sun[c] = (float)p->sun_color[c];
+        u->ambient[c] = (float)p->amb_color[c] * (rs + ms);
+    }
+    u->hg_numerator = 1.0f - g * g;
+    u->hg_base = 1.0f + g * g;
+    u->hg_slope = 2.0f * g;
 }
 
 /* (E_sun S_sun(mu) + L_amb beta_s) / beta_t per channel: the source term
- * over extinction, its sun part E_sun S_sun(mu) / beta_t, and beta_t. */
-static void source_over_extinction(const height_fog_param *p, float sov, float source[3], float sun[3],
-                                   float beta_t[3])
+ * over extinction, and its sun part E_sun S_sun(mu) / beta_t. */
+static void source_over_extinction(const height_fog_uniforms *u, float sov, float source[3], float sun[3])
 {
-    float pr = rayleigh_f(sov), pm = mie_f(sov, (float)p->mie_g);
+    float pr = height_fog_rayleigh(sov), pm = height_fog_henyey_greenstein(u, sov);
     for (int c = 0; c < 3; ++c) {
-        float rs = (float)p->beta_rs[c], ms = (float)p->beta_ms;
-        beta_t[c] = rs + (ms + (float)p->beta_ma);
-        float single = (float)p->albedo_r[c] * rs * pr + (float)p->albedo_m[c] * ms * pm;
-        source[c] = ((float)p->sun_color[c] * single + (float)p->amb_color[c] * (rs + ms)) / beta_t[c];
-        sun[c] = (float)p->sun_color[c] * single / beta_t[c];
+        float single = height_fog_single(u, c, pr, pm);
+        source[c] = height_fog_source(u, c, single);
+        sun[c] = u->sun[c] * single / u->beta_t[c];
     }
 }
 
 void height_fog_published(const height_fog_param *p, float distance, float camera_y, float world_y, float sov,
                           float inscatter[3], float transmittance[3])
 {
-    float h = (float)p->scale_height, source[3], sun[3], beta_t[3];
-    float t = fmaxf(1e-2f, (camera_y - world_y) / h);
-    t = (1.0f - expf(-t)) / t * expf(-world_y / h);
-    source_over_extinction(p, sov, source, sun, beta_t);
+    height_fog_uniforms u;
+    height_fog_uniforms_init(p, &u);
+    float source[3], sun[3];
+    float t = height_fog_published_density(&u, height_fog_clamped_t(&u, camera_y, world_y), world_y);
+    source_over_extinction(&u, sov, source, sun);
     for (int c = 0; c < 3; ++c) {
-        transmittance[c] = expf(-distance * t * beta_t[c]);
+        transmittance[c] = expf(-distance * t * u.beta_t[c]);
         inscatter[c] = source[c] * (1.0f - transmittance[c]);
     }
 }
@@ -84,10 +86,13 @@ static float attenuated_sky_integral(float a, float view_y, float tau)
 void height_fog_corrected(const height_fog_param *p, height_fog_correction level, float distance, float camera_y,
                           float world_y, float sov, float inscatter[3], float transmittance[3])
 {
-    float h = (float)p->scale_height, source[3], sun[3], beta_t[3];
+    height_fog_uniforms u;
+    height_fog_uniforms_init(p, &u);
+    float h = u.scale_height, source[3], sun[3];
+    const float *beta_t = u.beta_t;
     float delta = world_y - camera_y, low = fminf(camera_y, world_y);
     float density = expf(-low / h) * mean_factor_f(fabsf(delta) / h); /* mean rho along the ray */
-    source_over_extinction(p, sov, source, sun, beta_t);
+    source_over_extinction(&u, sov, source, sun);
     float mu_s = p->sun_direction.y, view_y = distance > 0.0f ? delta / distance : 0.0f;
     float column = h * expf(-camera_y / h), m = mu_s > 0.0f ? 1.0f - view_y / mu_s : 0.0f;
     for (int c = 0; c < 3; ++c) {
@@ -103,7 +108,7 @@ void height_fog_corrected(const height_fog_param *p, height_fog_correction level
             inscatter[c] += sun[c] * (attenuated - -expm1f(-tau));
         }
         if (level >= HEIGHT_FOG_ATTENUATE_SKY) {
-            float ambient = (float)p->amb_color[c] * ((float)p->beta_rs[c] + (float)p->beta_ms) / beta_t[c];
+            float ambient = u.ambient[c] / beta_t[c];
             inscatter[c] += ambient * (attenuated_sky_integral(beta_t[c] * column, view_y, tau) - -expm1f(-tau));
         }
     }

@@ -58,6 +58,8 @@
 #ifndef GTLAB_REALTIME_HEIGHT_FOG_H
 #define GTLAB_REALTIME_HEIGHT_FOG_H
 
+#include <stddef.h>
+
 #include "core/height_fog_medium.h"
 
 /* The talk's HeightFog(): the argument order and the max(1e-2, ...) clamp
@@ -65,6 +67,36 @@
  * view_dir). The sun's direction in p is not read. */
 void height_fog_published(const height_fog_param *p, float distance, float camera_y, float world_y, float sov,
                           float inscatter[3], float transmittance[3]);
+
+/* The published function's per-frame constants in float, as a shader's
+ * constant buffer holds them (the per-pixel work is then what a pixel
+ * shader does): beta_t, the phase weights and the ambient term per channel,
+ * and the Henyey-Greenstein terms of g. Evaluating through them gives the
+ * bits of evaluating from height_fog_param. */
+typedef struct {
+    float scale_height;
+    float beta_t[3];          /* beta_Rs + (beta_Ms + beta_Ma) */
+    float rayleigh_weight[3]; /* albedo_R beta_Rs: multiplies the Rayleigh phase */
+    float mie_weight[3];      /* albedo_M beta_Ms: multiplies the HG phase */
+    float sun[3];             /* E_sun */
+    float ambient[3];         /* L_amb (beta_Rs + beta_Ms) */
+    float hg_numerator;       /* 1 - g^2 */
+    float hg_base, hg_slope;  /* 1 + g^2 and 2 g: the HG denominator's base 1 + g^2 - 2 g mu */
+} height_fog_uniforms;
+
+void height_fog_uniforms_init(const height_fog_param *p, height_fog_uniforms *u);
+
+/* The published HeightFog() for n pixels seen from one camera altitude, in
+ * planes (inscatter[c][i], transmittance[c][i]), as a CPU port runs it over
+ * an image: the arithmetic of height_fog_published, in a loop the compiler
+ * vectorises, with glibc's vector expf (libmvec, within 4 ulp: glibc manual,
+ * "Errors in Math Functions") where the compiler supports it, the scalar
+ * expf elsewhere. So the result is height_fog_published's within expf's
+ * error propagated (the bound is tests/realtime/test_height_fog_batch.c's),
+ * and the same bits for any split of the n pixels into calls. */
+void height_fog_published_batch(const height_fog_uniforms *u, float camera_y, size_t n, const float *distance,
+                                const float *world_y, const float *sov, float *const inscatter[3],
+                                float *const transmittance[3]);
 
 /* How much of the correction above is applied; each level includes the ones before. */
 typedef enum {

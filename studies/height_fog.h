@@ -22,6 +22,8 @@
 #ifndef GTLAB_STUDIES_HEIGHT_FOG_H
 #define GTLAB_STUDIES_HEIGHT_FOG_H
 
+#include <stdio.h>
+
 #include "core/error.h"
 #include "core/image.h"
 #include "studies/aerial_perspective.h"
@@ -65,11 +67,19 @@ typedef struct {
     double corrected_depth_error, corrected_l_error;
 } height_fog_regime;
 
+/* What the analytic models cost in C, one thread: ns per pixel of each
+ * model one pixel at a time, and of the published one batched over rows
+ * (height_fog_published_batch, vectorised), as a CPU port runs it. */
+typedef struct {
+    double ns_per_pixel[HEIGHT_FOG_MODELS];
+    double published_batch_ns_per_pixel;
+} height_fog_timing;
+
 typedef struct {
     height_fog_request request;
     height_fog_case cases[HEIGHT_FOG_CASES];
     height_fog_regime regimes[HEIGHT_FOG_REGIMES];
-    double analytic_ns_per_pixel[HEIGHT_FOG_MODELS];
+    height_fog_timing analytic_cost;
     aerial_perspective_result aerial;
 } height_fog_result;
 
@@ -77,8 +87,8 @@ height_fog_request height_fog_default_request(study_quality quality);
 int height_fog_study(const study_context *ctx, const height_fog_request *rq, height_fog_result *out, gt_error *e);
 /* The regime table alone (no rendering). */
 void height_fog_regimes(height_fog_regime regimes[HEIGHT_FOG_REGIMES]);
-/* ns per pixel of each analytic model over n pixels (the bench). */
-void height_fog_time_models(int n, double ns_per_pixel[HEIGHT_FOG_MODELS]);
+/* The analytic models' cost over n pixels (the bench). */
+void height_fog_time_models(int n, height_fog_timing *cost);
 
 /* `gtlab approx height-fog`: model m's fog.L.R/G/B and fog.T.R/G/B for the
  * surfaces of `gbuffer` (P.X/Y/Z and mask.A, e.g. a `render fog` or
@@ -89,6 +99,8 @@ int height_fog_approx_image(const image *gbuffer, const char *what, const char *
                             height_fog_model m, image *out, gt_error *e);
 /* `gtlab bench fog`: the reference's rays per second (multiple scattering,
  * dense fog, the terrain at 128x96) and the models' ns per pixel. */
-int height_fog_bench(int threads, double *rays_per_second, double ns_per_pixel[HEIGHT_FOG_MODELS], gt_error *e);
+int height_fog_bench(int threads, double *rays_per_second, height_fog_timing *cost, gt_error *e);
+/* The bench's lines. */
+void height_fog_bench_print(FILE *f, double rays_per_second, const height_fog_timing *cost);
 
 #endif

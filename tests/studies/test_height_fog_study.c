@@ -49,7 +49,8 @@ int main(void)
     CHECK(r.regimes[4].published_depth_error > 0.9);                /* up: most of the depth lost */
     CHECK(r.aerial.case_count == 2); /* the combination images ran (tests/studies/test_aerial_perspective_study.c) */
     for (int m = 0; m < HEIGHT_FOG_MODELS; ++m)
-        CHECK(r.analytic_ns_per_pixel[m] > 0.0 && r.analytic_ns_per_pixel[m] < 1e4);
+        CHECK(r.analytic_cost.ns_per_pixel[m] > 0.0 && r.analytic_cost.ns_per_pixel[m] < 1e4);
+    CHECK(r.analytic_cost.published_batch_ns_per_pixel > 0.0 && r.analytic_cost.published_batch_ns_per_pixel < 1e4);
     /* The error map of the dense, low-sun case is the published model minus the reference. */
     char path[4096];
     snprintf(path, sizeof path, "%s/%s/dense_sun05.exr", check_tmp_dir(), HEIGHT_FOG_DIR);
