@@ -26,14 +26,7 @@
 #include "luts/atmosphere_model.h"
 #include "luts/atmosphere_scattering.h"
 #include "tests/check.h"
-
-static atmosphere_model homogeneous(void)
-{
-    atmosphere_model m = atmosphere_model_default();
-    for (int w = 0; w < ATMOSPHERE_WEATHERS; ++w)
-        m.weathers[w].rayleigh_scale_height = m.weathers[w].mie_scale_height = 1e13;
-    return m;
-}
+#include "tests/luts/atmosphere_test_models.h"
 
 static void test_homogeneous_transmittance(const atmosphere_solution *s)
 {
@@ -201,7 +194,7 @@ static void test_bad_input(void)
 
 int main(void)
 {
-    atmosphere_model hm = homogeneous(), dm = atmosphere_model_default();
+    atmosphere_model hm = atmosphere_model_homogeneous(), dm = atmosphere_model_default();
     atmosphere_solution h, one, two;
     CHECK(atmosphere_solve(&hm, 0.3, 2, &h) == 0);
     test_homogeneous_transmittance(&h);

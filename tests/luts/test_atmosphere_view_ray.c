@@ -24,6 +24,7 @@
 #include "luts/atmosphere_model.h"
 #include "luts/atmosphere_scattering.h"
 #include "tests/check.h"
+#include "tests/luts/atmosphere_test_models.h"
 
 static void three_forms(double x, void *ctx, double *v)
 {
@@ -46,14 +47,6 @@ static void test_vector_rule(void)
     CHECK_NEAR(v[2], atan(5.0), 1e-12);
     CHECK(fabs(v[2] - atan(5.0)) <= err[2] + 1e-14); /* the estimate bounds the error */
     CHECK_NEAR(v[2], quadrature_gk15_split(arctan_form, NULL, points, 3, 1e-12, NULL), 1e-12);
-}
-
-static atmosphere_model homogeneous(void)
-{
-    atmosphere_model m = atmosphere_model_default();
-    for (int w = 0; w < ATMOSPHERE_WEATHERS; ++w)
-        m.weathers[w].rayleigh_scale_height = m.weathers[w].mie_scale_height = 1e13;
-    return m;
 }
 
 static void test_homogeneous_segments(const atmosphere_solution *s)
@@ -126,7 +119,7 @@ static void test_difference_of_two_rays(const atmosphere_solution *s)
 int main(void)
 {
     test_vector_rule();
-    atmosphere_model hm = homogeneous(), dm = atmosphere_model_default();
+    atmosphere_model hm = atmosphere_model_homogeneous(), dm = atmosphere_model_default();
     atmosphere_solution h, s;
     CHECK(atmosphere_solve(&hm, 0.3, 2, &h) == 0);
     test_homogeneous_segments(&h);
