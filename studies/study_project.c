@@ -358,6 +358,7 @@ void study_project_apply(const study_project *p, study_context *ctx, const char 
 {
     const int given = p && p->quality >= 0;
     ctx->scenes = p && p->scenes.count ? &p->scenes : NULL;
+    ctx->project = p;
     if ((int)ctx->quality < 0)
         ctx->quality = given ? (study_quality)p->quality : QUALITY_PREVIEW;
     if (!ctx->output_dir)

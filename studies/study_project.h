@@ -15,7 +15,7 @@
 
 enum { PROJECT_MAX_FILES = 16, PROJECT_STAGES_MAX = 512 };
 
-typedef struct {
+typedef struct study_project {
     study_scene_list scenes;        /* one entry per scene and camera */
     char stages[PROJECT_STAGES_MAX]; /* comma-separated stage keys; "" when the file names none */
     int quality;                    /* a study_quality, or -1 when the file names none */
