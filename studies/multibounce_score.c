@@ -216,6 +216,10 @@ static void take_means(multibounce_score_result *out)
 int multibounce_score(const multibounce_score_request *rq, multibounce_score_result *out, gt_error *e)
 {
     memset(out, 0, sizeof *out);
+    if (rq->quantity && strcmp(rq->quantity, "multibounce") != 0)
+        return gt_error_set(e, "--quantity", "'%s': gtlab scores multibounce functions (so far)", rq->quantity);
+    if (rq->function_count + rq->plugin_count == 0)
+        return gt_error_set(e, "shader score", "nothing to score: give --function F.glsl|F.hlsl or --plugin LIB.so");
     if (rq->reference_count < 1 || rq->reference_count > MB_SCORE_MAX_FILES)
         return gt_error_set(e, "shader score", "%d references: 1 to %d multi-bounce renders expected",
                             rq->reference_count, MB_SCORE_MAX_FILES);
@@ -303,7 +307,7 @@ int multibounce_score_project(const study_context *ctx, multibounce_score_result
         functions[i] = p->shaders[i];
     for (int i = 0; i < p->plugin_count; ++i)
         plugins[i] = p->plugins[i];
-    multibounce_score_request rq = {references, count, functions, p->shader_count, plugins, p->plugin_count, NULL,
-                                    10.0};
+    multibounce_score_request rq = {"multibounce", references, count,  functions, p->shader_count,
+                                    plugins,       p->plugin_count, NULL, 10.0};
     return multibounce_score(&rq, out, e);
 }

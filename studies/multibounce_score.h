@@ -28,6 +28,7 @@ enum {
 };
 
 typedef struct {
+    const char *quantity;          /* "multibounce" (NULL: the same); named "--quantity" in errors */
     const char *const *references; /* EXRs of `gtlab render multibounce` */
     int reference_count;
     const char *const *functions;  /* GLSL/HLSL function files */
