@@ -49,6 +49,10 @@ expect_error quantity "--quantity: 'sphere-light'" "" -- shader score --quantity
 "$gtlab" render ao --scene builtin:corner --width 16 --height 16 --spp 4 -o "$work/ao.exr" 2>/dev/null || fail "render ao"
 expect_error not-multibounce "ao.exr: no multibounce channels" "" -- shader score --plugin "$plugin" "$work/ao.exr"
 
+# A bare file name is the file in the working folder (dlopen alone would search the library path).
+cp "$plugin" "$work/libbare.so"
+(cd "$work" && "$gtlab" shader score --plugin libbare.so "$ref" >/dev/null 2>&1) && pass || fail "--plugin libbare.so in the working folder"
+
 # The project's lists: the section beside gtlab's variants (the multibounce
 # stage's references from an earlier run into the same folder).
 cp "$plugin" "$work/libmine.so"
