@@ -54,16 +54,35 @@ char *gpu_function_wrap(const char *text, const char *path, gt_error *e)
 }
 
 /* A NaN found by the dispatch ("... NaN in output outputs at element I") as
- * the sample that gave it. */
+ * the sample that gave it: -1 with e rewritten, 0 for any other error. */
 static int name_nan(const char *path, const float *in, size_t offset, gt_error *e)
 {
     const char *at = strstr(e->message, "NaN in output");
     const char *element = at ? strstr(at, "at element ") : NULL;
     if (!element)
-        return -1;
+        return 0;
     size_t i = offset + (size_t)strtoull(element + strlen("at element "), NULL, 10);
     return gt_error_set(e, path, "%s(%.9g, %.9g) is NaN", GPU_FUNCTION_MULTIBOUNCE, (double)in[2 * i],
                         (double)in[2 * i + 1]);
+}
+
+/* A compile error shaderc places past the file's last line is in the
+ * wrapper's call: the file's function does not have the contract's signature. */
+static void name_signature_error(const char *text, const char *path, gt_error *e)
+{
+    size_t n = strlen(path);
+    if (strncmp(e->message, path, n) != 0 || e->message[n] != ':')
+        return;
+    char *end;
+    long line = strtol(e->message + n + 1, &end, 10), lines = 1;
+    for (const char *c = text; *c; ++c)
+        lines += *c == '\n' && c[1] != '\0';
+    if (end == e->message + n + 1 || strncmp(end, ": error: ", 9) != 0 || line <= lines)
+        return;
+    char shaderc[sizeof e->message];
+    snprintf(shaderc, sizeof shaderc, "%s", end + 9);
+    gt_error_set(e, path, "gtlab cannot call float %s(float visibility, float albedo) (the contract's signature, "
+                 "docs/shaders.md): %s", GPU_FUNCTION_MULTIBOUNCE, shaderc);
 }
 
 int gpu_function_eval(gpu_device *device, const char *text, const char *path, const float *in, float *out,
@@ -77,8 +96,8 @@ int gpu_function_eval(gpu_device *device, const char *text, const char *path, co
     for (size_t first = 0; first < count && rc == 0; first += chunk) {
         size_t n = count - first < chunk ? count - first : chunk;
         rc = gpu_sample_map(device, source, path, NULL, in + 2 * first, 2, out + first, 1, n, timeout, e);
-        if (rc != 0)
-            name_nan(path, in, first, e);
+        if (rc != 0 && name_nan(path, in, first, e) == 0)
+            name_signature_error(text, path, e);
     }
     free(source);
     return rc;

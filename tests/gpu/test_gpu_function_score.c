@@ -122,6 +122,9 @@ static void test_errors(const char *reference)
                  "{\n    return visibilty;\n}\n", ":4: error: 'visibilty' : undeclared identifier");
     expect_error(reference, "broken.hlsl", "// line 1\n\nfloat gtlab_multibounce(float visibility, float albedo)\n"
                  "{\n    return visibilty;\n}\n", ":5: error: ");
+    expect_error(reference, "signature.hlsl", "float gtlab_multibounce(float v) { return v; }\n",
+                 ": gtlab cannot call float gtlab_multibounce(float visibility, float albedo) (the contract's "
+                 "signature, docs/shaders.md): 'gtlab_multibounce' : no matching overloaded function found");
     expect_error(reference, "none.glsl", "float f(float x) { return x; }\n", ": defines no gtlab_multibounce");
     expect_error(reference, "version.glsl", "#version 450\nfloat gtlab_multibounce(float v, float a) { return v; }\n",
                  ": a function file has no #version line");
