@@ -39,6 +39,9 @@ PY
 printf '// mine\nfloat gtlab_multibounce(float visibility, float albedo)\n{\n    return visibilty;\n}\n' >"$work/broken.glsl"
 expect_error compile-error "broken.glsl:4: error: 'visibilty' : undeclared identifier" "" -- \
   shader score --function "$work/broken.glsl" "$ref"
+printf 'float gtlab_multibounce(float v) { return v; }\n' >"$work/signature.glsl"
+expect_error signature "signature.glsl: gtlab cannot call float gtlab_multibounce(float visibility, float albedo)" "" -- \
+  shader score --function "$work/signature.glsl" "$ref"
 printf 'float f(float x) { return x; }\n' >"$work/none.hlsl"
 expect_error no-function "none.hlsl: defines no gtlab_multibounce" "" -- shader score --function "$work/none.hlsl" "$ref"
 printf 'float gtlab_multibounce(float v, float a) { return v > 0.5 ? uintBitsToFloat(0x7fc00000u) : v; }\n' >"$work/nan.glsl"
