@@ -61,8 +61,10 @@ static int load_function(const multibounce_score_request *rq, variants *vs, vari
     if (gpu_read_source(v->path, &v->text, e) != 0)
         return -1;
     char *wrapped = gpu_function_wrap(v->text, v->path, e);
+    if (!wrapped)
+        return -1;
     free(wrapped);
-    if (!wrapped || (!vs->device && gpu_device_open(rq->device, &vs->device, e) != 0))
+    if (!vs->device && gpu_device_open(rq->device, &vs->device, e) != 0)
         return -1;
     snprintf(out->device, sizeof out->device, "%s", gpu_device_name(vs->device));
     return 0;
@@ -280,14 +282,16 @@ static int find_references(const study_context *ctx, char paths[][4096], int *co
     int n = scandir(dir, &list, exr_file, alphasort);
     if (n < 0)
         return gt_error_set(e, dir, "cannot list the multi-bounce references (run the multibounce stage)");
-    *count = 0;
+    *count = n;
     for (int i = 0; i < n; ++i) {
-        if (*count < MB_SCORE_MAX_FILES)
-            snprintf(paths[(*count)++], 4096, "%s/%s", dir, list[i]->d_name);
+        if (i < MB_SCORE_MAX_FILES)
+            snprintf(paths[i], 4096, "%s/%s", dir, list[i]->d_name);
         free(list[i]);
     }
     free(list);
-    return *count > 0 ? 0 : gt_error_set(e, dir, "no multi-bounce references (*.exr; run the multibounce stage)");
+    if (n > MB_SCORE_MAX_FILES)
+        return gt_error_set(e, dir, "%d references; at most %d are scored", n, MB_SCORE_MAX_FILES);
+    return n > 0 ? 0 : gt_error_set(e, dir, "no multi-bounce references (*.exr; run the multibounce stage)");
 }
 
 int multibounce_score_project(const study_context *ctx, multibounce_score_result *out, gt_error *e)
@@ -298,7 +302,7 @@ int multibounce_score_project(const study_context *ctx, multibounce_score_result
         return 0;
     static char paths[MB_SCORE_MAX_FILES][4096];
     const char *references[MB_SCORE_MAX_FILES], *functions[PROJECT_MAX_FILES], *plugins[PROJECT_MAX_FILES];
-    int count;
+    int count = 0;
     if (find_references(ctx, paths, &count, e) != 0)
         return -1;
     for (int i = 0; i < count; ++i)
@@ -307,7 +311,8 @@ int multibounce_score_project(const study_context *ctx, multibounce_score_result
         functions[i] = p->shaders[i];
     for (int i = 0; i < p->plugin_count; ++i)
         plugins[i] = p->plugins[i];
-    multibounce_score_request rq = {"multibounce", references, count,  functions, p->shader_count,
-                                    plugins,       p->plugin_count, NULL, 10.0};
+    multibounce_score_request rq = {.quantity = "multibounce", .references = references, .reference_count = count,
+                                    .functions = functions, .function_count = p->shader_count, .plugins = plugins,
+                                    .plugin_count = p->plugin_count, .timeout = 10.0};
     return multibounce_score(&rq, out, e);
 }
