@@ -103,7 +103,7 @@ static int fit_sg_ndf(int argc, char **argv)
     rq.materials[0] = (anisotropic_ndf){(ndf_kind)kind, ax, ay};
     rq.imaged[0] = 0;
     rq.max_lobes = (int)lobes;
-    study_context ctx = {dir, QUALITY_PRODUCTION, (int)threads, NULL};
+    study_context ctx = {dir, QUALITY_PRODUCTION, (int)threads, NULL, NULL};
     static sg_ndf_result r;
     gt_error e;
     if (sg_ndf_study(&ctx, &rq, &r, &e) != 0)

@@ -185,24 +185,6 @@ static const cli_command bench_command = {
     "Each figure is the best of R passes.",
     bench_options, NULL, NULL};
 
-static void print_report(const char *spec, int threads, const gtao_bench_result *r)
-{
-    printf("scene %s; GTAO at %dx%d (1920x1080 at half resolution): %s\n\n", spec, GTAO_BENCH_HALF_WIDTH,
-           GTAO_BENCH_HALF_HEIGHT, r->settings);
-    printf("%-44s %12s %12s\n", "per frame (GTAO + denoisers)", "1 thread", "threads");
-    printf("%-44s %9.2f ms %9.2f ms   (%d threads)\n", "talk's configuration", 1e3 * r->talk_seconds_1_thread,
-           1e3 * r->talk_seconds_threads, threads);
-    printf("%-44s %9.2f ms %9.2f ms\n  (%s)\n\n", "VBAO, the same with 32 sectors", 1e3 * r->vbao.seconds_1_thread,
-           1e3 * r->vbao.seconds_threads, r->vbao.settings);
-    printf("cost per pixel, one frame on %dx%d, %d threads:\n", r->small_width, r->small_height, threads);
-    double reference_ns = r->preset_ns[GTAO_PRESET_REFERENCE];
-    for (int i = 0; i < GTAO_PRESET_COUNT; ++i)
-        printf("  GTAO %-12s %12.1f ns/pixel   %8.4f of the brute-force reference\n", gtao_preset_names[i],
-               r->preset_ns[i], r->preset_ns[i] / reference_ns);
-    printf("  height-field MC, %d spp %8.1f ns/pixel   %8.4f of the brute-force reference\n",
-           GTAO_BENCH_HEIGHTFIELD_SPP, r->heightfield_ns, r->heightfield_ns / reference_ns);
-}
-
 static int bench_gtao(int argc, char **argv)
 {
     const char *spec = "builtin:menger";
@@ -214,7 +196,7 @@ static int bench_gtao(int argc, char **argv)
     gtao_bench_result r;
     if (gtao_bench_run(spec, (int)threads, (int)repeats, &r, &e) != 0)
         return cli_fail(&e);
-    print_report(spec, (int)threads, &r);
+    gtao_bench_print(stdout, spec, (int)threads, &r);
     return EXIT_OK;
 }
 

@@ -16,6 +16,8 @@
 #include "report/multibounce_section.h"
 #include "studies/multibounce_bench.h"
 #include "studies/multibounce_fit_input.h"
+#include "studies/multibounce_score.h"
+#include "report/multibounce_score_section.h"
 
 enum { MAX_FILES = 256 };
 
@@ -77,20 +79,9 @@ static int fit_multibounce(int argc, char **argv)
     gt_error e;
     if (multibounce_output_files_resolve(&out, &e) != 0)
         return cli_fail(&e);
-    multibounce_data d;
-    multibounce_data_init(&d);
-    multibounce_analysis *a = malloc(sizeof *a);
-    status = EXIT_OK;
-    if (!a)
-        status = cli_failf("fit multibounce", "out of memory");
-    else if (multibounce_fit_input_load(files, data.count, &d, &e) != 0 || multibounce_analyse(&d, a, &e) != 0 ||
-             multibounce_write_outputs(&d, a, command_line, out.json, out.header, out.hlsl, out.glsl, &e) != 0)
-        status = cli_fail(&e);
-    else
-        multibounce_analysis_print(stdout, &d, a);
-    free(a);
-    multibounce_data_free(&d);
-    return status;
+    if (multibounce_fit_files(files, data.count, command_line, &out, stdout, &e) != 0)
+        return cli_fail(&e);
+    return EXIT_OK;
 }
 
 static int parse_albedos(void *settings, const char *text)
@@ -151,6 +142,7 @@ static int bench_multibounce(int argc, char **argv)
 }
 
 GTLAB_STUDY_STAGE_NO_REQUEST(all_stage_multibounce, multibounce_study_result, multibounce_study, multibounce_section)
+GTLAB_STUDY_STAGE_NO_REQUEST(stage_scores, multibounce_score_result, multibounce_score_project, multibounce_score_section)
 
 const technique technique_multibounce = {
     .name = "multibounce",
@@ -161,5 +153,6 @@ const technique technique_multibounce = {
             {"multibounce", bench_multibounce, "multi-bounce paths/s against raw Embree; N albedos in one pass"},
             {"fit", bench_fit, "a million-sample fit, 1- vs 1024-sample blocks"}),
     },
-    .stages = ALL_STAGES({"multibounce", "multi-bounce refit", all_stage_multibounce, NULL, NULL}),
+    .stages = ALL_STAGES({"multibounce", "multi-bounce refit", all_stage_multibounce, MULTIBOUNCE_STUDY_DIR, NULL},
+                         {"shader-scores", "the project's shaders, plug-ins", stage_scores, NULL, "multibounce"}),
 };

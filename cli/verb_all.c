@@ -175,7 +175,7 @@ int verb_all(int argc, char **argv)
 {
     stage_count = (int)technique_stages(stages, STAGE_MAX);
     static claims_table claims;
-    report_context ctx = {{NULL, (study_quality)-1, threads_default(), NULL}, NULL, NULL, &claims};
+    report_context ctx = {{NULL, (study_quality)-1, threads_default(), NULL, NULL}, NULL, NULL, &claims};
     int selected[STAGE_MAX];
     for (int i = 0; i < STAGE_MAX; ++i)
         selected[i] = 1;

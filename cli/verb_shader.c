@@ -5,6 +5,7 @@
 #include "cli/cli.h"
 #include "cli/cli_options.h"
 #include "cli/subcommands.h"
+#include "studies/multibounce_score.h"
 #include "studies/shader_run.h"
 
 enum { MAX_PARAMS = 64 };
@@ -45,11 +46,39 @@ static int shader_run_command(int argc, char **argv)
     return EXIT_OK;
 }
 
-static const cli_subcommand subcommands[] = {{"run", shader_run_command, "a screen-space shader over a G-buffer"}};
+static const cli_option score_options[] = {
+    CLI_CUSTOM("function", "F.glsl|F.hlsl", cli_list_add, "a function file (docs/shaders.md; the option may repeat)"),
+    CLI_CUSTOM("plugin", "LIB.so", cli_list_add, "a C plug-in (core/plugin_abi.h; the option may repeat)"),
+    CLI_STRING("quantity", "Q", "the quantity the functions approximate: multibounce (the default)"),
+    CLI_DOUBLE("timeout", "S", 0.001, 86400, "seconds a dispatch may take before 'device timeout'"),
+    CLI_STRING("device", "NAME", "a Vulkan device whose name contains NAME (default: a GPU, else lavapipe)"), CLI_END};
+static const cli_command score_command = {"shader score", "Scores per-sample functions (GLSL/HLSL) and C plug-ins "
+    "beside gtlab's own on\nmulti-bounce references ('gtlab render multibounce --albedo ...'), as the multibounce\n"
+    "stage validates its fit (docs/shaders.md).", score_options, "REF.exr ...", NULL};
+
+static int shader_score_command(int argc, char **argv)
+{
+    const char *functions[MB_SCORE_MAX_FILES], *plugins[MB_SCORE_MAX_FILES];
+    cli_list f = {functions, 0, MB_SCORE_MAX_FILES, "--function"}, p = {plugins, 0, MB_SCORE_MAX_FILES, "--plugin"};
+    multibounce_score_request r = {.functions = functions, .plugins = plugins, .timeout = 10.0};
+    cli_arguments refs;
+    int status;
+    if (cli_options_parse(&score_command, (void *[]){&f, &p, &r.quantity, &r.timeout, &r.device, &refs}, argc, argv,
+                          &status) != 0)
+        return status;
+    r.function_count = f.count, r.plugin_count = p.count, r.reference_count = refs.count;
+    r.references = (const char *const *)refs.values;
+    static multibounce_score_result result;
+    gt_error e;
+    return multibounce_score(&r, &result, &e) != 0 ? cli_fail(&e) : (multibounce_score_print(stdout, &result), EXIT_OK);
+}
+
+static const cli_subcommand subcommands[] = {{"run", shader_run_command, "a screen-space shader over a G-buffer"},
+                                             {"score", shader_score_command, "per-sample functions and plug-ins"}};
 
 int verb_shader(int argc, char **argv)
 {
-    static const cli_subcommand_verb verb = {"shader", "run [options]", "subcommands", "shader subcommand",
-                                             subcommands, 1};
+    static const cli_subcommand_verb verb = {"shader", "run|score [options]", "subcommands",
+                                             "shader subcommand", subcommands, 2};
     return cli_run_subcommand(&verb, argc, argv);
 }

@@ -170,6 +170,19 @@ static int check_header(multibounce_data *d, const image *img, const char *path,
     return 0;
 }
 
+int multibounce_image_albedos(const image *img, const char *path, float albedos[MBFIT_MAX_ALBEDOS],
+                              char channels[MBFIT_MAX_ALBEDOS][64], int *count, gt_error *e)
+{
+    multibounce_data header = {.count = 0};
+    char tokens[MBFIT_MAX_ALBEDOS][32];
+    if (check_header(&header, img, path, e) != 0 ||
+        parse_albedo_list(image_get_attribute(img, ATTR_ALBEDOS), path, tokens, albedos, count, e) != 0)
+        return -1;
+    for (int k = 0; k < *count; ++k)
+        albedo_channel(tokens[k], *count, channels[k], sizeof channels[k]);
+    return 0;
+}
+
 static const float *require_channel(const image *img, const char *name, const char *path, gt_error *e)
 {
     const float *p = image_channel_data(img, name);

@@ -71,6 +71,13 @@ int multibounce_data_push(multibounce_data *d, int scene, int albedo_index, floa
  * multibounce_data_weigh. */
 int multibounce_data_add_image(multibounce_data *d, const image *img, const char *path, gt_error *e);
 
+/* The grey albedos of a `gtlab render multibounce --albedo ...` reference
+ * and the channel of each (multibounce[_<rho>].V), in the file's order:
+ * the header checks of multibounce_data_add_image (a multibounce render,
+ * grey albedos, a valid list). Returns 0, or -1 with e naming `path`. */
+int multibounce_image_albedos(const image *img, const char *path, float albedos[MBFIT_MAX_ALBEDOS],
+                              char channels[MBFIT_MAX_ALBEDOS][64], int *count, gt_error *e);
+
 /* Sets every weight: each non-empty (scene, albedo) group gets equal total
  * weight, scaled so that the mean weight is 1. */
 void multibounce_data_weigh(multibounce_data *d);

@@ -116,3 +116,21 @@ int gtao_bench_run(const char *spec, int threads, int repeats, gtao_bench_result
     scene_free(&s);
     return status;
 }
+
+void gtao_bench_print(FILE *f, const char *spec, int threads, const gtao_bench_result *r)
+{
+    fprintf(f, "scene %s; GTAO at %dx%d (1920x1080 at half resolution): %s\n\n", spec, GTAO_BENCH_HALF_WIDTH,
+            GTAO_BENCH_HALF_HEIGHT, r->settings);
+    fprintf(f, "%-44s %12s %12s\n", "per frame (GTAO + denoisers)", "1 thread", "threads");
+    fprintf(f, "%-44s %9.2f ms %9.2f ms   (%d threads)\n", "talk's configuration", 1e3 * r->talk_seconds_1_thread,
+            1e3 * r->talk_seconds_threads, threads);
+    fprintf(f, "%-44s %9.2f ms %9.2f ms\n  (%s)\n\n", "VBAO, the same with 32 sectors", 1e3 * r->vbao.seconds_1_thread,
+            1e3 * r->vbao.seconds_threads, r->vbao.settings);
+    fprintf(f, "cost per pixel, one frame on %dx%d, %d threads:\n", r->small_width, r->small_height, threads);
+    double reference_ns = r->preset_ns[GTAO_PRESET_REFERENCE];
+    for (int i = 0; i < GTAO_PRESET_COUNT; ++i)
+        fprintf(f, "  GTAO %-12s %12.1f ns/pixel   %8.4f of the brute-force reference\n", gtao_preset_names[i],
+                r->preset_ns[i], r->preset_ns[i] / reference_ns);
+    fprintf(f, "  height-field MC, %d spp %8.1f ns/pixel   %8.4f of the brute-force reference\n",
+            GTAO_BENCH_HEIGHTFIELD_SPP, r->heightfield_ns, r->heightfield_ns / reference_ns);
+}

@@ -13,6 +13,8 @@
 #ifndef GTLAB_STUDIES_GTAO_BENCH_H
 #define GTLAB_STUDIES_GTAO_BENCH_H
 
+#include <stdio.h>
+
 #include "core/error.h"
 #include "realtime/gtao.h"
 #include "studies/vbao_bench.h"
@@ -33,5 +35,8 @@ typedef struct {
 /* Loads scene `spec` (builtin:NAME or a glTF file) and measures; leaves
  * OpenMP at `threads` threads. Returns 0, or -1 with e set. */
 int gtao_bench_run(const char *spec, int threads, int repeats, gtao_bench_result *out, gt_error *e);
+
+/* The benchmark's table (`gtlab bench gtao`) for `spec` run with `threads`. */
+void gtao_bench_print(FILE *f, const char *spec, int threads, const gtao_bench_result *r);
 
 #endif

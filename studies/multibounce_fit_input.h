@@ -6,11 +6,20 @@
 #ifndef GTLAB_STUDIES_MULTIBOUNCE_FIT_INPUT_H
 #define GTLAB_STUDIES_MULTIBOUNCE_FIT_INPUT_H
 
+#include <stdio.h>
+
 #include "core/error.h"
 #include "fitters/fit_multibounce.h"
 
 /* Appends the samples of files[0..count) to d (initialised by the caller)
  * and weighs them. Returns 0, or -1 with e naming the file at fault. */
 int multibounce_fit_input_load(const char *const *files, int count, multibounce_data *d, gt_error *e);
+
+/* `gtlab fit multibounce`'s work: the files loaded and weighed, analysed,
+ * the outputs written (`command_line` their provenance; out resolved by
+ * multibounce_output_files_resolve) and the analysis printed to `report`.
+ * Returns 0, or -1 with e naming the file at fault. */
+int multibounce_fit_files(const char *const *files, int count, const char *command_line,
+                          const multibounce_output_files *out, FILE *report, gt_error *e);
 
 #endif

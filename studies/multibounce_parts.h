@@ -17,6 +17,12 @@ typedef struct {
     multibounce_analysis *analysis;
 } multibounce_state;
 
+/* DSSIM and RMSE of `approx` against `target` over the mask, images of
+ * img's size (multibounce_validation.c; also the user's functions,
+ * multibounce_score.c). `what` names them in errors. */
+int multibounce_score_images(const float *approx, const float *target, const float *mask, const image *img,
+                             const char *what, double *dssim, double *rmse, gt_error *e);
+
 /* The validation rows of every scene and albedo and their mean
  * (multibounce_validation.c); scene k is scenes[k], albedo a albedos[a]. */
 int multibounce_validate(const multibounce_state *st, const char *const *scenes, const float *albedos,

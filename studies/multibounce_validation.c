@@ -19,9 +19,8 @@ void multibounce_apply_model(const multibounce_model *m, const float *visibility
         out[i] = mask[i] != 0.0f ? (float)gtao_multibounce(m, visibility[i], albedo) : 0.0f;
 }
 
-/* DSSIM and RMSE of `approx` against `target` over the mask. */
-static int score(const float *approx, const float *target, const float *mask, const image *img, const char *what,
-                 double *dssim, double *rmse, gt_error *e)
+int multibounce_score_images(const float *approx, const float *target, const float *mask, const image *img,
+                             const char *what, double *dssim, double *rmse, gt_error *e)
 {
     ssim_result s;
     image_error_stats err;
@@ -52,7 +51,7 @@ static int score_models(const multibounce_state *st, int k, float albedo, const 
     int rc = 0;
     for (int m = 0; m < 3 && rc == 0; ++m) {
         multibounce_apply_model(models[m], vd, mask, n, albedo, approx);
-        rc = score(approx, target, mask, img, what, dssim[m], rmse[m], e);
+        rc = multibounce_score_images(approx, target, mask, img, what, dssim[m], rmse[m], e);
     }
     free(approx);
     return rc;
@@ -69,9 +68,10 @@ static int validate(const multibounce_state *st, int k, int a, const char *scene
     snprintf(v->scene, sizeof v->scene, "%s", scene);
     v->albedo = (double)albedo;
     const float *mask = image_channel_data(img, CH_MASK), *target = image_channel_data(odd, channel);
-    if (score(image_channel_data(even, channel), target, mask, img, what, &v->noise_floor_dssim,
+    if (multibounce_score_images(image_channel_data(even, channel), target, mask, img, what, &v->noise_floor_dssim,
               &v->noise_floor_rmse, e) != 0 ||
-        score(image_channel_data(even, CH_AO), target, mask, img, what, &v->dssim_v_d, &v->rmse_v_d, e) != 0)
+        multibounce_score_images(image_channel_data(even, CH_AO), target, mask, img, what, &v->dssim_v_d,
+                                 &v->rmse_v_d, e) != 0)
         return -1;
     return score_models(st, k, albedo, target, what, v, e);
 }

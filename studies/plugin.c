@@ -3,7 +3,9 @@
 #include <dlfcn.h>
 #include <math.h>
 #include <stdlib.h>
+#include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 /* dlsym's void * as a function pointer (POSIX guarantees the conversion). */
 static void *symbol(void *handle, const char *name)
@@ -15,7 +17,13 @@ static void *symbol(void *handle, const char *name)
 int plugin_open(const char *path, gtlab_plugin *p, gt_error *e)
 {
     memset(p, 0, sizeof *p);
-    p->handle = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    char local[4096]; /* a file in the working folder, not a library on dlopen's search path */
+    const char *load = path;
+    if (!strchr(path, '/') && access(path, F_OK) == 0) {
+        snprintf(local, sizeof local, "./%s", path);
+        load = local;
+    }
+    p->handle = dlopen(load, RTLD_NOW | RTLD_LOCAL);
     if (!p->handle) {
         const char *why = dlerror();
         return gt_error_set(e, path, "cannot load the plug-in: %s", why ? why : "dlopen failed");

@@ -15,9 +15,11 @@ typedef struct {
     gtlab_multibounce_v1_fn multibounce_v1; /* NULL: the plug-in has no multi-bounce */
 } gtlab_plugin;
 
-/* Loads `path`. Returns 0, or -1 with e = "<path>: <problem>": not loadable
- * (dlerror's words), no gtlab_plugin_abi (not a gtlab plug-in), another ABI
- * version, no entry point gtlab knows. */
+/* Loads `path` (a name without a slash: the file in the working folder if
+ * there is one, else dlopen's search path). Returns 0, or -1 with
+ * e = "<path>: <problem>": not loadable (dlerror's words), no
+ * gtlab_plugin_abi (not a gtlab plug-in), another ABI version, no entry
+ * point gtlab knows. */
 int plugin_open(const char *path, gtlab_plugin *p, gt_error *e);
 void plugin_close(gtlab_plugin *p);
 

@@ -16,12 +16,14 @@
 typedef enum { QUALITY_PREVIEW, QUALITY_PRODUCTION } study_quality;
 
 typedef struct study_scene_list study_scene_list; /* studies/study_scenes.h */
+typedef struct study_project study_project;       /* studies/study_project.h */
 
 typedef struct {
     const char *output_dir; /* everything a study writes goes below it */
     study_quality quality;
     int threads;            /* results do not depend on it */
     const study_scene_list *scenes; /* the scenes the studies run over; NULL: the built-in ones */
+    const study_project *project;   /* the project file (its shaders and plug-ins); NULL: none */
 } study_context;
 
 /* "<output_dir>/<sub>" with the folder created. */

@@ -290,7 +290,7 @@ static int take_stage(const reader *r, const char *at, const char *key, study_pr
     return 0;
 }
 
-/* A shader or plug-in file (reserved: recorded, not run). */
+/* A shader (function file) or plug-in file: recorded, scored by the stage shader-scores. */
 static int take_file(const reader *r, const char *at, const char *value, char (*files)[STUDY_SCENE_PATH_MAX],
                      int *count)
 {
@@ -358,6 +358,7 @@ void study_project_apply(const study_project *p, study_context *ctx, const char 
 {
     const int given = p && p->quality >= 0;
     ctx->scenes = p && p->scenes.count ? &p->scenes : NULL;
+    ctx->project = p;
     if ((int)ctx->quality < 0)
         ctx->quality = given ? (study_quality)p->quality : QUALITY_PREVIEW;
     if (!ctx->output_dir)
@@ -391,8 +392,9 @@ static const char example[] =
     "      \"cameras\": [{}]\n"
     "    }\n"
     "  ],\n"
-    "  \"_shaders\": \"Reserved: GLSL/HLSL screen-space shaders (docs/shaders.md) and C plug-ins (core/plugin_abi.h) "
-    "are checked to exist and recorded in summary.json; no stage runs them yet ('gtlab shader run' does).\",\n"
+    "  \"_shaders\": \"GLSL/HLSL multi-bounce functions (docs/shaders.md, 'Functions') and C plug-ins "
+    "(core/plugin_abi.h), scored beside gtlab's own by the stage shader-scores on the multibounce stage's "
+    "references.\",\n"
     "  \"shaders\": [],\n"
     "  \"plugins\": []\n"
     "}\n";

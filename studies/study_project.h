@@ -1,8 +1,8 @@
 /* The project file (gtlab.json, docs/design.md "Project file", schema
  * docs/gtlab.schema.json): the user's scenes, each with one or more
  * cameras, and what `gtlab all --project` runs on them — its stages, quality
- * and output folder — with the user's shaders and plug-ins (validated and
- * recorded; reserved: no stage runs them yet). Paths in the file are
+ * and output folder — with the user's shaders and plug-ins (validated,
+ * recorded, scored by studies/multibounce_score.h). Paths in the file are
  * relative to the file's folder. Keys starting with '_' are comments; any
  * other unknown key is an error, as is every problem, named by the file and
  * the JSON path of the value at fault ("gtlab.json: scenes[0].cameras[1].gltf:
@@ -15,7 +15,7 @@
 
 enum { PROJECT_MAX_FILES = 16, PROJECT_STAGES_MAX = 512 };
 
-typedef struct {
+typedef struct study_project {
     study_scene_list scenes;        /* one entry per scene and camera */
     char stages[PROJECT_STAGES_MAX]; /* comma-separated stage keys; "" when the file names none */
     int quality;                    /* a study_quality, or -1 when the file names none */

@@ -57,7 +57,7 @@ int main(void)
     made_up_bloom(&bad, 0.2);
     report doc;
     report_init(&doc, "test");
-    report_context ctx = {{dir, QUALITY_PREVIEW, 1, NULL}, &doc, cJSON_CreateObject(), &claims};
+    report_context ctx = {{dir, QUALITY_PREVIEW, 1, NULL, NULL}, &doc, cJSON_CreateObject(), &claims};
     gt_error e;
     CHECK(dither_section(&ctx, &d, &e) == 0 && bloom_section(&ctx, &b, &e) == 0 && bloom_section(&ctx, &bad, &e) == 0);
     CHECK(claims.count == 4 + 3 + 3);

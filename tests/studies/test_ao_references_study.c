@@ -16,9 +16,9 @@ static int run(int threads, const char *sub, ao_references_result *r)
 {
     char dir[4096];
     gt_error e;
-    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, threads, NULL};
+    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, threads, NULL, NULL};
     CHECK(study_make_dir(&top, sub, dir, sizeof dir, &e) == 0);
-    study_context ctx = {dir, QUALITY_PREVIEW, threads, NULL};
+    study_context ctx = {dir, QUALITY_PREVIEW, threads, NULL, NULL};
     ao_references_request rq = {32, 16, 0.0, 1, 3}; /* plane, sphere-on-plane, corner */
     int rc = ao_references_study(&ctx, &rq, r, &e);
     CHECK_MSG(rc == 0, "%s", e.message);

@@ -33,7 +33,7 @@ static void check_white_dome(const env_study_environment *w)
 
 int main(void)
 {
-    study_context ctx = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL};
+    study_context ctx = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL};
     static env_study_result r;
     gt_error e;
     CHECK_MSG(env_approx_study(&ctx, &r, &e) == 0, "%s", e.message);

@@ -203,9 +203,9 @@ int main(void)
 {
     char dir[4096], refs[4096], gtao[4096];
     gt_error e;
-    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL};
+    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL};
     CHECK(study_make_dir(&top, "gtao_shortcuts", dir, sizeof dir, &e) == 0);
-    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL};
+    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL, NULL};
     int rc = make_references(&ctx, refs, gtao, &e);
     CHECK_MSG(rc == 0, "%s", e.message);
     if (rc == 0) {

@@ -35,7 +35,7 @@ static const dither_row *row_of(const dither_image_result *im, const char *label
 
 static void check_dither(const char *dir)
 {
-    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL};
+    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL, NULL};
     dither_request rq = {512, 64, 48, 32, 4, 16, 1};
     static dither_result r;
     gt_error e;
@@ -75,7 +75,7 @@ static void check_dither(const char *dir)
 
 static void check_bloom(const char *dir, bloom_result *r, int threads)
 {
-    study_context ctx = {dir, QUALITY_PREVIEW, threads, NULL};
+    study_context ctx = {dir, QUALITY_PREVIEW, threads, NULL, NULL};
     bloom_request rq = {96, 54, 2, 3, 1};
     gt_error e;
     char path[4096];
@@ -98,7 +98,7 @@ static void check_bloom(const char *dir, bloom_result *r, int threads)
 
 static void check_ao_decals(const char *dir)
 {
-    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL};
+    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL, NULL};
     ao_decals_request rq = {24, 128, 3, 24};
     static ao_decals_result r;
     gt_error e;
@@ -118,7 +118,7 @@ int main(void)
 {
     char dir[2048];
     gt_error e;
-    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL};
+    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL};
     CHECK(study_make_dir(&top, "inside_studies", dir, sizeof dir, &e) == 0);
     check_dither(dir);
     check_ao_decals(dir);

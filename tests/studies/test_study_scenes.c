@@ -63,7 +63,7 @@ static void test_labels(void)
     }
     snprintf(x.label, sizeof x.label, "one-more");
     CHECK(study_scene_list_add(&list, &x, "t", &e) != 0 && list.count == STUDY_SCENES_MAX);
-    study_context ctx = {check_tmp_dir(), QUALITY_PREVIEW, 1, &list};
+    study_context ctx = {check_tmp_dir(), QUALITY_PREVIEW, 1, &list, NULL};
     CHECK(study_scene_count(&ctx) == STUDY_SCENES_MAX && study_scene_find(&ctx, "p3") == &list.scenes[3]);
 }
 

@@ -45,9 +45,9 @@ int main(void)
 {
     char dir[2048], path[4096];
     gt_error e;
-    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL};
+    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL};
     CHECK(study_make_dir(&top, "vlight_study", dir, sizeof dir, &e) == 0);
-    study_context two = {dir, QUALITY_PREVIEW, 2, NULL}, one = {dir, QUALITY_PREVIEW, 1, NULL};
+    study_context two = {dir, QUALITY_PREVIEW, 2, NULL, NULL}, one = {dir, QUALITY_PREVIEW, 1, NULL, NULL};
     vlight_request rq = small_request();
     static vlight_result r2, r1;
     CHECK_MSG(vlight_study(&two, &rq, &r2, &e) == 0, "%s", e.message);
