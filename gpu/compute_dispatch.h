@@ -50,6 +50,18 @@ typedef struct {
  * seconds (may be NULL): wall time from submission to the fence. */
 int gpu_dispatch_run(gpu_device *device, const gpu_dispatch *d, double *seconds, gt_error *e);
 
+/* The same dispatch run frame after frame, built once: the buffers,
+ * pipeline, descriptor set, command buffer and fence are made by
+ * gpu_dispatch_open (which uploads every buffer's data); each
+ * gpu_dispatch_frame uploads the uniform blocks and outputs from their data
+ * again (not the inputs: they stay as uploaded), submits, waits and reads
+ * the outputs back, with gpu_dispatch_run's errors. d and its buffers must outlive the session.
+ * gpu_dispatch_run is open, one frame, close. */
+typedef struct gpu_dispatch_session gpu_dispatch_session;
+int gpu_dispatch_open(gpu_device *device, const gpu_dispatch *d, gpu_dispatch_session **out, gt_error *e);
+int gpu_dispatch_frame(gpu_dispatch_session *s, double *seconds, gt_error *e);
+void gpu_dispatch_close(gpu_dispatch_session *s); /* NULL: nothing */
+
 /* The first NaN among count floats, or -1. */
 long gpu_first_nan(const float *values, size_t count);
 

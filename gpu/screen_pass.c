@@ -47,25 +47,31 @@ static void accumulate(float *out, const float *frame, size_t count, int frames)
         out[i] += frame[i] / (float)frames;
 }
 
-/* One dispatch per frame, each into `frame_out`, averaged into out. */
+/* One dispatch per frame, each into `frame_out`, averaged into out: the
+ * pipeline and the G-buffer's upload once, per frame only the Gtlab block,
+ * the cleared outputs and their read-back. */
 static int run_frames(gpu_device *device, gpu_dispatch *d, gpu_screen_globals *globals, float *frame_out,
                       float *out, size_t count, double *seconds, gt_error *e)
 {
-    int frames = globals->frames;
+    int frames = globals->frames, rc = 0;
     double total = 0.0;
+    gpu_dispatch_session *session;
     memset(out, 0, count * sizeof *out);
-    for (int f = 0; f < frames; ++f) {
+    if (gpu_dispatch_open(device, d, &session, e) != 0)
+        return -1;
+    for (int f = 0; f < frames && rc == 0; ++f) {
         double t = 0.0;
         globals->frame = f;
         memset(frame_out, 0, count * sizeof *frame_out); /* a pixel a frame leaves unwritten is 0, not the last frame's */
-        if (gpu_dispatch_run(device, d, &t, e) != 0)
-            return -1;
-        accumulate(out, frame_out, count, frames);
+        rc = gpu_dispatch_frame(session, &t, e);
+        if (rc == 0)
+            accumulate(out, frame_out, count, frames);
         total += t;
     }
+    gpu_dispatch_close(session);
     if (seconds)
         *seconds = total / frames;
-    return 0;
+    return rc;
 }
 
 int gpu_screen_pass(gpu_device *device, const gpu_spirv *shader, const char *what, const gpu_screen_input *in,
