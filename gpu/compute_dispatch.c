@@ -56,8 +56,10 @@ static int make_buffer(gpu_device *g, dispatch_objects *o, int k, const gpu_buff
 {
     VkBufferCreateInfo info = {.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO,
                                .size = b->size,
-                               .usage = b->kind == GPU_UNIFORM ? VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT
-                                                               : VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                               .usage = b->kind == GPU_UNIFORM  ? VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT
+                                        : b->kind == GPU_OUTPUT ? VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT
+                                                                : VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                .sharingMode = VK_SHARING_MODE_EXCLUSIVE};
     if (b->size == 0 || vkCreateBuffer(g->device, &info, NULL, &o->buffer[k]) != VK_SUCCESS)
         return gt_error_set(e, what, "cannot create buffer %s of %zu bytes", b->name, b->size);
@@ -71,7 +73,7 @@ static int make_buffer(gpu_device *g, dispatch_objects *o, int k, const gpu_buff
         return gt_error_set(e, what, "cannot allocate %zu bytes of host-visible device memory", b->size);
     if (vkBindBufferMemory(g->device, o->buffer[k], o->memory[k], 0) != VK_SUCCESS)
         return gt_error_set(e, what, "cannot bind buffer %s", b->name);
-    return upload(g, o, k, b, what, e);
+    return b->kind == GPU_OUTPUT ? 0 : upload(g, o, k, b, what, e); /* outputs: cleared by the device */
 }
 
 static int make_buffers(gpu_device *g, dispatch_objects *o, const gpu_dispatch *d, gt_error *e)
@@ -172,7 +174,21 @@ static int make_descriptors(gpu_device *g, dispatch_objects *o, const gpu_dispat
     return 0;
 }
 
-/* The command buffer: bind, dispatch, make the writes visible to the host. */
+/* Commands zeroing every output before the dispatch reads or writes it. */
+static void clear_outputs(dispatch_objects *o, const gpu_dispatch *d)
+{
+    for (int k = 0; k < d->buffer_count; ++k)
+        if (d->buffers[k].kind == GPU_OUTPUT)
+            vkCmdFillBuffer(o->commands, o->buffer[k], 0, VK_WHOLE_SIZE, 0);
+    VkMemoryBarrier barrier = {.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER,
+                               .srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT,
+                               .dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
+    vkCmdPipelineBarrier(o->commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1,
+                         &barrier, 0, NULL, 0, NULL);
+}
+
+/* The command buffer: clear the outputs, bind, dispatch, make the writes
+ * visible to the host. */
 static int record(gpu_device *g, dispatch_objects *o, const gpu_dispatch *d, gt_error *e)
 {
     VkCommandBufferAllocateInfo alloc = {.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
@@ -183,6 +199,7 @@ static int record(gpu_device *g, dispatch_objects *o, const gpu_dispatch *d, gt_
     if (vkAllocateCommandBuffers(g->device, &alloc, &o->commands) != VK_SUCCESS ||
         vkBeginCommandBuffer(o->commands, &begin) != VK_SUCCESS)
         return gt_error_set(e, d->what, "cannot record a command buffer");
+    clear_outputs(o, d);
     vkCmdBindPipeline(o->commands, VK_PIPELINE_BIND_POINT_COMPUTE, o->pipeline);
     vkCmdBindDescriptorSets(o->commands, VK_PIPELINE_BIND_POINT_COMPUTE, o->layout, 0, 1, &o->set, 0, NULL);
     vkCmdDispatch(o->commands, d->groups[0], d->groups[1], d->groups[2]);
@@ -299,13 +316,13 @@ int gpu_dispatch_open(gpu_device *g, const gpu_dispatch *d, gpu_dispatch_session
     return 0;
 }
 
-/* The uniform blocks and outputs from their data again: they change
- * between frames (the frame index, outputs cleared); inputs do not. */
+/* The uniform blocks from their data again: they change between frames
+ * (the frame index); inputs do not, outputs are cleared by the device. */
 static int upload_frame(gpu_dispatch_session *s, gt_error *e)
 {
     const gpu_dispatch *d = s->dispatch;
     for (int k = 0; k < d->buffer_count; ++k)
-        if (d->buffers[k].kind != GPU_INPUT && upload(s->device, &s->objects, k, &d->buffers[k], d->what, e) != 0)
+        if (d->buffers[k].kind == GPU_UNIFORM && upload(s->device, &s->objects, k, &d->buffers[k], d->what, e) != 0)
             return -1;
     return 0;
 }
