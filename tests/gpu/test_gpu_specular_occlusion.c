@@ -63,18 +63,32 @@ static void so_inputs(float *in)
     }
 }
 
-/* Output k of the C at the inputs x. */
-static double so_c(int k, const float *x)
+/* The functions compared: the library's, or the test's copy below. */
+typedef struct {
+    double (*cone_cone)(double, double, double, int);
+    double (*above_horizon)(double, double, double, double);
+    double (*lagarde)(double, double, double);
+    double (*visibility_cos)(double);
+    double (*reflection_cos)(double);
+} so_functions;
+
+static const so_functions kLibrary = {so_cone_cone, so_cone_cone_above_horizon, so_lagarde, so_visibility_cos_cosine,
+                                      so_reflection_cos_exp2};
+
+/* Output k of f at the inputs x. */
+static double so_eval(const so_functions *f, int k, const float *x)
 {
     switch (k) {
-    case OUT_EXACT: return so_cone_cone(x[IN_COS_AV], x[IN_COS_AS], x[IN_BETA], 1);
-    case OUT_OAT: return so_cone_cone(x[IN_COS_AV], x[IN_COS_AS], x[IN_BETA], 0);
-    case OUT_HORIZON: return so_cone_cone_above_horizon(x[IN_COS_AV], x[IN_COS_AS], x[IN_BETA], x[IN_N_DOT_V]);
-    case OUT_LAGARDE: return so_lagarde(x[IN_N_DOT_V], x[IN_AO], x[IN_ALPHA]);
-    case OUT_COS_AV: return so_visibility_cos_cosine(x[IN_AO]);
-    default: return so_reflection_cos_exp2(x[IN_ALPHA]);
+    case OUT_EXACT: return f->cone_cone(x[IN_COS_AV], x[IN_COS_AS], x[IN_BETA], 1);
+    case OUT_OAT: return f->cone_cone(x[IN_COS_AV], x[IN_COS_AS], x[IN_BETA], 0);
+    case OUT_HORIZON: return f->above_horizon(x[IN_COS_AV], x[IN_COS_AS], x[IN_BETA], x[IN_N_DOT_V]);
+    case OUT_LAGARDE: return f->lagarde(x[IN_N_DOT_V], x[IN_AO], x[IN_ALPHA]);
+    case OUT_COS_AV: return f->visibility_cos(x[IN_AO]);
+    default: return f->reflection_cos(x[IN_ALPHA]);
     }
 }
+
+static double so_c(int k, const float *x) { return so_eval(&kLibrary, k, x); }
 
 /* ---- The .inc text again, as C, with one acos call moved ---- */
 
@@ -121,18 +135,14 @@ static double moved_acos(double x)
 #undef so_cone_cone_above_horizon
 #undef so_lagarde
 
+static const so_functions kMoved = {moved_cone_cone, moved_cone_cone_above_horizon, moved_lagarde,
+                                    moved_visibility_cos_cosine, moved_reflection_cos_exp2};
+
 /* Output k of the copy, acos call `call` moved by `sign` allowances (-1: none). */
 static double so_moved(int k, const float *x, int call, double sign)
 {
     g_moved_call = call, g_sign = sign, g_calls = 0;
-    switch (k) {
-    case OUT_EXACT: return moved_cone_cone(x[IN_COS_AV], x[IN_COS_AS], x[IN_BETA], 1);
-    case OUT_OAT: return moved_cone_cone(x[IN_COS_AV], x[IN_COS_AS], x[IN_BETA], 0);
-    case OUT_HORIZON: return moved_cone_cone_above_horizon(x[IN_COS_AV], x[IN_COS_AS], x[IN_BETA], x[IN_N_DOT_V]);
-    case OUT_LAGARDE: return moved_lagarde(x[IN_N_DOT_V], x[IN_AO], x[IN_ALPHA]);
-    case OUT_COS_AV: return moved_visibility_cos_cosine(x[IN_AO]);
-    default: return moved_reflection_cos_exp2(x[IN_ALPHA]);
-    }
+    return so_eval(&kMoved, k, x);
 }
 
 /* The conditioning part of the bound: the C's change when each input moves
