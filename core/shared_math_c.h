@@ -1,5 +1,6 @@
-/* The C meaning of the dialect in which core/spherical_caps.inc and
- * realtime/specular_occlusion.inc are written (the common subset of C, HLSL
+/* The C meaning of the dialect in which core/spherical_caps.inc,
+ * core/spherical_gaussian.inc, realtime/specular_occlusion.inc and
+ * realtime/specular_occlusion_sg.inc are written (the common subset of C, HLSL
  * and GLSL): C computes in double, with the library's fmin/fmax/fabs; the
  * shaders that embed the same text define the same names for float
  * (realtime/specular_occlusion_shader.c). */
@@ -16,5 +17,6 @@
 #define sc_min fmin
 #define sc_max fmax
 #define sc_abs fabs
+#define sc_expm1 expm1
 
 #endif

@@ -1,10 +1,10 @@
 /* gtlab's specular-occlusion shaders, executed (issue 15, item 4): GTSO's
  * cone/cone forms (exact caps and Oat and Sander's), the form normalised
- * above the horizon, Lagarde's, and GTSO's two apertures, as GLSL and HLSL
- * (realtime/specular_occlusion_shader.h: core/spherical_caps.inc and
- * realtime/specular_occlusion.inc, the very text the C compiles), run on
- * Vulkan over a dense grid of (cos a_v, cos a_s, beta, n.v, ao, alpha) and
- * compared with the C (double) on the same float inputs.
+ * above the horizon, Lagarde's, GTSO's two apertures and Unity HDRP's
+ * spherical Gaussians, as GLSL and HLSL (realtime/specular_occlusion_shader.h:
+ * four .inc files, the very text the C compiles), run on Vulkan over a dense
+ * grid of (cos a_v, cos a_s, beta, n.v, ao, alpha) and compared with the C
+ * (double) on the same float inputs.
  *
  * The bound (docs/decisions.md, "Shaders on Vulkan"), u = 2^-24: each value
  * lies in [0, 1] and the shader computes it in float in ~40 operations,
@@ -19,9 +19,11 @@
  * ulp of input move the value by more than any rounding inside. So the
  * bound is rounding plus conditioning, to first order:
  *   |gpu - c| <= 64 u + sum over inputs of the C's change when the input moves by 8 u
- *                     + sum over the acos calls of its change when that acos moves by its allowance,
- * the last measured on a copy of the same .inc text compiled here with a
- * perturbed acos (without the perturbation it equals the library's C bit
+ *                     + sum over the acos calls of its change when that acos moves by its allowance
+ *                     + the same for each sqrt moved by 16 u (relative: Vulkan's 1 / inversesqrt
+ *                       and its argument's rounding; the SG form's L_1 - L_2 cancels),
+ * the last two measured on a copy of the same .inc text compiled here with a
+ * perturbed acos and sqrt (without the perturbation it equals the library's C bit
  * for bit: checked). */
 #define _GNU_SOURCE
 #include <math.h>
@@ -32,6 +34,7 @@
 #include "gpu/sample_map.h"
 #include "gpu/vulkan_device.h"
 #include "realtime/specular_occlusion.h"
+#include "realtime/specular_occlusion_sg.h"
 #include "realtime/specular_occlusion_shader.h"
 #include "tests/check.h"
 #include "tests/gpu/sample_shader.h"
@@ -39,10 +42,10 @@
 static const double kU = 1.0 / 16777216.0; /* 2^-24 */
 
 enum { N_AV = 17, N_R = 17, N_BETA = 33, N_NV = 4, SAMPLES = N_AV * N_R * N_BETA * N_NV };
-enum { IN_COS_AV, IN_COS_AS, IN_BETA, IN_N_DOT_V, IN_AO, IN_ALPHA, INPUTS };
-enum { OUT_EXACT, OUT_OAT, OUT_HORIZON, OUT_LAGARDE, OUT_COS_AV, OUT_COS_AS, OUTPUTS };
+enum { IN_COS_AV, IN_COS_AS, IN_BETA, IN_N_DOT_V, IN_AO, IN_ALPHA, IN_COS_BETA, INPUTS };
+enum { OUT_EXACT, OUT_OAT, OUT_HORIZON, OUT_LAGARDE, OUT_COS_AV, OUT_COS_AS, OUT_SG, OUTPUTS };
 
-static const char *const kNames[OUTPUTS] = {"cone-exact", "cone-oat", "cone-horizon", "lagarde", "cos a_v", "cos a_s"};
+static const char *const kNames[OUTPUTS] = {"cone-exact", "cone-oat", "cone-horizon", "lagarde", "cos a_v", "cos a_s", "sg"};
 
 /* Sample s: cos a_v over [0, 1] and its cosine AO 1 - cos^2 a_v; perceptual
  * roughness over [0, 1] as GTSO's alpha = max(r^2, 1e-4) and its exp2
@@ -60,6 +63,7 @@ static void so_inputs(float *in)
         x[IN_COS_AS] = (float)so_reflection_cos_exp2(alpha);
         x[IN_BETA] = (float)(M_PI * b / (N_BETA - 1.0));
         x[IN_N_DOT_V] = (n + 0.5f) / N_NV;
+        x[IN_COS_BETA] = cosf(x[IN_BETA]);
     }
 }
 
@@ -70,10 +74,11 @@ typedef struct {
     double (*lagarde)(double, double, double);
     double (*visibility_cos)(double);
     double (*reflection_cos)(double);
+    double (*sg)(double, double, double, double);
 } so_functions;
 
 static const so_functions kLibrary = {so_cone_cone, so_cone_cone_above_horizon, so_lagarde, so_visibility_cos_cosine,
-                                      so_reflection_cos_exp2};
+                                      so_reflection_cos_exp2, so_sg_occlusion};
 
 /* Output k of f at the inputs x. */
 static double so_eval(const so_functions *f, int k, const float *x)
@@ -84,7 +89,8 @@ static double so_eval(const so_functions *f, int k, const float *x)
     case OUT_HORIZON: return f->above_horizon(x[IN_COS_AV], x[IN_COS_AS], x[IN_BETA], x[IN_N_DOT_V]);
     case OUT_LAGARDE: return f->lagarde(x[IN_N_DOT_V], x[IN_AO], x[IN_ALPHA]);
     case OUT_COS_AV: return f->visibility_cos(x[IN_AO]);
-    default: return f->reflection_cos(x[IN_ALPHA]);
+    case OUT_COS_AS: return f->reflection_cos(x[IN_ALPHA]);
+    default: return f->sg(x[IN_COS_AV], x[IN_COS_BETA], x[IN_N_DOT_V], x[IN_ALPHA]);
     }
 }
 
@@ -110,7 +116,22 @@ static double moved_acos(double x)
     return g_calls++ == g_moved_call ? a + g_sign * acos_allowance(x, a) : a;
 }
 
+/* sqrt moved by 16 u (relative): Vulkan's 1 / inversesqrt (~5 ulp) and the
+ * rounding of its argument, a sum of up to three products. */
+static double moved_sqrt(double x)
+{
+    double r = sqrt(x);
+    return g_calls++ == g_moved_call ? r * (1.0 + g_sign * 16.0 * kU) : r;
+}
+
 #define acos moved_acos
+#define sqrt moved_sqrt
+#define sg_sphere_integral moved_sg_sphere_integral
+#define so_sg_lobe_sharpness moved_sg_lobe_sharpness
+#define so_sg_cone_sharpness moved_sg_cone_sharpness
+#define so_sg_product_sharpness moved_sg_product_sharpness
+#define so_sg_inner_product moved_sg_inner_product
+#define so_sg_occlusion moved_sg_occlusion
 #define spherical_cap_solid_angle moved_cap_solid_angle
 #define spherical_cap_intersection moved_cap_intersection
 #define so_visibility_cos_cosine moved_visibility_cos_cosine
@@ -125,7 +146,11 @@ static double moved_acos(double x)
 #include "core/shared_math_c.h"
 #include "core/spherical_caps.inc"
 #include "realtime/specular_occlusion.inc"
+#include "core/spherical_gaussian.inc"
+#include "realtime/specular_occlusion_sg.inc"
 #undef acos
+#undef sqrt
+#undef so_sg_occlusion
 #undef spherical_cap_solid_angle
 #undef spherical_cap_intersection
 #undef so_visibility_cos_cosine
@@ -136,7 +161,7 @@ static double moved_acos(double x)
 #undef so_lagarde
 
 static const so_functions kMoved = {moved_cone_cone, moved_cone_cone_above_horizon, moved_lagarde,
-                                    moved_visibility_cos_cosine, moved_reflection_cos_exp2};
+                                    moved_visibility_cos_cosine, moved_reflection_cos_exp2, moved_sg_occlusion};
 
 /* Output k of the copy, acos call `call` moved by `sign` allowances (-1: none). */
 static double so_moved(int k, const float *x, int call, double sign)
@@ -168,13 +193,14 @@ static double so_spread(int k, const float *x, int *same)
     return spread;
 }
 
-static const char kGlslBody[] = "    uint b = 6u * i, o = 6u * i;\n"
+static const char kGlslBody[] = "    uint b = 7u * i, o = 7u * i;\n"
                                 "    r[o] = so_cone_cone(v[b], v[b + 1u], v[b + 2u], 1);\n"
                                 "    r[o + 1u] = so_cone_cone(v[b], v[b + 1u], v[b + 2u], 0);\n"
                                 "    r[o + 2u] = so_cone_cone_above_horizon(v[b], v[b + 1u], v[b + 2u], v[b + 3u]);\n"
                                 "    r[o + 3u] = so_lagarde(v[b + 3u], v[b + 4u], v[b + 5u]);\n"
                                 "    r[o + 4u] = so_visibility_cos_cosine(v[b + 4u]);\n"
-                                "    r[o + 5u] = so_reflection_cos_exp2(v[b + 5u]);\n";
+                                "    r[o + 5u] = so_reflection_cos_exp2(v[b + 5u]);\n"
+                                "    r[o + 6u] = so_sg_occlusion(v[b], v[b + 6u], v[b + 3u], v[b + 5u]);\n";
 
 /* Per output: the worst |gpu - c| / bound, the largest |gpu - c| where the
  * bound is below 1e-3 (away from steps and tangencies) and the mean; the
