@@ -20,7 +20,8 @@
     T(fog)                  \
     T(environment)          \
     T(scale)                \
-    T(throughput)
+    T(throughput)           \
+    T(shader)
 
 #define DECLARE(name) extern const technique technique_##name;
 #define REGISTER(name) &technique_##name,

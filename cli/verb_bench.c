@@ -31,7 +31,7 @@ static const cli_command command = {
     "best of R passes.\n"
     "'gtlab bench specular-occlusion': samples/s of the specular-occlusion reference\n"
     "(64 spp, roughness 0.5), 1 thread and T threads.",
-    options, "rays|specular-occlusion|gtao|multibounce|fit|sphere-light|convergence|env-diffuse",
+    options, "rays|specular-occlusion|gtao|multibounce|fit|sphere-light|convergence|env-diffuse|shader",
     "Other benchmarks, each with --help: gtlab bench gtao (GTAO in the talk's configuration\n"
     "at 1920x1080 and every preset's cost per pixel), multibounce, fit, sphere-light,\n"
     "convergence (AO time to RMSE 0.01, plain against the height-field control variate),\n"

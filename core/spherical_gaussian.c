@@ -6,6 +6,7 @@
 #include <stddef.h>
 
 #include "core/quadrature.h"
+#include "core/shared_math_c.h"
 
 double sg_evaluate(const spherical_gaussian *g, const double v[3])
 {
@@ -21,12 +22,8 @@ double sg_sum_evaluate(const spherical_gaussian *lobes, int count, const double 
     return sum;
 }
 
-double sg_sphere_integral(double sharpness, double amplitude)
-{
-    if (sharpness < 1e-12)
-        return 4.0 * M_PI * amplitude;
-    return 2.0 * M_PI * amplitude * -expm1(-2.0 * sharpness) / sharpness;
-}
+/* sg_sphere_integral, the text the shaders embed too. */
+#include "core/spherical_gaussian.inc"
 
 double sg_axial_cosine_integral(double sharpness, double amplitude)
 {

@@ -40,13 +40,26 @@ static VkDescriptorType descriptor_type(gpu_buffer_kind kind)
     return kind == GPU_UNIFORM ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 }
 
+/* Buffer k's data into its memory. */
+static int upload(gpu_device *g, dispatch_objects *o, int k, const gpu_buffer *b, const char *what, gt_error *e)
+{
+    void *mapped;
+    if (vkMapMemory(g->device, o->memory[k], 0, b->size, 0, &mapped) != VK_SUCCESS)
+        return gt_error_set(e, what, "cannot map buffer %s", b->name);
+    memcpy(mapped, b->data, b->size);
+    vkUnmapMemory(g->device, o->memory[k]);
+    return 0;
+}
+
 /* Buffer k (binding k) in host-visible memory, holding its data. */
 static int make_buffer(gpu_device *g, dispatch_objects *o, int k, const gpu_buffer *b, const char *what, gt_error *e)
 {
     VkBufferCreateInfo info = {.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO,
                                .size = b->size,
-                               .usage = b->kind == GPU_UNIFORM ? VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT
-                                                               : VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                               .usage = b->kind == GPU_UNIFORM  ? VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT
+                                        : b->kind == GPU_OUTPUT ? VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT
+                                                                : VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                .sharingMode = VK_SHARING_MODE_EXCLUSIVE};
     if (b->size == 0 || vkCreateBuffer(g->device, &info, NULL, &o->buffer[k]) != VK_SUCCESS)
         return gt_error_set(e, what, "cannot create buffer %s of %zu bytes", b->name, b->size);
@@ -58,13 +71,9 @@ static int make_buffer(gpu_device *g, dispatch_objects *o, int k, const gpu_buff
                                   .memoryTypeIndex = (uint32_t)type};
     if (type < 0 || vkAllocateMemory(g->device, &alloc, NULL, &o->memory[k]) != VK_SUCCESS)
         return gt_error_set(e, what, "cannot allocate %zu bytes of host-visible device memory", b->size);
-    void *mapped;
-    if (vkBindBufferMemory(g->device, o->buffer[k], o->memory[k], 0) != VK_SUCCESS ||
-        vkMapMemory(g->device, o->memory[k], 0, b->size, 0, &mapped) != VK_SUCCESS)
-        return gt_error_set(e, what, "cannot map buffer %s", b->name);
-    memcpy(mapped, b->data, b->size);
-    vkUnmapMemory(g->device, o->memory[k]);
-    return 0;
+    if (vkBindBufferMemory(g->device, o->buffer[k], o->memory[k], 0) != VK_SUCCESS)
+        return gt_error_set(e, what, "cannot bind buffer %s", b->name);
+    return b->kind == GPU_OUTPUT ? 0 : upload(g, o, k, b, what, e); /* outputs: cleared by the device */
 }
 
 static int make_buffers(gpu_device *g, dispatch_objects *o, const gpu_dispatch *d, gt_error *e)
@@ -165,18 +174,32 @@ static int make_descriptors(gpu_device *g, dispatch_objects *o, const gpu_dispat
     return 0;
 }
 
-/* The command buffer: bind, dispatch, make the writes visible to the host. */
+/* Commands zeroing every output before the dispatch reads or writes it. */
+static void clear_outputs(dispatch_objects *o, const gpu_dispatch *d)
+{
+    for (int k = 0; k < d->buffer_count; ++k)
+        if (d->buffers[k].kind == GPU_OUTPUT)
+            vkCmdFillBuffer(o->commands, o->buffer[k], 0, VK_WHOLE_SIZE, 0);
+    VkMemoryBarrier barrier = {.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER,
+                               .srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT,
+                               .dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
+    vkCmdPipelineBarrier(o->commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1,
+                         &barrier, 0, NULL, 0, NULL);
+}
+
+/* The command buffer: clear the outputs, bind, dispatch, make the writes
+ * visible to the host. */
 static int record(gpu_device *g, dispatch_objects *o, const gpu_dispatch *d, gt_error *e)
 {
     VkCommandBufferAllocateInfo alloc = {.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
                                          .commandPool = g->pool,
                                          .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
                                          .commandBufferCount = 1};
-    VkCommandBufferBeginInfo begin = {.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
-                                      .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
+    VkCommandBufferBeginInfo begin = {.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO}; /* submitted per frame */
     if (vkAllocateCommandBuffers(g->device, &alloc, &o->commands) != VK_SUCCESS ||
         vkBeginCommandBuffer(o->commands, &begin) != VK_SUCCESS)
         return gt_error_set(e, d->what, "cannot record a command buffer");
+    clear_outputs(o, d);
     vkCmdBindPipeline(o->commands, VK_PIPELINE_BIND_POINT_COMPUTE, o->pipeline);
     vkCmdBindDescriptorSets(o->commands, VK_PIPELINE_BIND_POINT_COMPUTE, o->layout, 0, 1, &o->set, 0, NULL);
     vkCmdDispatch(o->commands, d->groups[0], d->groups[1], d->groups[2]);
@@ -195,13 +218,20 @@ static double now_seconds(void)
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
+static int make_fence(gpu_device *g, dispatch_objects *o, const gpu_dispatch *d, gt_error *e)
+{
+    VkFenceCreateInfo fence = {.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    return vkCreateFence(g->device, &fence, NULL, &o->fence) == VK_SUCCESS
+               ? 0
+               : gt_error_set(e, d->what, "cannot create a fence");
+}
+
 /* Submits and waits for the fence at most d->timeout seconds. */
 static int submit(gpu_device *g, dispatch_objects *o, const gpu_dispatch *d, double *seconds, gt_error *e)
 {
-    VkFenceCreateInfo fence = {.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     VkSubmitInfo info = {.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO, .commandBufferCount = 1,
                          .pCommandBuffers = &o->commands};
-    if (vkCreateFence(g->device, &fence, NULL, &o->fence) != VK_SUCCESS ||
+    if (vkResetFences(g->device, 1, &o->fence) != VK_SUCCESS ||
         vkQueueSubmit(g->queue, 1, &info, o->fence) != VK_SUCCESS)
         return gt_error_set(e, d->what, "cannot submit the dispatch");
     double start = now_seconds();
@@ -260,16 +290,68 @@ static void release(gpu_device *g, dispatch_objects *o)
     }
 }
 
-int gpu_dispatch_run(gpu_device *g, const gpu_dispatch *d, double *seconds, gt_error *e)
+/* A dispatch built once and run per frame. */
+struct gpu_dispatch_session {
+    gpu_device *device;
+    const gpu_dispatch *dispatch;
+    dispatch_objects objects;
+};
+
+int gpu_dispatch_open(gpu_device *g, const gpu_dispatch *d, gpu_dispatch_session **out, gt_error *e)
 {
+    *out = NULL;
     if (g->busy)
         return gt_error_set(e, d->what, "the device %s is still busy with a dispatch that timed out", g->name);
-    dispatch_objects o;
-    memset(&o, 0, sizeof o);
-    int rc = check_bindings(d, e) != 0 || make_buffers(g, &o, d, e) != 0 || make_pipeline(g, &o, d, e) != 0 || make_descriptors(g, &o, d, e) != 0 ||
-                     record(g, &o, d, e) != 0 || submit(g, &o, d, seconds, e) != 0 || read_back(g, &o, d, e) != 0
-                 ? -1
-                 : 0;
-    release(g, &o);
+    gpu_dispatch_session *s = calloc(1, sizeof *s);
+    if (!s)
+        return gt_error_set(e, d->what, "out of memory");
+    s->device = g, s->dispatch = d;
+    dispatch_objects *o = &s->objects;
+    if (check_bindings(d, e) != 0 || make_buffers(g, o, d, e) != 0 || make_pipeline(g, o, d, e) != 0 ||
+        make_descriptors(g, o, d, e) != 0 || record(g, o, d, e) != 0 || make_fence(g, o, d, e) != 0) {
+        gpu_dispatch_close(s);
+        return -1;
+    }
+    *out = s;
+    return 0;
+}
+
+/* The uniform blocks from their data again: they change between frames
+ * (the frame index); inputs do not, outputs are cleared by the device. */
+static int upload_frame(gpu_dispatch_session *s, gt_error *e)
+{
+    const gpu_dispatch *d = s->dispatch;
+    for (int k = 0; k < d->buffer_count; ++k)
+        if (d->buffers[k].kind == GPU_UNIFORM && upload(s->device, &s->objects, k, &d->buffers[k], d->what, e) != 0)
+            return -1;
+    return 0;
+}
+
+int gpu_dispatch_frame(gpu_dispatch_session *s, double *seconds, gt_error *e)
+{
+    if (s->device->busy)
+        return gt_error_set(e, s->dispatch->what, "the device %s is still busy with a dispatch that timed out",
+                            s->device->name);
+    return upload_frame(s, e) != 0 || submit(s->device, &s->objects, s->dispatch, seconds, e) != 0 ||
+                   read_back(s->device, &s->objects, s->dispatch, e) != 0
+               ? -1
+               : 0;
+}
+
+void gpu_dispatch_close(gpu_dispatch_session *s)
+{
+    if (!s)
+        return;
+    release(s->device, &s->objects);
+    free(s);
+}
+
+int gpu_dispatch_run(gpu_device *g, const gpu_dispatch *d, double *seconds, gt_error *e)
+{
+    gpu_dispatch_session *s;
+    if (gpu_dispatch_open(g, d, &s, e) != 0)
+        return -1;
+    int rc = gpu_dispatch_frame(s, seconds, e);
+    gpu_dispatch_close(s);
     return rc;
 }

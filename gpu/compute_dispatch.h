@@ -1,6 +1,6 @@
 /* One compute dispatch on a gpu_device: the shader's buffers copied in,
- * one vkCmdDispatch, a fence waited for with a time limit, the output
- * buffers copied back and checked for NaN.
+ * the outputs cleared to zeros, one vkCmdDispatch, a fence waited for with
+ * a time limit, the output buffers copied back and checked for NaN.
  *
  * Buffer k is binding k of descriptor set 0: a uniform block (std140) or a
  * storage buffer (std430). A GLSL shader declares them as
@@ -28,7 +28,8 @@ typedef enum {
 typedef struct {
     const char *name; /* for messages, e.g. "ao" */
     gpu_buffer_kind kind;
-    void *data;       /* size bytes: uploaded before the dispatch; an output's read back after */
+    void *data;       /* size bytes: uploaded before the dispatch; an output (zeros on the device before
+                         each dispatch: its data is not uploaded) is read back into it after */
     size_t size;      /* > 0 */
 } gpu_buffer;
 
@@ -49,6 +50,19 @@ typedef struct {
  * overwritten all the same: the caller writes nothing), a Vulkan failure.
  * seconds (may be NULL): wall time from submission to the fence. */
 int gpu_dispatch_run(gpu_device *device, const gpu_dispatch *d, double *seconds, gt_error *e);
+
+/* The same dispatch run frame after frame, built once: the buffers,
+ * pipeline, descriptor set, command buffer and fence are made by
+ * gpu_dispatch_open (which uploads every buffer's data); each
+ * gpu_dispatch_frame uploads the uniform blocks from their data again (not
+ * the inputs: they stay as uploaded), submits (the device clears the
+ * outputs, then dispatches), waits and reads the outputs back, with
+ * gpu_dispatch_run's errors. d and its buffers must outlive the session.
+ * gpu_dispatch_run is open, one frame, close. */
+typedef struct gpu_dispatch_session gpu_dispatch_session;
+int gpu_dispatch_open(gpu_device *device, const gpu_dispatch *d, gpu_dispatch_session **out, gt_error *e);
+int gpu_dispatch_frame(gpu_dispatch_session *s, double *seconds, gt_error *e);
+void gpu_dispatch_close(gpu_dispatch_session *s); /* NULL: nothing */
 
 /* The first NaN among count floats, or -1. */
 long gpu_first_nan(const float *values, size_t count);

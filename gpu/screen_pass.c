@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/progress.h"
 #include "core/reference_schema.h"
 #include "gpu/compute_dispatch.h"
 
@@ -47,33 +48,42 @@ static void accumulate(float *out, const float *frame, size_t count, int frames)
         out[i] += frame[i] / (float)frames;
 }
 
-/* One dispatch per frame, each into `frame_out`, averaged into out. */
+/* One dispatch per frame, each into `frame_out`, averaged into out: the
+ * pipeline and the G-buffer's upload once, per frame only the Gtlab block
+ * and the outputs' read-back (the device clears them). t: the session's set-up (added),
+ * the frames' wall and device time. */
 static int run_frames(gpu_device *device, gpu_dispatch *d, gpu_screen_globals *globals, float *frame_out,
-                      float *out, size_t count, double *seconds, gt_error *e)
+                      float *out, size_t count, gpu_screen_timing *t, gt_error *e)
 {
-    int frames = globals->frames;
-    double total = 0.0;
+    int frames = globals->frames, rc = 0;
+    double start = seconds_now();
+    gpu_dispatch_session *session;
     memset(out, 0, count * sizeof *out);
-    for (int f = 0; f < frames; ++f) {
-        double t = 0.0;
+    if (gpu_dispatch_open(device, d, &session, e) != 0)
+        return -1;
+    t->setup_seconds += seconds_now() - start;
+    start = seconds_now();
+    for (int f = 0; f < frames && rc == 0; ++f) {
+        double dispatch = 0.0;
         globals->frame = f;
-        memset(frame_out, 0, count * sizeof *frame_out); /* a pixel a frame leaves unwritten is 0, not the last frame's */
-        if (gpu_dispatch_run(device, d, &t, e) != 0)
-            return -1;
-        accumulate(out, frame_out, count, frames);
-        total += t;
+        rc = gpu_dispatch_frame(session, &dispatch, e); /* outputs start as zeros: a pixel left unwritten is 0 */
+        if (rc == 0)
+            accumulate(out, frame_out, count, frames);
+        t->dispatch_seconds += dispatch / frames;
     }
-    if (seconds)
-        *seconds = total / frames;
-    return 0;
+    t->frame_seconds = (seconds_now() - start) / frames;
+    gpu_dispatch_close(session);
+    return rc;
 }
 
-int gpu_screen_pass(gpu_device *device, const gpu_spirv *shader, const char *what, const gpu_screen_input *in,
-                    const float *params, int param_count, int outputs, float *out, double timeout, double *seconds,
-                    gt_error *e)
+int gpu_screen_pass_timed(gpu_device *device, const gpu_spirv *shader, const char *what, const gpu_screen_input *in,
+                          const float *params, int param_count, int outputs, float *out, double timeout,
+                          gpu_screen_timing *timing, gt_error *e)
 {
+    double start = seconds_now();
     gpu_screen_globals globals = in->globals;
     size_t pixels = (size_t)globals.width * (size_t)globals.height, count = pixels * (size_t)outputs;
+    memset(timing, 0, sizeof *timing);
     if (globals.frames < 1 || outputs < 1 || pixels == 0)
         return gt_error_set(e, what, "nothing to run: %d frames, %d outputs, %zu pixels", globals.frames, outputs,
                             pixels);
@@ -88,10 +98,22 @@ int gpu_screen_pass(gpu_device *device, const gpu_spirv *shader, const char *wha
                       {(uint32_t)(globals.width + GPU_SCREEN_GROUP - 1) / GPU_SCREEN_GROUP,
                        (uint32_t)(globals.height + GPU_SCREEN_GROUP - 1) / GPU_SCREEN_GROUP, 1},
                       timeout};
-    int rc = packed && frame_out ? run_frames(device, &d, &globals, frame_out, out, count, seconds, e)
+    timing->setup_seconds = seconds_now() - start;
+    int rc = packed && frame_out ? run_frames(device, &d, &globals, frame_out, out, count, timing, e)
                                  : gt_error_set(e, what, "out of memory for a %dx%d G-buffer", globals.width,
                                                 globals.height);
     free(packed);
     free(frame_out);
+    return rc;
+}
+
+int gpu_screen_pass(gpu_device *device, const gpu_spirv *shader, const char *what, const gpu_screen_input *in,
+                    const float *params, int param_count, int outputs, float *out, double timeout, double *seconds,
+                    gt_error *e)
+{
+    gpu_screen_timing t;
+    int rc = gpu_screen_pass_timed(device, shader, what, in, params, param_count, outputs, out, timeout, &t, e);
+    if (seconds)
+        *seconds = t.dispatch_seconds;
     return rc;
 }

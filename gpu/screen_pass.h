@@ -79,4 +79,17 @@ int gpu_screen_pass(gpu_device *device, const gpu_spirv *shader, const char *wha
                     const float *params, int param_count, int outputs, float *out, double timeout, double *seconds,
                     gt_error *e);
 
+/* Where a pass's time goes (gpu_screen_pass_timed). */
+typedef struct {
+    double setup_seconds;    /* once: packing the G-buffer, buffers and their upload, pipeline, descriptor set */
+    double frame_seconds;    /* per frame (mean): the Gtlab block and the cleared outputs uploaded, the
+                                dispatch, the read-back, the NaN check, the accumulation */
+    double dispatch_seconds; /* per frame (mean): the device's wall time, submission to fence */
+} gpu_screen_timing;
+
+/* gpu_screen_pass, its time measured into *timing. */
+int gpu_screen_pass_timed(gpu_device *device, const gpu_spirv *shader, const char *what, const gpu_screen_input *in,
+                          const float *params, int param_count, int outputs, float *out, double timeout,
+                          gpu_screen_timing *timing, gt_error *e);
+
 #endif

@@ -1,3 +1,4 @@
+#define _GNU_SOURCE
 #include "gpu/shader_compiler.h"
 
 #include <shaderc/shaderc.h>
@@ -51,7 +52,42 @@ static int copy_spirv(shaderc_compilation_result_t result, const char *entry, co
     return 0;
 }
 
-/* Vulkan 1.1 SPIR-V, optimised for performance; HLSL with its own front end. */
+/* An #include, "f.inc" or <f.inc>, is the file f.inc beside the file that
+ * includes it (its directory; the working directory for a name without
+ * one). Nesting deeper than 32 is an error, not an endless include loop. */
+static shaderc_include_result *resolve_include(void *user, const char *requested, int type, const char *requesting,
+                                               size_t depth)
+{
+    enum { MAX_DEPTH = 32 };
+    (void)user, (void)type;
+    const char *slash = strrchr(requesting, '/');
+    int dir = slash ? (int)(slash - requesting + 1) : 0;
+    char *path = NULL, *text = NULL;
+    gt_error e = {{0}};
+    if (requested[0] == '/')
+        dir = 0;
+    if (asprintf(&path, "%.*s%s", dir, requesting, requested) < 0)
+        return NULL;
+    if (depth > MAX_DEPTH) /* a failed inclusion: no name, the message as its content */
+        path[0] = '\0', text = strdup("includes nested more than 32 deep (an include loop?)");
+    else if (gpu_read_source(path, &text, &e) != 0)
+        path[0] = '\0', text = strdup(e.message);
+    shaderc_include_result *r = calloc(1, sizeof *r);
+    if (!r || !text)
+        return free(r), free(path), free(text), NULL;
+    *r = (shaderc_include_result){path, strlen(path), text, strlen(text), NULL};
+    return r;
+}
+
+static void release_include(void *user, shaderc_include_result *r)
+{
+    (void)user;
+    if (r)
+        free((char *)r->source_name), free((char *)r->content), free(r);
+}
+
+/* Vulkan 1.1 SPIR-V, optimised for performance; HLSL with its own front end;
+ * #include resolved beside the including file. */
 static shaderc_compile_options_t compile_options(gpu_source_language language)
 {
     shaderc_compile_options_t options = shaderc_compile_options_initialize();
@@ -61,6 +97,7 @@ static shaderc_compile_options_t compile_options(gpu_source_language language)
         options, language == GPU_SOURCE_HLSL ? shaderc_source_language_hlsl : shaderc_source_language_glsl);
     shaderc_compile_options_set_target_env(options, shaderc_target_env_vulkan, shaderc_env_version_vulkan_1_1);
     shaderc_compile_options_set_optimization_level(options, shaderc_optimization_level_performance);
+    shaderc_compile_options_set_include_callbacks(options, resolve_include, release_include, NULL);
     return options;
 }
 

@@ -26,7 +26,9 @@ typedef struct {
 
 /* Compiles `source` (named `name` in messages) as a compute shader with the
  * entry point `entry` (NULL: "main"; GLSL's entry point is always main, so
- * another name is an error there). Returns 0, or -1 with e set and *out
+ * another name is an error there). `#include "f"` (or <f>) reads the file f
+ * beside the including one (name's directory for the top file), in both
+ * languages; a missing file is a compile error naming the line. Returns 0, or -1 with e set and *out
  * empty. */
 int gpu_compile_compute(const char *source, const char *name, gpu_source_language language, const char *entry,
                         gpu_spirv *out, gt_error *e);

@@ -30,6 +30,12 @@ typedef enum { SO_AO_COSINE, SO_AO_UNIFORM } so_ao_weighting;
 /* cos a_v of the visibility cone from an AO value in [0, 1]. */
 double so_visibility_cos_aperture(double ao, so_ao_weighting weighting);
 
+/* The two pieces of GTSO's apertures shared with the shaders
+ * (realtime/specular_occlusion.inc): cos a_v = sqrt(1 - saturate(ao)) of a
+ * cosine AO, and cos a_s = 2^(-3.32193 r^2). */
+double so_visibility_cos_cosine(double ao);
+double so_reflection_cos_exp2(double r);
+
 /* Phong exponent from alpha: p = 2 / alpha^2 - 2 (core/phong.h). */
 double so_phong_exponent(double alpha);
 

@@ -46,6 +46,15 @@ static int read_shader(const shader_run_request *r, run_state *s, gt_error *e)
     return 0;
 }
 
+void shader_run_camera_globals(const ss_camera *c, gpu_screen_globals *g)
+{
+    memcpy(g->right, (float[4]){c->right.x, c->right.y, c->right.z, 0.0f}, sizeof g->right);
+    memcpy(g->up, (float[4]){c->up.x, c->up.y, c->up.z, 0.0f}, sizeof g->up);
+    memcpy(g->forward, (float[4]){c->forward.x, c->forward.y, c->forward.z, 0.0f}, sizeof g->forward);
+    g->tan_half_yfov = c->tan_half_yfov;
+    g->aspect = c->aspect;
+}
+
 /* The G-buffer, its camera as binding 0 wants it, and the reference. */
 static int read_inputs(const shader_run_request *r, run_state *s, gt_error *e)
 {
@@ -54,14 +63,8 @@ static int read_inputs(const shader_run_request *r, run_state *s, gt_error *e)
     s->has_input = 1;
     if (gpu_screen_input_from_image(&s->input.img, r->gbuffer, &s->screen, e) != 0)
         return -1;
-    ss_camera c = s->input.g.camera;
-    gpu_screen_globals *g = &s->screen.globals;
-    memcpy(g->right, (float[4]){c.right.x, c.right.y, c.right.z, 0.0f}, sizeof g->right);
-    memcpy(g->up, (float[4]){c.up.x, c.up.y, c.up.z, 0.0f}, sizeof g->up);
-    memcpy(g->forward, (float[4]){c.forward.x, c.forward.y, c.forward.z, 0.0f}, sizeof g->forward);
-    g->tan_half_yfov = c.tan_half_yfov;
-    g->aspect = c.aspect;
-    g->frames = r->frames;
+    shader_run_camera_globals(&s->input.g.camera, &s->screen.globals);
+    s->screen.globals.frames = r->frames;
     if (r->reference && exr_read(r->reference, &s->reference, e) != 0)
         return -1;
     s->has_reference = r->reference != NULL;

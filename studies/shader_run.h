@@ -8,7 +8,9 @@
 #include <stdio.h>
 
 #include "core/error.h"
+#include "gpu/screen_pass.h"
 #include "metrics/image_pair.h"
+#include "realtime/screen_space.h"
 
 typedef struct {
     const char *shader;    /* F.glsl or F.hlsl */
@@ -34,6 +36,9 @@ typedef struct {
     char channel[64];
     metrics_pair_figures figures;
 } shader_run_result;
+
+/* Binding 0's camera (basis, tan_half_yfov, aspect) from a screen-space camera. */
+void shader_run_camera_globals(const ss_camera *c, gpu_screen_globals *g);
 
 /* Runs it. Returns 0, or -1 with e the one line naming the file at fault;
  * on failure nothing is written. */

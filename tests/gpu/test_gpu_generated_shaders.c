@@ -31,32 +31,10 @@
 #include "realtime/sphere_light.h"
 #include "realtime/sphere_light_shader.h"
 #include "tests/check.h"
+#include "tests/gpu/sample_shader.h"
 #include "tests/test_multibounce_models.h"
 
 static const double kU = 1.0 / 16777216.0; /* 2^-24 */
-
-/* The wrapper: `body` per sample, after the generated functions. */
-static char *compute_shader(shader_language language, const char *functions, const char *body)
-{
-    char *text = NULL;
-    int rc = language == SHADER_GLSL
-                 ? asprintf(&text,
-                            "#version 450\n%s\nlayout(local_size_x = %d) in;\n"
-                            "layout(std140, binding = 0) uniform Params { uint count; };\n"
-                            "layout(std430, binding = 1) readonly buffer In { float v[]; };\n"
-                            "layout(std430, binding = 2) writeonly buffer Out { float r[]; };\n"
-                            "void main()\n{\n    uint i = gl_GlobalInvocationID.x;\n    if (i >= count)\n"
-                            "        return;\n%s}\n",
-                            functions, GPU_SAMPLE_GROUP, body)
-                 : asprintf(&text,
-                            "%s\n[[vk::binding(0)]] cbuffer Params { uint count; };\n"
-                            "[[vk::binding(1)]] StructuredBuffer<float> v;\n"
-                            "[[vk::binding(2)]] RWStructuredBuffer<float> r;\n"
-                            "[numthreads(%d, 1, 1)]\nvoid main(uint3 id : SV_DispatchThreadID)\n{\n"
-                            "    uint i = id.x;\n    if (i >= count)\n        return;\n%s}\n",
-                            functions, GPU_SAMPLE_GROUP, body);
-    return rc < 0 ? NULL : text;
-}
 
 /* ---- Multi-bounce ---- */
 
@@ -121,7 +99,7 @@ static void test_multibounce(gpu_device *g, shader_language language)
     for (int k = 0; k < MB_MODELS; ++k)
         f[k] = (multibounce_shader_function){.name = names[k], .comment = "test", .model = m[k]};
     char *functions = multibounce_shader_source(language, "// gtlab test\n", f, MB_MODELS);
-    char *source = functions ? compute_shader(language, functions, language == SHADER_GLSL ? kMbGlslBody : kMbHlslBody)
+    char *source = functions ? test_sample_shader(language, functions, language == SHADER_GLSL ? kMbGlslBody : kMbHlslBody)
                              : NULL;
     float *in = malloc(4 * sizeof(float) * MB_SAMPLES), *out = malloc(9 * sizeof(float) * MB_SAMPLES);
     gt_error e = {{0}};
@@ -208,7 +186,7 @@ static void test_sphere_light(gpu_device *g, shader_language language)
 {
     decima_sphere_constants k = decima_sphere_published();
     char *functions = sphere_light_shader_source(language, &k, "gtlab test");
-    char *source = functions ? compute_shader(language, functions, language == SHADER_GLSL ? kSlGlslBody : kSlHlslBody)
+    char *source = functions ? test_sample_shader(language, functions, language == SHADER_GLSL ? kSlGlslBody : kSlHlslBody)
                              : NULL;
     float *in = malloc(SL_IN * sizeof(float) * SL_SAMPLES), *out = malloc(4 * sizeof(float) * SL_SAMPLES);
     gt_error e = {{0}};
