@@ -8,9 +8,11 @@
 # --resume` then writes the uninterrupted single-process file, byte for
 # byte, and removes the checkpoints. Resuming on 3 ranks, or in one
 # process, is refused in one line naming the checkpoint. A render with a
-# stopping target (rows shared among the ranks) resumes alike.
-# PART: "stops" (the test hook, the refusals, the stopping target) or
-# "signals" (SIGTERM, SIGKILL): two tests, each a few mpirun start-ups.
+# stopping target (rows shared among the ranks) resumes alike, and so do
+# multibounce, specular-occlusion, sphere-light and fog.
+# PART: "stops" (the test hook, the refusals, the stopping target),
+# "signals" (SIGTERM, SIGKILL) or "types" (the other reference types):
+# three tests, each a few mpirun start-ups.
 gtlab=$1
 work=$2
 mpirun=$3
@@ -103,6 +105,21 @@ if [ "$part" = signals ]; then
     for _ in $(seq 200); do ps -o stat= -p "$ranks" | grep -qv Z || break; sleep 0.05; done
     stopped "SIG$signal"
     resumed "SIG$signal" big.exr "${big[@]}"
+  done
+fi
+
+if [ "$part" = types ]; then
+  # Each other reference type (several quantities, listed in another order
+  # than the checkpoint's channels) stopped after one block of 64 samples
+  # (each rank has 65), resumed on 2 ranks.
+  size=(--width 20 --height 14 --seed 3 --threads 1 --spp 130)
+  for name in "${!other_references[@]}"; do
+    read -r -a args <<<"${other_references[$name]}"
+    expect_ok "$name-whole" render "${args[@]}" "${size[@]}" -o "$name.exr"
+    mpi 2 GTLAB_STOP_AFTER_BLOCKS=1 -- render "${args[@]}" "${size[@]}" -o r.exr >/dev/null 2>&1
+    status=$?
+    stopped "$name"
+    resumed "$name" "$name.exr" "${args[@]}" "${size[@]}"
   done
 fi
 

@@ -5,7 +5,8 @@
 # block) leaves F.checkpoint.exr and no F.exr; `--resume` finishes it into
 # the same file, byte for byte, as the uninterrupted render, and removes the
 # checkpoint. A checkpoint of another render is refused. Renders with a
-# stopping target checkpoint by rows, with the same guarantee.
+# stopping target checkpoint by rows, with the same guarantee; so do the
+# other reference types (multibounce, specular-occlusion, sphere-light, fog).
 gtlab=$1
 work=$2
 rm -rf "$work" && mkdir -p "$work"
@@ -48,6 +49,19 @@ GTLAB_STOP_AFTER_BLOCKS=1 stopped_render adaptive-stop-2 143 "${adaptive[@]}" --
 expect_ok adaptive-resume render "${adaptive[@]}" --resume -o r.exr
 cmp -s adaptive.exr r.exr && pass || fail "adaptive, stopped twice and resumed: not the uninterrupted file"
 rm -f r.exr r.checkpoint.exr
+
+# The other reference types (several quantities each, which the checkpoint
+# lists in its channels' order, not the integrator's): stopped after one
+# block, resumed, the bits of the whole render.
+size=(--width 12 --height 8 --seed 3 --threads 1 --spp 130)
+for name in "${!other_references[@]}"; do
+  read -r -a args <<<"${other_references[$name]}"
+  expect_ok "$name-whole" render "${args[@]}" "${size[@]}" -o "$name.exr"
+  GTLAB_STOP_AFTER_BLOCKS=1 stopped_render "$name-stop" 143 "${args[@]}" "${size[@]}"
+  expect_ok "$name-resume" render "${args[@]}" "${size[@]}" --resume -o r.exr
+  cmp -s "$name.exr" r.exr && pass || fail "$name, stopped and resumed: not the uninterrupted file"
+  rm -f r.exr r.checkpoint.exr
+done
 
 # Real signals: SIGTERM, then SIGKILL (a killed job), once a checkpoint
 # exists (written after every block here); each resumed to the same file.
