@@ -34,7 +34,7 @@ mpi_command() {
   cmd=("$mpirun" "${env[@]}" --allow-run-as-root --oversubscribe --mca pml ob1 --mca btl self,vader -n "$n" "$gtlab" "$@")
 }
 mpi() { mpi_command "$@" && "${cmd[@]}"; }
-checkpoints() { ls r.checkpoint.* 2>/dev/null | tr '\n' ' '; }
+checkpoints() { ls r.checkpoint.rank*-of-*.exr 2>/dev/null | tr "\n" " "; } # (a SIGKILL may leave a temporary beside them)
 both="r.checkpoint.rank0-of-2.exr r.checkpoint.rank1-of-2.exr "
 
 # stopped NAME: the job must have failed, left both checkpoints, no r.exr.
