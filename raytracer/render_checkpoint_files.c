@@ -61,6 +61,21 @@ static int other_count_checkpoint(const char *dir, const char *base, int ranks, 
     return found_count;
 }
 
+/* The refusal of `found` (in the output's folder, dir_length characters of
+ * output_path), a checkpoint of a run on `count` processes. */
+static int refuse_other_count(const char *output_path, int dir_length, const char *found, int count, int ranks,
+                              gt_error *e)
+{
+    char path[4096], how[64];
+    snprintf(path, sizeof path, "%.*s%s", dir_length, output_path, found);
+    if (count == 1)
+        snprintf(how, sizeof how, "one process (no mpirun)");
+    else
+        snprintf(how, sizeof how, "mpirun -n %d", count);
+    return gt_error_set(e, path, "a checkpoint of this output from a run on %d process(es), this one has %d: "
+                                 "resume it with %s, or remove it", count, ranks, how);
+}
+
 int render_checkpoint_prepare(const char *output_path, int resume, char *out, int out_size, gt_error *e)
 {
     render_checkpoint_path(output_path, out, out_size);
@@ -72,16 +87,7 @@ int render_checkpoint_prepare(const char *output_path, int resume, char *out, in
     snprintf(dir, sizeof dir, "%.*s", dir_length ? dir_length : 1, dir_length ? output_path : ".");
     snprintf(base, sizeof base, "%.*s", stem_length(name), name);
     int count = other_count_checkpoint(dir, base, ranks, found, sizeof found);
-    if (count == 0)
-        return 0;
-    char path[4096], how[64];
-    snprintf(path, sizeof path, "%.*s%s", dir_length, output_path, found);
-    if (count == 1)
-        snprintf(how, sizeof how, "one process (no mpirun)");
-    else
-        snprintf(how, sizeof how, "mpirun -n %d", count);
-    return gt_error_set(e, path, "a checkpoint of this output from a run on %d process(es), this one has %d: "
-                                 "resume it with %s, or remove it", count, ranks, how);
+    return count == 0 ? 0 : refuse_other_count(output_path, dir_length, found, count, ranks, e);
 }
 
 void render_checkpoint_finish(const char *checkpoint_path, int written)

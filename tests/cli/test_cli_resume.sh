@@ -40,6 +40,16 @@ GTLAB_STOP_AFTER_BLOCKS=1 stopped_render other 143 "${other[@]}"
 expect_error other-checkpoint "r.checkpoint.exr: a checkpoint of another render" r.exr -- render "${small[@]}" --resume -o r.exr
 rm -f r.checkpoint.exr
 
+# Checkpoints of the output from a run on another number of processes
+# (mpirun -n N leaves F.checkpoint.rank<r>-of-<N>.exr) are refused by
+# --resume, naming the file; a temporary, or another output's, is not one.
+mkdir -p sub && touch sub/r.checkpoint.rank1-of-4.exr.writing-7 sub/r2.checkpoint.rank0-of-2.exr
+expect_ok not-ours render "${small[@]}" --resume -o sub/r.exr
+touch sub/r.checkpoint.rank1-of-4.exr
+expect_error other-count "sub/r.checkpoint.rank1-of-4.exr: a checkpoint of this output from a run on 4 process(es), this one has 1: resume it with mpirun -n 4, or remove it" \
+  sub/r.exr -- render "${small[@]}" --resume -o sub/r.exr
+rm -rf sub
+
 # A render with a stopping target checkpoints by rows (8 at a time here):
 # stopped after 1 block of rows, resumed, the bits of the whole render.
 adaptive=(ao --scene builtin:cornell --width 24 --height 20 --spp 4096 --target-stderr 0.02 --seed 9 --threads 1)
