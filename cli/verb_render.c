@@ -33,7 +33,8 @@ static const cli_option common_options[] = {
                "(checked at 64, 128, 256, ... samples; default 0: never)"),
     CLI_CHOICE("normal", "shading|geometric", normal_name, 2, "normal the hemisphere is built on"),
     CLI_INT32("threads", "T", 1, 1024, "worker threads (default: all cores); the output does not\ndepend on it"),
-    CLI_FLAG("resume", "continue from F.checkpoint.exr, left by an interrupted render\n(the bits of an uninterrupted one; under mpirun -n N each\nrank its F.checkpoint.rank<r>-of-<N>.exr, N as before)"),
+    CLI_FLAG("resume", "continue from F.checkpoint.exr, left by an interrupted render\n(the bits of an uninterrupted one; "
+             "under mpirun -n N each\nrank its F.checkpoint.rank<r>-of-<N>.exr, N as before)"),
     CLI_OUTPUT("F.exr", 0, "output EXR; the camera used goes to F.camera.json")};
 enum { COMMON_OPTIONS = sizeof common_options / sizeof common_options[0] };
 
