@@ -11,7 +11,7 @@
 #include "core/exr_io.h"
 #include "raytracer/distributed_render.h"
 #include "raytracer/reference_render.h"
-#include "raytracer/render_checkpoint.h"
+#include "raytracer/render_checkpoint_files.h"
 #include "scene/scene_loaders.h"
 #include "core/threads.h"
 
@@ -33,7 +33,8 @@ static const cli_option common_options[] = {
                "(checked at 64, 128, 256, ... samples; default 0: never)"),
     CLI_CHOICE("normal", "shading|geometric", normal_name, 2, "normal the hemisphere is built on"),
     CLI_INT32("threads", "T", 1, 1024, "worker threads (default: all cores); the output does not\ndepend on it"),
-    CLI_FLAG("resume", "continue from F.checkpoint.exr, left by an interrupted render\n(the bits of an uninterrupted one)"),
+    CLI_FLAG("resume", "continue from F.checkpoint.exr, left by an interrupted render\n(the bits of an uninterrupted one; "
+             "under mpirun -n N each\nrank its F.checkpoint.rank<r>-of-<N>.exr, N as before)"),
     CLI_OUTPUT("F.exr", 0, "output EXR; the camera used goes to F.camera.json")};
 enum { COMMON_OPTIONS = sizeof common_options / sizeof common_options[0] };
 
@@ -146,12 +147,13 @@ static int render(const render_options *o)
     gt_error e;
     char camera_path[ATOMIC_PATH_MAX], checkpoint[ATOMIC_PATH_MAX];
     camera_sidecar_path(o->output, camera_path, sizeof camera_path);
-    render_checkpoint_path(o->output, checkpoint, sizeof checkpoint);
     reference_request request = o->request;
     request.checkpoint = checkpoint;
     if (atomic_file_check_writable(o->output, &e) != 0 || atomic_file_check_writable(camera_path, &e) != 0 ||
         distributed_begin(&e) != 0)
         return cli_fail(&e);
+    if (render_checkpoint_prepare(o->output, request.resume, checkpoint, sizeof checkpoint, &e) != 0)
+        return distributed_is_writer() ? cli_fail(&e) : EXIT_USER_ERROR; /* every rank finds it: rank 0 says it */
     scene s;
     if (scene_load(o->scene, &s, &e) != 0)
         return cli_fail(&e);
@@ -170,10 +172,9 @@ static int render(const render_options *o)
             printf("%s: %dx%d, %.3g samples, %.3g rays in %.2f s (%.3g rays/s)\n", o->output,
                     cam.width, cam.height, (double)stats.samples, (double)stats.rays, stats.seconds,
                     stats.seconds > 0 ? (double)stats.rays / stats.seconds : 0.0);
-        if (writer && status == EXIT_OK)
-            remove(checkpoint); /* the render is whole: its checkpoint has served */
         image_free(&out);
     }
+    render_checkpoint_finish(checkpoint, status == EXIT_OK); /* every rank: removed once rank 0 wrote */
     scene_free(&s);
     return status;
 }

@@ -224,36 +224,57 @@ void mc_film_clear_rows(mc_film *film, int first_row, int end_row)
     memset(film->count_even + first, 0, n * sizeof *film->count_even);
 }
 
+/* The index of the quantity named `name` in the film, or -1. */
+static int quantity_named(const mc_film *film, const char *name)
+{
+    for (int q = 0; q < film->quantity_count; ++q)
+        if (strcmp(film->quantities[q].name, name) == 0)
+            return q;
+    return -1;
+}
+
+/* For every quantity of dst the index of the same quantity (by name, on
+ * the same grid) in src, else -1 with e. */
+static int match_quantities(const mc_film *dst, const mc_film *src, int from[MC_FILM_MAX_QUANTITIES],
+                            const char *what, gt_error *e)
+{
+    if (dst->quantity_count != src->quantity_count)
+        return gt_error_set(e, what, "holds different quantities");
+    for (int q = 0; q < dst->quantity_count; ++q) {
+        const mc_quantity *d = &dst->quantities[q];
+        if ((from[q] = quantity_named(src, d->name)) < 0)
+            return gt_error_set(e, what, "holds different quantities (no %s)", d->name);
+        /* Sums on different grids would no longer be exact. */
+        if (d->scale_exponent != src->quantities[from[q]].scale_exponent)
+            return gt_error_set(e, what, "%s was accumulated on another grid (scale exponent %d vs %d)", d->name,
+                                src->quantities[from[q]].scale_exponent, d->scale_exponent);
+    }
+    return 0;
+}
+
 int mc_film_merge(mc_film *dst, const mc_film *src, const char *what, gt_error *e)
 {
+    int from[MC_FILM_MAX_QUANTITIES];
     if (mc_film_check_moments(src, what, e) != 0 || mc_film_check_moments(dst, "the first input", e) != 0)
         return -1;
     if (dst->width != src->width || dst->height != src->height)
         return gt_error_set(e, what, "size %dx%d differs from %dx%d", src->width, src->height, dst->width,
                             dst->height);
-    if (dst->quantity_count != src->quantity_count)
-        return gt_error_set(e, what, "holds different quantities");
-    for (int q = 0; q < dst->quantity_count; ++q) {
-        if (strcmp(dst->quantities[q].name, src->quantities[q].name) != 0)
-            return gt_error_set(e, what, "holds different quantities (%s vs %s)", src->quantities[q].name,
-                                dst->quantities[q].name);
-        /* Sums on different grids would no longer be exact. */
-        if (dst->quantities[q].scale_exponent != src->quantities[q].scale_exponent)
-            return gt_error_set(e, what, "%s was accumulated on another grid (scale exponent %d vs %d)",
-                                src->quantities[q].name, src->quantities[q].scale_exponent,
-                                dst->quantities[q].scale_exponent);
-    }
+    if (match_quantities(dst, src, from, what, e) != 0)
+        return -1;
     for (size_t p = 0; p < pixel_count(dst); ++p)
         if ((double)dst->count[p] + (double)src->count[p] > MC_FILM_MAX_COUNT)
             return gt_error_set(e, what,
                                 "pixel %zu would hold %.0f samples, more than %.0f (2^32), the range in which "
                                 "gtlab keeps its sums exact: merge fewer parts into one file",
                                 p, (double)dst->count[p] + (double)src->count[p], MC_FILM_MAX_COUNT);
-    size_t n = pixel_count(dst) * (size_t)dst->quantity_count;
-    for (size_t i = 0; i < n; ++i) {
-        dst->sum[i] = mc_grid_sum_add(dst->sum[i], src->sum[i]);
-        dst->sum_even[i] = mc_grid_sum_add(dst->sum_even[i], src->sum_even[i]);
-        moment_sums_merge(&dst->moments[i], &src->moments[i]);
+    for (int q = 0; q < dst->quantity_count; ++q) {
+        size_t d = (size_t)q * pixel_count(dst), s = (size_t)from[q] * pixel_count(dst);
+        for (size_t p = 0; p < pixel_count(dst); ++p) {
+            dst->sum[d + p] = mc_grid_sum_add(dst->sum[d + p], src->sum[s + p]);
+            dst->sum_even[d + p] = mc_grid_sum_add(dst->sum_even[d + p], src->sum_even[s + p]);
+            moment_sums_merge(&dst->moments[d + p], &src->moments[s + p]);
+        }
     }
     for (size_t p = 0; p < pixel_count(dst); ++p) {
         dst->count[p] += src->count[p];

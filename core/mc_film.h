@@ -144,8 +144,10 @@ int mc_film_read_channels(const image *img, const char *what, mc_film *film, gt_
 /* 0 when the film has moment sums, else -1 with e naming `what`: a file
  * written before issue 23, whose standard errors cannot be rebuilt. */
 int mc_film_check_moments(const mc_film *film, const char *what, gt_error *e);
-/* dst += src (same size and quantities). Exact. Refuses films without
- * moment sums (mc_film_check_moments), naming the file. */
+/* dst += src (same size and quantities, matched by name: a film read from
+ * a file lists them in the file's channel order, a rendered one in the
+ * integrator's). Exact. Refuses films without moment sums
+ * (mc_film_check_moments), naming the file. */
 int mc_film_merge(mc_film *dst, const mc_film *src, const char *what, gt_error *e);
 /* Empties the pixels of rows [first_row, end_row): sums, moments and
  * counts back to the state mc_film_init leaves (an interrupted block of

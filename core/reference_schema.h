@@ -226,6 +226,7 @@
 #define ATTR_BLOCKS "gtlab.sample_blocks" /* "seed:offset+count ..." */
 #define ATTR_CHECKPOINT_OF "gtlab.checkpoint_of" /* a checkpoint: the header of the render it belongs to */
 #define ATTR_CHECKPOINT_ROWS "gtlab.checkpoint_rows" /* an adaptive render's checkpoint: the rows finished */
+#define ATTR_CHECKPOINT_RANK "gtlab.checkpoint_rank" /* an MPI rank's checkpoint: "r/N", its rank of N */
 #define ATTR_ALBEDOS "gtlab.albedos"     /* multibounce: the albedo list */
 #define ATTR_BOUNCES "gtlab.bounces"     /* multibounce: bounce count or "inf" */
 #define ATTR_NORMALIZED "gtlab.normalized" /* "layer layer ...": vector layers written normalised */

@@ -47,6 +47,8 @@ int distributed_is_writer(void);
  * summed, seconds the longest rank's); other ranks send theirs and keep
  * them. Alone: nothing. Returns 0, or -1 with e. */
 int distributed_reduce_film(mc_film *film, render_stats *stats, gt_error *e);
+/* Whether ok is non-zero on every rank (all ranks must call it); alone: ok. */
+int distributed_all(int ok);
 
 /* The block of the samples [ss->sample_offset, + ss->spp) rank r of n
  * renders with a fixed spp: floor(r spp / n) to floor((r + 1) spp / n). */

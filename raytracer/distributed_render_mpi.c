@@ -124,3 +124,11 @@ int distributed_reduce_film(mc_film *film, render_stats *stats, gt_error *e)
     reduce_stats(stats, share.rank);
     return rc;
 }
+
+int distributed_all(int ok)
+{
+    int all = ok != 0;
+    if (distributed_share().ranks > 1)
+        MPI_Allreduce(MPI_IN_PLACE, &all, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+    return all;
+}

@@ -26,3 +26,5 @@ int distributed_reduce_film(mc_film *film, render_stats *stats, gt_error *e)
     (void)film, (void)stats, (void)e;
     return 0;
 }
+
+int distributed_all(int ok) { return ok != 0; }

@@ -7,7 +7,6 @@
 #include <string.h>
 
 #include "core/reference_schema.h"
-#include "raytracer/distributed_render.h"
 #include "raytracer/render_checkpoint.h"
 #include "scene/scene_hash.h"
 
@@ -81,17 +80,15 @@ static char *render_identity(const reference_pass *pass)
     return text;
 }
 
-/* With a checkpoint path and one process: in blocks (of samples, or of rows
- * when adaptive) that survive an interruption (raytracer/render_checkpoint.h);
- * else in one pass. */
+/* With a checkpoint path (this process's; under mpirun each rank's own):
+ * in blocks (of samples, or of rows when adaptive) that survive an
+ * interruption (raytracer/render_checkpoint.h); else in one pass. */
 static int render_samples(const reference_pass *pass, const integrator *it, mc_film *film, render_stats *stats,
                           gt_error *e)
 {
     const reference_request *req = pass->req;
     const sampling_settings *ss = &req->sampling;
-    if (req->resume && distributed_share().ranks > 1)
-        return gt_error_set(e, "--resume", "renders under mpirun take no checkpoints");
-    if (!req->checkpoint || distributed_share().ranks > 1)
+    if (!req->checkpoint)
         return render_estimates(pass->gb, it, ss, film, stats, e);
     char *identity = render_identity(pass);
     if (!identity)

@@ -47,8 +47,9 @@ typedef struct reference_request {
     float roughness;                  /* specular-occlusion only: perceptual roughness, < 0: the material's */
     environment_kind environment;     /* specular-occlusion only: sky adds the split-integral channels */
     void *settings;                   /* a later quantity's own settings, or NULL */
-    /* Where a fixed-spp render in one process keeps its checkpoint
-     * (raytracer/render_checkpoint.h), or NULL: no checkpoints. */
+    /* Where this process keeps its checkpoint (raytracer/render_checkpoint.h;
+     * under mpirun each rank its own: render_checkpoint_files.h), or NULL:
+     * no checkpoints. */
     const char *checkpoint;
     int resume; /* continue from the checkpoint there */
 } reference_request;

@@ -12,6 +12,7 @@
 #include "core/exr_io.h"
 #include "core/progress.h"
 #include "core/reference_schema.h"
+#include "raytracer/distributed_render.h"
 #include "raytracer/sample_blocks.h"
 
 static volatile sig_atomic_t stop_signal; /* the signal that asked to stop, or 0 */
@@ -40,27 +41,33 @@ static void restore_stop_signals(const struct sigaction saved[3])
         sigaction(stop_signals[i], &saved[i], NULL);
 }
 
-void render_checkpoint_path(const char *output_path, char *out, int out_size)
-{
-    size_t n = strlen(output_path);
-    int stem = n >= 4 && strcmp(output_path + n - 4, ".exr") == 0 ? (int)n - 4 : (int)n;
-    snprintf(out, (size_t)out_size, "%.*s.checkpoint.exr", stem, output_path);
-}
-
 /* What a block is: CHECKPOINT_BLOCK samples of every pixel (a fixed spp),
- * or CHECKPOINT_ROWS rows, each pixel to its stopping target (adaptive). */
+ * or CHECKPOINT_ROWS rows, each pixel to its stopping target (adaptive).
+ * Under mpirun the samples are the rank's share (ss is already it), and the
+ * rows rank r's of N: rows r, r + N, r + 2N, ..., counted 0, 1, 2, ... */
 typedef struct {
     int by_rows;
-    uint32_t total, step; /* samples or rows */
+    uint32_t total, step;  /* samples or rows */
+    int first_row, stride; /* row k of this process is first_row + k * stride */
 } block_units;
 
-static block_units units_of(const gbuffer *gb, const sampling_settings *ss)
+static block_units units_of(const gbuffer *gb, const sampling_settings *ss, render_share share)
 {
-    int by_rows = ss->target_stderr > 0.0 || ss->target_rel_stderr > 0.0;
     int rows = ss->threads * 4 > CHECKPOINT_ROWS ? ss->threads * 4 : CHECKPOINT_ROWS; /* keep every thread busy */
-    block_units u = {by_rows, by_rows ? (uint32_t)gb->height : (uint32_t)ss->spp,
-                     by_rows ? (uint32_t)rows : CHECKPOINT_BLOCK};
-    return u;
+    int my_rows = gb->height > share.rank ? (gb->height - share.rank + share.ranks - 1) / share.ranks : 0;
+    if (ss->target_stderr > 0.0 || ss->target_rel_stderr > 0.0)
+        return (block_units){1, (uint32_t)my_rows, (uint32_t)rows, share.rank, share.ranks};
+    return (block_units){0, (uint32_t)distributed_sample_share(ss, share).spp, CHECKPOINT_BLOCK, 0, 1};
+}
+
+/* "r/N" for rank r of N (N > 1), else "": what ATTR_CHECKPOINT_RANK holds. */
+static void rank_text(char *out, size_t size)
+{
+    render_share share = distributed_share();
+    if (share.ranks > 1)
+        snprintf(out, size, "%d/%d", share.rank, share.ranks);
+    else
+        out[0] = '\0';
 }
 
 static double env_number(const char *name, double fallback)
@@ -82,7 +89,10 @@ static int write_checkpoint(const render_checkpoint *cp, const sampling_settings
     if (image_init(&img, film->width, film->height) != 0)
         return gt_error_set(e, cp->path, "out of memory for the checkpoint");
     int rc = mc_film_write_channels(film, &img) | image_set_attribute(&img, ATTR_CHECKPOINT_OF, cp->identity);
-    char blocks[64], rows[32];
+    char blocks[64], rows[32], rank[32];
+    rank_text(rank, sizeof rank);
+    if (rank[0])
+        rc |= image_set_attribute(&img, ATTR_CHECKPOINT_RANK, rank);
     snprintf(blocks, sizeof blocks, "%" PRIu32 ":%" PRIu32 "+%" PRIu32, ss->seed, ss->sample_offset,
              u.by_rows ? (uint32_t)ss->spp : done);
     rc |= image_set_attribute(&img, ATTR_BLOCKS, blocks);
@@ -116,10 +126,16 @@ static int checkpoint_done(const image *img, const render_checkpoint *cp, const 
                            block_units u, uint32_t *done, gt_error *e)
 {
     const char *of = image_get_attribute(img, ATTR_CHECKPOINT_OF);
+    const char *its_rank = image_get_attribute(img, ATTR_CHECKPOINT_RANK);
+    char rank[32];
+    rank_text(rank, sizeof rank);
     if (!of || strcmp(of, cp->identity) != 0)
         return gt_error_set(e, cp->path, "a checkpoint of another render (its %s differs): remove it, or render "
                                          "without --resume",
                             ATTR_CHECKPOINT_OF);
+    if (strcmp(its_rank ? its_rank : "", rank) != 0)
+        return gt_error_set(e, cp->path, "a checkpoint of another process (its %s is '%s', this one's '%s')",
+                            ATTR_CHECKPOINT_RANK, its_rank ? its_rank : "", rank);
     sample_block b;
     int n;
     if (sample_blocks_parse(image_get_attribute(img, ATTR_BLOCKS), cp->path, &b, 1, &n, e) != 0)
@@ -158,14 +174,15 @@ static uint32_t block_size(block_units u, uint32_t done)
     return u.total - done < u.step ? u.total - done : u.step;
 }
 
-/* A block of rows straight into the film: its rows were empty before, so
- * an interrupted block is taken back by emptying them again. */
-static int render_row_block(const gbuffer *gb, const integrator *it, const sampling_settings *ss, uint32_t done,
-                            uint32_t size, mc_film *film, render_stats *stats)
+/* A block of this process's rows straight into the film: its rows were
+ * empty before, so an interrupted block is taken back by emptying them. */
+static int render_row_block(const gbuffer *gb, const integrator *it, const sampling_settings *ss, block_units u,
+                            uint32_t done, uint32_t size, mc_film *film, render_stats *stats)
 {
-    int rc = render_estimates_add_rows(gb, it, ss, (int)done, (int)(done + size), film, stats, &stop_signal);
-    if (rc != 0)
-        mc_film_clear_rows(film, (int)done, (int)(done + size));
+    int first = u.first_row + (int)done * u.stride, end = u.first_row + (int)(done + size) * u.stride;
+    int rc = render_estimates_add_rows(gb, it, ss, first, u.stride, end, film, stats, &stop_signal);
+    for (int y = first; rc != 0 && y < end && y < gb->height; y += u.stride)
+        mc_film_clear_rows(film, y, y + 1);
     return rc;
 }
 
@@ -178,7 +195,7 @@ static int render_block(const gbuffer *gb, const integrator *it, const sampling_
     sampling_settings b = *ss;
     uint32_t size = block_size(u, done);
     if (u.by_rows)
-        return render_row_block(gb, it, ss, done, size, film, stats);
+        return render_row_block(gb, it, ss, u, done, size, film, stats);
     b.sample_offset = ss->sample_offset + done, b.spp = (int)size;
     mc_film block;
     if (render_estimates_film(gb, it, &block, e) != 0)
@@ -226,14 +243,20 @@ int render_estimates_checkpointed(const gbuffer *gb, const integrator *it, const
     struct sigaction saved[3];
     catch_stop_signals(saved);
     uint32_t done;
-    block_units u = units_of(gb, ss);
-    int rc = resume_from(cp, ss, u, film, &done, e);
+    const render_share share = distributed_share();
+    const block_units u = units_of(gb, ss, share);
+    const sampling_settings mine = u.by_rows ? *ss : distributed_sample_share(ss, share);
+    int rc = resume_from(cp, &mine, u, film, &done, e);
     if (rc == 0)
-        rc = render_blocks(gb, it, ss, cp, u, done, film, stats, e);
+        rc = render_blocks(gb, it, &mine, cp, u, done, film, stats, e);
     const int stopped_by = stop_signal;
     restore_stop_signals(saved);
     if (stopped_by)
         raise(stopped_by); /* gtlab's handler: roll back, exit 128 + signal */
+    if (!distributed_all(rc == 0) && rc == 0) /* under mpirun no rank waits for a failed one's film */
+        rc = gt_error_set(e, cp->path, "another rank failed (its error is above): nothing written");
+    if (rc == 0)
+        rc = distributed_reduce_film(film, stats, e); /* under mpirun: the job's film on rank 0 */
     if (rc != 0)
         mc_film_free(film);
     return rc;

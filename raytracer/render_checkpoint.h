@@ -1,7 +1,7 @@
 /* A render that survives its interruption (issue 20): the samples are
  * rendered in blocks of CHECKPOINT_BLOCK per pixel, and the exact
  * accumulators of the completed blocks (core/mc_film.h) are saved beside
- * the output as "F.checkpoint.exr" (render_checkpoint_path): every
+ * the output as "F.checkpoint.exr" (render_checkpoint_files.h): every
  * CHECKPOINT_SECONDS, and when SIGINT, SIGTERM or SIGHUP arrives (the block
  * under way is dropped, the checkpoint written, then the signal takes its
  * course: gtlab's handler rolls the outputs back and exits 128 + signal).
@@ -29,25 +29,27 @@
  * range). A pixel's samples depend only on the pixel and the seed, so the
  * resumed film is again the uninterrupted one, bit for bit.
  *
- * Only renders in one process take checkpoints: MPI ranks hold parts of
- * the sums (docs/decisions.md, "Beyond one machine"). */
+ * Under mpirun every rank checkpoints its own share (its block of every
+ * pixel's samples, or its rows) in a file of its own, marked with its rank
+ * of N (ATTR_CHECKPOINT_RANK), and resumes it alone; the finished shares
+ * are then reduced to rank 0 (raytracer/distributed_render.h) as without
+ * checkpoints, so the bits are again one process's. Where the files live:
+ * raytracer/render_checkpoint_files.h. */
 #ifndef GTLAB_RAYTRACER_RENDER_CHECKPOINT_H
 #define GTLAB_RAYTRACER_RENDER_CHECKPOINT_H
 
 #include "core/error.h"
+#include "raytracer/render_checkpoint_files.h"
 #include "raytracer/render_loop.h"
 
 enum { CHECKPOINT_BLOCK = 64, CHECKPOINT_ROWS = 8 };
 #define CHECKPOINT_SECONDS 60.0
 
 typedef struct {
-    const char *path;     /* the checkpoint file (render_checkpoint_path) */
+    const char *path;     /* this process's checkpoint file (render_checkpoint_path) */
     const char *identity; /* the render's header as text: what the checkpoint must belong to */
     int resume;           /* continue from the checkpoint at path, if there is one */
 } render_checkpoint;
-
-/* "F.checkpoint.exr" for the output "F.exr" (else "<output>.checkpoint.exr"). */
-void render_checkpoint_path(const char *output_path, char *out, int out_size);
 
 /* render_estimates in blocks, with checkpoints. Returns 0, or -1 with e. */
 int render_estimates_checkpointed(const gbuffer *gb, const integrator *it, const sampling_settings *ss,

@@ -172,13 +172,14 @@ int render_estimates_film(const gbuffer *gb, const integrator *it, mc_film *film
 int render_estimates_add(const gbuffer *gb, const integrator *it, const sampling_settings *ss, mc_film *film,
                          render_stats *stats, const volatile sig_atomic_t *stop)
 {
-    return render_estimates_add_rows(gb, it, ss, 0, gb->height, film, stats, stop);
+    return render_estimates_add_rows(gb, it, ss, 0, 1, gb->height, film, stats, stop);
 }
 
 int render_estimates_add_rows(const gbuffer *gb, const integrator *it, const sampling_settings *ss, int first_row,
-                              int end_row, mc_film *film, render_stats *stats, const volatile sig_atomic_t *stop)
+                              int row_step, int end_row, mc_film *film, render_stats *stats,
+                              const volatile sig_atomic_t *stop)
 {
-    const work_share w = {*ss, first_row, 1, end_row};
+    const work_share w = {*ss, first_row, row_step, end_row};
     render_rows(gb, it, &w, film, stats, stop);
     return stop && *stop ? 1 : 0;
 }

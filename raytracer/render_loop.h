@@ -113,16 +113,18 @@ int render_estimates(const gbuffer *gb, const integrator *it, const sampling_set
                      render_stats *stats, gt_error *e);
 
 /* For a render in blocks (raytracer/render_checkpoint.h): an empty film of
- * the integrator's quantities; then the samples of ss (a fixed spp, one
- * process) added at every masked pixel, stats added to. When *stop
- * becomes non-zero (stop may be NULL) the rows left are skipped and 1 is
+ * the integrator's quantities; then the samples of ss (a fixed spp; not
+ * shared among MPI ranks: the caller gives each rank its share) added at
+ * every masked pixel, stats added to. When *stop becomes non-zero (stop may be NULL) the rows left are skipped and 1 is
  * returned: the film then holds part of the block. */
 int render_estimates_film(const gbuffer *gb, const integrator *it, mc_film *film, gt_error *e);
 int render_estimates_add(const gbuffer *gb, const integrator *it, const sampling_settings *ss, mc_film *film,
                          render_stats *stats, const volatile sig_atomic_t *stop);
-/* The same over the rows [first_row, end_row) only, every pixel to its
- * stopping target when ss has one (an adaptive render in blocks of rows). */
+/* The same over the rows first_row, first_row + row_step, ... below
+ * end_row only, every pixel to its stopping target when ss has one (an
+ * adaptive render in blocks of rows; under mpirun a rank's rows). */
 int render_estimates_add_rows(const gbuffer *gb, const integrator *it, const sampling_settings *ss, int first_row,
-                              int end_row, mc_film *film, render_stats *stats, const volatile sig_atomic_t *stop);
+                              int row_step, int end_row, mc_film *film, render_stats *stats,
+                              const volatile sig_atomic_t *stop);
 
 #endif

@@ -80,6 +80,15 @@ expect_shader_compiles() {
   [ $? -eq 0 ] && pass || fail "$name: $file does not compile as $lang: $(head -c 600 "$work/$name.log")"
 }
 
+# The reference types beside ao, each with a small scene and its own
+# options (size, spp and seed left to the test): several quantities each.
+declare -A other_references=(
+  [multibounce]="multibounce --scene builtin:boxes --albedo 0.2,0.8"
+  [specular-occlusion]="specular-occlusion --scene builtin:corner --roughness 0.4 --environment sky"
+  [sphere-light]="sphere-light --scene builtin:plane --light-position 0,2,-3 --light-radius 0.5"
+  [fog]="fog --scene builtin:cornell"
+)
+
 finish() {
   echo "$passed passed, $failed failed"
   [ "$failed" -eq 0 ]

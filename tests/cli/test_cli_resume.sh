@@ -5,7 +5,8 @@
 # block) leaves F.checkpoint.exr and no F.exr; `--resume` finishes it into
 # the same file, byte for byte, as the uninterrupted render, and removes the
 # checkpoint. A checkpoint of another render is refused. Renders with a
-# stopping target checkpoint by rows, with the same guarantee.
+# stopping target checkpoint by rows, with the same guarantee; so do the
+# other reference types (multibounce, specular-occlusion, sphere-light, fog).
 gtlab=$1
 work=$2
 rm -rf "$work" && mkdir -p "$work"
@@ -39,6 +40,16 @@ GTLAB_STOP_AFTER_BLOCKS=1 stopped_render other 143 "${other[@]}"
 expect_error other-checkpoint "r.checkpoint.exr: a checkpoint of another render" r.exr -- render "${small[@]}" --resume -o r.exr
 rm -f r.checkpoint.exr
 
+# Checkpoints of the output from a run on another number of processes
+# (mpirun -n N leaves F.checkpoint.rank<r>-of-<N>.exr) are refused by
+# --resume, naming the file; a temporary, or another output's, is not one.
+mkdir -p sub && touch sub/r.checkpoint.rank1-of-4.exr.writing-7 sub/r2.checkpoint.rank0-of-2.exr
+expect_ok not-ours render "${small[@]}" --resume -o sub/r.exr
+touch sub/r.checkpoint.rank1-of-4.exr
+expect_error other-count "sub/r.checkpoint.rank1-of-4.exr: a checkpoint of this output from a run on 4 process(es), this one has 1: resume it with mpirun -n 4, or remove it" \
+  sub/r.exr -- render "${small[@]}" --resume -o sub/r.exr
+rm -rf sub
+
 # A render with a stopping target checkpoints by rows (8 at a time here):
 # stopped after 1 block of rows, resumed, the bits of the whole render.
 adaptive=(ao --scene builtin:cornell --width 24 --height 20 --spp 4096 --target-stderr 0.02 --seed 9 --threads 1)
@@ -48,6 +59,19 @@ GTLAB_STOP_AFTER_BLOCKS=1 stopped_render adaptive-stop-2 143 "${adaptive[@]}" --
 expect_ok adaptive-resume render "${adaptive[@]}" --resume -o r.exr
 cmp -s adaptive.exr r.exr && pass || fail "adaptive, stopped twice and resumed: not the uninterrupted file"
 rm -f r.exr r.checkpoint.exr
+
+# The other reference types (several quantities each, which the checkpoint
+# lists in its channels' order, not the integrator's): stopped after one
+# block, resumed, the bits of the whole render.
+size=(--width 12 --height 8 --seed 3 --threads 1 --spp 130)
+for name in "${!other_references[@]}"; do
+  read -r -a args <<<"${other_references[$name]}"
+  expect_ok "$name-whole" render "${args[@]}" "${size[@]}" -o "$name.exr"
+  GTLAB_STOP_AFTER_BLOCKS=1 stopped_render "$name-stop" 143 "${args[@]}" "${size[@]}"
+  expect_ok "$name-resume" render "${args[@]}" "${size[@]}" --resume -o r.exr
+  cmp -s "$name.exr" r.exr && pass || fail "$name, stopped and resumed: not the uninterrupted file"
+  rm -f r.exr r.checkpoint.exr
+done
 
 # Real signals: SIGTERM, then SIGKILL (a killed job), once a checkpoint
 # exists (written after every block here); each resumed to the same file.

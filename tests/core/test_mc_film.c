@@ -305,6 +305,38 @@ static void test_resume_from_file(void)
     mc_film_free(&whole);
 }
 
+/* Merging matches quantities by name: a film read from a checkpoint lists
+ * them in the file's channel order, the render's film in the integrator's.
+ * The samples added to a film of the quantities in reverse order, merged
+ * into an empty film in the usual order, give the usual film's sums; a
+ * film missing a quantity is refused, naming it. */
+static void test_merge_matches_quantities_by_name(void)
+{
+    mc_quantity reversed_order[QUANTITIES];
+    for (int q = 0; q < QUANTITIES; ++q)
+        reversed_order[q] = quantities[QUANTITIES - 1 - q];
+    mc_film whole, reversed, merged;
+    init_film(&whole), init_film(&merged);
+    add_in_order(&whole, 0, NULL);
+    mc_film_init(&reversed, W, H, reversed_order, QUANTITIES);
+    for (int p = 0; p < PIXELS; ++p)
+        for (int i = 0; i < sample_count[p]; ++i) {
+            float values[QUANTITIES];
+            for (int q = 0; q < QUANTITIES; ++q)
+                values[q] = samples[p][i][QUANTITIES - 1 - q];
+            mc_film_add_sample(&reversed, p, (uint32_t)i, values);
+        }
+    gt_error e;
+    CHECK_MSG(mc_film_merge(&merged, &reversed, "reversed", &e) == 0, "%s", e.message);
+    CHECK_MSG(same_accumulators(&whole, &merged), "merged from the reversed quantity order: other sums");
+    strcpy(reversed_order[0].name, "other.V");
+    mc_film other;
+    mc_film_init(&other, W, H, reversed_order, QUANTITIES);
+    CHECK(mc_film_merge(&merged, &other, "other.exr", &e) != 0 &&
+          strcmp(e.message, "other.exr: holds different quantities (no big.V)") == 0);
+    mc_film_free(&other), mc_film_free(&reversed), mc_film_free(&merged), mc_film_free(&whole);
+}
+
 /* (d) Half means against the direct even / odd means; (e) the normalised
  * layer has unit vectors along the direct mean vector. */
 static void test_half_means_and_normalised_layer(void)
@@ -661,6 +693,7 @@ int main(void)
     test_mean_and_stderr();
     test_exr_round_trip();
     test_resume_from_file();
+    test_merge_matches_quantities_by_name();
     test_half_means_and_normalised_layer();
     test_bad_images();
     test_legacy_and_corrupt_moments();
