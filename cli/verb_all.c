@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 
 #include "report/report_context.h"
+#include "report/report_frame.h"
 #include "report/scene_list_section.h"
 #include "cli/cli.h"
 #include "cli/cli_options.h"
@@ -68,18 +69,6 @@ static int select_stages(const char *list, int selected[STAGE_MAX])
     return cli_failf("--stages", "no stage named in '%s'", list), -1;
 }
 
-static int write_summary(const report_context *ctx, gt_error *e)
-{
-    char path[4096];
-    snprintf(path, sizeof path, "%s/summary.json", ctx->study.output_dir);
-    char *text = cJSON_Print(ctx->summary);
-    if (!text)
-        return gt_error_set(e, path, "out of memory");
-    int rc = atomic_write_text(path, text, e);
-    free(text);
-    return rc;
-}
-
 static int stage_index(const char *key)
 {
     for (int i = 0; i < stage_count; ++i)
@@ -131,24 +120,6 @@ static int check_inputs(const report_context *ctx, const int selected[STAGE_MAX]
     return 0;
 }
 
-/* The introduction: how the report was made. */
-static void introduce(report_context *ctx, const char *stage_list, const char *project)
-{
-    const char *quality = ctx->study.quality == QUALITY_PREVIEW ? "preview" : "production";
-    cJSON_AddStringToObject(ctx->summary, "gtlab_version", GTLAB_VERSION);
-    cJSON_AddStringToObject(ctx->summary, "quality", quality);
-    char stage_option[512] = "";
-    if (stage_list || project)
-        snprintf(stage_option, sizeof stage_option, "%s%s%s%s", stage_list ? " --stages " : "",
-                 stage_list ? stage_list : "", project ? " --project " : "", project ? project : "");
-    report_paragraph(ctx->doc,
-                     "Made by gtlab %s with 'gtlab all --quality %s%s'. Every figure below comes from that run; "
-                     "rerunning the command reproduces the images bit for bit (timings vary with the machine). "
-                     "Machine-readable figures: summary.json.",
-                     GTLAB_VERSION, quality, stage_option);
-    report_findings_here(ctx->doc);
-}
-
 static int run_stages(report_context *ctx, const int selected[STAGE_MAX])
 {
     gt_error e;
@@ -166,7 +137,7 @@ static int run_stages(report_context *ctx, const int selected[STAGE_MAX])
         fprintf(stderr, "gtlab all: %s done in %.1f s\n", stages[i]->title, seconds_now() - t0);
     }
     claims_table_render(ctx->claims, ctx->doc, ctx->summary);
-    if (report_write(ctx->doc, ctx->study.output_dir, &e) != 0 || write_summary(ctx, &e) != 0)
+    if (report_write(ctx->doc, ctx->study.output_dir, &e) != 0 || report_write_summary(ctx, &e) != 0)
         return cli_fail(&e);
     return EXIT_OK;
 }
@@ -196,7 +167,7 @@ int verb_all(int argc, char **argv)
     report_init(&doc, "gtlab accuracy report");
     ctx.doc = &doc;
     ctx.summary = cJSON_CreateObject();
-    introduce(&ctx, stage_list, project);
+    report_introduce(&ctx, stage_list, project);
     scene_list_section(&ctx, &project_file, project);
     status = run_stages(&ctx, selected);
     if (status == EXIT_OK)

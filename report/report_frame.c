@@ -1,0 +1,36 @@
+/* The report's frame; see report_frame.h. */
+#include "report/report_frame.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "core/atomic_file.h"
+
+void report_introduce(report_context *ctx, const char *stage_list, const char *project)
+{
+    const char *quality = ctx->study.quality == QUALITY_PREVIEW ? "preview" : "production";
+    cJSON_AddStringToObject(ctx->summary, "gtlab_version", GTLAB_VERSION);
+    cJSON_AddStringToObject(ctx->summary, "quality", quality);
+    char stage_option[512] = "";
+    if (stage_list || project)
+        snprintf(stage_option, sizeof stage_option, "%s%s%s%s", stage_list ? " --stages " : "",
+                 stage_list ? stage_list : "", project ? " --project " : "", project ? project : "");
+    report_paragraph(ctx->doc,
+                     "Made by gtlab %s with 'gtlab all --quality %s%s'. Every figure below comes from that run; "
+                     "rerunning the command reproduces the images bit for bit (timings vary with the machine). "
+                     "Machine-readable figures: summary.json.",
+                     GTLAB_VERSION, quality, stage_option);
+    report_findings_here(ctx->doc);
+}
+
+int report_write_summary(const report_context *ctx, gt_error *e)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/summary.json", ctx->study.output_dir);
+    char *text = cJSON_Print(ctx->summary);
+    if (!text)
+        return gt_error_set(e, path, "out of memory");
+    int rc = atomic_write_text(path, text, e);
+    free(text);
+    return rc;
+}

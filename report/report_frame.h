@@ -1,0 +1,16 @@
+/* The report's frame around the sections of `gtlab all`: the introduction
+ * (how the report was made, so a reader can rerun it) and summary.json. */
+#ifndef GTLAB_REPORT_FRAME_H
+#define GTLAB_REPORT_FRAME_H
+
+#include "core/error.h"
+#include "report/report_context.h"
+
+/* The version and quality into summary.json, and the paragraph naming the
+ * command that made the report (stage_list and project: NULL when not given). */
+void report_introduce(report_context *ctx, const char *stage_list, const char *project);
+
+/* <output>/summary.json, written atomically. */
+int report_write_summary(const report_context *ctx, gt_error *e);
+
+#endif
