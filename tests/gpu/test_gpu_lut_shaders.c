@@ -209,7 +209,8 @@ static void dfg_c(const void *table, const float *x, float *out) { dfg_lut_sampl
 
 static int dfg_write(const char *path, int glsl, const void *table, gt_error *e)
 {
-    return glsl ? dfg_lut_write_glsl(path, "gtlab_test_dfg", table, e) : dfg_lut_write_hlsl(path, "gtlab_test_dfg", table, e);
+    return glsl ? dfg_lut_write_glsl(path, "gtlab_test_dfg", table, e)
+                : dfg_lut_write_hlsl(path, "gtlab_test_dfg", table, e);
 }
 
 static void test_dfg(gpu_device *g)
@@ -243,7 +244,8 @@ static void ltc_c(const void *table, const float *x, float *out) { ltc_table_sam
 
 static int ltc_write(const char *path, int glsl, const void *table, gt_error *e)
 {
-    return glsl ? ltc_ggx_write_glsl(path, "gtlab_test_ltc", table, e) : ltc_ggx_write_hlsl(path, "gtlab_test_ltc", table, e);
+    return glsl ? ltc_ggx_write_glsl(path, "gtlab_test_ltc", table, e)
+                : ltc_ggx_write_hlsl(path, "gtlab_test_ltc", table, e);
 }
 
 static void test_ltc(gpu_device *g)
