@@ -204,7 +204,8 @@ static int build_luts(so_state *st, gt_error *e)
 
 /* The noise floor of a ratio channel: DSSIM between the ratios of the even
  * and of the odd samples' means. */
-static int ratio_noise_floor(const image *ref, const char *what, const char *channel, double *dssim, gt_error *e)
+int so_study_ratio_noise_floor(const image *ref, const char *what, const char *channel, double *dssim, double *rmse,
+                               gt_error *e)
 {
     mc_film film;
     if (mc_film_read_channels(ref, what, &film, e) != 0)
@@ -223,8 +224,11 @@ static int ratio_noise_floor(const image *ref, const char *what, const char *cha
             if (mask[i] == 0.0f)
                 a[i] = b[i] = 0.0f;
         ssim_result r;
+        image_error_stats err;
         rc = ssim_compute(a, b, mask, ref->width, ref->height, what, NULL, &r, e);
         *dssim = r.dssim;
+        if (rc == 0 && rmse && (rc = image_error_compute(a, b, mask, ref->width, ref->height, what, &err, e)) == 0)
+            *rmse = err.rmse;
     }
     image_free(&half[0]);
     image_free(&half[1]);
@@ -261,9 +265,7 @@ static int write_heatmaps(const so_state *st, const image *ref, const so_pixel_i
     return rc;
 }
 
-/* DSSIM and RMSE of approx against truth over the mask, and its mean FLIP
- * (truth the reference) when flip_sum is not NULL, added to the sums. */
-static int add_scores(const float *truth, const float *approx, const float *mask, int width, int height,
+int so_study_add_scores(const float *truth, const float *approx, const float *mask, int width, int height,
                       const char *what, double *dssim_sum, double *rmse_sum, double *flip_sum, gt_error *e)
 {
     ssim_result s;
@@ -286,7 +288,7 @@ static int score_splits(so_state *st, const image *ref, const char *what, int ri
     static const char *const approximations[2] = {CH_SPLIT_TWO, CH_SPLIT_THREE};
     const float *truth = image_channel_data(ref, CH_SPLIT_TRUTH), *mask = image_channel_data(ref, CH_MASK);
     for (int k = 0; k < 2; ++k)
-        if (add_scores(truth, image_channel_data(ref, approximations[k]), mask, ref->width, ref->height, what,
+        if (so_study_add_scores(truth, image_channel_data(ref, approximations[k]), mask, ref->width, ref->height, what,
                        &st->split_dssim[k][ri], &st->split_rmse[k][ri], NULL, e) != 0)
             return -1;
     ssim_result floor;
@@ -325,7 +327,7 @@ static int score_variants(so_state *st, const aperture_case *c, const so_pixel_i
         int g = st->out->variants[v].on_gtao;
         so_approx_evaluate(g ? &on_gtao[g - 1] : in, &st->variants[v], approx);
         double before = st->dssim[v][ri];
-        rc = add_scores(c->reference, approx, in->mask, in->width, in->height, what, &st->dssim[v][ri],
+        rc = so_study_add_scores(c->reference, approx, in->mask, in->width, in->height, what, &st->dssim[v][ri],
                         &st->rmse[v][ri], &st->flip[v][ri], e);
         st->case_dssim[v][st->scored] = st->dssim[v][ri] - before;
     }
@@ -349,7 +351,7 @@ static int score_rankings(so_state *st, const image *ref, const char *what, int 
         double floor = 0.0;
         rc = so_ranking_scores_add(&st->ranking[k], &c->inputs, c->reference, &regions, what, e);
         if (rc == 0)
-            rc = ratio_noise_floor(ref, what, definition_channels[definition[k]], &floor, e);
+            rc = so_study_ratio_noise_floor(ref, what, definition_channels[definition[k]], &floor, NULL, e);
         st->ranking[k].floor_sum[ri] += floor;
     }
     so_regions_free(&regions);
@@ -391,7 +393,7 @@ static int score(so_state *st, const image *ref, const image *ao, const image gt
         rc = score_cone_view(st, ref, ao, what, ri, e);
     double floor = 0.0;
     if (rc == 0)
-        rc = ratio_noise_floor(ref, what, CH_SPECOCC, &floor, e);
+        rc = so_study_ratio_noise_floor(ref, what, CH_SPECOCC, &floor, NULL, e);
     st->floor_dssim[ri] += floor;
     if (rc == 0)
         rc = score_splits(st, ref, what, ri, e);

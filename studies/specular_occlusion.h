@@ -34,6 +34,7 @@
 #ifndef GTLAB_STUDIES_SPECULAR_OCCLUSION_H
 #define GTLAB_STUDIES_SPECULAR_OCCLUSION_H
 
+#include "core/image.h"
 #include "fitters/aperture_fit.h"
 #include "luts/specular_occlusion_lut.h"
 #include "realtime/specular_occlusion_screen.h"
@@ -197,6 +198,18 @@ typedef struct {
 } so_study_result;
 
 int specular_occlusion_study(const study_context *ctx, so_study_result *out, gt_error *e);
+
+/* How the study scores a variant (also studies/specular_occlusion_score.h's
+ * way): DSSIM and RMSE of approx against truth over the mask, and its mean
+ * FLIP (truth the reference) when flip_sum is not NULL, added to the sums. */
+int so_study_add_scores(const float *truth, const float *approx, const float *mask, int width, int height,
+                        const char *what, double *dssim_sum, double *rmse_sum, double *flip_sum, gt_error *e);
+
+/* The noise floor of a ratio channel of a specular-occlusion reference:
+ * DSSIM (and RMSE, when rmse is not NULL) between the ratios of the even and
+ * of the odd samples' means, over the mask. */
+int so_study_ratio_noise_floor(const image *ref, const char *what, const char *channel, double *dssim, double *rmse,
+                               gt_error *e);
 
 /* The row of a variant (lut_size and lut_axes matter for SO_VARIANT_LUT,
  * mapping for the cone variants only), or -1. */

@@ -75,7 +75,7 @@ static void test_scores(const char *reference)
     const char *functions[] = {GTLAB_SOURCE_DIR "/shaders/template_multibounce.glsl",
                                GTLAB_SOURCE_DIR "/shaders/template_multibounce.hlsl"};
     const char *plugins[] = {GTLAB_EXAMPLE_PLUGIN};
-    multibounce_score_request rq = {NULL, &reference, 1, functions, 2, plugins, 1, NULL, 60.0};
+    multibounce_score_request rq = {NULL, &reference, 1, functions, 2, plugins, 1, NULL, 60.0, NULL, 0};
     gt_error e = {{0}};
     CHECK_MSG(multibounce_score(&rq, &r, &e) == 0, "%s", e.message);
     multibounce_score_print(stdout, &r);
@@ -107,7 +107,7 @@ static void expect_error(const char *reference, const char *name, const char *te
     fclose(f);
     static multibounce_score_result r;
     const char *functions[] = {path};
-    multibounce_score_request rq = {NULL, &reference, 1, functions, 1, NULL, 0, NULL, 60.0};
+    multibounce_score_request rq = {NULL, &reference, 1, functions, 1, NULL, 0, NULL, 60.0, NULL, 0};
     gt_error e = {{0}};
     char want[4200];
     snprintf(want, sizeof want, "%s%s", path, message);
