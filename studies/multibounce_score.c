@@ -18,7 +18,6 @@
 #include "studies/multibounce_parts.h"
 #include "studies/plugin.h"
 #include "studies/specular_occlusion_score.h"
-#include "studies/study_project.h"
 
 typedef enum { VARIANT_INPUT, VARIANT_MODEL, VARIANT_FUNCTION, VARIANT_PLUGIN } variant_kind;
 
@@ -304,25 +303,22 @@ static int find_references(const study_context *ctx, char paths[][4096], int *co
     return n > 0 ? 0 : gt_error_set(e, dir, "no multi-bounce references (*.exr; run the multibounce stage)");
 }
 
-int multibounce_score_project(const study_context *ctx, multibounce_score_result *out, gt_error *e)
+int multibounce_score_project(const study_context *ctx, const char *const *functions, int function_count,
+                              const char *const *plugins, int plugin_count, multibounce_score_result *out,
+                              gt_error *e)
 {
-    const study_project *p = ctx->project;
     memset(out, 0, sizeof *out);
-    if (!p || p->shader_count + p->plugin_count == 0)
+    if (function_count + plugin_count == 0)
         return 0;
     static char paths[MB_SCORE_MAX_FILES][4096];
-    const char *references[MB_SCORE_MAX_FILES], *functions[PROJECT_MAX_FILES], *plugins[PROJECT_MAX_FILES];
+    const char *references[MB_SCORE_MAX_FILES];
     int count = 0;
     if (find_references(ctx, paths, &count, e) != 0)
         return -1;
     for (int i = 0; i < count; ++i)
         references[i] = paths[i];
-    for (int i = 0; i < p->shader_count; ++i)
-        functions[i] = p->shaders[i];
-    for (int i = 0; i < p->plugin_count; ++i)
-        plugins[i] = p->plugins[i];
     multibounce_score_request rq = {.quantity = "multibounce", .references = references, .reference_count = count,
-                                    .functions = functions, .function_count = p->shader_count, .plugins = plugins,
-                                    .plugin_count = p->plugin_count, .timeout = 10.0};
+                                    .functions = functions, .function_count = function_count, .plugins = plugins,
+                                    .plugin_count = plugin_count, .timeout = 10.0};
     return multibounce_score(&rq, out, e);
 }

@@ -81,10 +81,12 @@ void multibounce_score_take_means(multibounce_score_result *out);
  * columns per variant, after the floor. */
 void multibounce_score_print(FILE *f, const multibounce_score_result *r);
 
-/* The stage of `gtlab all`: the project's shaders (function files) and
- * plugins scored on the multi-bounce study's references in
- * <output>/MULTIBOUNCE_STUDY_DIR (*.exr, in name order). Without a project
- * or with both lists empty it reads nothing and out->variant_count = 0. */
-int multibounce_score_project(const study_context *ctx, multibounce_score_result *out, gt_error *e);
+/* For the stage of `gtlab all` (studies/shader_scores.h): a project's
+ * multi-bounce function files and plug-ins scored on the multi-bounce
+ * study's references in <output>/MULTIBOUNCE_STUDY_DIR (*.exr, in name
+ * order). With both lists empty it reads nothing and out->variant_count = 0. */
+int multibounce_score_project(const study_context *ctx, const char *const *functions, int function_count,
+                              const char *const *plugins, int plugin_count, multibounce_score_result *out,
+                              gt_error *e);
 
 #endif

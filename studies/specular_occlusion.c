@@ -26,7 +26,7 @@ enum { LUT_SIZES = 3, BC4_SIZES = 2, CASES_MAX = SO_STUDY_MAX_SCENES * SO_STUDY_
 static const char *const definition_channels[SO_STUDY_DEFINITIONS] = {CH_SPECOCC, CH_SPECOCC_D, CH_SPECOCC_PHONG};
 static const char *const definition_names[SO_STUDY_DEFINITIONS] = {"gtso", "d_only", "phong"};
 enum { DEFINITION_GTSO, DEFINITION_D_ONLY, DEFINITION_PHONG }; /* indices of the two arrays above */
-static const float roughness_values[SO_STUDY_ROUGHNESSES] = {0.25f, 0.5f, 0.8f};
+const float so_study_roughness_values[SO_STUDY_ROUGHNESSES] = {0.25f, 0.5f, 0.8f};
 static const int lut_sizes[LUT_SIZES] = {16, 32, 64};
 
 /* What the study holds while it runs: the tables the LUT variants read, the
@@ -404,14 +404,28 @@ static int score(so_state *st, const image *ref, const image *ao, const image gt
 
 /* ---- the references ------------------------------------------------------------ */
 
+void so_study_resolution(const study_context *ctx, int *size, int *spp)
+{
+    int preview = ctx->quality == QUALITY_PREVIEW;
+    *size = preview ? 96 : 256, *spp = preview ? 128 : 1024;
+}
+
+int so_study_render(const study_context *ctx, const scene *s, const char *spec, const camera *cam, reference_quantity q,
+                    float roughness, image *out, render_stats *stats, gt_error *e)
+{
+    int size, spp;
+    so_study_resolution(ctx, &size, &spp);
+    reference_request req = {.quantity = q, .sampling = {.spp = spp, .seed = 1, .threads = ctx->threads},
+                             .normals = NORMAL_SHADING, .max_distance = INFINITY, .roughness = roughness,
+                             .environment = ENVIRONMENT_SKY};
+    return reference_render(s, spec, cam, &req, out, stats, e);
+}
+
 static int render(so_state *st, const scene *s, const char *spec, const camera *cam, reference_quantity q,
                   float roughness, image *out, gt_error *e)
 {
-    reference_request req = {.quantity = q, .sampling = {.spp = st->out->spp, .seed = 1, .threads = st->ctx->threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY, .roughness = roughness,
-                             .environment = ENVIRONMENT_SKY};
     render_stats stats;
-    if (reference_render(s, spec, cam, &req, out, &stats, e) != 0)
+    if (so_study_render(st->ctx, s, spec, cam, q, roughness, out, &stats, e) != 0)
         return -1;
     if (q == QUANTITY_SPECULAR_OCCLUSION && stats.seconds > 0.0) {
         st->samples_per_second_sum += (double)stats.samples / stats.seconds;
@@ -469,8 +483,8 @@ static int score_roughnesses(so_state *st, const scene *s, const char *spec, con
     for (int r = 0; r < SO_STUDY_ROUGHNESSES && rc == 0; ++r) {
         image ref;
         char what[256];
-        snprintf(what, sizeof what, "%s (roughness %.2f)", name, roughness_values[r]);
-        if ((rc = render(st, s, spec, cam, QUANTITY_SPECULAR_OCCLUSION, roughness_values[r], &ref, e)) != 0)
+        snprintf(what, sizeof what, "%s (roughness %.2f)", name, so_study_roughness_values[r]);
+        if ((rc = render(st, s, spec, cam, QUANTITY_SPECULAR_OCCLUSION, so_study_roughness_values[r], &ref, e)) != 0)
             break;
         rc = score(st, &ref, ao, gtao, what, r, name, e);
         image_free(&ref);
@@ -540,7 +554,7 @@ static void average(const so_state *st, so_study_result *out)
     for (int k = 0; k < SO_STUDY_ROUGHNESSES; ++k) {
         so_split_row *s = &out->splits[k];
         out->noise_floor_dssim[k] = st->floor_dssim[k] / n;
-        s->roughness = roughness_values[k];
+        s->roughness = so_study_roughness_values[k];
         s->dssim_two = st->split_dssim[0][k] / n, s->dssim_three = st->split_dssim[1][k] / n;
         s->rmse_two = st->split_rmse[0][k] / n, s->rmse_three = st->split_rmse[1][k] / n;
         s->noise_floor = st->split_floor[k] / n;
@@ -589,11 +603,10 @@ static void free_state(so_state *st)
 
 static void init_result(const study_context *ctx, so_study_result *out)
 {
-    int preview = ctx->quality == QUALITY_PREVIEW;
     memset(out, 0, sizeof *out);
-    out->size = preview ? 96 : 256, out->spp = preview ? 128 : 1024;
+    so_study_resolution(ctx, &out->size, &out->spp);
     for (int k = 0; k < SO_STUDY_ROUGHNESSES; ++k)
-        out->roughness[k] = roughness_values[k];
+        out->roughness[k] = so_study_roughness_values[k];
 }
 
 /* The LUTs, the variants, every scene, the means and the fits. */

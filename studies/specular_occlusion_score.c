@@ -6,11 +6,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/exr_io.h"
 #include "core/reference_schema.h"
 #include "gpu/function_shader.h"
 #include "studies/plugin.h"
 #include "studies/specular_occlusion.h"
 #include "studies/specular_occlusion_inputs.h"
+#include "studies/study_scenes.h"
 
 /* gtlab's own rows (so_variant_parse's texts). */
 static const char *const kBuiltins[] = {"ao", "lagarde", "cone-exact:exp2-alpha", "cone-oat:exp2-alpha", "sg"};
@@ -150,10 +152,10 @@ static int check_request(const multibounce_score_request *rq, gt_error *e)
     if (rq->function_count > MB_SCORE_MAX_FILES || rq->plugin_count > MB_SCORE_MAX_FILES)
         return gt_error_set(e, "shader score", "at most %d function files and %d plug-ins", MB_SCORE_MAX_FILES,
                             MB_SCORE_MAX_FILES);
-    if (rq->reference_count < 1 || rq->reference_count > MB_SCORE_MAX_FILES || rq->ao_count != rq->reference_count)
+    if (rq->reference_count < 1 || rq->reference_count > MB_SCORE_MAX_ROWS || rq->ao_count != rq->reference_count)
         return gt_error_set(e, "shader score", "%d references and %d --ao files: 1 to %d specular-occlusion "
                             "references expected, each with one --ao (its view's 'gtlab render ao')",
-                            rq->reference_count, rq->ao_count, MB_SCORE_MAX_FILES);
+                            rq->reference_count, rq->ao_count, MB_SCORE_MAX_ROWS);
     return 0;
 }
 
@@ -176,4 +178,73 @@ int specular_occlusion_score(const multibounce_score_request *rq, multibounce_sc
     release(vs);
     free(vs);
     return rc;
+}
+
+/* Renders one reference of the study (so_study_render) into path. */
+static int render_file(const study_context *ctx, const scene *s, const study_scene_entry *b, const camera *cam,
+                       reference_quantity q, float roughness, const char *path, gt_error *e)
+{
+    image img;
+    render_stats stats;
+    if (so_study_render(ctx, s, b->spec, cam, q, roughness, &img, &stats, e) != 0)
+        return -1;
+    int rc = exr_write(path, &img, e);
+    image_free(&img);
+    return rc;
+}
+
+typedef struct {
+    char references[MB_SCORE_MAX_ROWS][4096], aos[MB_SCORE_MAX_ROWS][4096];
+    int count;
+} so_reference_files;
+
+/* One scene's AO reference and its specular-occlusion references at the study's roughnesses. */
+static int render_scene(const study_context *ctx, const study_scene_entry *b, const char *dir, so_reference_files *f,
+                        gt_error *e)
+{
+    int size, spp;
+    so_study_resolution(ctx, &size, &spp);
+    scene s;
+    camera cam;
+    if (study_scene_view(b, size, 0, &s, &cam, e) != 0)
+        return -1;
+    char ao[4096];
+    snprintf(ao, sizeof ao, "%s/%s_ao.exr", dir, b->label);
+    int rc = render_file(ctx, &s, b, &cam, QUANTITY_AO, -1.0f, ao, e);
+    for (int r = 0; r < SO_STUDY_ROUGHNESSES && rc == 0; ++r) {
+        if (f->count == MB_SCORE_MAX_ROWS) {
+            rc = gt_error_set(e, b->label, "more than %d specular-occlusion references", MB_SCORE_MAX_ROWS);
+            break;
+        }
+        snprintf(f->aos[f->count], sizeof f->aos[0], "%s", ao);
+        snprintf(f->references[f->count], sizeof f->references[0], "%s/%s_r%.2f.exr", dir, b->label,
+                 (double)so_study_roughness_values[r]);
+        rc = render_file(ctx, &s, b, &cam, QUANTITY_SPECULAR_OCCLUSION, so_study_roughness_values[r],
+                         f->references[f->count++], e);
+    }
+    scene_free(&s);
+    return rc;
+}
+
+int specular_occlusion_score_project(const study_context *ctx, const char *const *functions, int function_count,
+                                     const char *const *plugins, int plugin_count, multibounce_score_result *out,
+                                     gt_error *e)
+{
+    memset(out, 0, sizeof *out);
+    if (function_count + plugin_count == 0)
+        return 0;
+    static so_reference_files f;
+    static const char *references[MB_SCORE_MAX_ROWS], *aos[MB_SCORE_MAX_ROWS];
+    char dir[2048];
+    f.count = 0;
+    int rc = study_make_dir(ctx, SO_SCORE_DIR, dir, sizeof dir, e);
+    for (int i = 0; i < study_scene_count(ctx) && rc == 0; ++i)
+        rc = render_scene(ctx, study_scene_at(ctx, i), dir, &f, e);
+    for (int i = 0; i < f.count; ++i)
+        references[i] = f.references[i], aos[i] = f.aos[i];
+    multibounce_score_request rq = {.quantity = SO_SCORE_QUANTITY, .references = references,
+                                    .reference_count = f.count, .functions = functions,
+                                    .function_count = function_count, .plugins = plugins,
+                                    .plugin_count = plugin_count, .timeout = 10.0, .aos = aos, .ao_count = f.count};
+    return rc != 0 ? -1 : specular_occlusion_score(&rq, out, e);
 }

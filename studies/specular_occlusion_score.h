@@ -29,4 +29,16 @@
  * has no specular occlusion, NaN, no Vulkan device. */
 int specular_occlusion_score(const multibounce_score_request *rq, multibounce_score_result *out, gt_error *e);
 
+/* For the stage of `gtlab all` (studies/shader_scores.h): a project's
+ * specular-occlusion function files and plug-ins scored on the study's
+ * references of every scene and roughness, rendered again as the study
+ * renders them (so_study_render; the study keeps its own in memory only)
+ * into <output>/SO_SCORE_DIR as <scene>_ao.exr and <scene>_r<roughness>.exr
+ * (so `gtlab shader score` can score more files on them later). With both
+ * lists empty it renders nothing and out->variant_count = 0. */
+#define SO_SCORE_DIR "shader_scores"
+int specular_occlusion_score_project(const study_context *ctx, const char *const *functions, int function_count,
+                                     const char *const *plugins, int plugin_count, multibounce_score_result *out,
+                                     gt_error *e);
+
 #endif
