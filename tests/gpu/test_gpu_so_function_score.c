@@ -32,6 +32,8 @@
 #include "studies/specular_occlusion_score.h"
 #include "studies/study.h"
 #include "tests/check.h"
+#include "tests/test_files.h"
+#include "tests/test_reference_file.h"
 
 enum { VARIANT_CONE = 2, VARIANT_LAGARDE = 1, VARIANT_GLSL = 5, VARIANT_HLSL = 6, VARIANT_PLUGIN = 7 };
 static const double kMaxDifference = 2e-3;
@@ -41,22 +43,7 @@ static int render(const char *path, reference_quantity q)
 {
     reference_request rq = {.quantity = q, .sampling = {.spp = 16, .seed = 1, .threads = 2},
                             .normals = NORMAL_SHADING, .max_distance = INFINITY, .roughness = 0.5f};
-    scene s;
-    camera cam;
-    image img;
-    render_stats stats;
-    gt_error e = {{0}};
-    int rc = study_load_view("builtin:corner", 32, 24, &s, &cam, &e);
-    if (rc == 0) {
-        rc = reference_render(&s, "builtin:corner", &cam, &rq, &img, &stats, &e);
-        scene_free(&s);
-    }
-    if (rc == 0) {
-        rc = exr_write(path, &img, &e);
-        image_free(&img);
-    }
-    CHECK_MSG(rc == 0, "%s", e.message);
-    return rc;
+    return test_render_reference_file("builtin:corner", 32, 24, &rq, path);
 }
 
 static void test_templates_generated(void)
@@ -157,13 +144,9 @@ static void expect_error(const char *reference, const char *ao, const char *name
     char path[4096];
     snprintf(path, sizeof path, "%s/%s", text ? check_tmp_dir() : "", name);
     const char *file = text ? path : name;
-    if (text) {
-        FILE *f = fopen(path, "w");
-        CHECK(f != NULL);
-        if (!f)
-            return;
-        fputs(text, f);
-        fclose(f);
+    if (text && write_text_file(path, text) != 0) {
+        CHECK_MSG(0, "cannot write %s", path);
+        return;
     }
     static multibounce_score_result r;
     multibounce_score_request rq = {SO_SCORE_QUANTITY, &reference, 1, text ? &file : NULL, text ? 1 : 0,
