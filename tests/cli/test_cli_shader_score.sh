@@ -9,7 +9,8 @@
 # decimals' half unit only where it does not straddle one, so compared as
 # numbers). Bad function files: one line, exit 1. A project listing the two
 # gets the section beside V_d and the talk's; one that lists neither gets
-# no section and no summary.json member.
+# no section and no summary.json member (specular occlusion:
+# test_cli_shader_score_so.sh).
 gtlab=$1
 work=$2
 source_dir=$3
@@ -84,4 +85,5 @@ printf '{"shaders": [], "plugins": []}' >"$work/empty.json"
 expect_ok empty-project all --project "$work/empty.json" --stages shader-scores -o "$work/out"
 ! grep -q "shader_scores" "$work/out/summary.json" && pass || fail "summary.json has shader_scores without lists"
 ! grep -q "Your shaders" "$work/out/report.md" && pass || fail "report.md has the section without lists"
+! [ -d "$work/out/shader_scores" ] && pass || fail "specular-occlusion references rendered without such files"
 finish
