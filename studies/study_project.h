@@ -13,7 +13,15 @@
 #include "core/error.h"
 #include "studies/study_scenes.h"
 
-enum { PROJECT_MAX_FILES = 16, PROJECT_STAGES_MAX = 512 };
+enum { PROJECT_MAX_FILES = 16, PROJECT_STAGES_MAX = 512, PROJECT_MAX_PARAMS = 16, PROJECT_PARAM_TEXT = 96 };
+
+/* A screen-space shader of the project (`screen_shaders`, docs/shaders.md's
+ * contract): scored by the stage screen-shaders on the AO references. */
+typedef struct {
+    char path[STUDY_SCENE_PATH_MAX];
+    int param_count;
+    char params[PROJECT_MAX_PARAMS][PROJECT_PARAM_TEXT]; /* "name=value", as --param takes them */
+} study_screen_shader;
 
 typedef struct study_project {
     study_scene_list scenes;        /* one entry per scene and camera */
@@ -23,6 +31,8 @@ typedef struct study_project {
     int shader_count, plugin_count;
     char shaders[PROJECT_MAX_FILES][STUDY_SCENE_PATH_MAX];
     char plugins[PROJECT_MAX_FILES][STUDY_SCENE_PATH_MAX];
+    int screen_shader_count;
+    study_screen_shader screen_shaders[PROJECT_MAX_FILES];
 } study_project;
 
 /* Whether `key` names a stage (the caller's registry); NULL: any name. */
@@ -30,7 +40,8 @@ typedef int (*study_project_stage_known)(const char *key);
 
 /* Reads and checks the project file: its JSON, every key and value, that
  * each scene file and camera file exists, and that each scene loads with
- * each of its cameras (so a run fails before any work). Returns 0, or -1
+ * each of its cameras, and that each screen shader compiles with its
+ * parameters and writes ao.V (so a run fails before any work). Returns 0, or -1
  * with e = "<path>: <json path>: <problem>". p is large: give a static one. */
 int study_project_read(const char *path, study_project_stage_known known, study_project *p, gt_error *e);
 
