@@ -322,6 +322,8 @@ static int read_params(const reader *r, const cJSON *o, const char *where, study
     if (params && !cJSON_IsObject(params))
         return fail(r, where, "'params' must be an object of numbers, {\"radius\": 1.0}");
     for (const cJSON *v = params ? params->child : NULL; v; v = v->next) {
+        if (v->string[0] == '_')
+            continue; /* a comment */
         if (!cJSON_IsNumber(v) || x->param_count == PROJECT_MAX_PARAMS)
             return fail(r, where, "params.%s: %s", v->string, cJSON_IsNumber(v) ? "more than 16 parameters"
                                                                                   : "a number expected");
@@ -462,7 +464,11 @@ static const char example[] =
     "(core/plugin_abi.h), scored beside gtlab's own by the stage shader-scores on the multibounce stage's "
     "references.\",\n"
     "  \"shaders\": [],\n"
-    "  \"plugins\": []\n"
+    "  \"plugins\": [],\n"
+    "  \"_screen_shaders\": \"Screen-space AO shaders (docs/shaders.md, 'Screen-space shaders'), e.g. {\\\"path\\\": "
+    "\\\"my_gtao.hlsl\\\", \\\"params\\\": {\\\"radius\\\": 1.0}}: compiled when the project is read, scored beside "
+    "gtlab's GTAO by the stage screen-shaders on the ao stage's references.\",\n"
+    "  \"screen_shaders\": []\n"
     "}\n";
 
 const char *study_project_example(void) { return example; }

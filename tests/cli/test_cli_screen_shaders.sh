@@ -26,6 +26,19 @@ cp "$source_dir/shaders/gtao.glsl" "$source_dir/shaders/gtao.hlsl" "$source_dir/
 
 printf '{"scenes": [{"path": "builtin:boxes"}], "screen_shaders": [{"path": "gtao.glsl"}, %s]}' \
   '{"path": "gtao.hlsl", "quantity": "ao", "params": {"radius": 1.0}}' >"$work/project.json"
+if python3 -c 'import jsonschema' 2>/dev/null; then  # the file follows docs/gtlab.schema.json; a bad entry does not
+  python3 - "$source_dir/docs/gtlab.schema.json" "$work/project.json" <<'PY' && pass || fail "project.json vs the schema"
+import json, sys, jsonschema
+schema, doc = (json.load(open(p)) for p in sys.argv[1:3])
+jsonschema.validate(doc, schema)
+for bad in ({"path": "a.glsl", "quantity": "so"}, {"path": "a.glsl", "params": {"radius": "1"}}, {"params": {}}):
+    try:
+        jsonschema.validate(dict(doc, screen_shaders=[bad]), schema)
+    except jsonschema.ValidationError:
+        continue
+    raise SystemExit("the schema accepts %r" % bad)
+PY
+fi
 expect_ok project all --project "$work/project.json" --stages screen-shaders -o "$work/out"
 python3 - "$work/out/summary.json" <<'PY' && pass || fail "summary.json: $(head -c 900 "$work/out/summary.json")"
 import json, sys
