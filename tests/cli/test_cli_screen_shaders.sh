@@ -14,12 +14,8 @@ gtlab=$1
 work=$2
 source_dir=$3
 rm -rf "$work" && mkdir -p "$work/out/ao"
-if [ -n "$GTLAB_VULKAN_PRELOAD" ]; then  # under ASan: the Vulkan driver kept resident (tests/gpu/CMakeLists.txt)
-  printf '#!/bin/sh\nLD_PRELOAD="%s" exec "%s" "$@"\n' "$GTLAB_VULKAN_PRELOAD" "$gtlab" >"$work/gtlab"
-  chmod +x "$work/gtlab"
-  gtlab=$work/gtlab
-fi
 source "$(dirname "$0")/cli_test_lib.sh"
+vulkan_preload
 "$gtlab" render ao --scene builtin:boxes --width 48 --height 32 --spp 8 --threads 2 -o "$work/out/ao/boxes.exr" \
   2>/dev/null || fail "render ao"
 cp "$source_dir/shaders/gtao.glsl" "$source_dir/shaders/gtao.hlsl" "$source_dir/shaders/gtao.inc" "$work/"
