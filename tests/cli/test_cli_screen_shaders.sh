@@ -61,17 +61,17 @@ expect_ok none all --project "$work/none.json" --stages screen-shaders -o "$work
 # Bad shaders: one line, before any work (the ao stage is in the run), nothing written.
 printf '#version 450\n// gtlab.output ao.V\nlayout(local_size_x = 8, local_size_y = 8) in;\nvoid main() { undeclared = 1; }\n' \
   >"$work/broken.glsl"
-bad() {  # NAME PATTERN SHADER-ENTRY
-  printf '{"scenes": [{"path": "builtin:boxes"}], "screen_shaders": [{"path": "gtao.glsl"}, %s]}' "$3" >"$work/bad.json"
-  expect_error "$1" "bad.json: screen_shaders\[1\]$2" "$work/bad_out" -- \
+bad() {  # NAME PATTERN SHADER-ENTRIES INDEX
+  printf '{"scenes": [{"path": "builtin:boxes"}], "screen_shaders": [%s]}' "$3" >"$work/bad.json"
+  expect_error "$1" "bad.json: screen_shaders\[$4\]$2" "$work/bad_out" -- \
     all --project "$work/bad.json" --stages ao,screen-shaders -o "$work/bad_out"
 }
-bad compile-error ".path: .*broken.glsl:4: error: 'undeclared' : undeclared identifier" '{"path": "broken.glsl"}'
-bad unknown-param ".path: .*gtao.glsl: .*radiuz.*radius, falloff" '{"path": "gtao.glsl", "params": {"radiuz": 2}}'
-bad param-type ": params.radius: a number expected" '{"path": "gtao.glsl", "params": {"radius": "1"}}'
-bad quantity ": quantity 'so'" '{"path": "gtao.glsl", "quantity": "so"}'
-bad missing ".path: .*nowhere.glsl" '{"path": "nowhere.glsl"}'
-bad unknown-key ": unknown key 'shader'" '{"path": "gtao.glsl", "shader": "x"}'
+bad compile-error ".path: .*broken.glsl:4: error: 'undeclared' : undeclared identifier" '{"path": "gtao.glsl"}, {"path": "broken.glsl"}' 1
+bad unknown-param ".path: .*gtao.glsl: .*radiuz.*radius, falloff" '{"path": "gtao.glsl", "params": {"radiuz": 2}}' 0
+bad param-type ": params.radius: a number expected" '{"path": "gtao.glsl", "params": {"radius": "1"}}' 0
+bad quantity ": quantity 'so'" '{"path": "gtao.glsl", "quantity": "so"}' 0
+bad missing ".path: .*nowhere.glsl" '{"path": "nowhere.glsl"}' 0
+bad unknown-key ": unknown key 'shader'" '{"path": "gtao.glsl", "shader": "x"}' 0
 printf '#version 450\n// gtlab.output bent.X\nlayout(local_size_x = 8, local_size_y = 8) in;\nvoid main() {}\n' >"$work/noao.glsl"
-bad no-ao ".path: .*noao.glsl: no 'gtlab.output ao.V' line" '{"path": "noao.glsl"}'
+bad no-ao ".path: .*noao.glsl: no 'gtlab.output ao.V' line" '{"path": "noao.glsl"}' 0
 finish
