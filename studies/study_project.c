@@ -324,9 +324,11 @@ static int read_params(const reader *r, const cJSON *o, const char *where, study
     for (const cJSON *v = params ? params->child : NULL; v; v = v->next) {
         if (v->string[0] == '_')
             continue; /* a comment */
-        if (!cJSON_IsNumber(v) || x->param_count == PROJECT_MAX_PARAMS)
-            return fail(r, where, "params.%s: %s", v->string, cJSON_IsNumber(v) ? "more than 16 parameters"
-                                                                                  : "a number expected");
+        gt_quoted q;
+        if (!cJSON_IsNumber(v))
+            return fail(r, where, "params.%s: a number expected", gt_quote(v->string, &q));
+        if (x->param_count == PROJECT_MAX_PARAMS)
+            return fail(r, where, "params: more than %d parameters", PROJECT_MAX_PARAMS);
         snprintf(x->params[x->param_count++], PROJECT_PARAM_TEXT, "%.60s=%.17g", v->string, v->valuedouble);
     }
     return 0;
@@ -347,8 +349,9 @@ static int read_screen_shader(const reader *r, const cJSON *o, const char *where
         return -1;
     if (!path)
         return fail(r, where, "'path' (a .glsl or .hlsl file) is missing");
+    gt_quoted q;
     if (quantity && strcmp(quantity, "ao") != 0)
-        return fail(r, where, "quantity '%s': only 'ao' (ambient occlusion, ao.V) is scored", quantity);
+        return fail(r, where, "quantity '%s': only 'ao' (ambient occlusion, ao.V) is scored", gt_quote(quantity, &q));
     screen_shader_program program;
     if (existing_file(r, at, path, x->path, sizeof x->path) != 0)
         return -1;

@@ -38,7 +38,10 @@ fi
 expect_ok project all --project "$work/project.json" --stages screen-shaders -o "$work/out"
 python3 - "$work/out/summary.json" <<'PY' && pass || fail "summary.json: $(head -c 900 "$work/out/summary.json")"
 import json, sys
-s = json.load(open(sys.argv[1]))["screen_shader_scores"]
+summary = json.load(open(sys.argv[1]))
+listed = summary["project"]["screen_shaders"]
+assert [x["params"] for x in listed] == [{}, {"radius": 1.0}] and listed[1]["path"].endswith("gtao.hlsl"), listed
+s = summary["screen_shader_scores"]
 v = {x["name"]: x for x in s["variants"]}
 assert list(v) == ["GTAO (C)", "gtao.glsl", "gtao.hlsl"], list(v)
 assert s["scenes"] == 1 and v["GTAO (C)"]["kind"] == "gtlab" and v["gtao.glsl"]["kind"] == "shader", s
