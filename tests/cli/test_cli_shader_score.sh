@@ -16,12 +16,8 @@ work=$2
 source_dir=$3
 plugin=$4
 rm -rf "$work" && mkdir -p "$work/out/multibounce"
-if [ -n "$GTLAB_VULKAN_PRELOAD" ]; then  # under ASan: the Vulkan driver kept resident (tests/gpu/CMakeLists.txt)
-  printf '#!/bin/sh\nLD_PRELOAD="%s" exec "%s" "$@"\n' "$GTLAB_VULKAN_PRELOAD" "$gtlab" >"$work/gtlab"
-  chmod +x "$work/gtlab"
-  gtlab=$work/gtlab
-fi
 source "$(dirname "$0")/cli_test_lib.sh"
+vulkan_preload
 ref=$work/out/multibounce/corner.exr
 "$gtlab" render multibounce --scene builtin:corner --albedo 0.2,0.5,0.8 --width 24 --height 24 --spp 16 -o "$ref" \
   2>/dev/null || fail "render corner"
