@@ -114,8 +114,8 @@ static int submit_upload(gpu_device *g, VkBuffer staging, const gpu_texture_r32f
     if (ok)
         record_upload(c, staging, b, image);
     VkSubmitInfo submit = {.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO, .commandBufferCount = 1, .pCommandBuffers = &c};
-    ok = ok && vkEndCommandBuffer(c) == VK_SUCCESS && vkQueueSubmit(g->queue, 1, &submit, VK_NULL_HANDLE) == VK_SUCCESS &&
-         vkQueueWaitIdle(g->queue) == VK_SUCCESS;
+    ok = ok && vkEndCommandBuffer(c) == VK_SUCCESS &&
+         vkQueueSubmit(g->queue, 1, &submit, VK_NULL_HANDLE) == VK_SUCCESS && vkQueueWaitIdle(g->queue) == VK_SUCCESS;
     vkFreeCommandBuffers(g->device, g->pool, 1, &c);
     return ok ? 0 : -1;
 }

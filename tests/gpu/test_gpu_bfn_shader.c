@@ -298,16 +298,17 @@ static void test_combined_glsl(gpu_device *g)
                              {"r", GPU_OUTPUT, got, sizeof got},
                              {"t", GPU_TEXTURE_R32F_POINT_CLAMP, &texture, sizeof texture}};
     gpu_dispatch d = {&spirv, "combined.glsl", buffers, 4, {1, 1, 1}, 60.0};
-    int rc = gpu_compile_compute(source, d.what, GPU_SOURCE_GLSL, NULL, &spirv, &e) == 0 ? gpu_dispatch_run(g, &d, NULL, &e)
-                                                                                       : -1;
+    int compiled = gpu_compile_compute(source, d.what, GPU_SOURCE_GLSL, NULL, &spirv, &e) == 0;
+    int rc = compiled ? gpu_dispatch_run(g, &d, NULL, &e) : -1;
     CHECK_MSG(rc == 0, "%s", e.message);
     int wrong = 0;
     for (int p = 0; rc == 0 && p < POINTS; ++p) {
-        int x = (int)fmin(W - 1, fmax(0, floor(uv[2 * p] * W))), y = (int)fmin(H - 1, fmax(0, floor(uv[2 * p + 1] * H)));
+        int x = (int)fmin(W - 1, fmax(0, floor(uv[2 * p] * W)));
+        int y = (int)fmin(H - 1, fmax(0, floor(uv[2 * p + 1] * H)));
         wrong += got[p] != texels[y * W + x];
     }
     CHECK_MSG(wrong == 0, "%d of %d sampler2D reads off the texel", wrong, POINTS);
-    if (rc == 0)
+    if (compiled)
         gpu_spirv_free(&spirv);
 }
 
