@@ -6,7 +6,6 @@
  * (the talk's configuration at 1920x1080 and every preset's cost per pixel:
  * studies/gtao_bench.h) and the stages gtao and gtao-shortcuts. */
 #include <cjson/cJSON.h>
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -130,22 +129,6 @@ static const cli_command fit_command = {
     "after on the training and the held-out scenes.",
     fit_options, NULL, NULL};
 
-static void print_fit(const gtao_fit_request *rq, const gtao_fit_result *r)
-{
-    printf("gtao-params (%s preset, %s objective): %s after %d iterations\n", rq->preset,
-           gtao_fit_objective_names[rq->objective], r->converged ? "converged" : "not converged", r->iterations);
-    for (int k = 0; k < GTAO_FIT_PARAMS; ++k)
-        printf("  %-28s %.4f +- %.4f (start %.4f)\n", gtao_fit_param_names[k], r->value[k],
-               r->have_se ? r->se[k] : NAN, r->start[k]);
-    for (int held_out = 0; held_out <= 1; ++held_out) {
-        printf("%s scenes:\n", held_out ? "held-out" : "training");
-        for (int i = 0; i < r->score_count; ++i)
-            if (r->scores[i].held_out == held_out)
-                printf("  %-16s RMSE %.4f -> %.4f   DSSIM %.4f -> %.4f\n", r->scores[i].scene, r->scores[i].rmse_before,
-                       r->scores[i].rmse_after, r->scores[i].dssim_before, r->scores[i].dssim_after);
-    }
-}
-
 static int fit_gtao_params(int argc, char **argv)
 {
     gtao_fit_request rq = {NULL, GTAO_FIT_DEFAULT_TRAIN, GTAO_FIT_DEFAULT_TEST, GTAO_FIT_DEFAULT_PRESET, GTAO_FIT_DSSIM};
@@ -158,7 +141,7 @@ static int fit_gtao_params(int argc, char **argv)
     static gtao_fit_result r;
     if (gtao_params_study(&rq, &r, &e) != 0)
         return cli_fail(&e);
-    print_fit(&rq, &r);
+    gtao_params_print(stdout, &rq, &r);
     cJSON *root = gtao_fit_json(&rq, &r);
     char *text = cJSON_Print(root);
     status = text && atomic_write_text(output, text, &e) == 0 ? EXIT_OK : cli_fail(&e);

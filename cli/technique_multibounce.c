@@ -16,7 +16,6 @@
 #include "report/multibounce_section.h"
 #include "studies/multibounce_bench.h"
 #include "studies/multibounce_fit_input.h"
-#include "studies/multibounce_score.h"
 #include "report/multibounce_score_section.h"
 
 enum { MAX_FILES = 256 };
@@ -142,7 +141,7 @@ static int bench_multibounce(int argc, char **argv)
 }
 
 GTLAB_STUDY_STAGE_NO_REQUEST(all_stage_multibounce, multibounce_study_result, multibounce_study, multibounce_section)
-GTLAB_STUDY_STAGE_NO_REQUEST(stage_scores, multibounce_score_result, multibounce_score_project, multibounce_score_section)
+GTLAB_STUDY_STAGE_NO_REQUEST(stage_scores, shader_scores_result, shader_scores_project, shader_scores_section)
 
 const technique technique_multibounce = {
     .name = "multibounce",

@@ -5,7 +5,6 @@
  * cone aperture fitted to references: report/aperture_fit_figures.h) and the
  * stage specular-occlusion. */
 #define _GNU_SOURCE
-#include <cjson/cJSON.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -178,22 +177,13 @@ static int fit_aperture(int argc, char **argv)
     int loaded = 0;
     aperture_fit fit;
     if (aperture_cases_load(o.references, o.aos, o.reference_list.count, channel, refs, aos, cases, &loaded, &e) != 0 ||
-        aperture_fit_run(cases, loaded, mapping, exact, &fit, &e) != 0) {
+        aperture_fit_run(cases, loaded, mapping, exact, &fit, &e) != 0 ||
+        aperture_fit_write_json(&fit, channel, exact, o.output, &e) != 0 ||
+        (o.plot && aperture_fit_plot(&fit, 1, o.plot, "GTSO gloss-to-aperture: DSSIM against u", &e) != 0))
         status = cli_fail(&e);
-    } else {
-        cJSON *j = aperture_fit_json(&fit, channel, exact);
-        char *text = cJSON_Print(j);
-        cJSON_Delete(j);
-        if (!text)
-            gt_error_set(&e, o.output, "out of memory");
-        if (!text || atomic_write_text(o.output, text, &e) != 0 ||
-            (o.plot && aperture_fit_plot(&fit, 1, o.plot, "GTSO gloss-to-aperture: DSSIM against u", &e) != 0))
-            status = cli_fail(&e);
-        else
-            printf("u = %.4g (log10 u = %.3f): mean DSSIM %.5f; at the talk's u = 0.01: %.5f (%d evaluations)\n", fit.u,
-                   fit.log10_u, fit.dssim, fit.dssim_at_published, fit.evaluations);
-        free(text);
-    }
+    else
+        printf("u = %.4g (log10 u = %.3f): mean DSSIM %.5f; at the talk's u = 0.01: %.5f (%d evaluations)\n", fit.u,
+               fit.log10_u, fit.dssim, fit.dssim_at_published, fit.evaluations);
     aperture_cases_free(refs, aos, cases, loaded);
     return status;
 }

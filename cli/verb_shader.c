@@ -49,24 +49,27 @@ static int shader_run_command(int argc, char **argv)
 static const cli_option score_options[] = {
     CLI_CUSTOM("function", "F.glsl|F.hlsl", cli_list_add, "a function file (docs/shaders.md; the option may repeat)"),
     CLI_CUSTOM("plugin", "LIB.so", cli_list_add, "a C plug-in (core/plugin_abi.h; the option may repeat)"),
-    CLI_STRING("quantity", "Q", "the quantity the functions approximate: multibounce (the default)"),
+    CLI_STRING("quantity", "Q", "the quantity approximated: multibounce (the default) or specular-occlusion"),
+    CLI_CUSTOM("ao", "AO.exr", cli_list_add, "specular-occlusion: each reference's 'gtlab render ao' (in order)"),
     CLI_DOUBLE("timeout", "S", 0.001, 86400, "seconds a dispatch may take before 'device timeout'"),
     CLI_STRING("device", "NAME", "a Vulkan device whose name contains NAME (default: a GPU, else lavapipe)"), CLI_END};
 static const cli_command score_command = {"shader score", "Scores per-sample functions (GLSL/HLSL) and C plug-ins "
     "beside gtlab's own on\nmulti-bounce references ('gtlab render multibounce --albedo ...'), as the multibounce\n"
-    "stage validates its fit (docs/shaders.md).", score_options, "REF.exr ...", NULL};
+    "stage validates its fit, or on specular-occlusion references (docs/shaders.md).", score_options, "REF.exr ...",
+    NULL};
 
 static int shader_score_command(int argc, char **argv)
 {
-    const char *functions[MB_SCORE_MAX_FILES], *plugins[MB_SCORE_MAX_FILES];
+    const char *functions[MB_SCORE_MAX_FILES], *plugins[MB_SCORE_MAX_FILES], *aos[MB_SCORE_MAX_FILES];
     cli_list f = {functions, 0, MB_SCORE_MAX_FILES, "--function"}, p = {plugins, 0, MB_SCORE_MAX_FILES, "--plugin"};
-    multibounce_score_request r = {.functions = functions, .plugins = plugins, .timeout = 10.0};
+    cli_list a = {aos, 0, MB_SCORE_MAX_FILES, "--ao"};
+    multibounce_score_request r = {.functions = functions, .plugins = plugins, .aos = aos, .timeout = 10.0};
     cli_arguments refs;
     int status;
-    if (cli_options_parse(&score_command, (void *[]){&f, &p, &r.quantity, &r.timeout, &r.device, &refs}, argc, argv,
+    if (cli_options_parse(&score_command, (void *[]){&f, &p, &r.quantity, &a, &r.timeout, &r.device, &refs}, argc, argv,
                           &status) != 0)
         return status;
-    r.function_count = f.count, r.plugin_count = p.count, r.reference_count = refs.count;
+    r.function_count = f.count, r.plugin_count = p.count, r.reference_count = refs.count, r.ao_count = a.count;
     r.references = (const char *const *)refs.values;
     static multibounce_score_result result;
     gt_error e;

@@ -12,10 +12,17 @@
  *   gtlab_multibounce_v1   GTAOMultiBounce's quantity (realtime/multibounce.h):
  *                          V'_d from the visibility V_d and one colour
  *                          channel's albedo rho, for `count` samples
+ *   gtlab_specular_occlusion_v1
+ *                          specular occlusion V_s (realtime/specular_occlusion.h)
+ *                          from the cosine-weighted AO, the angle beta
+ *                          (radians) between the bent normal and the
+ *                          reflection vector, the perceptual roughness
+ *                          (alpha = roughness^2) and n.v, for `count` samples
  *
  * An entry point must be pure: the same inputs give the same outputs, on
  * any thread, and it may be called from several threads at once on disjoint
- * arrays. examples/multibounce_plugin.c is an example. Only this header's C
+ * arrays. examples/multibounce_plugin.c and examples/specular_occlusion_plugin.c
+ * are examples. Only this header's C
  * types cross the boundary. */
 #ifndef GTLAB_CORE_PLUGIN_ABI_H
 #define GTLAB_CORE_PLUGIN_ABI_H
@@ -30,5 +37,10 @@ typedef int (*gtlab_plugin_abi_fn)(void);
 #define GTLAB_MULTIBOUNCE_V1_SYMBOL "gtlab_multibounce_v1"
 /* out[i] = V'_d(visibility[i], albedo[i]), i < count. */
 typedef void (*gtlab_multibounce_v1_fn)(const float *visibility, const float *albedo, float *out, size_t count);
+
+#define GTLAB_SPECULAR_OCCLUSION_V1_SYMBOL "gtlab_specular_occlusion_v1"
+/* out[i] = V_s(ao[i], beta[i], roughness[i], n_dot_v[i]), i < count. */
+typedef void (*gtlab_specular_occlusion_v1_fn)(const float *ao, const float *beta, const float *roughness,
+                                               const float *n_dot_v, float *out, size_t count);
 
 #endif

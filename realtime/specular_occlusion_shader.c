@@ -31,3 +31,31 @@ char *specular_occlusion_shader_source(shader_language language, const char *gen
                       specular_occlusion_sg_inc_text);
     return rc < 0 ? NULL : text;
 }
+
+/* The contract's function (docs/shaders.md), GTSO with the talk's choices. */
+static const char template_function[] =
+    "\n// gtlab's function: GTSO's V_s from the cosine AO, the angle beta between the bent normal and\n"
+    "// the reflection vector, the perceptual roughness (alpha = roughness^2) and n.v (unused by GTSO).\n"
+    "float gtlab_specular_occlusion(float ao, float beta, float roughness, float n_dot_v)\n"
+    "{\n"
+    "    float alpha = roughness * roughness;\n"
+    "    return so_cone_cone(so_visibility_cos_cosine(ao), so_reflection_cos_exp2(alpha), beta, 1);\n"
+    "}\n";
+
+static const char template_head[] =
+    "// gtlab's per-sample function contract for specular occlusion (docs/shaders.md,\n"
+    "// \"Functions\"): gtlab wraps gtlab_specular_occlusion into a compute shader, runs it\n"
+    "// on Vulkan over a specular-occlusion reference's pixels and scores it like its own\n"
+    "// variants: gtlab shader score --quantity specular-occlusion --function THIS --ao AO.exr REF.exr\n"
+    "// %s\n%s%s";
+
+char *specular_occlusion_template_source(shader_language language)
+{
+    char *functions = specular_occlusion_shader_source(language, "realtime/specular_occlusion_shader.c"), *text = NULL;
+    const char *note = language == SHADER_GLSL
+                           ? "No #version line: gtlab writes `#version 450` and keeps this file's line numbers."
+                           : "The file is used as written, gtlab's wrapper after it.";
+    int rc = functions ? asprintf(&text, template_head, note, functions, template_function) : -1;
+    free(functions);
+    return rc < 0 ? NULL : text;
+}

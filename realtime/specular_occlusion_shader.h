@@ -28,4 +28,13 @@ extern const char specular_occlusion_sg_inc_text[];
  * naming `generator`, the dialect and the functions. */
 char *specular_occlusion_shader_source(shader_language language, const char *generator);
 
+/* shaders/template_specular_occlusion.glsl/.hlsl (malloc'd; NULL if out of
+ * memory): the functions above and the per-sample contract's
+ * float gtlab_specular_occlusion(float ao, float beta, float roughness, float n_dot_v)
+ * as GTSO with the talk's choices, so_cone_cone(so_visibility_cos_cosine(ao),
+ * so_reflection_cos_exp2(roughness^2), beta, 1): the same math as gtlab's C
+ * variant cone-exact:exp2-alpha. tests/gpu/test_gpu_so_function_score.c
+ * checks the files equal this text. */
+char *specular_occlusion_template_source(shader_language language);
+
 #endif

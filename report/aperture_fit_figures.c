@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "core/atomic_file.h"
 #include "report/gnuplot_plot.h"
 
 cJSON *aperture_fit_json(const aperture_fit *fit, const char *channel, int exact)
@@ -103,5 +104,15 @@ int aperture_fit_plot(const aperture_fit *fits, int count, const char *path, con
     fclose(mem);
     int rc = gnuplot_render(script, path, 800, 500, e);
     free(script);
+    return rc;
+}
+
+int aperture_fit_write_json(const aperture_fit *fit, const char *channel, int exact, const char *path, gt_error *e)
+{
+    cJSON *j = aperture_fit_json(fit, channel, exact);
+    char *text = j ? cJSON_Print(j) : NULL;
+    cJSON_Delete(j);
+    int rc = text ? atomic_write_text(path, text, e) : gt_error_set(e, path, "out of memory");
+    free(text);
     return rc;
 }

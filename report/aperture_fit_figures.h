@@ -11,6 +11,9 @@
 
 /* The fit as JSON (cone, u, DSSIM, DSSIM at the talk's u, the curve). */
 cJSON *aperture_fit_json(const aperture_fit *fit, const char *channel, int exact);
+/* That JSON written to path (atomically): `gtlab fit aperture`'s output.
+ * Returns 0, or -1 with e. */
+int aperture_fit_write_json(const aperture_fit *fit, const char *channel, int exact, const char *path, gt_error *e);
 /* The curves of fits[0 .. count) in one PNG plot, each fitted u marked. */
 int aperture_fit_plot(const aperture_fit *fits, int count, const char *path, const char *title, gt_error *e);
 /* The RMSE of each region (fitters/aperture_fit.h) against u, as a PNG plot. */

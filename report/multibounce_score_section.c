@@ -3,6 +3,7 @@
 #include "report/multibounce_score_section.h"
 
 #include "report/report_table.h"
+#include "studies/specular_occlusion_score.h"
 
 #define COLUMNS(c) (int)(sizeof(c) / sizeof((c)[0]))
 
@@ -14,6 +15,16 @@ static const report_column variant_columns[] = {
     REPORT_REAL("mean RMSE", "rmse", "%.5f", multibounce_score_variant, rmse),
     REPORT_REAL("RMSE floor", "noise_floor_rmse", "%.5f", multibounce_score_variant, rmse_floor),
 };
+
+/* The table of the variants' means, and summary.json's `key`: {count_name: rows, variants: [...]}. */
+static void variant_table(report_context *ctx, const multibounce_score_result *r, const char *key,
+                          const char *count_name)
+{
+    cJSON *o = cJSON_AddObjectToObject(ctx->summary, key);
+    cJSON_AddNumberToObject(o, count_name, r->row_count);
+    report_rows(ctx->doc, cJSON_AddArrayToObject(o, "variants"), variant_columns, COLUMNS(variant_columns),
+                r->variants, sizeof r->variants[0], r->variant_count);
+}
 
 int multibounce_score_section(report_context *ctx, const multibounce_score_result *r, gt_error *e)
 {
@@ -29,9 +40,33 @@ int multibounce_score_section(report_context *ctx, const multibounce_score_resul
                      "albedo pairs; the means below, beside V_d alone and the talk's GTAOMultiBounce. A variant "
                      "within the noise floor is as good as these references can tell.",
                      r->device[0] ? ": " : "", r->device, r->row_count);
-    cJSON *o = cJSON_AddObjectToObject(ctx->summary, "shader_scores");
-    cJSON_AddNumberToObject(o, "pairs", r->row_count);
-    report_rows(ctx->doc, cJSON_AddArrayToObject(o, "variants"), variant_columns, COLUMNS(variant_columns),
-                r->variants, sizeof r->variants[0], r->variant_count);
+    variant_table(ctx, r, "shader_scores", "pairs");
     return 0;
+}
+
+int specular_occlusion_score_section(report_context *ctx, const multibounce_score_result *r, gt_error *e)
+{
+    (void)e;
+    if (r->variant_count == 0)
+        return 0;
+    report_heading(ctx->doc, 2, "Your shaders and plug-ins: specular occlusion");
+    report_paragraph(ctx->doc,
+                     "The project's function files defining `gtlab_specular_occlusion` (run on Vulkan%s%s) and C "
+                     "plug-ins exporting `gtlab_specular_occlusion_v1`, scored as the specular-occlusion study "
+                     "scores gtlab's own variants: each takes the AO reference's cosine AO and bent normal and is "
+                     "compared with the Monte Carlo V_s (specocc.V, GGX) over %d references (the study's scenes "
+                     "and roughnesses, rendered again into `%s/`); the means below, beside gtlab's AO alone, "
+                     "Lagarde's, GTSO's cone/cone (exact caps and Oat and Sander's, cos a_s = 2^(-3.32193 "
+                     "alpha^2)) and the spherical Gaussians. The floors are the references' own (their even against "
+                     "their odd samples).",
+                     r->device[0] ? ": " : "", r->device, r->row_count, SO_SCORE_DIR);
+    variant_table(ctx, r, "shader_scores_specular_occlusion", "references");
+    return 0;
+}
+
+int shader_scores_section(report_context *ctx, const shader_scores_result *r, gt_error *e)
+{
+    return multibounce_score_section(ctx, &r->multibounce, e) != 0
+               ? -1
+               : specular_occlusion_score_section(ctx, &r->specular_occlusion, e);
 }

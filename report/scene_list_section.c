@@ -1,6 +1,8 @@
 #include "report/scene_list_section.h"
 
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "report/report_table.h"
 
@@ -43,6 +45,26 @@ void scene_names_json(cJSON *parent, const char (*names)[64], int count)
         cJSON_AddItemToArray(a, cJSON_CreateString(names[i]));
 }
 
+/* The project's screen shaders: [{"path": ..., "params": {"name": value, ...}}, ...]. */
+static cJSON *screen_shaders_json(const study_project *project)
+{
+    cJSON *a = cJSON_CreateArray();
+    for (int i = 0; i < project->screen_shader_count; ++i) {
+        const study_screen_shader *x = &project->screen_shaders[i];
+        cJSON *o = cJSON_CreateObject(), *params;
+        cJSON_AddItemToArray(a, o);
+        cJSON_AddStringToObject(o, "path", x->path);
+        params = cJSON_AddObjectToObject(o, "params");
+        for (int k = 0; k < x->param_count; ++k) {
+            const char *eq = strchr(x->params[k], '=');
+            char name[PROJECT_PARAM_TEXT];
+            snprintf(name, sizeof name, "%.*s", (int)(eq - x->params[k]), x->params[k]);
+            cJSON_AddNumberToObject(params, name, strtod(eq + 1, NULL));
+        }
+    }
+    return a;
+}
+
 void scene_list_section(report_context *ctx, const study_project *project, const char *path)
 {
     if (!path)
@@ -60,4 +82,5 @@ void scene_list_section(report_context *ctx, const study_project *project, const
                                                       project->shader_count));
     cJSON_AddItemToObject(json, "plugins", files_json((const char(*)[STUDY_SCENE_PATH_MAX])project->plugins,
                                                       project->plugin_count));
+    cJSON_AddItemToObject(json, "screen_shaders", screen_shaders_json(project));
 }

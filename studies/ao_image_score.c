@@ -13,7 +13,8 @@ int ao_image_score_compute(const gtao_scene_refs *r, const float *ao, const floa
     image_error_stats hf, r3;
     ssim_result ss;
     flip_result flip;
-    if (image_error_compute(ao, r->hf_ao, r->mask, r->width, r->height, r->scene, &hf, e) != 0 ||
+    hf.rmse = NAN;
+    if ((r->hf_ao && image_error_compute(ao, r->hf_ao, r->mask, r->width, r->height, r->scene, &hf, e) != 0) ||
         image_error_compute(ao, r->ref3d, r->mask, r->width, r->height, r->scene, &r3, e) != 0 ||
         ssim_compute(ao, r->ref3d, r->mask, r->width, r->height, r->scene, NULL, &ss, e) != 0 ||
         flip_grey(r->ref3d, ao, r->mask, r->width, r->height, r->scene, NULL, &flip, e) != 0)

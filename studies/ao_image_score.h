@@ -1,7 +1,8 @@
 /* One real-time AO image scored against a scene's two references
  * (studies/gtao_scene_refs.h), the figures every AO ranking of the GTAO and
  * VBAO sections shows:
- *   rmse_hf   RMSE against the height-field reference (the estimator's error);
+ *   rmse_hf   RMSE against the height-field reference (the estimator's error;
+ *             NaN when the scene's refs have none, gtao_scene_refs_load_3d);
  *   rmse_3d   RMSE against the 3-D reference (what a viewer sees);
  *   dssim_3d  DSSIM against the 3-D reference (metrics/ssim.h);
  *   flip_3d   mean LDR-FLIP against the 3-D reference (metrics/flip.h: AO is

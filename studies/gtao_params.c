@@ -1,6 +1,7 @@
 /* The GTAO parameter fit on a folder of AO references; see gtao_params.h. */
 #include "studies/gtao_params.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -70,4 +71,21 @@ int gtao_params_study(const gtao_fit_request *rq, gtao_fit_result *out, gt_error
     free_scenes(&train);
     free_scenes(&test);
     return rc;
+}
+
+void gtao_params_print(FILE *f, const gtao_fit_request *rq, const gtao_fit_result *r)
+{
+    fprintf(f, "gtao-params (%s preset, %s objective): %s after %d iterations\n", rq->preset,
+            gtao_fit_objective_names[rq->objective], r->converged ? "converged" : "not converged", r->iterations);
+    for (int k = 0; k < GTAO_FIT_PARAMS; ++k)
+        fprintf(f, "  %-28s %.4f +- %.4f (start %.4f)\n", gtao_fit_param_names[k], r->value[k],
+                r->have_se ? r->se[k] : NAN, r->start[k]);
+    for (int held_out = 0; held_out <= 1; ++held_out) {
+        fprintf(f, "%s scenes:\n", held_out ? "held-out" : "training");
+        for (int i = 0; i < r->score_count; ++i)
+            if (r->scores[i].held_out == held_out)
+                fprintf(f, "  %-16s RMSE %.4f -> %.4f   DSSIM %.4f -> %.4f\n", r->scores[i].scene,
+                        r->scores[i].rmse_before, r->scores[i].rmse_after, r->scores[i].dssim_before,
+                        r->scores[i].dssim_after);
+    }
 }

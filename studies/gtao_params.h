@@ -5,6 +5,8 @@
 #ifndef GTLAB_STUDIES_GTAO_PARAMS_H
 #define GTLAB_STUDIES_GTAO_PARAMS_H
 
+#include <stdio.h>
+
 #include "core/error.h"
 #include "fitters/gtao_params_fit.h"
 
@@ -25,5 +27,10 @@ typedef struct {
 /* Loads the references, fits, scores. Returns 0, or -1 with e (a missing or
  * unreadable reference, an unknown preset, no covered pixel, the solver). */
 int gtao_params_study(const gtao_fit_request *rq, gtao_fit_result *out, gt_error *e);
+
+/* The fit as `gtlab fit gtao-params` prints it: each parameter with its
+ * standard error and start, then each scene's RMSE and DSSIM before and
+ * after, training scenes first. */
+void gtao_params_print(FILE *f, const gtao_fit_request *rq, const gtao_fit_result *r);
 
 #endif

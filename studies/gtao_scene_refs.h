@@ -28,6 +28,9 @@ typedef struct {
  * ao.V); nothing to free then. */
 int gtao_scene_refs_load(const char *refs_dir, const char *gtao_dir, const char *scene, gtao_scene_refs *out,
                          gt_error *e);
+/* The 3-D reference alone, <refs_dir>/<scene>.exr: hf is empty and hf_ao,
+ * hf_stderr NULL (the stage screen-shaders, which needs only the ao stage). */
+int gtao_scene_refs_load_3d(const char *refs_dir, const char *scene, gtao_scene_refs *out, gt_error *e);
 void gtao_scene_refs_free(gtao_scene_refs *s);
 
 /* GTAO's parameters with no radius limit, as gtao_validation scores them:

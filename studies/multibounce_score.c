@@ -17,7 +17,7 @@
 #include "realtime/multibounce.h"
 #include "studies/multibounce_parts.h"
 #include "studies/plugin.h"
-#include "studies/study_project.h"
+#include "studies/specular_occlusion_score.h"
 
 typedef enum { VARIANT_INPUT, VARIANT_MODEL, VARIANT_FUNCTION, VARIANT_PLUGIN } variant_kind;
 
@@ -58,12 +58,8 @@ static variant *add_variant(variants *vs, multibounce_score_result *out, variant
 static int load_function(const multibounce_score_request *rq, variants *vs, variant *v, multibounce_score_result *out,
                          gt_error *e)
 {
-    if (gpu_read_source(v->path, &v->text, e) != 0)
+    if (gpu_function_load(&gpu_function_multibounce, v->path, &v->text, e) != 0)
         return -1;
-    char *wrapped = gpu_function_wrap(v->text, v->path, e);
-    if (!wrapped)
-        return -1;
-    free(wrapped);
     if (!vs->device && gpu_device_open(rq->device, &vs->device, e) != 0)
         return -1;
     snprintf(out->device, sizeof out->device, "%s", gpu_device_name(vs->device));
@@ -113,7 +109,8 @@ static int apply_function(const variants *vs, const variant *v, const float *vis
             in[2 * count] = visibility[i], in[2 * count++ + 1] = albedo;
     int rc = !in || !values ? gt_error_set(e, v->path, "out of memory")
              : count == 0   ? 0
-                            : gpu_function_eval(vs->device, v->text, v->path, in, values, count, vs->timeout, e);
+                            : gpu_function_eval(vs->device, &gpu_function_multibounce, v->text, v->path, in, values,
+                                                count, vs->timeout, e);
     for (size_t i = 0, j = 0; rc == 0 && i < n; ++i)
         out[i] = mask[i] != 0.0f ? values[j++] : 0.0f;
     free(in), free(values);
@@ -194,8 +191,7 @@ static int score_file(const variants *vs, const char *path, multibounce_score_re
     return rc;
 }
 
-/* The mean row and each variant's means. */
-static void take_means(multibounce_score_result *out)
+void multibounce_score_take_means(multibounce_score_result *out)
 {
     multibounce_score_row *m = &out->mean;
     memset(m, 0, sizeof *m);
@@ -218,8 +214,13 @@ static void take_means(multibounce_score_result *out)
 int multibounce_score(const multibounce_score_request *rq, multibounce_score_result *out, gt_error *e)
 {
     memset(out, 0, sizeof *out);
+    if (rq->quantity && strcmp(rq->quantity, SO_SCORE_QUANTITY) == 0)
+        return specular_occlusion_score(rq, out, e);
     if (rq->quantity && strcmp(rq->quantity, "multibounce") != 0)
-        return gt_error_set(e, "--quantity", "'%s': gtlab scores multibounce functions (so far)", rq->quantity);
+        return gt_error_set(e, "--quantity", "'%s': gtlab scores multibounce and %s functions (so far)", rq->quantity,
+                            SO_SCORE_QUANTITY);
+    out->parameter = "albedo";
+    out->caption = "V'_d of the odd-sample half against each variant fed V_d of the even half";
     if (rq->function_count + rq->plugin_count == 0)
         return gt_error_set(e, "shader score", "nothing to score: give --function F.glsl|F.hlsl or --plugin LIB.so");
     if (rq->reference_count < 1 || rq->reference_count > MB_SCORE_MAX_FILES)
@@ -230,18 +231,27 @@ int multibounce_score(const multibounce_score_request *rq, multibounce_score_res
     for (int i = 0; i < rq->reference_count && rc == 0; ++i)
         rc = score_file(vs, rq->references[i], out, e);
     if (rc == 0)
-        take_means(out);
+        multibounce_score_take_means(out);
     if (vs)
         free_variants(vs);
     free(vs);
     return rc;
 }
 
+/* The parameter column's width: 6 ("albedo"), or its name's. */
+static int parameter_width(const multibounce_score_result *r)
+{
+    int n = (int)strlen(r->parameter);
+    return n > 6 ? n : 6;
+}
+
 static void print_row(FILE *f, const multibounce_score_result *r, const multibounce_score_row *row)
 {
-    char albedo[16] = "     -";
+    int width = parameter_width(r);
+    char albedo[32];
+    snprintf(albedo, sizeof albedo, "%*s", width, "-");
     if (!isnan(row->albedo))
-        snprintf(albedo, sizeof albedo, "%6.2f", row->albedo);
+        snprintf(albedo, sizeof albedo, "%*.2f", width, row->albedo);
     fprintf(f, "%-20.20s %s  %12.3e", row->scene, albedo, row->noise_floor_dssim);
     for (int k = 0; k < r->variant_count; ++k)
         fprintf(f, " %12.3e", row->dssim[k]);
@@ -253,9 +263,8 @@ static void print_row(FILE *f, const multibounce_score_result *r, const multibou
 
 void multibounce_score_print(FILE *f, const multibounce_score_result *r)
 {
-    fprintf(f, "V'_d of the odd-sample half against each variant fed V_d of the even half%s%s\n",
-            r->device[0] ? "; functions on " : "", r->device);
-    fprintf(f, "%-20s %6s  %12s", "scene", "albedo", "DSSIM floor");
+    fprintf(f, "%s%s%s\n", r->caption, r->device[0] ? "; functions on " : "", r->device);
+    fprintf(f, "%-20s %*s  %12s", "scene", parameter_width(r), r->parameter, "DSSIM floor");
     for (int k = 0; k < r->variant_count; ++k)
         fprintf(f, " %12.12s", r->variants[k].name);
     fprintf(f, "  %12s", "RMSE floor");
@@ -294,25 +303,22 @@ static int find_references(const study_context *ctx, char paths[][4096], int *co
     return n > 0 ? 0 : gt_error_set(e, dir, "no multi-bounce references (*.exr; run the multibounce stage)");
 }
 
-int multibounce_score_project(const study_context *ctx, multibounce_score_result *out, gt_error *e)
+int multibounce_score_project(const study_context *ctx, const char *const *functions, int function_count,
+                              const char *const *plugins, int plugin_count, multibounce_score_result *out,
+                              gt_error *e)
 {
-    const study_project *p = ctx->project;
     memset(out, 0, sizeof *out);
-    if (!p || p->shader_count + p->plugin_count == 0)
+    if (function_count + plugin_count == 0)
         return 0;
     static char paths[MB_SCORE_MAX_FILES][4096];
-    const char *references[MB_SCORE_MAX_FILES], *functions[PROJECT_MAX_FILES], *plugins[PROJECT_MAX_FILES];
+    const char *references[MB_SCORE_MAX_FILES];
     int count = 0;
     if (find_references(ctx, paths, &count, e) != 0)
         return -1;
     for (int i = 0; i < count; ++i)
         references[i] = paths[i];
-    for (int i = 0; i < p->shader_count; ++i)
-        functions[i] = p->shaders[i];
-    for (int i = 0; i < p->plugin_count; ++i)
-        plugins[i] = p->plugins[i];
     multibounce_score_request rq = {.quantity = "multibounce", .references = references, .reference_count = count,
-                                    .functions = functions, .function_count = p->shader_count, .plugins = plugins,
-                                    .plugin_count = p->plugin_count, .timeout = 10.0};
+                                    .functions = functions, .function_count = function_count, .plugins = plugins,
+                                    .plugin_count = plugin_count, .timeout = 10.0};
     return multibounce_score(&rq, out, e);
 }

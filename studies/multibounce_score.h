@@ -28,7 +28,8 @@ enum {
 };
 
 typedef struct {
-    const char *quantity;          /* "multibounce" (NULL: the same); named "--quantity" in errors */
+    const char *quantity;          /* "multibounce" (NULL: the same) or "specular-occlusion"
+                                      (studies/specular_occlusion_score.h); named "--quantity" in errors */
     const char *const *references; /* EXRs of `gtlab render multibounce` */
     int reference_count;
     const char *const *functions;  /* GLSL/HLSL function files */
@@ -37,6 +38,8 @@ typedef struct {
     int plugin_count;
     const char *device;            /* a Vulkan device name substring, or NULL */
     double timeout;                /* seconds per dispatch */
+    const char *const *aos;        /* specular-occlusion: the AO reference of each reference's view */
+    int ao_count;
 } multibounce_score_request;
 
 /* One reference and albedo. */
@@ -61,21 +64,29 @@ typedef struct {
     multibounce_score_row rows[MB_SCORE_MAX_ROWS];
     multibounce_score_row mean;
     char device[MB_SCORE_NAME]; /* the Vulkan device of the function files; "" without any */
+    const char *parameter;      /* the rows' parameter: "albedo", or "roughness" for specular occlusion */
+    const char *caption;        /* the table's first line */
 } multibounce_score_result;
 
-/* Scores the request's variants. Returns 0, or -1 with e naming the file at
+/* Scores the request's variants (a specular-occlusion request:
+ * specular_occlusion_score). Returns 0, or -1 with e naming the file at
  * fault: a reference that is not a grey multi-bounce render, a plug-in or a
  * function that cannot be loaded or compiled, NaN, no Vulkan device. */
 int multibounce_score(const multibounce_score_request *rq, multibounce_score_result *out, gt_error *e);
+
+/* The mean row and each variant's means from the rows. */
+void multibounce_score_take_means(multibounce_score_result *out);
 
 /* The table: one row per reference and albedo and the mean; DSSIM and RMSE
  * columns per variant, after the floor. */
 void multibounce_score_print(FILE *f, const multibounce_score_result *r);
 
-/* The stage of `gtlab all`: the project's shaders (function files) and
- * plugins scored on the multi-bounce study's references in
- * <output>/MULTIBOUNCE_STUDY_DIR (*.exr, in name order). Without a project
- * or with both lists empty it reads nothing and out->variant_count = 0. */
-int multibounce_score_project(const study_context *ctx, multibounce_score_result *out, gt_error *e);
+/* For the stage of `gtlab all` (studies/shader_scores.h): a project's
+ * multi-bounce function files and plug-ins scored on the multi-bounce
+ * study's references in <output>/MULTIBOUNCE_STUDY_DIR (*.exr, in name
+ * order). With both lists empty it reads nothing and out->variant_count = 0. */
+int multibounce_score_project(const study_context *ctx, const char *const *functions, int function_count,
+                              const char *const *plugins, int plugin_count, multibounce_score_result *out,
+                              gt_error *e);
 
 #endif

@@ -36,8 +36,10 @@ int plugin_open(const char *path, gtlab_plugin *p, gt_error *e)
                  : 0;
     if (rc == 0) {
         *(void **)&p->multibounce_v1 = symbol(p->handle, GTLAB_MULTIBOUNCE_V1_SYMBOL);
-        if (!p->multibounce_v1)
-            rc = gt_error_set(e, path, "exports no entry point gtlab knows (%s)", GTLAB_MULTIBOUNCE_V1_SYMBOL);
+        *(void **)&p->specular_occlusion_v1 = symbol(p->handle, GTLAB_SPECULAR_OCCLUSION_V1_SYMBOL);
+        if (!p->multibounce_v1 && !p->specular_occlusion_v1)
+            rc = gt_error_set(e, path, "exports no entry point gtlab knows (%s, %s)", GTLAB_MULTIBOUNCE_V1_SYMBOL,
+                              GTLAB_SPECULAR_OCCLUSION_V1_SYMBOL);
     }
     if (rc != 0)
         plugin_close(p);
@@ -49,6 +51,17 @@ void plugin_close(gtlab_plugin *p)
     if (p->handle)
         dlclose(p->handle);
     memset(p, 0, sizeof *p);
+}
+
+/* The plug-in's out kept inside the mask, 0 outside; -1 with e at a NaN inside. */
+static int masked(const char *what, const float *mask, size_t n, float *out, gt_error *e)
+{
+    for (size_t i = 0; i < n; ++i) {
+        if (isnan(out[i]) && mask[i] != 0.0f)
+            return gt_error_set(e, what, "the plug-in returned NaN at sample %zu", i);
+        out[i] = mask[i] != 0.0f ? out[i] : 0.0f;
+    }
+    return 0;
 }
 
 int plugin_apply_multibounce(const gtlab_plugin *p, const char *what, const float *visibility, const float *mask,
@@ -63,10 +76,15 @@ int plugin_apply_multibounce(const gtlab_plugin *p, const char *what, const floa
         rho[i] = albedo;
     p->multibounce_v1(visibility, rho, out, n);
     free(rho);
-    for (size_t i = 0; i < n; ++i) {
-        if (isnan(out[i]) && mask[i] != 0.0f)
-            return gt_error_set(e, what, "the plug-in returned NaN at sample %zu", i);
-        out[i] = mask[i] != 0.0f ? out[i] : 0.0f;
-    }
-    return 0;
+    return masked(what, mask, n, out, e);
+}
+
+int plugin_apply_specular_occlusion(const gtlab_plugin *p, const char *what, const so_pixel_inputs *in, float *out,
+                                    gt_error *e)
+{
+    if (!p->specular_occlusion_v1)
+        return gt_error_set(e, what, "the plug-in has no %s", GTLAB_SPECULAR_OCCLUSION_V1_SYMBOL);
+    size_t n = (size_t)in->width * (size_t)in->height;
+    p->specular_occlusion_v1(in->ao_cosine, in->beta, in->roughness, in->n_dot_v, out, n);
+    return masked(what, in->mask, n, out, e);
 }

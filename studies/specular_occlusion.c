@@ -26,7 +26,7 @@ enum { LUT_SIZES = 3, BC4_SIZES = 2, CASES_MAX = SO_STUDY_MAX_SCENES * SO_STUDY_
 static const char *const definition_channels[SO_STUDY_DEFINITIONS] = {CH_SPECOCC, CH_SPECOCC_D, CH_SPECOCC_PHONG};
 static const char *const definition_names[SO_STUDY_DEFINITIONS] = {"gtso", "d_only", "phong"};
 enum { DEFINITION_GTSO, DEFINITION_D_ONLY, DEFINITION_PHONG }; /* indices of the two arrays above */
-static const float roughness_values[SO_STUDY_ROUGHNESSES] = {0.25f, 0.5f, 0.8f};
+const float so_study_roughness_values[SO_STUDY_ROUGHNESSES] = {0.25f, 0.5f, 0.8f};
 static const int lut_sizes[LUT_SIZES] = {16, 32, 64};
 
 /* What the study holds while it runs: the tables the LUT variants read, the
@@ -204,7 +204,8 @@ static int build_luts(so_state *st, gt_error *e)
 
 /* The noise floor of a ratio channel: DSSIM between the ratios of the even
  * and of the odd samples' means. */
-static int ratio_noise_floor(const image *ref, const char *what, const char *channel, double *dssim, gt_error *e)
+int so_study_ratio_noise_floor(const image *ref, const char *what, const char *channel, double *dssim, double *rmse,
+                               gt_error *e)
 {
     mc_film film;
     if (mc_film_read_channels(ref, what, &film, e) != 0)
@@ -223,8 +224,11 @@ static int ratio_noise_floor(const image *ref, const char *what, const char *cha
             if (mask[i] == 0.0f)
                 a[i] = b[i] = 0.0f;
         ssim_result r;
+        image_error_stats err;
         rc = ssim_compute(a, b, mask, ref->width, ref->height, what, NULL, &r, e);
         *dssim = r.dssim;
+        if (rc == 0 && rmse && (rc = image_error_compute(a, b, mask, ref->width, ref->height, what, &err, e)) == 0)
+            *rmse = err.rmse;
     }
     image_free(&half[0]);
     image_free(&half[1]);
@@ -261,9 +265,7 @@ static int write_heatmaps(const so_state *st, const image *ref, const so_pixel_i
     return rc;
 }
 
-/* DSSIM and RMSE of approx against truth over the mask, and its mean FLIP
- * (truth the reference) when flip_sum is not NULL, added to the sums. */
-static int add_scores(const float *truth, const float *approx, const float *mask, int width, int height,
+int so_study_add_scores(const float *truth, const float *approx, const float *mask, int width, int height,
                       const char *what, double *dssim_sum, double *rmse_sum, double *flip_sum, gt_error *e)
 {
     ssim_result s;
@@ -286,7 +288,7 @@ static int score_splits(so_state *st, const image *ref, const char *what, int ri
     static const char *const approximations[2] = {CH_SPLIT_TWO, CH_SPLIT_THREE};
     const float *truth = image_channel_data(ref, CH_SPLIT_TRUTH), *mask = image_channel_data(ref, CH_MASK);
     for (int k = 0; k < 2; ++k)
-        if (add_scores(truth, image_channel_data(ref, approximations[k]), mask, ref->width, ref->height, what,
+        if (so_study_add_scores(truth, image_channel_data(ref, approximations[k]), mask, ref->width, ref->height, what,
                        &st->split_dssim[k][ri], &st->split_rmse[k][ri], NULL, e) != 0)
             return -1;
     ssim_result floor;
@@ -325,7 +327,7 @@ static int score_variants(so_state *st, const aperture_case *c, const so_pixel_i
         int g = st->out->variants[v].on_gtao;
         so_approx_evaluate(g ? &on_gtao[g - 1] : in, &st->variants[v], approx);
         double before = st->dssim[v][ri];
-        rc = add_scores(c->reference, approx, in->mask, in->width, in->height, what, &st->dssim[v][ri],
+        rc = so_study_add_scores(c->reference, approx, in->mask, in->width, in->height, what, &st->dssim[v][ri],
                         &st->rmse[v][ri], &st->flip[v][ri], e);
         st->case_dssim[v][st->scored] = st->dssim[v][ri] - before;
     }
@@ -349,7 +351,7 @@ static int score_rankings(so_state *st, const image *ref, const char *what, int 
         double floor = 0.0;
         rc = so_ranking_scores_add(&st->ranking[k], &c->inputs, c->reference, &regions, what, e);
         if (rc == 0)
-            rc = ratio_noise_floor(ref, what, definition_channels[definition[k]], &floor, e);
+            rc = so_study_ratio_noise_floor(ref, what, definition_channels[definition[k]], &floor, NULL, e);
         st->ranking[k].floor_sum[ri] += floor;
     }
     so_regions_free(&regions);
@@ -391,7 +393,7 @@ static int score(so_state *st, const image *ref, const image *ao, const image gt
         rc = score_cone_view(st, ref, ao, what, ri, e);
     double floor = 0.0;
     if (rc == 0)
-        rc = ratio_noise_floor(ref, what, CH_SPECOCC, &floor, e);
+        rc = so_study_ratio_noise_floor(ref, what, CH_SPECOCC, &floor, NULL, e);
     st->floor_dssim[ri] += floor;
     if (rc == 0)
         rc = score_splits(st, ref, what, ri, e);
@@ -402,14 +404,28 @@ static int score(so_state *st, const image *ref, const image *ao, const image gt
 
 /* ---- the references ------------------------------------------------------------ */
 
+void so_study_resolution(const study_context *ctx, int *size, int *spp)
+{
+    int preview = ctx->quality == QUALITY_PREVIEW;
+    *size = preview ? 96 : 256, *spp = preview ? 128 : 1024;
+}
+
+int so_study_render(const study_context *ctx, const scene *s, const char *spec, const camera *cam, reference_quantity q,
+                    float roughness, image *out, render_stats *stats, gt_error *e)
+{
+    int size, spp;
+    so_study_resolution(ctx, &size, &spp);
+    reference_request req = {.quantity = q, .sampling = {.spp = spp, .seed = 1, .threads = ctx->threads},
+                             .normals = NORMAL_SHADING, .max_distance = INFINITY, .roughness = roughness,
+                             .environment = ENVIRONMENT_SKY};
+    return reference_render(s, spec, cam, &req, out, stats, e);
+}
+
 static int render(so_state *st, const scene *s, const char *spec, const camera *cam, reference_quantity q,
                   float roughness, image *out, gt_error *e)
 {
-    reference_request req = {.quantity = q, .sampling = {.spp = st->out->spp, .seed = 1, .threads = st->ctx->threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY, .roughness = roughness,
-                             .environment = ENVIRONMENT_SKY};
     render_stats stats;
-    if (reference_render(s, spec, cam, &req, out, &stats, e) != 0)
+    if (so_study_render(st->ctx, s, spec, cam, q, roughness, out, &stats, e) != 0)
         return -1;
     if (q == QUANTITY_SPECULAR_OCCLUSION && stats.seconds > 0.0) {
         st->samples_per_second_sum += (double)stats.samples / stats.seconds;
@@ -467,8 +483,8 @@ static int score_roughnesses(so_state *st, const scene *s, const char *spec, con
     for (int r = 0; r < SO_STUDY_ROUGHNESSES && rc == 0; ++r) {
         image ref;
         char what[256];
-        snprintf(what, sizeof what, "%s (roughness %.2f)", name, roughness_values[r]);
-        if ((rc = render(st, s, spec, cam, QUANTITY_SPECULAR_OCCLUSION, roughness_values[r], &ref, e)) != 0)
+        snprintf(what, sizeof what, "%s (roughness %.2f)", name, so_study_roughness_values[r]);
+        if ((rc = render(st, s, spec, cam, QUANTITY_SPECULAR_OCCLUSION, so_study_roughness_values[r], &ref, e)) != 0)
             break;
         rc = score(st, &ref, ao, gtao, what, r, name, e);
         image_free(&ref);
@@ -538,7 +554,7 @@ static void average(const so_state *st, so_study_result *out)
     for (int k = 0; k < SO_STUDY_ROUGHNESSES; ++k) {
         so_split_row *s = &out->splits[k];
         out->noise_floor_dssim[k] = st->floor_dssim[k] / n;
-        s->roughness = roughness_values[k];
+        s->roughness = so_study_roughness_values[k];
         s->dssim_two = st->split_dssim[0][k] / n, s->dssim_three = st->split_dssim[1][k] / n;
         s->rmse_two = st->split_rmse[0][k] / n, s->rmse_three = st->split_rmse[1][k] / n;
         s->noise_floor = st->split_floor[k] / n;
@@ -587,11 +603,10 @@ static void free_state(so_state *st)
 
 static void init_result(const study_context *ctx, so_study_result *out)
 {
-    int preview = ctx->quality == QUALITY_PREVIEW;
     memset(out, 0, sizeof *out);
-    out->size = preview ? 96 : 256, out->spp = preview ? 128 : 1024;
+    so_study_resolution(ctx, &out->size, &out->spp);
     for (int k = 0; k < SO_STUDY_ROUGHNESSES; ++k)
-        out->roughness[k] = roughness_values[k];
+        out->roughness[k] = so_study_roughness_values[k];
 }
 
 /* The LUTs, the variants, every scene, the means and the fits. */

@@ -34,7 +34,9 @@
 #ifndef GTLAB_STUDIES_SPECULAR_OCCLUSION_H
 #define GTLAB_STUDIES_SPECULAR_OCCLUSION_H
 
+#include "core/image.h"
 #include "fitters/aperture_fit.h"
+#include "raytracer/reference_render.h"
 #include "luts/specular_occlusion_lut.h"
 #include "realtime/specular_occlusion_screen.h"
 #include "studies/study.h"
@@ -197,6 +199,29 @@ typedef struct {
 } so_study_result;
 
 int specular_occlusion_study(const study_context *ctx, so_study_result *out, gt_error *e);
+
+/* The study's references, as it renders them (it keeps them in memory
+ * only): the image size (square) and samples per pixel for ctx's quality,
+ * the roughnesses, and one scene view's AO reference (q = QUANTITY_AO,
+ * roughness < 0) or specular-occlusion reference at a roughness (seed 1,
+ * the analytic sky). studies/specular_occlusion_score.h renders them again
+ * for a project's functions: the same request, the same images. */
+void so_study_resolution(const study_context *ctx, int *size, int *spp);
+extern const float so_study_roughness_values[SO_STUDY_ROUGHNESSES];
+int so_study_render(const study_context *ctx, const scene *s, const char *spec, const camera *cam, reference_quantity q,
+                    float roughness, image *out, render_stats *stats, gt_error *e);
+
+/* How the study scores a variant (also studies/specular_occlusion_score.h's
+ * way): DSSIM and RMSE of approx against truth over the mask, and its mean
+ * FLIP (truth the reference) when flip_sum is not NULL, added to the sums. */
+int so_study_add_scores(const float *truth, const float *approx, const float *mask, int width, int height,
+                        const char *what, double *dssim_sum, double *rmse_sum, double *flip_sum, gt_error *e);
+
+/* The noise floor of a ratio channel of a specular-occlusion reference:
+ * DSSIM (and RMSE, when rmse is not NULL) between the ratios of the even and
+ * of the odd samples' means, over the mask. */
+int so_study_ratio_noise_floor(const image *ref, const char *what, const char *channel, double *dssim, double *rmse,
+                               gt_error *e);
 
 /* The row of a variant (lut_size and lut_axes matter for SO_VARIANT_LUT,
  * mapping for the cone variants only), or -1. */

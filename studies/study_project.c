@@ -11,6 +11,7 @@
 #include "core/atomic_file.h"
 #include "core/json_check.h"
 #include "scene/builtin_scenes.h"
+#include "studies/screen_shader_score.h"
 
 enum { PROJECT_FILE_MAX = 1 << 20 };
 
@@ -31,6 +32,14 @@ static int fail(const reader *r, const char *where, const char *fmt, ...)
     vsnprintf(problem, sizeof problem, fmt, ap);
     va_end(ap);
     return gt_error_set(r->e, r->path, "%s: %s", where, problem);
+}
+
+/* The error already in r->e, prefixed with the file and the JSON path. */
+static int fail_again(const reader *r, const char *where)
+{
+    char problem[sizeof r->e->message];
+    snprintf(problem, sizeof problem, "%s", r->e->message);
+    return fail(r, where, "%s", problem);
 }
 
 /* The whole file, NUL-terminated (free()); NULL with e set. */
@@ -193,11 +202,8 @@ static int check_loads(const reader *r, const study_scene_entry *x, const char *
 {
     scene s;
     camera cam;
-    if (study_scene_view(x, 0, 0, &s, &cam, r->e) != 0) {
-        char problem[sizeof r->e->message];
-        snprintf(problem, sizeof problem, "%s", r->e->message);
-        return fail(r, where, "%s", problem);
-    }
+    if (study_scene_view(x, 0, 0, &s, &cam, r->e) != 0)
+        return fail_again(r, where);
     scene_free(&s);
     return 0;
 }
@@ -309,6 +315,70 @@ static int take_plugin(const reader *r, const char *at, const char *value, study
     return take_file(r, at, value, p->plugins, &p->plugin_count);
 }
 
+/* A screen shader's "params": {"name": number, ...}, as "name=value". */
+static int read_params(const reader *r, const cJSON *o, const char *where, study_screen_shader *x)
+{
+    const cJSON *params = cJSON_GetObjectItemCaseSensitive(o, "params");
+    if (params && !cJSON_IsObject(params))
+        return fail(r, where, "'params' must be an object of numbers, {\"radius\": 1.0}");
+    for (const cJSON *v = params ? params->child : NULL; v; v = v->next) {
+        if (v->string[0] == '_')
+            continue; /* a comment */
+        gt_quoted q;
+        if (!cJSON_IsNumber(v))
+            return fail(r, where, "params.%s: a number expected", gt_quote(v->string, &q));
+        if (x->param_count == PROJECT_MAX_PARAMS)
+            return fail(r, where, "params: more than %d parameters", PROJECT_MAX_PARAMS);
+        snprintf(x->params[x->param_count++], PROJECT_PARAM_TEXT, "%.60s=%.17g", v->string, v->valuedouble);
+    }
+    return 0;
+}
+
+/* One screen shader: {"path": ..., "quantity": "ao", "params": {...}}, compiled now. */
+static int read_screen_shader(const reader *r, const cJSON *o, const char *where, study_project *p)
+{
+    static const char *const keys[] = {"path", "quantity", "params", NULL};
+    study_screen_shader *x = &p->screen_shaders[p->screen_shader_count];
+    const char *path, *quantity;
+    char at[160];
+    snprintf(at, sizeof at, "%s.path", where);
+    if (!cJSON_IsObject(o))
+        return fail(r, where, "a screen shader is an object: {\"path\": \"my_gtao.hlsl\", \"params\": {...}}");
+    if (check_keys(r, o, where, keys) != 0 || member_string(r, o, "path", where, &path) != 0 ||
+        member_string(r, o, "quantity", where, &quantity) != 0 || read_params(r, o, where, x) != 0)
+        return -1;
+    if (!path)
+        return fail(r, where, "'path' (a .glsl or .hlsl file) is missing");
+    gt_quoted q;
+    if (quantity && strcmp(quantity, "ao") != 0)
+        return fail(r, where, "quantity '%s': only 'ao' (ambient occlusion, ao.V) is scored", gt_quote(quantity, &q));
+    screen_shader_program program;
+    if (existing_file(r, at, path, x->path, sizeof x->path) != 0)
+        return -1;
+    if (screen_shader_prepare(x, &program, r->e) != 0)
+        return fail_again(r, at);
+    screen_shader_program_free(&program);
+    return ++p->screen_shader_count, 0;
+}
+
+/* "screen_shaders": an array of screen shaders (absent: none). */
+static int read_screen_shaders(const reader *r, const cJSON *root, study_project *p)
+{
+    const cJSON *a = cJSON_GetObjectItemCaseSensitive(root, "screen_shaders");
+    if (a && !cJSON_IsArray(a))
+        return fail(r, "screen_shaders", "an array expected");
+    char at[64];
+    int k = 0;
+    for (const cJSON *o = a ? a->child : NULL; o; o = o->next, ++k) {
+        snprintf(at, sizeof at, "screen_shaders[%d]", k);
+        if (k == PROJECT_MAX_FILES)
+            return fail(r, at, "more than %d files", PROJECT_MAX_FILES);
+        if (read_screen_shader(r, o, at, p) != 0)
+            return -1;
+    }
+    return 0;
+}
+
 /* "scenes": a non-empty array (absent: the built-in scenes). */
 static int read_scenes(const reader *r, const cJSON *root, study_project *p)
 {
@@ -327,14 +397,15 @@ static int read_scenes(const reader *r, const cJSON *root, study_project *p)
 
 static int read_settings(const reader *r, const cJSON *root, study_project *p)
 {
-    static const char *const keys[] = {"scenes", "stages", "quality", "output", "shaders", "plugins", NULL};
+    static const char *const keys[] = {"scenes", "stages", "quality", "output", "shaders", "plugins",
+                                       "screen_shaders", NULL};
     const char *output;
     if (check_keys(r, root, "(top level)", keys) != 0 || read_quality(r, root, p) != 0 ||
         member_string(r, root, "output", "output", &output) != 0 ||
         (output && resolve(r, "output", output, p->output_dir, sizeof p->output_dir) != 0))
         return -1;
     if (read_strings(r, root, "stages", p, take_stage) != 0 || read_strings(r, root, "shaders", p, take_shader) != 0 ||
-        read_strings(r, root, "plugins", p, take_plugin) != 0)
+        read_strings(r, root, "plugins", p, take_plugin) != 0 || read_screen_shaders(r, root, p) != 0)
         return -1;
     return read_scenes(r, root, p);
 }
@@ -396,7 +467,11 @@ static const char example[] =
     "(core/plugin_abi.h), scored beside gtlab's own by the stage shader-scores on the multibounce stage's "
     "references.\",\n"
     "  \"shaders\": [],\n"
-    "  \"plugins\": []\n"
+    "  \"plugins\": [],\n"
+    "  \"_screen_shaders\": \"Screen-space AO shaders (docs/shaders.md, 'Screen-space shaders'), e.g. {\\\"path\\\": "
+    "\\\"my_gtao.hlsl\\\", \\\"params\\\": {\\\"radius\\\": 1.0}}: compiled when the project is read, scored beside "
+    "gtlab's GTAO by the stage screen-shaders on the ao stage's references.\",\n"
+    "  \"screen_shaders\": []\n"
     "}\n";
 
 const char *study_project_example(void) { return example; }

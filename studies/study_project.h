@@ -2,7 +2,8 @@
  * docs/gtlab.schema.json): the user's scenes, each with one or more
  * cameras, and what `gtlab all --project` runs on them — its stages, quality
  * and output folder — with the user's shaders and plug-ins (validated,
- * recorded, scored by studies/multibounce_score.h). Paths in the file are
+ * recorded, scored by studies/multibounce_score.h) and screen-space shaders
+ * (compiled, scored by studies/screen_shader_score.h). Paths in the file are
  * relative to the file's folder. Keys starting with '_' are comments; any
  * other unknown key is an error, as is every problem, named by the file and
  * the JSON path of the value at fault ("gtlab.json: scenes[0].cameras[1].gltf:
@@ -13,7 +14,15 @@
 #include "core/error.h"
 #include "studies/study_scenes.h"
 
-enum { PROJECT_MAX_FILES = 16, PROJECT_STAGES_MAX = 512 };
+enum { PROJECT_MAX_FILES = 16, PROJECT_STAGES_MAX = 512, PROJECT_MAX_PARAMS = 16, PROJECT_PARAM_TEXT = 96 };
+
+/* A screen-space shader of the project (`screen_shaders`, docs/shaders.md's
+ * contract): scored by the stage screen-shaders on the AO references. */
+typedef struct {
+    char path[STUDY_SCENE_PATH_MAX];
+    int param_count;
+    char params[PROJECT_MAX_PARAMS][PROJECT_PARAM_TEXT]; /* "name=value", as --param takes them */
+} study_screen_shader;
 
 typedef struct study_project {
     study_scene_list scenes;        /* one entry per scene and camera */
@@ -23,6 +32,8 @@ typedef struct study_project {
     int shader_count, plugin_count;
     char shaders[PROJECT_MAX_FILES][STUDY_SCENE_PATH_MAX];
     char plugins[PROJECT_MAX_FILES][STUDY_SCENE_PATH_MAX];
+    int screen_shader_count;
+    study_screen_shader screen_shaders[PROJECT_MAX_FILES];
 } study_project;
 
 /* Whether `key` names a stage (the caller's registry); NULL: any name. */
@@ -30,7 +41,8 @@ typedef int (*study_project_stage_known)(const char *key);
 
 /* Reads and checks the project file: its JSON, every key and value, that
  * each scene file and camera file exists, and that each scene loads with
- * each of its cameras (so a run fails before any work). Returns 0, or -1
+ * each of its cameras, and that each screen shader compiles with its
+ * parameters and writes ao.V (so a run fails before any work). Returns 0, or -1
  * with e = "<path>: <json path>: <problem>". p is large: give a static one. */
 int study_project_read(const char *path, study_project_stage_known known, study_project *p, gt_error *e);
 

@@ -5,8 +5,19 @@
 #define GTLAB_TESTS_TEST_FILES_H
 
 #include <dirent.h>
+#include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
+
+/* Writes text to path; 0, or -1 if the file cannot be opened. */
+static inline int write_text_file(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return -1;
+    fputs(text, f);
+    return fclose(f) == 0 ? 0 : -1;
+}
 
 static inline int file_exists(const char *path)
 {

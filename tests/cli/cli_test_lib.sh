@@ -6,6 +6,16 @@ failed=0
 fail() { echo "FAIL: $*" >&2; failed=$((failed + 1)); }
 pass() { passed=$((passed + 1)); }
 
+# vulkan_preload: under ASan (GTLAB_VULKAN_PRELOAD set, tests/gpu/CMakeLists.txt)
+# $gtlab becomes a wrapper in $work that preloads ASan and the Vulkan driver
+# for gtlab alone (bash and python3 are not built with ASan).
+vulkan_preload() {
+  [ -n "$GTLAB_VULKAN_PRELOAD" ] || return 0
+  printf '#!/bin/sh\nLD_PRELOAD="%s" exec "%s" "$@"\n' "$GTLAB_VULKAN_PRELOAD" "$gtlab" >"$work/gtlab"
+  chmod +x "$work/gtlab"
+  gtlab=$work/gtlab
+}
+
 # run ARGS...: runs gtlab, keeping exit status, stdout and stderr.
 run() {
   "$gtlab" "$@" >"$work/stdout" 2>"$work/stderr"

@@ -9,18 +9,15 @@
 # decimals' half unit only where it does not straddle one, so compared as
 # numbers). Bad function files: one line, exit 1. A project listing the two
 # gets the section beside V_d and the talk's; one that lists neither gets
-# no section and no summary.json member.
+# no section and no summary.json member (specular occlusion:
+# test_cli_shader_score_so.sh).
 gtlab=$1
 work=$2
 source_dir=$3
 plugin=$4
 rm -rf "$work" && mkdir -p "$work/out/multibounce"
-if [ -n "$GTLAB_VULKAN_PRELOAD" ]; then  # under ASan: the Vulkan driver kept resident (tests/gpu/CMakeLists.txt)
-  printf '#!/bin/sh\nLD_PRELOAD="%s" exec "%s" "$@"\n' "$GTLAB_VULKAN_PRELOAD" "$gtlab" >"$work/gtlab"
-  chmod +x "$work/gtlab"
-  gtlab=$work/gtlab
-fi
 source "$(dirname "$0")/cli_test_lib.sh"
+vulkan_preload
 ref=$work/out/multibounce/corner.exr
 "$gtlab" render multibounce --scene builtin:corner --albedo 0.2,0.5,0.8 --width 24 --height 24 --spp 16 -o "$ref" \
   2>/dev/null || fail "render corner"
@@ -84,4 +81,5 @@ printf '{"shaders": [], "plugins": []}' >"$work/empty.json"
 expect_ok empty-project all --project "$work/empty.json" --stages shader-scores -o "$work/out"
 ! grep -q "shader_scores" "$work/out/summary.json" && pass || fail "summary.json has shader_scores without lists"
 ! grep -q "Your shaders" "$work/out/report.md" && pass || fail "report.md has the section without lists"
+! [ -d "$work/out/shader_scores" ] && pass || fail "specular-occlusion references rendered without such files"
 finish

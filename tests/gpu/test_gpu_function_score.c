@@ -21,6 +21,8 @@
 #include "studies/multibounce_score.h"
 #include "studies/study.h"
 #include "tests/check.h"
+#include "tests/test_files.h"
+#include "tests/test_reference_file.h"
 
 static const float kAlbedos[] = {0.2f, 0.5f, 0.9f};
 enum { ALBEDOS = 3 };
@@ -32,22 +34,7 @@ static int render_reference(const char *path)
                             .normals = NORMAL_SHADING, .max_distance = INFINITY,
                             .multibounce = {.albedo_count = ALBEDOS, .bounces = 4}};
     memcpy(rq.multibounce.albedos, kAlbedos, sizeof kAlbedos);
-    scene s;
-    camera cam;
-    image img;
-    render_stats stats;
-    gt_error e = {{0}};
-    int rc = study_load_view("builtin:corner", 32, 24, &s, &cam, &e);
-    if (rc == 0) {
-        rc = reference_render(&s, "builtin:corner", &cam, &rq, &img, &stats, &e);
-        scene_free(&s);
-    }
-    if (rc == 0) {
-        rc = exr_write(path, &img, &e);
-        image_free(&img);
-    }
-    CHECK_MSG(rc == 0, "%s", e.message);
-    return rc;
+    return test_render_reference_file("builtin:corner", 32, 24, &rq, path);
 }
 
 static double abs_poly(const double *k, int degree, double rho)
@@ -75,7 +62,7 @@ static void test_scores(const char *reference)
     const char *functions[] = {GTLAB_SOURCE_DIR "/shaders/template_multibounce.glsl",
                                GTLAB_SOURCE_DIR "/shaders/template_multibounce.hlsl"};
     const char *plugins[] = {GTLAB_EXAMPLE_PLUGIN};
-    multibounce_score_request rq = {NULL, &reference, 1, functions, 2, plugins, 1, NULL, 60.0};
+    multibounce_score_request rq = {NULL, &reference, 1, functions, 2, plugins, 1, NULL, 60.0, NULL, 0};
     gt_error e = {{0}};
     CHECK_MSG(multibounce_score(&rq, &r, &e) == 0, "%s", e.message);
     multibounce_score_print(stdout, &r);
@@ -99,15 +86,13 @@ static void expect_error(const char *reference, const char *name, const char *te
 {
     char path[4096];
     snprintf(path, sizeof path, "%s/%s", check_tmp_dir(), name);
-    FILE *f = fopen(path, "w");
-    CHECK(f != NULL);
-    if (!f)
+    if (write_text_file(path, text) != 0) {
+        CHECK_MSG(0, "cannot write %s", path);
         return;
-    fputs(text, f);
-    fclose(f);
+    }
     static multibounce_score_result r;
     const char *functions[] = {path};
-    multibounce_score_request rq = {NULL, &reference, 1, functions, 1, NULL, 0, NULL, 60.0};
+    multibounce_score_request rq = {NULL, &reference, 1, functions, 1, NULL, 0, NULL, 60.0, NULL, 0};
     gt_error e = {{0}};
     char want[4200];
     snprintf(want, sizeof want, "%s%s", path, message);

@@ -1,0 +1,16 @@
+/* The project's screen-space shaders (issue 15, item 6): the section "Your
+ * screen-space shaders: ambient occlusion", one table with a row per
+ * variant — gtlab's C GTAO, then each file of the project's
+ * `screen_shaders` — scored as the GTAO study scores its own variants
+ * (studies/screen_shader_score.h), and summary.json's
+ * `screen_shader_scores`. A run without screen shaders adds nothing. */
+#ifndef GTLAB_REPORT_SCREEN_SHADER_SECTION_H
+#define GTLAB_REPORT_SCREEN_SHADER_SECTION_H
+
+#include "report/report_context.h"
+#include "studies/screen_shader_score.h"
+
+/* Adds the section (nothing when r->variant_count == 0); returns 0. */
+int screen_shader_section(report_context *ctx, const screen_shader_score_result *r, gt_error *e);
+
+#endif

@@ -1,0 +1,250 @@
+/* A user's specular-occlusion functions and plug-ins scored beside gtlab's
+ * own variants (studies/specular_occlusion_score.h). */
+#include "studies/specular_occlusion_score.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/exr_io.h"
+#include "core/reference_schema.h"
+#include "gpu/function_shader.h"
+#include "studies/plugin.h"
+#include "studies/specular_occlusion.h"
+#include "studies/specular_occlusion_inputs.h"
+#include "studies/study_scenes.h"
+
+/* gtlab's own rows (so_variant_parse's texts). */
+static const char *const kBuiltins[] = {"ao", "lagarde", "cone-exact:exp2-alpha", "cone-oat:exp2-alpha", "sg"};
+enum { BUILTINS = (int)(sizeof kBuiltins / sizeof kBuiltins[0]) };
+
+typedef struct {
+    const multibounce_score_request *rq;
+    so_variant builtin[BUILTINS];
+    char *text[MB_SCORE_MAX_FILES]; /* the function files' texts */
+    gtlab_plugin plugin[MB_SCORE_MAX_FILES];
+    gpu_device *device; /* opened for the first function file */
+} so_variants;
+
+static const char *file_name(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    return slash ? slash + 1 : path;
+}
+
+static void name_variant(multibounce_score_result *out, const char *name, const char *kind)
+{
+    multibounce_score_variant *v = &out->variants[out->variant_count++];
+    snprintf(v->name, sizeof v->name, "%s", name);
+    v->kind = kind;
+}
+
+/* gtlab's variants, then each function file (checked against the contract) and plug-in. */
+static int load(so_variants *vs, multibounce_score_result *out, gt_error *e)
+{
+    const multibounce_score_request *rq = vs->rq;
+    for (int k = 0; k < BUILTINS; ++k) {
+        so_variant_parse(kBuiltins[k], &vs->builtin[k]);
+        name_variant(out, kBuiltins[k], "gtlab");
+    }
+    for (int i = 0; i < rq->function_count; ++i) {
+        name_variant(out, file_name(rq->functions[i]), "function");
+        if (gpu_function_load(&gpu_function_specular_occlusion, rq->functions[i], &vs->text[i], e) != 0 ||
+            (!vs->device && gpu_device_open(rq->device, &vs->device, e) != 0))
+            return -1;
+        snprintf(out->device, sizeof out->device, "%s", gpu_device_name(vs->device));
+    }
+    for (int i = 0; i < rq->plugin_count; ++i) {
+        name_variant(out, file_name(rq->plugins[i]), "plug-in");
+        if (plugin_open(rq->plugins[i], &vs->plugin[i], e) != 0)
+            return -1;
+        if (!vs->plugin[i].specular_occlusion_v1)
+            return gt_error_set(e, rq->plugins[i], "exports no %s (specular occlusion, core/plugin_abi.h)",
+                                GTLAB_SPECULAR_OCCLUSION_V1_SYMBOL);
+    }
+    return 0;
+}
+
+static void release(so_variants *vs)
+{
+    for (int i = 0; i < MB_SCORE_MAX_FILES; ++i) {
+        free(vs->text[i]);
+        plugin_close(&vs->plugin[i]);
+    }
+    if (vs->device)
+        gpu_device_close(vs->device);
+}
+
+/* Function file i at the surface pixels (their ao, beta, roughness, n.v), 0 elsewhere. */
+static int apply_function(const so_variants *vs, int i, const so_pixel_inputs *in, float *out, gt_error *e)
+{
+    size_t n = (size_t)in->width * (size_t)in->height, count = 0;
+    float *args = malloc(4 * (n ? n : 1) * sizeof *args), *values = malloc((n ? n : 1) * sizeof *values);
+    for (size_t p = 0; args && p < n; ++p)
+        if (in->mask[p] != 0.0f) {
+            float *a = args + 4 * count++;
+            a[0] = in->ao_cosine[p], a[1] = in->beta[p], a[2] = in->roughness[p], a[3] = in->n_dot_v[p];
+        }
+    const char *path = vs->rq->functions[i];
+    double timeout = vs->rq->timeout > 0.0 ? vs->rq->timeout : 10.0;
+    int rc = !args || !values ? gt_error_set(e, path, "out of memory")
+             : count == 0     ? 0
+                              : gpu_function_eval(vs->device, &gpu_function_specular_occlusion, vs->text[i], path,
+                                                  args, values, count, timeout, e);
+    for (size_t p = 0, j = 0; rc == 0 && p < n; ++p)
+        out[p] = in->mask[p] != 0.0f ? values[j++] : 0.0f;
+    free(args), free(values);
+    return rc;
+}
+
+/* Variant k's V_s at every pixel, 0 outside the mask: so_approx_evaluate's contract. */
+static int apply(const so_variants *vs, int k, const so_pixel_inputs *in, float *out, gt_error *e)
+{
+    if (k < BUILTINS) {
+        so_approx_evaluate(in, &vs->builtin[k], out);
+        return 0;
+    }
+    k -= BUILTINS;
+    if (k < vs->rq->function_count)
+        return apply_function(vs, k, in, out, e);
+    k -= vs->rq->function_count;
+    return plugin_apply_specular_occlusion(&vs->plugin[k], vs->rq->plugins[k], in, out, e);
+}
+
+/* One reference's row: its noise floor and every variant, as the study scores them. */
+static int score_row(const so_variants *vs, const image *ref, const aperture_case *c, const char *path, int count,
+                     multibounce_score_row *row, gt_error *e)
+{
+    const char *scene = image_get_attribute(ref, ATTR_SCENE);
+    snprintf(row->scene, sizeof row->scene, "%s", scene ? scene : file_name(path));
+    double roughness = so_reference_roughness(ref);
+    row->albedo = roughness < 0.0 ? NAN : roughness;
+    if (so_study_ratio_noise_floor(ref, path, CH_SPECOCC, &row->noise_floor_dssim, &row->noise_floor_rmse, e) != 0)
+        return -1;
+    const so_pixel_inputs *in = &c->inputs;
+    float *approx = malloc((size_t)in->width * (size_t)in->height * sizeof *approx);
+    int rc = approx ? 0 : gt_error_set(e, path, "out of memory");
+    for (int k = 0; k < count && rc == 0; ++k)
+        if ((rc = apply(vs, k, in, approx, e)) == 0)
+            rc = so_study_add_scores(c->reference, approx, in->mask, in->width, in->height, path, &row->dssim[k],
+                                     &row->rmse[k], NULL, e);
+    free(approx);
+    return rc;
+}
+
+static int score_reference(const so_variants *vs, int i, multibounce_score_result *out, gt_error *e)
+{
+    image ref, ao;
+    aperture_case c;
+    int loaded = 0;
+    const multibounce_score_request *rq = vs->rq;
+    int rc = aperture_cases_load(&rq->references[i], &rq->aos[i], 1, CH_SPECOCC, &ref, &ao, &c, &loaded, e);
+    if (rc == 0)
+        rc = score_row(vs, &ref, &c, rq->references[i], out->variant_count, &out->rows[out->row_count++], e);
+    aperture_cases_free(&ref, &ao, &c, loaded);
+    return rc;
+}
+
+static int check_request(const multibounce_score_request *rq, gt_error *e)
+{
+    if (rq->function_count + rq->plugin_count == 0)
+        return gt_error_set(e, "shader score", "nothing to score: give --function F.glsl|F.hlsl or --plugin LIB.so");
+    if (rq->function_count > MB_SCORE_MAX_FILES || rq->plugin_count > MB_SCORE_MAX_FILES)
+        return gt_error_set(e, "shader score", "at most %d function files and %d plug-ins", MB_SCORE_MAX_FILES,
+                            MB_SCORE_MAX_FILES);
+    if (rq->reference_count < 1 || rq->reference_count > MB_SCORE_MAX_ROWS || rq->ao_count != rq->reference_count)
+        return gt_error_set(e, "shader score", "%d references and %d --ao files: 1 to %d specular-occlusion "
+                            "references expected, each with one --ao (its view's 'gtlab render ao')",
+                            rq->reference_count, rq->ao_count, MB_SCORE_MAX_ROWS);
+    return 0;
+}
+
+int specular_occlusion_score(const multibounce_score_request *rq, multibounce_score_result *out, gt_error *e)
+{
+    memset(out, 0, sizeof *out);
+    out->parameter = "roughness";
+    out->caption = "specocc.V against each variant on the AO reference's inputs (ao.V, bent normal)";
+    if (check_request(rq, e) != 0)
+        return -1;
+    so_variants *vs = calloc(1, sizeof *vs);
+    if (!vs)
+        return gt_error_set(e, "shader score", "out of memory");
+    vs->rq = rq;
+    int rc = load(vs, out, e);
+    for (int i = 0; i < rq->reference_count && rc == 0; ++i)
+        rc = score_reference(vs, i, out, e);
+    if (rc == 0)
+        multibounce_score_take_means(out);
+    release(vs);
+    free(vs);
+    return rc;
+}
+
+/* Renders one reference of the study (so_study_render) into path. */
+static int render_file(const study_context *ctx, const scene *s, const study_scene_entry *b, const camera *cam,
+                       reference_quantity q, float roughness, const char *path, gt_error *e)
+{
+    image img;
+    render_stats stats;
+    if (so_study_render(ctx, s, b->spec, cam, q, roughness, &img, &stats, e) != 0)
+        return -1;
+    int rc = exr_write(path, &img, e);
+    image_free(&img);
+    return rc;
+}
+
+typedef struct {
+    char references[MB_SCORE_MAX_ROWS][4096], aos[MB_SCORE_MAX_ROWS][4096];
+    int count;
+} so_reference_files;
+
+/* One scene's AO reference and its specular-occlusion references at the study's roughnesses. */
+static int render_scene(const study_context *ctx, const study_scene_entry *b, const char *dir, so_reference_files *f,
+                        gt_error *e)
+{
+    int size, spp;
+    so_study_resolution(ctx, &size, &spp);
+    scene s;
+    camera cam;
+    if (study_scene_view(b, size, 0, &s, &cam, e) != 0)
+        return -1;
+    char ao[4096];
+    snprintf(ao, sizeof ao, "%s/%s_ao.exr", dir, b->label);
+    int rc = render_file(ctx, &s, b, &cam, QUANTITY_AO, -1.0f, ao, e);
+    for (int r = 0; r < SO_STUDY_ROUGHNESSES && rc == 0; ++r) {
+        if (f->count == MB_SCORE_MAX_ROWS) {
+            rc = gt_error_set(e, b->label, "more than %d specular-occlusion references", MB_SCORE_MAX_ROWS);
+            break;
+        }
+        snprintf(f->aos[f->count], sizeof f->aos[0], "%s", ao);
+        snprintf(f->references[f->count], sizeof f->references[0], "%s/%s_r%.2f.exr", dir, b->label,
+                 (double)so_study_roughness_values[r]);
+        rc = render_file(ctx, &s, b, &cam, QUANTITY_SPECULAR_OCCLUSION, so_study_roughness_values[r],
+                         f->references[f->count++], e);
+    }
+    scene_free(&s);
+    return rc;
+}
+
+int specular_occlusion_score_project(const study_context *ctx, const char *const *functions, int function_count,
+                                     const char *const *plugins, int plugin_count, multibounce_score_result *out,
+                                     gt_error *e)
+{
+    memset(out, 0, sizeof *out);
+    if (function_count + plugin_count == 0)
+        return 0;
+    static so_reference_files f;
+    static const char *references[MB_SCORE_MAX_ROWS], *aos[MB_SCORE_MAX_ROWS];
+    char dir[2048];
+    f.count = 0;
+    int rc = study_make_dir(ctx, SO_SCORE_DIR, dir, sizeof dir, e);
+    for (int i = 0; i < study_scene_count(ctx) && rc == 0; ++i)
+        rc = render_scene(ctx, study_scene_at(ctx, i), dir, &f, e);
+    for (int i = 0; i < f.count; ++i)
+        references[i] = f.references[i], aos[i] = f.aos[i];
+    multibounce_score_request rq = {.quantity = SO_SCORE_QUANTITY, .references = references,
+                                    .reference_count = f.count, .functions = functions,
+                                    .function_count = function_count, .plugins = plugins,
+                                    .plugin_count = plugin_count, .timeout = 10.0, .aos = aos, .ao_count = f.count};
+    return rc != 0 ? -1 : specular_occlusion_score(&rq, out, e);
+}
