@@ -6,6 +6,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "gpu/sampled_texture.h"
 #include "gpu/spirv_bindings.h"
 #include "gpu/vulkan_device_handles.h"
 
@@ -15,6 +16,8 @@ enum { MAX_BINDINGS = 32 };
 typedef struct {
     VkBuffer buffer[MAX_BINDINGS];
     VkDeviceMemory memory[MAX_BINDINGS];
+    gpu_texture texture[MAX_BINDINGS]; /* the texture kinds' */
+    VkSampler sampler[MAX_BINDINGS];   /* the sampler kinds' */
     VkDescriptorSetLayout set_layout;
     VkPipelineLayout layout;
     VkShaderModule module;
@@ -28,16 +31,42 @@ typedef struct {
 /* A host-visible, coherent memory type allowed by bits, or -1. */
 static int host_memory_type(const gpu_device *g, uint32_t bits)
 {
-    VkMemoryPropertyFlags want = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-    for (uint32_t i = 0; i < g->memory.memoryTypeCount; ++i)
-        if ((bits & (1u << i)) && (g->memory.memoryTypes[i].propertyFlags & want) == want)
-            return (int)i;
-    return -1;
+    return gpu_memory_type(g, bits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
 }
 
 static VkDescriptorType descriptor_type(gpu_buffer_kind kind)
 {
-    return kind == GPU_UNIFORM ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    switch (kind) {
+    case GPU_UNIFORM: return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    case GPU_TEXTURE_R32F: return VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+    case GPU_SAMPLER_POINT_CLAMP: return VK_DESCRIPTOR_TYPE_SAMPLER;
+    case GPU_TEXTURE_R32F_POINT_CLAMP: return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    default: return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    }
+}
+
+/* What the shader must declare at a binding of this kind. */
+static gpu_declared_kind declared_kind(gpu_buffer_kind kind)
+{
+    switch (kind) {
+    case GPU_UNIFORM: return GPU_DECLARED_UNIFORM;
+    case GPU_TEXTURE_R32F: return GPU_DECLARED_SAMPLED_IMAGE;
+    case GPU_SAMPLER_POINT_CLAMP: return GPU_DECLARED_SAMPLER;
+    case GPU_TEXTURE_R32F_POINT_CLAMP: return GPU_DECLARED_COMBINED_IMAGE_SAMPLER;
+    default: return GPU_DECLARED_STORAGE;
+    }
+}
+
+/* A texture or sampler binding's objects in place of a buffer. */
+static int make_image_binding(gpu_device *g, dispatch_objects *o, int k, const gpu_buffer *b, const char *what,
+                              gt_error *e)
+{
+    if (b->kind == GPU_TEXTURE_R32F)
+        return gpu_texture_create(g, b, what, &o->texture[k], e);
+    if (b->kind == GPU_SAMPLER_POINT_CLAMP)
+        return gpu_point_clamp_sampler(g, what, &o->sampler[k], e);
+    return gpu_texture_create(g, b, what, &o->texture[k], e) != 0 ? -1
+                                                                  : gpu_point_clamp_sampler(g, what, &o->sampler[k], e);
 }
 
 /* Buffer k's data into its memory. */
@@ -54,6 +83,8 @@ static int upload(gpu_device *g, dispatch_objects *o, int k, const gpu_buffer *b
 /* Buffer k (binding k) in host-visible memory, holding its data. */
 static int make_buffer(gpu_device *g, dispatch_objects *o, int k, const gpu_buffer *b, const char *what, gt_error *e)
 {
+    if (b->kind >= GPU_TEXTURE_R32F)
+        return make_image_binding(g, o, k, b, what, e);
     VkBufferCreateInfo info = {.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO,
                                .size = b->size,
                                .usage = b->kind == GPU_UNIFORM  ? VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT
@@ -86,7 +117,13 @@ static int make_buffers(gpu_device *g, dispatch_objects *o, const gpu_dispatch *
     return 0;
 }
 
-static const char *kind_name(int uniform) { return uniform ? "uniform block" : "storage buffer"; }
+static const char *kind_name(gpu_declared_kind kind)
+{
+    static const char *const names[] = {"uniform block", "storage buffer", "sampled image (Texture2D)",
+                                        "sampler (SamplerState)", "combined image sampler (sampler2D)",
+                                        "storage image or other resource"};
+    return kind >= 0 && kind <= GPU_DECLARED_OTHER ? names[kind] : "?";
+}
 
 /* Every binding the shader declares is one of d's, of the same kind: else
  * the driver would be handed a pipeline its layout does not describe. */
@@ -101,11 +138,10 @@ static int check_bindings(const gpu_dispatch *d, gt_error *e)
             return gt_error_set(e, d->what, "the shader declares set %u, binding %u; gtlab binds set 0, bindings 0 to %d "
                                 "(docs/shaders.md)", b[i].set, b[i].binding, d->buffer_count - 1);
         const gpu_buffer *buffer = &d->buffers[b[i].binding];
-        int want_uniform = buffer->kind == GPU_UNIFORM;
-        if (b[i].kind == GPU_DECLARED_OTHER || (b[i].kind == GPU_DECLARED_UNIFORM) != want_uniform)
+        gpu_declared_kind want = declared_kind(buffer->kind);
+        if (b[i].kind != want)
             return gt_error_set(e, d->what, "binding %u is declared as a %s; gtlab binds the %s %s there "
-                                "(docs/shaders.md)", b[i].binding, b[i].kind == GPU_DECLARED_OTHER ? "sampler or image"
-                                : kind_name(b[i].kind == GPU_DECLARED_UNIFORM), kind_name(want_uniform), buffer->name);
+                                "(docs/shaders.md)", b[i].binding, kind_name(b[i].kind), kind_name(want), buffer->name);
     }
     return 0;
 }
@@ -144,14 +180,36 @@ static int make_pipeline(gpu_device *g, dispatch_objects *o, const gpu_dispatch 
     return r == VK_SUCCESS ? 0 : gt_error_set(e, d->what, "cannot create the compute pipeline (VkResult %d)", (int)r);
 }
 
+/* Binding k's descriptor write: its buffer, or its image view and sampler. */
+static void describe(const dispatch_objects *o, int k, gpu_buffer_kind kind, VkDescriptorBufferInfo *info,
+                     VkDescriptorImageInfo *image, VkWriteDescriptorSet *w)
+{
+    memset(w, 0, sizeof *w);
+    w->sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+    w->dstSet = o->set;
+    w->dstBinding = (uint32_t)k;
+    w->descriptorCount = 1;
+    w->descriptorType = descriptor_type(kind);
+    if (kind >= GPU_TEXTURE_R32F) {
+        *image = (VkDescriptorImageInfo){o->sampler[k], o->texture[k].view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+        w->pImageInfo = image;
+    } else {
+        *info = (VkDescriptorBufferInfo){o->buffer[k], 0, VK_WHOLE_SIZE};
+        w->pBufferInfo = info;
+    }
+}
+
 /* The descriptor set pointing each binding at its buffer. */
 static int make_descriptors(gpu_device *g, dispatch_objects *o, const gpu_dispatch *d, gt_error *e)
 {
-    VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, MAX_BINDINGS},
-                                     {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, MAX_BINDINGS}};
+    VkDescriptorPoolSize sizes[5] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, MAX_BINDINGS},
+                                     {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, MAX_BINDINGS},
+                                     {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, MAX_BINDINGS},
+                                     {VK_DESCRIPTOR_TYPE_SAMPLER, MAX_BINDINGS},
+                                     {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, MAX_BINDINGS}};
     VkDescriptorPoolCreateInfo pool = {.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
                                        .maxSets = 1,
-                                       .poolSizeCount = 2,
+                                       .poolSizeCount = 5,
                                        .pPoolSizes = sizes};
     VkDescriptorSetAllocateInfo alloc = {.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO,
                                          .descriptorSetCount = 1,
@@ -160,16 +218,10 @@ static int make_descriptors(gpu_device *g, dispatch_objects *o, const gpu_dispat
         (alloc.descriptorPool = o->pool, vkAllocateDescriptorSets(g->device, &alloc, &o->set)) != VK_SUCCESS)
         return gt_error_set(e, d->what, "cannot allocate the descriptor set");
     VkDescriptorBufferInfo info[MAX_BINDINGS];
+    VkDescriptorImageInfo image[MAX_BINDINGS];
     VkWriteDescriptorSet write[MAX_BINDINGS];
-    for (int k = 0; k < d->buffer_count; ++k) {
-        info[k] = (VkDescriptorBufferInfo){o->buffer[k], 0, VK_WHOLE_SIZE};
-        write[k] = (VkWriteDescriptorSet){.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                          .dstSet = o->set,
-                                          .dstBinding = (uint32_t)k,
-                                          .descriptorCount = 1,
-                                          .descriptorType = descriptor_type(d->buffers[k].kind),
-                                          .pBufferInfo = &info[k]};
-    }
+    for (int k = 0; k < d->buffer_count; ++k)
+        describe(o, k, d->buffers[k].kind, &info[k], &image[k], &write[k]);
     vkUpdateDescriptorSets(g->device, (uint32_t)d->buffer_count, write, 0, NULL);
     return 0;
 }
@@ -287,6 +339,8 @@ static void release(gpu_device *g, dispatch_objects *o)
     for (int k = 0; k < MAX_BINDINGS; ++k) {
         vkDestroyBuffer(g->device, o->buffer[k], NULL);
         vkFreeMemory(g->device, o->memory[k], NULL);
+        gpu_texture_destroy(g, &o->texture[k]);
+        vkDestroySampler(g->device, o->sampler[k], NULL);
     }
 }
 

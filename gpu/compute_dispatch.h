@@ -8,7 +8,17 @@
  *   layout(std430, binding = 1) readonly buffer In { float x[]; };
  * and an HLSL one as
  *   [[vk::binding(0)]] cbuffer Params { ... };
- *   [[vk::binding(1)]] StructuredBuffer<float> x;  (RWStructuredBuffer for outputs). */
+ *   [[vk::binding(1)]] StructuredBuffer<float> x;  (RWStructuredBuffer for outputs).
+ *
+ * A binding may instead be a sampled 2-D texture of width x height floats
+ * (gpu_texture_r32f: VK_FORMAT_R32_SFLOAT, uploaded once through a staging
+ * buffer, left as uploaded by every frame) or a sampler: nearest filtering (magnification and
+ * minification, one mip level), clamp to edge in u and v, normalised
+ * coordinates, the point sampling tables like the best-fit normals' are
+ * read with. HLSL declares the two apart,
+ *   [[vk::binding(3)]] Texture2D<float> t;  [[vk::binding(4)]] SamplerState s;
+ * (GPU_TEXTURE_R32F and GPU_SAMPLER_POINT_CLAMP), GLSL as one
+ *   layout(binding = 3) uniform sampler2D t;  (GPU_TEXTURE_R32F_POINT_CLAMP). */
 #ifndef GTLAB_GPU_COMPUTE_DISPATCH_H
 #define GTLAB_GPU_COMPUTE_DISPATCH_H
 
@@ -22,7 +32,10 @@
 typedef enum {
     GPU_UNIFORM, /* a uniform block, read by the shader */
     GPU_INPUT,   /* a storage buffer the shader reads */
-    GPU_OUTPUT   /* a storage buffer read back after the dispatch; its floats must not be NaN */
+    GPU_OUTPUT,  /* a storage buffer read back after the dispatch; its floats must not be NaN */
+    GPU_TEXTURE_R32F,             /* a sampled image (HLSL Texture2D<float>): data is a gpu_texture_r32f */
+    GPU_SAMPLER_POINT_CLAMP,      /* a sampler (HLSL SamplerState): no data, size 0 */
+    GPU_TEXTURE_R32F_POINT_CLAMP  /* the two combined (GLSL sampler2D): data is a gpu_texture_r32f */
 } gpu_buffer_kind;
 
 typedef struct {
@@ -30,8 +43,15 @@ typedef struct {
     gpu_buffer_kind kind;
     void *data;       /* size bytes: uploaded before the dispatch; an output (zeros on the device before
                          each dispatch: its data is not uploaded) is read back into it after */
-    size_t size;      /* > 0 */
+    size_t size;      /* > 0 (a texture: sizeof(gpu_texture_r32f); a sampler: 0, data NULL) */
 } gpu_buffer;
+
+/* What a texture binding's data points at: row y of the texels at
+ * texels[y * width], y = 0 at v = 0. */
+typedef struct {
+    int width, height;
+    const float *texels;
+} gpu_texture_r32f;
 
 typedef struct {
     const gpu_spirv *shader;

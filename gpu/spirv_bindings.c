@@ -3,9 +3,10 @@
 #include <string.h>
 
 /* Opcodes, decorations and storage classes of the SPIR-V specification. */
-enum { SPV_MAGIC = 0x07230203u, OP_TYPE_POINTER = 32, OP_VARIABLE = 59, OP_DECORATE = 71 };
+enum { SPV_MAGIC = 0x07230203u, OP_TYPE_IMAGE = 25, OP_TYPE_SAMPLER = 26, OP_TYPE_SAMPLED_IMAGE = 27,
+       OP_TYPE_POINTER = 32, OP_VARIABLE = 59, OP_DECORATE = 71 };
 enum { DEC_BUFFER_BLOCK = 3, DEC_BINDING = 33, DEC_DESCRIPTOR_SET = 34 };
-enum { SC_UNIFORM = 2, SC_STORAGE_BUFFER = 12 };
+enum { SC_UNIFORM_CONSTANT = 0, SC_UNIFORM = 2, SC_STORAGE_BUFFER = 12 };
 
 /* What one pass over the instructions gathers, by result id. */
 typedef struct {
@@ -35,11 +36,31 @@ static void note_decoration(decorated *d, const uint32_t *op)
         *(op[2] == DEC_BINDING ? &d->binding[i] : &d->set[i]) = op[3];
 }
 
+/* The kind of a UniformConstant variable of type `type`: an image with
+ * Sampled = 1 (OpTypeImage's seventh word), a sampler or a sampled image. */
+static gpu_declared_kind opaque_kind(const uint32_t *words, size_t count, uint32_t type)
+{
+    for (size_t at = 5; at < count;) {
+        uint32_t n = words[at] >> 16, op = words[at] & 0xffffu;
+        if (n >= 2 && at + 1 < count && words[at + 1] == type && op >= OP_TYPE_IMAGE && op <= OP_TYPE_SAMPLED_IMAGE) {
+            if (op == OP_TYPE_SAMPLER)
+                return GPU_DECLARED_SAMPLER;
+            if (op == OP_TYPE_SAMPLED_IMAGE)
+                return GPU_DECLARED_COMBINED_IMAGE_SAMPLER;
+            return n >= 9 && at + 7 < count && words[at + 7] == 1 ? GPU_DECLARED_SAMPLED_IMAGE : GPU_DECLARED_OTHER;
+        }
+        at += n ? n : count;
+    }
+    return GPU_DECLARED_OTHER;
+}
+
 /* The kind of a variable of storage class sc pointing at type `pointee`. */
 static gpu_declared_kind kind_of(const uint32_t *words, size_t count, uint32_t sc, uint32_t pointee)
 {
     if (sc == SC_STORAGE_BUFFER)
         return GPU_DECLARED_STORAGE;
+    if (sc == SC_UNIFORM_CONSTANT)
+        return opaque_kind(words, count, pointee);
     if (sc != SC_UNIFORM)
         return GPU_DECLARED_OTHER;
     for (size_t at = 5; at < count;) { /* a BufferBlock struct is a storage buffer (SPIR-V 1.0 style) */

@@ -1,7 +1,7 @@
 /* The resources a compiled shader declares, read from its SPIR-V (the SPIR-V
  * specification, 2.3 "Physical Layout" and 3.20 "Decoration"): which
  * (descriptor set, binding) pairs it uses and whether each is a uniform
- * block or a storage buffer. Read only, to refuse a shader whose bindings
+ * block, a storage buffer, a sampled image, a sampler or the two combined. Read only, to refuse a shader whose bindings
  * are not the contract's with one clear line instead of a driver crash;
  * gtlab writes no SPIR-V. */
 #ifndef GTLAB_GPU_SPIRV_BINDINGS_H
@@ -12,7 +12,17 @@
 
 #define GPU_MAX_DECLARED 64
 
-typedef enum { GPU_DECLARED_UNIFORM, GPU_DECLARED_STORAGE, GPU_DECLARED_OTHER } gpu_declared_kind;
+/* OpTypeImage with Sampled = 1 (HLSL Texture2D), OpTypeSampler (HLSL
+ * SamplerState), OpTypeSampledImage (GLSL sampler2D); OTHER: anything else
+ * (a storage image, a texel buffer, ...). */
+typedef enum {
+    GPU_DECLARED_UNIFORM,
+    GPU_DECLARED_STORAGE,
+    GPU_DECLARED_SAMPLED_IMAGE,
+    GPU_DECLARED_SAMPLER,
+    GPU_DECLARED_COMBINED_IMAGE_SAMPLER,
+    GPU_DECLARED_OTHER
+} gpu_declared_kind;
 
 typedef struct {
     uint32_t set, binding;
