@@ -145,3 +145,34 @@ int gpu_function_eval(gpu_device *device, const gpu_function_contract *c, const 
     free(source);
     return rc;
 }
+
+/* The arguments of the masked pixels, c->inputs floats each, in pixel order; their count into *count. */
+static float *pack_masked(const gpu_function_contract *c, const float *const planes[], const float constants[],
+                          const float *mask, size_t n, size_t *count)
+{
+    float *args = malloc((size_t)c->inputs * (n ? n : 1) * sizeof *args);
+    *count = 0;
+    for (size_t p = 0; args && p < n; ++p) {
+        if (mask[p] == 0.0f)
+            continue;
+        for (int k = 0; k < c->inputs; ++k)
+            args[(size_t)c->inputs * *count + (size_t)k] = planes[k] ? planes[k][p] : constants[k];
+        ++*count;
+    }
+    return args;
+}
+
+int gpu_function_eval_masked(gpu_device *device, const gpu_function_contract *c, const char *text, const char *path,
+                             const float *const planes[], const float constants[], const float *mask, size_t n,
+                             float *out, double timeout, gt_error *e)
+{
+    size_t count;
+    float *args = pack_masked(c, planes, constants, mask, n, &count), *values = malloc((n ? n : 1) * sizeof *values);
+    int rc = !args || !values ? gt_error_set(e, path, "out of memory")
+             : count == 0     ? 0
+                              : gpu_function_eval(device, c, text, path, args, values, count, timeout, e);
+    for (size_t p = 0, j = 0; rc == 0 && p < n; ++p)
+        out[p] = mask[p] != 0.0f ? values[j++] : 0.0f;
+    free(args), free(values);
+    return rc;
+}

@@ -58,4 +58,11 @@ int gpu_function_load(const gpu_function_contract *c, const char *path, char **t
 int gpu_function_eval(gpu_device *device, const gpu_function_contract *c, const char *text, const char *path,
                       const float *in, float *out, size_t count, double timeout, gt_error *e);
 
+/* The function at the n pixels with mask[p] != 0, 0 elsewhere: its
+ * argument k is planes[k][p], or constants[k] where planes[k] is NULL.
+ * Returns 0, or -1 with e (gpu_function_eval's errors, out of memory). */
+int gpu_function_eval_masked(gpu_device *device, const gpu_function_contract *c, const char *text, const char *path,
+                             const float *const planes[], const float constants[], const float *mask, size_t n,
+                             float *out, double timeout, gt_error *e);
+
 #endif

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "core/number_parse.h"
+#include "gpu/shader_compiler.h"
 
 static const char kParam[] = "// gtlab.param ", kOutput[] = "// gtlab.output ";
 
@@ -112,4 +113,16 @@ int gpu_shader_interface_set(gpu_shader_interface *s, const char *assignment, co
     declared(s, list, sizeof list);
     return gt_error_set(e, name, "--param %.*s: the shader declares no such parameter (its gtlab.param lines: %s)",
                         (int)(eq - assignment), assignment, list[0] ? list : "none");
+}
+
+int gpu_shader_interface_load(const char *path, const char *const *params, int param_count, char **source,
+                              gpu_shader_interface *out, gt_error *e)
+{
+    *source = NULL;
+    if (gpu_read_source(path, source, e) != 0 || gpu_shader_interface_parse(*source, path, out, e) != 0)
+        return -1;
+    for (int i = 0; i < param_count; ++i)
+        if (gpu_shader_interface_set(out, params[i], path, e) != 0)
+            return -1;
+    return 0;
 }

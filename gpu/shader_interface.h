@@ -32,4 +32,10 @@ int gpu_shader_interface_parse(const char *source, const char *name, gpu_shader_
  * parameters it declares. */
 int gpu_shader_interface_set(gpu_shader_interface *s, const char *assignment, const char *name, gt_error *e);
 
+/* A screen-space shader file read: its text into *source (malloc'd, the
+ * caller frees it, also after an error), its declarations, and the
+ * "NAME=VALUE" params applied. Returns 0, or -1 with e. */
+int gpu_shader_interface_load(const char *path, const char *const *params, int param_count, char **source,
+                              gpu_shader_interface *out, gt_error *e);
+
 #endif

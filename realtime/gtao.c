@@ -132,6 +132,12 @@ _Static_assert(sizeof gtao_preset_names / sizeof gtao_preset_names[0] == GTAO_PR
                "gtao_preset_id follows gtao_preset_names");
 _Static_assert(sizeof presets / sizeof presets[0] == GTAO_PRESET_COUNT, "one preset per gtao_preset_id");
 
+gtao_params gtao_params_shader_port(void)
+{
+    return (gtao_params){.weighting = GTAO_COSINE, .slices = 4, .steps = 8, .radius = 1.0f, .falloff = 0.25f,
+                         .max_radius_px = 256.0f, .frames = 1};
+}
+
 int gtao_preset(const char *name, gtao_params *p)
 {
     for (int i = 0; gtao_preset_names[i]; ++i)

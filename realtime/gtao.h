@@ -91,6 +91,11 @@ typedef struct {
  * no denoiser, exact maths). Radius and falloff are left to the caller. */
 int gtao_preset(const char *name, gtao_params *p);
 extern const char *const gtao_preset_names[]; /* NULL-terminated */
+/* The configuration gtlab's GTAO shader ports (shaders/gtao.inc), at the
+ * defaults of its gtlab.param lines: cosine weighting, 4 regular slices, 8
+ * steps per side, radius 1, falloff 0.25, 256 pixels, no thickness, no
+ * fast maths, no denoiser, one frame. What the shader is compared with. */
+gtao_params gtao_params_shader_port(void);
 /* The presets by index into gtao_preset_names. */
 typedef enum {
     GTAO_PRESET_LOW,

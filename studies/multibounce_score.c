@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "core/exr_io.h"
+#include "core/path_name.h"
 #include "core/reference_schema.h"
 #include "fitters/fit_multibounce.h"
 #include "gpu/function_shader.h"
@@ -35,12 +36,6 @@ typedef struct {
     gpu_device *device; /* opened for the first function file */
     double timeout;
 } variants;
-
-static const char *base_name(const char *path)
-{
-    const char *slash = strrchr(path, '/');
-    return slash ? slash + 1 : path;
-}
 
 static variant *add_variant(variants *vs, multibounce_score_result *out, variant_kind kind, const char *name,
                             const char *path)
@@ -72,17 +67,14 @@ static int load_variants(const multibounce_score_request *rq, variants *vs, mult
     vs->timeout = rq->timeout > 0.0 ? rq->timeout : 10.0;
     add_variant(vs, out, VARIANT_INPUT, "V_d", NULL);
     add_variant(vs, out, VARIANT_MODEL, "talk", NULL)->model = multibounce_model_jimenez2016();
-    if (rq->function_count > MB_SCORE_MAX_FILES || rq->plugin_count > MB_SCORE_MAX_FILES)
-        return gt_error_set(e, "shader score", "at most %d function files and %d plug-ins", MB_SCORE_MAX_FILES,
-                            MB_SCORE_MAX_FILES);
     for (int i = 0; i < rq->function_count; ++i) {
         const char *path = rq->functions[i];
-        if (load_function(rq, vs, add_variant(vs, out, VARIANT_FUNCTION, base_name(path), path), out, e) != 0)
+        if (load_function(rq, vs, add_variant(vs, out, VARIANT_FUNCTION, path_file_name(path), path), out, e) != 0)
             return -1;
     }
     for (int i = 0; i < rq->plugin_count; ++i) {
         const char *path = rq->plugins[i];
-        if (plugin_open(path, &add_variant(vs, out, VARIANT_PLUGIN, base_name(path), path)->plugin, e) != 0)
+        if (plugin_open(path, &add_variant(vs, out, VARIANT_PLUGIN, path_file_name(path), path)->plugin, e) != 0)
             return -1;
     }
     return 0;
@@ -96,25 +88,6 @@ static void free_variants(variants *vs)
     }
     if (vs->device)
         gpu_device_close(vs->device);
-}
-
-/* A function file at the n pixels with mask != 0 (their V_d and the albedo), 0 elsewhere. */
-static int apply_function(const variants *vs, const variant *v, const float *visibility, const float *mask, size_t n,
-                          float albedo, float *out, gt_error *e)
-{
-    size_t count = 0;
-    float *in = malloc(2 * (n ? n : 1) * sizeof *in), *values = malloc((n ? n : 1) * sizeof *values);
-    for (size_t i = 0; in && i < n; ++i)
-        if (mask[i] != 0.0f)
-            in[2 * count] = visibility[i], in[2 * count++ + 1] = albedo;
-    int rc = !in || !values ? gt_error_set(e, v->path, "out of memory")
-             : count == 0   ? 0
-                            : gpu_function_eval(vs->device, &gpu_function_multibounce, v->text, v->path, in, values,
-                                                count, vs->timeout, e);
-    for (size_t i = 0, j = 0; rc == 0 && i < n; ++i)
-        out[i] = mask[i] != 0.0f ? values[j++] : 0.0f;
-    free(in), free(values);
-    return rc;
 }
 
 /* Variant v's V'_d at the surface pixels, 0 in the background: multibounce_apply_model's contract. */
@@ -131,8 +104,10 @@ static int apply(const variants *vs, const variant *v, const float *visibility, 
         return 0;
     case VARIANT_PLUGIN:
         return plugin_apply_multibounce(&v->plugin, v->path, visibility, mask, n, albedo, out, e);
-    default:
-        return apply_function(vs, v, visibility, mask, n, albedo, out, e);
+    default: /* a function file at the surface pixels (their V_d and the albedo) */
+        return gpu_function_eval_masked(vs->device, &gpu_function_multibounce, v->text, v->path,
+                                        (const float *const[]){visibility, NULL}, (const float[]){0.0f, albedo}, mask,
+                                        n, out, vs->timeout, e);
     }
 }
 
@@ -150,7 +125,7 @@ static int score_row(const variants *vs, const scored_plane *p, float *approx, m
     const float *mask = image_channel_data(img, CH_MASK), *target = image_channel_data(&p->halves[1], p->channel);
     const float *visibility = image_channel_data(&p->halves[0], CH_AO);
     const char *scene = image_get_attribute(img, ATTR_SCENE);
-    snprintf(row->scene, sizeof row->scene, "%s", scene ? scene : base_name(p->path));
+    snprintf(row->scene, sizeof row->scene, "%s", scene ? scene : path_file_name(p->path));
     row->albedo = p->albedo;
     if (!mask || !target || !visibility)
         return gt_error_set(e, p->path, "no %s, %s or %s channel", CH_MASK, CH_AO, p->channel);
@@ -211,6 +186,16 @@ void multibounce_score_take_means(multibounce_score_result *out)
     }
 }
 
+int multibounce_score_check_files(const multibounce_score_request *rq, gt_error *e)
+{
+    if (rq->function_count + rq->plugin_count == 0)
+        return gt_error_set(e, "shader score", "nothing to score: give --function F.glsl|F.hlsl or --plugin LIB.so");
+    if (rq->function_count > MB_SCORE_MAX_FILES || rq->plugin_count > MB_SCORE_MAX_FILES)
+        return gt_error_set(e, "shader score", "at most %d function files and %d plug-ins", MB_SCORE_MAX_FILES,
+                            MB_SCORE_MAX_FILES);
+    return 0;
+}
+
 int multibounce_score(const multibounce_score_request *rq, multibounce_score_result *out, gt_error *e)
 {
     memset(out, 0, sizeof *out);
@@ -221,8 +206,8 @@ int multibounce_score(const multibounce_score_request *rq, multibounce_score_res
                             SO_SCORE_QUANTITY);
     out->parameter = "albedo";
     out->caption = "V'_d of the odd-sample half against each variant fed V_d of the even half";
-    if (rq->function_count + rq->plugin_count == 0)
-        return gt_error_set(e, "shader score", "nothing to score: give --function F.glsl|F.hlsl or --plugin LIB.so");
+    if (multibounce_score_check_files(rq, e) != 0)
+        return -1;
     if (rq->reference_count < 1 || rq->reference_count > MB_SCORE_MAX_FILES)
         return gt_error_set(e, "shader score", "%d references: 1 to %d multi-bounce renders expected",
                             rq->reference_count, MB_SCORE_MAX_FILES);

@@ -76,6 +76,9 @@ int multibounce_score(const multibounce_score_request *rq, multibounce_score_res
 
 /* The mean row and each variant's means from the rows. */
 void multibounce_score_take_means(multibounce_score_result *out);
+/* A request has something to score and at most MB_SCORE_MAX_FILES files of
+ * each kind: 0, or -1 with e. */
+int multibounce_score_check_files(const multibounce_score_request *rq, gt_error *e);
 
 /* The table: one row per reference and albedo and the mean; DSSIM and RMSE
  * columns per variant, after the floor. */

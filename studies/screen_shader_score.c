@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/path_name.h"
 #include "core/reference_schema.h"
 #include "core/sample_mean.h"
 #include "gpu/screen_pass.h"
@@ -29,13 +30,13 @@ static int find_ao_plane(screen_shader_program *p, const char *path, gt_error *e
 int screen_shader_prepare(const study_screen_shader *s, screen_shader_program *out, gt_error *e)
 {
     char *source = NULL;
+    const char *params[PROJECT_MAX_PARAMS];
     memset(out, 0, sizeof *out);
-    int rc = gpu_read_source(s->path, &source, e) != 0 ||
-             gpu_shader_interface_parse(source, s->path, &out->interface, e) != 0;
-    for (int i = 0; i < s->param_count && rc == 0; ++i)
-        rc = gpu_shader_interface_set(&out->interface, s->params[i], s->path, e) != 0;
-    rc = rc || find_ao_plane(out, s->path, e) != 0 ||
-         gpu_compile_compute(source, s->path, gpu_source_language_of(s->path), NULL, &out->spirv, e) != 0;
+    for (int i = 0; i < s->param_count; ++i)
+        params[i] = s->params[i];
+    int rc = gpu_shader_interface_load(s->path, params, s->param_count, &source, &out->interface, e) != 0 ||
+             find_ao_plane(out, s->path, e) != 0 ||
+             gpu_compile_compute(source, s->path, gpu_source_language_of(s->path), NULL, &out->spirv, e) != 0;
     free(source);
     return rc ? -1 : 0;
 }
@@ -45,8 +46,7 @@ void screen_shader_program_free(screen_shader_program *p) { gpu_spirv_free(&p->s
 /* gtlab's C GTAO in shaders/gtao.glsl's configuration at its defaults. */
 static void c_gtao(const gtao_scene_refs *s, float *ao)
 {
-    const gtao_params p = {.weighting = GTAO_COSINE, .slices = 4, .steps = 8, .radius = 1.0f, .falloff = 0.25f,
-                           .max_radius_px = 256.0f, .frames = 1};
+    const gtao_params p = gtao_params_shader_port();
     gtao_frame(&s->in.g, &p, 0, ao, NULL);
 }
 
@@ -128,9 +128,8 @@ static int prepare_all(stage_state *st, screen_shader_score_result *out, gt_erro
     snprintf(out->variants[0].name, sizeof out->variants[0].name, "GTAO (C)");
     out->variants[0].kind = "gtlab";
     for (; st->prepared < p->screen_shader_count; ++st->prepared) {
-        const char *slash = strrchr(p->screen_shaders[st->prepared].path, '/');
         screen_shader_variant *v = &out->variants[1 + st->prepared];
-        snprintf(v->name, sizeof v->name, "%s", slash ? slash + 1 : p->screen_shaders[st->prepared].path);
+        snprintf(v->name, sizeof v->name, "%s", path_file_name(p->screen_shaders[st->prepared].path));
         v->kind = "shader";
         if (screen_shader_prepare(&p->screen_shaders[st->prepared], &st->programs[st->prepared], e) != 0)
             return -1;

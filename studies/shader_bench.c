@@ -26,8 +26,7 @@ typedef struct {
 /* The shader's declarations (their defaults) and its SPIR-V, timed. */
 static int compile_shader(const shader_bench_request *r, bench_state *s, shader_bench_result *out, gt_error *e)
 {
-    if (gpu_read_source(r->shader, &s->source, e) != 0 ||
-        gpu_shader_interface_parse(s->source, r->shader, &s->interface, e) != 0)
+    if (gpu_shader_interface_load(r->shader, NULL, 0, &s->source, &s->interface, e) != 0)
         return -1;
     double start = seconds_now();
     int rc = gpu_compile_compute(s->source, r->shader, gpu_source_language_of(r->shader), NULL, &s->spirv, e);

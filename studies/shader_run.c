@@ -4,9 +4,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "core/exr_io.h"
+#include "core/progress.h"
 #include "core/reference_schema.h"
 #include "gpu/screen_pass.h"
 #include "gpu/shader_interface.h"
@@ -24,22 +24,11 @@ typedef struct {
     float *planes;
 } run_state;
 
-static double now_seconds(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
 /* The shader's text, its declarations and the --param values. */
 static int read_shader(const shader_run_request *r, run_state *s, gt_error *e)
 {
-    if (gpu_read_source(r->shader, &s->source, e) != 0 ||
-        gpu_shader_interface_parse(s->source, r->shader, &s->interface, e) != 0)
+    if (gpu_shader_interface_load(r->shader, r->params, r->param_count, &s->source, &s->interface, e) != 0)
         return -1;
-    for (int i = 0; i < r->param_count; ++i)
-        if (gpu_shader_interface_set(&s->interface, r->params[i], r->shader, e) != 0)
-            return -1;
     for (int k = 0; k < s->interface.output_count; ++k)
         if (strcmp(s->interface.output_name[k], CH_MASK) == 0)
             return gt_error_set(e, r->shader, "gtlab.output %s: gtlab writes %s itself", CH_MASK, CH_MASK);
@@ -152,7 +141,7 @@ static void release(run_state *s)
 
 int shader_run(const shader_run_request *r, shader_run_result *out, gt_error *e)
 {
-    double start = now_seconds();
+    double start = seconds_now();
     run_state s;
     memset(&s, 0, sizeof s);
     memset(out, 0, sizeof *out);
@@ -166,7 +155,7 @@ int shader_run(const shader_run_request *r, shader_run_result *out, gt_error *e)
     out->width = s.screen.globals.width;
     out->height = s.screen.globals.height;
     out->frames = r->frames;
-    out->total_seconds = now_seconds() - start;
+    out->total_seconds = seconds_now() - start;
     release(&s);
     return rc;
 }

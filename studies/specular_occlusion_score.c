@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "core/exr_io.h"
+#include "core/path_name.h"
 #include "core/reference_schema.h"
 #include "gpu/function_shader.h"
 #include "studies/plugin.h"
@@ -26,12 +27,6 @@ typedef struct {
     gpu_device *device; /* opened for the first function file */
 } so_variants;
 
-static const char *file_name(const char *path)
-{
-    const char *slash = strrchr(path, '/');
-    return slash ? slash + 1 : path;
-}
-
 static void name_variant(multibounce_score_result *out, const char *name, const char *kind)
 {
     multibounce_score_variant *v = &out->variants[out->variant_count++];
@@ -48,14 +43,14 @@ static int load(so_variants *vs, multibounce_score_result *out, gt_error *e)
         name_variant(out, kBuiltins[k], "gtlab");
     }
     for (int i = 0; i < rq->function_count; ++i) {
-        name_variant(out, file_name(rq->functions[i]), "function");
+        name_variant(out, path_file_name(rq->functions[i]), "function");
         if (gpu_function_load(&gpu_function_specular_occlusion, rq->functions[i], &vs->text[i], e) != 0 ||
             (!vs->device && gpu_device_open(rq->device, &vs->device, e) != 0))
             return -1;
         snprintf(out->device, sizeof out->device, "%s", gpu_device_name(vs->device));
     }
     for (int i = 0; i < rq->plugin_count; ++i) {
-        name_variant(out, file_name(rq->plugins[i]), "plug-in");
+        name_variant(out, path_file_name(rq->plugins[i]), "plug-in");
         if (plugin_open(rq->plugins[i], &vs->plugin[i], e) != 0)
             return -1;
         if (!vs->plugin[i].specular_occlusion_v1)
@@ -78,23 +73,12 @@ static void release(so_variants *vs)
 /* Function file i at the surface pixels (their ao, beta, roughness, n.v), 0 elsewhere. */
 static int apply_function(const so_variants *vs, int i, const so_pixel_inputs *in, float *out, gt_error *e)
 {
-    size_t n = (size_t)in->width * (size_t)in->height, count = 0;
-    float *args = malloc(4 * (n ? n : 1) * sizeof *args), *values = malloc((n ? n : 1) * sizeof *values);
-    for (size_t p = 0; args && p < n; ++p)
-        if (in->mask[p] != 0.0f) {
-            float *a = args + 4 * count++;
-            a[0] = in->ao_cosine[p], a[1] = in->beta[p], a[2] = in->roughness[p], a[3] = in->n_dot_v[p];
-        }
-    const char *path = vs->rq->functions[i];
+    const float *const planes[4] = {in->ao_cosine, in->beta, in->roughness, in->n_dot_v};
+    const float constants[4] = {0};
     double timeout = vs->rq->timeout > 0.0 ? vs->rq->timeout : 10.0;
-    int rc = !args || !values ? gt_error_set(e, path, "out of memory")
-             : count == 0     ? 0
-                              : gpu_function_eval(vs->device, &gpu_function_specular_occlusion, vs->text[i], path,
-                                                  args, values, count, timeout, e);
-    for (size_t p = 0, j = 0; rc == 0 && p < n; ++p)
-        out[p] = in->mask[p] != 0.0f ? values[j++] : 0.0f;
-    free(args), free(values);
-    return rc;
+    return gpu_function_eval_masked(vs->device, &gpu_function_specular_occlusion, vs->text[i], vs->rq->functions[i],
+                                    planes, constants, in->mask, (size_t)in->width * (size_t)in->height, out, timeout,
+                                    e);
 }
 
 /* Variant k's V_s at every pixel, 0 outside the mask: so_approx_evaluate's contract. */
@@ -116,7 +100,7 @@ static int score_row(const so_variants *vs, const image *ref, const aperture_cas
                      multibounce_score_row *row, gt_error *e)
 {
     const char *scene = image_get_attribute(ref, ATTR_SCENE);
-    snprintf(row->scene, sizeof row->scene, "%s", scene ? scene : file_name(path));
+    snprintf(row->scene, sizeof row->scene, "%s", scene ? scene : path_file_name(path));
     double roughness = so_reference_roughness(ref);
     row->albedo = roughness < 0.0 ? NAN : roughness;
     if (so_study_ratio_noise_floor(ref, path, CH_SPECOCC, &row->noise_floor_dssim, &row->noise_floor_rmse, e) != 0)
@@ -147,11 +131,8 @@ static int score_reference(const so_variants *vs, int i, multibounce_score_resul
 
 static int check_request(const multibounce_score_request *rq, gt_error *e)
 {
-    if (rq->function_count + rq->plugin_count == 0)
-        return gt_error_set(e, "shader score", "nothing to score: give --function F.glsl|F.hlsl or --plugin LIB.so");
-    if (rq->function_count > MB_SCORE_MAX_FILES || rq->plugin_count > MB_SCORE_MAX_FILES)
-        return gt_error_set(e, "shader score", "at most %d function files and %d plug-ins", MB_SCORE_MAX_FILES,
-                            MB_SCORE_MAX_FILES);
+    if (multibounce_score_check_files(rq, e) != 0)
+        return -1;
     if (rq->reference_count < 1 || rq->reference_count > MB_SCORE_MAX_ROWS || rq->ao_count != rq->reference_count)
         return gt_error_set(e, "shader score", "%d references and %d --ao files: 1 to %d specular-occlusion "
                             "references expected, each with one --ao (its view's 'gtlab render ao')",

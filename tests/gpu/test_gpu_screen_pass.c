@@ -25,6 +25,8 @@
 #include <unistd.h>
 
 #include "core/exr_io.h"
+#include "gpu/shader_compiler.h"
+#include "gpu/shader_interface.h"
 #include "raytracer/reference_render.h"
 #include "realtime/gtao.h"
 #include "scene/scene_loaders.h"
@@ -72,7 +74,7 @@ static int c_gtao(float **ao)
         fprintf(stderr, "%s\n", e.message);
         return -1;
     }
-    gtao_params p = {GTAO_COSINE, 4, 8, 1.0f, 0.25f, 256.0f, 0.0f, 0, 0, 0, 1, 0};
+    gtao_params p = gtao_params_shader_port();
     image out;
     int rc = approx_output_init(&in, "gtao", "test", &out);
     float *plane = rc == 0 ? image_add_channel(&out, "ao.V") : NULL;
@@ -87,6 +89,33 @@ static int c_gtao(float **ao)
         image_free(&out);
     approx_input_free(&in);
     return rc;
+}
+
+/* The shader's gtlab.param defaults are gtao_params_shader_port's: the C
+ * GTAO it is compared with here (and in the screen-shaders stage) is its own
+ * configuration. */
+static void test_defaults_are_the_c_configuration(const char *shader)
+{
+    const gtao_params c = gtao_params_shader_port();
+    const char *names[6] = {"radius", "falloff", "max_radius_px", "slices", "steps", "thickness"};
+    const float want[6] = {c.radius, c.falloff, c.max_radius_px, (float)c.slices, (float)c.steps, c.thickness};
+    char *source = NULL;
+    gpu_shader_interface s;
+    gt_error e;
+    CHECK_MSG(gpu_read_source(shader, &source, &e) == 0 && gpu_shader_interface_parse(source, shader, &s, &e) == 0,
+              "%s", e.message);
+    free(source);
+    for (int k = 0; k < 6; ++k) {
+        int found = 0;
+        for (int i = 0; i < s.param_count; ++i) {
+            if (strcmp(s.param_name[i], names[k]) != 0)
+                continue;
+            found = 1;
+            CHECK_MSG(s.param_value[i] == want[k], "%s: %s = %g, the C's %g", shader, names[k],
+                      (double)s.param_value[i], (double)want[k]);
+        }
+        CHECK_MSG(found, "%s declares no %s", shader, names[k]);
+    }
 }
 
 static shader_run_request request(const char *shader)
@@ -205,6 +234,8 @@ int main(void)
     float *ao = NULL;
     if (write_gbuffer() != 0 || c_gtao(&ao) != 0)
         return 1;
+    test_defaults_are_the_c_configuration(GTLAB_SOURCE_DIR "/shaders/gtao.glsl");
+    test_defaults_are_the_c_configuration(GTLAB_SOURCE_DIR "/shaders/gtao.hlsl");
     test_gtao_matches_c(ao, GTLAB_SOURCE_DIR "/shaders/gtao.glsl");
     test_gtao_matches_c(ao, GTLAB_SOURCE_DIR "/shaders/gtao.hlsl");
     test_frames_average();
