@@ -59,19 +59,19 @@ static void add_claims(report_context *ctx, const aa_temporal_result *r)
                           *p_edge = find(r, "pan", T_EDGE), *p_checker = find(r, "pan", T_CHECKER);
     if (!s_edge || !p_none || !p_fxaa || !p_taa || !p_edge || !p_checker)
         return;
-    claims_table_add_figure(ctx->claims, source, "the TAA reaches a stable and final result in only two frames",
+    claims_table_add_unreviewed_figure(ctx->claims, source, "the TAA reaches a stable and final result in only two frames",
                             "static camera: largest relative change of the edge TAA's RMSE after frame 1", 
                             settle_after_two(s_edge, r->request.frames), 0.0, 0.0, 0.01);
-    claims_table_add_figure(ctx->claims, source, "TAA: much calmer than no AA (temporal stability)",
+    claims_table_add_unreviewed_figure(ctx->claims, source, "TAA: much calmer than no AA (temporal stability)",
                             "pan over thin geometry: edge TAA flicker / no-AA flicker", ratio(p_edge->flicker, p_none->flicker),
                             0.0, 0.0, 1.0);
-    claims_table_add_figure(ctx->claims, source, "post-processing AA alone (FXAA) is not enough for thin, alpha-tested content",
+    claims_table_add_unreviewed_figure(ctx->claims, source, "post-processing AA alone (FXAA) is not enough for thin, alpha-tested content",
                             "pan: FXAA DSSIM / edge TAA DSSIM against the 64-spp truth (> 1: FXAA worse)",
                             ratio(p_fxaa->dssim, p_edge->dssim), 0.0, 1.0, INFINITY);
-    claims_table_add_figure(ctx->claims, source, "no accumulated history: no long ghosting trails",
+    claims_table_add_unreviewed_figure(ctx->claims, source, "no accumulated history: no long ghosting trails",
                             "pan: edge TAA / accumulating TAA RMSE over disoccluded pixels",
                             ratio(p_edge->ghost_rmse, p_taa->ghost_rmse), 0.0, 0.0, 1.0);
-    claims_table_add_figure(ctx->claims, source, "checkerboard: AA stability similar to our 1080p TAA",
+    claims_table_add_unreviewed_figure(ctx->claims, source, "checkerboard: AA stability similar to our 1080p TAA",
                             "pan: checkerboard flicker / edge TAA flicker (similar: within a factor 1.25, our bound)",
                             ratio(p_checker->flicker, p_edge->flicker), 0.0, 0.8, 1.25);
 }

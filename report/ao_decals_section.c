@@ -145,13 +145,13 @@ int ao_decals_section(report_context *ctx, const ao_decals_result *r, gt_error *
     report_rows(ctx->doc, cJSON_AddArrayToObject(json, "scene_rows"), scene_columns,
                 (int)(sizeof scene_columns / sizeof scene_columns[0]), r->scenes.rows, sizeof r->scenes.rows[0],
                 r->scenes.row_count);
-    claims_table_add_figure(ctx->claims, "Gjoel 2016, INSIDE, AO Decals - Spheres",
+    claims_table_add_unreviewed_figure(ctx->claims, "Gjoel 2016, INSIDE, AO Decals - Spheres",
                             "Quilez's sphere occlusion gives the covered sum accurately (occluder not intersecting "
                             "the surface)",
                             "share of floor pixels (view A) where 1 - Quilez differs from the AO reference by more "
                             "than 4 of its standard errors; holds at or below 0.01",
                             r->rows[1].outlier_share[0], 0.0, -INFINITY, 0.01);
-    claims_table_add_figure(ctx->claims, "Gjoel 2016, INSIDE, AO Decals - Points",
+    claims_table_add_unreviewed_figure(ctx->claims, "Gjoel 2016, INSIDE, AO Decals - Points",
                             "the point decal's fixed falloff, (1 - length(pos))^2 (exponent k = 2), fits its "
                             "occluders (decal stretched over a pill; wrap, decay length and amplitude free)",
                             "tail shape xi of the free refit on sphere-on-plane and pill-on-plane (k = -1 / xi; "

@@ -92,10 +92,10 @@ static void add_claims(report_context *ctx, const atmosphere_luts_result *r)
                  "95th percentile of the lookup's relative error against direct integration (tolerance 2%% or the "
                  "quadrature's %.1e)", x->error.quadrature.p95);
         double high = fmax(ATMOSPHERE_TOLERANCE, x->error.quadrature.p95);
-        claims_table_add_figure(ctx->claims, "Kojima 2017, Height fog: Precomputation", statement, quantity,
+        claims_table_add_unreviewed_figure(ctx->claims, "Kojima 2017, Height fog: Precomputation", statement, quantity,
                                 x->error.total.p95, x->error.total.p95_se, 0.0, high);
         strncat(statement, ", sun 10 deg or more above the horizon", sizeof statement - strlen(statement) - 1);
-        claims_table_add_figure(ctx->claims, "Kojima 2017, Height fog: Precomputation", statement, quantity,
+        claims_table_add_unreviewed_figure(ctx->claims, "Kojima 2017, Height fog: Precomputation", statement, quantity,
                                 x->error.day_total.p95, x->error.day_total.p95_se, 0.0, high);
     }
 }

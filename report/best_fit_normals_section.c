@@ -122,16 +122,16 @@ static int plot_cdf(const report_context *ctx, gt_error *e)
 
 static void add_claims(report_context *ctx, const normals_result *r)
 {
-    claims_table_add_figure(ctx->claims, SOURCE, "normalised normals use ~1.73% of the 256^3 cells (~289880)",
+    claims_table_add_unreviewed_figure(ctx->claims, SOURCE, "normalised normals use ~1.73% of the 256^3 cells (~289880)",
                             "% of cells the unit sphere crosses, exact", 100.0 * r->cells_sphere / BFN_CELL_COUNT, 0.0,
                             1.725, 1.735);
-    claims_table_add_figure(ctx->claims, SOURCE, "divided by the maximum component: ~2.33% (~390152)",
+    claims_table_add_unreviewed_figure(ctx->claims, SOURCE, "divided by the maximum component: ~2.33% (~390152)",
                             "% of cells on the cube's surface, exact", 100.0 * r->cells_surface / BFN_CELL_COUNT, 0.0,
                             2.325, 2.335);
-    claims_table_add_figure(ctx->claims, SOURCE, "best fit uses ~98.2% of the cells (~16482364)",
+    claims_table_add_unreviewed_figure(ctx->claims, SOURCE, "best fit uses ~98.2% of the cells (~16482364)",
                             "% of cells that encode distinct directions, exact",
                             100.0 * r->cells_distinct / BFN_CELL_COUNT, 0.0, 98.15, 98.25);
-    claims_table_add_figure(ctx->claims, SOURCE, "both old techniques use ~17 bits",
+    claims_table_add_unreviewed_figure(ctx->claims, SOURCE, "both old techniques use ~17 bits",
                             "log2 of the cells normalised normals reach, exact", log2((double)r->cells_sphere), 0.0,
                             16.5, 17.5);
 }

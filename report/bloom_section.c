@@ -58,16 +58,16 @@ static void bloom_claims(report_context *ctx, const bloom_result *r)
 {
     static const char *const source = "Gjoel 2016, INSIDE, Sample Fitting";
     const bloom_target_result *a = &r->targets[0], *h = &r->targets[1];
-    claims_table_add_figure(ctx->claims, source, "worst weight-error of approximation is 0.08",
+    claims_table_add_unreviewed_figure(ctx->claims, source, "worst weight-error of approximation is 0.08",
                             "9 taps fitted to the 13-tap kernel's texel weights with each tap's weight held at its "
                             "block's sum: worst error of a tap's four bilinear weights normalised to sum 1 against "
                             "the target block's (the corner tap; 0.0885 with free weights); holds within 0.075 .. "
                             "0.085", h->worst_normalised_error, 0.0, 0.075, 0.085);
-    claims_table_add_figure(ctx->claims, source, "valid only if exactly 1/2 resolution",
+    claims_table_add_unreviewed_figure(ctx->claims, source, "valid only if exactly 1/2 resolution",
                             "worst texel weight error of the 9 taps (least squares) against the 13 taps over the rows "
                             "of 240x135 -> 120x67, over the same at exact half resolution; holds above 2",
                             a->worst_odd_mip / a->fit.worst_error, 0.0, 2.0, INFINITY);
-    claims_table_add_figure(ctx->claims, source, "1920x1080 => only first 3 mips (1920x1088 => 6 mips)",
+    claims_table_add_unreviewed_figure(ctx->claims, source, "1920x1080 => only first 3 mips (1920x1088 => 6 mips)",
                             "exact halvings before the first odd size from 1920x1080, plus 10 x those from 1920x1088; "
                             "holds at 63", r->exact_levels_1080 + 10.0 * r->exact_levels_1088, 0.0, 63, 63);
 }

@@ -93,7 +93,7 @@ static void render_findings(report_context *ctx, const grading_row *gpu, int n, 
                    chart_max_de(tet, n_tet, "clipped exposure +1.5", 32),
                    chart_max_de(tet, n_tet, "clipped exposure +1.5", 64), chart_max_de(tet, n_tet, "bleach bypass", 16),
                    chart_max_de(tet, n_tet, "bleach bypass", 32), chart_max_de(tet, n_tet, "bleach bypass", 64));
-    claims_table_add_figure(ctx->claims, "Kaplanyan 2010, CryENGINE 3, colour grading",
+    claims_table_add_unreviewed_figure(ctx->claims, "Kaplanyan 2010, CryENGINE 3, colour grading",
                             "a 16x16x16 LUT proved to be enough (for the majority of colour transformations)",
                             "fraction of the study's five looks with max dE00 < 1 on chart and render, 16^3 sRGB RGBA8 "
                             "trilinear",

@@ -47,17 +47,17 @@ static void dither_claims(report_context *ctx, const dither_result *r)
     const dither_row *blue = find_row(r, 1, "blue tpdf-remap"), *white = find_row(r, 1, "white tpdf-remap");
     if (!tpdf || !rpdf || !average || !blue || !white)
         return;
-    claims_table_add_figure(ctx->claims, source, "the error of triangularly distributed noise is independent of the signal",
+    claims_table_add_unreviewed_figure(ctx->claims, source, "the error of triangularly distributed noise is independent of the signal",
                             "noise modulation a of blue noise remapped to TPDF on the 8-bit gradient: Var(f) = c + a "
                             "(f(1-f) - 1/6) over 32 bins of the signal's fraction f (RPDF has a = 1); holds for "
                             "|a| <= 0.1", tpdf->modulation_amplitude, tpdf->modulation_amplitude_se, -0.1, 0.1);
-    claims_table_add_figure(ctx->claims, source, "with uniform (RPDF) noise the amount of noise varies across the signal",
+    claims_table_add_unreviewed_figure(ctx->claims, source, "with uniform (RPDF) noise the amount of noise varies across the signal",
                             "the same a for white RPDF; holds above 0.5", rpdf->modulation_amplitude,
                             rpdf->modulation_amplitude_se, 0.5, INFINITY);
-    claims_table_add_figure(ctx->claims, source, "a TPDF is made by (rand(seed0) + rand(seed1)) / 2",
+    claims_table_add_unreviewed_figure(ctx->claims, source, "a TPDF is made by (rand(seed0) + rand(seed1)) / 2",
                             "the same a for that formula as written (a 1-LSB triangle); holds for |a| <= 0.1, as a "
                             "TPDF's", average->modulation_amplitude, average->modulation_amplitude_se, -0.1, 0.1);
-    claims_table_add_figure(ctx->claims, source, "blue noise: perceptually less noise than white",
+    claims_table_add_unreviewed_figure(ctx->claims, source, "blue noise: perceptually less noise than white",
                             "DSSIM after a 1-pixel display blur of the 8-bit tone-mapped sphere-light render, blue "
                             "over white (both TPDF); holds below 1",
                             blue->dssim_blurred / white->dssim_blurred, 0.0, -INFINITY, 1.0);

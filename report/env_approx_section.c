@@ -131,7 +131,7 @@ static void images(report_context *ctx, const env_study_result *r)
 static void claims(report_context *ctx, const env_study_result *r)
 {
     static const char *source = "Jimenez 2016 (GTAO), ambient occlusion x pre-convolved probe";
-    claims_table_add_figure(ctx->claims, source, "AO x a pre-convolved probe is accurate for a white dome",
+    claims_table_add_unreviewed_figure(ctx->claims, source, "AO x a pre-convolved probe is accurate for a white dome",
                             "relative RMSE of AO x E(n) against the direct diffuse reference, exact AO and "
                             "unoccluded lighting (the occlusion's part), reference noise taken out, white dome, "
                             "mean over the scenes; accurate: <= 0.02",
@@ -142,7 +142,7 @@ static void claims(report_context *ctx, const env_study_result *r)
     snprintf(quantity, sizeof quantity,
              "the same under the environment where it is smallest (%s); not accurate: > 0.02",
              r->environments[r->claim_environment].name);
-    claims_table_add_figure(ctx->claims, source, "... but not for any other scenario", quantity,
+    claims_table_add_unreviewed_figure(ctx->claims, source, "... but not for any other scenario", quantity,
                             r->other_occlusion.mean, r->other_occlusion.standard_error, 0.02, INFINITY);
 }
 

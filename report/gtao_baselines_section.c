@@ -34,7 +34,7 @@ static baseline_technique best_cited(const gtao_baselines_result *r)
 static void add_claims(report_context *ctx, const gtao_baselines_result *r)
 {
     baseline_technique b = best_cited(r);
-    claim row = {.source = "Jimenez et al. 2016, Goals; References [McGuire2011] [Mittring2007]",
+    unreviewed_claim row = {.source = "Jimenez et al. 2016, Goals; References [McGuire2011] [Mittring2007]",
                  .statement = "GTAO achieves higher accuracy than the empirical screen-space AO it replaces",
                  .figure = r->pooled_vs_gtao_3d[b].mean,
                  .standard_error = r->pooled_vs_gtao_3d[b].se,
@@ -44,8 +44,8 @@ static void add_claims(report_context *ctx, const gtao_baselines_result *r)
              "MSE of %s (the better cited baseline) minus MSE of GTAO medium against the 3-D reference, one "
              "frame each, pooled over %d scenes (8x8-block s.e.); the claim holds when positive",
              baseline_names[b], r->scene_count);
-    claims_table_add(ctx->claims, &row);
-    claim pit = {.source = "Jimenez et al. 2016, Possible Pitfall",
+    claims_table_add_unreviewed(ctx->claims, &row);
+    unreviewed_claim pit = {.source = "Jimenez et al. 2016, Possible Pitfall",
                  .statement = "Using cos(n) |sin n| in place of cos(n) |sin theta| in the slice integral is wrong "
                               "(a negative control the report must expose)",
                  .figure = r->pooled_vs_gtao_3d[BASELINE_PITFALL].mean,
@@ -56,7 +56,7 @@ static void add_claims(report_context *ctx, const gtao_baselines_result *r)
              "MSE of GTAO medium with the |sin n| integrand minus MSE with |sin theta| against the 3-D reference, "
              "pooled over %d scenes (8x8-block s.e.); the claim holds when positive",
              r->scene_count);
-    claims_table_add(ctx->claims, &pit);
+    claims_table_add_unreviewed(ctx->claims, &pit);
 }
 
 void gtao_baselines_section(report_context *ctx, const gtao_baselines_result *r, cJSON *summary)

@@ -24,7 +24,7 @@ static const report_column columns[] = {
  * horizon vectors without losing accuracy. */
 static void add_claim(report_context *ctx, const gtao_bent_normals_result *r)
 {
-    claim row = {.source = "Jimenez et al. 2016, Bent Normal",
+    unreviewed_claim row = {.source = "Jimenez et al. 2016, Bent Normal",
                  .statement = "b = 0.5 (h1 + h2), \"or faster: average both horizon angles and recover 3d vector\" "
                               "(the faster estimator is no less accurate)",
                  .figure = r->pooled_halfway_vs_horizons.mean,
@@ -35,7 +35,7 @@ static void add_claim(report_context *ctx, const gtao_bent_normals_result *r)
              "angle to the 3-D reference's bent normal of the averaged horizon angles minus that of the averaged "
              "horizon vectors, degrees, pooled over %d scenes (8x8-block s.e.); the claim holds when <= 0",
              r->scene_count);
-    claims_table_add(ctx->claims, &row);
+    claims_table_add_unreviewed(ctx->claims, &row);
 }
 
 void gtao_bent_normals_section(report_context *ctx, const gtao_bent_normals_result *r, cJSON *summary)

@@ -78,7 +78,7 @@ static void add_summary(const gtao_denoisers_result *r, cJSON *summary)
 
 static void depth_claim(report_context *ctx, const gtao_denoisers_result *r, const block_mean *m, int edges)
 {
-    claim c = {.source = "Jimenez et al. 2016, Spatial Denoiser Details",
+    unreviewed_claim c = {.source = "Jimenez et al. 2016, Spatial Denoiser Details",
                .figure = block_mean_value(m),
                .standard_error = block_mean_se(m),
                .low = -INFINITY,
@@ -91,14 +91,14 @@ static void depth_claim(report_context *ctx, const gtao_denoisers_result *r, con
              "2nd minus log + 1st, %s pixels, mean over %ld 8x8 blocks of %d scenes (s.e. over blocks); at most "
              "0: the talk's test better",
              edges ? "edge" : "flat", m->blocks, r->scene_count);
-    claims_table_add(ctx->claims, &c);
+    claims_table_add_unreviewed(ctx->claims, &c);
 }
 
 static void shift_claim(report_context *ctx, const gtao_denoisers_result *r)
 {
     double mean = 0.5 * (r->shift_with[0] + r->shift_with[1]);
     double se = 0.5 * sqrt(r->shift_with_se[0] * r->shift_with_se[0] + r->shift_with_se[1] * r->shift_with_se[1]);
-    claim c = {.source = "Jimenez et al. 2016, Temporal Denoiser Details",
+    unreviewed_claim c = {.source = "Jimenez et al. 2016, Temporal Denoiser Details",
                .statement = "the 4x4 bilateral filter offsets the image; offsetting it by 1 pixel each frame "
                             "(odd: top/left, even: bottom/right) compensates in the temporal accumulation",
                .figure = mean,
@@ -110,7 +110,7 @@ static void shift_claim(report_context *ctx, const gtao_denoisers_result *r)
              "on its gradient, alternating window, %d scenes (s.e. clustered by 8x8 blocks; the fixed window gives "
              "%+.3f, %+.3f); the claim allows %.2f px",
              r->scene_count, r->shift_without[0], r->shift_without[1], SHIFT_TOLERANCE_PX);
-    claims_table_add(ctx->claims, &c);
+    claims_table_add_unreviewed(ctx->claims, &c);
 }
 
 void gtao_denoisers_section(report_context *ctx, const gtao_denoisers_result *r, cJSON *summary)

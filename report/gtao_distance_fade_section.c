@@ -28,7 +28,7 @@ static const report_column columns[] = {
  * same fade, to one 8-bit step. */
 static void add_claim(report_context *ctx, const gtao_distance_fade_result *r)
 {
-    claim row = {.source = "Jimenez et al. 2016, Minimizing Artifacts",
+    unreviewed_claim row = {.source = "Jimenez et al. 2016, Minimizing Artifacts",
                  .statement = "Conservative attenuation (full effect to 150 in, fading to 0 at 200 in): ensure "
                               "ground truth near occlusion",
                  .figure = r->pooled_signed_vs_faded.mean,
@@ -39,7 +39,7 @@ static void add_claim(report_context *ctx, const gtao_distance_fade_result *r)
              "mean signed error of GTAO with the fade against a 3-D reference whose occluders fade the same way "
              "with distance, pooled over %d scenes (8x8-block s.e.); the claim allows one 8-bit step either way",
              r->scene_count);
-    claims_table_add(ctx->claims, &row);
+    claims_table_add_unreviewed(ctx->claims, &row);
 }
 
 void gtao_distance_fade_section(report_context *ctx, const gtao_distance_fade_result *r, cJSON *summary)

@@ -90,7 +90,7 @@ static void add_polys(cJSON *o, const gtao_fast_math_result *r)
  * 8-bit step. */
 static void add_claim(report_context *ctx, const gtao_fast_math_result *r)
 {
-    claim row = {.source = "Jimenez et al. 2016, Cosine Weighting LUT vs Analytical",
+    unreviewed_claim row = {.source = "Jimenez et al. 2016, Cosine Weighting LUT vs Analytical",
                  .statement = "Use fast sqrt [Drobot2014a] and acos [Eberly2014] (a free shortcut: no visible "
                               "change in AO)",
                  .figure = r->medium_paired_hf.mean,
@@ -101,7 +101,7 @@ static void add_claim(report_context *ctx, const gtao_fast_math_result *r)
              "GTAO medium (1 frame): MSE with the fast maths minus MSE with exact maths against the height-field "
              "reference, pooled over %d scenes (8x8-block s.e.); the claim allows up to (1/255)^2",
              r->scene_count);
-    claims_table_add(ctx->claims, &row);
+    claims_table_add_unreviewed(ctx->claims, &row);
 }
 
 static void render_medium(report *doc, const gtao_fast_math_result *r, cJSON *o)

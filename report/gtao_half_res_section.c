@@ -77,7 +77,7 @@ static void add_summary(const gtao_half_res_result *r, cJSON *summary)
 
 static void add_claims(report_context *ctx, const gtao_half_res_result *r)
 {
-    claim samples = {.source = "Jimenez et al. 2016, Achieving the Performance Target",
+    unreviewed_claim samples = {.source = "Jimenez et al. 2016, Achieving the Performance Target",
                      .statement = "D3D11_FILTER_MINIMUM on the depth MIP chain \"improves samples per direction "
                                   "(4x)\": 4 MIN-filtered samples do as well as 16 point samples",
                      .figure = r->four_x_mean,
@@ -89,8 +89,8 @@ static void add_claims(report_context *ctx, const gtao_half_res_result *r)
              "point samples with 16, radius %.2f of the camera distance, mean over %ld 8x8 blocks of %d scenes "
              "(s.e. over blocks); at most 0: the MIN chain as good",
              GTAO_HALF_RES_CONVERGED_STEPS, GTAO_HALF_RES_4X_RADIUS, r->four_x.blocks, r->scene_count);
-    claims_table_add(ctx->claims, &samples);
-    claim half = {.source = "Jimenez et al. 2016, Achieving the Performance Target",
+    claims_table_add_unreviewed(ctx->claims, &samples);
+    unreviewed_claim half = {.source = "Jimenez et al. 2016, Achieving the Performance Target",
                   .statement = "half resolution with a MIN-filtered depth MIP chain (closest height ~= max "
                                "horizon) stands in for the full-resolution horizon search",
                   .figure = r->talk_rmse_unbounded,
@@ -102,7 +102,7 @@ static void add_claims(report_context *ctx, const gtao_half_res_result *r)
              "radius limit, %d scenes (s.e. over 8x8 blocks); the claim allows up to the height-field "
              "reference's noise RMSE",
              r->scene_count);
-    claims_table_add(ctx->claims, &half);
+    claims_table_add_unreviewed(ctx->claims, &half);
 }
 
 void gtao_half_res_section(report_context *ctx, const gtao_half_res_result *r, cJSON *summary)

@@ -43,7 +43,7 @@ static void add_summary(const gtao_pattern_result *r, cJSON *summary)
 
 static void add_claims(report_context *ctx, const gtao_pattern_result *r)
 {
-    claim cycle = {.source = "Jimenez et al. 2016, Achieving the Performance Target",
+    unreviewed_claim cycle = {.source = "Jimenez et al. 2016, Achieving the Performance Target",
                    .statement = "1 direction per pixel, 16 spatial rotations in 4x4 tiles x 6 temporal rotations: "
                                 "96 effective directions per pixel (spatial + temporal denoiser, static camera)",
                    .figure = r->cycle_rmse,
@@ -55,8 +55,8 @@ static void add_claims(report_context *ctx, const gtao_pattern_result *r)
              "directions in one frame, pooled over %d scenes (s.e. over 8x8 blocks); the claim allows up to the "
              "height-field reference's noise RMSE",
              r->scene_count);
-    claims_table_add(ctx->claims, &cycle);
-    claim order = {.source = "Jimenez et al. 2016, Noise Distribution",
+    claims_table_add_unreviewed(ctx->claims, &cycle);
+    unreviewed_claim order = {.source = "Jimenez et al. 2016, Noise Distribution",
                    .statement = "directions sorted so that each row of the 4x4 tile holds a full rotation "
                                 "\"worked better than Morton order\"",
                    .figure = block_mean_value(&r->order_difference[0]),
@@ -67,7 +67,7 @@ static void add_claims(report_context *ctx, const gtao_pattern_result *r)
              "squared error against the 96-direction brute force, rows minus Morton, GTAO medium denoised, one "
              "frame, mean over %ld 8x8 blocks of %d scenes (s.e. over blocks); below 0: rows better",
              r->order_difference[0].blocks, r->scene_count);
-    claims_table_add(ctx->claims, &order);
+    claims_table_add_unreviewed(ctx->claims, &order);
 }
 
 void gtao_pattern_section(report_context *ctx, const gtao_pattern_result *r, cJSON *summary)

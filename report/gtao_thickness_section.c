@@ -27,7 +27,7 @@ static void add_claim(report_context *ctx, const gtao_thickness_result *r)
     if (r->corner_scene < 0)
         return;
     const thickness_row *x = &r->rows[r->corner_scene][r->best];
-    claim row = {.source = "Jimenez et al. 2016, Thickness Heuristic",
+    unreviewed_claim row = {.source = "Jimenez et al. 2016, Thickness Heuristic",
                  .statement = "The thickness heuristic is conservative with architectural features such as 90 "
                               "degree corners",
                  .figure = x->vs_none_3d.mean,
@@ -38,7 +38,7 @@ static void add_claim(report_context *ctx, const gtao_thickness_result *r)
              "corner scene: MSE with thickness %.2f (the sweep's lowest pooled MSE) minus MSE without, against the 3-D "
              "reference (8x8-block s.e.); the claim allows up to (1/255)^2",
              x->thickness);
-    claims_table_add(ctx->claims, &row);
+    claims_table_add_unreviewed(ctx->claims, &row);
 }
 
 void gtao_thickness_section(report_context *ctx, const gtao_thickness_result *r, cJSON *summary)

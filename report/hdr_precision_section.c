@@ -43,14 +43,14 @@ static int plot(const report_context *ctx, const hdr_precision_result *r, gt_err
 
 static void add_claims(report_context *ctx, const hdr_precision_result *r)
 {
-    claims_table_add_figure(ctx->claims, SOURCE ", gamma vs linear",
+    claims_table_add_unreviewed_figure(ctx->claims, SOURCE ", gamma vs linear",
                             "linear storage is finer above x = 5/11 ~ 116/255 (linear space)",
                             "x where one 8-bit code step is equal, gamma 2.2", r->gamma22_point, 0.0, 115.5 / 255.0,
                             116.5 / 255.0);
-    claims_table_add_figure(ctx->claims, SOURCE ", HDR lower bound", "exponential tone mapping: c_min ~ 0.00196271 l",
+    claims_table_add_unreviewed_figure(ctx->claims, SOURCE ", HDR lower bound", "exponential tone mapping: c_min ~ 0.00196271 l",
                             "l ln(510/509), per unit l", r->exponential_c_min, 0.0, 0.001962705,
                             0.001962715);
-    claims_table_add_figure(ctx->claims, SOURCE ", HDR lower bound", "filmic tone mapping: c_min ~ 0.0119052 l",
+    claims_table_add_unreviewed_figure(ctx->claims, SOURCE ", HDR lower bound", "filmic tone mapping: c_min ~ 0.0119052 l",
                             "root of filmic^2.2 = 1/510 (Hejl-Burgess-Dawson), per unit l", r->filmic_c_min, 0.0,
                             0.01190515, 0.01190525);
 }

@@ -50,13 +50,13 @@ static void add_claims(report_context *ctx, const height_fog_result *r)
         terrain = fmax(terrain, r->cases[i].published_max_rel_single);
     for (int g = 0; g < HEIGHT_FOG_REGIMES; ++g)
         regimes = fmax(regimes, r->regimes[g].published_depth_error);
-    claims_table_add_figure(ctx->claims, "Decima 2017, Height fog: Analytic model",
+    claims_table_add_unreviewed_figure(ctx->claims, "Decima 2017, Height fog: Analytic model",
                             "HeightFog() is an analytic solution of the volume rendering equation under single "
                             "scattering (and single scale height): exact, on the terrain's downward rays",
                             "max relative error of its L against single-scattering quadrature (sun unattenuated, "
                             "no shadows), terrain pixels",
                             terrain, 0.0, 0.0, 1e-3);
-    claims_table_add_figure(ctx->claims, "Decima 2017, Height fog: Analytic model",
+    claims_table_add_unreviewed_figure(ctx->claims, "Decima 2017, Height fog: Analytic model",
                             "the same, for every ray direction (its max(1e-2, ...) clamp included)",
                             "max relative error of its optical depth against quadrature over the regime table",
                             regimes, 0.0, 0.0, 1e-3);

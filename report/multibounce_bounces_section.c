@@ -63,7 +63,7 @@ static void add_json(const multibounce_bounce_study *b, cJSON *summary)
 
 static void add_claim(report_context *ctx, const multibounce_bounce_study *b)
 {
-    claim row = {.source = "Jimenez et al. 2016, Multi-Bounce",
+    unreviewed_claim row = {.source = "Jimenez et al. 2016, Multi-Bounce",
                  .statement = "The published a, b, c were fitted to multi-bounce references of 4 bounces "
                               "(\"Monte Carlo ray tracing @ given albedo (4 bounces)\")",
                  .figure = b->four_minus_best_other,
@@ -74,7 +74,7 @@ static void add_claim(report_context *ctx, const multibounce_bounce_study *b)
              "RMS distance of the talk's curve to gtlab's 4-bounce refit minus that to the closest other "
              "bounce count's refit (%s), jackknife s.e. over scenes; <= 0 when 4 bounces match best",
              b->rows[b->best_other].bounces);
-    claims_table_add(ctx->claims, &row);
+    claims_table_add_unreviewed(ctx->claims, &row);
 }
 
 void multibounce_bounces_section(report_context *ctx, const multibounce_study_result *r, cJSON *summary)

@@ -50,7 +50,7 @@ static void add_summary(const multibounce_clamp *c, cJSON *summary)
 static void add_claim(report_context *ctx, const multibounce_study_result *r)
 {
     const multibounce_clamp *c = &r->clamp;
-    claim row = {.source = "Jimenez et al. 2016, Multi-Bounce: Shader Code",
+    unreviewed_claim row = {.source = "Jimenez et al. 2016, Multi-Bounce: Shader Code",
                  .statement = "GTAOMultiBounce = max(V_d, cubic): the max is a guard; the fitted cubic itself "
                               "models V'_d >= V_d, so a cubic held to f >= V_d and f(1) = 1 predicts as well",
                  .figure = c->heldout_mean_difference,
@@ -61,7 +61,7 @@ static void add_claim(report_context *ctx, const multibounce_study_result *r)
              "held-out RMSE of the constrained cubic minus the unconstrained one with the max, mean over %d "
              "scenes (s.e. over scenes); the claim allows up to the references' noise-floor RMSE",
              c->heldout_count);
-    claims_table_add(ctx->claims, &row);
+    claims_table_add_unreviewed(ctx->claims, &row);
 }
 
 void multibounce_clamp_section(report_context *ctx, const multibounce_study_result *r, cJSON *summary)

@@ -49,7 +49,7 @@ static void add_json(const multibounce_colour_study *c, cJSON *summary)
 static void add_claim(report_context *ctx, const multibounce_study_result *r)
 {
     const multibounce_colour_study *c = &r->colour;
-    claim row = {.source = "Jimenez et al. 2016, Multi-Bounce",
+    unreviewed_claim row = {.source = "Jimenez et al. 2016, Multi-Bounce",
                  .statement = "Per-channel multi-bounce with coloured albedo is a close match to the coloured "
                               "Monte Carlo reference",
                  .figure = c->mean_dssim_luminance,
@@ -60,7 +60,7 @@ static void add_claim(report_context *ctx, const multibounce_study_result *r)
              "DSSIM in luminance of f per channel against the coloured reference, mean over %d scenes (s.e. over "
              "scenes); the claim allows up to the talk's mean DSSIM on the grey references",
              MULTIBOUNCE_COLOUR_SCENES);
-    claims_table_add(ctx->claims, &row);
+    claims_table_add_unreviewed(ctx->claims, &row);
 }
 
 void multibounce_colour_section(report_context *ctx, const multibounce_study_result *r, cJSON *summary)

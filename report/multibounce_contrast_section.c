@@ -37,7 +37,7 @@ static const report_column summary_columns[] = {
 static void add_claim(report_context *ctx, const multibounce_study_result *r)
 {
     const multibounce_contrast_study *c = &r->contrast;
-    claim row = {.source = "Jimenez et al. 2016, Multi-Bounce",
+    unreviewed_claim row = {.source = "Jimenez et al. 2016, Multi-Bounce",
                  .statement = "The model's premise: the albedo of the neighbourhood is close to that of the "
                               "current point, so f(V_d, local albedo) holds (tested where it is not: dark on "
                               "white, white on dark)",
@@ -50,7 +50,7 @@ static void add_claim(report_context *ctx, const multibounce_study_result *r)
              "pixel's albedo, mean over %d scene-contrast pairs (jackknife s.e. over scenes); the claim allows up "
              "to the references' noise-floor RMSE",
              c->count);
-    claims_table_add(ctx->claims, &row);
+    claims_table_add_unreviewed(ctx->claims, &row);
 }
 
 void multibounce_contrast_section(report_context *ctx, const multibounce_study_result *r, cJSON *summary)

@@ -40,7 +40,7 @@ static const report_column gtao_columns[] = {
 static void add_claim(report_context *ctx, const multibounce_study_result *r)
 {
     const multibounce_gtao_row *medium = &r->gtao_input.rows[1];
-    claim row = {.source = "Jimenez et al. 2016, Multi-Bounce",
+    unreviewed_claim row = {.source = "Jimenez et al. 2016, Multi-Bounce",
                  .statement = "The multi-bounce fit is agnostic to the source of AO: applied to GTAO's V_d (the "
                               "talk's configuration) it matches the multi-bounce reference as well as applied to "
                               "the reference V_d",
@@ -52,7 +52,7 @@ static void add_claim(report_context *ctx, const multibounce_study_result *r)
              "RMSE of f(GTAO %s V_d) minus RMSE of f(reference V_d) against V'_d, all scenes and albedos "
              "(jackknife s.e. over scenes); the claim allows up to the references' noise-floor RMSE",
              medium->preset);
-    claims_table_add(ctx->claims, &row);
+    claims_table_add_unreviewed(ctx->claims, &row);
 }
 
 void multibounce_gtao_section(report_context *ctx, const multibounce_study_result *r, cJSON *summary)

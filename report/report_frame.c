@@ -32,5 +32,19 @@ int report_write_summary(const report_context *ctx, gt_error *e)
         return gt_error_set(e, path, "out of memory");
     int rc = atomic_write_text(path, text, e);
     free(text);
+    return rc != 0 ? rc : report_write_claims(ctx, e);
+}
+
+int report_write_claims(const report_context *ctx, gt_error *e)
+{
+    if (!ctx->claims || ctx->claims->count == 0)
+        return 0;
+    char path[4096];
+    snprintf(path, sizeof path, "%s/claims.md", ctx->study.output_dir);
+    char *text = claims_table_markdown(ctx->claims);
+    if (!text)
+        return gt_error_set(e, path, "out of memory");
+    int rc = atomic_write_text(path, text, e);
+    free(text);
     return rc;
 }

@@ -12,5 +12,8 @@ void report_introduce(report_context *ctx, const char *stage_list, const char *p
 
 /* <output>/summary.json, written atomically. */
 int report_write_summary(const report_context *ctx, gt_error *e);
+/* claims.md beside it: one paragraph per claim (claims_table_markdown);
+ * nothing when no claim was measured. report_write_summary calls it. */
+int report_write_claims(const report_context *ctx, gt_error *e);
 
 #endif

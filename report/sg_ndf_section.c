@@ -137,7 +137,7 @@ static void claim_rows(report_context *ctx, const sg_ndf_result *r)
                  "relative L2 error E = ||S - D||/||D|| of a 7-lobe SG fit (solid-angle least squares in D, Ceres; "
                  "an upper bound on the best 7-lobe E); holds at E <= %.2f; deterministic: no sampling error",
                  r->request.l2_target);
-        claims_table_add_figure(ctx->claims, "Kaplanyan 2010 (CryENGINE 3), anisotropic deferred materials I",
+        claims_table_add_unreviewed_figure(ctx->claims, "Kaplanyan 2010 (CryENGINE 3), anisotropic deferred materials I",
                                 statement, quantity, m->fits[6].l2_error, 0.0, -INFINITY, r->request.l2_target);
     }
 }

@@ -67,13 +67,13 @@ static void band_table(report *doc, const so_study_result *r, cJSON *json)
 
 static void cone_view_claims(report_context *ctx, const so_cone_view_result *c)
 {
-    claims_table_add_figure(ctx->claims, "Jimenez 2016, Specular Occlusion",
+    claims_table_add_unreviewed_figure(ctx->claims, "Jimenez 2016, Specular Occlusion",
                             "using a cone visibility is still a very good match to the ground truth",
                             "RMSE of V_s with the AO's visibility cone (GGX f_r at the actual view) against the "
                             "reference V_s, the reference's noise taken out, mean over the scenes; holds below 0.05 "
                             "(gtlab's reading of a very good match)",
                             c->visibility.mean, c->visibility.standard_error, -INFINITY, SO_GOOD_MATCH_RMSE);
-    claims_table_add_figure(ctx->claims, "Jimenez 2016, Specular Occlusion",
+    claims_table_add_unreviewed_figure(ctx->claims, "Jimenez 2016, Specular Occlusion",
                             "V_s is baked into a 3-D table of (a_v, beta, r): the view angle can be dropped",
                             "RMSE of the 32^3 table against V_s^cone (dropped n.v and interpolation) minus the "
                             "visibility cone's own RMSE, paired over the scenes; holds below 0 (the table costs less "

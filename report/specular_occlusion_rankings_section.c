@@ -81,7 +81,7 @@ static void add_claim(report_context *ctx, const char *statement, const char *qu
 {
     char text[CLAIM_TEXT];
     snprintf(text, sizeof text, "%s; Phong V_s and Phong lobes, as the talk compared", quantity);
-    claims_table_add_figure(ctx->claims, SOURCE, statement, text, d->mean, d->standard_error, low, high);
+    claims_table_add_unreviewed_figure(ctx->claims, SOURCE, statement, text, d->mean, d->standard_error, low, high);
 }
 
 /* The claims, judged in the talk's own setting. */
@@ -154,7 +154,7 @@ void so_rankings_section(report_context *ctx, const so_study_result *r, cJSON *s
                      "largest difference %.2g sr over %ld crossing configurations of a 97^3 grid (caps up to pi - 0.05).",
                      r->caps_max_difference, r->caps_configurations);
     cJSON_AddNumberToObject(json, "caps_max_difference", r->caps_max_difference);
-    claims_table_add_figure(ctx->claims, SOURCE,
+    claims_table_add_unreviewed_figure(ctx->claims, SOURCE,
                             "the cap intersections of Tovchigrechko-Vakser 2001 and Mazonka 2012 are derived "
                             "differently but mathematically equivalent",
                             "largest difference of the two in steradians over the crossing configurations of a 97^3 "

@@ -374,7 +374,7 @@ static void conclude_bc4(report_context *ctx, const so_study_result *r, const so
                      b32->mean_dssim, b16->mean_dssim, n->lut32->mean_dssim, cost->mean, cost->standard_error,
                      cost->cases, fabs(cost->mean) > CLAIM_Z * cost->standard_error ? "significant" : "not significant",
                      fabs(cost->mean) < floor ? "smaller" : "larger", floor);
-    claim c = {.source = "Jimenez 2016, Specular Occlusion",
+    unreviewed_claim c = {.source = "Jimenez 2016, Specular Occlusion",
                .statement = "a 16^3 BC4 table is still acceptable",
                .quantity = "DSSIM of the 16^3 BC4 table minus the float 32^3 table's; holds below the references' "
                            "noise floor",
@@ -382,7 +382,7 @@ static void conclude_bc4(report_context *ctx, const so_study_result *r, const so
                .standard_error = cost->standard_error,
                .low = -INFINITY,
                .high = floor};
-    claims_table_add(ctx->claims, &c);
+    claims_table_add_unreviewed(ctx->claims, &c);
 }
 
 /* The cone/cone ratio normalised above the horizon (not the talk's) against

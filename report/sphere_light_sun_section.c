@@ -34,7 +34,7 @@ void sphere_sun_section(report_context *ctx, const sphere_sun_result *s, cJSON *
                      s->shortfall_step_se, s->shortfall_gain, s->shortfall_gain_se, s->abs_karis, s->abs_karis_se,
                      s->abs_step, s->abs_step_se, s->gain, s->gain_se);
     sun_json(s, cJSON_AddObjectToObject(summary, "sun"));
-    claims_table_add_figure(ctx->claims, "de Carpentier 2017 (Decima), GGX spherical area light",
+    claims_table_add_unreviewed_figure(ctx->claims, "de Carpentier 2017 (Decima), GGX spherical area light",
                             "the N.H maximisation improves the sun's reflection (shown at low angles)",
                             "mean absolute radiance residual with Karis's point minus with the talk's Newton step, "
                             "sun-sized disc at grazing views, paired over configurations; holds above 0",

@@ -42,7 +42,7 @@ void sphere_terminator_section(report_context *ctx, const sphere_terminator_resu
                      t->talk_abs, t->talk_abs_se, t->above_abs, t->above_abs_se, t->fixed_abs, t->fixed_abs_se, t->gain,
                      t->gain_se);
     terminator_json(t, cJSON_AddObjectToObject(summary, "terminator"));
-    claims_table_add_figure(ctx->claims, "de Carpentier 2017 (Decima), Spherical Area Lighting appendix",
+    claims_table_add_unreviewed_figure(ctx->claims, "de Carpentier 2017 (Decima), Spherical Area Lighting appendix",
                             "N.L is not adjusted: zero intensity when the light's centre is on the horizon (an "
                             "admitted error near the terminator)",
                             "mean residual ln((approx + 0.01)/(reference + 0.01)) of the published form over lights "

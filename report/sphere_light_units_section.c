@@ -52,7 +52,7 @@ void sphere_units_section(report_context *ctx, const sphere_units_result *u, cJS
     cJSON_AddNumberToObject(json, "none_mean_abs_residual", u->none.mean_abs);
     cJSON_AddNumberToObject(json, "normalisation_gain", u->gain);
     cJSON_AddNumberToObject(json, "normalisation_gain_stderr", u->gain_se);
-    claims_table_add_figure(ctx->claims, "de Carpentier 2017 (Decima), Spherical Area Lighting appendix",
+    claims_table_add_unreviewed_figure(ctx->claims, "de Carpentier 2017 (Decima), Spherical Area Lighting appendix",
                             "the normalisation is an adjustment \"to better match our reference\"",
                             "mean absolute residual without the normalisation minus with the published one (light_radius "
                             "read as R/d), paired over held-out configurations; holds above 0",

@@ -125,10 +125,10 @@ static void add_claims(report_context *ctx, const vlight_result *r)
         snprintf(quantity, sizeof quantity,
                  "relative RMSE after a 1-pixel Gaussian blur, one frame of 3 spp, blue over %s, mean over %d "
                  "seeds; holds below 1", raymarch_noise_name(others[k]), r->request.seeds);
-        claims_table_add_figure(ctx->claims, source, statement, quantity, r->blue_blurred_ratio[others[k]],
+        claims_table_add_unreviewed_figure(ctx->claims, source, statement, quantity, r->blue_blurred_ratio[others[k]],
                                 r->blue_blurred_ratio_se[others[k]], 0.0, 1.0);
     }
-    claims_table_add_figure(ctx->claims, source,
+    claims_table_add_unreviewed_figure(ctx->claims, source,
                             "6 samples at half resolution, blue noise, depth-aware noisy upsample and TAA replace "
                             "128 uniform samples",
                             "relative RMSE of that configuration (accumulated) over 128 uniform steps at full "

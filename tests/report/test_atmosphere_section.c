@@ -13,6 +13,7 @@
 #include "core/atomic_file.h"
 #include "report/atmosphere_section.h"
 #include "tests/check.h"
+#include "tests/report/claim_region_verdict.h"
 
 static atmosphere_luts_result made_up(void)
 {
@@ -52,7 +53,7 @@ int main(void)
     CHECK(cJSON_GetArraySize(rows) == 3);
     CHECK(cJSON_GetNumberValue(cJSON_GetObjectItem(cJSON_GetArrayItem(rows, 0), "interpolation_max")) == 1.0 / 3.0);
     CHECK(claims.count == 2); /* in-scatter: all points, then the daytime ones */
-    CHECK(claims.count == 2 && claims.rows[0].verdict == CLAIM_REFUTED && claims.rows[1].verdict == CLAIM_REPRODUCED);
+    CHECK(claims.count == 2 && claim_region_verdict(&claims.rows[0]) == CLAIM_REFUTED && claim_region_verdict(&claims.rows[1]) == CLAIM_REPRODUCED);
     cJSON_Delete(ctx.summary);
     report_free(&doc);
     return check_report("test_atmosphere_section");

@@ -15,6 +15,7 @@
 
 #include "report/env_approx_section.h"
 #include "tests/check.h"
+#include "tests/report/claim_region_verdict.h"
 
 enum { SCENES = 4, ENVS = 3 };
 
@@ -85,8 +86,8 @@ static void test_section(void)
     gt_error e;
     CHECK(env_approx_section(&ctx, &r, &e) == 0);
     CHECK(claims.count == 2);
-    CHECK(claims.rows[0].figure == r.white_occlusion.mean && claims.rows[0].verdict == CLAIM_REPRODUCED);
-    CHECK(claims.rows[1].figure == r.other_occlusion.mean && claims.rows[1].verdict == CLAIM_REPRODUCED);
+    CHECK(claims.rows[0].figure == r.white_occlusion.mean && claim_region_verdict(&claims.rows[0]) == CLAIM_REPRODUCED);
+    CHECK(claims.rows[1].figure == r.other_occlusion.mean && claim_region_verdict(&claims.rows[1]) == CLAIM_REPRODUCED);
     const cJSON *json = cJSON_GetObjectItemCaseSensitive(ctx.summary, "environment");
     CHECK(cJSON_GetArraySize(cJSON_GetObjectItem(json, "diffuse")) == ENVS * ENV_STUDY_OCCLUDED_KINDS);
     CHECK(cJSON_GetArraySize(cJSON_GetObjectItem(json, "rankings")) == ENVS);

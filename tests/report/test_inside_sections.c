@@ -9,6 +9,7 @@
 #include "report/bloom_section.h"
 #include "report/dither_section.h"
 #include "tests/check.h"
+#include "tests/report/claim_region_verdict.h"
 
 static void made_up_dither(dither_result *r)
 {
@@ -61,12 +62,12 @@ int main(void)
     gt_error e;
     CHECK(dither_section(&ctx, &d, &e) == 0 && bloom_section(&ctx, &b, &e) == 0 && bloom_section(&ctx, &bad, &e) == 0);
     CHECK(claims.count == 4 + 3 + 3);
-    CHECK(claims.rows[0].verdict == CLAIM_REPRODUCED && claims.rows[0].figure == 0.01);
-    CHECK(claims.rows[1].verdict == CLAIM_REPRODUCED && claims.rows[1].figure == 1.0);
-    CHECK(claims.rows[2].verdict == CLAIM_REFUTED && claims.rows[2].figure == 1.1);
-    CHECK(claims.rows[3].verdict == CLAIM_REPRODUCED && claims.rows[3].figure == 0.5);
-    CHECK(claims.rows[4].verdict == CLAIM_REPRODUCED && claims.rows[7].verdict == CLAIM_REFUTED);
-    CHECK(claims.rows[5].figure == 0.06 / 0.005 && claims.rows[6].verdict == CLAIM_REPRODUCED);
+    CHECK(claim_region_verdict(&claims.rows[0]) == CLAIM_REPRODUCED && claims.rows[0].figure == 0.01);
+    CHECK(claim_region_verdict(&claims.rows[1]) == CLAIM_REPRODUCED && claims.rows[1].figure == 1.0);
+    CHECK(claim_region_verdict(&claims.rows[2]) == CLAIM_REFUTED && claims.rows[2].figure == 1.1);
+    CHECK(claim_region_verdict(&claims.rows[3]) == CLAIM_REPRODUCED && claims.rows[3].figure == 0.5);
+    CHECK(claim_region_verdict(&claims.rows[4]) == CLAIM_REPRODUCED && claim_region_verdict(&claims.rows[7]) == CLAIM_REFUTED);
+    CHECK(claims.rows[5].figure == 0.06 / 0.005 && claim_region_verdict(&claims.rows[6]) == CLAIM_REPRODUCED);
     const cJSON *dither = cJSON_GetObjectItem(ctx.summary, "dither");
     const cJSON *gradient = cJSON_GetObjectItem(dither, "gradient");
     CHECK(cJSON_GetArraySize(gradient) == 6);

@@ -1,0 +1,18 @@
+/* Visibility thresholds: the tolerances a claim may take from the output
+ * the technique feeds when the claim's own words give no number
+ * (docs/claims-protocol.md, "Where a tolerance comes from"). Each is
+ * justified once, there; a section cites the constant, never a number of
+ * its own. */
+#ifndef GTLAB_REPORT_CLAIM_THRESHOLDS_H
+#define GTLAB_REPORT_CLAIM_THRESHOLDS_H
+
+/* One code value of an 8-bit UNORM target (an AO or specular-occlusion
+ * buffer in R8, a colour channel of an RGBA8 G-buffer or back buffer):
+ * a change smaller than this cannot reach the screen through that target. */
+#define CLAIM_ONE_CODE_VALUE_8BIT (1.0 / 255.0)
+
+/* The squared error of one 8-bit code value: a difference of mean squared
+ * errors smaller than this moves no pixel by a code value on average. */
+#define CLAIM_ONE_CODE_VALUE_8BIT_MSE (CLAIM_ONE_CODE_VALUE_8BIT * CLAIM_ONE_CODE_VALUE_8BIT)
+
+#endif
