@@ -10,6 +10,11 @@
 #include "report/report_context.h"
 #include "studies/screen_shader_score.h"
 
+/* A variant's verdict against GTAO (C): "better"/"worse" past significance
+ * and a visible margin (one 8-bit code value of RMSE), "no visible
+ * difference", "not significant", or "-" for GTAO (C) itself. */
+const char *screen_shader_verdict(const screen_shader_variant *x, const screen_shader_variant *gtao);
+
 /* Adds the section (nothing when r->variant_count == 0); returns 0. */
 int screen_shader_section(report_context *ctx, const screen_shader_score_result *r, gt_error *e);
 

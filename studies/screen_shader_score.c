@@ -148,11 +148,6 @@ static void pool(screen_shader_score_result *r)
             x->dssim += r->scores[s][v].dssim_3d / r->scene_count;
             x->flip += r->scores[s][v].flip_3d / r->scene_count;
         }
-        double bound = student_t_975(x->vs_gtao.blocks - 1) * x->vs_gtao.se;
-        x->verdict = v == 0                          ? "-"
-                     : fabs(x->vs_gtao.mean) <= bound ? "not significant"
-                     : x->vs_gtao.mean < 0.0          ? "better"
-                                                      : "worse";
     }
 }
 

@@ -45,7 +45,6 @@ typedef struct {
     double dssim, flip;           /* means over the scenes */
     double rmse;                  /* pooled: sqrt of the pixel-weighted mean MSE */
     cluster_mean vs_gtao;         /* pooled (AO - 3-D)^2 - (GTAO (C) - 3-D)^2 */
-    const char *verdict;          /* "better", "worse", "not significant": |mean| > t_975(blocks - 1) se */
     double max_diff_vs_c;         /* the largest |AO - GTAO (C)| over every scene's mask */
 } screen_shader_variant;
 
