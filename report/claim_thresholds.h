@@ -15,4 +15,9 @@
  * errors smaller than this moves no pixel by a code value on average. */
 #define CLAIM_ONE_CODE_VALUE_8BIT_MSE (CLAIM_ONE_CODE_VALUE_8BIT * CLAIM_ONE_CODE_VALUE_8BIT)
 
+/* A 1% change of luminance as a log ratio (ln 1.01 ~ 0.00995, taken as
+ * 0.01): the Weber fraction of photopic vision is about 1-2%, so a mean
+ * |log error| that changes by less cannot be told apart. */
+#define CLAIM_VISIBLE_LOG_LUMINANCE 0.01
+
 #endif

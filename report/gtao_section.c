@@ -8,6 +8,8 @@
 #include <stdlib.h>
 
 #include "report/gtao_section.h"
+
+#include "report/claim_thresholds.h"
 #include "report/gtao_shortcuts_section.h"
 #include "report/gtao_params_json.h"
 #include "report/gnuplot_plot.h"
@@ -203,7 +205,8 @@ static void add_headline(report *doc, const gtao_validation_result *r)
             rmse[v * scenes + i] = y ? y->rmse_3d : NAN;
         }
     }
-    report_headline h = {.topic = "GTAO, HBAO, VO", .significance = HEADLINE_NOT_COMPUTED};
+    report_headline h = {.topic = "GTAO, HBAO, VO", .significance = HEADLINE_NOT_COMPUTED,
+                         .margin = CLAIM_ONE_CODE_VALUE_8BIT}; /* RMSE of an 8-bit AO target */
     char over[64];
     snprintf(h.measure, sizeof h.measure, "mean RMSE vs the 3-D reference (%d scenes)", scenes);
     snprintf(over, sizeof over, "paired over %d scenes", scenes);

@@ -8,6 +8,8 @@
 #include <stdio.h>
 
 #include "report/multibounce_section.h"
+
+#include "report/claim_thresholds.h"
 #include "report/multibounce_section_parts.h"
 #include "report/gnuplot_plot.h"
 #include "report/report_table.h"
@@ -219,13 +221,14 @@ static void add_headline(report *doc, const multibounce_study_result *r)
     const multibounce_fit_summary *s = &r->fit;
     const char *labels[2] = {"refit (linear in rho)", "the talk's coefficients"};
     const double errors[2] = {s->heldout_mean_rmse_linear, s->heldout_mean_rmse_talk};
-    report_headline h = {.topic = "GTAO multi-bounce"};
+    report_headline h = {.topic = "GTAO multi-bounce", .margin = CLAIM_ONE_CODE_VALUE_8BIT};
     snprintf(h.measure, sizeof h.measure, "held-out weighted RMSE (mean of %d scenes)", s->heldout_scenes);
     if (headline_rank(&h, 2, labels, errors) != 0)
         return;
     double sigmas = r->findings.farthest_scenes_sigmas;
     h.significance = sigmas > CLAIM_Z ? HEADLINE_SIGNIFICANT : HEADLINE_NOT_SIGNIFICANT;
     snprintf(h.basis, sizeof h.basis, "the talk's coefficients at most %.1f jackknife s.e. from the refit's", sigmas);
+    headline_apply_margin(&h, errors[1] - errors[0], 0.0);
     report_add_headline(doc, &h);
 }
 

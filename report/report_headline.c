@@ -102,6 +102,21 @@ void headline_pair_cases(report_headline *h, int count, const char *const *label
         pair_indices(h, errors, stride, cases, best, second, over);
 }
 
+/* A decided gap that a viewer could not see is no difference: |d| + w
+ * within the margin (w the interval's half width), or a significant |d|
+ * below it, which is undecided on what matters. */
+void headline_apply_margin(report_headline *h, double d, double w)
+{
+    if (!(h->margin > 0) || h->significance == HEADLINE_NOT_COMPUTED)
+        return;
+    size_t k = strlen(h->basis);
+    if (fabs(d) + w <= h->margin)
+        h->significance = HEADLINE_NO_VISIBLE_DIFFERENCE;
+    else if (h->significance != HEADLINE_NOT_SIGNIFICANT && fabs(d) <= h->margin)
+        h->significance = HEADLINE_NOT_SIGNIFICANT;
+    snprintf(h->basis + k, sizeof h->basis - k, "; visible from %.2g", h->margin);
+}
+
 void headline_from_difference(report_headline *h, double d, double s, const char *over)
 {
     if (isnan(s) || isnan(d)) {
@@ -111,6 +126,7 @@ void headline_from_difference(report_headline *h, double d, double s, const char
     }
     h->significance = fabs(d) > CLAIM_Z * s ? HEADLINE_SIGNIFICANT : HEADLINE_NOT_SIGNIFICANT;
     snprintf(h->basis, sizeof h->basis, "difference %+.4g +- %.2g, %s", d, s, over);
+    headline_apply_margin(h, d, CLAIM_Z * s);
 }
 
 void headline_from_noise_floor(report_headline *h, double floor)
@@ -119,23 +135,28 @@ void headline_from_noise_floor(report_headline *h, double floor)
     h->significance = gap > floor ? HEADLINE_ABOVE_NOISE_FLOOR : HEADLINE_NOT_SIGNIFICANT;
     snprintf(h->basis, sizeof h->basis, "gap %.2g %s the references' noise floor %.2g", gap,
              gap > floor ? "above" : "below", floor);
+    headline_apply_margin(h, gap, 0.0);
 }
 
 void headline_from_paired_cases(report_headline *h, double d, double s, int cases, const char *over)
 {
+    double margin = h->margin;
+    h->margin = 0.0; /* applied once, below, with Student's t */
     headline_from_difference(h, d, s, over);
+    h->margin = margin;
     if (h->significance == HEADLINE_NOT_COMPUTED)
         return;
     double t = student_t_975(cases - 1);
     h->significance = fabs(d) > t * s ? HEADLINE_SIGNIFICANT : HEADLINE_NOT_SIGNIFICANT;
     size_t k = strlen(h->basis);
     snprintf(h->basis + k, sizeof h->basis - k, "; t(%d) = %.3g", cases - 1, t);
+    headline_apply_margin(h, d, t * s);
 }
 
 const char *headline_significance_name(headline_significance s)
 {
     static const char *const names[] = {"not computed", "significant at 95%", "not significant at this quality",
-                                        "above the noise floor (no interval)"};
+                                        "above the noise floor (no interval)", "no visible difference"};
     return names[s];
 }
 
@@ -164,7 +185,7 @@ static void row_cells(const report_headline *h, char cells[6][2 * HEADLINE_TEXT]
 }
 
 static const char *const kHeaders[7] = {"technique", "measure", "best", "its error", "runner-up", "its error",
-                                        "gap significant?"};
+                                        "gap significant and visible?"};
 
 static void render_md(FILE *f, const report_headline *rows, int count)
 {

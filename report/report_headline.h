@@ -11,7 +11,10 @@
  *   not significant  |d| <= z s, or the gap is smaller than the
  *                    references' own noise floor (their halves' distance);
  *   above the noise floor  the gap exceeds that floor, with no interval;
- *   not computed     the section has no figure for it.
+ *   not computed     the section has no figure for it;
+ *   no visible difference  the gap's interval lies within the measure's
+ *                    visible margin (report_headline.margin), so the two are
+ *                    equal to a viewer whatever the statistics say.
  *
  *   report_headline h = {.topic = "GGX sphere lights", .measure = "...",
  *                        .best = "Decima refit", .best_error = 0.149, ...};
@@ -26,7 +29,8 @@ typedef enum {
     HEADLINE_NOT_COMPUTED,
     HEADLINE_SIGNIFICANT,
     HEADLINE_NOT_SIGNIFICANT,
-    HEADLINE_ABOVE_NOISE_FLOOR
+    HEADLINE_ABOVE_NOISE_FLOOR,
+    HEADLINE_NO_VISIBLE_DIFFERENCE
 } headline_significance;
 
 typedef struct {
@@ -36,6 +40,13 @@ typedef struct {
     double best_error, runner_up_error;
     headline_significance significance;
     char basis[HEADLINE_TEXT];   /* the figure the verdict rests on */
+    /* The smallest gap on this measure a viewer could see (a visibility
+     * threshold, docs/claims-protocol.md), or 0 when none is stated. With
+     * one, a gap whose whole interval lies within +-margin (or, against a
+     * noise floor, a gap below it) is "no visible difference", however
+     * significant; a significant gap smaller than the margin is not
+     * called significant. Set it before the verdict functions below. */
+    double margin;
     char anchor[128];            /* the section's (set by report_add_headline) */
 } report_headline;
 
@@ -71,6 +82,11 @@ void headline_from_difference(report_headline *h, double d, double s, const char
 /* The verdict of the gap |best - runner-up| against a noise floor on the
  * same measure (the distance between two halves of the reference). */
 void headline_from_noise_floor(report_headline *h, double floor);
+
+/* The margin's verdict on a gap d whose interval is d -+ w (w = 0: no
+ * interval), after one of the verdicts above (they call it themselves);
+ * nothing when h->margin is 0. */
+void headline_apply_margin(report_headline *h, double d, double w);
 
 /* "significant at 95%", "not significant at this quality", "above the
  * noise floor (no interval)", "not computed". */

@@ -165,6 +165,29 @@ static void test_headline_verdicts(void)
     CHECK(h.significance == HEADLINE_ABOVE_NOISE_FLOOR && strstr(h.basis, "above"));
 }
 
+/* A visible margin m (issue 42): a significant gap whose interval lies in
+ * [-m, m] is no visible difference; a significant gap below m is not
+ * called significant; one past m stays significant; with Student's t the
+ * interval is t s wide; against a noise floor only the gap counts. */
+static void test_headline_margin(void)
+{
+    report_headline h = {.topic = "t", .margin = 0.01};
+    headline_from_difference(&h, 0.003, 0.001, "x"); /* 0.003 + 1.96e-3 < 0.01 */
+    CHECK(h.significance == HEADLINE_NO_VISIBLE_DIFFERENCE && strstr(h.basis, "visible from 0.01"));
+    headline_from_difference(&h, 0.009, 0.002, "x"); /* significant, below m, interval past it */
+    CHECK(h.significance == HEADLINE_NOT_SIGNIFICANT);
+    headline_from_difference(&h, 0.02, 0.002, "x");
+    CHECK(h.significance == HEADLINE_SIGNIFICANT);
+    headline_from_paired_cases(&h, 0.005, 0.001, 3, "x"); /* 0.005 + 4.303e-3 < 0.01 */
+    CHECK(h.significance == HEADLINE_NO_VISIBLE_DIFFERENCE);
+    headline_from_paired_cases(&h, 0.005, 0.0013, 3, "x"); /* 0.005 + 5.59e-3 > 0.01 */
+    CHECK(h.significance == HEADLINE_NOT_SIGNIFICANT && h.margin == 0.01);
+    h.best_error = 0.1, h.runner_up_error = 0.105;
+    headline_from_noise_floor(&h, 0.001);
+    CHECK(h.significance == HEADLINE_NO_VISIBLE_DIFFERENCE);
+    CHECK(!strcmp(headline_significance_name(HEADLINE_NO_VISIBLE_DIFFERENCE), "no visible difference"));
+}
+
 /* Paired ranking: means over the cases rank the candidates; the verdict is
  * the per-case difference runner-up - best, by hand: a (1, 2, 3, NaN),
  * b (2, 2.5, 3.5, 9), c (0.5, 2.6, 4.9, 0) rank a (mean 2) before b (4.25)
@@ -315,6 +338,7 @@ int main(void)
 {
     test_figures_resolved();
     test_headline_verdicts();
+    test_headline_margin();
     test_headline_paired();
     test_headline_table();
     test_conclusions_first_and_folding();
