@@ -21,7 +21,7 @@ packages=(
   libssl-dev assimp-testmodels gnuplot-nox glslang-tools
   libdraco-dev libmeshoptimizer-dev gltfpack
   clang libclang-rt-14-dev libomp-dev llvm
-  libsquish-dev liblcms2-dev
+  libsquish-dev liblcms2-dev libgsl-dev
   libopenmpi-dev openmpi-bin
   blender-data
   libvulkan-dev mesa-vulkan-drivers libshaderc-dev glslang-dev spirv-tools glslc

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/paired_power.h"
 #include "core/sample_mean.h"
 #include "report/claims_table.h"
 #include "report/html_text.h"
@@ -117,6 +118,24 @@ void headline_apply_margin(report_headline *h, double d, double w)
     snprintf(h->basis + k, sizeof h->basis - k, "; visible from %.2g", h->margin);
 }
 
+/* Not decided: how many paired cases would decide it at 80% power, if the
+ * gap and the per-case spread stay as observed (core/paired_power.h). The
+ * gap to resolve is |d| (is there a difference?) or, with a margin m, its
+ * distance | |d| - m | (visible or not?). */
+static void say_cases_to_decide(report_headline *h, double d, double spread)
+{
+    if (h->significance != HEADLINE_NOT_SIGNIFICANT)
+        return;
+    double effect = fabs(fabs(d) - (h->margin > 0 ? h->margin : 0.0));
+    int n = paired_cases_needed(effect, spread, 0.8, 1000000);
+    size_t k = strlen(h->basis);
+    h->cases_to_decide = n;
+    if (n > 0)
+        snprintf(h->basis + k, sizeof h->basis - k, "; about %d such cases would decide it (80%% power)", n);
+    else
+        snprintf(h->basis + k, sizeof h->basis - k, "; no number of cases would decide it at this gap");
+}
+
 void headline_from_difference(report_headline *h, double d, double s, const char *over)
 {
     if (isnan(s) || isnan(d)) {
@@ -151,6 +170,7 @@ void headline_from_paired_cases(report_headline *h, double d, double s, int case
     size_t k = strlen(h->basis);
     snprintf(h->basis + k, sizeof h->basis - k, "; t(%d) = %.3g", cases - 1, t);
     headline_apply_margin(h, d, t * s);
+    say_cases_to_decide(h, d, s * sqrt((double)cases));
 }
 
 const char *headline_significance_name(headline_significance s)

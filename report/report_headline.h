@@ -23,7 +23,7 @@
 #ifndef GTLAB_REPORT_HEADLINE_H
 #define GTLAB_REPORT_HEADLINE_H
 
-enum { HEADLINES_MAX = 48, HEADLINE_TEXT = 160 };
+enum { HEADLINES_MAX = 48, HEADLINE_TEXT = 256 };
 
 typedef enum {
     HEADLINE_NOT_COMPUTED,
@@ -47,6 +47,10 @@ typedef struct {
      * significant; a significant gap smaller than the margin is not
      * called significant. Set it before the verdict functions below. */
     double margin;
+    /* Not significant over paired cases: how many such cases would decide
+     * it at 80% power if the gap and spread stay as observed (-1: none
+     * would; 0: not computed). Said in `basis` too. */
+    int cases_to_decide;
     char anchor[128];            /* the section's (set by report_add_headline) */
 } report_headline;
 
@@ -73,7 +77,8 @@ void headline_pair_cases(report_headline *h, int count, const char *const *label
 /* The verdict of the mean d of `cases` paired differences with its own
  * standard error s: |d| > t s with Student's t quantile for cases - 1
  * degrees of freedom (core/sample_mean.h), not the normal 1.96, so a few
- * cases are not over-trusted (3 scenes: 4.30). */
+ * cases are not over-trusted (3 scenes: 4.30). Not significant, it says
+ * how many cases would decide it (cases_to_decide). */
 void headline_from_paired_cases(report_headline *h, double d, double s, int cases, const char *over);
 
 /* The verdict of a paired difference d +- s (its mean and standard error);

@@ -11,6 +11,7 @@
 #include "report/report_writer.h"
 #include "core/image_io.h"
 #include "tests/check.h"
+#include "core/paired_power.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -206,6 +207,10 @@ static void test_headline_paired(void)
     CHECK(headline_rank_paired(&h, 3, labels, e, 4, "over 4 cases") == 0);
     CHECK(!strcmp(h.best, "a") && !strcmp(h.runner_up, "c") && h.best_error == 2.0 && h.runner_up_error == 2.0);
     CHECK(h.significance == HEADLINE_NOT_SIGNIFICANT && strstr(h.basis, "+0.6667 +- 0.69"));
+    /* what would decide it: the spread of one case's difference is sqrt(1.4433) */
+    CHECK_MSG(h.cases_to_decide == paired_cases_needed(2.0 / 3.0, sqrt(1.4433), 0.8, 1000000) &&
+                  h.cases_to_decide > 4 && strstr(h.basis, "such cases would decide it"),
+              "%d: %s", h.cases_to_decide, h.basis);
     double far[12] = {1, 2, 3, NAN, 2, 2.5, 3.5, 9, 10.5, 12.6, 14.9, 40};
     CHECK(headline_rank_paired(&h, 3, labels, far, 4, "x") == 0 && !strcmp(h.runner_up, "b"));
     CHECK(h.significance == HEADLINE_NOT_SIGNIFICANT && strstr(h.basis, "t(2) = 4.3"));
