@@ -79,11 +79,16 @@ FILE *atomic_file_open(atomic_file *f, const char *path, const char *mode, gt_er
 
 int atomic_file_close(atomic_file *f, FILE *out, gt_error *e)
 {
-    int ok = !ferror(out);
-    ok = (fclose(out) == 0) && ok;
-    if (!ok) {
+    int err = ferror(out) ? errno : 0; /* the failed write's errno (ENOSPC, EFBIG, ...), as it was left */
+    int failed = ferror(out);
+    errno = 0;
+    if (fclose(out) != 0) {
+        failed = 1;
+        err = err ? err : errno;
+    }
+    if (failed) {
         atomic_file_abort(f);
-        return gt_error_set(e, f->final_path, "write failed (disk full?)");
+        return gt_error_set(e, f->final_path, "write failed: %s", err ? strerror(err) : "an I/O error (disk full?)");
     }
     return atomic_file_commit(f, e);
 }

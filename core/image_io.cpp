@@ -1,10 +1,12 @@
 // 8-bit previews and error heatmaps through OpenImageIO, and the float RGB
 // reader of HDR environments: the thin C++ adapter behind core/image_io.h. OIIO does the colour work (the sRGB encoding, the
 // named colour maps, the 8-bit quantisation) and picks the file format from
-// the destination's extension; the file is written to a temporary name and
-// renamed into place (core/atomic_file.h).
+// the destination's extension; the file is encoded in memory and written to
+// a temporary name, every write checked, and renamed into place
+// (core/atomic_file.h).
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
@@ -47,23 +49,55 @@ std::string format_of(const char *path)
     return p.substr(dot + 1);
 }
 
-// Writes buf with `type` per channel to path, atomically.
+// OIIO's error after a failed call on `out` (or its global one).
+std::string error_of(const OIIO::ImageOutput *out, const ImageBuf &buf)
+{
+    std::string why = one_line(out ? out->geterror() : std::string());
+    if (why.empty())
+        why = one_line(buf.geterror());
+    if (why.empty())
+        why = one_line(OIIO::geterror());
+    return why.empty() ? std::string("no reason given") : why;
+}
+
+// The file's bytes: buf encoded in `format` with `type` per channel, into
+// memory (an IOVecOutput). Every step's result is checked, close() too (a
+// PNG's last chunks are written there). A format whose writer takes no
+// IOProxy is refused: its file writes could not be checked.
+int encode(const char *path, const ImageBuf &buf, TypeDesc type, const std::string &format,
+           std::vector<unsigned char> &bytes, gt_error *e)
+{
+    OIIO::Filesystem::IOVecOutput memory(bytes);
+    auto out = OIIO::ImageOutput::create(format);
+    if (!out)
+        return gt_error_set(e, path, "cannot write image: %s", error_of(nullptr, buf).c_str());
+    if (!out->supports("ioproxy"))
+        return gt_error_set(e, path, "cannot write .%s images: OpenImageIO's %s writer cannot write to memory, so "
+                                     "gtlab could not check the file (use .png, .tif, .exr, .jpg, ...)",
+                            format.c_str(), out->format_name());
+    ImageSpec spec = buf.spec();
+    spec.set_format(type);
+    bool ok = out->set_ioproxy(&memory) && out->open(path, spec) && buf.write(out.get());
+    std::string why = ok ? std::string() : error_of(out.get(), buf);
+    if (!out->close() && ok)
+        ok = false, why = error_of(out.get(), buf);
+    return ok ? 0 : gt_error_set(e, path, "cannot write image: %s", why.c_str());
+}
+
+// Writes buf with `type` per channel to path, atomically: encoded in
+// memory, then written through core/atomic_file.h, whose every write and
+// close is checked (a full disk or EFBIG leaves nothing under path).
 int write_as(const char *path, const ImageBuf &buf, TypeDesc type, gt_error *e)
 {
     std::string format = format_of(path);
     if (format.empty())
         return gt_error_set(e, path, "cannot tell the image format: the file name has no extension");
-    atomic_file out;
-    if (atomic_file_begin(&out, path, e) != 0)
+    if (atomic_file_check_writable(path, e) != 0)
         return -1;
-    if (!buf.write(out.temp_path, type, format)) {
-        std::string why = one_line(buf.geterror());
-        if (why.empty())
-            why = one_line(OIIO::geterror());
-        atomic_file_abort(&out);
-        return gt_error_set(e, path, "cannot write image: %s", why.c_str());
-    }
-    return atomic_file_commit(&out, e);
+    std::vector<unsigned char> bytes;
+    if (encode(path, buf, type, format, bytes, e) != 0)
+        return -1;
+    return atomic_write_bytes(path, bytes.data(), bytes.size(), e);
 }
 
 // Writes buf as 8 bits per channel to path, atomically.

@@ -1,6 +1,10 @@
 /* 8-bit previews and error heatmaps through OpenImageIO (a C++ adapter behind
- * this C header). Any format OIIO writes is accepted; the path's extension
- * chooses it (.png is what gtlab itself writes). Written atomically. Also
+ * this C header). Any format OIIO can write to memory is accepted (png,
+ * tif, exr, jpg, bmp, tga, hdr, webp, ...; not fits, heif, ico, rla, sgi,
+ * zfile); the path's extension chooses it (.png is what gtlab itself
+ * writes). Written atomically: encoded in memory, then written with every
+ * write and the close checked, so a full disk is an error naming the file
+ * and leaves nothing under its name. Also
  * the one float reader of pictures gtlab does not write (HDR environments:
  * EXR of any compression OpenEXR's C++ library decodes, DWAB included,
  * Radiance .hdr, ...). */

@@ -7,6 +7,8 @@
 #include <string.h>
 #include <strings.h>
 
+#include "core/isolated_call.h"
+
 gpu_source_language gpu_source_language_of(const char *path)
 {
     size_t n = strlen(path);
@@ -38,17 +40,15 @@ int gpu_compile_error_line(const char *log, const char *name, gt_error *e)
     return gt_error_set(e, subject, "%.*s", (int)(length - (size_t)(problem - line)), problem);
 }
 
-/* The SPIR-V of a successful result, copied out of shaderc's. */
-static int copy_spirv(shaderc_compilation_result_t result, const char *entry, const char *name, gpu_spirv *out,
-                      gt_error *e)
+/* The bytes of a successful result, copied out of shaderc's. */
+static int copy_result(shaderc_compilation_result_t result, const char *name, void **bytes, size_t *size,
+                       gt_error *e)
 {
-    size_t bytes = shaderc_result_get_length(result);
-    out->words = malloc(bytes ? bytes : 1);
-    if (!out->words)
-        return gt_error_set(e, name, "out of memory for %zu bytes of SPIR-V", bytes);
-    memcpy(out->words, shaderc_result_get_bytes(result), bytes);
-    out->count = bytes / sizeof(uint32_t);
-    snprintf(out->entry, sizeof out->entry, "%s", entry);
+    *size = shaderc_result_get_length(result);
+    *bytes = malloc(*size ? *size : 1);
+    if (!*bytes)
+        return gt_error_set(e, name, "out of memory for %zu bytes of SPIR-V", *size);
+    memcpy(*bytes, shaderc_result_get_bytes(result), *size);
     return 0;
 }
 
@@ -101,6 +101,63 @@ static shaderc_compile_options_t compile_options(gpu_source_language language)
     return options;
 }
 
+/* Whether the compiler warned that it found no entry point: glslang then
+ * (HLSL, where main may be a mere prototype or --entry names no function)
+ * makes an empty one, a shader that writes nothing. */
+static int entry_missing(shaderc_compilation_result_t result)
+{
+    const char *log = shaderc_result_get_error_message(result);
+    return shaderc_result_get_num_warnings(result) > 0 && log && strstr(log, "Entry point not found") != NULL;
+}
+
+/* One compilation as the child process runs it (compile_isolated). */
+typedef struct {
+    const char *source, *name, *entry;
+    gpu_source_language language;
+} compile_job;
+
+/* shaderc on one job, in this process: the SPIR-V's bytes, or -1 with e =
+ * the compiler's first error line. */
+static int compile_here(const void *context, void **bytes, size_t *size, gt_error *e)
+{
+    const compile_job *job = context;
+    shaderc_compiler_t compiler = shaderc_compiler_initialize();
+    shaderc_compile_options_t options = compile_options(job->language);
+    if (!compiler || !options) {
+        shaderc_compile_options_release(options);
+        shaderc_compiler_release(compiler);
+        return gt_error_set(e, job->name, "cannot start the shaderc compiler");
+    }
+    shaderc_compilation_result_t result = shaderc_compile_into_spv(
+        compiler, job->source, strlen(job->source), shaderc_compute_shader, job->name, job->entry, options);
+    int rc = shaderc_result_get_compilation_status(result) != shaderc_compilation_status_success
+                 ? gpu_compile_error_line(shaderc_result_get_error_message(result), job->name, e)
+             : entry_missing(result) ? gt_error_set(e, job->name, "no function %s with a body: nothing to run (a "
+                                                                  "function header without its { } body is not one)",
+                                                    job->entry)
+                                     : copy_result(result, job->name, bytes, size, e);
+    shaderc_result_release(result);
+    shaderc_compile_options_release(options);
+    shaderc_compiler_release(compiler);
+    return rc;
+}
+
+/* glslang crashes on some malformed source (issue 41: an HLSL function
+ * header without its body, followed by a global's name, is a null read in
+ * TParseContextBase::growGlobalUniformBlock), so it runs in a child process
+ * (core/isolated_call.h): its crash is this one line, never gtlab's. */
+static int compile_isolated(const compile_job *job, void **bytes, size_t *size, gt_error *e)
+{
+    char death[128];
+    int rc = isolated_call(compile_here, job, job->name, bytes, size, death, sizeof death, e);
+    if (rc != ISOLATED_DIED)
+        return rc;
+    return gt_error_set(e, job->name,
+                        "the shader compiler crashed on this source (glslang, %s); check its syntax: a function "
+                        "header without its { } body is one known cause",
+                        death);
+}
+
 int gpu_compile_compute(const char *source, const char *name, gpu_source_language language, const char *entry,
                         gpu_spirv *out, gt_error *e)
 {
@@ -110,22 +167,15 @@ int gpu_compile_compute(const char *source, const char *name, gpu_source_languag
         return gt_error_set(e, name, "entry point name longer than %zu characters", sizeof out->entry - 1);
     if (language == GPU_SOURCE_GLSL && strcmp(entry, "main") != 0)
         return gt_error_set(e, name, "a GLSL shader's entry point is main, not %s", entry);
-    shaderc_compiler_t compiler = shaderc_compiler_initialize();
-    shaderc_compile_options_t options = compile_options(language);
-    if (!compiler || !options) {
-        shaderc_compile_options_release(options);
-        shaderc_compiler_release(compiler);
-        return gt_error_set(e, name, "cannot start the shaderc compiler");
-    }
-    shaderc_compilation_result_t result = shaderc_compile_into_spv(compiler, source, strlen(source),
-                                                                   shaderc_compute_shader, name, entry, options);
-    int rc = shaderc_result_get_compilation_status(result) == shaderc_compilation_status_success
-                 ? copy_spirv(result, entry, name, out, e)
-                 : gpu_compile_error_line(shaderc_result_get_error_message(result), name, e);
-    shaderc_result_release(result);
-    shaderc_compile_options_release(options);
-    shaderc_compiler_release(compiler);
-    return rc;
+    compile_job job = {source, name, entry, language};
+    void *bytes = NULL;
+    size_t size = 0;
+    if (compile_isolated(&job, &bytes, &size, e) != 0)
+        return -1;
+    out->words = bytes;
+    out->count = size / sizeof(uint32_t);
+    snprintf(out->entry, sizeof out->entry, "%s", entry);
+    return 0;
 }
 
 void gpu_spirv_free(gpu_spirv *spirv)

@@ -2,7 +2,10 @@
  * ends behind one call, shaderc_compile_into_spv). gtlab writes no SPIR-V
  * itself: a shader is text, compiled here for Vulkan 1.1 as a compute
  * shader. Errors keep shaderc's own words and line number: the one line
- * "<name>:<line>: error: <shaderc's message>". */
+ * "<name>:<line>: error: <shaderc's message>". glslang crashes on some
+ * malformed source, so every compilation runs in a child process
+ * (core/isolated_call.h): a crash there is the error "<name>: the shader
+ * compiler crashed on this source (glslang, signal 11, ...)", not gtlab's. */
 #ifndef GTLAB_GPU_SHADER_COMPILER_H
 #define GTLAB_GPU_SHADER_COMPILER_H
 

@@ -58,8 +58,10 @@ static int run_gnuplot(const char *text, const char *log_path, const char *png_p
     free(command);
     if (!pipe)
         return gt_error_set(e, png_path, "cannot run gnuplot");
-    fputs(text, pipe);
+    int sent = fputs(text, pipe) >= 0;
     int status = pclose(pipe);
+    if (status == 0 && !sent)
+        return gt_error_set(e, png_path, "cannot send the script to gnuplot");
     if (status == 0)
         return 0;
     char line[256] = "no message";
@@ -71,6 +73,30 @@ static int run_gnuplot(const char *text, const char *log_path, const char *png_p
         fclose(log);
     line[strcspn(line, "\n")] = '\0';
     return gt_error_set(e, png_path, "gnuplot failed: %s", line + strspn(line, " \t"));
+}
+
+/* Whether gnuplot's file at `path` is whole: a PNG ends with its IEND
+ * chunk, an SVG with "</svg>" (and white space). gnuplot exits 0 when its
+ * terminal could not write the file (a full disk, EFBIG): its status alone
+ * does not tell. */
+static int output_complete(const char *path, int svg)
+{
+    static const unsigned char iend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82};
+    unsigned char tail[64];
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return 0;
+    long size = fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
+    long n = size < (long)sizeof tail ? size : (long)sizeof tail;
+    int read = n > 0 && fseek(f, -n, SEEK_END) == 0 && fread(tail, 1, (size_t)n, f) == (size_t)n;
+    fclose(f);
+    if (!read)
+        return 0;
+    if (!svg)
+        return n >= 12 && memcmp(tail + n - 12, iend, 12) == 0;
+    while (n > 0 && (tail[n - 1] == '\n' || tail[n - 1] == '\r' || tail[n - 1] == ' '))
+        --n;
+    return n >= 6 && memcmp(tail + n - 6, "</svg>", 6) == 0;
 }
 
 /* Draws `script` into `path` (atomically) on the PNG or the SVG terminal;
@@ -90,6 +116,9 @@ static int render_to(const char *script, const char *path, int svg, int width, i
         rc = atomic_write_text(kept, shown, e);
     if (rc == 0)
         rc = run_gnuplot(run, log_path, path, e);
+    if (rc == 0 && !output_complete(out.temp_path, svg))
+        rc = gt_error_set(e, path, "gnuplot could not write the whole %s (disk full, or a file size limit?)",
+                          svg ? "SVG" : "PNG");
     remove(log_path);
     free(terminal);
     free(shown);

@@ -20,7 +20,8 @@ int gnuplot_available(void);
  * width (GNUPLOT_SVG_FONT points per 900 pixels of width, at least 11). The
  * PNG's script is kept beside it as <png_path without .png>.gp, so a person
  * can edit and rerun it. Returns 0, or -1 with e (gnuplot missing or
- * failing: its first error line). */
+ * failing: its first error line; a PNG or SVG that is not whole, which
+ * gnuplot does not report: a full disk). */
 int gnuplot_render(const char *script, const char *png_path, int width, int height, gt_error *e);
 
 #endif

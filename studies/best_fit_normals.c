@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/atomic_file.h"
 #include "core/frame.h"
 #include "core/ggx.h"
 #include "core/image_io.h"
@@ -135,9 +136,10 @@ static int write_cdf(const char *dir, double percentiles[NORMALS_ENCODINGS][101]
 {
     char path[4096 + 32];
     snprintf(path, sizeof path, "%s/error_cdf.dat", dir);
-    FILE *f = fopen(path, "w");
+    atomic_file file;
+    FILE *f = atomic_file_open(&file, path, "w", e);
     if (!f)
-        return gt_error_set(e, path, "cannot write");
+        return -1;
     fprintf(f, "# percentile, then the angular error (degrees) of each encoding\n");
     for (int p = 0; p <= 100; ++p) {
         fprintf(f, "%d", p);
@@ -145,7 +147,7 @@ static int write_cdf(const char *dir, double percentiles[NORMALS_ENCODINGS][101]
             fprintf(f, " %.6e", percentiles[enc][p]);
         fputc('\n', f);
     }
-    return fclose(f) == 0 ? 0 : gt_error_set(e, path, "cannot write");
+    return atomic_file_close(&file, f, e);
 }
 
 /* The fixed generic rotation of the highlight's normals: angle 0.7 about
@@ -290,9 +292,10 @@ static int count_cells(const char *dir, const normals_request *rq, int threads, 
     out->cells_distinct = bfn_cells_distinct(threads);
     char path[4096 + 16];
     snprintf(path, sizeof path, "%s/cells.dat", dir);
-    FILE *f = fopen(path, "w");
+    atomic_file file;
+    FILE *f = atomic_file_open(&file, path, "w", e);
     if (!f)
-        return gt_error_set(e, path, "cannot write");
+        return -1;
     fprintf(f, "# face  naive%%  max%%  best_fit%%  (sampled cells / 256^3)\n");
     for (int i = 0; i < rq->face_count; ++i) {
         normals_cells_row *row = &out->sampled[i];
@@ -303,7 +306,7 @@ static int count_cells(const char *dir, const normals_request *rq, int threads, 
         fprintf(f, "%d %.6f %.6f %.6f\n", row->face, 100.0 * row->naive / BFN_CELL_COUNT,
                 100.0 * row->max / BFN_CELL_COUNT, 100.0 * row->best_fit / BFN_CELL_COUNT);
     }
-    return fclose(f) == 0 ? 0 : gt_error_set(e, path, "cannot write");
+    return atomic_file_close(&file, f, e);
 }
 
 int normals_study(const study_context *ctx, const normals_request *rq, normals_result *out, gt_error *e)

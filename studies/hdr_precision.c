@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "core/atomic_file.h"
 #include "realtime/hdr_precision.h"
 
 /* One 8-bit code's step in linear units at x: 1/255 linear, (dx/dg)/255 in
@@ -12,9 +13,10 @@ static int write_code_steps(const char *dir, gt_error *e)
 {
     char path[4096 + 32];
     snprintf(path, sizeof path, "%s/code_steps.dat", dir);
-    FILE *f = fopen(path, "w");
+    atomic_file file;
+    FILE *f = atomic_file_open(&file, path, "w", e);
     if (!f)
-        return gt_error_set(e, path, "cannot write");
+        return -1;
     fprintf(f, "# x  step_linear  step_gamma22  step_srgb (linear units)\n");
     for (int i = 0; i <= 200; ++i) {
         double x = pow(10.0, -3.0 + 3.0 * i / 200.0), h = 1e-7 * x;
@@ -22,7 +24,7 @@ static int write_code_steps(const char *dir, gt_error *e)
         double ds = (srgb_encode(x + h) - srgb_encode(x - h)) / (2.0 * h);
         fprintf(f, "%.6e %.6e %.6e %.6e\n", x, 1.0 / 255.0, 1.0 / (255.0 * d22), 1.0 / (255.0 * ds));
     }
-    return fclose(f) == 0 ? 0 : gt_error_set(e, path, "cannot write");
+    return atomic_file_close(&file, f, e);
 }
 
 int hdr_precision_study(const study_context *ctx, hdr_precision_result *out, gt_error *e)

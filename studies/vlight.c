@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/atomic_file.h"
 #include "core/image_io.h"
 #include "core/progress.h"
 #include "core/reference_schema.h"
@@ -265,9 +266,10 @@ static int write_plot_data(const vlight_request *rq, const vlight_result *out, c
 {
     char path[1024 + 64];
     snprintf(path, sizeof path, "%s/error_vs_spp.dat", dir);
-    FILE *f = fopen(path, "w");
+    atomic_file file;
+    FILE *f = atomic_file_open(&file, path, "w", e);
     if (!f)
-        return gt_error_set(e, path, "cannot write");
+        return -1;
     fprintf(f, "# spp; then per noise (none white bayer ign blue): single-frame relative RMSE, accumulated\n");
     for (int k = 0; k < rq->spp_count; ++k) {
         fprintf(f, "%d", rq->spp[k]);
@@ -275,7 +277,7 @@ static int write_plot_data(const vlight_request *rq, const vlight_result *out, c
             fprintf(f, " %.6g %.6g", out->single[n][k].rmse, out->accumulated[n][k].rmse);
         fputc('\n', f);
     }
-    return fclose(f) == 0 ? 0 : gt_error_set(e, path, "write failed");
+    return atomic_file_close(&file, f, e);
 }
 
 /* ---- The run ------------------------------------------------------------------ */

@@ -2,9 +2,14 @@
  * 8-bit sRGB values against the IEC 61966-2-1 formula and known values,
  * heatmap colours against OIIO's colour map evaluated on its own and
  * against matplotlib's published end colours, masked pixels black, errors
- * naming the file and leaving nothing behind. */
+ * naming the file and leaving nothing behind, a write that fails (a file
+ * size limit, as a full disk) among them. */
 #define _POSIX_C_SOURCE 200809L
+#include <signal.h>
 #include <string.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "core/image_io.h"
 #include "tests/check.h"
@@ -227,6 +232,62 @@ static void test_errors(void)
     check_error(image_write_heatmap(p, v, NULL, 2, 2, NAN, "inferno", &e), &e, p, "vmax NaN");
 }
 
+/* Noise in [0, 1] (it does not compress: every file below is larger than
+ * the limit). */
+static void fill_noise(float *v, size_t n)
+{
+    unsigned state = 12345u;
+    for (size_t i = 0; i < n; ++i)
+        v[i] = (float)((state = state * 1664525u + 1013904223u) >> 8) / 16777216.0f;
+}
+
+/* Every writer under a file size limit of 4 KiB with SIGXFSZ ignored (a
+ * write past it fails with EFBIG, as on a full disk): -1, one line naming
+ * the file and the system's reason, nothing under the name. In a child
+ * process, which the limit would otherwise outlive the test in. */
+static void test_write_failures(void)
+{
+    printf("write failures\n");
+    fflush(stdout);
+    pid_t child = fork();
+    if (child == 0) {
+        enum { SIDE = 64 };
+        static float v[SIDE * SIDE];
+        fill_noise(v, SIDE * SIDE);
+        const float *planes[3] = {v, v, v};
+        static const char *const names[] = {"limit_preview.png", "limit_heatmap.png", "limit_bar.png",
+                                            "limit_data8.png", "limit_data16.tif"};
+        for (size_t k = 0; k < sizeof names / sizeof names[0]; ++k)
+            remove(in_test_dir(names[k])); /* an earlier run's */
+        signal(SIGXFSZ, SIG_IGN);
+        setrlimit(RLIMIT_FSIZE, &(struct rlimit){4096, 4096});
+        gt_error e;
+        const char *p;
+        p = in_test_dir("limit_preview.png");
+        check_error(image_write_preview(p, planes, 3, SIDE, SIDE, 1.0f, &e), &e, p, "preview past the limit");
+        CHECK_MSG(strstr(e.message, "File too large") != NULL, "%s", e.message);
+        p = in_test_dir("limit_heatmap.png");
+        check_error(image_write_heatmap(p, v, NULL, SIDE, SIDE, 1.0f, "inferno", &e), &e, p, "heatmap past the limit");
+        p = in_test_dir("limit_bar.png");
+        check_error(image_write_heatmap_with_bar(p, v, NULL, SIDE, SIDE, 1.0f, "turbo", &e), &e, p,
+                    "heatmap with bar past the limit");
+        p = in_test_dir("limit_data8.png");
+        check_error(image_write_data8(p, v, SIDE, SIDE, "noise", &e), &e, p, "8-bit data past the limit");
+        p = in_test_dir("limit_data16.tif");
+        check_error(image_write_data16(p, planes, 2, SIDE, SIDE, "noise", &e), &e, p, "16-bit data past the limit");
+        fflush(stdout);
+        _exit(check_failures == 0 ? 0 : 1);
+    }
+    int status = 1;
+    CHECK(child > 0 && waitpid(child, &status, 0) == child);
+    CHECK_MSG(WIFEXITED(status) && WEXITSTATUS(status) == 0, "a writer past the file size limit did not fail cleanly");
+    const float v[4] = {0.1f, 0.2f, 0.3f, 0.4f};
+    gt_error e;
+    const char *p = in_test_dir("unchecked.sgi");
+    remove(p);
+    check_error(image_write_data8(p, v, 2, 2, NULL, &e), &e, p, "a format that cannot be written to memory");
+}
+
 int main(void)
 {
     snprintf(test_dir, sizeof test_dir, "%s/image_io", check_tmp_dir());
@@ -241,6 +302,7 @@ int main(void)
     test_heatmap("viridis", (const int[3]){68, 1, 84}, (const int[3]){253, 231, 37});
     test_heatmap_bar();
     test_errors();
+    test_write_failures();
 
     CHECK_MSG(leftover_temp_files_in(test_dir) == 0, "temporary files left in %s", test_dir);
     return check_report("test_image_io");

@@ -11,7 +11,7 @@ corpus=$here/corpus
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 rm -rf "$corpus"
-mkdir -p "$corpus"/{json,camera,gltf,exr,merge,fit_inputs}
+mkdir -p "$corpus"/{json,camera,gltf,exr,merge,fit_inputs,shader}
 
 # Renders at 4x4 pixels: every kind of EXR the fits and merge read.
 cd "$work"
@@ -156,4 +156,15 @@ printf -- '--\ngtlab.sample_blocks=7:2+4\n' >"$corpus/merge/overlap.txt"
 printf -- '-gtlab.scale_exponents\n--\n!spp.N\n' >"$corpus/merge/missing.txt"
 printf -- '@spp.N=3:1e9\n@ao.V.sum=0:nan\n--\ngtlab.scale_exponents=ao.V:99 bent.X:-3\ngtlab.quantity=gbuffer\n' >"$corpus/merge/values.txt"
 printf -- 'gtlab.sample_blocks=4294967295:18446744073709551615+18446744073709551615 1:2+3\n' >"$corpus/merge/huge.txt"
+# Shaders (fuzz_shader.c): the project's GTAO in both languages (the HLSL
+# includes gtao.inc), small valid and broken ones, and the family of issue
+# 41's crash that does not crash (a main without its body: no entry point).
+# The members that crashed glslang are in regressions/shader/.
+cp "$here/../../shaders/gtao.glsl" "$here/../../shaders/gtao.hlsl" "$corpus/shader/"
+printf 'RWStructuredBuffer<float> o : register(u0);\n[numthreads(8, 1, 1)]\nvoid main(uint3 id : SV_DispatchThreadID)\n{\n    o[id.x] = 2.0 * id.x;\n}\n' >"$corpus/shader/small.hlsl"
+printf '#version 450\nlayout(local_size_x = 8) in;\nlayout(std430, binding = 0) buffer O { float o[]; };\nvoid main() { o[gl_GlobalInvocationID.x] = 1.0; }\n' >"$corpus/shader/small.glsl"
+printf '#version 450\nlayout(local_size_x = 8) in;\nvoid main() { undeclared = 1; }\n' >"$corpus/shader/broken.glsl"
+printf '#include "nowhere.inc"\n[numthreads(1, 1, 1)]\nvoid main() {}\n' >"$corpus/shader/include-missing.hlsl"
+printf '// gtlab.output ao.V\nRWStructuredBuffer<float> o : register(u0);\n[numthreads(8, 8, 1)]\nvoid main()\n' >"$corpus/shader/main-without-body.hlsl"
+printf 'RWStructuredBuffer<float> o;\nvoid main(uint x) x;\n' >"$corpus/shader/header-then-parameter.hlsl"
 ls -la "$corpus"/*

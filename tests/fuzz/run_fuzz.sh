@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs the libFuzzer targets of a -DGTLAB_FUZZ=ON build (tests/fuzz/
-# CMakeLists.txt), each for a bounded number of executions, two at a time,
-# and prints how many executions each ran. A crash (or leak, sanitizer
+# CMakeLists.txt), each for a bounded number of executions (RUNS; shader a
+# tenth of it, see runs_of), two at a time, and prints how many executions
+# each ran. A crash (or leak, sanitizer
 # report, failed property, timeout, out-of-memory) fails the run and keeps
 # the input that caused it in OUT/<target>/ (crash-*, leak-*, timeout-*,
 # oom-*): copy it into tests/fuzz/regressions/<target>/ once fixed, so the
@@ -19,7 +20,7 @@ build=$1
 runs=$2
 shift 2
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(json camera gltf exr merge fit_inputs)
+[ ${#targets[@]} -gt 0 ] || targets=(json camera gltf exr merge fit_inputs shader)
 out=${FUZZ_OUT:-$build/fuzz-out}
 jobs=${FUZZ_JOBS:-2}
 
@@ -29,6 +30,17 @@ dictionary_of() {
     gltf) echo "$here/gltf.dict" ;;
     exr | fit_inputs) echo "$here/exr.dict" ;;
     merge) echo "$here/merge.dict" ;;
+    shader) echo "$here/shader.dict" ;;
+  esac
+}
+
+# The executions of a target: RUNS, but a tenth of it for shader, whose
+# every input is a compilation with SPIRV-Tools' optimiser in a child
+# process (about 50 ms of CPU, a thousand times a parser's input).
+runs_of() {
+  case $1 in
+    shader) echo $((runs / 10 > 0 ? runs / 10 : 1)) ;;
+    *) echo "$runs" ;;
   esac
 }
 
@@ -37,7 +49,7 @@ dictionary_of() {
 run_target() {
   local target=$1 dir=$out/$1 start=$SECONDS
   rm -rf "$dir" && mkdir -p "$dir/corpus"
-  local limits=(-runs="$runs" -timeout=20 -rss_limit_mb=2560 -print_final_stats=1)
+  local limits=(-runs="$(runs_of "$target")" -timeout=20 -rss_limit_mb=2560 -print_final_stats=1)
   [ -n "${FUZZ_MAX_SECONDS:-}" ] && limits+=(-max_total_time="$FUZZ_MAX_SECONDS")
   local corpora=("$dir/corpus" "$here/corpus/$target")
   [ -d "$here/regressions/$target" ] && corpora+=("$here/regressions/$target")

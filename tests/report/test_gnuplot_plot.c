@@ -1,11 +1,16 @@
 /* report/gnuplot_plot.c: a good script gives a PNG (and keeps its .gp script)
  * and an SVG of the same plot beside it, a broken one gives an error naming
- * the PNG and leaves no file behind. */
+ * the PNG and leaves no file behind, and so does a PNG or SVG that gnuplot
+ * could not write whole (a file size limit, as a full disk). */
 #include "report/gnuplot_plot.h"
 #include "tests/check.h"
 
 #include <dirent.h>
+#include <signal.h>
 #include <string.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 static int png_signature(const char *path)
 {
@@ -42,6 +47,39 @@ static int leftovers(const char *dir)
     return found;
 }
 
+/* Under a file size limit of 16 KiB with SIGXFSZ ignored (writes past it
+ * fail with EFBIG, as on a full disk; gnuplot exits 0 all the same): a PNG
+ * larger than the limit, then a small PNG whose SVG (2000 samples) is
+ * larger, each an error naming the file, the file not written, no
+ * temporaries. In a child process, which the limit would otherwise outlive
+ * the test in; returns the child's failed checks. */
+static int limited_failures(const char *dir)
+{
+    pid_t child = fork();
+    if (child == 0) {
+        char png[1024], svg[1024];
+        gt_error e;
+        signal(SIGXFSZ, SIG_IGN);
+        setrlimit(RLIMIT_FSIZE, &(struct rlimit){16384, 16384});
+        snprintf(png, sizeof png, "%s/plot_limit.png", dir);
+        remove(png);
+        CHECK(gnuplot_render("set samples 2000\nplot sin(x) * x\n", png, 800, 600, &e) != 0);
+        CHECK_MSG(strstr(e.message, "plot_limit.png: gnuplot could not write the whole PNG") != NULL, "%s", e.message);
+        CHECK(!png_signature(png));
+        snprintf(png, sizeof png, "%s/plot_limit_svg.png", dir);
+        snprintf(svg, sizeof svg, "%s/plot_limit_svg.svg", dir);
+        remove(svg);
+        CHECK(gnuplot_render("set samples 2000\nplot sin(x) * x\n", png, 160, 120, &e) != 0);
+        CHECK_MSG(strstr(e.message, "plot_limit_svg.svg: gnuplot could not write the whole SVG") != NULL, "%s",
+                  e.message);
+        CHECK(!svg_with(svg, "<svg"));
+        remove(png);
+        _exit(check_failures);
+    }
+    int status = -1;
+    return child > 0 && waitpid(child, &status, 0) == child && WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+}
+
 int main(void)
 {
     if (!gnuplot_available()) {
@@ -73,6 +111,7 @@ int main(void)
     if (none)
         fclose(none);
     CHECK(!svg_with(bad_svg, "<svg"));
+    CHECK_MSG(limited_failures(check_tmp_dir()) == 0, "a plot past the file size limit did not fail cleanly");
     CHECK(leftovers(check_tmp_dir()) == 0);
     return check_report("cli_gnuplot_plot");
 }

@@ -1,0 +1,47 @@
+/* A function run in a child process, so that a library which crashes on
+ * some input (glslang on malformed HLSL: issue 41) cannot take gtlab down
+ * with it. The child (fork, no exec) runs the function and sends its answer
+ * back through a pipe: the bytes it made, or its error. A child that dies
+ * before its whole answer arrived (a signal, a sanitizer's exit) is
+ * reported in words and never kills the caller.
+ *
+ * In the child, before the function runs:
+ *  - stdout and stderr go to /dev/null (a crashing library's or a
+ *    sanitizer's report would be extra lines on the user's terminal);
+ *  - the crash signals (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTRAP,
+ *    SIGSYS) get their default action and core files are off, so a crash
+ *    kills the child by that signal whatever a sanitizer or fuzzer
+ *    installed (and no sanitizer's death callback writes a fuzzer
+ *    artifact); SIGINT, SIGTERM and SIGHUP their default action unless
+ *    ignored (the output set's handler is the parent's: the child must not
+ *    roll the run back);
+ *  - only the calling thread exists (fork copies one), so the function
+ *    must not start threads through OpenMP (the parent's pool is not
+ *    there); it may allocate and read files.
+ * The child ends with _exit: no atexit handler, no leak check, no stdio
+ * buffer of the parent's flushed twice. */
+#ifndef GTLAB_CORE_ISOLATED_CALL_H
+#define GTLAB_CORE_ISOLATED_CALL_H
+
+#include <stddef.h>
+
+#include "core/error.h"
+
+/* The function: 0 with *bytes (malloc'd, may be NULL when *size is 0) and
+ * *size set, or -1 with e set. */
+typedef int (*isolated_function)(const void *context, void **bytes, size_t *size, gt_error *e);
+
+enum { ISOLATED_DIED = -2 };
+
+/* Runs fn(context, ...) in a child process. Returns 0 with *bytes (malloc'd,
+ * the caller frees it; never NULL on success) and *size; -1 with e = the
+ * function's own error, or the caller's `subject` and the problem when no
+ * child could be started or its answer read; ISOLATED_DIED when the child
+ * died without a whole answer, with `death` (if non-NULL, death_size bytes)
+ * saying how: "signal 11, Segmentation fault" or "exit status 1" (a
+ * sanitizer that found an error exits so), and e = "<subject>: the child
+ * process died (<how>)" for callers that need no words of their own. */
+int isolated_call(isolated_function fn, const void *context, const char *subject, void **bytes, size_t *size,
+                  char *death, size_t death_size, gt_error *e);
+
+#endif

@@ -1,0 +1,3 @@
+#include "nowhere.inc"
+[numthreads(1, 1, 1)]
+void main() {}

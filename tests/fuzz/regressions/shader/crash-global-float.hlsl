@@ -1,0 +1,2 @@
+float y;
+void main(uint x) y = 1;

@@ -1,0 +1,2 @@
+RWStructuredBuffer<float> o;
+void main() o[1] = 1;

@@ -1,0 +1,2 @@
+RWStructuredBuffer<float> o;
+float main(uint x) o[x]
