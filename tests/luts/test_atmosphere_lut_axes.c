@@ -9,10 +9,12 @@
  * table should be near exact. */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "luts/atmosphere_lut_axes.h"
 #include "luts/atmosphere_lut_errors.h"
 #include "luts/atmosphere_luts.h"
+#include "luts/atmosphere_luts_writers.h"
 #include "report/claim_thresholds.h"
 #include "tests/check.h"
 
@@ -193,6 +195,9 @@ static void test_near_exact(double t)
     printf("Yusov (32, 256, 32) at t = %g: sky p95 %.4f +- %.4f (day), %.4f (twilight); max %.3f, %.3f\n", t, a.p95,
            a.p95_se, b.p95, a.max, b.max);
     CHECK_MSG(a.p95 + CHECK_K * a.p95_se < CLAIM_ONE_CODE_VALUE_SRGB_RELATIVE, "day p95 %.4f", a.p95);
+    /* the files' lookup is linear: a Yusov table is refused, nothing written */
+    gt_error e;
+    CHECK(atmosphere_luts_write_all(check_tmp_dir(), &luts, &e) != 0 && strstr(e.message, "Yusov"));
     atmosphere_sky_sample_free(&daylight), atmosphere_sky_sample_free(&twilight);
     atmosphere_luts_free(&luts);
     atmosphere_solution_free(&s);
