@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "core/bootstrap.h"
+#include "core/phase_function.h"
 #include "core/splitmix64.h"
 #include "core/vec3.h" /* M_PI */
 
@@ -152,6 +153,81 @@ int atmosphere_lut_errors(const atmosphere_luts *luts, const atmosphere_lut_refe
         out[table].quadrature = stats_of(e + n, n);
         out[table].total = stats_of(e + 2 * n, n);
     }
+    free(e);
+    return 0;
+}
+
+/* L_background by the table's definition at a pixel, FAST. */
+static void sky_truth(const atmosphere_solution *s, const atmosphere_lut_point *p, double nu, double out[3])
+{
+    double r = s->model.bottom_radius + p->altitude, mu = cos(p->theta_v), mu_s = cos(p->theta_s);
+    double S[ATMOSPHERE_SPECIES][ATMOSPHERE_CHANNELS], M[3];
+    atmosphere_single_scattering(s, ATMOSPHERE_FAST, r, mu, mu_s, 0.0, S);
+    atmosphere_multiple_scattering(s, ATMOSPHERE_FAST, r, mu, mu_s, 0.0, M);
+    double pbar = atmosphere_azimuthal_phase(ATMOSPHERE_RAYLEIGH, s->model.mie_g, mu, mu_s);
+    double pr = rayleigh_phase(nu), pm = cornette_shanks_phase(nu, s->model.mie_g);
+    for (int c = 0; c < 3; ++c)
+        out[c] = pr * (S[ATMOSPHERE_RAYLEIGH][c] + M[c] / pbar) + pm * S[ATMOSPHERE_MIE][c];
+}
+
+static void draw_pixels(atmosphere_sky_sample *x, const atmosphere_solution *solutions, int count, double low,
+                        double high, unsigned seed)
+{
+    unsigned long long state = (unsigned long long)seed * 0x9e3779b97f4a7c15ull + 11u;
+    double R = solutions[0].model.bottom_radius;
+    for (int i = 0; i < x->count; ++i) {
+        atmosphere_lut_point *p = &x->points[i];
+        p->theta_s = low + splitmix64_uniform01(&state) * (high - low);
+        p->altitude = splitmix64_uniform01(&state) * ATMOSPHERE_LUT_MAX_ALTITUDE;
+        double mu_h = atmosphere_lut_horizon_cosine(p->altitude, R);
+        double mu = mu_h + splitmix64_uniform01(&state) * (1.0 - mu_h), phi = 2.0 * M_PI * splitmix64_uniform01(&state);
+        p->theta_v = acos(mu);
+        p->t = solutions[i % count].t;
+        x->nu[i] = mu * cos(p->theta_s) + sqrt(fmax(1.0 - mu * mu, 0.0)) * sin(p->theta_s) * cos(phi);
+    }
+}
+
+int atmosphere_sky_sample_build(atmosphere_sky_sample *x, const atmosphere_solution *solutions, int count, int pixels,
+                                double theta_s_low, double theta_s_high, unsigned seed, int threads)
+{
+    *x = (atmosphere_sky_sample){.count = pixels};
+    size_t n = (size_t)(pixels > 0 ? pixels : 1);
+    x->points = malloc(sizeof *x->points * n), x->nu = malloc(sizeof *x->nu * n);
+    x->truth = malloc(sizeof *x->truth * 3 * n);
+    if (!x->points || !x->nu || !x->truth || count < 1) {
+        atmosphere_sky_sample_free(x);
+        return -1;
+    }
+    draw_pixels(x, solutions, count, theta_s_low, theta_s_high, seed);
+#pragma omp parallel for schedule(dynamic, 8) num_threads(threads)
+    for (int i = 0; i < pixels; ++i)
+        sky_truth(&solutions[i % count], &x->points[i], x->nu[i], x->truth + 3 * (size_t)i);
+    return 0;
+}
+
+void atmosphere_sky_sample_free(atmosphere_sky_sample *x)
+{
+    free(x->points), free(x->nu), free(x->truth);
+    x->points = NULL, x->nu = NULL, x->truth = NULL;
+}
+
+int atmosphere_sky_errors(const atmosphere_luts *luts, const atmosphere_sky_sample *x, atmosphere_error_stats *out)
+{
+    double *e = malloc(sizeof *e * (size_t)(x->count > 0 ? x->count : 1));
+    if (!e)
+        return -1;
+    for (int i = 0; i < x->count; ++i) {
+        const atmosphere_lut_point *p = &x->points[i];
+        const double *truth = x->truth + 3 * (size_t)i;
+        float got[3];
+        atmosphere_lut_background(luts, (float)p->theta_s, (float)p->theta_v, (float)p->altitude, (float)p->t,
+                                  (float)x->nu[i], got);
+        double scale = fmax(truth[0], fmax(truth[1], truth[2])), worst = 0.0;
+        for (int c = 0; c < 3; ++c)
+            worst = fmax(worst, fabs(got[c] - truth[c]));
+        e[i] = scale > 0.0 ? worst / scale : worst > 0.0;
+    }
+    *out = stats_of(e, x->count);
     free(e);
     return 0;
 }

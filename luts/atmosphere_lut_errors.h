@@ -65,4 +65,35 @@ typedef struct {
 int atmosphere_lut_errors(const atmosphere_luts *luts, const atmosphere_lut_reference *ref,
                           atmosphere_table_error out[ATMOSPHERE_TABLES]);
 
+/* The sky a viewer sees through the in-scatter table (issue 42): pixels
+ * of sky-dome images, L_background = sum_i p_i(nu) L_inscatter^i (the
+ * talk's sky), the lookup against the same definition evaluated at the
+ * pixel's own parameters by the build's evaluator (FAST, what the texels
+ * hold): the table's interpolation alone, what its size and parametrization
+ * decide (the build's quadrature, 0.1-0.3%, is the precomputation's, not
+ * the table's).
+ * Pixels: y uniform over [0, ATMOSPHERE_LUT_MAX_ALTITUDE] (the talk: "on
+ * the ground or near the ground"), theta_s uniform over [theta_s_low,
+ * theta_s_high], the view direction uniform over the solid angle of the sky
+ * seen from y (zenith cosine uniform over [horizon, 1], azimuth to the sun
+ * uniform: every direction of a sky dome weighted as the eye sees it), t
+ * cycling over the solutions' blends.
+ * Error of a pixel: max_c |L^_c - L_c| / max_c L_c, relative to the pixel's
+ * brightest channel: exposure-independent (an auto-exposed image maps
+ * relative radiance to code values), and a dim channel of a bright pixel
+ * counts at the pixel's scale. */
+typedef struct {
+    int count;
+    atmosphere_lut_point *points;
+    double *nu;    /* [count] the cosine between view and sun */
+    double *truth; /* [count][3] */
+} atmosphere_sky_sample;
+
+int atmosphere_sky_sample_build(atmosphere_sky_sample *sample, const atmosphere_solution *solutions, int count,
+                                int pixels, double theta_s_low, double theta_s_high, unsigned seed, int threads);
+void atmosphere_sky_sample_free(atmosphere_sky_sample *sample);
+/* The pixels' errors' statistics (max, rms, p95 with its bootstrap s.e.). */
+int atmosphere_sky_errors(const atmosphere_luts *luts, const atmosphere_sky_sample *sample,
+                          atmosphere_error_stats *out);
+
 #endif

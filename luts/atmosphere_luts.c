@@ -68,6 +68,20 @@ double atmosphere_lut_axis_value(int axis, int i, int n, double max_altitude)
     return f * top;
 }
 
+atmosphere_lut_frame atmosphere_luts_frame(const atmosphere_luts *luts)
+{
+    return (atmosphere_lut_frame){luts->parametrization, luts->model.bottom_radius, luts->model.top_radius,
+                                  luts->max_altitude};
+}
+
+/* The parameters (theta_s, theta_v, y, t) of grid point (s, v, y, w) of a table of sizes n. */
+static void grid_point(const atmosphere_luts *luts, const int n[4], int s, int v, int y, int w, double x[4])
+{
+    atmosphere_lut_frame f = atmosphere_luts_frame(luts);
+    int i[4] = {s, v, y, w};
+    atmosphere_lut_grid_parameters(&f, n, i, x);
+}
+
 /* The in-scatter texels of weather index w (blend s->t). */
 static void fill_inscatter(atmosphere_luts *luts, const atmosphere_solution *s, int w, int threads)
 {
@@ -75,9 +89,9 @@ static void fill_inscatter(atmosphere_luts *luts, const atmosphere_solution *s, 
     int count = n[0] * n[1] * n[2];
 #pragma omp parallel for schedule(dynamic, 4) num_threads(threads)
     for (int q = 0; q < count; ++q) {
-        int is = q % n[0], iv = q / n[0] % n[1], iy = q / (n[0] * n[1]);
-        double r = luts->model.bottom_radius + atmosphere_lut_axis_value(2, iy, n[2], luts->max_altitude);
-        double mu = cos(atmosphere_lut_axis_value(1, iv, n[1], 0.0)), mu_s = cos(atmosphere_lut_axis_value(0, is, n[0], 0.0));
+        double x[4];
+        grid_point(luts, n, q % n[0], q / n[0] % n[1], q / (n[0] * n[1]), w, x);
+        double r = luts->model.bottom_radius + x[2], mu = cos(x[1]), mu_s = cos(x[0]);
         double S[ATMOSPHERE_SPECIES][ATMOSPHERE_CHANNELS], M[ATMOSPHERE_CHANNELS];
         atmosphere_single_scattering(s, ATMOSPHERE_FAST, r, mu, mu_s, 0.0, S);
         atmosphere_multiple_scattering(s, ATMOSPHERE_FAST, r, mu, mu_s, 0.0, M);
@@ -95,9 +109,9 @@ static void fill_light(atmosphere_luts *luts, int table, const atmosphere_soluti
     int count = n[0] * n[2];
 #pragma omp parallel for schedule(dynamic, 2) num_threads(threads)
     for (int q = 0; q < count; ++q) {
-        int is = q % n[0], iy = q / n[0];
-        double r = luts->model.bottom_radius + atmosphere_lut_axis_value(2, iy, n[2], luts->max_altitude);
-        double mu_s = cos(atmosphere_lut_axis_value(0, is, n[0], 0.0)), v[3];
+        double x[4];
+        grid_point(luts, n, q % n[0], 0, q / n[0], w, x);
+        double r = luts->model.bottom_radius + x[2], mu_s = cos(x[0]), v[3];
         if (table == ATMOSPHERE_TABLE_SUN) {
             atmosphere_transmittance_to_sun(s, ATMOSPHERE_FAST, r, mu_s, v);
             for (int c = 0; c < 3; ++c)
@@ -189,13 +203,22 @@ const atmosphere_solution *atmosphere_solution_find(const atmosphere_solution *s
 int atmosphere_luts_build_from(atmosphere_luts *luts, const atmosphere_solution *solutions, int count,
                                const atmosphere_lut_sizes *sizes, int threads, char *msg, size_t msg_size)
 {
-    *luts = (atmosphere_luts){.max_altitude = ATMOSPHERE_LUT_MAX_ALTITUDE, .sizes = *sizes};
+    return atmosphere_luts_build_parametrized(luts, solutions, count, sizes, ATMOSPHERE_PARAM_LINEAR, threads, msg,
+                                              msg_size);
+}
+
+int atmosphere_luts_build_parametrized(atmosphere_luts *luts, const atmosphere_solution *solutions, int count,
+                                       const atmosphere_lut_sizes *sizes, atmosphere_lut_parametrization kind,
+                                       int threads, char *msg, size_t msg_size)
+{
+    *luts = (atmosphere_luts){.max_altitude = ATMOSPHERE_LUT_MAX_ALTITUDE, .sizes = *sizes, .parametrization = kind};
     if (count < 1) {
         snprintf(msg, msg_size, "atmosphere LUTs: no precomputed solution");
         return -1;
     }
     luts->model = solutions[0].model;
-    if (atmosphere_lut_sizes_check(sizes, msg, msg_size) != 0)
+    if (atmosphere_lut_sizes_check(sizes, msg, msg_size) != 0 ||
+        atmosphere_lut_parametrization_check(kind, sizes->inscatter, msg, msg_size) != 0)
         return -1;
     double start = omp_get_wtime(), blends[MAX_BLENDS];
     int n = atmosphere_lut_blends(sizes, blends);
@@ -221,23 +244,41 @@ void atmosphere_luts_free(atmosphere_luts *luts)
         free(luts->table[table]), luts->table[table] = NULL;
 }
 
+/* One axis' grid points and weight at a position (luts/atmosphere_lut_axes.h). */
+static atmo_axis axis_of(atmosphere_lut_position p)
+{
+    int i0 = (int)floor(p.p);
+    i0 = i0 < p.lo ? p.lo : i0 > p.hi ? p.hi : i0;
+    atmo_axis a = {i0, i0 + 1 <= p.hi ? i0 + 1 : p.hi, (float)(p.p - i0)};
+    return a;
+}
+
+/* Channel `channel` of `table` at (theta_s, theta_v, y, t): the shared
+ * lookup text, at the positions of the tables' parametrization. */
+static float lookup(const atmosphere_luts *luts, int table, int channel, float theta_s, float theta_v, float y, float t)
+{
+    atmo_table tab = {luts, table, channel};
+    if (luts->parametrization == ATMOSPHERE_PARAM_LINEAR)
+        return atmo_lookup(tab, theta_s, theta_v, y, t);
+    atmosphere_lut_frame f = atmosphere_luts_frame(luts);
+    atmosphere_lut_position p[4];
+    atmosphere_lut_positions(&f, sizes_of(&luts->sizes, table), theta_s, theta_v, y, t, p);
+    return atmo_lookup_axes(tab, axis_of(p[0]), axis_of(p[1]), axis_of(p[2]), axis_of(p[3]));
+}
+
 void atmosphere_lut_inscatter(const atmosphere_luts *luts, float theta_s, float theta_v, float y, float t,
                               float out[ATMOSPHERE_SPECIES][ATMOSPHERE_CHANNELS])
 {
     for (int i = 0; i < ATMOSPHERE_SPECIES; ++i)
-        for (int c = 0; c < 3; ++c) {
-            atmo_table tab = {luts, ATMOSPHERE_TABLE_INSCATTER, 3 * i + c};
-            out[i][c] = atmo_lookup(tab, theta_s, theta_v, y, t);
-        }
+        for (int c = 0; c < 3; ++c)
+            out[i][c] = lookup(luts, ATMOSPHERE_TABLE_INSCATTER, 3 * i + c, theta_s, theta_v, y, t);
 }
 
 void atmosphere_lut_light(const atmosphere_luts *luts, int table, float theta_s, float y, float t,
                           float out[ATMOSPHERE_CHANNELS])
 {
-    for (int c = 0; c < 3; ++c) {
-        atmo_table tab = {luts, table, c};
-        out[c] = atmo_lookup(tab, theta_s, 0.0f, y, t);
-    }
+    for (int c = 0; c < 3; ++c)
+        out[c] = lookup(luts, table, c, theta_s, 0.0f, y, t);
 }
 
 void atmosphere_lut_background(const atmosphere_luts *luts, float theta_s, float theta_v, float y, float t, float nu,

@@ -25,7 +25,9 @@
  *     sum_i beta_si / sum_i beta_ti (the talk's L_amb).
  *
  * Axes (grid points at both ends, Bruneton's convention; a size-1 axis holds
- * its low end): theta_s in [0, ATMOSPHERE_LUT_THETA_S_MAX] (96 deg: civil
+ * its low end), in the linear parametrization (the default; the others,
+ * Yusov 2013's and Bruneton & Neyret 2008's, are luts/atmosphere_lut_axes.h,
+ * C only: the writers refuse them): theta_s in [0, ATMOSPHERE_LUT_THETA_S_MAX] (96 deg: civil
  * twilight), theta_v in [0, 180 deg], y in [0, max_altitude] m, t in [0, 1];
  * value x of an axis of size N sits at position p = x / max (N - 1): a GPU
  * samples it at (p + 0.5) / N. The lookup (linear in each axis, clamped) is
@@ -40,10 +42,11 @@
 #ifndef GTLAB_LUTS_ATMOSPHERE_LUTS_H
 #define GTLAB_LUTS_ATMOSPHERE_LUTS_H
 
+#include "luts/atmosphere_lut_axes.h"
 #include "luts/atmosphere_model.h"
 #include "luts/atmosphere_scattering.h"
 
-#define ATMOSPHERE_LUT_THETA_S_MAX (96.0 * 3.14159265358979323846 / 180.0)
+#define ATMOSPHERE_LUT_THETA_S_MAX ATMOSPHERE_LUT_LINEAR_THETA_S_MAX
 #define ATMOSPHERE_LUT_THETA_V_MAX 3.14159265358979323846
 #define ATMOSPHERE_LUT_MAX_ALTITUDE 2000.0 /* the talk: sizes "optimized for games on the ground or near the ground" */
 enum { ATMOSPHERE_LUT_MAX_AXIS = 256 };
@@ -69,6 +72,7 @@ typedef struct {
     atmosphere_model model;
     double max_altitude;
     atmosphere_lut_sizes sizes;
+    atmosphere_lut_parametrization parametrization; /* of every table's axes */
     float *table[ATMOSPHERE_TABLES];
     double build_seconds;
 } atmosphere_luts;
@@ -86,7 +90,13 @@ int atmosphere_luts_build(atmosphere_luts *luts, const atmosphere_model *m, cons
  * when one is missing. A sweep of sizes solves each blend once. */
 int atmosphere_luts_build_from(atmosphere_luts *luts, const atmosphere_solution *solutions, int count,
                                const atmosphere_lut_sizes *sizes, int threads, char *msg, size_t msg_size);
+/* The same under a parametrization of the axes (luts/atmosphere_lut_axes.h). */
+int atmosphere_luts_build_parametrized(atmosphere_luts *luts, const atmosphere_solution *solutions, int count,
+                                       const atmosphere_lut_sizes *sizes, atmosphere_lut_parametrization kind,
+                                       int threads, char *msg, size_t msg_size);
 void atmosphere_luts_free(atmosphere_luts *luts);
+/* The frame of the tables' axes (their parametrization, radii, y range). */
+atmosphere_lut_frame atmosphere_luts_frame(const atmosphere_luts *luts);
 /* The distinct blends t of the three tables' t axes into blends (room for
  * 3 ATMOSPHERE_LUT_MAX_AXIS), in table order; returns their count: the
  * solutions atmosphere_luts_build_from needs. */

@@ -204,6 +204,9 @@ int atmosphere_luts_write_shader(const char *path, int glsl, const atmosphere_lu
 int atmosphere_luts_write_all(const char *dir, const atmosphere_luts *luts, gt_error *e)
 {
     char path[4096];
+    if (luts->parametrization != ATMOSPHERE_PARAM_LINEAR) /* the files' lookup (atmosphere_luts.inc) is linear */
+        return gt_error_set(e, dir, "atmosphere LUTs: only the linear parametrization is written, not %s's",
+                            atmosphere_lut_parametrization_name(luts->parametrization));
     if (atmosphere_luts_write_exr(dir, luts, e) != 0)
         return -1;
     snprintf(path, sizeof path, "%s/atmosphere_luts.h", dir);

@@ -20,4 +20,11 @@
  * |log error| that changes by less cannot be told apart. */
 #define CLAIM_VISIBLE_LOG_LUMINANCE 0.01
 
+/* One code value of an 8-bit sRGB-encoded channel at half scale, as a
+ * relative radiance change: the display's EOTF is about V^2.2, so dL / L =
+ * 2.2 dV / V = 2.2 / (255 x 0.5) ~ 1.7% at V = 0.5 (less above, more below):
+ * a sky pixel whose relative error stays below it moves by at most one code
+ * value at mid grey and above, whatever the exposure. */
+#define CLAIM_ONE_CODE_VALUE_SRGB_RELATIVE (2.2 / (255.0 * 0.5))
+
 #endif

@@ -13,8 +13,8 @@ enum { GRID_BLENDS = 4 }; /* the talk's t axis: 0, 1/3, 2/3, 1 */
 atmosphere_luts_request atmosphere_luts_default_request(study_quality quality)
 {
     if (quality == QUALITY_PRODUCTION)
-        return (atmosphere_luts_request){192, 3, {1.0 / 6.0, 0.5, 5.0 / 6.0}, 1, 1};
-    return (atmosphere_luts_request){48, 1, {0.5}, 0, 1};
+        return (atmosphere_luts_request){192, 3, {1.0 / 6.0, 0.5, 5.0 / 6.0}, 1, 1, 8000, 1};
+    return (atmosphere_luts_request){48, 1, {0.5}, 0, 1, 2000, 0};
 }
 
 int atmosphere_luts_row_suffices(const atmosphere_luts_row *row)
@@ -164,6 +164,72 @@ static int write_talk_tables(const char *dir, const atmosphere_solution *solutio
     return rc;
 }
 
+/* The sky through the in-scatter table of `kind` with axis `axis` at n (-1:
+ * the talk's size; -2: every spatial axis x4). */
+static int add_sky_row(atmosphere_luts_result *out, const atmosphere_solution *solutions, int count,
+                       const atmosphere_sky_sample sample[2], atmosphere_lut_parametrization kind, int axis, int n,
+                       int threads, gt_error *e)
+{
+    static const char *const axes[4] = {"theta_s", "theta_v", "y", "t"};
+    atmosphere_lut_sizes s = configuration(ATMOSPHERE_TABLE_INSCATTER, axis == -2 ? -1 : axis, n);
+    for (int a = 0; a < 3 && axis == -2; ++a)
+        s.inscatter[a] *= 4;
+    atmosphere_luts luts;
+    char msg[256];
+    if (out->sky_row_count >= ATMOSPHERE_SKY_MAX_ROWS)
+        return gt_error_set(e, "atmosphere", "more than %d sky rows", ATMOSPHERE_SKY_MAX_ROWS);
+    if (atmosphere_luts_build_parametrized(&luts, solutions, count, &s, kind, threads, msg, sizeof msg) != 0)
+        return gt_error_set(e, "atmosphere", "%s", msg);
+    atmosphere_sky_row *row = &out->sky_rows[out->sky_row_count++];
+    int rc = atmosphere_sky_errors(&luts, &sample[0], &row->day) == 0 &&
+                     atmosphere_sky_errors(&luts, &sample[1], &row->twilight) == 0
+                 ? 0
+                 : gt_error_set(e, "atmosphere", "out of memory");
+    memcpy(row->sizes, s.inscatter, sizeof row->sizes);
+    row->parametrization = kind, row->talk = axis == -1;
+    row->bytes = atmosphere_lut_bytes(ATMOSPHERE_TABLE_INSCATTER, row->sizes);
+    if (axis == -1)
+        snprintf(row->label, sizeof row->label, "talk");
+    else if (axis == -2)
+        snprintf(row->label, sizeof row->label, "all spatial axes x4");
+    else
+        snprintf(row->label, sizeof row->label, "%s %d", axes[axis], n);
+    if (axis == -1)
+        out->sky_talk_row[kind] = out->sky_row_count - 1;
+    atmosphere_luts_free(&luts);
+    return rc;
+}
+
+/* Per parametrization: the talk's size, one axis at a time, and (production) x4. */
+static int sky_sweep(atmosphere_luts_result *out, const atmosphere_solution *solutions, int count, int threads,
+                     gt_error *e)
+{
+    static const int steps[][2] = {{-1, 0}, {0, 4}, {0, 16}, {0, 32}, {1, 32}, {1, 128}, {2, 4}, {2, 16}};
+    const atmosphere_luts_request *rq = &out->request;
+    atmosphere_sky_sample sample[2];
+    const atmosphere_solution *off_grid = solutions + GRID_BLENDS;
+    for (int k = 0; k < ATMOSPHERE_PARAMS; ++k)
+        out->sky_talk_row[k] = -1;
+    if (atmosphere_sky_sample_build(&sample[0], off_grid, rq->blend_count, rq->sky_pixels, 0.0, ATMOSPHERE_DAY_THETA_S,
+                                    rq->seed, threads) != 0)
+        return gt_error_set(e, "atmosphere", "out of memory");
+    if (atmosphere_sky_sample_build(&sample[1], off_grid, rq->blend_count, rq->sky_pixels, ATMOSPHERE_DAY_THETA_S,
+                                    ATMOSPHERE_TWILIGHT_THETA_S, rq->seed + 1u, threads) != 0) {
+        atmosphere_sky_sample_free(&sample[0]);
+        return gt_error_set(e, "atmosphere", "out of memory");
+    }
+    int rc = 0;
+    for (int k = 0; k < ATMOSPHERE_PARAMS && rc == 0; ++k) {
+        for (size_t j = 0; j < sizeof steps / sizeof *steps && rc == 0; ++j)
+            rc = add_sky_row(out, solutions, count, sample, (atmosphere_lut_parametrization)k, steps[j][0],
+                             steps[j][1], threads, e);
+        if (rc == 0 && rq->sky_refinement)
+            rc = add_sky_row(out, solutions, count, sample, (atmosphere_lut_parametrization)k, -2, 0, threads, e);
+    }
+    atmosphere_sky_sample_free(&sample[0]), atmosphere_sky_sample_free(&sample[1]);
+    return rc;
+}
+
 static int run(const study_context *ctx, atmosphere_luts_result *out, const atmosphere_solution *solutions, int count,
                gt_error *e)
 {
@@ -175,6 +241,8 @@ static int run(const study_context *ctx, atmosphere_luts_result *out, const atmo
     out->quadrature_estimate = ref.quadrature_estimate;
     int rc = sweep(out, solutions, count, &ref, ctx->threads, e);
     atmosphere_lut_reference_free(&ref);
+    if (rc == 0)
+        rc = sky_sweep(out, solutions, count, ctx->threads, e);
     find_rows(out);
     return rc;
 }
@@ -184,8 +252,9 @@ int atmosphere_luts_study(const study_context *ctx, const atmosphere_luts_reques
 {
     memset(out, 0, sizeof *out);
     out->request = *rq;
-    if (rq->blend_count < 1 || rq->blend_count > ATMOSPHERE_STUDY_MAX_BLENDS || rq->points < 20)
-        return gt_error_set(e, "atmosphere", "1 to %d blends and at least 20 points", ATMOSPHERE_STUDY_MAX_BLENDS);
+    if (rq->blend_count < 1 || rq->blend_count > ATMOSPHERE_STUDY_MAX_BLENDS || rq->points < 20 || rq->sky_pixels < 20)
+        return gt_error_set(e, "atmosphere", "1 to %d blends and at least 20 points and sky pixels",
+                            ATMOSPHERE_STUDY_MAX_BLENDS);
     char dir[2048], tables[2100];
     if (study_make_dir(ctx, ATMOSPHERE_LUTS_DIR, dir, sizeof dir, e) != 0 ||
         study_make_dir(ctx, ATMOSPHERE_LUTS_DIR "/atmosphere", tables, sizeof tables, e) != 0)

@@ -12,6 +12,15 @@
  * or within the quadrature's own 95th percentile if that is larger (the
  * reference's floor).
  *
+ * The sky (issue 42): the in-scatter table under each parametrization
+ * (luts/atmosphere_lut_axes.h: gtlab's linear one, Yusov 2013's, the talk's
+ * "[Yus13]", and Bruneton & Neyret 2008's) at the talk's size and one axis
+ * at a time around it, scored on sky-dome pixels (luts/atmosphere_lut_
+ * errors.h, atmosphere_sky_errors: the table's interpolation alone) by day
+ * (sun 10 deg or more above the horizon) and in twilight (10 deg above to
+ * 6 deg below) apart, each as the 95th percentile of the pixels' relative
+ * error with its bootstrap standard error.
+ *
  * Writes <output>/luts/atmosphere/ (the talk-size tables: EXR, C header,
  * HLSL, GLSL) and <output>/luts/atmosphere_sizes.dat (per row: table, bytes,
  * interpolation p95 and max, total p95), the data of the report's plot. */
@@ -24,7 +33,8 @@
 
 #define ATMOSPHERE_LUTS_DIR "luts"
 #define ATMOSPHERE_TOLERANCE 0.02
-enum { ATMOSPHERE_STUDY_MAX_ROWS = 40, ATMOSPHERE_STUDY_MAX_BLENDS = 4 };
+enum { ATMOSPHERE_STUDY_MAX_ROWS = 40, ATMOSPHERE_STUDY_MAX_BLENDS = 4, ATMOSPHERE_SKY_MAX_ROWS = 40 };
+#define ATMOSPHERE_TWILIGHT_THETA_S (96.0 * 3.14159265358979323846 / 180.0) /* civil twilight's end */
 
 typedef struct {
     int points;                  /* random points the tables are scored at */
@@ -32,6 +42,8 @@ typedef struct {
     double blends[ATMOSPHERE_STUDY_MAX_BLENDS];
     int uniform_refinement;      /* also the in-scatter table at twice the talk's size on every spatial axis */
     unsigned seed;
+    int sky_pixels;              /* sky-dome pixels per regime (day, twilight) */
+    int sky_refinement;          /* also the sky at 4x the talk's size on every spatial axis */
 } atmosphere_luts_request;
 
 typedef struct {
@@ -43,6 +55,16 @@ typedef struct {
     atmosphere_table_error error;
 } atmosphere_luts_row;
 
+/* The sky through one in-scatter table. */
+typedef struct {
+    char label[48];              /* what departs from the talk's size */
+    atmosphere_lut_parametrization parametrization;
+    int sizes[4];
+    double bytes;
+    int talk;                    /* 1 for the talk's size */
+    atmosphere_error_stats day, twilight;
+} atmosphere_sky_row;
+
 typedef struct {
     atmosphere_luts_request request;
     double build_seconds;        /* the talk-size set for two weathers (4 blends), wall */
@@ -51,10 +73,14 @@ typedef struct {
     atmosphere_luts_row rows[ATMOSPHERE_STUDY_MAX_ROWS];
     int smallest_within[ATMOSPHERE_TABLES]; /* row of the smallest table within tolerance, or -1 */
     int talk_row[ATMOSPHERE_TABLES];
+    int sky_row_count;
+    atmosphere_sky_row sky_rows[ATMOSPHERE_SKY_MAX_ROWS];
+    int sky_talk_row[ATMOSPHERE_PARAMS]; /* row of the talk's size per parametrization, or -1 */
 } atmosphere_luts_result;
 
-/* Preview: 48 points at t = 1/2; production: 192 points at t = 1/6, 1/2,
- * 5/6 and the uniformly refined in-scatter table. */
+/* Preview: 48 points at t = 1/2, 2000 sky pixels per regime; production:
+ * 192 points and 8000 pixels at t = 1/6, 1/2, 5/6, the uniformly refined
+ * in-scatter table and the sky at 4x. */
 atmosphere_luts_request atmosphere_luts_default_request(study_quality quality);
 
 /* Whether a row is within the tolerance (the definition above). */
