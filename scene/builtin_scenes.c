@@ -9,6 +9,7 @@
 
 #include "scene/builtin_scene_ao_decals.h"
 #include "scene/builtin_scene_aa_thin.h"
+#include "scene/quad_mesh.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -19,131 +20,9 @@ static const double pi = 3.14159265358979323846;
 
 /* ---- Materials and cameras ------------------------------------------------ */
 
-static scene_material matte_material(float r, float g, float b)
-{
-    scene_material m = {{r, g, b, 1.0f}, -1, 0.0f, 0.5f, -1}; /* metallic 0, roughness 0.5 */
-    return m;
-}
-
 /* The generic white of every scene but the Cornell box: albedo 0.8, the usual
  * "white" of production scenes (a physical albedo, unlike 1.0). */
-static int add_white_material(scene *s) { return scene_add_material(s, matte_material(0.8f, 0.8f, 0.8f)); }
-
-static void set_camera(scene *s, vec3 position, vec3 target, float yfov_deg)
-{
-    s->has_camera = 1;
-    s->camera.position = position;
-    s->camera.target = target;
-    s->camera.up = v3(0.0f, 1.0f, 0.0f);
-    s->camera.yfov = (float)(yfov_deg * pi / 180.0);
-    s->camera.width = 512;
-    s->camera.height = 512;
-}
-
-/* ---- Quads ------------------------------------------------------------------ */
-
-/* Four corners, counter-clockwise seen from the side the normal points to. */
-typedef struct {
-    vec3 p[4];
-} quad;
-
-typedef struct {
-    quad *items;
-    uint32_t count, capacity;
-} quad_list;
-
-static int quad_list_push(quad_list *l, quad q)
-{
-    if (l->count == l->capacity) {
-        uint32_t capacity = l->capacity ? 2 * l->capacity : 64;
-        quad *grown = realloc(l->items, sizeof *grown * capacity);
-        if (!grown)
-            return -1;
-        l->items = grown;
-        l->capacity = capacity;
-    }
-    l->items[l->count++] = q;
-    return 0;
-}
-
-static void quad_list_free(quad_list *l)
-{
-    free(l->items);
-    memset(l, 0, sizeof *l);
-}
-
-/* One mesh of the quads: 4 vertices and 2 triangles (0 1 2, 0 2 3) per quad,
- * the normal of each quad's vertices its own plane's (computed in double). */
-static int add_quad_mesh(scene *s, const quad_list *l, int material)
-{
-    scene_mesh *m = scene_add_mesh(s, 4 * l->count, 2 * l->count, 0);
-    if (!m)
-        return -1;
-    m->material = material;
-    for (uint32_t q = 0; q < l->count; ++q) {
-        const vec3 *p = l->items[q].p;
-        double u[3] = {p[1].x - p[0].x, p[1].y - p[0].y, p[1].z - p[0].z};
-        double v[3] = {p[2].x - p[0].x, p[2].y - p[0].y, p[2].z - p[0].z};
-        double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-        double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        vec3 normal = v3((float)(n[0] / len), (float)(n[1] / len), (float)(n[2] / len));
-        for (int k = 0; k < 4; ++k) {
-            v3_store(&m->positions[3 * (4 * q + k)], p[k]);
-            v3_store(&m->normals[3 * (4 * q + k)], normal);
-        }
-        const uint32_t base = 4 * q, tri[6] = {0, 1, 2, 0, 2, 3};
-        for (int k = 0; k < 6; ++k)
-            m->indices[6 * q + k] = base + tri[k];
-    }
-    return 0;
-}
-
-/* ---- Boxes ------------------------------------------------------------------ */
-
-/* A box's corner c has bit 0 set on its +x side, bit 1 on +y, bit 2 on +z (in
- * the box's own axes). Each face lists its corners counter-clockwise seen from
- * outside. */
-enum { FACE_POS_X, FACE_NEG_X, FACE_POS_Y, FACE_NEG_Y, FACE_POS_Z, FACE_NEG_Z };
-static const unsigned char box_face_corners[6][4] = {
-    {1, 3, 7, 5}, {0, 4, 6, 2}, {2, 6, 7, 3}, {0, 1, 5, 4}, {4, 5, 7, 6}, {0, 2, 3, 1},
-};
-#define FACE_BIT(f) (1u << (f))
-#define ALL_FACES 0x3fu
-
-static void aligned_box_corners(vec3 lo, vec3 hi, vec3 corners[8])
-{
-    for (int c = 0; c < 8; ++c)
-        corners[c] = v3(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z);
-}
-
-/* A block of size (x, height, z) standing on y = 0 with its base centred at
- * base_centre, turned by angle (radians, counter-clockwise seen from above,
- * i.e. a right-handed rotation about +Y). */
-static void turned_block_corners(vec3 base_centre, vec3 size, double angle, vec3 corners[8])
-{
-    const double c = cos(angle), s = sin(angle);
-    for (int k = 0; k < 8; ++k) {
-        double x = (k & 1 ? 0.5 : -0.5) * size.x, z = (k & 4 ? 0.5 : -0.5) * size.z;
-        corners[k] = v3((float)(base_centre.x + c * x + s * z), k & 2 ? size.y : 0.0f,
-                        (float)(base_centre.z - s * x + c * z));
-    }
-}
-
-/* Pushes the faces in face_mask; inward reverses them so that their normals
- * face into the box (room walls). */
-static int push_box_faces(quad_list *l, const vec3 corners[8], unsigned face_mask, int inward)
-{
-    for (int f = 0; f < 6; ++f) {
-        if (!(face_mask & FACE_BIT(f)))
-            continue;
-        quad q;
-        for (int k = 0; k < 4; ++k)
-            q.p[k] = corners[box_face_corners[f][inward ? (4 - k) % 4 : k]];
-        if (quad_list_push(l, q) != 0)
-            return -1;
-    }
-    return 0;
-}
+static int add_white_material(scene *s) { return scene_add_material(s, scene_matte_material(0.8f, 0.8f, 0.8f)); }
 
 /* ---- The floor shared by most scenes ---------------------------------------- */
 
@@ -151,7 +30,7 @@ static int add_floor(scene *s, int material)
 {
     quad_list l = {0};
     quad q = {{v3(-50.0f, 0.0f, -50.0f), v3(-50.0f, 0.0f, 50.0f), v3(50.0f, 0.0f, 50.0f), v3(50.0f, 0.0f, -50.0f)}};
-    int rc = quad_list_push(&l, q) == 0 ? add_quad_mesh(s, &l, material) : -1;
+    int rc = quad_list_push(&l, q) == 0 ? quad_mesh_add(s, &l, material) : -1;
     quad_list_free(&l);
     return rc;
 }
@@ -337,17 +216,6 @@ static int push_menger_faces(quad_list *l)
 
 /* ---- Box field ------------------------------------------------------------------ */
 
-/* PCG hash: Jarzynski and Olano 2020, "Hash Functions for GPU Rendering"
- * (JCGT 9(3)), a good one-round 32-bit hash; deterministic everywhere. */
-static uint32_t pcg_hash(uint32_t v)
-{
-    uint32_t state = v * 747796405u + 2891336453u;
-    uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
-    return (word >> 22u) ^ word;
-}
-
-static float unit_hash(uint32_t n) { return (float)(pcg_hash(n) >> 8) * (1.0f / 16777216.0f); }
-
 enum { BOX_GRID = 8 };
 
 static int push_box_field(quad_list *l)
@@ -356,7 +224,7 @@ static int push_box_field(quad_list *l)
         for (int c = 0; c < BOX_GRID; ++c) {
             float u[5];
             for (uint32_t k = 0; k < 5; ++k)
-                u[k] = unit_hash(5u * (uint32_t)(BOX_GRID * r + c) + k);
+                u[k] = scene_unit_hash(5u * (uint32_t)(BOX_GRID * r + c) + k);
             float width = 0.5f + 2.0f * u[0], depth = 0.5f + 2.0f * u[1], height = 0.5f + 3.5f * u[2];
             float x = 3.0f * c - 10.5f + 1.5f * (u[3] - 0.5f), z = 3.0f * r - 10.5f + 1.5f * (u[4] - 0.5f);
             vec3 corners[8];
@@ -375,7 +243,7 @@ static int build_plane(scene *s)
     int white = add_white_material(s);
     if (white < 0 || add_floor(s, white) != 0)
         return -1;
-    set_camera(s, v3(12.0f, 9.0f, 15.0f), v3(0.0f, 0.0f, 0.0f), 45.0f);
+    scene_set_camera(s, v3(12.0f, 9.0f, 15.0f), v3(0.0f, 0.0f, 0.0f), 45.0f);
     return 0;
 }
 
@@ -384,7 +252,7 @@ static int build_sphere_on_plane(scene *s)
     int white = add_white_material(s);
     if (white < 0 || add_floor(s, white) != 0 || add_sphere(s, v3(0.0f, 1.5f, 0.0f), 1.0f, white) != 0)
         return -1;
-    set_camera(s, v3(4.5f, 4.0f, 6.0f), v3(0.0f, 1.0f, 0.0f), 45.0f);
+    scene_set_camera(s, v3(4.5f, 4.0f, 6.0f), v3(0.0f, 1.0f, 0.0f), 45.0f);
     return 0;
 }
 
@@ -398,9 +266,9 @@ static int build_corner(scene *s)
     quad_list l = {0};
     int rc = push_box_faces(&l, corners, FACE_BIT(FACE_NEG_Y) | FACE_BIT(FACE_NEG_X) | FACE_BIT(FACE_NEG_Z), 1);
     if (rc == 0)
-        rc = add_quad_mesh(s, &l, white);
+        rc = quad_mesh_add(s, &l, white);
     quad_list_free(&l);
-    set_camera(s, v3(11.0f, 9.0f, 13.0f), v3(2.0f, 2.0f, 2.0f), 45.0f);
+    scene_set_camera(s, v3(11.0f, 9.0f, 13.0f), v3(2.0f, 2.0f, 2.0f), 45.0f);
     return rc;
 }
 
@@ -412,9 +280,9 @@ static int build_menger(scene *s)
     quad_list l = {0};
     int rc = push_menger_faces(&l);
     if (rc == 0)
-        rc = add_quad_mesh(s, &l, white);
+        rc = quad_mesh_add(s, &l, white);
     quad_list_free(&l);
-    set_camera(s, v3(2.7f, 2.6f, 3.6f), v3(0.0f, 0.9f, 0.0f), 45.0f);
+    scene_set_camera(s, v3(2.7f, 2.6f, 3.6f), v3(0.0f, 0.9f, 0.0f), 45.0f);
     return rc;
 }
 
@@ -426,9 +294,9 @@ static int build_boxes(scene *s)
     quad_list l = {0};
     int rc = push_box_field(&l);
     if (rc == 0)
-        rc = add_quad_mesh(s, &l, white);
+        rc = quad_mesh_add(s, &l, white);
     quad_list_free(&l);
-    set_camera(s, v3(27.0f, 22.0f, 35.0f), v3(0.0f, 0.0f, 0.0f), 45.0f);
+    scene_set_camera(s, v3(27.0f, 22.0f, 35.0f), v3(0.0f, 0.0f, 0.0f), 45.0f);
     return rc;
 }
 
@@ -436,9 +304,9 @@ static int build_boxes(scene *s)
  * walls as commonly tabulated from the Cornell measurements). */
 static int build_cornell(scene *s)
 {
-    int white = scene_add_material(s, matte_material(0.73f, 0.73f, 0.73f));
-    int red = scene_add_material(s, matte_material(0.63f, 0.065f, 0.05f));
-    int green = scene_add_material(s, matte_material(0.14f, 0.45f, 0.091f));
+    int white = scene_add_material(s, scene_matte_material(0.73f, 0.73f, 0.73f));
+    int red = scene_add_material(s, scene_matte_material(0.63f, 0.065f, 0.05f));
+    int green = scene_add_material(s, scene_matte_material(0.14f, 0.45f, 0.091f));
     if (white < 0 || red < 0 || green < 0)
         return -1;
     vec3 room[8], short_block[8], tall_block[8];
@@ -457,15 +325,15 @@ static int build_cornell(scene *s)
     if (rc == 0)
         rc = push_box_faces(&greens, room, FACE_BIT(FACE_POS_X), 1);
     if (rc == 0)
-        rc = add_quad_mesh(s, &whites, white);
+        rc = quad_mesh_add(s, &whites, white);
     if (rc == 0)
-        rc = add_quad_mesh(s, &reds, red);
+        rc = quad_mesh_add(s, &reds, red);
     if (rc == 0)
-        rc = add_quad_mesh(s, &greens, green);
+        rc = quad_mesh_add(s, &greens, green);
     quad_list_free(&whites);
     quad_list_free(&reds);
     quad_list_free(&greens);
-    set_camera(s, v3(0.0f, 2.75f, 10.7f), v3(0.0f, 2.75f, 0.0f), 39.3f);
+    scene_set_camera(s, v3(0.0f, 2.75f, 10.7f), v3(0.0f, 2.75f, 0.0f), 39.3f);
     return rc;
 }
 
@@ -488,7 +356,7 @@ enum { TERRAIN_CELLS = 160 };
 static int build_terrain(scene *s)
 {
     const uint32_t n = TERRAIN_CELLS, row = n + 1;
-    int material = scene_add_material(s, matte_material(0.25f, 0.3f, 0.18f));
+    int material = scene_add_material(s, scene_matte_material(0.25f, 0.3f, 0.18f));
     scene_mesh *m = material < 0 ? NULL : scene_add_mesh(s, row * row, 2 * n * n, 0);
     if (!m)
         return -1;
@@ -505,7 +373,7 @@ static int build_terrain(scene *s)
             t[3] = b, t[4] = c, t[5] = d;
         }
     scene_mesh_compute_normals(m);
-    set_camera(s, v3(-3600.0f, 1500.0f, 3600.0f), v3(600.0f, 100.0f, -800.0f), 50.0f);
+    scene_set_camera(s, v3(-3600.0f, 1500.0f, 3600.0f), v3(600.0f, 100.0f, -800.0f), 50.0f);
     return 0;
 }
 
