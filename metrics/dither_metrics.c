@@ -136,6 +136,24 @@ int dither_radial_power_spectrum(const double *values, int n, double *power, gt_
     return rc;
 }
 
+int dither_spectrum_peak_ratio(const double *values, int n, double *ratio, gt_error *e)
+{
+    if (n < 2 || n > 1024)
+        return gt_error_set(e, "power spectrum", "size %d outside [2, 1024]", n);
+    size_t count = (size_t)n * (size_t)n;
+    double *re = malloc(count * sizeof(double)), *im = malloc(count * sizeof(double));
+    int rc = re && im ? dft_2d(values, n, re, im, e) : gt_error_set(e, "power spectrum", "out of memory");
+    double peak = 0.0, sum = 0.0;
+    for (size_t i = 1; i < count && rc == 0; ++i) {
+        double p = re[i] * re[i] + im[i] * im[i];
+        peak = fmax(peak, p), sum += p;
+    }
+    *ratio = sum > 0.0 ? peak / (sum / (double)(count - 1)) : 0.0;
+    free(re);
+    free(im);
+    return rc;
+}
+
 int dither_binned_init(dither_binned_moments *b, int bin_count, double lo, double hi, gt_error *e)
 {
     b->bin_count = bin_count;

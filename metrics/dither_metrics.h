@@ -29,6 +29,14 @@ int dither_row_power_spectrum(const double *values, int width, int height, doubl
  * (ring k; ring 0 holds the removed mean, i.e. 0). Returns 0 or -1 with e. */
 int dither_radial_power_spectrum(const double *values, int n, double *power, gt_error *e);
 
+/* How peaked an n x n plane's periodogram is: the largest P(k) over the
+ * mean P(k), both over k != 0 (the mean removed). A pattern repeating with
+ * a period puts its power into a few frequencies, a noise spreads it: a
+ * pure cosine gives (n^2 - 1) / 2, white noise about ln(n^2). It sees the
+ * structure a blur cannot (a Bayer or gradient pattern's error). Returns 0
+ * or -1 with e. */
+int dither_spectrum_peak_ratio(const double *values, int n, double *ratio, gt_error *e);
+
 /* Binned first and second moments of errors against a signal coordinate in [lo, hi[. */
 typedef struct {
     int bin_count;

@@ -15,16 +15,23 @@
  * errors smaller than this moves no pixel by a code value on average. */
 #define CLAIM_ONE_CODE_VALUE_8BIT_MSE (CLAIM_ONE_CODE_VALUE_8BIT * CLAIM_ONE_CODE_VALUE_8BIT)
 
-/* A 1% change of luminance as a log ratio (ln 1.01 ~ 0.00995, taken as
- * 0.01): the Weber fraction of photopic vision is about 1-2%, so a mean
- * |log error| that changes by less cannot be told apart. */
-#define CLAIM_VISIBLE_LOG_LUMINANCE 0.01
-
 /* One code value of an 8-bit sRGB-encoded channel at half scale, as a
  * relative radiance change: the display's EOTF is about V^2.2, so dL / L =
  * 2.2 dV / V = 2.2 / (255 x 0.5) ~ 1.7% at V = 0.5 (less above, more below):
  * a sky pixel whose relative error stays below it moves by at most one code
  * value at mid grey and above, whatever the exposure. */
 #define CLAIM_ONE_CODE_VALUE_SRGB_RELATIVE (2.2 / (255.0 * 0.5))
+
+/* The DSSIM, (1 - SSIM) / 2, of a just noticeable difference: observers
+ * begin to tell a distorted image from its original near SSIM 0.95
+ * (Dosselmann and Yang, "Image quality assessment using the SSIM and the
+ * just noticeable difference paradigm", 2013), so a change of DSSIM below
+ * it is not a difference a viewer could see. */
+#define CLAIM_DSSIM_JUST_NOTICEABLE ((1.0 - 0.95) / 2.0)
+
+/* The contrast threshold of luminance discrimination at photopic levels
+ * (Weber's law: a change of about 1% of the luminance is just visible): a
+ * relative RMSE of a lit image below it changes no pixel visibly on average. */
+#define CLAIM_WEBER_FRACTION 0.01
 
 #endif

@@ -4,6 +4,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "report/claim_thresholds.h"
 #include "report/report_table.h"
 
 #define ROW dither_row
@@ -39,28 +40,89 @@ static const dither_row *find_row(const dither_result *r, int i, const char *lab
     return NULL;
 }
 
+#define INSIDE_TALK "Gjøl & Svendsen 2016 (INSIDE)"
+#define DITHER_SETTING                                                                                                \
+    "dither added before quantisation to 8-bit UNORM targets (back buffer, light buffer, G-buffer normals) of a "    \
+    "1080p game, noise from ALU RPDF/TPDF random or a tiled 256^2 blue-noise texture"
+#define DITHER_SETTING_NOTE                                                                                           \
+    "an 8-bit gradient (0.20 .. 0.30) instead of game frames, gtlab's own void-and-cluster texture: the error's "    \
+    "distribution at each signal level depends on the noise's distribution, not on the image or the texture's size"
+/* Modulation a: the error variance Var(f) = c + a (f (1 - f) - 1/6) over the
+ * signal's fraction f; RPDF's a = 1 is what the talk shows as visible bands. */
+#define MODULATION_TOLERANCE                                                                                          \
+    "the talk's own comparison: RPDF's modulation (a = 1) 'causing bands with visibly less noise', TPDF 'Can't see "  \
+    "any \"bands\" of no noise'; holds while at most half of RPDF's modulation remains, |a| <= 0.5"
+
+static const claim_record kTriangularIndependent = {
+    .talk = INSIDE_TALK, .seed = "002", .section = "Dithering - no noise modulation",
+    .quote = "The error resulting from a triangularly distributed noise is independent of the signal.",
+    .setting = DITHER_SETTING ", TPDF 2 LSB wide [-0.5, 1.5[", .setting_match = CLAIM_SETTING_INDEPENDENT,
+    .setting_note = DITHER_SETTING_NOTE,
+    .reading = "with a 2-LSB TPDF dither (the talk's blue noise through remap_tri) the error's variance does not change "
+               "with the signal's fraction between code values",
+    .form = CLAIM_RANGE, .low = -0.5, .high = 0.5, .tolerance_source = CLAIM_TOLERANCE_TALK_COMPARISON,
+    .tolerance = MODULATION_TOLERANCE};
+
+static const claim_record kUniformModulates = {
+    .talk = INSIDE_TALK, .seed = "002", .section = "Dithering: white noise, uniform PDF, 1bit [0.0; 1.0[",
+    .quote = "almost no noise near “correct” values ... the amount of noise varies across the signal, causing bands "
+             "with visibly less noise to appear",
+    .setting = DITHER_SETTING ", RPDF 1 LSB wide [0, 1[", .setting_match = CLAIM_SETTING_INDEPENDENT,
+    .setting_note = DITHER_SETTING_NOTE,
+    .reading = "with a 1-LSB uniform dither the error's variance falls to almost nothing where the signal sits on a "
+               "code value",
+    .form = CLAIM_RANGE, .low = 0.5, .high = INFINITY, .tolerance_source = CLAIM_TOLERANCE_CLAIM_NUMBER,
+    .tolerance = "'almost no noise near correct values': the variance at a whole code value at most half its mean, "
+                 "(1 - a) / 6 <= 1/12, so a >= 0.5"};
+
+static const claim_record kTwoUniforms = {
+    .talk = INSIDE_TALK, .seed = "002", .section = "Dithering - no noise modulation",
+    .quote = "Two easy ways to generate a TPDF: 1. Add to uniform distributions (literally just "
+             "$(\\text{rand}(\\text{seed0})+\\text{rand}(\\text{seed1}))/2$)",
+    .setting = DITHER_SETTING ", TPDF 2 LSB wide [-0.5, 1.5[ ('Also now **2bit** wide')",
+    .setting_match = CLAIM_SETTING_INDEPENDENT, .setting_note = DITHER_SETTING_NOTE,
+    .reading = "adding two uniform random numbers gives a triangular PDF (true: their sum's density is a triangle); "
+               "the talk's 2-LSB TPDF is the sum minus 1/2, and the /2 of the transcribed formula halves its width",
+    .stronger_reading = "the formula as transcribed, (rand + rand) / 2 (a 1-LSB triangle on [0, 1[), used as the "
+                        "dither removes noise modulation as the talk's 2-LSB TPDF does",
+    .form = CLAIM_RANGE, .low = -0.5, .high = 0.5, .tolerance_source = CLAIM_TOLERANCE_TALK_COMPARISON,
+    .tolerance = MODULATION_TOLERANCE};
+
+static const claim_record kBlueLessNoise = {
+    .talk = INSIDE_TALK, .seed = "002", .section = "Dithering using Blue Noise (high pass)",
+    .quote = "triangular PDF blue noise, 2bit [-0.5;1.5[ ... Perceptually less noise",
+    .setting = DITHER_SETTING ", blue against white noise, both remapped to a 2-LSB TPDF; of its own TPDF-dithered "
+               "image the talk says 'this image has a lot of noise though – not really visible'",
+    .setting_match = CLAIM_SETTING_INDEPENDENT,
+    .setting_note = "a tone-mapped sphere-light render quantised to 8 bits at gtlab's size instead of game frames; "
+                    "seen through a 1-pixel display blur (a viewer's low-pass); a per-pixel noise's visibility at a "
+                    "given display density does not depend on the frame's size",
+    .reading = "blue TPDF dither leaves an 8-bit image perceptually closer to the unquantised one than white TPDF "
+               "dither, by a margin a viewer could see",
+    .form = CLAIM_BETTER, .margin = CLAIM_DSSIM_JUST_NOTICEABLE, .tolerance_source = CLAIM_TOLERANCE_TALK_COMPARISON,
+    .tolerance = "the talk's comparison, blue against white, past a just noticeable DSSIM "
+                 "(CLAIM_DSSIM_JUST_NOTICEABLE)"};
+
 static void dither_claims(report_context *ctx, const dither_result *r)
 {
-    static const char *const source = "Gjoel 2016, INSIDE, Dithering";
     const dither_row *tpdf = find_row(r, 0, "blue tpdf-remap"), *rpdf = find_row(r, 0, "white rpdf");
     const dither_row *average = find_row(r, 0, "white tpdf-average (as written)");
     const dither_row *blue = find_row(r, 1, "blue tpdf-remap"), *white = find_row(r, 1, "white tpdf-remap");
     if (!tpdf || !rpdf || !average || !blue || !white)
         return;
-    claims_table_add_unreviewed_figure(ctx->claims, source, "the error of triangularly distributed noise is independent of the signal",
-                            "noise modulation a of blue noise remapped to TPDF on the 8-bit gradient: Var(f) = c + a "
-                            "(f(1-f) - 1/6) over 32 bins of the signal's fraction f (RPDF has a = 1); holds for "
-                            "|a| <= 0.1", tpdf->modulation_amplitude, tpdf->modulation_amplitude_se, -0.1, 0.1);
-    claims_table_add_unreviewed_figure(ctx->claims, source, "with uniform (RPDF) noise the amount of noise varies across the signal",
-                            "the same a for white RPDF; holds above 0.5", rpdf->modulation_amplitude,
-                            rpdf->modulation_amplitude_se, 0.5, INFINITY);
-    claims_table_add_unreviewed_figure(ctx->claims, source, "a TPDF is made by (rand(seed0) + rand(seed1)) / 2",
-                            "the same a for that formula as written (a 1-LSB triangle); holds for |a| <= 0.1, as a "
-                            "TPDF's", average->modulation_amplitude, average->modulation_amplitude_se, -0.1, 0.1);
-    claims_table_add_unreviewed_figure(ctx->claims, source, "blue noise: perceptually less noise than white",
-                            "DSSIM after a 1-pixel display blur of the 8-bit tone-mapped sphere-light render, blue "
-                            "over white (both TPDF); holds below 1",
-                            blue->dssim_blurred / white->dssim_blurred, 0.0, -INFINITY, 1.0);
+    static const char *const modulation =
+        "on the 8-bit gradient: Var(f) = c + a (f(1-f) - 1/6) fitted over 32 bins of the signal's fraction f (RPDF "
+        "a = 1, TPDF a = 0), s.e. from the fit";
+    claims_table_add(ctx->claims, &kTriangularIndependent, tpdf->modulation_amplitude, tpdf->modulation_amplitude_se,
+                     "noise modulation a of blue noise remapped to TPDF (remap_tri) %s", modulation);
+    claims_table_add(ctx->claims, &kUniformModulates, rpdf->modulation_amplitude, rpdf->modulation_amplitude_se,
+                     "noise modulation a of white RPDF %s", modulation);
+    claims_table_add(ctx->claims, &kTwoUniforms, average->modulation_amplitude, average->modulation_amplitude_se,
+                     "noise modulation a of (rand + rand) / 2 as transcribed %s", modulation);
+    claims_table_add(ctx->claims, &kBlueLessNoise, blue->dssim_blurred - white->dssim_blurred, 0.0,
+                     "DSSIM after a 1-pixel display blur of the 8-bit tone-mapped sphere-light render against the "
+                     "unquantised one, blue TPDF (%.2e) minus white TPDF (%.2e); one deterministic image each",
+                     blue->dssim_blurred, white->dssim_blurred);
 }
 
 static void dither_findings(report_context *ctx, const dither_result *r)
@@ -72,8 +134,9 @@ static void dither_findings(report_context *ctx, const dither_result *r)
         return;
     report_finding(ctx->doc, "Dithering",
                    "On an 8-bit gradient, undithered runs of %d equal pixels fall to %d with blue TPDF dither, whose "
-                   "error variance is %.3f LSB^2 at every signal (modulation a = %+.3f +- %.3f; RPDF's is 1). As written in "
-                   "the talk, (rand + rand) / 2 is a 1-LSB triangle: a = %+.2f, not a TPDF; and tex / 255 into a "
+                   "error variance is %.3f LSB^2 at every signal (modulation a = %+.3f +- %.3f; RPDF's is 1). As transcribed, "
+                   "(rand + rand) / 2 is a triangle 1 LSB wide, not the talk's 2-LSB TPDF: a = %+.2f (the sum minus 1/2 "
+                   "is the talk's); and tex / 255 into a "
                    "rounding 8-bit target is biased by %+.3f LSB (subtract 1/2).",
                    none->longest_run, tpdf->longest_run, tpdf->variance, tpdf->modulation_amplitude,
                    tpdf->modulation_amplitude_se, average->modulation_amplitude, written->bias);

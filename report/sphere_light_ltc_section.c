@@ -103,7 +103,7 @@ void sphere_ltc_headline(report *doc, const sphere_light_result *r)
         labels[m] = r->fit.held_out[m].method, errors[m] = r->fit.held_out[m].errors.mean_abs;
     labels[SPHERE_FIT_MODELS] = "LTC", errors[SPHERE_FIT_MODELS] = r->ltc.held_out.mean_abs;
     report_headline h = {.topic = "GGX sphere lights", .measure = "held-out mean |log error|",
-                         .significance = HEADLINE_NOT_COMPUTED, .margin = CLAIM_VISIBLE_LOG_LUMINANCE};
+                         .significance = HEADLINE_NOT_COMPUTED, .margin = CLAIM_WEBER_FRACTION};
     if (headline_rank(&h, METHODS, labels, errors) != 0)
         return;
     paired_gap(r, label_index(labels, METHODS, h.runner_up), label_index(labels, METHODS, h.best), &d, &se);

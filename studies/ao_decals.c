@@ -102,6 +102,9 @@ static int score(int variant, int view, const decal_view *dv, ao_decals_result *
         double d = variant_visibility(variant, dv, k, r) - dv->v[k];
         a[i] = (float)(dv->v[k] + d);
         sum += d * d, worst = fmax(worst, fabs(d));
+        if (variant == 1)
+            r->quilez_exact_worst[view] =
+                fmax(r->quilez_exact_worst[view], fabs(variant_visibility(1, dv, k, r) - variant_visibility(0, dv, k, r)));
         /* a pixel whose samples all agree has a sample s.e. of 0 but no exact mean: the larger of the
          * sample s.e. and the binomial one under the decal's value (tests/raytracer/test_ao_closed_forms.c) */
         double m = dv->v[k] + d, binomial = sqrt(fmax(m * (1.0 - m), 0.0) / r->request.spp);

@@ -48,6 +48,8 @@ typedef struct {
     double held_out_scene_rmse[AO_DECAL_COMPARED][AO_DECAL_SCENE_VIEWS_MAX];
     int held_out_scenes;
     size_t floor_pixels[AO_DECAL_VIEWS];
+    /* the largest |Quilez - exact| visibility over each view's floor pixels (the two closed forms, no reference) */
+    double quilez_exact_worst[AO_DECAL_VIEWS];
     ao_decals_scenes_result scenes; /* the pill, crate, corner and overlap scenes (views freed) */
 } ao_decals_result;
 

@@ -10,6 +10,7 @@
 #include "core/image_io.h"
 #include "core/progress.h"
 #include "core/reference_schema.h"
+#include "metrics/dither_metrics.h"
 #include "metrics/image_error.h"
 #include "metrics/ssim.h"
 #include "realtime/raymarch_upsample.h"
@@ -20,9 +21,11 @@ vlight_request vlight_default_request(study_quality quality)
 {
     vlight_request rq = {.width = 64, .height = 64, .seeds = 3, .frames = 16, .alpha = 0.1, .shadow_size = 512,
                          .shadow_bias = 0.01, .spp_count = 12, .spp = {1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 64, 128},
-                         .blue_noise_size = 64, .reference_rel_tol = 1e-4};
+                         .blue_noise_size = 64, .reference_rel_tol = 1e-4, .cost_width = 512, .cost_height = 512,
+                         .cost_reference_rel_tol = 1e-3};
     if (quality == QUALITY_PRODUCTION)
-        rq.width = rq.height = 192, rq.seeds = 8, rq.frames = 32, rq.blue_noise_size = 128;
+        rq.width = rq.height = 192, rq.seeds = 8, rq.frames = 32, rq.blue_noise_size = 128, rq.cost_width = 1920,
+        rq.cost_height = 1080;
     return rq;
 }
 
@@ -184,7 +187,50 @@ static void blue_ratios(const vlight_request *rq, image_score (*acc)[VLIGHT_MAX_
         vlight_error sum = summarise(ratio, rq->seeds);
         out->blue_ratio[n] = sum.rmse, out->blue_ratio_se[n] = sum.rmse_se;
         out->blue_blurred_ratio[n] = sum.blurred, out->blue_blurred_ratio_se[n] = sum.blurred_se;
+        for (int s = 0; s < rq->seeds; ++s)
+            ratio[s].blurred = single[RAYMARCH_NOISE_BLUE][s].blurred - single[n][s].blurred;
+        sum = summarise(ratio, rq->seeds);
+        out->blue_blurred_gap[n] = sum.blurred, out->blue_blurred_gap_se[n] = sum.blurred_se;
     }
+}
+
+/* The periodogram peak ratio of frame 0's error at 3 spp (relative to the
+ * reference's mean, 0 off the surface). */
+static int error_peak_ratio(vlight_run *r, raymarch_noise noise, int seed, double *ratio, gt_error *e)
+{
+    const vlight_setup *v = &r->v;
+    int n = v->gb.width;
+    if (v->gb.height != n)
+        return gt_error_set(e, "volumetric", "the error spectrum needs a square image, not %dx%d", n, v->gb.height);
+    double *error = malloc(sizeof(double) * (size_t)n * n);
+    if (!error)
+        return gt_error_set(e, "volumetric", "out of memory");
+    render_frame(r, noise, 3, seed, start_frame(seed), 0);
+    for (long p = 0; p < (long)n * n; ++p)
+        error[p] = v->mask[p] != 0.0f ? (r->frame[p] - r->reference[p]) / r->reference_mean : 0.0;
+    int rc = dither_spectrum_peak_ratio(error, n, ratio, e);
+    free(error);
+    return rc;
+}
+
+/* Each noise's error peak ratio at 3 spp, mean over the seeds, and over blue's per seed. */
+static int measure_structure(vlight_run *r, vlight_result *out, gt_error *e)
+{
+    double peak[RAYMARCH_NOISE_COUNT][VLIGHT_MAX_SEEDS];
+    int seeds = r->rq->seeds;
+    for (int n = 0; n < RAYMARCH_NOISE_COUNT; ++n)
+        for (int s = 0; s < seeds; ++s)
+            if (error_peak_ratio(r, (raymarch_noise)n, s, &peak[n][s], e) != 0)
+                return -1;
+    for (int n = 0; n < RAYMARCH_NOISE_COUNT; ++n) {
+        image_score own[VLIGHT_MAX_SEEDS] = {{0}}, over[VLIGHT_MAX_SEEDS] = {{0}};
+        for (int s = 0; s < seeds; ++s)
+            own[s].rmse = peak[n][s], over[s].rmse = peak[n][s] / peak[RAYMARCH_NOISE_BLUE][s];
+        vlight_error a = summarise(own, seeds), b = summarise(over, seeds);
+        out->peak_ratio[n] = a.rmse, out->peak_ratio_se[n] = a.rmse_se;
+        out->peak_over_blue[n] = b.rmse, out->peak_over_blue_se[n] = b.rmse_se;
+    }
+    return 0;
 }
 
 static int measure_talk(vlight_run *r, vlight_result *out, gt_error *e)
@@ -344,6 +390,47 @@ static int reference_figures(vlight_run *r, vlight_result *out, gt_error *e)
     return r->reference_mean > 0.0 ? 0 : gt_error_set(e, "volumetric", "the light reaches no pixel");
 }
 
+/* The talk's configuration (6 spp at half resolution, blue noise, noisy
+ * upsample, accumulated) per seed against 2 and 24 uniform steps, by
+ * DSSIM, on an image of cost_width x cost_height. */
+static int measure_cost_configurations(vlight_run *r, vlight_result *out, gt_error *e)
+{
+    image_score talk[VLIGHT_MAX_SEEDS], single, uniform2, uniform24, gap[VLIGHT_MAX_SEEDS] = {{0}};
+    int seeds = r->rq->seeds;
+    if (measure(r, RAYMARCH_NOISE_NONE, 2, 0, 0, &uniform2, &single, e) != 0 ||
+        measure(r, RAYMARCH_NOISE_NONE, 24, 0, 0, &uniform24, &single, e) != 0)
+        return -1;
+    for (int s = 0; s < seeds; ++s) {
+        if (measure(r, RAYMARCH_NOISE_BLUE, 6, s, 2, &single, &talk[s], e) != 0)
+            return -1;
+        gap[s].dssim = talk[s].dssim - uniform2.dssim;
+    }
+    out->cost_talk = summarise(talk, seeds);
+    out->cost_uniform2 = summarise(&uniform2, 1), out->cost_uniform24 = summarise(&uniform24, 1);
+    vlight_error g = summarise(gap, seeds);
+    out->cost_dssim_gap = g.dssim, out->cost_dssim_gap_se = g.dssim_se;
+    return 0;
+}
+
+static int measure_equal_cost(const study_context *ctx, const vlight_request *rq, vlight_result *out, gt_error *e)
+{
+    vlight_request big = *rq;
+    big.width = rq->cost_width, big.height = rq->cost_height, big.reference_rel_tol = rq->cost_reference_rel_tol;
+    if (big.width < 2 || big.height < 2)
+        return gt_error_set(e, "volumetric", "equal-cost image %dx%d too small", big.width, big.height);
+    vlight_result *scratch = calloc(1, sizeof *scratch); /* the reference's figures at this size */
+    if (!scratch)
+        return gt_error_set(e, "volumetric", "out of memory");
+    vlight_run r;
+    int rc = run_alloc(&r, ctx, &big, e) == 0 && reference_figures(&r, scratch, e) == 0
+                 ? measure_cost_configurations(&r, out, e)
+                 : -1;
+    out->cost_pixels = scratch->pixels, out->cost_reference_seconds = scratch->reference_seconds;
+    run_free(&r);
+    free(scratch);
+    return rc;
+}
+
 static int run_study(vlight_run *r, const study_context *ctx, vlight_result *out, gt_error *e)
 {
     char dir[1024];
@@ -362,7 +449,8 @@ static int run_study(vlight_run *r, const study_context *ctx, vlight_result *out
         out->spp_needed_accumulated[n] = spp_to_reach(r->rq, out->accumulated[n], out->uniform128.rmse);
     }
     blue_ratios(r->rq, ratio_scores, single_scores, out);
-    if (write_strip(r, dir, e) != 0 || write_plot_data(r->rq, out, dir, e) != 0)
+    if (measure_structure(r, out, e) != 0 || write_strip(r, dir, e) != 0 ||
+        write_plot_data(r->rq, out, dir, e) != 0 || measure_equal_cost(ctx, r->rq, out, e) != 0)
         return -1;
     return vlight_bench(r->rq->width, r->rq->height, 32, &out->ns_per_pixel_sample, e);
 }

@@ -23,7 +23,20 @@
  * depth-aware upsample (bilinear taps, and the talk's noisy taps) and
  * accumulation, at 3, 6 and 9 samples per half-resolution pixel. The shadow map (512^2 unless varied) is a measured
  * factor: the error of a 1024-step march (offset 1/2) per map size is its
- * floor. */
+ * floor.
+ *
+ * Structure (the error a blur cannot see): the error of frame 0 at 3 spp
+ * (image minus reference, 0 off the surface pixels) through the
+ * periodogram's peak ratio (metrics/dither_metrics.h: a periodic pattern's
+ * error piles into a few frequencies), per noise, mean over the seeds, and
+ * Bayer's and IGN's over blue's per seed.
+ *
+ * Equal cost (issue 42): at cost_width x cost_height (at least 512^2; the
+ * reference's tolerance cost_reference_rel_tol) the talk's configuration (6
+ * blue-noise samples per half-resolution pixel, the noisy depth-aware
+ * upsample, the frames accumulated; 1.5 samples per pixel) against the
+ * uniform march it replaces at no smaller cost, 2 uniform steps per pixel
+ * (and 24, the talk's 3.6 ms slide), by DSSIM; the gap paired per seed. */
 #ifndef GTLAB_STUDIES_VLIGHT_H
 #define GTLAB_STUDIES_VLIGHT_H
 
@@ -44,6 +57,8 @@ typedef struct {
     int spp[VLIGHT_MAX_SPP];
     int blue_noise_size;
     double reference_rel_tol;
+    int cost_width, cost_height;  /* the equal-cost comparison's image */
+    double cost_reference_rel_tol;
 } vlight_request;
 
 typedef struct {
@@ -78,6 +93,16 @@ typedef struct {
     double blue_ratio[RAYMARCH_NOISE_COUNT], blue_ratio_se[RAYMARCH_NOISE_COUNT];
     double blue_blurred_ratio[RAYMARCH_NOISE_COUNT], blue_blurred_ratio_se[RAYMARCH_NOISE_COUNT];
     double ns_per_pixel_sample;                     /* the ray-march, one thread */
+    /* blue's single-frame blurred relative RMSE minus each noise's at 3 spp, mean of the per-seed gaps */
+    double blue_blurred_gap[RAYMARCH_NOISE_COUNT], blue_blurred_gap_se[RAYMARCH_NOISE_COUNT];
+    /* the 3-spp frame-0 error's periodogram peak ratio per noise, and each over blue's (per-seed ratios) */
+    double peak_ratio[RAYMARCH_NOISE_COUNT], peak_ratio_se[RAYMARCH_NOISE_COUNT];
+    double peak_over_blue[RAYMARCH_NOISE_COUNT], peak_over_blue_se[RAYMARCH_NOISE_COUNT];
+    /* equal cost at cost_width x cost_height: the talk's configuration (accumulated), uniform 2 and 24 steps */
+    int cost_pixels;
+    double cost_reference_seconds;
+    vlight_error cost_talk, cost_uniform2, cost_uniform24;
+    double cost_dssim_gap, cost_dssim_gap_se; /* DSSIM(talk) - DSSIM(uniform 2), per seed */
 } vlight_result;
 
 vlight_request vlight_default_request(study_quality quality);

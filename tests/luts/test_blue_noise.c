@@ -7,13 +7,19 @@
  *    n^2), so its triangular remap has the triangle's CDF; low energy below
  *    the cut-off (rings 1 .. 6 below 1/10 of white) and more than white at
  *    the top (rings 20 .. 32);
+ *  - the periodogram's peak ratio: a cosine of frequency (3, 0) puts all
+ *    the power into two bins, (N^2 - 1) / 2 exactly; white noise's largest
+ *    of ~N^2 / 2 exponential values is near ln(N^2 / 2) + 0.58 ~ 8.2 (held
+ *    within [4, 20]); blue noise stays within that too (no structure);
  *  - deterministic: the same seed gives the same bits, another seed other
  *    bits; channel c of a 4-channel texture holds the ranks of
  *    blue_noise_channel_seed(seed, c);
  *  - bad sizes and channel counts refused. */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/vec3.h" /* M_PI */
 #include "luts/blue_noise.h"
 #include "metrics/dither_metrics.h"
 #include "realtime/dither.h"
@@ -90,6 +96,25 @@ static void check_determinism(const blue_noise_texture *t)
     blue_noise_free(&again), blue_noise_free(&other), blue_noise_free(&four);
 }
 
+static void check_spectrum_peak(const blue_noise_texture *t)
+{
+    static double v[N * N];
+    double ratio = 0.0;
+    for (int i = 0; i < N * N; ++i)
+        v[i] = cos(2.0 * M_PI * 3.0 * (i % N) / N);
+    CHECK(dither_spectrum_peak_ratio(v, N, &ratio, NULL) == 0);
+    CHECK_NEAR(ratio, (N * N - 1) / 2.0, 1e-6 * N * N);
+    for (int i = 0; i < N * N; ++i)
+        v[i] = blue_noise_uniform(7, i);
+    CHECK(dither_spectrum_peak_ratio(v, N, &ratio, NULL) == 0);
+    CHECK_MSG(ratio > 4.0 && ratio < 20.0, "white noise peak ratio %g", ratio);
+    for (int i = 0; i < N * N; ++i)
+        v[i] = t->values[i];
+    CHECK(dither_spectrum_peak_ratio(v, N, &ratio, NULL) == 0);
+    CHECK_MSG(ratio < 20.0, "blue noise peak ratio %g", ratio);
+    CHECK(dither_spectrum_peak_ratio(v, 1, &ratio, NULL) != 0);
+}
+
 int main(void)
 {
     blue_noise_texture t, bad;
@@ -98,6 +123,7 @@ int main(void)
     CHECK(blue_noise_build(N, 1, 11, &t, &e) == 0);
     check_blue_noise(&t);
     check_determinism(&t);
+    check_spectrum_peak(&t);
     CHECK(blue_noise_build(4, 1, 1, &bad, &e) != 0 && blue_noise_build(N, 5, 1, &bad, &e) != 0);
     blue_noise_free(&t);
     return check_report("test_blue_noise");

@@ -107,6 +107,7 @@ static void check_ao_decals(const char *dir)
     for (int v = 0; v < AO_DECAL_VIEWS; ++v) {
         CHECK_MSG(r.rows[0].outlier_share[v] <= 0.01, "exact sphere, view %d: %g", v, r.rows[0].outlier_share[v]);
         CHECK_NEAR(r.rows[0].rmse[v], r.rows[1].rmse[v], 1e-6); /* the sphere is above every floor point's horizon */
+        CHECK_MSG(r.quilez_exact_worst[v] < 1e-5, "Quilez vs exact %.3g", r.quilez_exact_worst[v]); /* pointwise */
         CHECK(r.rows[4].rmse[v] < r.rows[3].rmse[v] && r.rows[3].rmse[v] < r.rows[2].rmse[v]);
     }
     /* the refit is identified (inside its bounds, with standard errors) and beats the published decal held out */

@@ -2,7 +2,9 @@
  * on a small request. The jittered ray-march's error falls with the samples,
  * accumulation lowers it, no noise does not change over frames, 128 uniform
  * steps beat 3, the shadow map's floor falls with its size, the talk's
- * configuration improves with accumulation; the image strip and the plot
+ * configuration improves with accumulation; Bayer's error spectrum is
+ * peaked against white's; at equal cost 24 uniform steps beat 2 and the
+ * gap is the talk's DSSIM minus 2 steps'; the image strip and the plot
  * data are written; results do not depend on the thread count; bad requests
  * are refused. */
 #include <math.h>
@@ -17,6 +19,7 @@ static vlight_request small_request(void)
     vlight_request rq = vlight_default_request(QUALITY_PREVIEW);
     rq.width = rq.height = 32;
     rq.seeds = 2, rq.frames = 6, rq.blue_noise_size = 32;
+    rq.cost_width = 64, rq.cost_height = 48;
     rq.spp_count = 3;
     int spp[3] = {1, 3, 16};
     memcpy(rq.spp, spp, sizeof spp);
@@ -39,6 +42,15 @@ static void check_numbers(const vlight_result *r)
     CHECK(r->talk[1].rmse < r->talk_single[1].rmse && r->talk_spp[1] == 6);
     CHECK(r->blue_ratio[RAYMARCH_NOISE_WHITE] > 0.0 && isfinite(r->blue_blurred_ratio[RAYMARCH_NOISE_IGN]));
     CHECK(r->ns_per_pixel_sample > 0.0);
+    /* structure: Bayer's 8x8 tile piles its error into a few frequencies, white noise spreads it */
+    CHECK_MSG(r->peak_ratio[RAYMARCH_NOISE_BAYER] > 3.0 * r->peak_ratio[RAYMARCH_NOISE_WHITE], "peaks %.3g vs %.3g",
+              r->peak_ratio[RAYMARCH_NOISE_BAYER], r->peak_ratio[RAYMARCH_NOISE_WHITE]);
+    CHECK(fabs(r->peak_over_blue[RAYMARCH_NOISE_BLUE] - 1.0) < 1e-12);
+    CHECK(fabs(r->blue_blurred_gap[RAYMARCH_NOISE_BLUE]) < 1e-12 && isfinite(r->blue_blurred_gap[RAYMARCH_NOISE_WHITE]));
+    /* equal cost, on the 64x48 image: 24 uniform steps beat 2; the gap is the talk's DSSIM minus 2 steps' */
+    CHECK(r->cost_pixels > 1000 && r->cost_pixels <= 64 * 48);
+    CHECK(r->cost_uniform24.dssim < r->cost_uniform2.dssim && r->cost_uniform24.rmse < r->cost_uniform2.rmse);
+    CHECK(fabs(r->cost_dssim_gap - (r->cost_talk.dssim - r->cost_uniform2.dssim)) < 1e-12);
 }
 
 int main(void)
@@ -60,7 +72,10 @@ int main(void)
         snprintf(path, sizeof path, "%s/%s/%s", dir, VLIGHT_DIR, files[i]);
         CHECK_MSG(file_exists(path), "%s not written", path);
     }
-    rq.seeds = 0;
+    CHECK(r1.cost_dssim_gap == r2.cost_dssim_gap && r1.peak_ratio[RAYMARCH_NOISE_IGN] == r2.peak_ratio[RAYMARCH_NOISE_IGN]);
+    rq.cost_width = 1;
+    CHECK(vlight_study(&two, &rq, &r1, &e) != 0);
+    rq = small_request(), rq.seeds = 0;
     CHECK(vlight_study(&two, &rq, &r1, &e) != 0);
     return check_report("studies_vlight");
 }
