@@ -9,6 +9,7 @@
 
 #include "cli/cli.h"
 #include "cli/cli_options.h"
+#include "scene/builtin_scene_family.h"
 #include "scene/builtin_scenes.h"
 #include "scene/gltf_reader.h"
 #include "scene/gltf_writer.h"
@@ -38,6 +39,8 @@ static int scene_list(int argc, char **argv)
         putchar('\n');
         builtin_scene_describe(stdout, builtin_scene_at(i));
     }
+    putchar('\n');
+    family_describe(stdout);
     return EXIT_OK;
 }
 

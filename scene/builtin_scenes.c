@@ -9,6 +9,7 @@
 
 #include "scene/builtin_scene_ao_decals.h"
 #include "scene/builtin_scene_aa_thin.h"
+#include "scene/builtin_scene_family.h"
 #include "scene/quad_mesh.h"
 
 #include <math.h>
@@ -519,9 +520,12 @@ int builtin_scene_build(const char *name, scene *s, gt_error *e)
     char subject[sizeof s->name];
     snprintf(subject, sizeof subject, "builtin:%s", name);
     const builtin_scene *b = builtin_scene_find(name);
-    if (!b)
+    int kind;
+    uint32_t seed;
+    int family = !b && family_member_parse(name, &kind, &seed);
+    if (!b && !family)
         return gt_error_set(e, subject, "unknown built-in scene (try 'gtlab scene list')");
-    if (b->build(s) != 0) {
+    if (family ? family_member_build(kind, seed, s) != 0 : b->build(s) != 0) {
         scene_free(s);
         return gt_error_set(e, subject, "out of memory");
     }
