@@ -20,4 +20,9 @@
  * |log error| that changes by less cannot be told apart. */
 #define CLAIM_VISIBLE_LOG_LUMINANCE 0.01
 
+/* One CIEDE2000 unit: about the just-noticeable difference between two
+ * colours seen side by side, so a graded colour that moves by less than
+ * this from the exact grade cannot be told from it. */
+#define CLAIM_VISIBLE_DE00 1.0
+
 #endif
