@@ -8,6 +8,9 @@
 #include "studies/best_fit_normals.h"
 
 /* Adds the section and its claims rows; -1 (e set) if a figure could not be made. */
+/* The four claims rows of the talk's "Storage techniques breakdown" from the
+ * exact and sampled cell counts (a NULL table ignores them). */
+void normals_add_claims(claims_table *t, const normals_result *r);
 int normals_section(report_context *ctx, const normals_result *r, gt_error *e);
 
 #endif

@@ -34,4 +34,9 @@
  * relative RMSE of a lit image below it changes no pixel visibly on average. */
 #define CLAIM_WEBER_FRACTION 0.01
 
+/* One CIEDE2000 unit: about the just-noticeable difference between two
+ * colours seen side by side, so a graded colour that moves by less than
+ * this from the exact grade cannot be told from it. */
+#define CLAIM_VISIBLE_DE00 1.0
+
 #endif

@@ -1,9 +1,11 @@
 /* The colour-grading LUT section (color_grading_section.h). */
 #include "report/color_grading_section.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "report/claim_thresholds.h"
 #include "report/report_table.h"
 
 #define ROW grading_row
@@ -70,6 +72,46 @@ static double chart_max_de(const grading_row *rows, int n, const char *grade, in
     return 0.0;
 }
 
+static const claim_record kSixteenCubed = {
+    .talk = "Kaplanyan 2010 (CryENGINE 3)", .seed = "004", .section = "Color grading",
+    .quote = "After doing some experiments, we figured out that the size of **16x16x16** is more than enough for "
+             "the majority of color transformations.",
+    .setting = "all global colour transformations of a game screenshot (colour correction, contrast, brightness, "
+               "levels, selective colours, authored in Photoshop) baked into one 3-D LUT indexed by display "
+               "(gamma) values, applied on consoles by one hardware 3-D texture lookup",
+    .setting_match = CLAIM_SETTING_GTLAB,
+    .setting_note = "the talk's transformations are its artists' and unknown; gtlab grades five looks of its own "
+                    "(warm contrast, teal and orange, bleach bypass, cross-process curves, a clipped +1.5-stop "
+                    "exposure), baked at 16^3 into an sRGB-indexed RGBA8 LUT read trilinearly (the hardware path), "
+                    "on a photo-like chart and a Cornell-box render instead of game screenshots",
+    .reading = "for more than half of the colour transformations a grader applies, a 16^3 LUT reproduces the "
+               "exact grade with no visible colour error; the figure is the fraction of gtlab's looks whose "
+               "16^3 LUT keeps every pixel of the chart and the render within one CIEDE2000 unit, its s.e. that "
+               "of a fraction of so few looks (a claim about the majority of transformations is not decided by "
+               "one hard look).",
+    .form = CLAIM_RANGE, .low = 0.5 + 1e-9, .high = INFINITY, .tolerance_source = CLAIM_TOLERANCE_VISIBILITY,
+    .tolerance = "a look counts as enough when its largest dE00 is below one CIEDE2000 unit (CLAIM_VISIBLE_DE00); "
+                 "the claim holds when more than half of the looks are"};
+
+void color_grading_add_claim(claims_table *t, const grading_row *rows, int n)
+{
+    int looks = 0, enough = 0;
+    for (int i = 0; i < n; ++i)
+        if (rows[i].size == 16 && strcmp(rows[i].grade, "identity") != 0) {
+            ++looks;
+            enough += rows[i].image[0].max_de < CLAIM_VISIBLE_DE00 && rows[i].image[2].max_de < CLAIM_VISIBLE_DE00;
+        }
+    if (!looks)
+        return;
+    /* The s.e. of a binomial fraction, with Laplace's (k + 1)/(n + 2) so that
+     * 0 of n or n of n looks is never exact. */
+    double p = (double)enough / looks, laplace = (enough + 1.0) / (looks + 2.0);
+    claims_table_add(t, &kSixteenCubed, p, sqrt(laplace * (1.0 - laplace) / looks),
+                     "fraction of %d looks (%d enough) whose 16^3 sRGB-indexed RGBA8 trilinear LUT keeps max dE00 "
+                     "< %.0f on the chart and the render; s.e. binomial over the looks",
+                     looks, enough, CLAIM_VISIBLE_DE00);
+}
+
 static void render_findings(report_context *ctx, const grading_row *gpu, int n, const grading_row *tet, int n_tet)
 {
     char yes[512], no[512], yes32[512], no32[512];
@@ -93,11 +135,6 @@ static void render_findings(report_context *ctx, const grading_row *gpu, int n, 
                    chart_max_de(tet, n_tet, "clipped exposure +1.5", 32),
                    chart_max_de(tet, n_tet, "clipped exposure +1.5", 64), chart_max_de(tet, n_tet, "bleach bypass", 16),
                    chart_max_de(tet, n_tet, "bleach bypass", 32), chart_max_de(tet, n_tet, "bleach bypass", 64));
-    claims_table_add_unreviewed_figure(ctx->claims, "Kaplanyan 2010, CryENGINE 3, colour grading",
-                            "a 16x16x16 LUT proved to be enough (for the majority of colour transformations)",
-                            "fraction of the study's five looks with max dE00 < 1 on chart and render, 16^3 sRGB RGBA8 "
-                            "trilinear",
-                            looks ? (double)count / looks : 0.0, 0.0, 0.5 + 1e-9, 1.0);
 }
 
 /* The worst chart dE00 over the five looks of one variant at size N. */
@@ -145,6 +182,7 @@ int color_grading_section(report_context *ctx, const grading_result *r, gt_error
     report_rows(ctx->doc, NULL, columns, COLUMN_COUNT, gpu, sizeof gpu[0], n);
     report_rows(ctx->doc, NULL, columns, COLUMN_COUNT, tet, sizeof tet[0], n_tet);
     render_findings(ctx, gpu, n, tet, n_tet);
+    color_grading_add_claim(ctx->claims, gpu, n);
     render_space_finding(ctx, r);
     report_rows(NULL, cJSON_AddArrayToObject(ctx->summary, "color_grading"), columns, COLUMN_COUNT, r->rows,
                 sizeof r->rows[0], r->row_count);

@@ -7,6 +7,10 @@
 #include "report/report_context.h"
 #include "studies/color_grading.h"
 
+/* The claims row "16^3 is enough for the majority of colour transformations"
+ * from the rows of the GPU path (sRGB-indexed, RGBA8, trilinear); a NULL
+ * table ignores it. */
+void color_grading_add_claim(claims_table *t, const grading_row *rows, int n);
 int color_grading_section(report_context *ctx, const grading_result *r, gt_error *e);
 
 #endif

@@ -7,6 +7,9 @@
 #include "report/report_context.h"
 #include "studies/hdr_precision.h"
 
+/* The three claims rows (the equal-precision point, the two lower bounds);
+ * a NULL table ignores them. */
+void hdr_precision_add_claims(claims_table *t, const hdr_precision_result *r);
 int hdr_precision_section(report_context *ctx, const hdr_precision_result *r, gt_error *e);
 
 #endif

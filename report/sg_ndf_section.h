@@ -8,6 +8,10 @@
 #include "report/report_context.h"
 #include "studies/sg_ndf.h"
 
+/* The claims rows of the talk's "~7 lobes for anisotropic Ward": one per Ward
+ * material with a checked 7-lobe fit within the threshold; a paragraph in
+ * ctx's report for each other Ward material. */
+void sg_ndf_claim_rows(report_context *ctx, const sg_ndf_result *r);
 /* Adds the section to ctx's report, summary.json and claims; -1 (e set) if
  * the plot could not be made. */
 int sg_ndf_section(report_context *ctx, const sg_ndf_result *r, gt_error *e);
