@@ -24,9 +24,10 @@ enum { T_NONE, T_FXAA, T_TAA, T_EDGE, T_CHECKER };
 enum { IN_PLAIN, IN_HALTON, IN_EDGE, IN_CORNER, INPUTS };
 enum { STRIP = 4, HALTON_PERIOD = 8 };
 
-const char *const aa_temporal_technique_names[AA_T_TECHNIQUES] = {"no AA", "FXAA 3.11", "TAA (accumulating)",
-                                                                  "edge TAA (talk)", "checkerboard (talk)"};
-static const char *const short_names[AA_T_TECHNIQUES] = {"none", "fxaa", "taa", "edge_taa", "checkerboard"};
+const char *const aa_temporal_technique_names[AA_T_ROWS] = {"no AA",           "FXAA 3.11",
+                                                            "TAA (accumulating)", "edge TAA (talk)",
+                                                            "checkerboard (talk)", "checkerboard 2x (talk, 2x2 box)"};
+static const char *const short_names[AA_T_ROWS] = {"none", "fxaa", "taa", "edge_taa", "checkerboard", "checkerboard_2x"};
 const char *const aa_temporal_path_names[AA_T_PATHS] = {"static", "pan"};
 
 aa_temporal_request aa_temporal_default_request(study_quality quality)
@@ -54,14 +55,20 @@ typedef struct {
     int frames;
 } score_sums;
 
+enum { TRUTH_STRIP = AA_T_ROWS }; /* strip[TRUTH_STRIP]: the truth's */
+
 struct aa_work {
-    int width, height;
+    int width, height, rows; /* rows: outputs kept, AA_T_ROWS in the study, AA_T_TECHNIQUES in aa_work */
     size_t px;
-    frame_buffers in[INPUTS];
-    float *truth, *truth16, *prev_truth, *out[AA_T_TECHNIQUES], *prev_out[AA_T_TECHNIQUES];
-    float *sharp, *plain, *prev_sharp, *samples, *xy, *luma_a, *luma_b, *strip[AA_T_TECHNIQUES + 1];
-    float *ssim_map, *dssim_sum[AA_T_TECHNIQUES]; /* a frame's SSIM map; each technique's per-pixel DSSIM summed */
-    checkerboard_grid grid, prev_grid;
+    frame_buffers in[INPUTS], in2x; /* in2x: the corners at 2W x 2H (the study) */
+    float *truth, *truth16, *prev_truth, *out[AA_T_ROWS], *prev_out[AA_T_ROWS], *full2x;
+    float *sharp, *plain, *prev_sharp, *samples, *xy, *luma_a, *luma_b, *strip[AA_T_ROWS + 1];
+    float *ssim_map, *dssim_sum[AA_T_ROWS]; /* a frame's SSIM map; each row's per-pixel DSSIM summed */
+    /* per pixel over the scored frames: squared error, squared flicker and
+     * squared error where disoccluded (summed over RGB), and the count of
+     * disoccluded values */
+    float *err_sq[AA_T_ROWS], *flicker_sq[AA_T_ROWS], *ghost_sq[AA_T_ROWS], *ghost_n;
+    checkerboard_grid grid, prev_grid, grid2x, prev_grid2x;
     double seconds[AA_T_TECHNIQUES]; /* time spent in each technique */
 };
 typedef aa_work work;
@@ -77,20 +84,26 @@ static int work_alloc(work *w, int width, int height, int with_truth)
 {
     memset(w, 0, sizeof *w);
     w->width = width, w->height = height, w->px = (size_t)width * height;
+    w->rows = with_truth ? AA_T_ROWS : AA_T_TECHNIQUES;
     int ok = 1;
     for (int i = 0; i < INPUTS; ++i)
         ok = ok && frame_buffers_alloc(&w->in[i], width, height) == 0;
     float **three[] = {&w->truth, &w->truth16, &w->prev_truth, &w->sharp, &w->plain, &w->prev_sharp};
     for (size_t i = 0; i < sizeof three / sizeof three[0]; ++i)
         *three[i] = floats(3 * w->px, &ok);
-    for (int t = 0; t < AA_T_TECHNIQUES; ++t)
+    for (int t = 0; t < w->rows; ++t)
         w->out[t] = floats(3 * w->px, &ok), w->prev_out[t] = floats(3 * w->px, &ok);
-    for (int t = 0; t <= AA_T_TECHNIQUES; ++t)
+    for (int t = 0; t <= AA_T_ROWS; ++t)
         w->strip[t] = floats(3 * STRIP * w->px, &ok);
-    if (with_truth)
+    if (with_truth) {
         w->samples = floats(3 * 64 * w->px, &ok), w->xy = floats(2 * 64 * w->px, &ok);
+        ok = ok && frame_buffers_alloc(&w->in2x, 2 * width, 2 * height) == 0;
+        w->full2x = floats(12 * w->px, &ok), w->ghost_n = floats(w->px, &ok);
+        for (int t = 0; t < AA_T_ROWS; ++t)
+            w->err_sq[t] = floats(w->px, &ok), w->flicker_sq[t] = floats(w->px, &ok), w->ghost_sq[t] = floats(w->px, &ok);
+    }
     w->luma_a = floats(w->px, &ok), w->luma_b = floats(w->px, &ok), w->ssim_map = floats(w->px, &ok);
-    for (int t = 0; t < AA_T_TECHNIQUES; ++t)
+    for (int t = 0; t < w->rows; ++t)
         w->dssim_sum[t] = floats(w->px, &ok);
     return ok ? 0 : -1;
 }
@@ -99,15 +112,19 @@ static void work_free(work *w)
 {
     for (int i = 0; i < INPUTS; ++i)
         frame_buffers_free(&w->in[i]);
-    float *all[] = {w->truth, w->truth16, w->prev_truth, w->sharp, w->plain, w->prev_sharp, w->samples, w->xy,
-                    w->luma_a, w->luma_b, w->ssim_map};
+    frame_buffers_free(&w->in2x);
+    float *all[] = {w->truth, w->truth16, w->prev_truth, w->sharp, w->plain,    w->prev_sharp, w->samples,
+                    w->xy,    w->luma_a,  w->luma_b,     w->ssim_map, w->full2x, w->ghost_n};
     for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i)
         free(all[i]);
-    for (int t = 0; t < AA_T_TECHNIQUES; ++t)
+    for (int t = 0; t < AA_T_ROWS; ++t) {
         free(w->out[t]), free(w->prev_out[t]), free(w->dssim_sum[t]);
-    for (int t = 0; t <= AA_T_TECHNIQUES; ++t)
+        free(w->err_sq[t]), free(w->flicker_sq[t]), free(w->ghost_sq[t]);
+    }
+    for (int t = 0; t <= AA_T_ROWS; ++t)
         free(w->strip[t]);
     checkerboard_grid_free(&w->grid), checkerboard_grid_free(&w->prev_grid);
+    checkerboard_grid_free(&w->grid2x), checkerboard_grid_free(&w->prev_grid2x);
 }
 
 static void to_display(float *rgb, size_t values)
@@ -192,6 +209,39 @@ static int run_techniques(int k, int threads, work *w)
     return swap_history(w);
 }
 
+/* The mean of each 2 x 2 block of a 2W x 2H RGB image into W x H: the
+ * checkerboard at twice the resolution on the display's footprint. */
+static void box_down(const float *full, int width, int height, float *out)
+{
+    for (int j = 0; j < height; ++j)
+        for (int i = 0; i < width; ++i)
+            for (int c = 0; c < 3; ++c) {
+                const float *a = full + 3 * ((size_t)(2 * j) * 2 * width + 2 * i) + c, *b = a + 3 * 2 * (size_t)width;
+                out[3 * ((size_t)j * width + i) + c] = 0.25f * (a[0] + a[3] + b[0] + b[3]);
+            }
+}
+
+/* The checkerboard at 2W x 2H on frame k (its own corner render, history
+ * and rejection at that resolution) into w->out[AA_T_CHECKER_2X] at W x H. */
+static int run_checker_2x(const embree_scene *es, const camera *now, const camera *prev, int k, int threads, work *w)
+{
+    const frame_lighting light = frame_lighting_default();
+    const float corner[2] = {-0.5f, -0.5f};
+    camera c = *now, p = prev ? *prev : *now;
+    c.width *= 2, c.height *= 2, p.width *= 2, p.height *= 2;
+    frames_render(es, &c, prev ? &p : NULL, &light, corner, threads, &w->in2x);
+    to_display(w->in2x.rgb, 12 * w->px);
+    checkerboard_settings cs = checkerboard_default_settings();
+    checkerboard_grid_free(&w->grid2x);
+    if (checkerboard_grid_build(&cs, w->in2x.rgb, c.width, c.height, k, threads, &w->grid2x) != 0 ||
+        checkerboard_resolve(&cs, &w->grid2x, k ? &w->prev_grid2x : NULL, w->in2x.motion, threads, w->full2x) != 0)
+        return -1;
+    box_down(w->full2x, w->width, w->height, w->out[AA_T_CHECKER_2X]);
+    checkerboard_grid g = w->grid2x;
+    w->grid2x = w->prev_grid2x, w->prev_grid2x = g;
+    return 0;
+}
+
 static double rmse(const float *a, const float *b, size_t values)
 {
     double s = 0.0;
@@ -228,8 +278,8 @@ static int dssim(work *w, const float *got, const float *truth, double *out, flo
 static void paired_dssim(const work *w, aa_temporal_row *rows)
 {
     float *diff = malloc(w->px * sizeof(float)), *valid = malloc(w->px * sizeof(float));
-    for (int a = 0; diff && valid && a < AA_T_TECHNIQUES; ++a)
-        for (int b = 0; b < AA_T_TECHNIQUES; ++b) {
+    for (int a = 0; diff && valid && a < w->rows; ++a)
+        for (int b = 0; b < w->rows; ++b) {
             for (size_t p = 0; p < w->px; ++p) {
                 diff[p] = w->dssim_sum[a][p] - w->dssim_sum[b][p];
                 valid[p] = isnan(diff[p]) ? 0.0f : 1.0f;
@@ -243,7 +293,8 @@ static void paired_dssim(const work *w, aa_temporal_row *rows)
     free(diff), free(valid);
 }
 
-/* Flicker and ghosting sums of technique t at frame k >= 1. */
+/* Flicker and ghosting sums of row t at frame k >= 1, and its per-pixel
+ * sums (squared error, flicker, ghosting; the disoccluded count with t = 0). */
 static void temporal_sums(const work *w, int t, score_sums *s)
 {
     const unsigned char *disoccluded = w->in[IN_PLAIN].disoccluded;
@@ -253,16 +304,62 @@ static void temporal_sums(const work *w, int t, score_sums *s)
             double change = ((double)w->out[t][v] - w->prev_out[t][v]) - ((double)w->truth[v] - w->prev_truth[v]);
             double error = (double)w->out[t][v] - w->truth[v];
             s->flicker_sq += change * change, ++s->flicker_n;
-            if (disoccluded[p])
+            w->err_sq[t][p] += (float)(error * error), w->flicker_sq[t][p] += (float)(change * change);
+            if (disoccluded[p]) {
                 s->ghost_sq += error * error, ++s->ghost_n;
+                w->ghost_sq[t][p] += (float)(error * error), w->ghost_n[p] += t == 0 ? 1.0f : 0.0f;
+            }
         }
 }
 
-static int score_frame(work *w, int k, score_sums sums[AA_T_TECHNIQUES], aa_temporal_row *rows, gt_error *e)
+/* The RMS over the values of row a minus row b's, from per-pixel sums of
+ * squares sa, sb over n[p] values each (n NULL: `count` each), with the
+ * delta method's standard error: R = sqrt(S / N) moves by dS / (2 N R),
+ * so R_a - R_b's error is that of the mean over the M pixels holding values
+ * of x_p = (M / N) (sa_p / (2 R_a) - sb_p / (2 R_b)), clustered over
+ * 8 x 8 blocks. Nothing (mean 0, no blocks) when no pixel holds a value. */
+static cluster_mean rms_gap(const work *w, const float *sa, const float *sb, const float *n, double count, float *x)
 {
-    for (int t = 0; t < AA_T_TECHNIQUES; ++t) {
+    double a = 0.0, b = 0.0, values = 0.0;
+    size_t m = 0;
+    for (size_t p = 0; p < w->px; ++p) {
+        double np = n ? n[p] : count;
+        a += sa[p], b += sb[p], values += np, m += np > 0.0;
+    }
+    cluster_mean out = {0.0, 0.0, 0, 0};
+    if (m == 0 || values <= 0.0)
+        return out;
+    double ra = sqrt(a / values), rb = sqrt(b / values);
+    double ka = ra > 0.0 ? 0.5 / ra : 0.0, kb = rb > 0.0 ? 0.5 / rb : 0.0, scale = (double)m / values;
+    for (size_t p = 0; p < w->px; ++p)
+        x[p] = (float)(scale * (ka * sa[p] - kb * sb[p]));
+    if (cluster_mean_compute(x, n, w->width, w->height, CLUSTER_MEAN_SIDE, &out) == 0)
+        out.mean = ra - rb;
+    return out;
+}
+
+/* Every row's RMSE, flicker and ghosting minus every other's on the path,
+ * over `frames` scored frames. */
+static void paired_rms(const work *w, int frames, aa_temporal_row *rows)
+{
+    float *x = malloc(w->px * sizeof(float));
+    double count = 3.0 * frames;
+    for (int a = 0; x && a < w->rows; ++a)
+        for (int b = 0; b < w->rows; ++b) {
+            rows[a].rmse_minus[b] = rms_gap(w, w->err_sq[a], w->err_sq[b], NULL, count, x);
+            rows[a].flicker_minus[b] = rms_gap(w, w->flicker_sq[a], w->flicker_sq[b], NULL, count, x);
+            rows[a].ghost_minus[b] = rms_gap(w, w->ghost_sq[a], w->ghost_sq[b], w->ghost_n, 0.0, x);
+        }
+    free(x);
+}
+
+static int score_frame(work *w, int k, score_sums sums[AA_T_ROWS], aa_temporal_row *rows, gt_error *e)
+{
+    for (int t = 0; t < w->rows; ++t) {
         double d64, d16, r64 = rmse(w->out[t], w->truth, 3 * w->px);
         rows[t].rmse_frame[k] = r64;
+        if (k >= 2)
+            rows[t].settle = fmax(rows[t].settle, rmse(w->out[t], w->prev_out[t], 3 * w->px));
         if (k < AA_T_WARMUP)
             continue;
         if (dssim(w, w->out[t], w->truth, &d64, w->dssim_sum[t], e) != 0 ||
@@ -314,8 +411,8 @@ static int write_figures(const char *dir, int p, const work *w, gt_error *e)
 {
     char name[128];
     snprintf(name, sizeof name, "temporal_%s_truth_strip", aa_temporal_path_names[p]);
-    int rc = write_png(dir, name, w->strip[AA_T_TECHNIQUES], NULL, STRIP * w->width, w->height, e);
-    for (int t = 0; t < AA_T_TECHNIQUES && rc == 0; ++t) {
+    int rc = write_png(dir, name, w->strip[TRUTH_STRIP], NULL, STRIP * w->width, w->height, e);
+    for (int t = 0; t < w->rows && rc == 0; ++t) {
         snprintf(name, sizeof name, "temporal_%s_%s_strip", aa_temporal_path_names[p], short_names[t]);
         rc = write_png(dir, name, w->strip[t], NULL, STRIP * w->width, w->height, e);
         snprintf(name, sizeof name, "temporal_%s_%s_error", aa_temporal_path_names[p], short_names[t]);
@@ -328,20 +425,20 @@ static int write_figures(const char *dir, int p, const work *w, gt_error *e)
 static void keep_frame(work *w, int k, int frames)
 {
     int slot = frames > 0 ? k - (frames - STRIP) : -1;
-    for (int t = 0; t < AA_T_TECHNIQUES; ++t) {
+    for (int t = 0; t < w->rows; ++t) {
         if (slot >= 0)
             strip_put(w, w->out[t], slot, w->strip[t]);
         memcpy(w->prev_out[t], w->out[t], 3 * w->px * sizeof(float));
     }
     if (slot >= 0)
-        strip_put(w, w->truth, slot, w->strip[AA_T_TECHNIQUES]);
+        strip_put(w, w->truth, slot, w->strip[TRUTH_STRIP]);
     if (frames > 0) /* a study: the truth was rendered */
         memcpy(w->prev_truth, w->truth, 3 * w->px * sizeof(float));
 }
 
-static void finish_rows(const score_sums sums[AA_T_TECHNIQUES], aa_temporal_row *rows)
+static void finish_rows(const score_sums sums[AA_T_ROWS], aa_temporal_row *rows)
 {
-    for (int t = 0; t < AA_T_TECHNIQUES; ++t) {
+    for (int t = 0; t < AA_T_ROWS; ++t) {
         const score_sums *s = &sums[t];
         int n = s->frames > 0 ? s->frames : 1;
         rows[t].rmse = s->rmse / n, rows[t].dssim = s->dssim / n, rows[t].rmse16 = s->rmse16 / n;
@@ -368,17 +465,22 @@ static int run_path(const study_context *ctx, const aa_temporal_request *rq, con
                     const camera *cam, int p, work *w, aa_temporal_row *rows, aa_temporal_truth *truth, gt_error *e)
 {
     camera_path path = make_path(cam, p);
-    score_sums sums[AA_T_TECHNIQUES];
+    score_sums sums[AA_T_ROWS];
     double tsum[3] = {0.0, 0.0, 0.0};
     memset(sums, 0, sizeof sums);
-    for (int t = 0; t < AA_T_TECHNIQUES; ++t)
-        memset(w->dssim_sum[t], 0, w->px * sizeof(float));
+    memset(w->ghost_n, 0, w->px * sizeof(float));
+    for (int t = 0; t < AA_T_ROWS; ++t) {
+        float *zero[] = {w->dssim_sum[t], w->err_sq[t], w->flicker_sq[t], w->ghost_sq[t]};
+        for (int z = 0; z < 4; ++z)
+            memset(zero[z], 0, w->px * sizeof(float));
+    }
     for (int k = 0; k < rq->frames; ++k) {
         camera now = camera_path_at(&path, k), before = camera_path_at(&path, k > 0 ? k - 1 : 0);
         render_truth(es, &now, 8, rq->seed, ctx->threads, w, w->truth); /* same strata every frame: a */
         render_truth(es, &now, 4, rq->seed + 1u, ctx->threads, w, w->truth16); /* static truth has no change */
         render_inputs(es, &now, k > 0 ? &before : NULL, k, ctx->threads, w);
-        if (run_techniques(k, ctx->threads, w) != 0)
+        if (run_techniques(k, ctx->threads, w) != 0 ||
+            run_checker_2x(es, &now, k > 0 ? &before : NULL, k, ctx->threads, w) != 0)
             return gt_error_set(e, "temporal anti-aliasing", "out of memory");
         if (score_frame(w, k, sums, rows, e) != 0)
             return -1;
@@ -387,6 +489,7 @@ static int run_path(const study_context *ctx, const aa_temporal_request *rq, con
     }
     finish_rows(sums, rows);
     paired_dssim(w, rows);
+    paired_rms(w, rows[0].frames, rows);
     int n = rq->frames - AA_T_WARMUP;
     truth->truth16_rmse = tsum[0] / n, truth->truth_change = sqrt(tsum[1] / n), truth->disoccluded = tsum[2] / n;
     return 0;
@@ -405,12 +508,11 @@ static int study_scene(const study_context *ctx, const aa_temporal_request *rq, 
         aa_temporal_row *rows = &out->rows[out->row_count];
         aa_temporal_truth *truth = &out->truth[out->truth_count++];
         *truth = (aa_temporal_truth){spec, aa_temporal_path_names[p], 0.0, 0.0, 0.0};
-        for (int t = 0; t < AA_T_TECHNIQUES; ++t)
-            {
+        for (int t = 0; t < AA_T_ROWS; ++t) {
             memset(&rows[t], 0, sizeof rows[t]);
             rows[t].scene = spec, rows[t].path = aa_temporal_path_names[p], rows[t].technique = aa_temporal_technique_names[t];
         }
-        out->row_count += AA_T_TECHNIQUES;
+        out->row_count += AA_T_ROWS;
         rc = run_path(ctx, rq, &es, &cam, p, w, rows, truth, e);
         if (rc == 0 && spec == rq->scenes[0])
             rc = write_figures(dir, p, w, e);

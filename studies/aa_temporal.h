@@ -12,13 +12,25 @@
  *                 Halton (2, 3) jitter of period 8;
  *   edge TAA      the talk's 2-frame edge-sample TAA (realtime/taa_edge.h);
  *   checkerboard  the talk's corner checkerboard (realtime/checkerboard.h),
- *                 half the samples a frame.
+ *                 half the samples a frame;
+ *   checkerboard 2x  the same at twice the width and height (the talk's
+ *                 2160p checkerboard beside its 1080p TAA: twice the
+ *                 samples a frame per screen area of the edge TAA), shown
+ *                 on the W x H display by a 2 x 2 box (the display's
+ *                 footprint); a study row only (AA_T_ROWS), not one of
+ *                 aa_work's techniques.
  * Scores (frames from AA_T_WARMUP on, so every technique has its history):
  * RMSE and DSSIM per frame against the 64- and 16-sample truths, their
  * means; flicker, the RMS over pixels and frames of (o_k - o_{k-1}) -
  * (t_k - t_{k-1}), the frame-to-frame change the truth does not have;
  * ghosting, the RMSE over the pixels disoccluded since the previous frame
- * (frames_render.h's exact mask), where reprojected history is wrong. */
+ * (frames_render.h's exact mask), where reprojected history is wrong;
+ * settle, on the static path the largest RMS change o_k - o_{k-1} over
+ * frames k >= 2 (0 when the output is final after two frames). Each of
+ * RMSE, flicker and ghosting also as this row's minus every other's on the
+ * same path with a standard error: the difference of the two RMS values,
+ * its error from the per-pixel sums linearised (delta method) and
+ * clustered over 8x8-pixel blocks (metrics/cluster_mean.h). */
 #ifndef GTLAB_STUDIES_AA_TEMPORAL_H
 #define GTLAB_STUDIES_AA_TEMPORAL_H
 
@@ -29,6 +41,8 @@
 #include "studies/study.h"
 
 enum { AA_T_TECHNIQUES = 5, AA_T_PATHS = 2, AA_T_MAX_SCENES = 2, AA_T_MAX_FRAMES = 64, AA_T_WARMUP = 4 };
+/* The study's rows per path: the techniques, then the checkerboard at 2x. */
+enum { AA_T_CHECKER_2X = AA_T_TECHNIQUES, AA_T_ROWS = AA_T_TECHNIQUES + 1 };
 
 typedef struct {
     int width, height, frames;
@@ -43,11 +57,15 @@ typedef struct {
     double rmse16, dssim16; /* against the 16-sample truth */
     double flicker;         /* RMS of the change the truth does not have */
     double ghost_rmse;      /* RMSE over disoccluded pixels (0 if none) */
+    double settle;          /* largest RMS of o_k - o_{k-1} over k >= 2 */
     double rmse_frame[AA_T_MAX_FRAMES];
     int frames; /* scored (after the warm-up) */
     /* this technique's DSSIM minus each other's on the same path, per pixel
      * averaged over the scored frames, with its 8x8-block standard error */
-    cluster_mean dssim_minus[AA_T_TECHNIQUES];
+    cluster_mean dssim_minus[AA_T_ROWS];
+    /* the same for RMSE, flicker and ghosting (RMS differences, delta-method
+     * standard errors over 8x8 blocks) */
+    cluster_mean rmse_minus[AA_T_ROWS], flicker_minus[AA_T_ROWS], ghost_minus[AA_T_ROWS];
 } aa_temporal_row;
 
 typedef struct {
@@ -60,11 +78,11 @@ typedef struct {
 typedef struct {
     aa_temporal_request request;
     int row_count, truth_count;
-    aa_temporal_row rows[AA_T_MAX_SCENES * AA_T_PATHS * AA_T_TECHNIQUES];
+    aa_temporal_row rows[AA_T_MAX_SCENES * AA_T_PATHS * AA_T_ROWS];
     aa_temporal_truth truth[AA_T_MAX_SCENES * AA_T_PATHS];
 } aa_temporal_result;
 
-extern const char *const aa_temporal_technique_names[AA_T_TECHNIQUES];
+extern const char *const aa_temporal_technique_names[AA_T_ROWS];
 extern const char *const aa_temporal_path_names[AA_T_PATHS];
 
 /* Preview: 160 x 120, 12 frames; production 384 x 288, 24 frames; builtin:aa-thin. */
