@@ -62,9 +62,9 @@ static const claim_record kAnalytic = {
                     "image's resolution",
     .reading = "on the terrain's rays the published HeightFog() gives single scattering's in-scattered light L "
                "within what could be seen (largest relative error below 1%)",
-    .form = CLAIM_RANGE, .low = 0.0, .high = CLAIM_VISIBLE_LOG_LUMINANCE,
+    .form = CLAIM_RANGE, .low = 0.0, .high = CLAIM_WEBER_FRACTION,
     .tolerance_source = CLAIM_TOLERANCE_VISIBILITY,
-    .tolerance = "a 1% change of luminance (CLAIM_VISIBLE_LOG_LUMINANCE), as the largest relative error of L"};
+    .tolerance = "a 1% change of luminance (CLAIM_WEBER_FRACTION), as the largest relative error of L"};
 
 /* The same for the published code on every ray a camera near the ground sees. */
 static const claim_record kEveryRay = {
@@ -78,9 +78,9 @@ static const claim_record kEveryRay = {
     .reading = "the talk's words are about the model (its slide's formula); this row tests its published code",
     .stronger_reading = "the published HeightFog() code, with its max(1e-2, ...) clamp, gives that solution on every "
                         "ray a camera near the ground sees, upward rays (mountains, sky) included",
-    .form = CLAIM_RANGE, .low = 0.0, .high = CLAIM_VISIBLE_LOG_LUMINANCE,
+    .form = CLAIM_RANGE, .low = 0.0, .high = CLAIM_WEBER_FRACTION,
     .tolerance_source = CLAIM_TOLERANCE_VISIBILITY,
-    .tolerance = "a 1% change of luminance (CLAIM_VISIBLE_LOG_LUMINANCE), as the largest relative error of L"};
+    .tolerance = "a 1% change of luminance (CLAIM_WEBER_FRACTION), as the largest relative error of L"};
 
 /* The regimes of the table whose camera is near the ground (20 m). */
 static int near_ground(const char *regime)

@@ -18,10 +18,10 @@ static const claim_record kSun = {
                     "resolution",
     .reading = "with the talk's Newton step Decima's radiance is visibly closer to the Monte Carlo reference than with "
                "Karis's point, on the sun at grazing angles (mean |log error|, paired over configurations)",
-    .form = CLAIM_BETTER, .margin = CLAIM_VISIBLE_LOG_LUMINANCE,
+    .form = CLAIM_BETTER, .margin = CLAIM_WEBER_FRACTION,
     .tolerance_source = CLAIM_TOLERANCE_TALK_COMPARISON,
     .tolerance = "the talk's comparison (with against without the maximization), by more than a 1% change of "
-                 "luminance (CLAIM_VISIBLE_LOG_LUMINANCE)"};
+                 "luminance (CLAIM_WEBER_FRACTION)"};
 
 static void sun_json(const sphere_sun_result *s, cJSON *json)
 {

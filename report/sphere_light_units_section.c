@@ -20,10 +20,10 @@ static const claim_record kNormalisation = {
                     "held-out distribution of lights; the talk's lights in metres are not given",
     .reading = "with the published normalisation Decima's sphere light is visibly closer to the reference than "
                "without it (mean |log error| over held-out configurations, paired)",
-    .form = CLAIM_BETTER, .margin = CLAIM_VISIBLE_LOG_LUMINANCE,
+    .form = CLAIM_BETTER, .margin = CLAIM_WEBER_FRACTION,
     .tolerance_source = CLAIM_TOLERANCE_TALK_COMPARISON,
     .tolerance = "the talk's comparison (with against without the adjustment), by more than a 1% change of "
-                 "luminance (CLAIM_VISIBLE_LOG_LUMINANCE)"};
+                 "luminance (CLAIM_WEBER_FRACTION)"};
 
 static void reading_row(report *doc, cJSON *rows, const sphere_reading_row *r)
 {
