@@ -10,6 +10,7 @@
 
 #include "core/atomic_file.h"
 #include "core/json_check.h"
+#include "core/run_inputs.h"
 #include "scene/builtin_scenes.h"
 #include "studies/screen_shader_score.h"
 
@@ -115,7 +116,8 @@ static int member_string(const reader *r, const cJSON *o, const char *key, const
     return v && !cJSON_IsString(v) ? fail(r, where, "'%s' must be a string", key) : 0;
 }
 
-/* A file that must exist and be a regular file. */
+/* A file that must exist and be a regular file: an input of the run
+ * (core/run_inputs.h), which no output may replace. */
 static int existing_file(const reader *r, const char *where, const char *value, char *out, size_t size)
 {
     struct stat st;
@@ -123,7 +125,12 @@ static int existing_file(const reader *r, const char *where, const char *value, 
         return -1;
     if (stat(out, &st) != 0)
         return fail(r, where, "%s: %s", out, strerror(errno));
-    return S_ISREG(st.st_mode) ? 0 : fail(r, where, "%s: not a regular file", out);
+    if (!S_ISREG(st.st_mode))
+        return fail(r, where, "%s: not a regular file", out);
+    char given_as[STUDY_SCENE_PATH_MAX];
+    snprintf(given_as, sizeof given_as, "%s: %s:", r->path, where);
+    run_inputs_note(out, given_as);
+    return 0;
 }
 
 /* "gltf": a camera index (a whole number) or a camera name (a string). */
