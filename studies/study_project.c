@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 
 #include "core/atomic_file.h"
+#include "core/input_file.h"
 #include "core/json_check.h"
 #include "core/run_inputs.h"
 #include "scene/builtin_scenes.h"
@@ -46,20 +47,9 @@ static int fail_again(const reader *r, const char *where)
 /* The whole file, NUL-terminated (free()); NULL with e set. */
 static char *read_text(const char *path, size_t *length, gt_error *e)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return gt_error_set(e, path, "cannot open: %s", strerror(errno)), NULL;
-    char *text = malloc(PROJECT_FILE_MAX + 1);
-    size_t n = text ? fread(text, 1, PROJECT_FILE_MAX, f) : 0;
-    int too_long = text && !feof(f);
-    fclose(f);
-    if (!text || too_long) {
-        free(text);
-        return gt_error_set(e, path, text ? "project file larger than 1 MiB" : "out of memory"), NULL;
-    }
-    text[n] = '\0';
-    *length = n;
-    return text;
+    char *text;
+    return input_file_read(path, PROJECT_FILE_MAX, "project file larger than 1 MiB", &text, length, e) == 0 ? text
+                                                                                                          : NULL;
 }
 
 /* The JSON gate, then cJSON; the root must be an object. */
@@ -125,8 +115,8 @@ static int existing_file(const reader *r, const char *where, const char *value, 
         return -1;
     if (stat(out, &st) != 0)
         return fail(r, where, "%s: %s", out, strerror(errno));
-    if (!S_ISREG(st.st_mode))
-        return fail(r, where, "%s: not a regular file", out);
+    if (input_file_check(out, NULL, r->e) != 0) /* a folder, a device, a FIFO: said so */
+        return fail_again(r, where);
     char given_as[STUDY_SCENE_PATH_MAX];
     snprintf(given_as, sizeof given_as, "%s: %s:", r->path, where);
     run_inputs_note(out, given_as);

@@ -47,7 +47,7 @@ cases=(
   "render-camera-sidecar|cam|out.camera.json|-|render ao --scene builtin:plane --camera @IN@ $small -o out.exr"
   "render-checkpoint|cam|out.checkpoint.exr|-|render ao --scene builtin:plane --camera @IN@ $small -o out.exr"
   "render-scene|scene.glb|s.glb|-|render ao --scene @IN@ $small -o @OUT@"
-  "render-environment|exr|env.exr|-|render specular-occlusion --scene builtin:corner --environment @IN@ $small -o @OUT@"
+  "render-environment|exr|env.exr|-|render env-diffuse --scene builtin:plane --albedo 0.5 --environment @IN@ $small -o @OUT@"
   "render-frames|scene.glb|s.glb|-|render frames --scene @IN@ --frames 1 -o @OUT@"
   "merge|exr|a.exr|-|merge @IN@ exr2.exr -o @OUT@"
   "merge-second|exr|a.exr|-|merge exr2.exr @IN@ -o @OUT@"
