@@ -15,9 +15,9 @@
  * openexr_encode.h and openexr_decode.h: initialise (or update) a pipeline
  * per chunk, point its channels at our planes, choose the default routines,
  * run. */
+#define _POSIX_C_SOURCE 200809L /* pread */
 #include "core/exr_io.h"
 
-#define _POSIX_C_SOURCE 200809L /* pread */
 #include <openexr.h>
 #include <errno.h>
 #include <stdint.h>
