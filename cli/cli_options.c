@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 
 #include "cli/cli.h"
+#include "core/run_inputs.h"
 
 enum { MAX_OPTIONS = 96, HELP_COLUMN = 20 };
 
@@ -113,6 +114,30 @@ static int check_required(const cli_command *cmd, void *const *dest, int n)
     return 0;
 }
 
+/* Every option value that is no output, and every argument, as an input of
+ * the run (those naming no file are left out by run_inputs_note). */
+static void note_input(const cli_option *o, const char *text)
+{
+    char option[64];
+    if (o && (o->writes || o->kind == CLI_KIND_FLAG))
+        return;
+    if (o)
+        snprintf(option, sizeof option, "--%s", o->name);
+    run_inputs_note(text, o ? option : NULL);
+}
+
+/* No output option names one of the run's inputs. */
+static int check_outputs(const cli_command *cmd, void *const *dest, int n)
+{
+    gt_error e;
+    for (int i = 0; i < n; ++i) {
+        const cli_option *o = &cmd->options[i];
+        if (o->writes && o->kind == CLI_KIND_STRING && run_inputs_check_output(*(const char **)dest[i], &e) != 0)
+            return cli_fail(&e), -1;
+    }
+    return 0;
+}
+
 int cli_options_parse(const cli_command *cmd, void *const *dest, int argc, char **argv, int *status)
 {
     struct option longs[MAX_OPTIONS + 2];
@@ -130,14 +155,17 @@ int cli_options_parse(const cli_command *cmd, void *const *dest, int argc, char 
             return cli_usage_error(cmd->command), 1;
         if (parse_value(&cmd->options[i], dest[i], optarg) != 0)
             return 1;
+        note_input(&cmd->options[i], optarg);
     }
     if (cmd->arguments) {
         cli_arguments *args = dest[n];
         *args = (cli_arguments){argv + optind, argc - optind};
+        for (int k = optind; k < argc; ++k)
+            note_input(NULL, argv[k]);
     } else if (optind < argc) {
         return cli_failf(cmd->command, "unexpected argument '%s'", argv[optind]), 1;
     }
-    if (check_required(cmd, dest, n) != 0)
+    if (check_required(cmd, dest, n) != 0 || check_outputs(cmd, dest, n) != 0)
         return 1;
     *status = EXIT_OK;
     return 0;

@@ -41,6 +41,11 @@ typedef struct {
     double lo, hi;
     const char *(*choice)(int index); /* CLI_KIND_CHOICE: the name of each value */
     int required;
+    /* A file (or folder) the command writes: its value is no input, and
+     * must not be one of the run's inputs (core/run_inputs.h). Every other
+     * value, and every positional argument, that names an existing file is
+     * noted as an input. */
+    int writes;
     const char *help; /* may hold '\n': continuation lines are indented */
     /* CLI_KIND_CUSTOM: stores text's value in dest, or prints one line
      * ("gtlab: --option: problem") and returns -1. */
@@ -60,7 +65,9 @@ typedef struct {
 #define CLI_SWITCH(n, text) CLI_OPTION(CLI_KIND_SWITCH, n, "on|off", 0, 0, text)
 #define CLI_CUSTOM(n, v, parser, text) {.kind = CLI_KIND_CUSTOM, .name = n, .value = v, .parse = parser, .help = text}
 /* -o/--output: required (the table checks it) or not (the subcommand does). */
-#define CLI_OUTPUT(v, is_required, text) {.kind = CLI_KIND_STRING, .name = "output", .short_name = 'o', .value = v, .required = is_required, .help = text}
+#define CLI_OUTPUT(v, is_required, text) {.kind = CLI_KIND_STRING, .name = "output", .short_name = 'o', .value = v, .required = is_required, .writes = 1, .help = text}
+/* Another file the command writes (--heatmap F.png, --header F.h). */
+#define CLI_OUTPUT_FILE(n, v, text) {.kind = CLI_KIND_STRING, .name = n, .value = v, .writes = 1, .help = text}
 #define CLI_THREADS CLI_INT("threads", "T", 1, 1024, "worker threads (default: all cores); the result does not depend on it")
 #define CLI_OUTPUT_DIR CLI_OUTPUT("DIR", 1, "output folder (created if absent)")
 #define CLI_END {.kind = CLI_KIND_END}
@@ -93,7 +100,10 @@ int cli_list_add(void *list, const char *text);
 /* Parses argv (argv[0] is the subcommand) into dest[i] for options[i]
  * (then the cli_arguments, if the command takes positional arguments).
  * Returns 0 to go on; otherwise the subcommand returns *status: EXIT_OK
- * after --help, EXIT_USER_ERROR after a one-line error on stderr. */
+ * after --help, EXIT_USER_ERROR after a one-line error on stderr. Every
+ * value naming an existing file, but those of outputs (`writes`), and every
+ * positional argument is noted as an input of the run (core/run_inputs.h);
+ * an output that is one of them is then refused. */
 int cli_options_parse(const cli_command *cmd, void *const *dest, int argc, char **argv, int *status);
 
 /* Prints the --help text built from the table; each value option whose help

@@ -97,7 +97,7 @@ static int approx_height_fog(int argc, char **argv)
         CLI_CHOICE("weather", "W", weather_name, 2, "sunny or dense"),
         CLI_DOUBLE("sun-elevation", "DEG", -90, 90, "the sun above the horizon"),
         CLI_CHOICE("model", "M", model_name, HEIGHT_FOG_MODELS, "published, clamp-fixed, sun- or sky-attenuated"),
-        CLI_REQUIRED_STRING("output", "out.exr", "fog.L.R/G/B and fog.T.R/G/B"), CLI_END};
+        CLI_OUTPUT("out.exr", 1, "fog.L.R/G/B and fog.T.R/G/B"), CLI_END};
     static const cli_command command = {"approx height-fog",
         "The Decima talk's analytic HeightFog() (realtime/height_fog.h) per pixel: as published, with its\n"
         "clamp fixed, with the sun attenuated by the fog, or the sun and the sky (docs/decisions.md).", options,

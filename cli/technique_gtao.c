@@ -16,6 +16,7 @@
 #include "cli/technique.h"
 #include "core/atomic_file.h"
 #include "core/reference_schema.h"
+#include "core/run_inputs.h"
 #include "core/threads.h"
 #include "realtime/gtao.h"
 #include "report/gtao_checks_section.h"
@@ -138,6 +139,9 @@ static int fit_gtao_params(int argc, char **argv)
                           argc, argv, &status) != 0)
         return status;
     gt_error e;
+    run_inputs_note_folder(rq.refs_dir, "--refs"); /* the references are read from it */
+    if (run_inputs_check_output(output, &e) != 0)
+        return cli_fail(&e);
     static gtao_fit_result r;
     if (gtao_params_study(&rq, &r, &e) != 0)
         return cli_fail(&e);

@@ -26,9 +26,9 @@ static const cli_option fit_options[] = {
     CLI_OUTPUT("F", 0, "the JSON: coefficients, standard errors, covariance, RMSE and\n"
                "max error on the data, the talk's on the same data, LOO\n"
                "table, data used (files, scenes, albedos, counts, weights)"),
-    CLI_STRING("header", "F.h", "C header with the fitted functions (default: F without .json, .h)"),
-    CLI_STRING("hlsl", "F.hlsl", "HLSL GTAOMultiBounce with the new coefficients (default: .hlsl)"),
-    CLI_STRING("glsl", "F.glsl", "the same in GLSL (default: .glsl)"), CLI_END};
+    CLI_OUTPUT_FILE("header", "F.h", "C header with the fitted functions (default: F without .json, .h)"),
+    CLI_OUTPUT_FILE("hlsl", "F.hlsl", "HLSL GTAOMultiBounce with the new coefficients (default: .hlsl)"),
+    CLI_OUTPUT_FILE("glsl", "F.glsl", "the same in GLSL (default: .glsl)"), CLI_END};
 static const cli_command fit_command = {
     "fit multibounce",
     "Fits V'_d = max(V_d, ((a V_d + b) V_d + c) V_d) (GTAOMultiBounce, Jimenez et al. 2016)\n"

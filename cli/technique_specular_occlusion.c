@@ -130,7 +130,7 @@ static const cli_option fit_options[] = {
     CLI_CHOICE("cone", "C", cone_name, 2, "talk (a_s = theta_m, the sampled half-vector's angle, as\n"
                "the talk) or reflected (a_s = 2 theta_m, the cone of reflected\n"
                "directions holding the same share of the lobe; docs/decisions.md)"),
-    CLI_STRING("plot", "F.png", "the DSSIM-vs-u curve (gnuplot)"),
+    CLI_OUTPUT_FILE("plot", "F.png", "the DSSIM-vs-u curve (gnuplot)"),
     CLI_OUTPUT("F.json", 1, "u, its DSSIM, the DSSIM at the talk's u = 0.01, and the curve"), CLI_END};
 static const cli_command fit_command = {
     "fit aperture",

@@ -15,6 +15,7 @@
 #include "core/atomic_file.h"
 #include "core/output_set.h"
 #include "core/progress.h"
+#include "core/run_inputs.h"
 #include "core/threads.h"
 
 enum { STAGE_MAX = 64 };
@@ -120,6 +121,37 @@ static int check_inputs(const report_context *ctx, const int selected[STAGE_MAX]
     return 0;
 }
 
+/* No input of the run (the project and the files it names) is where the
+ * run writes: the output folder itself, the report's files, figures/ and
+ * each selected stage's folder; checked before any work (core/atomic_file.c
+ * refuses any other input at its write). */
+static int check_outputs(const report_context *ctx, const int selected[STAGE_MAX])
+{
+    static const char *const report_files[] = {"report.md", "report.html", "summary.json"};
+    const char *dir = ctx->study.output_dir;
+    char path[4096], what[128];
+    gt_error e;
+    if (run_inputs_check_output(dir, &e) != 0)
+        return cli_fail(&e), -1;
+    for (size_t i = 0; i < sizeof report_files / sizeof report_files[0]; ++i) {
+        snprintf(path, sizeof path, "%s/%s", dir, report_files[i]);
+        if (run_inputs_check_output(path, &e) != 0)
+            return cli_fail(&e), -1;
+    }
+    snprintf(path, sizeof path, "%s/figures", dir);
+    if (run_inputs_check_folder(path, "the report's figures are written there", &e) != 0)
+        return cli_fail(&e), -1;
+    for (int i = 0; i < stage_count; ++i) {
+        if (!selected[i] || !stages[i]->writes)
+            continue;
+        snprintf(path, sizeof path, "%s/%s", dir, stages[i]->writes);
+        snprintf(what, sizeof what, "the stage %s writes there", stages[i]->key);
+        if (run_inputs_check_folder(path, what, &e) != 0)
+            return cli_fail(&e), -1;
+    }
+    return 0;
+}
+
 static int run_stages(report_context *ctx, const int selected[STAGE_MAX])
 {
     gt_error e;
@@ -158,7 +190,7 @@ int verb_all(int argc, char **argv)
     int status;
     if (parse_options(argc, argv, &ctx, selected, &stage_list, &project, &status) != 0)
         return status;
-    if (check_inputs(&ctx, selected) != 0)
+    if (check_inputs(&ctx, selected) != 0 || check_outputs(&ctx, selected) != 0)
         return EXIT_USER_ERROR;
     if ((status = cli_make_output_dir(ctx.study.output_dir)) != 0)
         return status;

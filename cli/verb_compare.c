@@ -19,7 +19,7 @@ static const cli_option options[] = {
     CLI_FLAG("noise-floor", "also report the noise floor: the DSSIM between the\n"
              "means of the even- and odd-index samples of A (A must\n"
              "be a gtlab reference render), and of B if B is one"),
-    CLI_STRING("heatmap", "F.png", "write an error heatmap (OIIO colour map '" HEATMAP_COLOUR_MAP "', black\n"
+    CLI_OUTPUT_FILE("heatmap", "F.png", "write an error heatmap (OIIO colour map '" HEATMAP_COLOUR_MAP "', black\n"
                "outside the mask); full scale is the " HEATMAP_PERCENTILE_TEXT " percentile of\n"
                "the error inside the mask, and is printed"),
     CLI_CHOICE("heatmap-metric", "M", metric_name, 2, "abs: |A-B| per pixel (default); dssim: (1 - SSIM) / 2\n"

@@ -9,6 +9,7 @@
 #include "cli/technique.h"
 #include "core/atomic_file.h"
 #include "core/exr_io.h"
+#include "core/run_inputs.h"
 #include "raytracer/distributed_render.h"
 #include "raytracer/reference_render.h"
 #include "raytracer/render_checkpoint_files.h"
@@ -152,7 +153,8 @@ static int render(const render_options *o)
     if (atomic_file_check_writable(o->output, &e) != 0 || atomic_file_check_writable(camera_path, &e) != 0 ||
         distributed_begin(&e) != 0)
         return cli_fail(&e);
-    if (render_checkpoint_prepare(o->output, request.resume, checkpoint, sizeof checkpoint, &e) != 0)
+    if (render_checkpoint_prepare(o->output, request.resume, checkpoint, sizeof checkpoint, &e) != 0 ||
+        run_inputs_check_output(checkpoint, &e) != 0) /* the render writes it, then removes it */
         return distributed_is_writer() ? cli_fail(&e) : EXIT_USER_ERROR; /* every rank finds it: rank 0 says it */
     scene s;
     if (scene_load(o->scene, &s, &e) != 0)

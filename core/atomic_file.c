@@ -2,6 +2,7 @@
 #include "core/atomic_file.h"
 
 #include "core/output_set.h"
+#include "core/run_inputs.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -16,6 +17,8 @@ int atomic_file_begin(atomic_file *f, const char *path, gt_error *e)
         return gt_error_set(e, "gtlab", "no output path given");
     if (strlen(path) + 32 >= ATOMIC_PATH_MAX)
         return gt_error_set(e, path, "path too long");
+    if (run_inputs_check_output(path, e) != 0)
+        return -1;
     struct stat st;
     int exists = stat(path, &st) == 0;
     if (exists && S_ISDIR(st.st_mode))
@@ -37,6 +40,10 @@ int atomic_file_begin(atomic_file *f, const char *path, gt_error *e)
 
 int atomic_file_commit(atomic_file *f, gt_error *e)
 {
+    if (run_inputs_check_output(f->final_path, e) != 0) {
+        atomic_file_abort(f);
+        return -1;
+    }
     if (output_set_rename_into_place(f->temp_path, f->final_path) != 0) {
         int err = errno;
         atomic_file_abort(f);

@@ -5,7 +5,9 @@
  * interruption by a signal none (core/output_set.h: the files of one run are
  * also kept or removed together). An existing destination that is not a
  * regular file (a device such as /dev/null, a pipe, a socket) is refused,
- * never replaced. */
+ * never replaced, and so is an input of the run (core/run_inputs.h): an
+ * output that is the same file as one of the run's inputs, under whatever
+ * name or link. */
 #ifndef GTLAB_CORE_ATOMIC_FILE_H
 #define GTLAB_CORE_ATOMIC_FILE_H
 

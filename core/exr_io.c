@@ -15,15 +15,19 @@
  * openexr_encode.h and openexr_decode.h: initialise (or update) a pipeline
  * per chunk, point its channels at our planes, choose the default routines,
  * run. */
+#define _POSIX_C_SOURCE 200809L /* pread */
 #include "core/exr_io.h"
 
 #include <openexr.h>
+#include <errno.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "core/atomic_file.h"
+#include "core/input_file.h"
 
 /* Largest image accepted on read, in pixels: a corrupt header must not make
  * us allocate terabytes. */
@@ -38,6 +42,41 @@
 #else
 #define EXR_MAX_FLOATS ((int64_t)1 << 30)
 #endif
+
+/* The most bytes of pixels one stored byte can decode to, per compression
+ * (issue 41: a 3 KB header claiming 16384 x 8192 pixels made gtlab allocate
+ * 1.7 GB before the first chunk failed). A file of n bytes holds at most
+ * n times this of raw pixel data (its data window times each channel's
+ * bytes per sample), so a header claiming more is refused before anything
+ * is allocated. Each figure is an upper bound of the method's best case:
+ *   NONE   1      the pixels as they are
+ *   RLE    64     a run of 128 equal bytes is stored as 2 (count, value)
+ *   ZIP(S) 1032   deflate's limit: a 258-byte match in at least 2 bits
+ *   PIZ    410    Huffman with run codes: 256 equal 16-bit values in at
+ *                 least 1 + 1 + 8 bits (code, run code, run length)
+ *   PXR24  1376   floats cut to 24 bits (4/3), then deflate (1032)
+ *   B44(A) 11     a flat 4x4 block of halves (32 bytes) in 3 bytes
+ *   DWAA/B 66048  alpha-like channels: RLE (64), then deflate (1032)
+ * A compression OpenEXR adds later gets the largest figure until it is
+ * listed. The display window can be larger than the data window (its
+ * pixels outside are zeros, read from nothing): it is bounded by the
+ * largest figure, so no file of n bytes makes gtlab allocate more than
+ * about n * 66048 * 4 / (bytes per stored pixel) bytes. */
+#define EXR_MAX_EXPANSION_ANY INPUT_MAX_DECODE_RATIO
+static double exr_max_expansion(exr_compression_t c)
+{
+    switch (c) {
+    case EXR_COMPRESSION_NONE: return 1.0;
+    case EXR_COMPRESSION_RLE: return 64.0;
+    case EXR_COMPRESSION_ZIPS:
+    case EXR_COMPRESSION_ZIP: return 1032.0;
+    case EXR_COMPRESSION_PIZ: return 410.0;
+    case EXR_COMPRESSION_PXR24: return 1376.0;
+    case EXR_COMPRESSION_B44:
+    case EXR_COMPRESSION_B44A: return 11.0;
+    default: return EXR_MAX_EXPANSION_ANY;
+    }
+}
 
 /* OpenEXR reports problems through a callback, whose default prints to
  * stderr; library code must not print. The callback gets no pointer of ours
@@ -343,8 +382,41 @@ static int64_t channel_count(exr_const_context_t ctxt)
     return exr_get_channels(ctxt, 0, &list) == EXR_ERR_SUCCESS && list ? list->num_channels : 0;
 }
 
-/* Reads part 0 of an open file into img (which it initialises). */
-static int read_part(exr_const_context_t ctxt, const char *path, image *img, gt_error *e)
+/* The bytes one pixel takes in the file before compression: 2 per HALF
+ * channel, 4 per FLOAT or UINT. */
+static int64_t stored_bytes_per_pixel(exr_const_context_t ctxt)
+{
+    const exr_attr_chlist_t *list = NULL;
+    int64_t bytes = 0;
+    if (exr_get_channels(ctxt, 0, &list) == EXR_ERR_SUCCESS && list)
+        for (int c = 0; c < list->num_channels; ++c)
+            bytes += list->entries[c].pixel_type == EXR_PIXEL_HALF ? 2 : 4;
+    return bytes;
+}
+
+/* The header's windows against what a file of file_size bytes can hold
+ * (exr_max_expansion): 0, or -1 with e. */
+static int check_against_file_size(exr_const_context_t ctxt, const char *path, int64_t file_size, int64_t pixels,
+                                   int64_t data_pixels, gt_error *e)
+{
+    exr_compression_t compression = EXR_COMPRESSION_LAST_TYPE;
+    exr_get_compression(ctxt, 0, &compression);
+    const double per_pixel = (double)stored_bytes_per_pixel(ctxt), stored = (double)file_size;
+    const double ratio = exr_max_expansion(compression);
+    if ((double)data_pixels * per_pixel > stored * ratio)
+        return gt_error_set(e, path, "the header claims a data window of %lld pixels of %g bytes, more than a file of "
+                            "%lld bytes can hold (at most %g:1 for its compression): truncated or crafted",
+                            (long long)data_pixels, per_pixel, (long long)file_size, ratio);
+    if ((double)pixels * per_pixel > stored * EXR_MAX_EXPANSION_ANY)
+        return gt_error_set(e, path, "the header claims a display window of %lld pixels of %g bytes, more than a file "
+                            "of %lld bytes can describe: truncated or crafted", (long long)pixels, per_pixel,
+                            (long long)file_size);
+    return 0;
+}
+
+/* Reads part 0 of an open file of file_size bytes into img (which it
+ * initialises). */
+static int read_part(exr_const_context_t ctxt, const char *path, int64_t file_size, image *img, gt_error *e)
 {
     int parts = 0;
     exr_storage_t storage = EXR_STORAGE_LAST_TYPE;
@@ -371,6 +443,8 @@ static int read_part(exr_const_context_t ctxt, const char *path, image *img, gt_
                             "is larger than gtlab reads (%lld floats)", (long long)width, (long long)height,
                             (long long)data_width, (long long)data_height, (long long)channels,
                             (long long)EXR_MAX_FLOATS);
+    if (check_against_file_size(ctxt, path, file_size, width * height, data_width * data_height, e) != 0)
+        return -1;
     if (image_init(img, (int)width, (int)height) != 0)
         return gt_error_set(e, path, "out of memory");
     if (add_channels(ctxt, img, path, e) != 0 || read_string_attributes(ctxt, img, path, e) != 0)
@@ -385,9 +459,10 @@ static int read_part(exr_const_context_t ctxt, const char *path, image *img, gt_
     return 0;
 }
 
-/* Reads the file OpenEXR opens with `init` (from its path, or through
- * init's read functions) into img. */
-static int read_with(const exr_context_initializer_t *init, const char *path, image *img, gt_error *e)
+/* Reads the file of file_size bytes that init's read functions read into
+ * img. */
+static int read_with(const exr_context_initializer_t *init, const char *path, int64_t file_size, image *img,
+                     gt_error *e)
 {
     memset(img, 0, sizeof *img);
     exr_message[0] = '\0';
@@ -399,17 +474,63 @@ static int read_with(const exr_context_initializer_t *init, const char *path, im
     }
     /* The header parser may have reported problems it could live with. */
     exr_message[0] = '\0';
-    int result = read_part(ctxt, path, img, e);
+    int result = read_part(ctxt, path, file_size, img, e);
     exr_finish(&ctxt);
     if (result != 0)
         image_free(img);
     return result;
 }
 
+/* ------------------------------------------------------- reading a file */
+
+/* The file, opened by gtlab (core/input_file.h: a regular file, never a
+ * device or a FIFO) and read by OpenEXR through these callbacks. */
+typedef struct {
+    int fd;
+    int64_t size;
+} exr_file;
+
+/* OpenEXR's read callback (pread semantics: a short count at the end). */
+static int64_t file_read(exr_const_context_t ctxt, void *user_data, void *buffer, uint64_t size, uint64_t offset,
+                         exr_stream_error_func_ptr_t error_cb)
+{
+    const exr_file *f = user_data;
+    uint64_t done = 0;
+    while (done < size) {
+        ssize_t n = pread(f->fd, (char *)buffer + done, (size_t)(size - done), (off_t)(offset + done));
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n < 0) {
+            if (error_cb)
+                error_cb(ctxt, EXR_ERR_READ_IO, "cannot read: %s", strerror(errno));
+            return -1;
+        }
+        if (n == 0)
+            break;
+        done += (uint64_t)n;
+    }
+    return (int64_t)done;
+}
+
+static int64_t file_size(exr_const_context_t ctxt, void *user_data)
+{
+    (void)ctxt;
+    return ((const exr_file *)user_data)->size;
+}
+
 int exr_read(const char *path, image *img, gt_error *e)
 {
+    memset(img, 0, sizeof *img);
+    exr_file f;
+    if ((f.fd = input_file_open(path, &f.size, e)) < 0)
+        return -1;
     exr_context_initializer_t init = quiet_initializer();
-    return read_with(&init, path, img, e);
+    init.user_data = &f;
+    init.read_fn = file_read;
+    init.size_fn = file_size;
+    int rc = read_with(&init, path, f.size, img, e);
+    close(f.fd);
+    return rc;
 }
 
 /* ------------------------------------------------------- reading memory */
@@ -445,5 +566,5 @@ int exr_read_memory(const void *bytes, size_t size, const char *name, image *img
     init.user_data = &m;
     init.read_fn = memory_read;
     init.size_fn = memory_size;
-    return read_with(&init, name, img, e);
+    return read_with(&init, name, (int64_t)size, img, e);
 }

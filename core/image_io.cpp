@@ -17,6 +17,7 @@
 
 extern "C" {
 #include "core/atomic_file.h"
+#include "core/input_file.h"
 #include "core/image_io.h"
 }
 
@@ -237,6 +238,8 @@ extern "C" int image_colour_map_srgb(const char *map_name, int count, unsigned c
 
 extern "C" int image_read_description(const char *path, char *text, size_t size)
 {
+    if (input_file_check(path, nullptr, nullptr) != 0)
+        return -1;
     auto in = OIIO::ImageInput::open(path);
     if (!in)
         return -1;
@@ -307,10 +310,17 @@ void rgb_channels(const ImageSpec &spec, int index[3])
 extern "C" int image_read_rgb_float(const char *path, int *width, int *height, float **rgb, gt_error *e)
 {
     *rgb = nullptr;
+    int64_t file_size = 0;
+    if (input_file_check(path, &file_size, e) != 0) // a device or a FIFO would hang OpenImageIO's open
+        return -1;
     auto in = OIIO::ImageInput::open(path);
     if (!in)
         return gt_error_set(e, path, "cannot read image: %s", one_line(OIIO::geterror()).c_str());
     const ImageSpec spec = in->spec();
+    if ((double)spec.image_bytes(true) > (double)file_size * INPUT_MAX_DECODE_RATIO)
+        return gt_error_set(e, path, "the header claims %d x %d pixels of %d channels, more than a file of %lld bytes "
+                            "can hold: truncated or crafted", spec.width, spec.height, spec.nchannels,
+                            (long long)file_size);
     if (spec.nchannels < 1 || !valid_size(spec.width, spec.height))
         return gt_error_set(e, path, "not an image with pixels (%d x %d, %d channels)", spec.width, spec.height,
                             spec.nchannels);

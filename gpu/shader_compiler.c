@@ -7,6 +7,7 @@
 #include <string.h>
 #include <strings.h>
 
+#include "core/input_file.h"
 #include "core/isolated_call.h"
 
 gpu_source_language gpu_source_language_of(const char *path)
@@ -187,21 +188,13 @@ void gpu_spirv_free(gpu_spirv *spirv)
 int gpu_read_source(const char *path, char **text, gt_error *e)
 {
     enum { MAX_BYTES = 4 << 20 };
-    *text = NULL;
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return gt_error_set(e, path, "cannot open the shader");
-    char *buffer = malloc(MAX_BYTES + 1);
-    size_t n = buffer ? fread(buffer, 1, MAX_BYTES + 1, f) : 0;
-    int failed = ferror(f);
-    fclose(f);
-    if (!buffer || failed || n > MAX_BYTES || memchr(buffer, '\0', n)) {
-        free(buffer);
-        return gt_error_set(e, path, "%s", !buffer ? "out of memory" : failed ? "cannot read the shader"
-                                           : n > MAX_BYTES ? "larger than 4 MiB: not a shader"
-                                                           : "holds a NUL byte: not a shader's text");
+    size_t n;
+    if (input_file_read(path, MAX_BYTES, "larger than 4 MiB: not a shader", text, &n, e) != 0)
+        return -1;
+    if (memchr(*text, '\0', n)) {
+        free(*text);
+        *text = NULL;
+        return gt_error_set(e, path, "holds a NUL byte: not a shader's text");
     }
-    buffer[n] = '\0';
-    *text = buffer;
     return 0;
 }

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "core/atomic_file.h"
+#include "core/input_file.h"
 #include "core/json_check.h"
 #include "core/hemisphere_sampling.h"
 
@@ -157,22 +158,13 @@ int camera_parse_json(const char *text, const char *what, camera *cam, gt_error 
 
 int camera_read_json(const char *path, camera *cam, gt_error *e)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return gt_error_set(e, path, "cannot open: %s", strerror(errno));
-    enum { max_size = 65536 };
-    char *text = malloc(max_size);
-    if (!text) {
-        fclose(f);
-        return gt_error_set(e, path, "out of memory");
-    }
-    size_t n = fread(text, 1, max_size - 1, f);
-    int too_long = !feof(f);
-    fclose(f);
-    text[n] = '\0';
+    enum { max_size = 65536 - 1 };
+    char *text;
+    size_t n;
+    if (input_file_read(path, max_size, "camera JSON larger than 64 KiB", &text, &n, e) != 0)
+        return -1;
     /* All n bytes: a NUL inside the file is an error, not the end. */
-    int rc = too_long ? gt_error_set(e, path, "camera JSON larger than 64 KiB")
-                      : camera_parse_json_bytes(text, n, path, cam, e);
+    int rc = camera_parse_json_bytes(text, n, path, cam, e);
     free(text);
     return rc;
 }

@@ -27,12 +27,16 @@
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <memory>
 #include <new>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 extern "C" {
+#include "core/input_file.h"
 #include "core/json_check.h"
 #include "scene/glb_container.h"
 #include "scene/gltf_json_prepass.h"
@@ -171,21 +175,29 @@ const char *type_name(int type)
     }
 }
 
-int read_whole_file(const char *path, std::vector<unsigned char> &bytes, gt_error *e)
+/* Largest glTF/GLB file gtlab reads: a GLB's length field is 32-bit and
+ * tinygltf takes the size as an unsigned int. */
+const size_t max_gltf_bytes = (size_t)UINT32_MAX;
+
+/* tinygltf's FileExists opens the file (fopen), which blocks on a FIFO. */
+bool named_file_exists(const std::string &path, void *) { return access(path.c_str(), F_OK) == 0; }
+
+/* tinygltf's ReadWholeFile for the buffers and images a .gltf names: only
+ * regular files (core/input_file.h), so a `"uri": "/dev/zero"` cannot grow
+ * gtlab without end, nor a FIFO hang it. */
+bool read_named_file(std::vector<unsigned char> *out, std::string *err, const std::string &path, void *)
 {
-    FILE *f = std::fopen(path, "rb");
-    if (!f)
-        return gt_error_set(e, path, "cannot open: %s", std::strerror(errno));
-    unsigned char chunk[1 << 16];
-    size_t n;
-    while ((n = std::fread(chunk, 1, sizeof chunk, f)) > 0)
-        bytes.insert(bytes.end(), chunk, chunk + n);
-    int failed = std::ferror(f);
-    int err = errno;
-    std::fclose(f);
-    if (failed)
-        return gt_error_set(e, path, "cannot read: %s", std::strerror(err));
-    return 0;
+    char *bytes;
+    size_t size;
+    gt_error e;
+    if (input_file_read(path.c_str(), max_gltf_bytes, "larger than 4 GiB", &bytes, &size, &e) != 0) {
+        if (err)
+            *err += e.message;
+        return false;
+    }
+    out->assign(bytes, bytes + size);
+    std::free(bytes);
+    return true;
 }
 
 /* Largest texture side gtlab decodes: a crafted header cannot make the
@@ -401,6 +413,8 @@ int parse_bytes(Loader &L, const unsigned char *bytes, size_t size, const std::s
     }
     tinygltf::TinyGLTF gltf;
     gltf.SetImageLoader(load_image, &L);
+    gltf.SetFsCallbacks({&named_file_exists, &tinygltf::ExpandFilePath, &read_named_file,
+                         &tinygltf::WriteWholeFile, nullptr});
     std::string err, warn;
     const unsigned int n = (unsigned int)size;
     bool ok = binary ? gltf.LoadBinaryFromMemory(&L.model, &err, &warn, bytes, n, base_dir)
@@ -908,7 +922,7 @@ int load_memory(const void *bytes, size_t size, const char *name, const char *ba
 
 using gltf_detail::directory_of;
 using gltf_detail::load_memory;
-using gltf_detail::read_whole_file;
+using gltf_detail::max_gltf_bytes;
 
 extern "C" int gltf_load_memory(const void *bytes, size_t size, const char *name, const char *base_dir, scene *s,
                                 gt_error *e)
@@ -922,10 +936,13 @@ static int load_file(const char *path, scene *s, gltf_report *report, const gltf
     std::memset(s, 0, sizeof *s);
     int rc;
     try {
-        std::vector<unsigned char> bytes;
-        rc = read_whole_file(path, bytes, e);
-        if (rc == 0)
-            rc = load_memory(bytes.data(), bytes.size(), path, directory_of(path).c_str(), s, report, choice, e);
+        char *bytes;
+        size_t size;
+        rc = input_file_read(path, max_gltf_bytes, "larger than 4 GiB: not a glTF file gtlab reads", &bytes, &size, e);
+        if (rc == 0) {
+            std::unique_ptr<char, void (*)(void *)> owned(bytes, std::free); /* freed on bad_alloc too */
+            rc = load_memory(bytes, size, path, directory_of(path).c_str(), s, report, choice, e);
+        }
     } catch (const std::bad_alloc &) {
         rc = gt_error_set(e, path, "out of memory");
     }

@@ -4,9 +4,11 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "core/exr_io.h"
 #include "core/reference_schema.h"
+#include "core/run_inputs.h"
 
 ss_camera approx_ss_camera(const camera *cam)
 {
@@ -24,10 +26,9 @@ static int load_camera(const char *path, const char *camera_path, const image *i
         return camera_parse_json(text, path, cam, e);
     char sidecar[4096];
     camera_sidecar_path(path, sidecar, sizeof sidecar);
-    FILE *f = fopen(sidecar, "rb");
-    if (!f)
+    if (access(sidecar, F_OK) != 0)
         return gt_error_set(e, path, "no camera: no gtlab.camera header, no %s; give --camera", sidecar);
-    fclose(f);
+    run_inputs_note(sidecar, "the camera of the G-buffer:"); /* an input too, though no option named it */
     return camera_read_json(sidecar, cam, e);
 }
 

@@ -7,6 +7,8 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "core/input_file.h"
+
 /* dlsym's void * as a function pointer (POSIX guarantees the conversion). */
 static void *symbol(void *handle, const char *name)
 {
@@ -23,6 +25,11 @@ int plugin_open(const char *path, gtlab_plugin *p, gt_error *e)
         snprintf(local, sizeof local, "./%s", path);
         load = local;
     }
+    /* A file that exists (not a library on the search path; a missing one
+     * gets dlopen's message) must be a regular one: dlopen of a FIFO would
+     * hang (core/input_file.h). */
+    if ((load != path || (strchr(path, '/') && access(path, F_OK) == 0)) && input_file_check(path, NULL, e) != 0)
+        return -1;
     p->handle = dlopen(load, RTLD_NOW | RTLD_LOCAL);
     if (!p->handle) {
         const char *why = dlerror();

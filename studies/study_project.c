@@ -9,7 +9,9 @@
 #include <sys/stat.h>
 
 #include "core/atomic_file.h"
+#include "core/input_file.h"
 #include "core/json_check.h"
+#include "core/run_inputs.h"
 #include "scene/builtin_scenes.h"
 #include "studies/screen_shader_score.h"
 
@@ -45,20 +47,9 @@ static int fail_again(const reader *r, const char *where)
 /* The whole file, NUL-terminated (free()); NULL with e set. */
 static char *read_text(const char *path, size_t *length, gt_error *e)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return gt_error_set(e, path, "cannot open: %s", strerror(errno)), NULL;
-    char *text = malloc(PROJECT_FILE_MAX + 1);
-    size_t n = text ? fread(text, 1, PROJECT_FILE_MAX, f) : 0;
-    int too_long = text && !feof(f);
-    fclose(f);
-    if (!text || too_long) {
-        free(text);
-        return gt_error_set(e, path, text ? "project file larger than 1 MiB" : "out of memory"), NULL;
-    }
-    text[n] = '\0';
-    *length = n;
-    return text;
+    char *text;
+    return input_file_read(path, PROJECT_FILE_MAX, "project file larger than 1 MiB", &text, length, e) == 0 ? text
+                                                                                                          : NULL;
 }
 
 /* The JSON gate, then cJSON; the root must be an object. */
@@ -115,7 +106,8 @@ static int member_string(const reader *r, const cJSON *o, const char *key, const
     return v && !cJSON_IsString(v) ? fail(r, where, "'%s' must be a string", key) : 0;
 }
 
-/* A file that must exist and be a regular file. */
+/* A file that must exist and be a regular file: an input of the run
+ * (core/run_inputs.h), which no output may replace. */
 static int existing_file(const reader *r, const char *where, const char *value, char *out, size_t size)
 {
     struct stat st;
@@ -123,7 +115,12 @@ static int existing_file(const reader *r, const char *where, const char *value, 
         return -1;
     if (stat(out, &st) != 0)
         return fail(r, where, "%s: %s", out, strerror(errno));
-    return S_ISREG(st.st_mode) ? 0 : fail(r, where, "%s: not a regular file", out);
+    if (input_file_check(out, NULL, r->e) != 0) /* a folder, a device, a FIFO: said so */
+        return fail_again(r, where);
+    char given_as[STUDY_SCENE_PATH_MAX];
+    snprintf(given_as, sizeof given_as, "%s: %s:", r->path, where);
+    run_inputs_note(out, given_as);
+    return 0;
 }
 
 /* "gltf": a camera index (a whole number) or a camera name (a string). */

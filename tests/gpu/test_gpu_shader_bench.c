@@ -23,6 +23,6 @@ int main(void)
     }
     r.shader = "no_such_shader.glsl";
     CHECK(shader_bench_run(&r, &b, &e) != 0);
-    CHECK_MSG(strstr(e.message, "no_such_shader.glsl: cannot open the shader") != NULL, "%s", e.message);
+    CHECK_MSG(strstr(e.message, "no_such_shader.glsl: cannot open: No such file or directory") != NULL, "%s", e.message);
     return check_report("test_gpu_shader_bench");
 }
