@@ -23,28 +23,28 @@ void report_introduce(report_context *ctx, const char *stage_list, const char *p
     report_findings_here(ctx->doc);
 }
 
-int report_write_summary(const report_context *ctx, gt_error *e)
+/* Writes text (malloc'd, freed here; NULL: out of memory) as DIR/name. */
+static int write_output_text(const report_context *ctx, const char *name, char *text, gt_error *e)
 {
     char path[4096];
-    snprintf(path, sizeof path, "%s/summary.json", ctx->study.output_dir);
-    char *text = cJSON_Print(ctx->summary);
+    snprintf(path, sizeof path, "%s/%s", ctx->study.output_dir, name);
     if (!text)
         return gt_error_set(e, path, "out of memory");
     int rc = atomic_write_text(path, text, e);
     free(text);
-    return rc != 0 ? rc : report_write_claims(ctx, e);
+    return rc;
+}
+
+int report_write_summary(const report_context *ctx, gt_error *e)
+{
+    if (write_output_text(ctx, "summary.json", cJSON_Print(ctx->summary), e) != 0)
+        return -1;
+    return report_write_claims(ctx, e);
 }
 
 int report_write_claims(const report_context *ctx, gt_error *e)
 {
     if (!ctx->claims || ctx->claims->count == 0)
         return 0;
-    char path[4096];
-    snprintf(path, sizeof path, "%s/claims.md", ctx->study.output_dir);
-    char *text = claims_table_markdown(ctx->claims);
-    if (!text)
-        return gt_error_set(e, path, "out of memory");
-    int rc = atomic_write_text(path, text, e);
-    free(text);
-    return rc;
+    return write_output_text(ctx, "claims.md", claims_table_markdown(ctx->claims), e);
 }
