@@ -15,4 +15,16 @@
  * errors smaller than this moves no pixel by a code value on average. */
 #define CLAIM_ONE_CODE_VALUE_8BIT_MSE (CLAIM_ONE_CODE_VALUE_8BIT * CLAIM_ONE_CODE_VALUE_8BIT)
 
+/* The DSSIM, (1 - SSIM) / 2, of a just noticeable difference: observers
+ * begin to tell a distorted image from its original near SSIM 0.95
+ * (Dosselmann and Yang, "Image quality assessment using the SSIM and the
+ * just noticeable difference paradigm", 2013), so a change of DSSIM below
+ * it is not a difference a viewer could see. */
+#define CLAIM_DSSIM_JUST_NOTICEABLE ((1.0 - 0.95) / 2.0)
+
+/* The contrast threshold of luminance discrimination at photopic levels
+ * (Weber's law: a change of about 1% of the luminance is just visible): a
+ * relative RMSE of a lit image below it changes no pixel visibly on average. */
+#define CLAIM_WEBER_FRACTION 0.01
+
 #endif
