@@ -14,7 +14,8 @@
  * noise floors (the even half of V'_d against the odd half). Performance: a
  * short multi-bounce benchmark (raytracer/multibounce_throughput.h).
  *
- * Writes <output>/multibounce/<scene>.exr and .camera.json, the fit's
+ * Writes <output>/multibounce/<scene>.exr and .camera.json (and the
+ * height-field reference <scene>_heightfield.exr at the same camera), the fit's
  * <output>/fits/multibounce.{json,h,hlsl,glsl}, and the plot data
  * <output>/figures/multibounce_{scatter,curves,coefficients}.dat. */
 #ifndef GTLAB_STUDIES_MULTIBOUNCE_H
@@ -200,8 +201,24 @@ typedef struct {
     double difference, difference_se;   /* rmse_gtao_input - rmse_reference_input; jackknife */
 } multibounce_gtao_row;
 
+/* "Agnostic to the source of the AO as long as it is ground truth": the
+ * talk's f fed two ground-truth V_d, the 3-D reference's (even-sample half)
+ * and the height-field reference's (rendered at the same camera with as
+ * many samples as that half: the limit of line-sweep and horizon AO). What f
+ * claims is the light the bounces add, so each source is scored on its own
+ * change, f(V_d) - V_d, against the 3-D truth's V'_d - V_d (odd half): RMS
+ * over every scene and albedo (each weighted equally), not V_d's own error. */
+typedef struct {
+    int spp;                             /* of the height-field reference */
+    double gain_rmse_3d, gain_rmse_hf;   /* RMS of (f(V_d) - V_d) - (V'_d - V_d)_truth */
+    double difference, difference_se;    /* gain_rmse_hf - gain_rmse_3d; jackknife over scenes */
+    double rmse_hf_v_d;                  /* the height field's V_d against the 3-D one (even half) */
+    double rmse_total_3d, rmse_total_hf; /* f(V_d) against V'_d: each source's whole error */
+} multibounce_agnostic;
+
 typedef struct {
     multibounce_gtao_row rows[MULTIBOUNCE_GTAO_PRESETS];
+    multibounce_agnostic agnostic;
 } multibounce_gtao_study;
 
 /* The model's premise, "neighbouring albedos ~ the albedo of the current
