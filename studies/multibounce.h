@@ -15,7 +15,7 @@
  * short multi-bounce benchmark (raytracer/multibounce_throughput.h).
  *
  * Writes <output>/multibounce/<scene>.exr and .camera.json (and the
- * height-field reference <scene>_heightfield.exr at the same camera), the fit's
+ * height-field reference at the same camera, multibounce/heightfield/<scene>.exr), the fit's
  * <output>/fits/multibounce.{json,h,hlsl,glsl}, and the plot data
  * <output>/figures/multibounce_{scatter,curves,coefficients}.dat. */
 #ifndef GTLAB_STUDIES_MULTIBOUNCE_H
@@ -28,6 +28,9 @@
 #include "studies/study.h"
 
 #define MULTIBOUNCE_STUDY_DIR "multibounce" /* the references, below the output folder */
+/* The height-field references at the same cameras, below the output folder
+ * (a folder of their own: MULTIBOUNCE_STUDY_DIR holds multi-bounce references only) */
+#define MULTIBOUNCE_HEIGHTFIELD_DIR MULTIBOUNCE_STUDY_DIR "/heightfield"
 #define MULTIBOUNCE_FIT_FILE "fits/multibounce.json"
 /* Plot data below <output>/figures (formats: multibounce_plot_data.c). */
 #define MULTIBOUNCE_SCATTER_DATA "multibounce_scatter.dat"

@@ -107,9 +107,9 @@ static int run_heightfield(const study_context *ctx, const multibounce_state *st
                            const camera *cam, int spp, agnostic_sums *sums, gt_error *e)
 {
     char dir[2048], path[4096], spec[128];
-    if (study_make_dir(ctx, MULTIBOUNCE_STUDY_DIR, dir, sizeof dir, e) != 0)
+    if (study_make_dir(ctx, MULTIBOUNCE_HEIGHTFIELD_DIR, dir, sizeof dir, e) != 0)
         return -1;
-    snprintf(path, sizeof path, "%s/%s_heightfield.exr", dir, scene);
+    snprintf(path, sizeof path, "%s/%s.exr", dir, scene);
     snprintf(spec, sizeof spec, "builtin:%s", scene);
     image hf;
     if (gtao_render_heightfield(ctx, spec, cam, spp, path, &hf, e) != 0)
