@@ -55,7 +55,7 @@ static const claim_record kClamp = {
                "inter-reflections only add light.",
     .stronger_reading = "the max is only a guard: a cubic of the talk's form held to f >= V_d and f(1) = 1 on the "
                         "whole (V_d, rho) square predicts held-out scenes as well as the unconstrained cubic with "
-                        "the max, to within one 8-bit code value of RMSE",
+                        "the max, to within one 8-bit code value of RMSE.",
     .form = CLAIM_AS_GOOD, .margin = CLAIM_ONE_CODE_VALUE_8BIT, .tolerance_source = CLAIM_TOLERANCE_VISIBILITY,
     .tolerance = "one code value of an 8-bit AO target (CLAIM_ONE_CODE_VALUE_8BIT) in RMSE"};
 

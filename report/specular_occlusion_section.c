@@ -364,7 +364,7 @@ static const claim_record kBc4Sixteen = {
     .setting = SO_SETTING, .setting_match = CLAIM_SETTING_GTLAB, .setting_note = SO_SETTING_NOTE,
     .reading = "V_s from a 16^3 BC4 table is as close (DSSIM) to the reference as from the 32^3 table, to within a "
                "just-noticeable difference.",
-    .stronger_reading = "against the float 32^3 table rather than the shipped 32^3 BC4 one",
+    .stronger_reading = "against the float 32^3 table rather than the shipped 32^3 BC4 one.",
     .form = CLAIM_AS_GOOD, .margin = CLAIM_DSSIM_JUST_NOTICEABLE, .tolerance_source = CLAIM_TOLERANCE_VISIBILITY,
     .tolerance = "the DSSIM of a just noticeable difference (CLAIM_DSSIM_JUST_NOTICEABLE, SSIM 0.95)"};
 
@@ -379,15 +379,15 @@ static void conclude_bc4(report_context *ctx, const so_study_result *r, const so
     report_paragraph(ctx->doc,
                      "The table as shipped (the talk: 32^3 BC4, and \"16^3 BC4 still acceptable\"): mean DSSIM "
                      "%.4f with 32^3 BC4 and %.4f with 16^3 BC4, against %.4f with the float 32^3 table; 16^3 BC4 "
-                     "costs %+.4f +- %.4f (paired over %d scene and roughness cases: %s at 95%%), against a "
+                     "costs %+.4f +- %.4f (paired over %d scenes: %s at 95%%), against a "
                      "just-noticeable DSSIM of %.3f; %s than the references' own noise floor (DSSIM %.4f between "
                      "their two halves, mean over the roughnesses).",
                      b32->mean_dssim, b16->mean_dssim, n->lut32->mean_dssim, cost->mean, cost->standard_error,
                      cost->cases, fabs(cost->mean) > CLAIM_Z * cost->standard_error ? "significant" : "not significant",
                      CLAIM_DSSIM_JUST_NOTICEABLE, fabs(cost->mean) < floor ? "smaller" : "larger", floor);
     claims_table_add(ctx->claims, &kBc4Sixteen, cost->mean, cost->standard_error,
-                     "DSSIM of the 16^3 BC4 table minus the float 32^3 table's, paired over %d scene and roughness "
-                     "cases",
+                     "DSSIM of the 16^3 BC4 table minus the float 32^3 table's, paired over %d scenes (each "
+                     "scene's mean over the roughnesses)",
                      cost->cases);
 }
 
