@@ -82,7 +82,7 @@ static void agnostic_section(report_context *ctx, const multibounce_study_result
         "screen-space and line-sweep AO; rendered at the reference's camera with %d samples per pixel, as many as "
         "that half). What f claims is the light the bounces add, so each source is scored on its own change: "
         "f(V_d) - V_d against the truth's V'_d - V_d (odd half), RMS over every scene and albedo, each weighted "
-        "equally; V_d's own error does not enter. RMSE of that change: %.4f with the 3-D V_d, %.4f with the "
+        "equally, so V_d's own error enters only through the slope of that change (below). RMSE of that change: %.4f with the 3-D V_d, %.4f with the "
         "height field's, a difference of %+.4f ± %.4f (jackknife over the %d scenes), against one 8-bit code "
         "value (%.4f). For scale: the height field's V_d is %.4f RMS from the 3-D one, and f(V_d) misses the 3-D "
         "V'_d by %.4f (3-D V_d) and %.4f (height field's), most of the latter the height field's own error. "
