@@ -1,11 +1,14 @@
 /* A scene's 3-D and height-field AO references; see gtao_scene_refs.h. */
 #include "studies/gtao_scene_refs.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "core/exr_io.h"
 #include "core/reference_schema.h"
+#include "raytracer/reference_render.h"
+#include "scene/scene_loaders.h"
 
 /* The 3-D reference's channels, or -1 with e naming the file. */
 static int bind_3d(gtao_scene_refs *s, const char *ref_path, gt_error *e)
@@ -83,4 +86,21 @@ gtao_params gtao_scene_params(const gtao_scene_refs *s, int preset)
     p.max_radius_px = (float)s->width;
     p.frames = 1;
     return p;
+}
+
+int gtao_render_heightfield(const study_context *ctx, const char *spec, const camera *cam, int spp,
+                            const char *path, image *hf, gt_error *e)
+{
+    scene s;
+    if (scene_load(spec, &s, e) != 0)
+        return -1;
+    reference_request req = {.quantity = QUANTITY_HEIGHTFIELD_AO,
+                             .sampling = {.spp = spp, .seed = 1, .threads = ctx->threads},
+                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
+    render_stats stats;
+    int rc = reference_render(&s, spec, cam, &req, hf, &stats, e);
+    scene_free(&s);
+    if (rc == 0 && (rc = exr_write(path, hf, e)) != 0)
+        image_free(hf);
+    return rc;
 }

@@ -10,6 +10,7 @@
 #include "core/image.h"
 #include "realtime/gtao.h"
 #include "studies/gbuffer_input.h"
+#include "studies/study.h"
 
 typedef struct {
     char scene[64];
@@ -37,5 +38,13 @@ void gtao_scene_refs_free(gtao_scene_refs *s);
  * the preset, radius 1e6, no falloff, screen radius the image width, one
  * frame. */
 gtao_params gtao_scene_params(const gtao_scene_refs *s, int preset);
+
+/* The height-field reference of scene `spec` at camera `cam` (shading
+ * normals, no distance limit, seed 1, spp samples per pixel) into hf,
+ * written to path (the gtao stage's <scene>_heightfield.exr, the
+ * multi-bounce study's "agnostic" source). Returns 0, or -1 with e (hf
+ * empty then). */
+int gtao_render_heightfield(const study_context *ctx, const char *spec, const camera *cam, int spp,
+                            const char *path, image *hf, gt_error *e);
 
 #endif

@@ -16,12 +16,11 @@
 #include "metrics/image_error.h"
 #include "metrics/noise_corrected.h"
 #include "metrics/ssim.h"
-#include "raytracer/reference_render.h"
 #include "realtime/hbao.h"
 #include "realtime/volumetric_obscurance.h"
 #include "studies/study_scenes.h"
-#include "scene/scene_loaders.h"
 #include "studies/gbuffer_input.h"
+#include "studies/gtao_scene_refs.h"
 
 const int gtao_convergence_steps[GTAO_CONVERGENCE_STEPS] = {2, 4, 8, 16};
 const int gtao_convergence_slices[GTAO_CONVERGENCE_SLICES] = {1, 2, 4, 8, 16};
@@ -216,25 +215,6 @@ static int write_heatmaps(const char *figures, const char *name, const scene_dat
     return heatmap(figures, "gtao_err_medium_vs_3d", name, d, medium, d->ref3d, e);
 }
 
-/* The height-field reference at the AO reference's camera and size, written
- * to path. */
-static int render_heightfield(const study_context *ctx, const char *spec, const camera *cam, int spp,
-                              const char *path, image *hf, gt_error *e)
-{
-    scene s;
-    if (scene_load(spec, &s, e) != 0)
-        return -1;
-    reference_request req = {.quantity = QUANTITY_HEIGHTFIELD_AO,
-                             .sampling = {.spp = spp, .seed = 1, .threads = ctx->threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
-    render_stats stats;
-    int rc = reference_render(&s, spec, cam, &req, hf, &stats, e);
-    scene_free(&s);
-    if (rc == 0 && (rc = exr_write(path, hf, e)) != 0)
-        image_free(hf);
-    return rc;
-}
-
 /* The two references of one scene: the 3-D one loaded with its G-buffer,
  * the height-field one rendered (and written to dir). */
 static int scene_references(const study_context *ctx, const char *refs_dir, const char *dir, const char *name,
@@ -246,7 +226,7 @@ static int scene_references(const study_context *ctx, const char *refs_dir, cons
     const char *spec = study_scene_spec(ctx, name);
     if (approx_load(ref_path, NULL, in, e) != 0)
         return -1;
-    if (render_heightfield(ctx, spec, &in->cam, spp, hf_path, hf, e) != 0) {
+    if (gtao_render_heightfield(ctx, spec, &in->cam, spp, hf_path, hf, e) != 0) {
         approx_input_free(in);
         return -1;
     }

@@ -179,7 +179,7 @@ static int study_fit(const study_context *ctx, const reference_request *req, mul
         multibounce_validate(st, kScenes, kAlbedos, out, e) != 0 ||
         multibounce_study_clamp(&st->data, st->analysis, &out->clamp, e) != 0 ||
         multibounce_study_bounces(ctx, req, st, kScenes, &out->bounce_counts, e) != 0 ||
-        multibounce_study_gtao(ctx, st, kScenes, &out->gtao_input, e) != 0 ||
+        multibounce_study_gtao(ctx, req, st, kScenes, &out->gtao_input, e) != 0 ||
         multibounce_study_contrast(ctx, req, st, kScenes, kAlbedos, &out->contrast, e) != 0 ||
         multibounce_study_colour(ctx, req, &out->colour, e) != 0)
         return -1;

@@ -14,7 +14,8 @@
  * noise floors (the even half of V'_d against the odd half). Performance: a
  * short multi-bounce benchmark (raytracer/multibounce_throughput.h).
  *
- * Writes <output>/multibounce/<scene>.exr and .camera.json, the fit's
+ * Writes <output>/multibounce/<scene>.exr and .camera.json (and the
+ * height-field reference at the same camera, multibounce/heightfield/<scene>.exr), the fit's
  * <output>/fits/multibounce.{json,h,hlsl,glsl}, and the plot data
  * <output>/figures/multibounce_{scatter,curves,coefficients}.dat. */
 #ifndef GTLAB_STUDIES_MULTIBOUNCE_H
@@ -27,6 +28,9 @@
 #include "studies/study.h"
 
 #define MULTIBOUNCE_STUDY_DIR "multibounce" /* the references, below the output folder */
+/* The height-field references at the same cameras, below the output folder
+ * (a folder of their own: MULTIBOUNCE_STUDY_DIR holds multi-bounce references only) */
+#define MULTIBOUNCE_HEIGHTFIELD_DIR MULTIBOUNCE_STUDY_DIR "/heightfield"
 #define MULTIBOUNCE_FIT_FILE "fits/multibounce.json"
 /* Plot data below <output>/figures (formats: multibounce_plot_data.c). */
 #define MULTIBOUNCE_SCATTER_DATA "multibounce_scatter.dat"
@@ -200,8 +204,24 @@ typedef struct {
     double difference, difference_se;   /* rmse_gtao_input - rmse_reference_input; jackknife */
 } multibounce_gtao_row;
 
+/* "Agnostic to the source of the AO as long as it is ground truth": the
+ * talk's f fed two ground-truth V_d, the 3-D reference's (even-sample half)
+ * and the height-field reference's (rendered at the same camera with as
+ * many samples as that half: the limit of line-sweep and horizon AO). What f
+ * claims is the light the bounces add, so each source is scored on its own
+ * change, f(V_d) - V_d, against the 3-D truth's V'_d - V_d (odd half): RMS
+ * over every scene and albedo (each weighted equally), not V_d's own error. */
+typedef struct {
+    int spp;                             /* of the height-field reference */
+    double gain_rmse_3d, gain_rmse_hf;   /* RMS of (f(V_d) - V_d) - (V'_d - V_d)_truth */
+    double difference, difference_se;    /* gain_rmse_hf - gain_rmse_3d; jackknife over scenes */
+    double rmse_hf_v_d;                  /* the height field's V_d against the 3-D one (even half) */
+    double rmse_total_3d, rmse_total_hf; /* f(V_d) against V'_d: each source's whole error */
+} multibounce_agnostic;
+
 typedef struct {
     multibounce_gtao_row rows[MULTIBOUNCE_GTAO_PRESETS];
+    multibounce_agnostic agnostic;
 } multibounce_gtao_study;
 
 /* The model's premise, "neighbouring albedos ~ the albedo of the current

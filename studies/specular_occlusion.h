@@ -167,6 +167,7 @@ typedef struct {
     double dropped_rmse_band[SO_STUDY_ROUGHNESSES][SO_NV_BANDS];
     long band_pixels[SO_NV_BANDS];
     so_paired_difference visibility;               /* visibility RMSE (minus 0), over the scenes */
+    so_paired_difference dropped;                  /* dropped RMSE (minus 0), over the scenes */
     so_paired_difference dropped_minus_visibility; /* dropped RMSE minus visibility RMSE, over the scenes */
 } so_cone_view_result;
 

@@ -114,5 +114,6 @@ void so_cone_view_compute(const so_cone_view_scores *s, int scenes, so_cone_view
             out->band_pixels[j] += s->band_count[k][j];
     }
     out->visibility = so_paired_over_scenes(s->visibility, zero, 1, scenes, -1);
+    out->dropped = so_paired_over_scenes(s->dropped, zero, 1, scenes, -1);
     out->dropped_minus_visibility = so_paired_over_scenes(s->dropped, s->visibility, 1, scenes, -1);
 }

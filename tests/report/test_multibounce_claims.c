@@ -1,10 +1,12 @@
 /* The multi-bounce section from a made-up result (no study runs): it adds
- * one claims-table row per measured item of issue 25 (items 1 to 5), each
- * figure and standard error the struct's own and each verdict the one its
- * figures give, and the items' objects to summary.json. */
+ * one claim record per measured item of issue 25 (items 1 to 5; issue 42's
+ * protocol), each figure and standard error the struct's own and each
+ * verdict the one its record gives those figures (and other figures the
+ * verdict they must give: the tests can fail), none refused; GTAO's V_d,
+ * not ground truth, adds no row; and the items' objects to summary.json. */
 #include "report/multibounce_section.h"
 #include "tests/check.h"
-#include "tests/report/claim_region_verdict.h"
+#include "report/claim_thresholds.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -19,13 +21,18 @@ static multibounce_study_result made_up(void)
     r.validation_mean.noise_floor_rmse = 0.02;
     r.validation_mean.dssim_talk = 0.05;
     r.clamp.heldout_count = 2;
-    r.clamp.heldout_mean_difference = 0.002, r.clamp.heldout_difference_se = 0.001;   /* reproduced */
-    r.bounce_counts.four_minus_best_other = -0.01, r.bounce_counts.four_minus_best_other_se = 0.02; /* n.s. */
+    /* as good, within a code value (1/255 = 0.0039): 0.001 + 1.96 x 0.001 < 0.0039 */
+    r.clamp.heldout_mean_difference = 0.001, r.clamp.heldout_difference_se = 0.001;
+    /* 4 bounces closest? -0.01 +- 1.96 x 0.02 straddles -0.0039: not significant */
+    r.bounce_counts.four_minus_best_other = -0.01, r.bounce_counts.four_minus_best_other_se = 0.02;
     r.bounce_counts.best_other = 1;
-    r.gtao_input.rows[1].difference = 0.14, r.gtao_input.rows[1].difference_se = 0.03; /* refuted */
+    /* agnostic: 0.001 +- 1.96 x 0.0005 within +-0.0039 */
+    r.gtao_input.agnostic.difference = 0.001, r.gtao_input.agnostic.difference_se = 0.0005;
+    r.gtao_input.rows[1].difference = 0.14, r.gtao_input.rows[1].difference_se = 0.03; /* no row: not ground truth */
     r.contrast.count = 1;
-    r.contrast.premise_cost = 0.075, r.contrast.premise_cost_se = 0.04;  /* n.s.: 0.075 - 1.96 * 0.04 < 0.02 */
-    r.colour.mean_dssim_luminance = 0.01, r.colour.mean_dssim_luminance_se = 0.005; /* reproduced */
+    r.contrast.premise_cost = 0.075, r.contrast.premise_cost_se = 0.04; /* an assumption: no verdict */
+    /* colour minus grey DSSIM 0.01 - 0.05 = -0.04, below the just-noticeable 0.025 */
+    r.colour.mean_dssim_luminance = 0.01, r.colour.mean_dssim_luminance_se = 0.005;
     return r;
 }
 
@@ -41,18 +48,34 @@ int main(void)
     report_context ctx = {{dir, QUALITY_PREVIEW, 1, NULL, NULL}, &doc, cJSON_CreateObject(), &claims};
     gt_error e;
     CHECK(multibounce_section(&ctx, &r, &e) == 0);
-    CHECK(claims.count == 5);
-    const double figures[5] = {0.002, -0.01, 0.14, 0.075, 0.01};
-    const claim_verdict verdicts[5] = {CLAIM_REPRODUCED, CLAIM_NOT_SIGNIFICANT, CLAIM_REFUTED,
-                                       CLAIM_NOT_SIGNIFICANT, CLAIM_REPRODUCED};
+    CHECK(claims.count == 5 && claims.refused == 0);
+    const double figures[5] = {0.001, -0.01, 0.001, 0.075, 0.01 - 0.05};
+    const claim_verdict verdicts[5] = {CLAIM_REPRODUCED, CLAIM_NOT_SIGNIFICANT, CLAIM_REPRODUCED,
+                                       CLAIM_LIMITATION_MEASURED, CLAIM_REPRODUCED};
     for (int i = 0; i < claims.count && i < 5; ++i) {
-        CHECK_MSG(claims.rows[i].figure == figures[i], "claim %d: figure %g", i, claims.rows[i].figure);
-        claim_verdict v = claim_region_verdict(&claims.rows[i]);
-        CHECK_MSG(v == verdicts[i], "claim %d: %s", i, claim_verdict_name(v));
+        CHECK_MSG(fabs(claims.rows[i].figure - figures[i]) < 1e-15, "claim %d: figure %g", i, claims.rows[i].figure);
+        CHECK_MSG(claims.rows[i].verdict == verdicts[i], "claim %d: %s", i, claims.rows[i].verdict_name);
+    }
+    if (claims.count == 5) {
+        /* the clamp 0.01 +- 0.001 above a code value: refuted, but in gtlab's scenes */
+        CHECK(claim_verdict_of(&claims.rows[0].record, 0.01, 0.001) == CLAIM_FAILS_GTLAB_SETTING);
+        /* 4 bounces closer by 0.02 +- 0.005: reproduced; 0.001 +- 0.0005: no visible difference */
+        CHECK(claim_verdict_of(&claims.rows[1].record, -0.02, 0.005) == CLAIM_REPRODUCED);
+        CHECK(claim_verdict_of(&claims.rows[1].record, 0.001, 0.0005) == CLAIM_NO_VISIBLE_DIFFERENCE);
+        /* agnostic: 2 code values apart with the height field, either way, fails (scored against the 3-D
+         * world's truth: under gtlab's setting) */
+        CHECK(claim_verdict_of(&claims.rows[2].record, 2.0 * CLAIM_ONE_CODE_VALUE_8BIT, 1e-4) ==
+              CLAIM_FAILS_GTLAB_SETTING);
+        CHECK(claim_verdict_of(&claims.rows[2].record, -2.0 * CLAIM_ONE_CODE_VALUE_8BIT, 1e-4) ==
+              CLAIM_FAILS_GTLAB_SETTING);
+        /* the premise never gets a verdict */
+        CHECK(claim_verdict_of(&claims.rows[3].record, 1.0, 0.0) == CLAIM_LIMITATION_MEASURED);
+        /* colour 0.1 +- 0.01 worse than grey: fails, in gtlab's scenes */
+        CHECK(claim_verdict_of(&claims.rows[4].record, 0.1, 0.01) == CLAIM_FAILS_GTLAB_SETTING);
     }
     const cJSON *mb = cJSON_GetObjectItemCaseSensitive(ctx.summary, "multibounce");
-    const char *const members[] = {"clamp", "bounce_counts", "gtao_input", "contrast", "colour"};
-    for (int i = 0; i < 5; ++i)
+    const char *const members[] = {"clamp", "bounce_counts", "agnostic", "gtao_input", "contrast", "colour"};
+    for (int i = 0; i < 6; ++i)
         CHECK_MSG(cJSON_GetObjectItemCaseSensitive(mb, members[i]) != NULL, "no %s", members[i]);
     report_free(&doc);
     cJSON_Delete(ctx.summary);
