@@ -45,7 +45,9 @@ static double rmse_of(const float *a, const float *b, const float *mask, size_t 
     return count ? sqrt(sum / (double)count) : 0.0;
 }
 
-static int score(const gtao_scene_refs *s, const float *ao, const float *faded, float *d, fade_row *x)
+/* ao: GTAO with the fade; unfaded: the same with no radius limit. */
+static int score(const gtao_scene_refs *s, const float *ao, const float *unfaded, const float *faded, float *d,
+                 fade_row *x)
 {
     size_t n = (size_t)s->width * s->height;
     x->rmse_faded = rmse_of(ao, faded, s->mask, n);
@@ -61,6 +63,12 @@ static int score(const gtao_scene_refs *s, const float *ao, const float *faded, 
         d[i] = (float)(u * u - f * f);
     }
     rc |= cluster_mean_compute(d, s->mask, s->width, s->height, CLUSTER_MEAN_SIDE, &x->scoring_bias);
+    for (size_t i = 0; i < n; ++i)
+        d[i] = ao[i] - unfaded[i];
+    rc |= cluster_mean_compute(d, s->mask, s->width, s->height, CLUSTER_MEAN_SIDE, &x->gtao_change);
+    for (size_t i = 0; i < n; ++i)
+        d[i] = (float)(((double)ao[i] - unfaded[i]) - ((double)faded[i] - s->ref3d[i]));
+    rc |= cluster_mean_compute(d, s->mask, s->width, s->height, CLUSTER_MEAN_SIDE, &x->change_vs_truth);
     return rc;
 }
 
@@ -77,21 +85,24 @@ static int study_scene(const study_context *ctx, const gtao_shortcuts_request *r
     image faded = {0};
     int rc = render_faded(ctx, &s, r, s.vo_radius, &faded, e);
     size_t n = (size_t)s.width * s.height;
-    float *ao = malloc(sizeof *ao * n), *d = malloc(sizeof *d * n);
-    if (rc == 0 && (!ao || !d))
+    float *ao = malloc(sizeof *ao * n), *unfaded = malloc(sizeof *unfaded * n), *d = malloc(sizeof *d * n);
+    if (rc == 0 && (!ao || !unfaded || !d))
         rc = gt_error_set(e, s.scene, "out of memory");
     if (rc == 0) {
         gtao_params p = gtao_scene_params(&s, GTAO_PRESET_REFERENCE);
         p.slices = r->slices;
         p.steps = r->steps;
-        p.radius = s.vo_radius;
-        p.falloff = 1.0f - FADE_START_FRACTION;
-        rc = gtao_render(&s.in.g, &p, ao, NULL) != 0 ? gt_error_set(e, s.scene, "out of memory")
-             : score(&s, ao, image_channel_data(&faded, CH_AO), d, x) != 0
+        gtao_params fade = p;
+        fade.radius = s.vo_radius;
+        fade.falloff = 1.0f - FADE_START_FRACTION;
+        rc = gtao_render(&s.in.g, &fade, ao, NULL) != 0 || gtao_render(&s.in.g, &p, unfaded, NULL) != 0
+                 ? gt_error_set(e, s.scene, "out of memory")
+             : score(&s, ao, unfaded, image_channel_data(&faded, CH_AO), d, x) != 0
                  ? gt_error_set(e, s.scene, "no pixel inside the mask, or out of memory")
                  : 0;
     }
     free(ao);
+    free(unfaded);
     free(d);
     image_free(&faded);
     gtao_scene_refs_free(&s);
@@ -107,16 +118,20 @@ int gtao_distance_fade_study(const study_context *ctx, const gtao_shortcuts_requ
     out->steps = preview ? 8 : 16;
     out->spp = preview ? 64 : 1024;
     out->scene_count = study_scene_count(ctx) < FADE_MAX_SCENES ? study_scene_count(ctx) : FADE_MAX_SCENES;
-    cluster_mean a[FADE_MAX_SCENES], b[FADE_MAX_SCENES], c[FADE_MAX_SCENES];
+    cluster_mean a[FADE_MAX_SCENES], b[FADE_MAX_SCENES], c[FADE_MAX_SCENES], g[FADE_MAX_SCENES], t[FADE_MAX_SCENES];
     for (int i = 0; i < out->scene_count; ++i) {
         if (study_scene(ctx, rq, out, i, e) != 0)
             return -1;
         a[i] = out->rows[i].signed_vs_faded;
         b[i] = out->rows[i].reference_gap;
         c[i] = out->rows[i].scoring_bias;
+        g[i] = out->rows[i].gtao_change;
+        t[i] = out->rows[i].change_vs_truth;
     }
     out->pooled_signed_vs_faded = cluster_mean_pool(a, out->scene_count);
     out->pooled_reference_gap = cluster_mean_pool(b, out->scene_count);
     out->pooled_scoring_bias = cluster_mean_pool(c, out->scene_count);
+    out->pooled_gtao_change = cluster_mean_pool(g, out->scene_count);
+    out->pooled_change_vs_truth = cluster_mean_pool(t, out->scene_count);
     return 0;
 }
