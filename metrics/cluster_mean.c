@@ -90,8 +90,15 @@ static int pixelwise_mean(const float *a, const float *b, const float *mask, int
     return rc;
 }
 
+static float difference(float a, float b) { return a - b; }
 static float abs_difference(float a, float b) { return fabsf(a - b); }
 static float code_changed(float a, float b) { return unorm8_code(a) != unorm8_code(b) ? 1.0f : 0.0f; }
+
+int cluster_mean_difference(const float *a, const float *b, const float *mask, int width, int height, int side,
+                            cluster_mean *out)
+{
+    return pixelwise_mean(a, b, mask, width, height, side, difference, out);
+}
 
 int cluster_mean_abs_difference(const float *a, const float *b, const float *mask, int width, int height, int side,
                                 cluster_mean *out)

@@ -81,6 +81,8 @@ static void test_change(void)
     cluster_mean m;
     CHECK(cluster_mean_abs_difference(a, b, NULL, W, H, 8, &m) == 0);
     CHECK_NEAR(m.mean, 0.3, 1e-6);
+    CHECK(cluster_mean_difference(b, a, NULL, W, H, 8, &m) == 0);
+    CHECK_NEAR(m.mean, -0.3, 1e-6);
     for (int i = 0; i < W * H; ++i) {
         a[i] = (float)(i % 254) / 255.0f;
         b[i] = a[i] + (i % 2 ? 0.6f : 0.4f) / 255.0f;
