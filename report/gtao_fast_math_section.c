@@ -109,7 +109,9 @@ static const claim_record fast_math_claim = {
                     "the change is the polynomial arc cosine's error on each pixel's horizon angles, a function "
                     "of the angles, which the image's resolution does not change",
     .reading = "the talk adopts the fast sqrt and acos as an optimisation of the same integral, so they should "
-               "move the AO by less than one code value of its 8-bit target on average",
+               "leave the AO as the exact functions give it",
+    .stronger_reading = "that they move the AO by less than one code value of its 8-bit target on average: the talk "
+                        "gives no figure for their accuracy",
     .form = CLAIM_RANGE,
     .low = 0.0,
     .high = CLAIM_ONE_CODE_VALUE_8BIT,

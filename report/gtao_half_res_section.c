@@ -128,8 +128,9 @@ static const claim_record half_res_claim = {
                     "change concentrates on edges and thin features a 2x2 block straddles, whose share of the "
                     "pixels falls as the resolution rises",
     .reading = "the talk takes half resolution with the MIN-filtered chain as the price of its budget and uses it "
-               "in place of the full-resolution search, which gtlab reads as: it moves the AO from that search by "
-               "less than one 8-bit code value on average",
+               "in place of the full-resolution search",
+    .stronger_reading = "that it moves the AO from the full-resolution search by less than one 8-bit code value on "
+                        "average: the talk gives no figure for what half resolution costs in accuracy",
     .form = CLAIM_RANGE,
     .low = 0.0,
     .high = CLAIM_ONE_CODE_VALUE_8BIT,
