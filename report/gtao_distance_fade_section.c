@@ -46,9 +46,11 @@ static const claim_record fade_claim = {
                     "target and its start 0.75 D (the talk's 150/200); the fade weighs samples by their distance "
                     "in the world and GTAO places its samples at fractions of the projected radius, so the image's "
                     "resolution changes which depth texel a sample reads, not the fade it gets",
-    .reading = "softening GTAO's sample contributions from 0.75 D to D (instead of cutting them off at D) should "
-               "change its AO as the same fade of the occluders changes the truth's, so the two mean changes agree "
-               "within one 8-bit code value",
+    .reading = "with the soft clamp the occlusion within the full-effect range stays ground truth, only the band "
+               "from 0.75 D to D being softened",
+    .stronger_reading = "that softening GTAO's samples from 0.75 D to D (instead of cutting them off at D) changes its "
+                        "AO as the same fade of the occluders changes the truth's, within one 8-bit code value on "
+                        "average: the talk does not say how its band compares with the truth's",
     .form = CLAIM_RANGE,
     .low = -CLAIM_ONE_CODE_VALUE_8BIT,
     .high = CLAIM_ONE_CODE_VALUE_8BIT,
