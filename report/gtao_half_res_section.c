@@ -38,7 +38,7 @@ static void radius_table(report *doc, const gtao_half_res_result *r)
     report_table_begin(doc, 1 + GTAO_HALF_RES_VARIANTS, headers);
     for (int k = 0; k < r->radius_count; ++k) {
         const gtao_half_res_radius *x = &r->radii[k];
-        char cells[1 + GTAO_HALF_RES_VARIANTS][96];
+        char cells[1 + GTAO_HALF_RES_VARIANTS][160];
         const char *row[1 + GTAO_HALF_RES_VARIANTS];
         radius_text(x->radius_fraction, cells[0], sizeof cells[0]);
         for (int v = 0; v < GTAO_HALF_RES_VARIANTS; ++v)

@@ -149,6 +149,7 @@ typedef struct {
     block_mean d2_minus_d1_edge, d2_minus_d1_flat;
     shift_fit fit_with, fit_without;
     double shift_with[2], shift_with_se[2], shift_without[2], shift_without_se[2];
+    double diagonal_rms_gradient; /* RMS change of the brute force per pixel of shift (t, t) (shift_fit.h) */
     block_mean bias_with, bias_without;                 /* 24 frames - brute force */
     block_mean clamp_minus_none[GTAO_CLAMP_WINDOWS];    /* (clamped)^2 - (no clamp)^2 */
 } gtao_denoisers_result;
