@@ -75,8 +75,9 @@ static const claim_record order_claim = {
     .setting = "architectural game levels, where horizontal and vertical features make the bilateral filter "
                "average along rows and columns; 1080p at half resolution",
     .setting_match = CLAIM_SETTING_GTLAB,
-    .setting_note = "gtlab's preview scenes (planes, boxes, a sphere, a Menger sponge: not architecture), GTAO "
-                    "medium after one frame of the 4x4 bilateral filter, against the 96 directions in one frame",
+    .setting_note = "gtlab's six 256x256 preview scenes (a plane, a sphere on a plane, a corner, a Menger sponge, "
+                    "boxes, a Cornell box: architecture only in part), GTAO medium after one frame of the 4x4 "
+                    "bilateral filter, against the 96 directions in one frame",
     .reading = "with the directions sorted so that each row of the 4x4 tile holds a full rotation, the filtered "
                "frame is closer to the 96-direction AO than with the directions in Morton order",
     .form = CLAIM_BETTER,
