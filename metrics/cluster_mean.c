@@ -69,6 +69,49 @@ int cluster_mean_paired_sq_error(const float *a, const float *b, const float *r,
     return rc;
 }
 
+int unorm8_code(float x)
+{
+    float c = x < 0.0f ? 0.0f : x > 1.0f ? 1.0f : x;
+    return (int)lrintf(255.0f * c);
+}
+
+/* The block mean of per-pixel f(a, b). */
+static int pixelwise_mean(const float *a, const float *b, const float *mask, int width, int height, int side,
+                          float (*f)(float, float), cluster_mean *out)
+{
+    size_t n = (size_t)width * height;
+    float *d = malloc(sizeof *d * n);
+    if (!d)
+        return -1;
+    for (size_t i = 0; i < n; ++i)
+        d[i] = f(a[i], b[i]);
+    int rc = cluster_mean_compute(d, mask, width, height, side, out);
+    free(d);
+    return rc;
+}
+
+static float difference(float a, float b) { return a - b; }
+static float abs_difference(float a, float b) { return fabsf(a - b); }
+static float code_changed(float a, float b) { return unorm8_code(a) != unorm8_code(b) ? 1.0f : 0.0f; }
+
+int cluster_mean_difference(const float *a, const float *b, const float *mask, int width, int height, int side,
+                            cluster_mean *out)
+{
+    return pixelwise_mean(a, b, mask, width, height, side, difference, out);
+}
+
+int cluster_mean_abs_difference(const float *a, const float *b, const float *mask, int width, int height, int side,
+                                cluster_mean *out)
+{
+    return pixelwise_mean(a, b, mask, width, height, side, abs_difference, out);
+}
+
+int cluster_mean_code_changes(const float *a, const float *b, const float *mask, int width, int height, int side,
+                              cluster_mean *out)
+{
+    return pixelwise_mean(a, b, mask, width, height, side, code_changed, out);
+}
+
 cluster_mean cluster_mean_pool(const cluster_mean *parts, int count)
 {
     cluster_mean out = {0.0, 0.0, 0, 0};

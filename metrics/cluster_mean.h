@@ -39,6 +39,22 @@ int cluster_mean_compute(const float *x, const float *mask, int width, int heigh
 int cluster_mean_paired_sq_error(const float *a, const float *b, const float *r, const float *mask, int width,
                                int height, int side, cluster_mean *out);
 
+/* A change between two images of the same quantity (a shortcut on against
+ * off), over the mask with its block standard error: the mean of a - b, of
+ * |a - b|,
+ * and the fraction of pixels whose code in an 8-bit UNORM target differs
+ * (code(x) = round(255 clamp(x, 0, 1)), the rounding of a GPU's float to
+ * UNORM conversion). Return 0, or -1 when no pixel is inside or out of
+ * memory. */
+int cluster_mean_difference(const float *a, const float *b, const float *mask, int width, int height, int side,
+                            cluster_mean *out);
+int cluster_mean_abs_difference(const float *a, const float *b, const float *mask, int width, int height, int side,
+                                cluster_mean *out);
+int cluster_mean_code_changes(const float *a, const float *b, const float *mask, int width, int height, int side,
+                              cluster_mean *out);
+/* The 8-bit UNORM code of x. */
+int unorm8_code(float x);
+
 /* Block means of disjoint images pooled into one: the pixel-weighted mean,
  * and the standard error of independent parts combined,
  *     se^2 = sum_k (N_k se_k)^2 / (sum_k N_k)^2. */

@@ -15,7 +15,7 @@ static int usable(const float *mask, int width, int height, int x, int y)
            metrics_in_mask(mask, (size_t)(i + width));
 }
 
-/* One block's M_k and v_k; 0 pixels: -1. */
+/* One block's M_k and v_k; its pixel count (0: none usable). */
 static int block_moments(const float *a, const float *b, const float *mask, int width, int height, int bx, int by,
                          int block, double m[2][2], double v[2])
 {
@@ -34,7 +34,7 @@ static int block_moments(const float *a, const float *b, const float *mask, int 
             }
             ++count;
         }
-    return count > 0 ? 0 : -1;
+    return count;
 }
 
 static void add_block(shift_fit *s, double m[2][2], const double v[2])
@@ -59,8 +59,11 @@ void shift_fit_add(shift_fit *s, const float *a, const float *b, const float *ma
     for (int by = 0; by < height; by += block)
         for (int bx = 0; bx < width; bx += block) {
             double m[2][2], v[2];
-            if (block_moments(a, b, mask, width, height, bx, by, block, m, v) == 0)
+            int count = block_moments(a, b, mask, width, height, bx, by, block, m, v);
+            if (count > 0) {
                 add_block(s, m, v);
+                s->pixels += count;
+            }
         }
 }
 
@@ -97,4 +100,15 @@ void shift_fit_solve(const shift_fit *s, double d[2], double se[2])
                 var += inv[p][i] * sc[i][l] * inv[l][p];
         se[p] = sqrt(fmax(var, 0.0));
     }
+}
+
+double shift_fit_rms_gradient(const shift_fit *s, const double u[2])
+{
+    if (s->pixels <= 0)
+        return 0.0;
+    double q = 0.0;
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j)
+            q += u[i] * s->m[i][j] * u[j];
+    return sqrt(fmax(q, 0.0) / (double)s->pixels);
 }

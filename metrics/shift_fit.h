@@ -10,7 +10,7 @@
 #define GTLAB_METRICS_SHIFT_FIT_H
 
 typedef struct {
-    long blocks;
+    long blocks, pixels;
     double m[2][2], v[2];      /* sum over blocks of M_k, v_k */
     double vv[2][2];           /* sum v_k v_k^T */
     double vm[2][2][2];        /* sum v_k,i M_k,jl */
@@ -21,5 +21,10 @@ void shift_fit_add(shift_fit *s, const float *a, const float *b, const float *ma
                    int block);
 /* d and its standard errors; 0 with a singular M. */
 void shift_fit_solve(const shift_fit *s, double d[2], double se[2]);
+/* The RMS change of b per pixel of shift along u, sqrt(u^T M u / pixels):
+ * a shift t u changes b by t times this, RMS over the fitted pixels (to
+ * first order), so a shift's visible effect is in b's units. 0 without
+ * pixels. */
+double shift_fit_rms_gradient(const shift_fit *s, const double u[2]);
 
 #endif

@@ -39,4 +39,9 @@
  * this from the exact grade cannot be told from it. */
 #define CLAIM_VISIBLE_DE00 1.0
 
+/* One code value of a unit vector stored as 0.5 n + 0.5 in an RGBA8 target
+ * (a bent normal beside its AO), as an angle in degrees: a component moves
+ * by 2/255 per code value, so the direction by about 2/255 rad (0.45 deg). */
+#define CLAIM_ONE_CODE_VALUE_8BIT_NORMAL_DEG (2.0 / 255.0 * 57.29577951308232)
+
 #endif

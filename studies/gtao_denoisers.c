@@ -145,4 +145,6 @@ void gtao_denoisers_finish(gtao_denoisers_result *r)
 {
     shift_fit_solve(&r->fit_with, r->shift_with, r->shift_with_se);
     shift_fit_solve(&r->fit_without, r->shift_without, r->shift_without_se);
+    const double diagonal[2] = {1.0, 1.0};
+    r->diagonal_rms_gradient = shift_fit_rms_gradient(&r->fit_with, diagonal);
 }

@@ -213,7 +213,9 @@ static int medium_on_off(const gtao_scene_refs *s, float *on, float *off, gtao_f
         return gt_error_set(e, s->scene, "out of memory");
     shift_stats(on, off, s->mask, (size_t)s->width * s->height, &x->medium_shift_mean, &x->medium_shift_max);
     if (cluster_mean_paired_sq_error(on, off, s->hf_ao, s->mask, s->width, s->height, CLUSTER_MEAN_SIDE,
-                                   &x->medium_paired_hf) != 0)
+                                   &x->medium_paired_hf) != 0 ||
+        cluster_mean_abs_difference(on, off, s->mask, s->width, s->height, CLUSTER_MEAN_SIDE, &x->medium_change) != 0 ||
+        cluster_mean_code_changes(on, off, s->mask, s->width, s->height, CLUSTER_MEAN_SIDE, &x->medium_codes) != 0)
         return gt_error_set(e, s->scene, "no pixel inside the mask, or out of memory");
     return 0;
 }
@@ -314,15 +316,19 @@ static int refits(const study_context *ctx, replay_scene *rs, gtao_fast_math_res
 
 static void pool(gtao_fast_math_result *r)
 {
-    cluster_mean parts[FAST_MATH_MAX_SCENES];
+    cluster_mean parts[FAST_MATH_MAX_SCENES], change[FAST_MATH_MAX_SCENES], codes[FAST_MATH_MAX_SCENES];
     double shift = 0.0;
     r->medium_shift_max = 0.0;
     for (int s = 0; s < r->scene_count; ++s) {
         parts[s] = r->scenes[s].medium_paired_hf;
+        change[s] = r->scenes[s].medium_change;
+        codes[s] = r->scenes[s].medium_codes;
         shift += r->scenes[s].medium_shift_mean / r->scene_count;
         r->medium_shift_max = fmax(r->medium_shift_max, r->scenes[s].medium_shift_max);
     }
     r->medium_paired_hf = cluster_mean_pool(parts, r->scene_count);
+    r->medium_change = cluster_mean_pool(change, r->scene_count);
+    r->medium_codes = cluster_mean_pool(codes, r->scene_count);
     r->medium_shift_mean = shift;
 }
 

@@ -3,9 +3,11 @@
  * the arc cosine's polynomial refitted to the references.
  *
  * (a) The talk's configuration (GTAO medium, one frame) with fast_math on
- *     and off on every scene: how far the fast maths moves the AO, and the
- *     paired difference of their squared errors against the height-field
- *     reference (block standard error, metrics/cluster_mean.h).
+ *     and off on every scene: the shortcut's own change, mean |on - off|
+ *     and the share of pixels whose 8-bit code it changes (the claim's
+ *     figure, issue 42), and the paired difference of their squared errors
+ *     against the height-field reference (block standard errors,
+ *     metrics/cluster_mean.h).
  * (b) The arc cosine alone, on fixed horizons: GTAO with regular slices and
  *     no pattern (`slices` x `steps` per side, no radius limit) searches
  *     each pixel's horizons once (realtime/gtao_fast_acos.h) and replays the
@@ -41,6 +43,7 @@ typedef struct {
     char scene[64];
     /* (a) GTAO medium, one frame: fast_math on minus off */
     double medium_shift_mean, medium_shift_max; /* mean and max |AO_on - AO_off| */
+    cluster_mean medium_change, medium_codes;    /* |AO_on - AO_off|; pixels whose 8-bit code differs */
     cluster_mean medium_paired_hf;                /* mean (on - hf)^2 - (off - hf)^2 */
     /* (b) replayed horizons, per variant */
     double rmse_hf[FAST_ACOS_VARIANTS], rmse_3d[FAST_ACOS_VARIANTS];
@@ -63,7 +66,7 @@ typedef struct {
     int scene_count;
     gtao_fast_math_scene scenes[FAST_MATH_MAX_SCENES];
     /* pooled over scenes (pixel-weighted means, block standard errors combined) */
-    cluster_mean medium_paired_hf;
+    cluster_mean medium_paired_hf, medium_change, medium_codes;
     double medium_shift_mean, medium_shift_max;
     double heldout_slope_gain_mean, heldout_slope_gain_se; /* mean over scenes, s.e. over scenes */
     double heldout_both_gain_mean, heldout_both_gain_se;

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "metrics/cluster_mean.h"
 #include "metrics/image_error.h"
 #include "metrics/noise_corrected.h"
 #include "realtime/gtao_depth_mip.h"
@@ -54,13 +55,19 @@ static void render_variant(work *w, int variant, double fraction, float *out)
     ss_upsample_nearest(w->s->g, &w->half.g, w->half_ao, out);
 }
 
-/* scratch = (a - b)^2 (squared) or a - b, added to m by 8x8 blocks. */
-static void add_blocks(work *w, const float *a, const float *b, int squared, block_mean *m)
+/* What add_blocks accumulates of a - b per pixel. */
+typedef enum { BLOCKS_SIGNED, BLOCKS_SQUARED, BLOCKS_ABSOLUTE, BLOCKS_CODE_CHANGED } blocks_of;
+
+/* scratch = what of a - b, added to m by 8x8 blocks. */
+static void add_blocks(work *w, const float *a, const float *b, blocks_of what, block_mean *m)
 {
     const ss_gbuffer *g = w->s->g;
     for (long i = 0; i < (long)g->width * g->height; ++i) {
         float d = a[i] - b[i];
-        w->scratch[i] = squared ? d * d : d;
+        w->scratch[i] = what == BLOCKS_SQUARED    ? d * d
+                        : what == BLOCKS_ABSOLUTE ? fabsf(d)
+                        : what == BLOCKS_CODE_CHANGED ? (float)(unorm8_code(a[i]) != unorm8_code(b[i]))
+                                                      : d;
     }
     block_mean_add(m, w->scratch, g->mask, g->width, g->height, BLOCK_MEAN_SIZE);
 }
@@ -75,18 +82,22 @@ static void paired_blocks(work *w, const float *a, const float *b, const float *
     block_mean_add(m, w->scratch, g->mask, g->width, g->height, BLOCK_MEAN_SIZE);
 }
 
-/* 16 point samples and a 32-sample search at full resolution against the
- * MIN chain's 4 (kept in w->min4). */
+/* 16 point samples, 4 point samples of the MIP chain and a 32-sample search
+ * at full resolution against the MIN chain's 4 (kept in w->min4). */
 static void four_x(work *w, gtao_half_res_result *r)
 {
     const ss_gbuffer *g = w->s->g;
+    float *mip4 = w->half_ao; /* free until the next radius */
+    render_variant(w, GTAO_HALF_RES_FULL_MIP, GTAO_HALF_RES_4X_RADIUS, mip4);
     gtao_params p16 = search_params(w->s, GTAO_HALF_RES_4X_RADIUS, 4 * GTAO_HALF_RES_STEPS, 0);
     gtao_params converged = search_params(w->s, GTAO_HALF_RES_4X_RADIUS, GTAO_HALF_RES_CONVERGED_STEPS, 0);
     gtao_mip_frame(g, &w->full_mip, GTAO_FETCH_POINT, &p16, w->out);
     gtao_mip_frame(g, &w->full_mip, GTAO_FETCH_POINT, &converged, w->base); /* the baseline is no longer needed */
     paired_blocks(w, w->min4, w->out, w->base, &r->four_x);
-    add_blocks(w, w->min4, w->base, 1, &r->four_x_min_se2);
-    add_blocks(w, w->out, w->base, 1, &r->four_x_point_se2);
+    paired_blocks(w, w->min4, mip4, w->base, &r->min_vs_mip);
+    add_blocks(w, w->min4, w->base, BLOCKS_SQUARED, &r->four_x_min_se2);
+    add_blocks(w, w->out, w->base, BLOCKS_SQUARED, &r->four_x_point_se2);
+    add_blocks(w, mip4, w->base, BLOCKS_SQUARED, &r->mip_se2);
 }
 
 static double corrected_rmse(const gtao_shortcut_scene *s, const float *a, const float *ref, double variance)
@@ -115,8 +126,10 @@ static void one_radius(work *w, gtao_half_res_radius *k, gtao_half_res_result *r
     for (int v = 0; v < GTAO_HALF_RES_VARIANTS; ++v) {
         float *out = v == GTAO_HALF_RES_FULL_MIP_MIN ? w->min4 : w->out;
         render_variant(w, v, k->radius_fraction, out);
-        add_blocks(w, out, w->base, 1, &k->se2[v]);
-        add_blocks(w, out, w->base, 0, &k->bias[v]);
+        add_blocks(w, out, w->base, BLOCKS_SQUARED, &k->se2[v]);
+        add_blocks(w, out, w->base, BLOCKS_SIGNED, &k->bias[v]);
+        add_blocks(w, out, w->base, BLOCKS_ABSOLUTE, &k->change[v]);
+        add_blocks(w, out, w->base, BLOCKS_CODE_CHANGED, &k->codes[v]);
     }
     if (k->radius_fraction == 0.0)
         against_references(w, w->out, x); /* w->out holds the talk's, the last variant */
@@ -188,6 +201,9 @@ void gtao_half_res_finish(gtao_half_res_result *r)
     double unused;
     block_mean_rmse(&r->four_x_min_se2, &r->four_x_min_rmse, &unused);
     block_mean_rmse(&r->four_x_point_se2, &r->four_x_point_rmse, &unused);
+    block_mean_rmse(&r->mip_se2, &r->mip_rmse, &unused);
+    r->min_vs_mip_mean = block_mean_value(&r->min_vs_mip);
+    r->min_vs_mip_se = block_mean_se(&r->min_vs_mip);
     const gtao_half_res_radius *last = &r->radii[r->radius_count > 0 ? r->radius_count - 1 : 0];
     r->talk_rmse_unbounded = last->rmse[GTAO_HALF_RES_HALF_MIP_MIN];
     r->talk_rmse_unbounded_se = last->rmse_se[GTAO_HALF_RES_HALF_MIP_MIN];

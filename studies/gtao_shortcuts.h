@@ -95,6 +95,8 @@ typedef struct {
     double radius_fraction;                       /* of the camera distance; 0: no limit (the references') */
     block_mean se2[GTAO_HALF_RES_VARIANTS];       /* (variant - full resolution)^2 */
     block_mean bias[GTAO_HALF_RES_VARIANTS];      /* variant - full resolution */
+    block_mean change[GTAO_HALF_RES_VARIANTS];    /* |variant - full resolution|: the shortcut's own change */
+    block_mean codes[GTAO_HALF_RES_VARIANTS];     /* 1 where the variant changes the pixel's 8-bit code */
     double rmse[GTAO_HALF_RES_VARIANTS], rmse_se[GTAO_HALF_RES_VARIANTS];
     double bias_mean[GTAO_HALF_RES_VARIANTS], bias_se[GTAO_HALF_RES_VARIANTS];
 } gtao_half_res_radius;
@@ -112,9 +114,11 @@ typedef struct {
     gtao_half_res_scene scenes[GTAO_SHORTCUT_MAX_SCENES];
     /* "4x samples": at the radius fraction GTAO_HALF_RES_4X_RADIUS, against a
      * full-resolution search with GTAO_HALF_RES_CONVERGED_STEPS per side:
-     * (MIN MIP, 4 steps)^2 - (point, 16 steps)^2, and each alone */
-    block_mean four_x, four_x_min_se2, four_x_point_se2;
+     * (MIN MIP, 4 steps)^2 - (point, 16 steps)^2, and each alone; "still
+     * useful": (MIN MIP, 4 steps)^2 - (point-sampled MIP, 4 steps)^2 */
+    block_mean four_x, four_x_min_se2, four_x_point_se2, min_vs_mip, mip_se2;
     double four_x_mean, four_x_se, four_x_min_rmse, four_x_point_rmse;
+    double min_vs_mip_mean, min_vs_mip_se, mip_rmse;
     double talk_rmse_unbounded, talk_rmse_unbounded_se; /* the talk's vs full resolution, no radius limit */
     double hf_noise_rmse;
 } gtao_half_res_result;
@@ -145,6 +149,7 @@ typedef struct {
     block_mean d2_minus_d1_edge, d2_minus_d1_flat;
     shift_fit fit_with, fit_without;
     double shift_with[2], shift_with_se[2], shift_without[2], shift_without_se[2];
+    double diagonal_rms_gradient; /* RMS change of the brute force per pixel of shift (t, t) (shift_fit.h) */
     block_mean bias_with, bias_without;                 /* 24 frames - brute force */
     block_mean clamp_minus_none[GTAO_CLAMP_WINDOWS];    /* (clamped)^2 - (no clamp)^2 */
 } gtao_denoisers_result;

@@ -55,7 +55,9 @@ static int score_scene(const gtao_scene_refs *s, const gtao_params *base, float 
         x->mse_3d = mse_of(ao, s->ref3d, s->mask, n);
         x->mse_hf = mse_of(ao, s->hf_ao, s->mask, n);
         if (cluster_mean_paired_sq_error(ao, none, s->ref3d, s->mask, s->width, s->height, CLUSTER_MEAN_SIDE,
-                                       &x->vs_none_3d) != 0)
+                                       &x->vs_none_3d) != 0 ||
+            cluster_mean_difference(ao, none, s->mask, s->width, s->height, CLUSTER_MEAN_SIDE, &x->change) != 0 ||
+            cluster_mean_code_changes(ao, none, s->mask, s->width, s->height, CLUSTER_MEAN_SIDE, &x->codes) != 0)
             return gt_error_set(e, s->scene, "out of memory");
         x->removed_percent = model > 0.0 ? -100.0 * x->vs_none_3d.mean / model : 0.0;
     }

@@ -7,7 +7,8 @@
  * sweep. Per scene and value: the MSE against the 3-D reference, the
  * paired difference against thickness 0 (8x8-block standard error), and
  * the share of thickness 0's error against the 3-D reference (the height
- * field's error, less the reference's noise) it removes. The corner scene
+ * field's error, less the reference's noise) it removes, and its own change
+ * AO(thickness) - AO(0) (issue 42). The corner scene
  * holds the talk's 90 degree corners. */
 #ifndef GTLAB_STUDIES_GTAO_THICKNESS_H
 #define GTLAB_STUDIES_GTAO_THICKNESS_H
@@ -23,6 +24,8 @@ typedef struct {
     double thickness;
     double mse_3d, mse_hf;
     cluster_mean vs_none_3d;  /* MSE(thickness) - MSE(0) against the 3-D reference */
+    cluster_mean change;      /* the heuristic's own change, mean AO(thickness) - AO(0) */
+    cluster_mean codes;       /* pixels whose 8-bit code it changes */
     double removed_percent; /* -vs_none_3d.mean / (MSE(0) - reference variance), in % */
 } thickness_row;
 

@@ -50,8 +50,29 @@ static void test_shift(double dx, double dy)
     free(b);
 }
 
+/* b = c x + e y: central differences are exact, so the RMS change per pixel
+ * of shift along u is |c u_x + e u_y| at every usable pixel (the border
+ * row and column have no four neighbours and are left out). */
+static void test_rms_gradient(void)
+{
+    float *b = malloc(sizeof(float) * W * H);
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x)
+            b[y * W + x] = (float)(0.01 * x - 0.004 * y);
+    shift_fit s = {0};
+    shift_fit_add(&s, b, b, NULL, W, H, 8);
+    CHECK(s.pixels == (long)(W - 2) * (H - 2));
+    const double ux[2] = {1.0, 0.0}, diagonal[2] = {0.5, 0.5};
+    CHECK_NEAR(shift_fit_rms_gradient(&s, ux), 0.01, 1e-6);
+    CHECK_NEAR(shift_fit_rms_gradient(&s, diagonal), 0.003, 1e-6);
+    shift_fit empty = {0};
+    CHECK(shift_fit_rms_gradient(&empty, ux) == 0.0);
+    free(b);
+}
+
 int main(void)
 {
+    test_rms_gradient();
     test_block_mean();
     test_shift(0.5, 0.5);
     test_shift(-0.25, 0.1);

@@ -1,7 +1,8 @@
 /* Block-clustered means (metrics/cluster_mean.h) against closed forms: a
  * constant, independent pixels (se = sigma / sqrt(N)), whole blocks sharing
  * one value (se = sigma / sqrt(B): the per-pixel formula would be 8x too
- * small), the paired squared-error identity, and pooling. */
+ * small), the paired squared-error identity, pooling, and a change's mean
+ * |a - b| and share of 8-bit codes changed. */
 #include <math.h>
 #include <stdlib.h>
 
@@ -68,8 +69,35 @@ static void test_paired_and_pool(void)
     free(r);
 }
 
+/* a - b = 0.3 everywhere; codes k/255 moved by 0.4 (kept) or 0.6 (changed)
+ * of a code value on alternate pixels: half change. */
+static void test_change(void)
+{
+    float *a = malloc(sizeof *a * W * H), *b = malloc(sizeof *b * W * H);
+    for (int i = 0; i < W * H; ++i) {
+        a[i] = (float)uniform01((uint64_t)i);
+        b[i] = a[i] - 0.3f;
+    }
+    cluster_mean m;
+    CHECK(cluster_mean_abs_difference(a, b, NULL, W, H, 8, &m) == 0);
+    CHECK_NEAR(m.mean, 0.3, 1e-6);
+    CHECK(cluster_mean_difference(b, a, NULL, W, H, 8, &m) == 0);
+    CHECK_NEAR(m.mean, -0.3, 1e-6);
+    for (int i = 0; i < W * H; ++i) {
+        a[i] = (float)(i % 254) / 255.0f;
+        b[i] = a[i] + (i % 2 ? 0.6f : 0.4f) / 255.0f;
+    }
+    CHECK(cluster_mean_code_changes(a, b, NULL, W, H, 8, &m) == 0);
+    CHECK_NEAR(m.mean, 0.5, 1e-12);
+    CHECK(m.se == 0.0); /* every 8x8 block holds 32 of each */
+    CHECK(unorm8_code(-0.3f) == 0 && unorm8_code(1.7f) == 255 && unorm8_code(0.1f) == 26);
+    free(a);
+    free(b);
+}
+
 int main(void)
 {
+    test_change();
     test_constant();
     test_correlation();
     test_paired_and_pool();

@@ -84,7 +84,14 @@ static void test_fast_math(const study_context *ctx, const gtao_shortcuts_reques
         CHECK(r.scenes[s].shift_max[FAST_ACOS_EXACT] == 0.0);
         CHECK(r.scenes[s].paired_hf[FAST_ACOS_EXACT].mean == 0.0);
         CHECK(r.scenes[s].shift_mean[FAST_ACOS_TALK] > 0.0);
+        /* the claim's figure is the mean |on - off| computed by blocks: the
+         * same mean as the pixels' own, a share of codes in [0, 1] */
+        const gtao_fast_math_scene *x = &r.scenes[s];
+        CHECK_MSG(fabs(x->medium_change.mean - x->medium_shift_mean) < 1e-6, "%g %g", x->medium_change.mean,
+                  x->medium_shift_mean);
+        CHECK(x->medium_codes.mean >= 0.0 && x->medium_codes.mean <= 1.0);
     }
+    CHECK(r.medium_change.mean > 0.0 && r.medium_change.mean <= r.medium_shift_max);
     /* The function error of the talk's polynomial with Drobot's constant is
      * smaller than with the slide's (the constant's correction). */
     CHECK(r.function_error[FAST_ACOS_TALK] < r.function_error[FAST_ACOS_TRANSCRIBED]);
@@ -149,6 +156,12 @@ static void test_thickness(const study_context *ctx, const gtao_shortcuts_reques
             CHECK_MSG(fabs(r.rows[r.corner_scene][k].vs_none_3d.mean) < 1e-6, "%g", r.rows[r.corner_scene][k].vs_none_3d.mean);
         for (int s = 0; s < r.scene_count; ++s)
             elsewhere = fmax(elsewhere, fabs(r.rows[s][k].vs_none_3d.mean));
+        /* its own change: none on the plane and in the corner, never darker */
+        CHECK_MSG(fabs(r.rows[0][k].change.mean) < 1e-6, "%g", r.rows[0][k].change.mean);
+        if (r.corner_scene >= 0)
+            CHECK_MSG(fabs(r.rows[r.corner_scene][k].change.mean) < 1e-5, "%g", r.rows[r.corner_scene][k].change.mean);
+        for (int s = 0; s < r.scene_count; ++s)
+            CHECK_MSG(r.rows[s][k].change.mean > -1e-6, "%s: %g", r.rows[s][k].scene, r.rows[s][k].change.mean);
     }
     CHECK(elsewhere > 1e-4);
 }
@@ -171,6 +184,19 @@ static void test_distance_fade(const study_context *ctx, const gtao_shortcuts_re
     CHECK(strcmp(r.rows[0].scene, "plane") == 0);
     CHECK_MSG(r.rows[0].rmse_faded < 0.03 && fabs(r.rows[0].reference_gap.mean) < 1e-6, "%g %g", r.rows[0].rmse_faded,
               r.rows[0].reference_gap.mean);
+    /* the soft clamp's own change against the truth's is the difference of
+     * the two changes (linear, one mask); a fade only weakens occluders, so
+     * the faded reference is never darker than the cut-off one beyond its
+     * noise; on the open plane nothing lies within reach to fade, so GTAO's
+     * change is nil and so is the claim's figure */
+    for (int s = 0; s < r.scene_count; ++s) {
+        const fade_row *x = &r.rows[s];
+        CHECK_MSG(fabs(x->change_vs_truth.mean - (x->gtao_change.mean - x->reference_change.mean)) < 1e-5, "%s",
+                  x->scene);
+        CHECK(x->reference_change.mean > -3.0 * x->reference_change.se - 1e-6);
+    }
+    CHECK_MSG(fabs(r.rows[0].gtao_change.mean) < 1e-3 && fabs(r.rows[0].change_vs_truth.mean) < 1e-3, "%g %g",
+              r.rows[0].gtao_change.mean, r.rows[0].change_vs_truth.mean);
 }
 
 /* VBAO beside GTAO (issue 27, item 1): on the open plane VBAO (gtlab's
