@@ -88,8 +88,7 @@ const char *claim_verdict_name(claim_verdict v)
 {
     static const char *const names[CLAIM_VERDICT_COUNT] = {
         "reproduced",          "refuted",         "fails a stronger reading", "fails under gtlab's setting",
-        "no visible difference", "limitation measured", "not significant",     "not testable here",
-        "not yet re-tested"};
+        "no visible difference", "limitation measured", "not significant",     "not testable here"};
     return (unsigned)v < CLAIM_VERDICT_COUNT ? names[v] : "?";
 }
 
@@ -171,34 +170,6 @@ int claims_table_add(claims_table *t, const claim_record *r, double figure, doub
     return 0;
 }
 
-void claims_table_add_unreviewed(claims_table *t, const unreviewed_claim *c)
-{
-    claim *row = t ? next_row(t) : NULL;
-    if (!row)
-        return;
-    snprintf(row->unreviewed_source, sizeof row->unreviewed_source, "%s", c->source);
-    snprintf(row->unreviewed_statement, sizeof row->unreviewed_statement, "%s", c->statement);
-    claim_record r = {.talk = row->unreviewed_source, .reading = row->unreviewed_statement, .form = CLAIM_RANGE,
-                      .low = c->low, .high = c->high};
-    fill_row(row, &r, c->figure, c->standard_error);
-    row->verdict = CLAIM_NOT_RETESTED;
-    row->verdict_name = claim_verdict_name(CLAIM_NOT_RETESTED);
-    row->decided_by[0] = '\0';
-    snprintf(row->quantity, sizeof row->quantity, "%s", c->quantity);
-}
-
-void claims_table_add_unreviewed_figure(claims_table *t, const char *source, const char *statement,
-                                        const char *quantity, double figure, double standard_error, double low,
-                                        double high)
-{
-    static unreviewed_claim c; /* large: kept off the stack */
-    c = (unreviewed_claim){.figure = figure, .standard_error = standard_error, .low = low, .high = high};
-    snprintf(c.source, sizeof c.source, "%s", source);
-    snprintf(c.statement, sizeof c.statement, "%s", statement);
-    snprintf(c.quantity, sizeof c.quantity, "%s", quantity);
-    claims_table_add_unreviewed(t, &c);
-}
-
 int claims_table_check(const claims_table *t, gt_error *e)
 {
     if (!t || t->refused == 0)
@@ -268,18 +239,14 @@ static void talk_cell(const void *row, char *text, size_t size)
 
 static void words_cell(const void *row, char *text, size_t size)
 {
-    const claim *c = row;
-    if (text_given(c->record.quote))
-        snprintf(text, size, "\"%s\"", c->record.quote);
-    else
-        snprintf(text, size, "(not yet quoted) %s", or_blank(c->record.reading));
+    snprintf(text, size, "\"%s\"", ((const claim *)row)->record.quote); /* every record has one */
 }
 
 static void reading_cell(const void *row, char *text, size_t size)
 {
     const claim *c = row;
     const char *stronger = c->record.stronger_reading;
-    snprintf(text, size, "%s%s%s", text_given(c->record.quote) ? or_blank(c->record.reading) : "",
+    snprintf(text, size, "%s%s%s", c->record.reading,
              text_given(stronger) ? " Stronger reading tested: " : "", or_blank(stronger));
 }
 
@@ -291,12 +258,12 @@ static void region_cell(const void *row, char *text, size_t size)
 static void tolerance_cell(const void *row, char *text, size_t size)
 {
     const claim *c = row;
-    snprintf(text, size, "%s", c->verdict == CLAIM_NOT_RETESTED ? "-" : tolerance_source_name(c->record.tolerance_source));
+    snprintf(text, size, "%s", tolerance_source_name(c->record.tolerance_source));
 }
 static void setting_cell(const void *row, char *text, size_t size)
 {
     const claim *c = row;
-    snprintf(text, size, "%s", c->verdict == CLAIM_NOT_RETESTED ? "-" : setting_name(c->record.setting_match));
+    snprintf(text, size, "%s", setting_name(c->record.setting_match));
 }
 static void verdict_cell(const void *row, char *text, size_t size)
 {
@@ -408,11 +375,6 @@ static void claim_paragraph(FILE *out, int number, const claim *c)
     if (text_given(r->quote))
         fprintf(out, "> %s\n\n(transcript %s)\n\n", r->quote, r->seed);
     fprintf(out, "**%s.** ", c->verdict_name);
-    if (c->verdict == CLAIM_NOT_RETESTED) {
-        fprintf(out, "Measured before the claims protocol: %s. %s = %s; the old region %s.\n\n", or_blank(r->reading),
-                c->quantity, figure, region);
-        return;
-    }
     fprintf(out, "The talk's setting: %s. gtlab's setting: %s%s%s. gtlab reads the claim as: %s", r->setting,
             setting_name(r->setting_match), text_given(r->setting_note) ? " — " : "", or_blank(r->setting_note),
             r->reading);

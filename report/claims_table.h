@@ -96,7 +96,6 @@ typedef enum {
     CLAIM_LIMITATION_MEASURED,
     CLAIM_NOT_SIGNIFICANT,
     CLAIM_NOT_TESTABLE,
-    CLAIM_NOT_RETESTED, /* transitional: a row from before the protocol (claims_table_add_unreviewed) */
     CLAIM_VERDICT_COUNT
 } claim_verdict;
 
@@ -127,8 +126,6 @@ typedef struct {
     claim_verdict verdict;
     const char *verdict_name;   /* claim_verdict_name(verdict) */
     char decided_by[CLAIM_TEXT]; /* not significant: what would decide it ("" otherwise) */
-    /* an unreviewed row's texts (its record points here: a table is never copied) */
-    char unreviewed_source[CLAIM_TEXT], unreviewed_statement[CLAIM_TEXT];
 } claim;
 
 typedef struct {
@@ -152,18 +149,6 @@ int claim_record_check(const claim_record *r, gt_error *e);
  * ignores the row and returns 0. */
 int claims_table_add(claims_table *t, const claim_record *r, double figure, double standard_error,
                      const char *quantity_fmt, ...) __attribute__((format(printf, 5, 6)));
-
-/* Transitional (issue 42): a row measured before the protocol, with its old
- * statement and region; shown with its figure and the verdict "not yet
- * re-tested by the protocol", counted apart, never "refuted". */
-typedef struct {
-    char source[CLAIM_TEXT], statement[CLAIM_TEXT], quantity[CLAIM_TEXT];
-    double figure, standard_error, low, high;
-} unreviewed_claim;
-void claims_table_add_unreviewed(claims_table *t, const unreviewed_claim *c);
-void claims_table_add_unreviewed_figure(claims_table *t, const char *source, const char *statement,
-                                        const char *quantity, double figure, double standard_error, double low,
-                                        double high);
 
 /* The table in the report (heading "Claims of the talks"), the verdicts
  * counted by class in its "At a glance" list, the array "claims" and the
