@@ -1,5 +1,5 @@
 set terminal pngcairo size 800,500 font ',10'
-set output '/tmp/res/figures/aperture_fit_d_only.png'
+set output 'results/figures/aperture_fit_d_only.png'
 $curve0 << EOD
 1e-12 0.175398601
 1.33352143e-12 0.175384654

@@ -1,5 +1,5 @@
 set terminal pngcairo size 800,500 font ',10'
-set output '/tmp/res/figures/aperture_fit_phong.png'
+set output 'results/figures/aperture_fit_phong.png'
 $curve0 << EOD
 1e-12 0.157507126
 1.33352143e-12 0.157243662

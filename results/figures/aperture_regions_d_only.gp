@@ -1,5 +1,5 @@
 set terminal pngcairo size 800,500 font ',10'
-set output '/tmp/res/figures/aperture_regions_d_only.png'
+set output 'results/figures/aperture_regions_d_only.png'
 $regions << EOD
 1e-12 0.305049823 0.183815874 0.28255096
 1.33352143e-12 0.304782929 0.183771674 0.282207357

@@ -1,5 +1,5 @@
 set terminal pngcairo size 800,500 font ',10'
-set output '/tmp/res/figures/aperture_regions_gtso.png'
+set output 'results/figures/aperture_regions_gtso.png'
 $regions << EOD
 1e-12 0.305030437 0.173979285 0.278215101
 1.33352143e-12 0.304763515 0.173949989 0.277878147

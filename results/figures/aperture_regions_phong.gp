@@ -1,5 +1,5 @@
 set terminal pngcairo size 800,500 font ',10'
-set output '/tmp/res/figures/aperture_regions_phong.png'
+set output 'results/figures/aperture_regions_phong.png'
 $regions << EOD
 1e-12 0.303145482 0.192095272 0.288131727
 1.33352143e-12 0.302876493 0.191981475 0.28779447

@@ -1,5 +1,5 @@
 set terminal pngcairo size 2000,460 font ',10'
-set output '/tmp/res/sphere_light/errors_nv_size_r04.png'
+set output 'results/sphere_light/errors_nv_size_r04.png'
 set datafile separator ','
 set multiplot layout 1,4 title 'roughness 0.4: mean |ln((approx + 0.01)/(reference + 0.01))| near the highlight'
 set xlabel 'n.v'
@@ -10,13 +10,13 @@ set cbrange [0:1]
 set xrange [0.05:1]
 set yrange [0.266426:30]
 set title 'Karis'
-plot '/tmp/res/sphere_light/errors_nv_size_r04.csv' using 1:2:3 with image notitle
+plot 'results/sphere_light/errors_nv_size_r04.csv' using 1:2:3 with image notitle
 set title 'Decima (published)'
-plot '/tmp/res/sphere_light/errors_nv_size_r04.csv' using 1:2:4 with image notitle
+plot 'results/sphere_light/errors_nv_size_r04.csv' using 1:2:4 with image notitle
 set title 'Decima refit'
-plot '/tmp/res/sphere_light/errors_nv_size_r04.csv' using 1:2:5 with image notitle
+plot 'results/sphere_light/errors_nv_size_r04.csv' using 1:2:5 with image notitle
 set title 'LTC'
-plot '/tmp/res/sphere_light/errors_nv_size_r04.csv' using 1:2:6 with image notitle
+plot 'results/sphere_light/errors_nv_size_r04.csv' using 1:2:6 with image notitle
 unset multiplot
 
 unset output

@@ -8415,17 +8415,24 @@ ATMO_FN atmo_value atmo_bilinear(atmo_table tab, atmo_axis s, atmo_axis v, int y
     return atmo_lerp(lo, hi, v.w);
 }
 
-/* A table at (theta_s, theta_v, y, t): linear along every axis (theta_v is
- * a size-1 axis of the sun and sky tables), clamped at the ends. */
+/* A table at the grid points and weights of its four axes: multilinear. */
+ATMO_FN atmo_value atmo_lookup_axes(atmo_table tab, atmo_axis s, atmo_axis v, atmo_axis h, atmo_axis w)
+{
+    atmo_value low = atmo_lerp(atmo_bilinear(tab, s, v, h.i0, w.i0), atmo_bilinear(tab, s, v, h.i1, w.i0), h.w);
+    atmo_value high = atmo_lerp(atmo_bilinear(tab, s, v, h.i0, w.i1), atmo_bilinear(tab, s, v, h.i1, w.i1), h.w);
+    return atmo_lerp(low, high, w.w);
+}
+
+/* A table at (theta_s, theta_v, y, t) in the linear parametrization
+ * (luts/atmosphere_lut_axes.h): linear along every axis (theta_v is a
+ * size-1 axis of the sun and sky tables), clamped at the ends. */
 ATMO_FN atmo_value atmo_lookup(atmo_table tab, float theta_s, float theta_v, float y, float t)
 {
     atmo_axis s = atmo_axis_at(theta_s, atmo_max(tab, 0), atmo_size(tab, 0));
     atmo_axis v = atmo_axis_at(theta_v, atmo_max(tab, 1), atmo_size(tab, 1));
     atmo_axis h = atmo_axis_at(y, atmo_max(tab, 2), atmo_size(tab, 2));
     atmo_axis w = atmo_axis_at(t, 1.0f, atmo_size(tab, 3));
-    atmo_value low = atmo_lerp(atmo_bilinear(tab, s, v, h.i0, w.i0), atmo_bilinear(tab, s, v, h.i1, w.i0), h.w);
-    atmo_value high = atmo_lerp(atmo_bilinear(tab, s, v, h.i0, w.i1), atmo_bilinear(tab, s, v, h.i1, w.i1), h.w);
-    return atmo_lerp(low, high, w.w);
+    return atmo_lookup_axes(tab, s, v, h, w);
 }
 
 #ifdef ATMO_LUT_SHADER
