@@ -174,7 +174,7 @@ static void add_headline(report *doc, const aa_temporal_row *const rows[4], cons
     for (int i = 0; i < 4; ++i)
         labels[i] = rows[i]->technique, errors[i] = rows[i]->dssim;
     report_headline h = {.topic = "temporal anti-aliasing", .measure = "DSSIM vs the truth, pan over thin geometry",
-                         .significance = HEADLINE_NOT_COMPUTED};
+                         .significance = HEADLINE_NOT_COMPUTED, .margin = CLAIM_DSSIM_JUST_NOTICEABLE};
     if (headline_rank(&h, 4, labels, errors) != 0)
         return;
     int best = 0, second = 0;

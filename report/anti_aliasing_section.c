@@ -1,5 +1,6 @@
 /* The anti-aliasing section (anti_aliasing_section.h). */
 #include "report/anti_aliasing_section.h"
+#include "report/claim_thresholds.h"
 
 #include <math.h>
 #include <string.h>
@@ -60,7 +61,7 @@ static void add_headline(report *doc, const aa_result *r)
         for (int k = 0; k < scenes; ++k)
             errors[i * scenes + k] = scene_dssim(r, r->request.scenes[k], labels[i], "blackman-harris");
     report_headline h = {.topic = "anti-aliasing", .measure = "mean DSSIM vs the Blackman-Harris truth",
-                         .significance = HEADLINE_NOT_COMPUTED};
+                         .significance = HEADLINE_NOT_COMPUTED, .margin = CLAIM_DSSIM_JUST_NOTICEABLE};
     char over[64];
     snprintf(over, sizeof over, "paired over %d scenes", scenes);
     if (headline_rank_paired(&h, 3, labels, errors, scenes, over) == 0)

@@ -10,6 +10,7 @@
 #include <stdio.h>
 
 #include "report/specular_occlusion_section.h"
+#include "report/claim_thresholds.h"
 #include "report/aperture_fit_figures.h"
 #include "report/claims_table.h"
 #include "report/specular_occlusion_section_parts.h"
@@ -169,7 +170,8 @@ static const report_column split_columns[] = {
 static void split_headline(report *doc, const double mean[2], double floor)
 {
     static const char *const labels[2] = {"two-split", "three-split"};
-    report_headline h = {.topic = "Split integrals", .measure = "mean DSSIM vs the ground truth, analytic sky"};
+    report_headline h = {.topic = "Split integrals", .measure = "mean DSSIM vs the ground truth, analytic sky",
+                         .margin = CLAIM_DSSIM_JUST_NOTICEABLE};
     headline_rank(&h, 2, labels, mean);
     headline_from_noise_floor(&h, floor);
     report_add_headline(doc, &h);
@@ -464,19 +466,23 @@ static void conclude(report_context *ctx, const so_study_result *r, cJSON *json)
     conclude_inputs(ctx, &n, input_cost, lut_gain);
     conclude_bent_estimators(ctx, r, json);
     report_headline h = {.topic = "Specular occlusion", .measure = "mean DSSIM vs the Monte Carlo reference",
-                         .best_error = n.best->mean_dssim, .runner_up_error = n.runner_up->mean_dssim};
+                         .best_error = n.best->mean_dssim, .runner_up_error = n.runner_up->mean_dssim,
+                         .margin = CLAIM_DSSIM_JUST_NOTICEABLE};
     snprintf(h.best, sizeof h.best, "%s", n.best->label);
     snprintf(h.runner_up, sizeof h.runner_up, "%s", n.runner_up->label);
     headline_from_noise_floor(&h, r->noise_floor_mean);
-    int ahead = h.significance != HEADLINE_NOT_SIGNIFICANT;
+    int ahead = h.significance == HEADLINE_SIGNIFICANT || h.significance == HEADLINE_ABOVE_NOISE_FLOOR;
+    int equal = h.significance == HEADLINE_NO_VISIBLE_DIFFERENCE;
     report_finding(ctx->doc, "Specular occlusion",
                    "%s %s (mean DSSIM %.4f; next %s %.4f%s; AO used as specular "
                    "occlusion %.4f; the references' noise floor %.3f at r = 0.25 to %.3f at r = 0.8). "
                    "In 2^(-3.32 r^2) the data support r = %s. On GTAO's inputs the LUT 32^3 scores %.4f (%s its "
                    "gain over AO-as-SO on exact inputs is %.4f).",
-                   ahead ? "Closest to the Monte Carlo reference:" : "Lowest mean DSSIM, but not significantly:",
+                   ahead   ? "Closest to the Monte Carlo reference:"
+                   : equal ? "Lowest mean DSSIM, but not visibly (a gap below a just-noticeable DSSIM):"
+                           : "Lowest mean DSSIM, but not significantly:",
                    n.best->label, n.best->mean_dssim, n.runner_up->label, n.runner_up->mean_dssim,
-                   ahead ? "" : ", a gap below the references' noise floor at this quality", n.ao->mean_dssim,
+                   ahead || equal ? "" : ", a gap below the references' noise floor at this quality", n.ao->mean_dssim,
                    r->noise_floor_dssim[0], r->noise_floor_dssim[SO_STUDY_ROUGHNESSES - 1],
                    alpha ? "alpha" : "perceptual roughness", n.lut32_on_gtao->mean_dssim,
                    input_cost > lut_gain ? "GTAO's error outweighs the choice of variant:" : "the choice of variant still matters:",
