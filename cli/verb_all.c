@@ -127,7 +127,7 @@ static int check_inputs(const report_context *ctx, const int selected[STAGE_MAX]
  * refuses any other input at its write). */
 static int check_outputs(const report_context *ctx, const int selected[STAGE_MAX])
 {
-    static const char *const report_files[] = {"report.md", "report.html", "summary.json"};
+    static const char *const report_files[] = {"report.md", "report.html", "summary.json", "claims.md"};
     const char *dir = ctx->study.output_dir;
     char path[4096], what[128];
     gt_error e;
