@@ -87,9 +87,13 @@ header = (b"\x76\x2f\x31\x01" + struct.pack("<i", 2) + attr("channels", "chlist"
 open(sys.argv[1], "wb").write(header + b"\0" * (3072 - len(header)))
 PY
 cmp -s big.exr "$source_dir/tests/fuzz/regressions/exr/oversized-data-window" || fail "big.exr is not the fuzz regression input"
+# AddressSanitizer reserves terabytes of shadow memory, so under it the
+# limit is left out (the refusal's message still shows it came first).
+memory_limit=1000000
+ldd "$gtlab" 2>/dev/null | grep -q libasan && memory_limit=unlimited
 for verb in "compare big.exr ao.exr" "merge big.exr ao.exr -o out.exr" "approx gtao --gbuffer big.exr -o out.exr"; do
   # shellcheck disable=SC2086
-  (ulimit -v 1000000 && timeout 5 "$gtlab" $verb >stdout 2>stderr)
+  (ulimit -v $memory_limit && timeout 5 "$gtlab" $verb >stdout 2>stderr)
   status=$?
   if [ "$status" -ne 1 ] || [ "$(wc -l <stderr)" -ne 1 ] ||
      ! grep -q "^gtlab: big.exr: the header claims a data window of 134217728 pixels of 6 bytes, more than a file of 3072 bytes can hold (at most 1032:1 for its compression)" stderr; then
