@@ -1,8 +1,10 @@
 /* A technique as the command line sees it: the subcommands it adds to the
  * verbs (`gtlab approx NAME`, `fit`, `lut`, `check`, `bench`) and its
- * sections of `gtlab all`. Each technique defines one `technique` in
- * cli/technique_<name>.c; cli/techniques.c lists them, one line each, and
- * the verbs, their --help and `gtlab all` are built from that list, so adding
+ * sections of `gtlab all`. Each technique defines one `technique` in its
+ * folder's command-line face (techniques/<name>/<name>_cli.c, or
+ * cli/technique_<name>.c for one not yet moved); techniques/CMakeLists.txt
+ * lists them, one line each, cli/techniques.c is generated from it, and the
+ * verbs, their --help and `gtlab all` are built from that list, so adding
  * a technique edits no verb (docs/adding-a-technique.md). The reference
  * quantities of `gtlab render` have their own registry one layer down
  * (raytracer/), since the raytracer must know them without the CLI. */

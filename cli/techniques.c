@@ -1,32 +1,18 @@
-/* The technique registry: one line per technique, in the order of the
- * report. A technique is defined in cli/technique_<name>.c. */
+/* The technique registry, in the order of the report: generated from the
+ * one list of techniques/CMakeLists.txt (technique_list.inc holds a T(name)
+ * per technique). A technique is defined by its folder's command-line face
+ * (techniques/<name>/<name>_cli.c) or, until issue 43 has moved it, by
+ * cli/technique_<name>.c. */
 #include "cli/technique.h"
 
-#define GTLAB_TECHNIQUES(T) \
-    T(ao)                   \
-    T(gtao)                 \
-    T(multibounce)          \
-    T(specular_occlusion)   \
-    T(sphere_light)         \
-    T(dfg)                  \
-    T(normals)              \
-    T(hdr_precision)        \
-    T(color_grading)        \
-    T(sg_ndf)               \
-    T(anti_aliasing)        \
-    T(inside)               \
-    T(volumetric)           \
-    T(atmosphere)           \
-    T(fog)                  \
-    T(environment)          \
-    T(scale)                \
-    T(throughput)           \
-    T(shader)
-
-#define DECLARE(name) extern const technique technique_##name;
-#define REGISTER(name) &technique_##name,
-GTLAB_TECHNIQUES(DECLARE)
-const technique *const gtlab_techniques[] = {GTLAB_TECHNIQUES(REGISTER) NULL};
+#define T(name) extern const technique technique_##name;
+#include "technique_list.inc"
+#undef T
+#define T(name) &technique_##name,
+const technique *const gtlab_techniques[] = {
+#include "technique_list.inc"
+    NULL};
+#undef T
 
 size_t technique_subcommands(technique_verb verb, cli_subcommand *out, size_t capacity)
 {

@@ -1,11 +1,11 @@
 /* The claims rows of Kaplanyan 2010 (CryENGINE 3) from made-up results (no
  * study runs): the best-fit normals' four rows, the precision section's
- * three, the colour-grading row and the SG NDF rows, each verdict the one
- * its made-up figures must give under its record (docs/claims-protocol.md). */
+ * three and the colour-grading row, each verdict the one its made-up
+ * figures must give under its record (docs/claims-protocol.md); the SG NDF
+ * row is tested in techniques/sg_ndf/tests/. */
 #include "report/best_fit_normals_section.h"
 #include "report/color_grading_section.h"
 #include "report/hdr_precision_section.h"
-#include "report/sg_ndf_section.h"
 #include "tests/check.h"
 
 #include <math.h>
@@ -87,36 +87,10 @@ static void grading_rows(void)
     check_verdicts(&t, 0, 4, expected, "colour grading");
 }
 
-/* SG NDF: a Ward 7-lobe E below 1% reproduces; above it gives no row (a
- * local optimum bounds the best error from above only); GGX gives none. */
-static void sg_rows(void)
-{
-    static sg_ndf_result r;
-    memset(&r, 0, sizeof r);
-    r.request.material_count = 3;
-    const double e7[3] = {0.003, 0.05, 0.001};
-    for (int i = 0; i < 3; ++i) {
-        r.materials[i].ndf.kind = i == 2 ? NDF_GGX : NDF_WARD;
-        r.materials[i].fitted = 9;
-        r.materials[i].fits[6].l2_error = e7[i];
-    }
-    static claims_table t;
-    memset(&t, 0, sizeof t);
-    report doc;
-    report_init(&doc, "test");
-    report_context ctx = {{check_tmp_dir(), QUALITY_PREVIEW, 1, NULL, NULL}, &doc, NULL, &t};
-    sg_ndf_claim_rows(&ctx, &r);
-    const claim_verdict expected[1] = {CLAIM_REPRODUCED};
-    check_verdicts(&t, 0, 1, expected, "SG NDF");
-    CHECK(t.count == 1 && t.rows[0].figure == 0.003);
-    report_free(&doc);
-}
-
 int main(void)
 {
     normals_rows();
     hdr_rows();
     grading_rows();
-    sg_rows();
     return check_report("test_cryengine_claims");
 }

@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "core/atomic_file.h"
-#include "studies/sg_ndf_parts.h"
+#include "sg_ndf/sg_ndf_parts.h"
 
 void sg_ndf_material_name(const anisotropic_ndf *ndf, char *out, size_t size)
 {
@@ -88,7 +88,7 @@ static int write_header(const char *dir, const sg_ndf_result *r, gt_error *e)
     FILE *f = atomic_file_open(&af, path, "w", e);
     if (!f)
         return -1;
-    fputs("/* Spherical-Gaussian fits of anisotropic NDFs (gtlab, studies/sg_ndf.h): D(m) ~ sum over a table's\n"
+    fputs("/* Spherical-Gaussian fits of anisotropic NDFs (gtlab, techniques/sg_ndf/sg_ndf_study.h): D(m) ~ sum over a table's\n"
           " * lobes of amplitude exp(sharpness (dot(m, axis) - 1)), m in the tangent frame (x: alpha_x, z: n).\n"
           " * Only fits that passed every check (status ok). Generated; do not edit. */\n"
           "#pragma once\ntypedef struct { float axis[3]; float sharpness; float amplitude; } sg_ndf_lobe;\n",

@@ -1,5 +1,5 @@
 /* Specular images of an NDF and of its SG fit (see sg_ndf_images.h). */
-#include "studies/sg_ndf_images.h"
+#include "sg_ndf/sg_ndf_images.h"
 
 #include <math.h>
 #include <string.h>

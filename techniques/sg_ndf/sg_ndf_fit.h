@@ -35,8 +35,8 @@
  * the residual variance (ceres_bridge.h). The residuals are model misfit,
  * not noise, so they measure how well the grid determines each parameter
  * (flat directions of the cost), not a statistical uncertainty. */
-#ifndef GTLAB_FITTERS_SG_NDF_FIT_H
-#define GTLAB_FITTERS_SG_NDF_FIT_H
+#ifndef GTLAB_SG_NDF_FIT_H
+#define GTLAB_SG_NDF_FIT_H
 
 #include "core/error.h"
 #include "core/spherical_gaussian.h"

@@ -8,7 +8,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "studies/sg_ndf.h"
+#include "sg_ndf/sg_ndf_study.h"
 #include "tests/check.h"
 
 static char *slurp(const char *path)

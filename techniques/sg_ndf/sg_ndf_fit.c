@@ -1,6 +1,6 @@
 /* The spherical-Gaussian NDF fit (see sg_ndf_fit.h for the objective,
  * initialisation and checks). */
-#include "fitters/sg_ndf_fit.h"
+#include "sg_ndf/sg_ndf_fit.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -6,7 +6,7 @@
 gtlab=$1
 work=$2
 rm -rf "$work" && mkdir -p "$work"
-source "$(dirname "$0")/cli_test_lib.sh"
+source "$(dirname "$0")/../../../tests/cli/cli_test_lib.sh"
 out=$work/sg
 
 expect_error alpha-range "--alpha-x: 0 is out of range" "" -- fit sg-ndf --alpha-x 0 -o "$out"

@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "core/anisotropic_ndf.h"
-#include "fitters/sg_ndf_fit.h"
+#include "sg_ndf/sg_ndf_fit.h"
 #include "tests/check.h"
 
 static double sg_fn(const double m[3], const void *g) { return sg_evaluate(g, m); }

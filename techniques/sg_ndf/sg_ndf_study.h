@@ -1,10 +1,10 @@
 /* The NDF fit with spherical Gaussians (issue 18 item 4; Kaplanyan,
  * CryENGINE 3, SIGGRAPH 2010: "need only ~7 lobes for anisotropic Ward
  * NDF"). For anisotropic Ward and GGX over a grid of roughness pairs, the
- * greedy series of k = 1..max_lobes SG fits (fitters/sg_ndf_fit.h: solid-
+ * greedy series of k = 1..max_lobes SG fits (sg_ndf/sg_ndf_fit.h: solid-
  * angle-weighted least squares in D, relative L2 and max errors), and for
  * the image materials the specular images of the true NDF and of each
- * k-lobe sum (studies/sg_ndf_images.h) scored by DSSIM against the true
+ * k-lobe sum (sg_ndf/sg_ndf_images.h) scored by DSSIM against the true
  * NDF's, beside the true image's own noise floor (DSSIM of its two
  * independent halves).
  *
@@ -13,11 +13,11 @@
  * their standard errors), sg_ndf_error.dat (E and max error against k per
  * material, for the plot), and per image material true.png and k<N>.png
  * (exposure 1, sRGB). */
-#ifndef GTLAB_STUDIES_SG_NDF_H
-#define GTLAB_STUDIES_SG_NDF_H
+#ifndef GTLAB_SG_NDF_STUDY_H
+#define GTLAB_SG_NDF_STUDY_H
 
 #include "core/anisotropic_ndf.h"
-#include "fitters/sg_ndf_fit.h"
+#include "sg_ndf/sg_ndf_fit.h"
 #include "studies/study.h"
 
 #define SG_NDF_DIR "sg_ndf"

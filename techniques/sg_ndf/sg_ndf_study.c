@@ -1,5 +1,5 @@
 /* The SG NDF study (see sg_ndf.h): fits, images and their scores. */
-#include "studies/sg_ndf.h"
+#include "sg_ndf/sg_ndf_study.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -8,8 +8,8 @@
 #include "core/image_io.h"
 #include "core/progress.h"
 #include "metrics/ssim.h"
-#include "studies/sg_ndf_images.h"
-#include "studies/sg_ndf_parts.h"
+#include "sg_ndf/sg_ndf_images.h"
+#include "sg_ndf/sg_ndf_parts.h"
 
 sg_ndf_request sg_ndf_default_request(study_quality quality)
 {

@@ -1,5 +1,5 @@
 /* The SG NDF fit's section of `gtlab all` (see sg_ndf_section.h). */
-#include "report/sg_ndf_section.h"
+#include "sg_ndf/sg_ndf_section.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -1,8 +1,8 @@
-/* Internal to studies/sg_ndf*.c: the study's output files. */
-#ifndef GTLAB_STUDIES_SG_NDF_PARTS_H
-#define GTLAB_STUDIES_SG_NDF_PARTS_H
+/* Internal to the sg_ndf study: the study's output files. */
+#ifndef GTLAB_SG_NDF_PARTS_H
+#define GTLAB_SG_NDF_PARTS_H
 
-#include "studies/sg_ndf.h"
+#include "sg_ndf/sg_ndf_study.h"
 
 /* "ward_0.40_0.20": the material's folder and row name. */
 void sg_ndf_material_name(const anisotropic_ndf *ndf, char *out, size_t size);

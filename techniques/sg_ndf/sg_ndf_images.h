@@ -18,8 +18,8 @@
  * Carlo over Owen-scrambled Sobol' points (core/sobol.h) from a fixed seed,
  * per pixel mean and standard error; pixels compute independently, so the
  * bits do not depend on the thread count. Background pixels are 0. */
-#ifndef GTLAB_STUDIES_SG_NDF_IMAGES_H
-#define GTLAB_STUDIES_SG_NDF_IMAGES_H
+#ifndef GTLAB_SG_NDF_IMAGES_H
+#define GTLAB_SG_NDF_IMAGES_H
 
 #include <stdint.h>
 

@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "core/sky_environment.h"
-#include "studies/sg_ndf_images.h"
+#include "sg_ndf/sg_ndf_images.h"
 #include "tests/check.h"
 
 typedef struct {

@@ -1,12 +1,12 @@
-/* The NDF fit with spherical Gaussians (studies/sg_ndf.h): E and max error
+/* The NDF fit with spherical Gaussians (sg_ndf/sg_ndf_study.h): E and max error
  * against k per material, the specular images' DSSIM, the plot
  * figures/sg_ndf_error.png, and the claims row for the talk's "~7 lobes for
  * anisotropic Ward". */
-#ifndef GTLAB_REPORT_SG_NDF_SECTION_H
-#define GTLAB_REPORT_SG_NDF_SECTION_H
+#ifndef GTLAB_SG_NDF_SECTION_H
+#define GTLAB_SG_NDF_SECTION_H
 
 #include "report/report_context.h"
-#include "studies/sg_ndf.h"
+#include "sg_ndf/sg_ndf_study.h"
 
 /* The claims rows of the talk's "~7 lobes for anisotropic Ward": one per Ward
  * material with a checked 7-lobe fit within the threshold; a paragraph in
