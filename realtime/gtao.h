@@ -19,6 +19,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "realtime/gtao_pattern.h"
 #include "realtime/screen_space.h"
 
 /* Inner slice integrals, from the view vector out to each horizon:
@@ -49,15 +50,7 @@ float gtao_fast_sqrt_magic(float x, uint32_t magic);
 float gtao_fast_sqrt(float x);
 float gtao_fast_acos(float x); /* the slide calls it GTAOFastCos */
 
-/* The spatio-temporal pattern of the talk, as fractions of a turn in [0, 1).
- * Spatial: 16 directions over each 4x4 tile, every row holding one direction
- * in each quarter of the half-turn; 4 step offsets per tile. Temporal: 6
- * rotations and 4 offsets. */
-float gtao_spatial_direction(int x, int y);
-float gtao_spatial_direction_as_transcribed(int x, int y);
-float gtao_spatial_offset(int x, int y);
-float gtao_temporal_rotation(int frame);
-float gtao_temporal_offset(int frame);
+/* The spatio-temporal pattern of the talk: realtime/gtao_pattern.h. */
 /* Slice angle phi (radians, [0, pi)) of slice k of `slices` at pixel (x, y)
  * in `frame`, and the step offset in [0, 1) along each side. With the pattern
  * off, slices are regular (phi = pi (k + 0.5) / slices) and the offset 0.5. */

@@ -8,7 +8,7 @@
  *
  * gtao_params.pattern selects the order: 0 regular slices (no pattern),
  * GTAO_PATTERN_ROWS (1, the talk's), GTAO_PATTERN_MORTON. The temporal
- * rotations and offsets are the same for both orders (gtao.h). */
+ * rotations and offsets are the same for both orders (below). */
 #ifndef GTLAB_REALTIME_GTAO_PATTERN_H
 #define GTLAB_REALTIME_GTAO_PATTERN_H
 
@@ -20,5 +20,15 @@ int gtao_morton_index(int x, int y);
 float gtao_spatial_direction_morton(int x, int y);
 /* The spatial direction of `pattern` (GTAO_PATTERN_ROWS or _MORTON) at (x, y). */
 float gtao_pattern_direction(int x, int y, int pattern);
+
+/* The spatio-temporal pattern of the talk, as fractions of a turn in [0, 1).
+ * Spatial: 16 directions over each 4x4 tile, every row holding one direction
+ * in each quarter of the half-turn; 4 step offsets per tile. Temporal: 6
+ * rotations and 4 offsets. */
+float gtao_spatial_direction(int x, int y);
+float gtao_spatial_direction_as_transcribed(int x, int y);
+float gtao_spatial_offset(int x, int y);
+float gtao_temporal_rotation(int frame);
+float gtao_temporal_offset(int frame);
 
 #endif

@@ -9,7 +9,7 @@
 #include "core/image_io.h"
 #include "core/progress.h"
 #include "core/pixel_filter.h"
-#include "luts/color_grade.h" /* srgb_to_linear */
+#include "luts/color_grade.h" /* srgb_to_linear, linear_to_srgb */
 #include "metrics/ssim.h"
 #include "raytracer/frames_render.h"
 #include "realtime/checkerboard.h"
@@ -18,7 +18,7 @@
 #include "realtime/taa_edge.h"
 #include "realtime/taa_sampling.h"
 #include "scene/camera_path.h"
-#include "studies/anti_aliasing.h" /* aa_display, AA_DIR */
+#include "studies/anti_aliasing.h" /* AA_DIR */
 
 enum { T_NONE, T_FXAA, T_TAA, T_EDGE, T_CHECKER };
 enum { IN_PLAIN, IN_HALTON, IN_EDGE, IN_CORNER, INPUTS };
@@ -36,6 +36,12 @@ aa_temporal_request aa_temporal_default_request(study_quality quality)
     aa_temporal_request rq = {production ? 384 : 160, production ? 288 : 120, production ? 24 : 12,
                               {"builtin:aa-thin"}, 1, 1919u};
     return rq;
+}
+
+
+float aa_display(float radiance)
+{
+    return (float)linear_to_srgb(radiance / (1.0 + radiance));
 }
 
 /* Path p of the scene's camera: static, or a pan: 4 cm a frame to the right

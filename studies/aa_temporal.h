@@ -104,4 +104,8 @@ double aa_work_seconds(const aa_work *w, int technique);      /* its time so far
 /* Runs the study, writing frame strips and error maps to <output>/aa/. */
 int aa_temporal_study(const study_context *ctx, const aa_temporal_request *rq, aa_temporal_result *out, gt_error *e);
 
+/* The display value of linear radiance L (Reinhard, then sRGB): what both
+ * anti-aliasing studies compare. */
+float aa_display(float radiance);
+
 #endif

@@ -111,11 +111,6 @@ static int terrain_rays(const aerial_perspective_request *rq, int threads, aeria
 
 /* ---- The cases ------------------------------------------------------------ */
 
-void aerial_file_name(const aerial_case *c, const char *kind, const char *suffix, char *out, size_t size)
-{
-    snprintf(out, size, "%s_%s_sun%02d%s", kind, c->weather, (int)c->sun_elevation_deg, suffix);
-}
-
 /* One image of a case: render, score (view: is_view), write. */
 static int run_image(const aerial_light *light, const aerial_rays *rays, const aerial_perspective_request *rq,
                      int threads, const char *dir, const char *kind, aerial_case *c, gt_error *e)

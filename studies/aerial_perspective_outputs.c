@@ -13,6 +13,11 @@
 
 static const char *const WHAT = "aerial perspective";
 
+void aerial_file_name(const aerial_case *c, const char *kind, const char *suffix, char *out, size_t size)
+{
+    snprintf(out, size, "%s_%s_sun%02d%s", kind, c->weather, (int)c->sun_elevation_deg, suffix);
+}
+
 static int count_inside(const float *select, size_t n)
 {
     int count = 0;

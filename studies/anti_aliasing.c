@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "core/image_io.h"
-#include "luts/color_grade.h" /* linear_to_srgb */
+#include "luts/color_grade.h" /* srgb_to_linear */
 #include "metrics/image_error.h"
 #include "metrics/ssim.h"
 #include "raytracer/shaded_frame.h"
@@ -21,11 +21,6 @@ aa_request aa_default_request(study_quality quality)
                      {"builtin:boxes", "builtin:menger", "builtin:cornell"}, 3, 19u,
                      aa_temporal_default_request(quality)};
     return rq;
-}
-
-float aa_display(float radiance)
-{
-    return (float)linear_to_srgb(radiance / (1.0 + radiance));
 }
 
 /* Work images of one scene: RGB display values (3 floats a pixel). */

@@ -51,9 +51,6 @@ typedef struct {
  * the temporal part's aa_temporal_default_request. */
 aa_request aa_default_request(study_quality quality);
 
-/* The display value of linear radiance L. */
-float aa_display(float radiance);
-
 int aa_study(const study_context *ctx, const aa_request *rq, aa_result *out, gt_error *e);
 
 #endif
