@@ -125,7 +125,8 @@ static int plot(const report_context *ctx, gt_error *e)
     "(luts/atmosphere_lut_axes.h; his sun-view axis dropped as the talk drops theta_sv) at the talk's layout, but "   \
     "the talk states neither its altitude range nor its atmospheres: gtlab's are y in 0-2 km (Yusov's height "        \
     "mapping over the table's 2 km, not an atmosphere's top), Bruneton 2017's clear sky and its own dense fog "       \
-    "(Mie x50, scale height 0.6 km), in float texels (no RGBA16F rounding)"
+    "(Mie x50, scale height 0.6 km), in float texels (no RGBA16F rounding); the table scored is the one written "   \
+    "as luts/atmosphere/atmosphere_inscatter_yusov2013.exr"
 #define ATMOSPHERE_TOLERANCE_TEXT                                                                                     \
     "one 8-bit sRGB code value at mid grey as a relative radiance change, 2.2 / (255 x 0.5) = 1.7% "                \
     "(CLAIM_ONE_CODE_VALUE_SRGB_RELATIVE), at the 95th percentile of the sky's pixels"
