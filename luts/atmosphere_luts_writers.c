@@ -102,7 +102,8 @@ static int read_table_exr(const char *path, atmosphere_luts *luts, int table, gt
     const char *names[6];
     if (exr_read(path, &img, e) != 0)
         return -1;
-    const char *tag = image_get_attribute(&img, ATTR_LUT_PARAMETRIZATION), *sizes = image_get_attribute(&img, ATTR_LUT_SIZES);
+    const char *tag = image_get_attribute(&img, ATTR_LUT_PARAMETRIZATION);
+    const char *sizes = image_get_attribute(&img, ATTR_LUT_SIZES);
     int *n = table == ATMOSPHERE_TABLE_INSCATTER ? luts->sizes.inscatter
                                                  : table == ATMOSPHERE_TABLE_SUN ? luts->sizes.sun : luts->sizes.sky;
     int rc = 0;

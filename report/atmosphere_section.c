@@ -257,8 +257,9 @@ static void render_files(report_context *ctx, cJSON *json, const atmosphere_luts
                                     set->files[f]);
             cJSON_AddItemToArray(files, cJSON_CreateString(set->files[f]));
         }
-        report_paragraph(ctx->doc, "Written, %s parametrization (gtlab.lut.parametrization \"%s\"), in-scatter (%d, %d, %d, "
-                         "%d), sun and sky (%d, %d, %d): %s.", atmosphere_lut_parametrization_name(set->parametrization),
+        report_paragraph(ctx->doc, "Written, %s parametrization (gtlab.lut.parametrization \"%s\"), in-scatter "
+                         "(%d, %d, %d, %d), sun and sky (%d, %d, %d): %s.",
+                         atmosphere_lut_parametrization_name(set->parametrization),
                          atmosphere_lut_parametrization_tag(set->parametrization), n[0], n[1], n[2], n[3],
                          set->sizes.sun[0], set->sizes.sun[2], set->sizes.sun[3], list);
     }
@@ -312,8 +313,9 @@ int atmosphere_section(report_context *ctx, const atmosphere_luts_result *r, gt_
         "The tables as files: the linear set in every format (the C header and shaders hold its lookup, "
         "luts/atmosphere_luts.inc), Yusov 2013's (the talk's) and Bruneton & Neyret 2008's at the talk's sizes as "
         "EXR (their lookup, luts/atmosphere_lut_axes.h, is C; `gtlab lut atmosphere --parametrization yusov2013` "
-        "writes the same bytes), each naming its parametrization, sizes and axes in its header (gtlab.lut.parametrization, "
-        "gtlab.lut.sizes, gtlab.lut); the in-scatter tables are those the sky table above scores.");
+        "writes the same bytes), each naming its parametrization, sizes and axes in its header "
+        "(gtlab.lut.parametrization, gtlab.lut.sizes, gtlab.lut); the in-scatter tables are those the sky table above "
+        "scores.");
     render_files(ctx, json, r);
     render_sky_findings(ctx, r);
     add_claims(ctx, r);
