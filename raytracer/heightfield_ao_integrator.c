@@ -245,7 +245,8 @@ void heightfield_settings_free(heightfield_settings *hs)
     }
 }
 
-int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d)
+/* The screen segment of the ray p + t d up to its end (ray_end). */
+static screen_segment ray_segment(const heightfield_settings *hs, vec3 p, vec3 d)
 {
     const camera_view *v = &hs->gb->view;
     vec3 c0 = to_camera(v, p), dc = v3(v3_dot(d, v->right), v3_dot(d, v->up), v3_dot(d, v->forward));
@@ -255,38 +256,103 @@ int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d)
     to_screen(v, c1, &sg.x1, &sg.y1);
     sg.x_start = (int)floorf(sg.x0);
     sg.y_start = (int)floorf(sg.y0);
-    float length = hypotf(sg.x1 - sg.x0, sg.y1 - sg.y0);
+    return sg;
+}
+
+/* Where, between screen parameters ua (in front) and ub (behind), the ray
+ * passes behind the height field of the cell it crosses there: bisection
+ * to a thousandth of the interval (the hit's place on the pixel's surface;
+ * visibility itself is decided by the ends). */
+static float crossing(const heightfield_settings *hs, const screen_segment *sg, float ua, float ub)
+{
+    for (int k = 0; k < 10; ++k) {
+        float um = 0.5f * (ua + ub);
+        if (behind_at(hs, sg, um))
+            ub = um;
+        else
+            ua = um;
+    }
+    return ub;
+}
+
+/* Marches the ray's screen segment (below); returns 1 when it passes behind
+ * the height field (or enters a slab), with *u_hit the screen parameter of
+ * a point of the cell where it does: the crossing (infinite thickness), or
+ * the cell's entry (finite). */
+static int march(const heightfield_settings *hs, const screen_segment *sg, float *u_hit)
+{
+    const camera_view *v = &hs->gb->view;
+    float length = hypotf(sg->x1 - sg->x0, sg->y1 - sg->y0);
     if (!(length > 0.0f))
-        return 1;
-    float u_end = clip_to_image(sg.x0, sg.y0, sg.x1, sg.y1, (float)v->width, (float)v->height);
-    float dx = (sg.x1 - sg.x0) / length, dy = (sg.y1 - sg.y0) / length, tau_end = u_end * length;
+        return 0;
+    float u_end = clip_to_image(sg->x0, sg->y0, sg->x1, sg->y1, (float)v->width, (float)v->height);
+    float dx = (sg->x1 - sg->x0) / length, dy = (sg->y1 - sg->y0) / length, tau_end = u_end * length;
     const float eps = 1e-3f;
     for (float tau = 0.0f; tau < tau_end;) {
-        int cx = (int)floorf(sg.x0 + (tau + eps) * dx), cy = (int)floorf(sg.y0 + (tau + eps) * dy);
+        int cx = (int)floorf(sg->x0 + (tau + eps) * dx), cy = (int)floorf(sg->y0 + (tau + eps) * dy);
         if (cx < 0 || cy < 0 || cx >= v->width || cy >= v->height)
             break;
         int skipped = 0;
         for (int level = 0; level < HEIGHTFIELD_LEVELS && !skipped; ++level) {
             int size = heightfield_tile_sizes[level];
-            float tile_exit = fminf(fminf(boundary(sg.x0, dx, cx, size), boundary(sg.y0, dy, cy, size)), tau_end);
+            float tile_exit = fminf(fminf(boundary(sg->x0, dx, cx, size), boundary(sg->y0, dy, cy, size)), tau_end);
             /* Nudged positions can round back onto the boundary just crossed
              * when the path is nearly parallel to it: always move on. */
             tile_exit = fmaxf(tile_exit, tau + eps);
             float tile_min = hs->tile_min[level][(cy / size) * hs->tiles_x[level] + cx / size];
-            if (fmaxf(ray_depth(&sg, tau / length), ray_depth(&sg, tile_exit / length)) <= tile_min) {
+            if (fmaxf(ray_depth(sg, tau / length), ray_depth(sg, tile_exit / length)) <= tile_min) {
                 tau = tile_exit;
                 skipped = 1;
             }
         }
         if (skipped)
             continue;
-        float cell_exit = fmaxf(fminf(fminf(boundary(sg.x0, dx, cx, 1), boundary(sg.y0, dy, cy, 1)), tau_end), tau + eps);
-        if (isinf(hs->thickness) ? (tau > 0.0f && behind_at(hs, &sg, (tau + eps) / length)) ||
-                                       behind_at(hs, &sg, (cell_exit - eps) / length)
-                                 : in_slab(hs, &sg, (tau + eps) / length, (cell_exit - eps) / length))
-            return 0;
+        float cell_exit = fmaxf(fminf(fminf(boundary(sg->x0, dx, cx, 1), boundary(sg->y0, dy, cy, 1)), tau_end), tau + eps);
+        float ua = (tau + eps) / length, ub = (cell_exit - eps) / length;
+        if (!isinf(hs->thickness)) {
+            if (in_slab(hs, sg, ua, ub)) {
+                *u_hit = ua;
+                return 1;
+            }
+        } else if (tau > 0.0f && behind_at(hs, sg, ua)) {
+            *u_hit = ua;
+            return 1;
+        } else if (behind_at(hs, sg, ub)) {
+            *u_hit = crossing(hs, sg, ua, ub);
+            return 1;
+        }
         tau = cell_exit;
     }
+    return 0;
+}
+
+int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d)
+{
+    screen_segment sg = ray_segment(hs, p, d);
+    float u;
+    return !march(hs, &sg, &u);
+}
+
+int heightfield_first_hit(const heightfield_settings *hs, vec3 p, vec3 d, surface_hit *hit)
+{
+    screen_segment sg = ray_segment(hs, p, d);
+    float u;
+    if (!march(hs, &sg, &u))
+        return 0;
+    if (!hit)
+        return 1;
+    const camera_view *v = &hs->gb->view;
+    float x = sg.x0 + u * (sg.x1 - sg.x0), y = sg.y0 + u * (sg.y1 - sg.y0);
+    int px = (int)floorf(x), py = (int)floorf(y);
+    px = px < 0 ? 0 : px >= v->width ? v->width - 1 : px;
+    py = py < 0 ? 0 : py >= v->height ? v->height - 1 : py;
+    long j = (long)py * v->width + px;
+    float sx = (2.0f * x / (float)v->width - 1.0f) * v->tan_half_yfov * v->aspect;
+    float sy = (1.0f - 2.0f * y / (float)v->height) * v->tan_half_yfov;
+    vec3 w = v3_add(v->forward, v3_add(v3_scale(v->right, sx), v3_scale(v->up, sy))); /* w . forward = 1 */
+    *hit = hs->gb->hits[j];
+    hit->p = v3_add(v->origin, v3_scale(w, surface_depth(hs, j, x, y)));
+    hit->t = v3_length(v3_sub(hit->p, p));
     return 1;
 }
 

@@ -52,6 +52,18 @@ void heightfield_settings_free(heightfield_settings *hs);
  * (exposed for tests). */
 int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d);
 
+/* The surface the ray p + t d first meets in the height-field world (the
+ * multi-bounce reference of raytracer/heightfield_multibounce_integrator.h):
+ * 0 where heightfield_unoccluded is 1; else 1 and, if hit is not NULL, the
+ * G-buffer hit of the pixel under the point where the ray passes behind the
+ * height field (found by bisection within that pixel's cell), moved along
+ * its eye ray onto the pixel's surface (its tangent plane, clamped as
+ * above): the visible surface a screen-space technique would take the ray
+ * to have met, with that pixel's normals and material. Its distance t is
+ * from p. (With a finite thickness the point is where the ray enters the
+ * pixel's cell.) */
+int heightfield_first_hit(const heightfield_settings *hs, vec3 p, vec3 d, surface_hit *hit);
+
 /* The horizon of the half-slice of p that leaves it along s (unit, s . v = 0,
  * v the unit vector from p to the eye), for the hemisphere of n: the
  * smallest angle from v, within the slice's plane, of the surface points
