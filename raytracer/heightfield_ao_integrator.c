@@ -27,6 +27,15 @@ static void to_screen(const camera_view *v, vec3 c, float *x, float *y)
     *y = (1.0f - c.y / (c.z * v->tan_half_yfov)) * 0.5f * (float)v->height;
 }
 
+/* The unnormalised direction of the eye ray through screen point (x, y):
+ * its component along the camera axis is 1. */
+static vec3 eye_direction(const camera_view *v, float x, float y)
+{
+    float sx = (2.0f * x / (float)v->width - 1.0f) * v->tan_half_yfov * v->aspect;
+    float sy = (1.0f - 2.0f * y / (float)v->height) * v->tan_half_yfov;
+    return v3_add(v->forward, v3_add(v3_scale(v->right, sx), v3_scale(v->up, sy)));
+}
+
 /* Depth of pixel j's surface (its tangent plane) along the eye ray through
  * screen point (x, y), clamped to its neighbourhood's depths
  * (core/heightfield_model.h). */
@@ -34,9 +43,7 @@ static float surface_depth(const heightfield_settings *hs, long j, float x, floa
 {
     const camera_view *v = &hs->gb->view;
     const surface_hit *h = &hs->gb->hits[j];
-    float sx = (2.0f * x / (float)v->width - 1.0f) * v->tan_half_yfov * v->aspect;
-    float sy = (1.0f - 2.0f * y / (float)v->height) * v->tan_half_yfov;
-    vec3 w = v3_add(v->forward, v3_add(v3_scale(v->right, sx), v3_scale(v->up, sy)));
+    vec3 w = eye_direction(v, x, y);
     float nw = v3_dot(h->ng, w);
     float depth = v3_dot(h->ng, v3_sub(h->p, v->origin)) / nw;
     if (!(fabsf(nw) >= HEIGHTFIELD_MIN_FACING * v3_length(w) && depth > 0.0f))
@@ -245,6 +252,20 @@ void heightfield_settings_free(heightfield_settings *hs)
     }
 }
 
+/* Whether the segment's start lies on the surface of the pixel it projects
+ * to (to a ten-thousandth of its depth): a point of the G-buffer or a ray's
+ * hit on a pixel's surface, whose own plane cannot occlude a ray leaving it
+ * (the march skips that cell), not a point in front of it on the side wall
+ * of a neighbour's column (heightfield_first_hit). */
+static int on_own_surface(const heightfield_settings *hs, const screen_segment *sg)
+{
+    const camera_view *v = &hs->gb->view;
+    if (sg->x_start < 0 || sg->y_start < 0 || sg->x_start >= v->width || sg->y_start >= v->height)
+        return 1;
+    long j = (long)sg->y_start * v->width + sg->x_start;
+    return !hs->gb->mask[j] || sg->z0 >= surface_depth(hs, j, sg->x0, sg->y0) * (1.0f - 1e-4f);
+}
+
 /* The screen segment of the ray p + t d up to its end (ray_end). */
 static screen_segment ray_segment(const heightfield_settings *hs, vec3 p, vec3 d)
 {
@@ -256,6 +277,8 @@ static screen_segment ray_segment(const heightfield_settings *hs, vec3 p, vec3 d
     to_screen(v, c1, &sg.x1, &sg.y1);
     sg.x_start = (int)floorf(sg.x0);
     sg.y_start = (int)floorf(sg.y0);
+    if (!on_own_surface(hs, &sg))
+        sg.x_start = sg.y_start = -1;
     return sg;
 }
 
@@ -278,8 +301,10 @@ static float crossing(const heightfield_settings *hs, const screen_segment *sg, 
 /* Marches the ray's screen segment (below); returns 1 when it passes behind
  * the height field (or enters a slab), with *u_hit the screen parameter of
  * a point of the cell where it does: the crossing (infinite thickness), or
- * the cell's entry (finite). */
-static int march(const heightfield_settings *hs, const screen_segment *sg, float *u_hit)
+ * the cell's entry (finite); *wall = 1 when the ray enters the cell already
+ * behind its surface (it meets the side of that pixel's column), with
+ * *u_before a point of the cell it comes from. */
+static int march(const heightfield_settings *hs, const screen_segment *sg, float *u_hit, int *wall, float *u_before)
 {
     const camera_view *v = &hs->gb->view;
     float length = hypotf(sg->x1 - sg->x0, sg->y1 - sg->y0);
@@ -316,9 +341,12 @@ static int march(const heightfield_settings *hs, const screen_segment *sg, float
             }
         } else if (tau > 0.0f && behind_at(hs, sg, ua)) {
             *u_hit = ua;
+            *u_before = (tau - eps) / length;
+            *wall = 1;
             return 1;
         } else if (behind_at(hs, sg, ub)) {
             *u_hit = crossing(hs, sg, ua, ub);
+            *wall = 0;
             return 1;
         }
         tau = cell_exit;
@@ -329,15 +357,46 @@ static int march(const heightfield_settings *hs, const screen_segment *sg, float
 int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d)
 {
     screen_segment sg = ray_segment(hs, p, d);
-    float u;
-    return !march(hs, &sg, &u);
+    float u, before;
+    int wall;
+    return !march(hs, &sg, &u, &wall, &before);
+}
+
+/* The side of a pixel's column the ray enters at screen parameter u from
+ * the neighbouring cell at `before`: the plane through the eye and the
+ * pixel edge crossed (x = X or y = Y on the screen), facing the ray. Moves
+ * hit->p to the ray's point on it, nudged a thousandth of a pixel back
+ * towards the ray, and sets both normals. */
+static void column_side(const heightfield_settings *hs, const screen_segment *sg, float u, float before, vec3 p,
+                        vec3 d, surface_hit *hit)
+{
+    const camera_view *v = &hs->gb->view;
+    float x = sg->x0 + u * (sg->x1 - sg->x0), y = sg->y0 + u * (sg->y1 - sg->y0);
+    float xb = sg->x0 + before * (sg->x1 - sg->x0), yb = sg->y0 + before * (sg->y1 - sg->y0);
+    vec3 n;
+    if (floorf(xb) != floorf(x)) {
+        float edge = xb < x ? floorf(x) : floorf(x) + 1.0f;
+        n = v3_sub(v->right, v3_scale(v->forward, (2.0f * edge / (float)v->width - 1.0f) * v->tan_half_yfov * v->aspect));
+    } else {
+        float edge = yb < y ? floorf(y) : floorf(y) + 1.0f;
+        n = v3_sub(v->up, v3_scale(v->forward, (1.0f - 2.0f * edge / (float)v->height) * v->tan_half_yfov));
+    }
+    n = v3_normalize(n);
+    if (v3_dot(n, d) > 0.0f)
+        n = v3_scale(n, -1.0f);
+    float t = -v3_dot(n, v3_sub(p, v->origin)) / v3_dot(n, d);
+    vec3 q = v3_add(p, v3_scale(d, fmaxf(t, 0.0f)));
+    float pixel = 2.0f * v->tan_half_yfov * camera_depth(v, q) / (float)v->height;
+    hit->p = v3_add(q, v3_scale(n, 1e-3f * pixel));
+    hit->ng = hit->ns = n;
 }
 
 int heightfield_first_hit(const heightfield_settings *hs, vec3 p, vec3 d, surface_hit *hit)
 {
     screen_segment sg = ray_segment(hs, p, d);
-    float u;
-    if (!march(hs, &sg, &u))
+    float u, before;
+    int wall;
+    if (!march(hs, &sg, &u, &wall, &before))
         return 0;
     if (!hit)
         return 1;
@@ -347,11 +406,11 @@ int heightfield_first_hit(const heightfield_settings *hs, vec3 p, vec3 d, surfac
     px = px < 0 ? 0 : px >= v->width ? v->width - 1 : px;
     py = py < 0 ? 0 : py >= v->height ? v->height - 1 : py;
     long j = (long)py * v->width + px;
-    float sx = (2.0f * x / (float)v->width - 1.0f) * v->tan_half_yfov * v->aspect;
-    float sy = (1.0f - 2.0f * y / (float)v->height) * v->tan_half_yfov;
-    vec3 w = v3_add(v->forward, v3_add(v3_scale(v->right, sx), v3_scale(v->up, sy))); /* w . forward = 1 */
     *hit = hs->gb->hits[j];
-    hit->p = v3_add(v->origin, v3_scale(w, surface_depth(hs, j, x, y)));
+    if (wall && isinf(hs->thickness))
+        column_side(hs, &sg, u, before, p, d, hit);
+    else
+        hit->p = v3_add(v->origin, v3_scale(eye_direction(v, x, y), surface_depth(hs, j, x, y)));
     hit->t = v3_length(v3_sub(hit->p, p));
     return 1;
 }

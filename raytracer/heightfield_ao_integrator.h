@@ -55,13 +55,16 @@ int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d);
 /* The surface the ray p + t d first meets in the height-field world (the
  * multi-bounce reference of raytracer/heightfield_multibounce_integrator.h):
  * 0 where heightfield_unoccluded is 1; else 1 and, if hit is not NULL, the
- * G-buffer hit of the pixel under the point where the ray passes behind the
- * height field (found by bisection within that pixel's cell), moved along
- * its eye ray onto the pixel's surface (its tangent plane, clamped as
- * above): the visible surface a screen-space technique would take the ray
- * to have met, with that pixel's normals and material. Its distance t is
- * from p. (With a finite thickness the point is where the ray enters the
- * pixel's cell.) */
+ * G-buffer hit of the pixel whose solid the ray enters (its material), at
+ * the point where it does: on the pixel's surface (its tangent plane,
+ * clamped as above; the crossing found by bisection within the cell, the
+ * pixel's normals) when the ray passes behind it within its cell, or on the
+ * side of the pixel's column (the plane through the eye and the pixel edge
+ * crossed, its normal facing the ray) when the ray enters the cell already
+ * behind the surface. Its distance t is from p. (With a finite thickness:
+ * the pixel's surface where the ray enters its cell.) A ray leaving a point
+ * on a column's side (not on its own pixel's surface) may be blocked by the
+ * surface of the cell it starts in. */
 int heightfield_first_hit(const heightfield_settings *hs, vec3 p, vec3 d, surface_hit *hit);
 
 /* The horizon of the half-slice of p that leaves it along s (unit, s . v = 0,

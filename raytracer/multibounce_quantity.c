@@ -117,8 +117,9 @@ const reference_quantity_descriptor reference_quantity_heightfield_multibounce =
     .help = "multibounce's channels and header where rays meet only the depth\n"
             "buffer taken as a height field (as heightfield-ao: infinite\n"
             "thickness, rays leaving the image escape) and a blocked ray goes on\n"
-            "from the visible surface under it: the multi-bounce truth of the\n"
-            "world screen-space AO sees",
+            "from the height field's surface it enters (a pixel's plane or its\n"
+            "column's side): the multi-bounce truth of the world screen-space\n"
+            "AO sees",
     .options = (const reference_option *const[]){&reference_option_albedo, &reference_option_bounces, NULL},
     .set_defaults = set_defaults,
     .prepare = prepare_heightfield,
