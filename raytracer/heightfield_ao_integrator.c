@@ -376,7 +376,8 @@ static void column_side(const heightfield_settings *hs, const screen_segment *sg
     vec3 n;
     if (floorf(xb) != floorf(x)) {
         float edge = xb < x ? floorf(x) : floorf(x) + 1.0f;
-        n = v3_sub(v->right, v3_scale(v->forward, (2.0f * edge / (float)v->width - 1.0f) * v->tan_half_yfov * v->aspect));
+        float slope = (2.0f * edge / (float)v->width - 1.0f) * v->tan_half_yfov * v->aspect;
+        n = v3_sub(v->right, v3_scale(v->forward, slope));
     } else {
         float edge = yb < y ? floorf(y) : floorf(y) + 1.0f;
         n = v3_sub(v->up, v3_scale(v->forward, (1.0f - 2.0f * edge / (float)v->height) * v->tan_half_yfov));
