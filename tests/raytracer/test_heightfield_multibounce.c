@@ -150,8 +150,8 @@ static int build_open_box(scene *s, camera *cam)
  * a difference of the height field's of the order of a pixel. */
 static int inside_a_face(const image *img, size_t i)
 {
-    static const char *const normal[3] = {CH_NG_X, CH_NG_Y, CH_NG_Z};
     const float *mask = channel(img, CH_MASK);
+    const float *normal[3] = {channel(img, CH_NG_X), channel(img, CH_NG_Y), channel(img, CH_NG_Z)};
     int w = img->width, h = img->height, x = (int)(i % (size_t)w), y = (int)(i / (size_t)w);
     if (x < 1 || y < 1 || x >= w - 1 || y >= h - 1)
         return 0;
@@ -160,26 +160,36 @@ static int inside_a_face(const image *img, size_t i)
         if (mask[j] == 0.0f)
             return 0;
         for (int c = 0; c < 3; ++c)
-            if (channel(img, normal[c])[j] != channel(img, normal[c])[i])
+            if (normal[c][j] != normal[c][i])
                 return 0;
     }
     return 1;
 }
 
-/* Channel `name` of img minus channel `minus` (NULL: nothing) at pixel i,
- * and a bound of its standard error (the two errors added). */
-static double value(const image *img, const char *name, const char *minus, size_t i, double *se)
+/* Channel `name` of img minus channel `minus` (NULL: nothing), and a bound
+ * of its standard error per pixel (the two errors added). */
+typedef struct {
+    const float *v, *se, *minus, *minus_se;
+} difference_channels;
+
+static difference_channels difference_of(const image *img, const char *name, const char *minus)
 {
     char stderr_name[128];
+    difference_channels d = {channel(img, name), NULL, NULL, NULL};
     snprintf(stderr_name, sizeof stderr_name, "%s.%s", name, CH_SUFFIX_STDERR);
-    double v = channel(img, name)[i];
-    *se = channel(img, stderr_name)[i];
+    d.se = channel(img, stderr_name);
     if (minus) {
         snprintf(stderr_name, sizeof stderr_name, "%s.%s", minus, CH_SUFFIX_STDERR);
-        v -= channel(img, minus)[i];
-        *se += channel(img, stderr_name)[i];
+        d.minus = channel(img, minus);
+        d.minus_se = channel(img, stderr_name);
     }
-    return v;
+    return d;
+}
+
+static double value(const difference_channels *d, size_t i, double *se)
+{
+    *se = d->se[i] + (d->minus ? d->minus_se[i] : 0.0f);
+    return (double)d->v[i] - (d->minus ? d->minus[i] : 0.0f);
 }
 
 /* Whether the mean over the box's pixels inside a face of (name - minus)
@@ -189,11 +199,12 @@ static double mean_z(const image *x, const image *y, const char *name, const cha
                      const char *label)
 {
     const float *mask = channel(x, CH_MASK);
+    const difference_channels dx = difference_of(x, name, minus), dy = difference_of(y, name, minus);
     double diff = 0.0, var = 0.0, n = 0.0;
     for (size_t i = 0; i < image_pixel_count(x); ++i)
         if (mask[i] != 0.0f && inside_a_face(x, i)) {
             double sx, sy;
-            diff += value(x, name, minus, i, &sx) - value(y, name, minus, i, &sy);
+            diff += value(&dx, i, &sx) - value(&dy, i, &sy);
             var += sx * sx + sy * sy;
             n += 1.0;
         }
@@ -220,10 +231,12 @@ static void test_open_box_agrees_with_3d(void)
     mean_z(&hf, &d3, "multibounce_0.5.V", CH_AO, code_value, "the bounces' light V'_d(0.5) - V_d");
     mean_z(&hf, &d3, "multibounce_0.9.V", CH_AO, code_value, "the bounces' light V'_d(0.9) - V_d");
     /* ... which is large against that allowance: the test sees the bounces */
+    const difference_channels bounces = difference_of(&hf, "multibounce_0.9.V", CH_AO);
+    const float *mask = channel(&hf, CH_MASK);
     double light = 0.0, se, n = 0.0;
     for (size_t i = 0; i < image_pixel_count(&hf); ++i)
-        if (channel(&hf, CH_MASK)[i] != 0.0f && inside_a_face(&hf, i)) {
-            light += value(&hf, "multibounce_0.9.V", CH_AO, i, &se);
+        if (mask[i] != 0.0f && inside_a_face(&hf, i)) {
+            light += value(&bounces, i, &se);
             n += 1.0;
         }
     printf("open box: the bounces' light at albedo 0.9, %.4f\n", light / n);
