@@ -235,6 +235,7 @@
 #define ATTR_APPROX "gtlab.approx"       /* approx specular-occlusion: the variant's label */
 #define ATTR_LUT "gtlab.lut"             /* a LUT's axes and parametrisation */
 #define ATTR_LUT_SIZES "gtlab.lut.sizes" /* a multi-axis LUT's sizes, "N0 N1 N2 N3" (its image: N0*N1 x N2*N3) */
+#define ATTR_LUT_PARAMETRIZATION "gtlab.lut.parametrization" /* its axes' mappings: "linear", "yusov2013", ... */
 #define ATTR_CONTROL_VARIATE "gtlab.control_variate" /* ao: "none" or "heightfield"; absent: none */
 #define ATTR_ENVIRONMENT "gtlab.environment" /* env-*: "white", "sky", "sun" or the file */
 /* integer */

@@ -3,6 +3,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #define PI 3.14159265358979323846
 
@@ -14,6 +15,41 @@ const char *atmosphere_lut_parametrization_name(atmosphere_lut_parametrization k
 {
     return kind == ATMOSPHERE_PARAM_YUSOV ? "Yusov 2013" : kind == ATMOSPHERE_PARAM_BRUNETON ? "Bruneton & Neyret 2008"
                                                                                              : "linear";
+}
+
+const char *atmosphere_lut_parametrization_tag(atmosphere_lut_parametrization kind)
+{
+    return kind == ATMOSPHERE_PARAM_YUSOV ? "yusov2013" : kind == ATMOSPHERE_PARAM_BRUNETON ? "bruneton2008" : "linear";
+}
+
+int atmosphere_lut_parametrization_from_tag(const char *tag)
+{
+    for (int k = 0; k < ATMOSPHERE_PARAMS; ++k)
+        if (tag && strcmp(tag, atmosphere_lut_parametrization_tag((atmosphere_lut_parametrization)k)) == 0)
+            return k;
+    return -1;
+}
+
+/* The header's definitions, restated for a reader of the files (grid point i of n, u = i / (n - 1)). */
+const char *atmosphere_lut_axes_description(atmosphere_lut_parametrization kind)
+{
+    if (kind == ATMOSPHERE_PARAM_YUSOV)
+        return "axes (Yusov 2013, the talk's [Yus13], without the sun-view axis; grid point i of n at u = i / (n - "
+               "1)): y: u = ((h - 16 m) / (y_max - 32 m))^0.5, h = y clamped to [16 m, y_max - 16 m]; theta_v: split at "
+               "the horizon's zenith cosine c_h = -sqrt(h (2 R + h)) / (R + h), points n/2..n-1 above it at "
+               "((mu - c_h) / (1 - c_h))^0.2 of their half (horizon at n/2, zenith at n-1), points 0..n/2-1 below "
+               "it at ((c_h - mu) / (c_h + 1))^0.2 (horizon at 0, nadir at n/2-1), mu kept 1e-4 off the horizon, "
+               "no filtering across it; theta_s: u = (atan(max(mu_s, -0.1975) tan(1.386)) / 1.1 + 0.74) / 2; "
+               "t: u = t in [0, 1] (0 clear, 1 dense fog)";
+    if (kind == ATMOSPHERE_PARAM_BRUNETON)
+        return "axes (Bruneton & Neyret 2008; grid point i of n at u = i / (n - 1)): y: u = rho / rho_max, rho = "
+               "sqrt(r^2 - R^2), rho_max at r = R + y_max, the lowest point at y = 10 m; theta_v: split at the "
+               "horizon, rays to the ground (d their distance to it) on points 0..n/2-1 at (n/2 - 1)(1 - d / rho), "
+               "others (d to the top R_t, H = sqrt(R_t^2 - R^2)) on points n/2..n-1 at n/2 + (n/2 - 1) d / (rho + "
+               "H), d clamped to [r - R, 0.999 rho] and [R_t - r, 0.999 (rho + H)]; theta_s: u = (atan(max(mu_s, "
+               "-0.1975) tan(1.386)) / 1.1 + 0.74) / 2; t: u = t in [0, 1] (0 clear, 1 dense fog)";
+    return "axes (linear) with grid points at both ends: theta_s in [0, 96 deg], theta_v in [0, 180 deg], y in [0, "
+           "y_max] m, t in [0, 1] (0 clear, 1 dense fog)";
 }
 
 static double clamp(double x, double lo, double hi) { return fmin(fmax(x, lo), hi); }

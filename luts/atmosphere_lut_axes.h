@@ -68,6 +68,13 @@ typedef enum {
 
 /* "linear", "Yusov 2013", "Bruneton & Neyret 2008". */
 const char *atmosphere_lut_parametrization_name(atmosphere_lut_parametrization kind);
+/* "linear", "yusov2013", "bruneton2008": the files' names, ATTR_LUT_PARAMETRIZATION
+ * and `gtlab lut atmosphere --parametrization`. */
+const char *atmosphere_lut_parametrization_tag(atmosphere_lut_parametrization kind);
+/* The kind whose tag is `tag`, or -1. */
+int atmosphere_lut_parametrization_from_tag(const char *tag);
+/* One sentence: the four axes' mappings of `kind`, for the files' ATTR_LUT. */
+const char *atmosphere_lut_axes_description(atmosphere_lut_parametrization kind);
 
 /* What the mappings depend on besides the sizes. */
 typedef struct {

@@ -132,12 +132,12 @@ int atmosphere_lut_errors(const atmosphere_luts *luts, const atmosphere_lut_refe
                           atmosphere_table_error out[ATMOSPHERE_TABLES])
 {
     int n = ref->count;
-    double *e = malloc(sizeof *e * 4 * (size_t)(n > 0 ? n : 1));
+    double *e = malloc(sizeof *e * 5 * (size_t)(n > 0 ? n : 1));
     if (!e)
         return -1;
     for (int table = 0; table < ATMOSPHERE_TABLES; ++table) {
         int values = table == ATMOSPHERE_TABLE_INSCATTER ? 6 : 3;
-        int day = 0;
+        int day = 0, twilight = 0;
         for (int i = 0; i < n; ++i) {
             double got[ATMOSPHERE_LUT_VALUES];
             size_t at = ((size_t)i * ATMOSPHERE_TABLES + table) * ATMOSPHERE_LUT_VALUES;
@@ -147,8 +147,12 @@ int atmosphere_lut_errors(const atmosphere_luts *luts, const atmosphere_lut_refe
             e[2 * n + i] = point_error(got, ref->reference + at, values, ref->floor[table]);
             if (ref->points[i].theta_s <= ATMOSPHERE_DAY_THETA_S)
                 e[3 * n + day++] = e[2 * n + i];
+            else
+                e[4 * n + twilight++] = e[2 * n + i];
         }
         out[table].day_total = stats_of(e + 3 * n, day);
+        out[table].twilight_total = stats_of(e + 4 * n, twilight);
+        out[table].day_points = day, out[table].twilight_points = twilight;
         out[table].interpolation = stats_of(e, n);
         out[table].quadrature = stats_of(e + n, n);
         out[table].total = stats_of(e + 2 * n, n);

@@ -58,7 +58,9 @@ typedef struct {
 
 typedef struct {
     atmosphere_error_stats interpolation, quadrature, total;
-    atmosphere_error_stats day_total; /* total over the points with theta_s <= ATMOSPHERE_DAY_THETA_S */
+    atmosphere_error_stats day_total;      /* total over the points with theta_s <= ATMOSPHERE_DAY_THETA_S */
+    atmosphere_error_stats twilight_total; /* total over the others (the sun lower: twilight) */
+    int day_points, twilight_points;       /* how many points each holds */
 } atmosphere_table_error;
 
 /* The three tables' errors at the reference's points. */

@@ -48,14 +48,16 @@ double atmosphere_lut_bytes(int table, const int size[4])
     return (double)texels(size) * (table == ATMOSPHERE_TABLE_INSCATTER ? 8.0 : 16.0);
 }
 
-const char *atmosphere_luts_description(void)
+void atmosphere_luts_description(const atmosphere_luts *luts, char *text, size_t size)
 {
-    return "Decima height-fog atmosphere LUTs (Kojima Productions 2017) over Bruneton 2017's atmosphere: "
-           "inscatter[((((t*Ny + y)*Nv + v)*Ns + s)*2 + i)*3 + c], i = 0 Rayleigh (plus orders >= 2 / Pbar_R), 1 Mie, "
-           "without phase: background = sum_i p_i(dot(view, sun)) inscatter_i; "
-           "sun/sky[((t*Ny + y)*Ns + s)*3 + c]: sun = E_sun x transmittance at y, sky = mean sky radiance over the "
-           "sphere at y; axes with grid points at both ends: theta_s in [0, 96 deg], theta_v in [0, 180 deg], "
-           "y in [0, max altitude] m, t in [0, 1] (0 clear, 1 dense fog); c = R, G, B at 680, 550, 440 nm";
+    snprintf(text, size,
+             "Decima height-fog atmosphere LUTs (Kojima Productions 2017) over Bruneton 2017's atmosphere: "
+             "inscatter[((((t*Ny + y)*Nv + v)*Ns + s)*2 + i)*3 + c], i = 0 Rayleigh (plus orders >= 2 / Pbar_R), 1 Mie, "
+             "without phase: background = sum_i p_i(dot(view, sun)) inscatter_i; "
+             "sun/sky[((t*Ny + y)*Ns + s)*3 + c]: sun = E_sun x transmittance at y, sky = mean sky radiance over the "
+             "sphere at y; %s; y_max = %.0f m, R = %.0f m, R_t = %.0f m; c = R, G, B at 680, 550, 440 nm",
+             atmosphere_lut_axes_description(luts->parametrization), luts->max_altitude, luts->model.bottom_radius,
+             luts->model.top_radius);
 }
 
 double atmosphere_lut_axis_value(int axis, int i, int n, double max_altitude)

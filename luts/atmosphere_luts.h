@@ -26,8 +26,8 @@
  *
  * Axes (grid points at both ends, Bruneton's convention; a size-1 axis holds
  * its low end), in the linear parametrization (the default; the others,
- * Yusov 2013's and Bruneton & Neyret 2008's, are luts/atmosphere_lut_axes.h,
- * C only: the writers refuse them): theta_s in [0, ATMOSPHERE_LUT_THETA_S_MAX] (96 deg: civil
+ * Yusov 2013's and Bruneton & Neyret 2008's, are luts/atmosphere_lut_axes.h:
+ * their lookup is C only, so they are written as EXR only): theta_s in [0, ATMOSPHERE_LUT_THETA_S_MAX] (96 deg: civil
  * twilight), theta_v in [0, 180 deg], y in [0, max_altitude] m, t in [0, 1];
  * value x of an axis of size N sits at position p = x / max (N - 1): a GPU
  * samples it at (p + 0.5) / N. The lookup (linear in each axis, clamped) is
@@ -77,8 +77,9 @@ typedef struct {
     double build_seconds;
 } atmosphere_luts;
 
-/* One paragraph describing the tables' layout and axes, for file metadata. */
-const char *atmosphere_luts_description(void);
+/* One paragraph describing the tables' layout and their parametrization's
+ * axes (atmosphere_lut_axes_description), for file metadata, into text. */
+void atmosphere_luts_description(const atmosphere_luts *luts, char *text, size_t size);
 
 /* Builds the three tables: one atmosphere_solve per distinct t, then every
  * texel FAST (atmosphere_scattering.h). 0, or -1 (bad sizes or model: msg;

@@ -38,18 +38,31 @@ static void channel_names(int table, const char *names[6])
     }
 }
 
+void atmosphere_luts_exr_name(atmosphere_lut_parametrization kind, int table, char *name, size_t size)
+{
+    if (kind == ATMOSPHERE_PARAM_LINEAR)
+        snprintf(name, size, "%s.exr", FILE_NAMES[table]);
+    else
+        snprintf(name, size, "%s_%s.exr", FILE_NAMES[table], atmosphere_lut_parametrization_tag(kind));
+}
+
 static int write_table_exr(const char *path, const atmosphere_luts *luts, int table, gt_error *e)
 {
     const int *n = table_sizes(luts, table);
     const char *names[6];
-    char sizes[64];
+    char sizes[64], description[4096];
     image img;
     channel_names(table, names);
     snprintf(sizes, sizeof sizes, "%d %d %d %d", n[0], n[1], n[2], n[3]);
+    atmosphere_luts_description(luts, description, sizeof description);
     if (image_init(&img, n[0] * n[1], n[2] * n[3]) != 0)
         return gt_error_set(e, path, "out of memory");
-    int rc = image_set_attribute(&img, ATTR_LUT, atmosphere_luts_description()) == 0 &&
-                     image_set_attribute(&img, ATTR_LUT_SIZES, sizes) == 0 ? 0 : -1;
+    int rc = image_set_attribute(&img, ATTR_LUT, description) == 0 &&
+                     image_set_attribute(&img, ATTR_LUT_SIZES, sizes) == 0 &&
+                     image_set_attribute(&img, ATTR_LUT_PARAMETRIZATION,
+                                         atmosphere_lut_parametrization_tag(luts->parametrization)) == 0
+                 ? 0
+                 : -1;
     for (int c = 0; c < per_texel(table) && rc == 0; ++c) {
         float *plane = image_add_channel(&img, names[c]);
         rc = plane ? 0 : -1;
@@ -63,11 +76,71 @@ static int write_table_exr(const char *path, const atmosphere_luts *luts, int ta
 
 int atmosphere_luts_write_exr(const char *dir, const atmosphere_luts *luts, gt_error *e)
 {
-    char path[4096];
+    char path[4096], name[128];
     for (int table = 0; table < ATMOSPHERE_TABLES; ++table) {
-        snprintf(path, sizeof path, "%s/%s.exr", dir, FILE_NAMES[table]);
+        atmosphere_luts_exr_name(luts->parametrization, table, name, sizeof name);
+        snprintf(path, sizeof path, "%s/%s", dir, name);
         if (write_table_exr(path, luts, table, e) != 0)
             return -1;
+    }
+    return 0;
+}
+
+static int axes_in_range(const int n[4])
+{
+    int ok = 1;
+    for (int a = 0; a < 4; ++a)
+        ok &= n[a] >= 1 && n[a] <= ATMOSPHERE_LUT_MAX_AXIS;
+    return ok;
+}
+
+/* Table `table` of luts from its file: the parametrization and sizes its
+ * attributes name, the texels from its channels. */
+static int read_table_exr(const char *path, atmosphere_luts *luts, int table, gt_error *e)
+{
+    image img;
+    const char *names[6];
+    if (exr_read(path, &img, e) != 0)
+        return -1;
+    const char *tag = image_get_attribute(&img, ATTR_LUT_PARAMETRIZATION);
+    const char *sizes = image_get_attribute(&img, ATTR_LUT_SIZES);
+    int *n = table == ATMOSPHERE_TABLE_INSCATTER ? luts->sizes.inscatter
+                                                 : table == ATMOSPHERE_TABLE_SUN ? luts->sizes.sun : luts->sizes.sky;
+    int rc = 0;
+    if (atmosphere_lut_parametrization_from_tag(tag) != (int)luts->parametrization)
+        rc = gt_error_set(e, path, "%s is \"%s\", not \"%s\"", ATTR_LUT_PARAMETRIZATION, tag ? tag : "(absent)",
+                          atmosphere_lut_parametrization_tag(luts->parametrization));
+    else if (!sizes || sscanf(sizes, "%d %d %d %d", &n[0], &n[1], &n[2], &n[3]) != 4 || !axes_in_range(n) ||
+             img.width != n[0] * n[1] || img.height != n[2] * n[3])
+        rc = gt_error_set(e, path, "%s \"%s\" does not match the image's %dx%d", ATTR_LUT_SIZES, sizes ? sizes : "",
+                          img.width, img.height);
+    channel_names(table, names);
+    for (int c = 0; c < per_texel(table) && rc == 0; ++c)
+        if (!image_channel_data(&img, names[c]))
+            rc = gt_error_set(e, path, "no channel %s", names[c]);
+    if (rc == 0 && !(luts->table[table] = malloc(sizeof(float) * (size_t)per_texel(table) * table_texels(luts, table))))
+        rc = gt_error_set(e, path, "out of memory");
+    for (int c = 0; c < per_texel(table) && rc == 0; ++c) {
+        const float *plane = image_channel_data(&img, names[c]);
+        for (size_t t = 0; t < table_texels(luts, table); ++t)
+            luts->table[table][t * per_texel(table) + c] = plane[t];
+    }
+    image_free(&img);
+    return rc;
+}
+
+int atmosphere_luts_read_exr(const char *dir, atmosphere_lut_parametrization kind, atmosphere_luts *luts, gt_error *e)
+{
+    char path[4096], name[128];
+    *luts = (atmosphere_luts){.model = atmosphere_model_default(), .max_altitude = ATMOSPHERE_LUT_MAX_ALTITUDE,
+                              .parametrization = kind};
+    for (int table = 0; table < ATMOSPHERE_TABLES; ++table) {
+        atmosphere_luts_exr_name(kind, table, name, sizeof name);
+        snprintf(path, sizeof path, "%s/%s", dir, name);
+        if (read_table_exr(path, luts, table, e) != 0) {
+            atmosphere_luts_free(luts);
+            return -1;
+        }
     }
     return 0;
 }
@@ -119,10 +192,12 @@ static void append_sizes(text_buffer *b, const atmosphere_luts *luts)
 
 int atmosphere_luts_write_c_header(const char *path, const atmosphere_luts *luts, gt_error *e)
 {
+    char description[4096];
     text_buffer b = {malloc(capacity_for(luts)), 0, capacity_for(luts)};
     if (!b.text)
         return gt_error_set(e, path, "out of memory");
-    b.len = (size_t)snprintf(b.text, b.capacity, "/* Generated by gtlab. %s */\n", atmosphere_luts_description());
+    atmosphere_luts_description(luts, description, sizeof description);
+    b.len = (size_t)snprintf(b.text, b.capacity, "/* Generated by gtlab. %s */\n", description);
     append_sizes(&b, luts);
     for (int table = 0; table < ATMOSPHERE_TABLES; ++table) {
         b.len += (size_t)snprintf(b.text + b.len, b.capacity - b.len, "static const float %s[%zu] = {\n",
@@ -182,10 +257,12 @@ int atmosphere_luts_write_shader(const char *path, int glsl, const atmosphere_lu
     const shader_words *w = glsl ? &GLSL : &HLSL;
     size_t capacity = capacity_for(luts) + strlen(atmosphere_luts_inc_text);
     text_buffer b = {malloc(capacity), 0, capacity};
+    char description[4096];
     if (!b.text)
         return gt_error_set(e, path, "out of memory");
     const int *i = luts->sizes.inscatter, *s = luts->sizes.sun, *k = luts->sizes.sky;
-    b.len = (size_t)snprintf(b.text, b.capacity, "/* Generated by gtlab. %s */\n", atmosphere_luts_description());
+    atmosphere_luts_description(luts, description, sizeof description);
+    b.len = (size_t)snprintf(b.text, b.capacity, "/* Generated by gtlab. %s */\n", description);
     append_sizes(&b, luts);
     b.len += (size_t)snprintf(b.text + b.len, b.capacity - b.len, w->sizes, i[0], i[1], i[2], i[3], s[0], s[1], s[2],
                               s[3], k[0], k[1], k[2], k[3]);
@@ -205,7 +282,8 @@ int atmosphere_luts_write_all(const char *dir, const atmosphere_luts *luts, gt_e
 {
     char path[4096];
     if (luts->parametrization != ATMOSPHERE_PARAM_LINEAR) /* the files' lookup (atmosphere_luts.inc) is linear */
-        return gt_error_set(e, dir, "atmosphere LUTs: only the linear parametrization is written, not %s's",
+        return gt_error_set(e, dir, "atmosphere LUTs: the C header and shaders hold the linear parametrization's "
+                            "lookup; %s's tables are written as EXR only (atmosphere_luts_write_exr)",
                             atmosphere_lut_parametrization_name(luts->parametrization));
     if (atmosphere_luts_write_exr(dir, luts, e) != 0)
         return -1;

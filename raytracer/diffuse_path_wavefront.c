@@ -88,16 +88,14 @@ static int path_survives(path_wavefront *wf, const float *rho, float u, int k)
     return 1;
 }
 
-int path_wavefront_continue(path_wavefront *wf, const struct RTCRayHit *ray, float u, path_vertex *p)
+int path_wavefront_continue(path_wavefront *wf, const surface_hit *hit, float u, path_vertex *p)
 {
-    surface_hit hit;
     float rho[MULTIBOUNCE_MAX_ALBEDOS];
-    embree_surface_at(wf->scene, ray, wf->surface_parts, &hit);
-    vertex_albedos(wf, &hit, rho);
+    vertex_albedos(wf, hit, rho);
     if (!path_survives(wf, rho, u, p->sample))
         return 0;
-    p->origin = offset_ray_origin(hit.p, hit.ng);
-    p->ng = hit.ng;
-    p->shading = frame_from_normal(wf->normals == NORMAL_GEOMETRIC ? hit.ng : hit.ns);
+    p->origin = offset_ray_origin(hit->p, hit->ng);
+    p->ng = hit->ng;
+    p->shading = frame_from_normal(wf->normals == NORMAL_GEOMETRIC ? hit->ng : hit->ns);
     return 1;
 }

@@ -55,9 +55,10 @@ void path_wavefront_live_points(const path_wavefront *wf, uint32_t pair, float *
  * depth + 1). */
 void path_wavefront_roulette(const path_wavefront *wf, int depth, float *u);
 
-/* Live path p's ray hit a surface: its albedos multiply its throughput
- * (after roulette with u when unlimited) and p moves to the hit. Returns 0
- * if the path ends there. */
-int path_wavefront_continue(path_wavefront *wf, const struct RTCRayHit *ray, float u, path_vertex *p);
+/* Live path p's ray hit a surface (at least wf->surface_parts of it,
+ * embree_surface_at): its albedos multiply its throughput (after roulette
+ * with u when unlimited) and p moves to the hit. Returns 0 if the path ends
+ * there. */
+int path_wavefront_continue(path_wavefront *wf, const surface_hit *hit, float u, path_vertex *p);
 
 #endif

@@ -216,8 +216,12 @@ static void trace_next(env_wavefront *wf, int depth, struct RTCRayHit *rays, con
         path_vertex *p = &wf->p.paths[owner[r]];
         if (rays[r].hit.geomID == RTC_INVALID_GEOMETRY_ID)
             path_escapes(wf, p->sample, depth, light[r]);
-        else if (path_wavefront_continue(&wf->p, &rays[r], wf->p.unlimited ? roulette[owner[r]] : 0.0f, p))
-            wf->p.paths[kept++] = *p;
+        else {
+            surface_hit hit;
+            embree_surface_at(wf->p.scene, &rays[r], wf->p.surface_parts, &hit);
+            if (path_wavefront_continue(&wf->p, &hit, wf->p.unlimited ? roulette[owner[r]] : 0.0f, p))
+                wf->p.paths[kept++] = *p;
+        }
     }
     wf->p.live = kept;
 }

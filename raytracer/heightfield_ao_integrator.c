@@ -27,6 +27,15 @@ static void to_screen(const camera_view *v, vec3 c, float *x, float *y)
     *y = (1.0f - c.y / (c.z * v->tan_half_yfov)) * 0.5f * (float)v->height;
 }
 
+/* The unnormalised direction of the eye ray through screen point (x, y):
+ * its component along the camera axis is 1. */
+static vec3 eye_direction(const camera_view *v, float x, float y)
+{
+    float sx = (2.0f * x / (float)v->width - 1.0f) * v->tan_half_yfov * v->aspect;
+    float sy = (1.0f - 2.0f * y / (float)v->height) * v->tan_half_yfov;
+    return v3_add(v->forward, v3_add(v3_scale(v->right, sx), v3_scale(v->up, sy)));
+}
+
 /* Depth of pixel j's surface (its tangent plane) along the eye ray through
  * screen point (x, y), clamped to its neighbourhood's depths
  * (core/heightfield_model.h). */
@@ -34,9 +43,7 @@ static float surface_depth(const heightfield_settings *hs, long j, float x, floa
 {
     const camera_view *v = &hs->gb->view;
     const surface_hit *h = &hs->gb->hits[j];
-    float sx = (2.0f * x / (float)v->width - 1.0f) * v->tan_half_yfov * v->aspect;
-    float sy = (1.0f - 2.0f * y / (float)v->height) * v->tan_half_yfov;
-    vec3 w = v3_add(v->forward, v3_add(v3_scale(v->right, sx), v3_scale(v->up, sy)));
+    vec3 w = eye_direction(v, x, y);
     float nw = v3_dot(h->ng, w);
     float depth = v3_dot(h->ng, v3_sub(h->p, v->origin)) / nw;
     if (!(fabsf(nw) >= HEIGHTFIELD_MIN_FACING * v3_length(w) && depth > 0.0f))
@@ -245,7 +252,22 @@ void heightfield_settings_free(heightfield_settings *hs)
     }
 }
 
-int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d)
+/* Whether the segment's start lies on the surface of the pixel it projects
+ * to (to a ten-thousandth of its depth): a point of the G-buffer or a ray's
+ * hit on a pixel's surface, whose own plane cannot occlude a ray leaving it
+ * (the march skips that cell), not a point in front of it on the side wall
+ * of a neighbour's column (heightfield_first_hit). */
+static int on_own_surface(const heightfield_settings *hs, const screen_segment *sg)
+{
+    const camera_view *v = &hs->gb->view;
+    if (sg->x_start < 0 || sg->y_start < 0 || sg->x_start >= v->width || sg->y_start >= v->height)
+        return 1;
+    long j = (long)sg->y_start * v->width + sg->x_start;
+    return !hs->gb->mask[j] || sg->z0 >= surface_depth(hs, j, sg->x0, sg->y0) * (1.0f - 1e-4f);
+}
+
+/* The screen segment of the ray p + t d up to its end (ray_end). */
+static screen_segment ray_segment(const heightfield_settings *hs, vec3 p, vec3 d)
 {
     const camera_view *v = &hs->gb->view;
     vec3 c0 = to_camera(v, p), dc = v3(v3_dot(d, v->right), v3_dot(d, v->up), v3_dot(d, v->forward));
@@ -255,38 +277,142 @@ int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d)
     to_screen(v, c1, &sg.x1, &sg.y1);
     sg.x_start = (int)floorf(sg.x0);
     sg.y_start = (int)floorf(sg.y0);
-    float length = hypotf(sg.x1 - sg.x0, sg.y1 - sg.y0);
+    if (!on_own_surface(hs, &sg))
+        sg.x_start = sg.y_start = -1;
+    return sg;
+}
+
+/* Where, between screen parameters ua (in front) and ub (behind), the ray
+ * passes behind the height field of the cell it crosses there: bisection
+ * to a thousandth of the interval (the hit's place on the pixel's surface;
+ * visibility itself is decided by the ends). */
+static float crossing(const heightfield_settings *hs, const screen_segment *sg, float ua, float ub)
+{
+    for (int k = 0; k < 10; ++k) {
+        float um = 0.5f * (ua + ub);
+        if (behind_at(hs, sg, um))
+            ub = um;
+        else
+            ua = um;
+    }
+    return ub;
+}
+
+/* Marches the ray's screen segment (below); returns 1 when it passes behind
+ * the height field (or enters a slab), with *u_hit the screen parameter of
+ * a point of the cell where it does: the crossing (infinite thickness), or
+ * the cell's entry (finite); *wall = 1 when the ray enters the cell already
+ * behind its surface (it meets the side of that pixel's column), with
+ * *u_before a point of the cell it comes from. */
+static int march(const heightfield_settings *hs, const screen_segment *sg, float *u_hit, int *wall, float *u_before)
+{
+    const camera_view *v = &hs->gb->view;
+    float length = hypotf(sg->x1 - sg->x0, sg->y1 - sg->y0);
     if (!(length > 0.0f))
-        return 1;
-    float u_end = clip_to_image(sg.x0, sg.y0, sg.x1, sg.y1, (float)v->width, (float)v->height);
-    float dx = (sg.x1 - sg.x0) / length, dy = (sg.y1 - sg.y0) / length, tau_end = u_end * length;
+        return 0;
+    float u_end = clip_to_image(sg->x0, sg->y0, sg->x1, sg->y1, (float)v->width, (float)v->height);
+    float dx = (sg->x1 - sg->x0) / length, dy = (sg->y1 - sg->y0) / length, tau_end = u_end * length;
     const float eps = 1e-3f;
     for (float tau = 0.0f; tau < tau_end;) {
-        int cx = (int)floorf(sg.x0 + (tau + eps) * dx), cy = (int)floorf(sg.y0 + (tau + eps) * dy);
+        int cx = (int)floorf(sg->x0 + (tau + eps) * dx), cy = (int)floorf(sg->y0 + (tau + eps) * dy);
         if (cx < 0 || cy < 0 || cx >= v->width || cy >= v->height)
             break;
         int skipped = 0;
         for (int level = 0; level < HEIGHTFIELD_LEVELS && !skipped; ++level) {
             int size = heightfield_tile_sizes[level];
-            float tile_exit = fminf(fminf(boundary(sg.x0, dx, cx, size), boundary(sg.y0, dy, cy, size)), tau_end);
+            float tile_exit = fminf(fminf(boundary(sg->x0, dx, cx, size), boundary(sg->y0, dy, cy, size)), tau_end);
             /* Nudged positions can round back onto the boundary just crossed
              * when the path is nearly parallel to it: always move on. */
             tile_exit = fmaxf(tile_exit, tau + eps);
             float tile_min = hs->tile_min[level][(cy / size) * hs->tiles_x[level] + cx / size];
-            if (fmaxf(ray_depth(&sg, tau / length), ray_depth(&sg, tile_exit / length)) <= tile_min) {
+            if (fmaxf(ray_depth(sg, tau / length), ray_depth(sg, tile_exit / length)) <= tile_min) {
                 tau = tile_exit;
                 skipped = 1;
             }
         }
         if (skipped)
             continue;
-        float cell_exit = fmaxf(fminf(fminf(boundary(sg.x0, dx, cx, 1), boundary(sg.y0, dy, cy, 1)), tau_end), tau + eps);
-        if (isinf(hs->thickness) ? (tau > 0.0f && behind_at(hs, &sg, (tau + eps) / length)) ||
-                                       behind_at(hs, &sg, (cell_exit - eps) / length)
-                                 : in_slab(hs, &sg, (tau + eps) / length, (cell_exit - eps) / length))
-            return 0;
+        float cell_exit = fmaxf(fminf(fminf(boundary(sg->x0, dx, cx, 1), boundary(sg->y0, dy, cy, 1)), tau_end), tau + eps);
+        float ua = (tau + eps) / length, ub = (cell_exit - eps) / length;
+        if (!isinf(hs->thickness)) {
+            if (in_slab(hs, sg, ua, ub)) {
+                *u_hit = ua;
+                return 1;
+            }
+        } else if (tau > 0.0f && behind_at(hs, sg, ua)) {
+            *u_hit = ua;
+            *u_before = (tau - eps) / length;
+            *wall = 1;
+            return 1;
+        } else if (behind_at(hs, sg, ub)) {
+            *u_hit = crossing(hs, sg, ua, ub);
+            *wall = 0;
+            return 1;
+        }
         tau = cell_exit;
     }
+    return 0;
+}
+
+int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d)
+{
+    screen_segment sg = ray_segment(hs, p, d);
+    float u, before;
+    int wall;
+    return !march(hs, &sg, &u, &wall, &before);
+}
+
+/* The side of a pixel's column the ray enters at screen parameter u from
+ * the neighbouring cell at `before`: the plane through the eye and the
+ * pixel edge crossed (x = X or y = Y on the screen), facing the ray. Moves
+ * hit->p to the ray's point on it, nudged a thousandth of a pixel back
+ * towards the ray, and sets both normals. */
+static void column_side(const heightfield_settings *hs, const screen_segment *sg, float u, float before, vec3 p,
+                        vec3 d, surface_hit *hit)
+{
+    const camera_view *v = &hs->gb->view;
+    float x = sg->x0 + u * (sg->x1 - sg->x0), y = sg->y0 + u * (sg->y1 - sg->y0);
+    float xb = sg->x0 + before * (sg->x1 - sg->x0), yb = sg->y0 + before * (sg->y1 - sg->y0);
+    vec3 n;
+    if (floorf(xb) != floorf(x)) {
+        float edge = xb < x ? floorf(x) : floorf(x) + 1.0f;
+        float slope = (2.0f * edge / (float)v->width - 1.0f) * v->tan_half_yfov * v->aspect;
+        n = v3_sub(v->right, v3_scale(v->forward, slope));
+    } else {
+        float edge = yb < y ? floorf(y) : floorf(y) + 1.0f;
+        n = v3_sub(v->up, v3_scale(v->forward, (1.0f - 2.0f * edge / (float)v->height) * v->tan_half_yfov));
+    }
+    n = v3_normalize(n);
+    if (v3_dot(n, d) > 0.0f)
+        n = v3_scale(n, -1.0f);
+    float t = -v3_dot(n, v3_sub(p, v->origin)) / v3_dot(n, d);
+    vec3 q = v3_add(p, v3_scale(d, fmaxf(t, 0.0f)));
+    float pixel = 2.0f * v->tan_half_yfov * camera_depth(v, q) / (float)v->height;
+    hit->p = v3_add(q, v3_scale(n, 1e-3f * pixel));
+    hit->ng = hit->ns = n;
+}
+
+int heightfield_first_hit(const heightfield_settings *hs, vec3 p, vec3 d, surface_hit *hit)
+{
+    screen_segment sg = ray_segment(hs, p, d);
+    float u, before;
+    int wall;
+    if (!march(hs, &sg, &u, &wall, &before))
+        return 0;
+    if (!hit)
+        return 1;
+    const camera_view *v = &hs->gb->view;
+    float x = sg.x0 + u * (sg.x1 - sg.x0), y = sg.y0 + u * (sg.y1 - sg.y0);
+    int px = (int)floorf(x), py = (int)floorf(y);
+    px = px < 0 ? 0 : px >= v->width ? v->width - 1 : px;
+    py = py < 0 ? 0 : py >= v->height ? v->height - 1 : py;
+    long j = (long)py * v->width + px;
+    *hit = hs->gb->hits[j];
+    if (wall && isinf(hs->thickness))
+        column_side(hs, &sg, u, before, p, d, hit);
+    else
+        hit->p = v3_add(v->origin, v3_scale(eye_direction(v, x, y), surface_depth(hs, j, x, y)));
+    hit->t = v3_length(v3_sub(hit->p, p));
     return 1;
 }
 

@@ -52,6 +52,21 @@ void heightfield_settings_free(heightfield_settings *hs);
  * (exposed for tests). */
 int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d);
 
+/* The surface the ray p + t d first meets in the height-field world (the
+ * multi-bounce reference of raytracer/heightfield_multibounce_integrator.h):
+ * 0 where heightfield_unoccluded is 1; else 1 and, if hit is not NULL, the
+ * G-buffer hit of the pixel whose solid the ray enters (its material), at
+ * the point where it does: on the pixel's surface (its tangent plane,
+ * clamped as above; the crossing found by bisection within the cell, the
+ * pixel's normals) when the ray passes behind it within its cell, or on the
+ * side of the pixel's column (the plane through the eye and the pixel edge
+ * crossed, its normal facing the ray) when the ray enters the cell already
+ * behind the surface. Its distance t is from p. (With a finite thickness:
+ * the pixel's surface where the ray enters its cell.) A ray leaving a point
+ * on a column's side (not on its own pixel's surface) may be blocked by the
+ * surface of the cell it starts in. */
+int heightfield_first_hit(const heightfield_settings *hs, vec3 p, vec3 d, surface_hit *hit);
+
 /* The horizon of the half-slice of p that leaves it along s (unit, s . v = 0,
  * v the unit vector from p to the eye), for the hemisphere of n: the
  * smallest angle from v, within the slice's plane, of the surface points

@@ -223,45 +223,61 @@ static int leaving_rays(const path_wavefront *wf, int depth, struct RTCRayHit *r
     return n;
 }
 
-/* The last vertex (depth = max_bounces): only whether each ray escapes
- * matters, which an occlusion query answers. */
-static void trace_last(wavefront *wf, int depth, const struct RTCRayHit *rays, const int *owner, int n)
+/* The 3-D scene's world (multibounce_world): an occlusion stream for the
+ * last rays, else a closest-hit stream and the surfaces hit. */
+static void embree_trace(const void *data, struct RTCRayHit *rays, int n, int last, unsigned parts,
+                         unsigned char *escaped, surface_hit *hits)
 {
-    _Alignas(16) struct RTCRay shadow[SAMPLE_BATCH];
-    for (int r = 0; r < n; ++r)
-        shadow[r] = rays[r].ray;
-    embree_unoccluded_stream(wf->p.scene, shadow, (unsigned)n);
-    for (int r = 0; r < n; ++r)
-        if (shadow[r].tfar >= 0.0f)
-            path_escapes(wf, wf->p.paths[owner[r]].sample, depth);
-    wf->p.live = 0;
+    const embree_scene *es = data;
+    if (last) {
+        _Alignas(16) struct RTCRay shadow[SAMPLE_BATCH];
+        for (int r = 0; r < n; ++r)
+            shadow[r] = rays[r].ray;
+        embree_unoccluded_stream(es, shadow, (unsigned)n);
+        for (int r = 0; r < n; ++r)
+            escaped[r] = shadow[r].tfar >= 0.0f;
+        return;
+    }
+    embree_closest_hit_stream(es, rays, (unsigned)n);
+    for (int r = 0; r < n; ++r) {
+        escaped[r] = rays[r].hit.geomID == RTC_INVALID_GEOMETRY_ID;
+        if (!escaped[r])
+            embree_surface_at(es, &rays[r], parts, &hits[r]);
+    }
 }
 
-/* Closest hits: escapes are scored, hits become the next vertices of the
- * paths that survive them (compacted in place, in order). */
-static void trace_next(wavefront *wf, int depth, struct RTCRayHit *rays, const int *owner, int n)
+/* The rays leaving `depth` traced in the world: escapes are scored, and
+ * (before the last vertex, depth = max_bounces) hits become the next
+ * vertices of the paths that survive them (compacted in place, in order). */
+static void trace_depth(wavefront *wf, const multibounce_world *world, int depth, struct RTCRayHit *rays,
+                        const int *owner, int n)
 {
+    const int last = depth == wf->p.max_bounces;
     float roulette[SAMPLE_BATCH];
-    if (wf->p.unlimited)
+    unsigned char escaped[SAMPLE_BATCH];
+    surface_hit hits[SAMPLE_BATCH];
+    if (!last && wf->p.unlimited)
         path_wavefront_roulette(&wf->p, depth, roulette);
-    embree_closest_hit_stream(wf->p.scene, rays, (unsigned)n);
+    world->trace(world->data, rays, n, last, wf->p.surface_parts, escaped, hits);
     int kept = 0;
     for (int r = 0; r < n; ++r) {
         path_vertex *p = &wf->p.paths[owner[r]];
-        if (rays[r].hit.geomID == RTC_INVALID_GEOMETRY_ID)
+        if (escaped[r])
             path_escapes(wf, p->sample, depth);
-        else if (path_wavefront_continue(&wf->p, &rays[r], wf->p.unlimited ? roulette[owner[r]] : 0.0f, p))
+        else if (!last && path_wavefront_continue(&wf->p, &hits[r], wf->p.unlimited ? roulette[owner[r]] : 0.0f, p))
             wf->p.paths[kept++] = *p;
     }
     wf->p.live = kept;
 }
 
-/* Samples as a wavefront (above): each depth's rays go to Embree as one
+/* Samples as a wavefront (above): each depth's rays go to the world as one
  * stream, and each dimension pair's scramble seeds are derived once per
  * batch. Returns the rays traced. */
 static int multibounce_sample_batch(const integrator *self, const pixel_context *px, uint32_t first_index,
                                     int count, float *values)
 {
+    const multibounce_plan *plan = self->settings;
+    const multibounce_world world = plan->world.trace ? plan->world : (multibounce_world){embree_trace, self->scene};
     wavefront wf;
     wavefront_start(&wf, self, px, first_index, count, values);
     int rays = 0;
@@ -270,10 +286,7 @@ static int multibounce_sample_batch(const integrator *self, const pixel_context 
         int owner[SAMPLE_BATCH];
         int n = leaving_rays(&wf.p, depth, stream, owner);
         rays += n;
-        if (depth == wf.p.max_bounces)
-            trace_last(&wf, depth, stream, owner, n);
-        else
-            trace_next(&wf, depth, stream, owner, n);
+        trace_depth(&wf, &world, depth, stream, owner, n);
     }
     return rays;
 }

@@ -80,13 +80,28 @@ int multibounce_parse_bounces(const char *text, multibounce_settings *s, gt_erro
 void multibounce_albedos_text(const multibounce_settings *s, char *text, size_t size);
 void multibounce_bounces_text(const multibounce_settings *s, char *text, size_t size);
 
+/* The world a path's rays meet. For the rays[r].ray (origin, direction;
+ * r < n), escaped[r] = 1 when ray r leaves the world, else 0 and, unless
+ * `last` (the path's last ray: only whether it escapes matters), hits[r]
+ * the surface it meets (at least `parts` of it, embree_scene.h), normals
+ * facing the side the ray came from. The 3-D scene (Embree streams) when a
+ * plan's world has no trace; the depth buffer as a height field in
+ * raytracer/heightfield_multibounce_integrator.h. */
+typedef struct {
+    void (*trace)(const void *data, struct RTCRayHit *rays, int n, int last, unsigned parts, unsigned char *escaped,
+                  surface_hit *hits);
+    const void *data;
+} multibounce_world;
+
 /* Everything the integrator reads: the validated settings, the normal
- * mode, and the film quantities named as above. */
+ * mode, the film quantities named as above, and the world (zero: the 3-D
+ * scene). */
 typedef struct {
     multibounce_settings settings;
     normal_mode normals;
     int quantity_count;
     mc_quantity quantities[MULTIBOUNCE_MAX_QUANTITIES];
+    multibounce_world world;
 } multibounce_plan;
 
 /* Validates the settings (errors name "multibounce") and names the channels. */

@@ -1,10 +1,15 @@
 /* `gtlab render multibounce`: GTAO's multi-bounce AO V'_d under a white dome
  * for one or several albedos, or the scene's colours
- * (raytracer/multibounce_integrator.h). */
+ * (raytracer/multibounce_integrator.h); `gtlab render
+ * heightfield-multibounce`: the same of the depth buffer taken as a height
+ * field (raytracer/heightfield_multibounce_integrator.h), with the same
+ * options, channels and header. */
+#include <math.h>
 #include <stdlib.h>
 
 #include "core/reference_schema.h"
 #include "raytracer/environment_quantity.h"
+#include "raytracer/heightfield_multibounce_integrator.h"
 #include "raytracer/reference_render.h"
 
 static int parse_albedo(reference_request *rq, const char *value, gt_error *e)
@@ -73,6 +78,54 @@ static int write_settings(const reference_request *rq, image *out)
                                    rq->sampling.target_stderr);
     return rc;
 }
+
+/* The plan and the height field its world points at. */
+typedef struct {
+    multibounce_plan plan;
+    heightfield_settings hf;
+} heightfield_multibounce_state;
+
+static void release_heightfield(void *state)
+{
+    heightfield_multibounce_state *st = state;
+    heightfield_settings_free(&st->hf);
+    free(st);
+}
+
+static int prepare_heightfield(const reference_pass *pass, void **state, integrator *it, gt_error *e)
+{
+    heightfield_multibounce_state *st = calloc(1, sizeof *st);
+    if (!st)
+        return gt_error_set(e, pass->scene_spec, "out of memory");
+    if (multibounce_plan_init(&st->plan, &pass->req->multibounce, pass->req->normals, e) != 0) {
+        free(st);
+        return -1;
+    }
+    if (heightfield_settings_init(&st->hf, pass->gb, INFINITY) != 0) {
+        free(st);
+        return gt_error_set(e, pass->scene_spec, "out of memory for the height field");
+    }
+    if (pass->req->multibounce.scene_albedo)
+        multibounce_warn_albedo_range(pass->scene);
+    *state = st;
+    *it = heightfield_multibounce_integrator(pass->es, &st->hf, &st->plan);
+    return 0;
+}
+
+const reference_quantity_descriptor reference_quantity_heightfield_multibounce = {
+    .name = "heightfield-multibounce",
+    .help = "multibounce's channels and header where rays meet only the depth\n"
+            "buffer taken as a height field (as heightfield-ao: infinite\n"
+            "thickness, rays leaving the image escape) and a blocked ray goes on\n"
+            "from the height field's surface it enters (a pixel's plane or its\n"
+            "column's side): the multi-bounce truth of the world screen-space\n"
+            "AO sees",
+    .options = (const reference_option *const[]){&reference_option_albedo, &reference_option_bounces, NULL},
+    .set_defaults = set_defaults,
+    .prepare = prepare_heightfield,
+    .release = release_heightfield,
+    .write_settings = write_settings,
+};
 
 const reference_quantity_descriptor reference_quantity_multibounce = {
     .name = "multibounce",

@@ -12,6 +12,7 @@
     X(reference_quantity_ao)                                                                                       \
     X(reference_quantity_multibounce)                                                                              \
     X(reference_quantity_heightfield_ao)                                                                           \
+    X(reference_quantity_heightfield_multibounce)                                                                  \
     X(reference_quantity_specular_occlusion)                                                                       \
     X(reference_quantity_sphere_light)                                                                             \
     X(reference_quantity_fog)                                                                                      \

@@ -28,7 +28,8 @@ static void sizes_cell(const void *row, char *text, size_t size)
 
 static void verdict_cell(const void *row, char *text, size_t size)
 {
-    snprintf(text, size, "%s", atmosphere_luts_row_suffices(row) ? "yes" : "no");
+    int d = atmosphere_luts_row_decision(row);
+    snprintf(text, size, "%s", d > 0 ? "yes" : d < 0 ? "no" : "undecided");
 }
 
 #define ROW atmosphere_luts_row
@@ -47,6 +48,10 @@ static const report_column columns[] = {
     REPORT_REAL("its s.e.", "total_p95_se", "%.2g", ROW, error.total.p95_se),
     REPORT_REAL("total p95, sun >= 10 deg", "day_total_p95", "%.3g", ROW, error.day_total.p95),
     REPORT_REAL("its s.e.", "day_total_p95_se", "%.2g", ROW, error.day_total.p95_se),
+    REPORT_REAL("total p95, twilight", "twilight_total_p95", "%.3g", ROW, error.twilight_total.p95),
+    REPORT_REAL("its s.e.", "twilight_total_p95_se", "%.2g", ROW, error.twilight_total.p95_se),
+    REPORT_INT(NULL, "day_points", ROW, error.day_points),
+    REPORT_INT(NULL, "twilight_points", ROW, error.twilight_points),
     REPORT_CELL("within 2%", verdict_cell),
 };
 static const report_column summary_columns[] = {
@@ -120,7 +125,8 @@ static int plot(const report_context *ctx, gt_error *e)
     "(luts/atmosphere_lut_axes.h; his sun-view axis dropped as the talk drops theta_sv) at the talk's layout, but "   \
     "the talk states neither its altitude range nor its atmospheres: gtlab's are y in 0-2 km (Yusov's height "        \
     "mapping over the table's 2 km, not an atmosphere's top), Bruneton 2017's clear sky and its own dense fog "       \
-    "(Mie x50, scale height 0.6 km), in float texels (no RGBA16F rounding)"
+    "(Mie x50, scale height 0.6 km), in float texels (no RGBA16F rounding); the table scored is the one written "   \
+    "as luts/atmosphere/atmosphere_inscatter_yusov2013.exr"
 #define ATMOSPHERE_TOLERANCE_TEXT                                                                                     \
     "one 8-bit sRGB code value at mid grey as a relative radiance change, 2.2 / (255 x 0.5) = 1.7% "                \
     "(CLAIM_ONE_CODE_VALUE_SRGB_RELATIVE), at the 95th percentile of the sky's pixels"
@@ -206,11 +212,14 @@ static void render_sky_findings(report_context *ctx, const atmosphere_luts_resul
 
 static void render_findings(report_context *ctx, const atmosphere_luts_result *r)
 {
+    static const char *const decided[3] = {"its interval lies above 2%", "its interval straddles 2%: too few points "
+                                           "to decide", "its interval lies within 2%"};
     for (int table = 0; table < ATMOSPHERE_TABLES; ++table) {
         int k = r->talk_row[table], s = r->smallest_within[table];
         if (k < 0)
             continue;
         const atmosphere_luts_row *x = &r->rows[k];
+        const atmosphere_table_error *er = &x->error;
         char smallest[160];
         if (s >= 0)
             snprintf(smallest, sizeof smallest, "the smallest evaluated table within 2%% is %s (%.0f bytes)",
@@ -218,12 +227,41 @@ static void render_findings(report_context *ctx, const atmosphere_luts_result *r
         else
             snprintf(smallest, sizeof smallest, "no evaluated size (one axis at a time) is within 2%%");
         report_finding(ctx->doc, "Atmosphere LUTs",
-                       "%s in gtlab's linear parametrization at the talk's size (%.0f bytes): 95%% of lookups within %.1f%% +- %.1f%% of direct integration "
-                       "(interpolation %.1f%%, quadrature %.2f%%), worst %.0f%%; with the sun 10 degrees or more "
-                       "above the horizon, within %.1f%%; %s.",
-                       TABLE_NAMES[table], x->bytes, 100.0 * x->error.total.p95, 100.0 * x->error.total.p95_se,
-                       100.0 * x->error.interpolation.p95, 100.0 * x->error.quadrature.p95,
-                       100.0 * x->error.interpolation.max, 100.0 * x->error.day_total.p95, smallest);
+                       "%s in gtlab's linear parametrization at the talk's size (%.0f bytes), against direct "
+                       "integration: by day (sun 10 degrees or more above the horizon, %d points) 95%% of lookups "
+                       "within %.1f%% +- %.1f%%, in twilight (%d points) %.1f%% +- %.1f%%; all %d points %.1f%% "
+                       "+- %.1f%% (interpolation %.1f%%, quadrature %.2f%%), worst %.0f%%: %s; %s.",
+                       TABLE_NAMES[table], x->bytes, er->day_points, 100.0 * er->day_total.p95,
+                       100.0 * er->day_total.p95_se, er->twilight_points, 100.0 * er->twilight_total.p95,
+                       100.0 * er->twilight_total.p95_se, r->request.points, 100.0 * er->total.p95,
+                       100.0 * er->total.p95_se, 100.0 * er->interpolation.p95, 100.0 * er->quadrature.p95,
+                       100.0 * er->interpolation.max, decided[atmosphere_luts_row_decision(x) + 1], smallest);
+    }
+}
+
+/* The written tables, one sentence per set, and their paths in summary.json. */
+static void render_files(report_context *ctx, cJSON *json, const atmosphere_luts_result *r)
+{
+    cJSON *sets = cJSON_AddArrayToObject(json, "files");
+    for (int k = 0; k < r->file_set_count; ++k) {
+        const atmosphere_luts_file_set *set = &r->file_sets[k];
+        const int *n = set->sizes.inscatter;
+        char list[1200];
+        size_t len = 0;
+        cJSON *item = cJSON_CreateObject(), *files = cJSON_AddArrayToObject(item, "paths");
+        cJSON_AddStringToObject(item, "parametrization", atmosphere_lut_parametrization_tag(set->parametrization));
+        cJSON_AddItemToArray(sets, item);
+        list[0] = '\0';
+        for (int f = 0; f < set->count; ++f) {
+            len += (size_t)snprintf(list + len, len < sizeof list ? sizeof list - len : 0, "%s%s", f ? ", " : "",
+                                    set->files[f]);
+            cJSON_AddItemToArray(files, cJSON_CreateString(set->files[f]));
+        }
+        report_paragraph(ctx->doc, "Written, %s parametrization (gtlab.lut.parametrization \"%s\"), in-scatter "
+                         "(%d, %d, %d, %d), sun and sky (%d, %d, %d): %s.",
+                         atmosphere_lut_parametrization_name(set->parametrization),
+                         atmosphere_lut_parametrization_tag(set->parametrization), n[0], n[1], n[2], n[3],
+                         set->sizes.sun[0], set->sizes.sun[2], set->sizes.sun[3], list);
     }
 }
 
@@ -240,12 +278,15 @@ int atmosphere_section(report_context *ctx, const atmosphere_luts_result *r, gt_
         "for a blend t between two weathers, at (8, 64, 8, 4) = 128 KB and (64, 1, 4) = 4 KB. gtlab computes them for "
         "Bruneton 2017's atmosphere (clear) and a dense-fog weather (Mie x50, scale height 0.6 km), with multiple "
         "scattering to order 5 (docs/decisions.md: the definitions), y over [0, %.0f m], and writes them as "
-        "luts/atmosphere/ (EXR, C header, HLSL, GLSL: one lookup source). The full set for two weathers at the talk's "
-        "sizes builds in %.1f s. Each table is scored at %d random points (theta_v over the sky, t off the grid) "
+        "luts/atmosphere/ (the linear set: EXR, C header, HLSL, GLSL, one lookup source; the other parametrizations' "
+        "files below). The full linear set for two weathers at the talk's sizes builds in %.1f s. Each table is "
+        "scored at %d random points (theta_v over the sky, the sun uniform over 0-96 degrees from the zenith, so one "
+        "point in six is in twilight, t off the grid) "
         "against direct integration (every optical depth by quadrature; its own error estimate %.1e), as the 95th "
         "percentile and the maximum of the relative error (floor 1e-3 of the table's brightest value), split into "
         "the lookup's interpolation and the build's quadrature; each percentile's standard error is a bootstrap over "
-        "the points (2000 resamples).",
+        "the points (2000 resamples); day and twilight are reported apart, and a verdict whose 95%% interval straddles "
+        "2%% is undecided.",
         ATMOSPHERE_LUT_MAX_ALTITUDE, r->build_seconds, r->request.points, r->quadrature_estimate);
     cJSON *json = cJSON_AddObjectToObject(ctx->summary, "atmosphere_luts");
     report_object(json, "study", summary_columns, (int)(sizeof summary_columns / sizeof summary_columns[0]), r);
@@ -267,6 +308,15 @@ int atmosphere_section(report_context *ctx, const atmosphere_luts_result *r, gt_
         r->request.sky_pixels);
     report_rows(ctx->doc, cJSON_AddArrayToObject(json, "sky"), sky_columns,
                 (int)(sizeof sky_columns / sizeof sky_columns[0]), r->sky_rows, sizeof r->sky_rows[0], r->sky_row_count);
+    report_paragraph(
+        ctx->doc,
+        "The tables as files: the linear set in every format (the C header and shaders hold its lookup, "
+        "luts/atmosphere_luts.inc), Yusov 2013's (the talk's) and Bruneton & Neyret 2008's at the talk's sizes as "
+        "EXR (their lookup, luts/atmosphere_lut_axes.h, is C; `gtlab lut atmosphere --parametrization yusov2013` "
+        "writes the same bytes), each naming its parametrization, sizes and axes in its header "
+        "(gtlab.lut.parametrization, gtlab.lut.sizes, gtlab.lut); the in-scatter tables are those the sky table above "
+        "scores.");
+    render_files(ctx, json, r);
     render_sky_findings(ctx, r);
     add_claims(ctx, r);
     return 0;

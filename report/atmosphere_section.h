@@ -1,7 +1,9 @@
 /* The Decima atmosphere LUTs (studies/atmosphere_luts.h): their definitions,
  * their error against direct integration as each axis departs from the
- * talk's size (figures/atmosphere_sizes.png), and the talk's claim that its
- * sizes suffice, in the claims table. */
+ * talk's size (figures/atmosphere_sizes.png; day and twilight apart), the
+ * sky the in-scatter table feeds under each parametrization, the files
+ * written per parametrization (also in summary.json, atmosphere_luts.files),
+ * and the talk's claim that its sizes suffice, in the claims table. */
 #ifndef GTLAB_REPORT_ATMOSPHERE_SECTION_H
 #define GTLAB_REPORT_ATMOSPHERE_SECTION_H
 

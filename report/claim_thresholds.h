@@ -44,4 +44,16 @@
  * by 2/255 per code value, so the direction by about 2/255 rad (0.45 deg). */
 #define CLAIM_ONE_CODE_VALUE_8BIT_NORMAL_DEG (2.0 / 255.0 * 57.29577951308232)
 
+/* The mean FLIP (metrics/flip.h, flip_grey at the default 67 pixels per
+ * degree) of a just noticeable change: a uniform grey moved by one
+ * CIEDE2000 unit (CLAIM_VISIBLE_DE00) at mid grey, L* 49.5 -> 50.5. A
+ * uniform change has no edge or point (dE_f = 0) and passes the
+ * contrast-sensitivity filters unchanged, so FLIP is the colour term alone,
+ * p_t / (p_c c_max) x HyAB^q_c = 0.95 / (0.4 x 41.276) x 1^0.7 = 0.0575 at
+ * any viewing distance (Andersson et al. 2020, eq. 5; c_max = HyAB(green,
+ * blue)^0.7). A difference of mean FLIPs below it is less than a
+ * just-noticeable change over the whole image. Tested, not typed:
+ * tests/report/test_flip_threshold.c. */
+#define CLAIM_FLIP_JUST_NOTICEABLE 0.0575
+
 #endif

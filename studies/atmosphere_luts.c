@@ -1,6 +1,7 @@
 #include "studies/atmosphere_luts.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -17,10 +18,16 @@ atmosphere_luts_request atmosphere_luts_default_request(study_quality quality)
     return (atmosphere_luts_request){48, 1, {0.5}, 0, 1, 2000, 0};
 }
 
-int atmosphere_luts_row_suffices(const atmosphere_luts_row *row)
+int atmosphere_luts_row_decision(const atmosphere_luts_row *row)
 {
-    return row->error.total.p95 <= fmax(ATMOSPHERE_TOLERANCE, row->error.quadrature.p95);
+    const atmosphere_error_stats *x = &row->error.total;
+    double tolerance = fmax(ATMOSPHERE_TOLERANCE, row->error.quadrature.p95);
+    return x->p95 + ATMOSPHERE_INTERVAL_Z * x->p95_se <= tolerance ? 1
+           : x->p95 - ATMOSPHERE_INTERVAL_Z * x->p95_se > tolerance ? -1
+                                                                    : 0;
 }
+
+int atmosphere_luts_row_suffices(const atmosphere_luts_row *row) { return atmosphere_luts_row_decision(row) > 0; }
 
 static const atmosphere_lut_sizes NONE = {{1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}};
 
@@ -132,35 +139,97 @@ static int solve_all(atmosphere_solution *solutions, const double *blends, int c
     return 0;
 }
 
-int atmosphere_luts_write_tables(const char *dir, const atmosphere_lut_sizes *sizes, int threads,
-                                 double *build_seconds, gt_error *e)
+/* The set of `kind` at `sizes` from the solutions into dir: every format
+ * (linear) or the EXRs (the others: the shaders' lookup is linear). */
+static int write_set(const char *dir, const atmosphere_solution *solutions, int count,
+                     const atmosphere_lut_sizes *sizes, atmosphere_lut_parametrization kind, int threads,
+                     atmosphere_luts *luts, gt_error *e)
 {
-    atmosphere_model m = atmosphere_model_default();
-    atmosphere_lut_sizes talk = atmosphere_lut_sizes_talk();
-    atmosphere_luts luts;
     char msg[256];
-    if (atmosphere_luts_build(&luts, &m, sizes ? sizes : &talk, threads, msg, sizeof msg) != 0)
+    if (atmosphere_luts_build_parametrized(luts, solutions, count, sizes, kind, threads, msg, sizeof msg) != 0)
         return gt_error_set(e, "atmosphere", "%s", msg);
-    if (build_seconds)
-        *build_seconds = luts.build_seconds;
-    int rc = atmosphere_luts_write_all(dir, &luts, e);
-    atmosphere_luts_free(&luts);
+    int rc = kind == ATMOSPHERE_PARAM_LINEAR ? atmosphere_luts_write_all(dir, luts, e)
+                                             : atmosphere_luts_write_exr(dir, luts, e);
+    if (rc != 0)
+        atmosphere_luts_free(luts);
     return rc;
 }
 
-/* The talk-size set from the grid blends' solutions (solved since `start`:
- * the build time counts them) into dir. */
-static int write_talk_tables(const char *dir, const atmosphere_solution *solutions, double start, int threads,
-                             atmosphere_luts_result *out, gt_error *e)
+int atmosphere_luts_write_tables(const char *dir, const atmosphere_lut_sizes *sizes,
+                                 atmosphere_lut_parametrization kind, int threads, double *build_seconds, gt_error *e)
 {
     atmosphere_lut_sizes talk = atmosphere_lut_sizes_talk();
-    atmosphere_luts luts;
+    double blends[3 * ATMOSPHERE_LUT_MAX_AXIS];
     char msg[256];
-    if (atmosphere_luts_build_from(&luts, solutions, GRID_BLENDS, &talk, threads, msg, sizeof msg) != 0)
+    sizes = sizes ? sizes : &talk;
+    if (atmosphere_lut_sizes_check(sizes, msg, sizeof msg) != 0 ||
+        atmosphere_lut_parametrization_check(kind, sizes->inscatter, msg, sizeof msg) != 0)
         return gt_error_set(e, "atmosphere", "%s", msg);
-    out->build_seconds = seconds_now() - start;
-    int rc = atmosphere_luts_write_all(dir, &luts, e);
-    atmosphere_luts_free(&luts);
+    int count = atmosphere_lut_blends(sizes, blends);
+    atmosphere_solution *solutions = malloc(sizeof *solutions * (size_t)count);
+    double start = seconds_now();
+    if (!solutions)
+        return gt_error_set(e, "atmosphere", "out of memory");
+    int rc = solve_all(solutions, blends, count, threads, e);
+    atmosphere_luts luts;
+    if (rc == 0) {
+        rc = write_set(dir, solutions, count, sizes, kind, threads, &luts, e);
+        for (int k = 0; k < count; ++k)
+            atmosphere_solution_free(&solutions[k]);
+    }
+    free(solutions);
+    if (rc == 0)
+        atmosphere_luts_free(&luts);
+    if (build_seconds)
+        *build_seconds = seconds_now() - start;
+    return rc;
+}
+
+/* The files of the set just written into dir (below the output folder as `sub`), for the report. */
+static void list_files(atmosphere_luts_result *out, const char *sub, atmosphere_lut_parametrization kind,
+                       const atmosphere_lut_sizes *sizes)
+{
+    static const char *const TEXT[] = {"atmosphere_luts.h", "atmosphere_luts.hlsl", "atmosphere_luts.glsl"};
+    atmosphere_luts_file_set *set = &out->file_sets[out->file_set_count++];
+    char name[128];
+    set->parametrization = kind, set->sizes = *sizes, set->count = 0;
+    for (int table = 0; table < ATMOSPHERE_TABLES; ++table) {
+        atmosphere_luts_exr_name(kind, table, name, sizeof name);
+        snprintf(set->files[set->count++], sizeof set->files[0], "%s/%s", sub, name);
+    }
+    for (int k = 0; k < 3 && kind == ATMOSPHERE_PARAM_LINEAR; ++k)
+        snprintf(set->files[set->count++], sizeof set->files[0], "%s/%s", sub, TEXT[k]);
+}
+
+/* The talk-size sets from the grid blends' solutions (solved since `start`:
+ * the linear set's build time counts them) into dir, `sub` below the output
+ * folder: the linear one in every format, Yusov 2013's (the talk's) and
+ * Bruneton & Neyret's as EXR; in production also Yusov's at 4x the talk's
+ * in-scatter size on every spatial axis (the sky table's x4 row) in dir/x4. */
+static int write_talk_tables(const study_context *ctx, const atmosphere_solution *solutions, double start,
+                             atmosphere_luts_result *out, gt_error *e)
+{
+    static const char sub[] = ATMOSPHERE_LUTS_DIR "/atmosphere", x4_sub[] = ATMOSPHERE_LUTS_DIR "/atmosphere/x4";
+    atmosphere_lut_sizes talk = atmosphere_lut_sizes_talk(), x4 = talk;
+    atmosphere_luts luts;
+    char dir[2048], x4_dir[2048];
+    int rc = study_make_dir(ctx, sub, dir, sizeof dir, e), threads = ctx->threads;
+    for (int k = 0; k < ATMOSPHERE_PARAMS && rc == 0; ++k) {
+        rc = write_set(dir, solutions, GRID_BLENDS, &talk, (atmosphere_lut_parametrization)k, threads, &luts, e);
+        if (rc == 0 && k == ATMOSPHERE_PARAM_LINEAR)
+            out->build_seconds = seconds_now() - start;
+        if (rc == 0)
+            atmosphere_luts_free(&luts), list_files(out, sub, (atmosphere_lut_parametrization)k, &talk);
+    }
+    if (rc != 0 || !out->request.sky_refinement)
+        return rc;
+    for (int a = 0; a < 3; ++a)
+        x4.inscatter[a] *= 4;
+    if (study_make_dir(ctx, x4_sub, x4_dir, sizeof x4_dir, e) != 0)
+        return -1;
+    rc = write_set(x4_dir, solutions, GRID_BLENDS, &x4, ATMOSPHERE_PARAM_YUSOV, threads, &luts, e);
+    if (rc == 0)
+        atmosphere_luts_free(&luts), list_files(out, x4_sub, ATMOSPHERE_PARAM_YUSOV, &x4);
     return rc;
 }
 
@@ -255,9 +324,8 @@ int atmosphere_luts_study(const study_context *ctx, const atmosphere_luts_reques
     if (rq->blend_count < 1 || rq->blend_count > ATMOSPHERE_STUDY_MAX_BLENDS || rq->points < 20 || rq->sky_pixels < 20)
         return gt_error_set(e, "atmosphere", "1 to %d blends and at least 20 points and sky pixels",
                             ATMOSPHERE_STUDY_MAX_BLENDS);
-    char dir[2048], tables[2100];
-    if (study_make_dir(ctx, ATMOSPHERE_LUTS_DIR, dir, sizeof dir, e) != 0 ||
-        study_make_dir(ctx, ATMOSPHERE_LUTS_DIR "/atmosphere", tables, sizeof tables, e) != 0)
+    char dir[2048];
+    if (study_make_dir(ctx, ATMOSPHERE_LUTS_DIR, dir, sizeof dir, e) != 0)
         return -1;
     double blends[GRID_BLENDS + ATMOSPHERE_STUDY_MAX_BLENDS] = {0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0};
     int count = GRID_BLENDS + rq->blend_count;
@@ -266,7 +334,7 @@ int atmosphere_luts_study(const study_context *ctx, const atmosphere_luts_reques
     double start = seconds_now();
     if (solve_all(solutions, blends, GRID_BLENDS, ctx->threads, e) != 0)
         return -1;
-    int rc = write_talk_tables(tables, solutions, start, ctx->threads, out, e);
+    int rc = write_talk_tables(ctx, solutions, start, out, e);
     if (rc != 0)
         count = GRID_BLENDS;
     else if (solve_all(solutions + GRID_BLENDS, blends + GRID_BLENDS, rq->blend_count, ctx->threads, e) != 0)

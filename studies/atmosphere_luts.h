@@ -10,7 +10,10 @@
  * error is within ATMOSPHERE_TOLERANCE = 2% (the eye's contrast threshold
  * for luminance, Weber's fraction, is 1-2%; banding shows at about 2% steps)
  * or within the quadrature's own 95th percentile if that is larger (the
- * reference's floor).
+ * reference's floor), with its 95% interval (p95 +- 1.96 s.e.): an interval
+ * that straddles the tolerance is undecided (too few points). The points'
+ * day (sun 10 deg or more above the horizon) and twilight (the rest, to 6
+ * deg below) are also scored apart.
  *
  * The sky (issue 42): the in-scatter table under each parametrization
  * (luts/atmosphere_lut_axes.h: gtlab's linear one, Yusov 2013's, the talk's
@@ -21,9 +24,15 @@
  * 6 deg below) apart, each as the 95th percentile of the pixels' relative
  * error with its bootstrap standard error.
  *
- * Writes <output>/luts/atmosphere/ (the talk-size tables: EXR, C header,
- * HLSL, GLSL) and <output>/luts/atmosphere_sizes.dat (per row: table, bytes,
- * interpolation p95 and max, total p95), the data of the report's plot. */
+ * Writes <output>/luts/atmosphere/ (the talk-size tables: the linear set
+ * as EXR, C header, HLSL, GLSL; Yusov 2013's, the talk's, and Bruneton &
+ * Neyret's as EXR, atmosphere_{inscatter,sun,sky}_{yusov2013,bruneton2008}
+ * .exr: luts/atmosphere_luts_writers.h), in production also
+ * <output>/luts/atmosphere/x4/ (Yusov's set with the in-scatter table at 4x
+ * the talk's size on every spatial axis, the sky table's x4 row), and
+ * <output>/luts/atmosphere_sizes.dat (per row: table, bytes, interpolation
+ * p95 and max, total p95), the data of the report's plot. Every file's bytes
+ * are independent of the thread count. */
 #ifndef GTLAB_STUDIES_ATMOSPHERE_LUTS_H
 #define GTLAB_STUDIES_ATMOSPHERE_LUTS_H
 
@@ -34,6 +43,7 @@
 #define ATMOSPHERE_LUTS_DIR "luts"
 #define ATMOSPHERE_TOLERANCE 0.02
 enum { ATMOSPHERE_STUDY_MAX_ROWS = 40, ATMOSPHERE_STUDY_MAX_BLENDS = 4, ATMOSPHERE_SKY_MAX_ROWS = 40 };
+enum { ATMOSPHERE_FILE_SETS = ATMOSPHERE_PARAMS + 1, ATMOSPHERE_SET_FILES = 6 };
 #define ATMOSPHERE_TWILIGHT_THETA_S (96.0 * 3.14159265358979323846 / 180.0) /* civil twilight's end */
 
 typedef struct {
@@ -65,6 +75,15 @@ typedef struct {
     atmosphere_error_stats day, twilight;
 } atmosphere_sky_row;
 
+/* One written set of tables: its parametrization, sizes and files (paths
+ * below the output folder). */
+typedef struct {
+    atmosphere_lut_parametrization parametrization;
+    atmosphere_lut_sizes sizes;
+    int count;
+    char files[ATMOSPHERE_SET_FILES][160];
+} atmosphere_luts_file_set;
+
 typedef struct {
     atmosphere_luts_request request;
     double build_seconds;        /* the talk-size set for two weathers (4 blends), wall */
@@ -76,6 +95,8 @@ typedef struct {
     int sky_row_count;
     atmosphere_sky_row sky_rows[ATMOSPHERE_SKY_MAX_ROWS];
     int sky_talk_row[ATMOSPHERE_PARAMS]; /* row of the talk's size per parametrization, or -1 */
+    int file_set_count;
+    atmosphere_luts_file_set file_sets[ATMOSPHERE_FILE_SETS];
 } atmosphere_luts_result;
 
 /* Preview: 48 points at t = 1/2, 2000 sky pixels per regime; production:
@@ -83,13 +104,19 @@ typedef struct {
  * in-scatter table and the sky at 4x. */
 atmosphere_luts_request atmosphere_luts_default_request(study_quality quality);
 
-/* Whether a row is within the tolerance (the definition above). */
+#define ATMOSPHERE_INTERVAL_Z 1.959963984540054 /* the two-sided 95% normal quantile */
+/* +1 when a row's 95% interval lies within the tolerance (the definition
+ * above), -1 when it lies beyond, 0 when it straddles it (undecided). */
+int atmosphere_luts_row_decision(const atmosphere_luts_row *row);
+/* Whether a row is within the tolerance: its decision is +1. */
 int atmosphere_luts_row_suffices(const atmosphere_luts_row *row);
 
-/* Builds the talk-size tables and writes them into dir (`gtlab lut
- * atmosphere` and the study); sizes NULL for the talk's. */
-int atmosphere_luts_write_tables(const char *dir, const atmosphere_lut_sizes *sizes, int threads,
-                                 double *build_seconds, gt_error *e);
+/* Builds the tables of `kind` at `sizes` (NULL: the talk's) and writes
+ * them into dir (`gtlab lut atmosphere`; the study writes the same from
+ * its solutions): the linear set in every format, another as its three
+ * EXRs. The bytes do not depend on `threads`. */
+int atmosphere_luts_write_tables(const char *dir, const atmosphere_lut_sizes *sizes,
+                                 atmosphere_lut_parametrization kind, int threads, double *build_seconds, gt_error *e);
 
 int atmosphere_luts_study(const study_context *ctx, const atmosphere_luts_request *rq, atmosphere_luts_result *out,
                           gt_error *e);

@@ -15,7 +15,7 @@
  * short multi-bounce benchmark (raytracer/multibounce_throughput.h).
  *
  * Writes <output>/multibounce/<scene>.exr and .camera.json (and the
- * height-field reference at the same camera, multibounce/heightfield/<scene>.exr), the fit's
+ * height-field multi-bounce reference at the same camera, multibounce/heightfield/<scene>.exr), the fit's
  * <output>/fits/multibounce.{json,h,hlsl,glsl}, and the plot data
  * <output>/figures/multibounce_{scatter,curves,coefficients}.dat. */
 #ifndef GTLAB_STUDIES_MULTIBOUNCE_H
@@ -205,18 +205,20 @@ typedef struct {
 } multibounce_gtao_row;
 
 /* "Agnostic to the source of the AO as long as it is ground truth": the
- * talk's f fed two ground-truth V_d, the 3-D reference's (even-sample half)
- * and the height-field reference's (rendered at the same camera with as
- * many samples as that half: the limit of line-sweep and horizon AO). What f
- * claims is the light the bounces add, so each source is scored on its own
- * change, f(V_d) - V_d, against the 3-D truth's V'_d - V_d (odd half): RMS
- * over every scene and albedo (each weighted equally), not V_d's own error. */
+ * talk's f fed two ground-truth V_d, the 3-D reference's and the
+ * height-field multi-bounce reference's (raytracer/
+ * heightfield_multibounce_integrator.h: the world screen-space and
+ * line-sweep AO see, rendered at the same camera with the same albedos,
+ * bounces and samples), each the even-sample half. What f claims is the
+ * light the bounces add, so each source is scored on its own change,
+ * f(V_d) - V_d, against the truth's V'_d - V_d of its own world (odd half):
+ * RMS over every scene and albedo (each weighted equally). */
 typedef struct {
     int spp;                             /* of the height-field reference */
-    double gain_rmse_3d, gain_rmse_hf;   /* RMS of (f(V_d) - V_d) - (V'_d - V_d)_truth */
+    double gain_rmse_3d, gain_rmse_hf;   /* RMS of (f(V_d) - V_d) - (V'_d - V_d) of the source's own truth */
     double difference, difference_se;    /* gain_rmse_hf - gain_rmse_3d; jackknife over scenes */
     double rmse_hf_v_d;                  /* the height field's V_d against the 3-D one (even half) */
-    double rmse_total_3d, rmse_total_hf; /* f(V_d) against V'_d: each source's whole error */
+    double rmse_total_3d, rmse_total_hf; /* f(V_d) against its own world's V'_d */
 } multibounce_agnostic;
 
 typedef struct {

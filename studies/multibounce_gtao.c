@@ -1,7 +1,8 @@
 /* "Agnostic to the source of AO" (studies/multibounce.h,
  * multibounce_gtao_study; issue 25, item 5; issue 42): the talk's
  * multi-bounce f on two ground-truth V_d (the 3-D reference's and the
- * height-field reference's), each scored on the light it adds; and, beside
+ * height-field multi-bounce reference's), each scored on the light it adds
+ * against the truth of its own world; and, beside
  * it, f on GTAO's V_d against the multi-bounce reference with GTAO's share
  * of the error. */
 #include <math.h>
@@ -10,9 +11,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/exr_io.h"
 #include "core/reference_schema.h"
+#include "metrics/reference_halves.h"
+#include "raytracer/reference_render.h"
 #include "realtime/gtao.h"
-#include "studies/gtao_scene_refs.h"
+#include "scene/scene_loaders.h"
 #include "studies/gbuffer_input.h"
 #include "studies/multibounce_parts.h"
 
@@ -72,62 +76,108 @@ static void accumulate(const multibounce_state *st, int k, const float *ao, pres
     }
 }
 
-/* Adds scene k's errors of f on the 3-D reference's V_d and on the height
- * field's `hf`: the change f makes against the truth's (V'_d - V_d of the
- * odd half), and the whole of f(V_d) against V'_d. */
-static void accumulate_sources(const multibounce_state *st, int k, const float *hf, agnostic_sums *sums)
+/* One source's halves: V_d of the even samples feeds f, V_d and V'_d per
+ * albedo of the odd samples are its truth. */
+typedef struct {
+    const float *vd, *vd_odd, *target[MULTIBOUNCE_STUDY_ALBEDOS];
+} source_halves;
+
+static source_halves halves_of(const multibounce_state *st, const image halves[2])
+{
+    source_halves h = {image_channel_data(&halves[0], CH_AO), image_channel_data(&halves[1], CH_AO), {0}};
+    for (int a = 0; a < MULTIBOUNCE_STUDY_ALBEDOS; ++a)
+        h.target[a] = image_channel_data(&halves[1], st->plan.quantities[a].name);
+    return h;
+}
+
+/* The error of the change f makes at pixel i, albedo a, against the
+ * truth's change V'_d - V_d of the same source; *total: f(V_d) - V'_d. */
+static double gain_error(const source_halves *h, int a, size_t i, double rho, double *total)
 {
     const multibounce_model talk = multibounce_model_jimenez2016();
-    const image *img = &st->refs[k], *even = &st->halves[k][0], *odd = &st->halves[k][1];
-    const float *mask = image_channel_data(img, CH_MASK), *vd = image_channel_data(even, CH_AO);
-    const float *vd_odd = image_channel_data(odd, CH_AO);
-    const size_t n = image_pixel_count(img);
+    double f = gtao_multibounce(&talk, h->vd[i], rho);
+    *total = f - h->target[a][i];
+    return (f - h->vd[i]) - ((double)h->target[a][i] - h->vd_odd[i]);
+}
+
+/* Adds scene k's errors of f on each ground-truth source, each against the
+ * truth of its own world: the 3-D reference's V_d against the 3-D V'_d, the
+ * height field's (`hf`, its halves) against the height-field V'_d. */
+static void accumulate_sources(const multibounce_state *st, int k, const image hf[2], agnostic_sums *sums)
+{
+    const source_halves d3 = halves_of(st, st->halves[k]), hh = halves_of(st, hf);
+    const float *mask = image_channel_data(&st->refs[k], CH_MASK);
+    const size_t n = image_pixel_count(&st->refs[k]);
     for (int a = 0; a < MULTIBOUNCE_STUDY_ALBEDOS; ++a) {
         const double rho = st->plan.settings.albedos[a];
-        const float *target = image_channel_data(odd, st->plan.quantities[a].name);
         source_sums *g = &sums->g[k][a];
         for (size_t i = 0; i < n; ++i) {
             if (mask[i] == 0.0f)
                 continue;
-            double truth_gain = (double)target[i] - vd_odd[i];
-            double f3 = gtao_multibounce(&talk, vd[i], rho), fh = gtao_multibounce(&talk, hf[i], rho);
-            double e3 = (f3 - vd[i]) - truth_gain, eh = (fh - hf[i]) - truth_gain;
+            double t3, th, e3 = gain_error(&d3, a, i, rho, &t3), eh = gain_error(&hh, a, i, rho, &th);
             g->gain_3d += e3 * e3;
             g->gain_hf += eh * eh;
-            g->total_3d += (f3 - target[i]) * (f3 - target[i]);
-            g->total_hf += (fh - target[i]) * (fh - target[i]);
-            g->hf_v_d += ((double)hf[i] - vd[i]) * ((double)hf[i] - vd[i]);
+            g->total_3d += t3 * t3;
+            g->total_hf += th * th;
+            g->hf_v_d += ((double)hh.vd[i] - d3.vd[i]) * ((double)hh.vd[i] - d3.vd[i]);
             g->pixels += 1.0;
         }
     }
 }
 
-/* The height-field reference of scene k at its camera, accumulated into sums. */
-static int run_heightfield(const study_context *ctx, const multibounce_state *st, int k, const char *scene,
-                           const camera *cam, int spp, agnostic_sums *sums, gt_error *e)
+/* Whether the height-field reference carries the 3-D reference's channels. */
+static int same_channels(const multibounce_state *st, const image halves[2])
+{
+    const source_halves h = halves_of(st, halves);
+    int ok = h.vd && h.vd_odd;
+    for (int a = 0; a < MULTIBOUNCE_STUDY_ALBEDOS; ++a)
+        ok &= h.target[a] != NULL;
+    return ok;
+}
+
+/* The height-field multi-bounce reference of scene k at its camera (the 3-D
+ * reference's albedos, bounces and samples: req), written and accumulated
+ * into sums. */
+static int run_heightfield(const study_context *ctx, const reference_request *req, const multibounce_state *st,
+                           int k, const char *name, const camera *cam, agnostic_sums *sums, gt_error *e)
 {
     char dir[2048], path[4096], spec[128];
     if (study_make_dir(ctx, MULTIBOUNCE_HEIGHTFIELD_DIR, dir, sizeof dir, e) != 0)
         return -1;
-    snprintf(path, sizeof path, "%s/%s.exr", dir, scene);
-    snprintf(spec, sizeof spec, "builtin:%s", scene);
-    image hf;
-    if (gtao_render_heightfield(ctx, spec, cam, spp, path, &hf, e) != 0)
+    snprintf(path, sizeof path, "%s/%s.exr", dir, name);
+    snprintf(spec, sizeof spec, "builtin:%s", name);
+    reference_request hreq = *req;
+    hreq.quantity = reference_quantity_find("heightfield-multibounce");
+    scene s;
+    if (scene_load(spec, &s, e) != 0)
         return -1;
-    const float *ao = image_channel_data(&hf, CH_AO);
-    int rc = 0;
-    if (!ao || hf.width != st->refs[k].width || hf.height != st->refs[k].height)
-        rc = gt_error_set(e, path, "not an AO image of the multi-bounce reference's size");
-    else
-        accumulate_sources(st, k, ao, sums);
+    image hf, halves[2];
+    render_stats stats;
+    int rc = reference_render(&s, spec, cam, &hreq, &hf, &stats, e);
+    scene_free(&s);
+    if (rc != 0)
+        return -1;
+    rc = exr_write(path, &hf, e);
+    if (rc == 0 && hf.width == st->refs[k].width && hf.height == st->refs[k].height)
+        rc = reference_halves_split(&hf, path, halves, e);
+    else if (rc == 0)
+        rc = gt_error_set(e, path, "not of the multi-bounce reference's size");
     image_free(&hf);
+    if (rc != 0)
+        return -1;
+    if (same_channels(st, halves))
+        accumulate_sources(st, k, halves, sums);
+    else
+        rc = gt_error_set(e, path, "not a multi-bounce reference of the study's albedos");
+    image_free(&halves[0]);
+    image_free(&halves[1]);
     return rc;
 }
 
 /* GTAO at every preset on scene k's G-buffer, accumulated into sums, and
  * the height-field reference at its camera into sources. */
-static int run_scene(const study_context *ctx, const multibounce_state *st, int k, const char *scene, int spp,
-                     preset_sums *sums, agnostic_sums *sources, gt_error *e)
+static int run_scene(const study_context *ctx, const reference_request *req, const multibounce_state *st, int k,
+                     const char *scene, preset_sums *sums, agnostic_sums *sources, gt_error *e)
 {
     char dir[2048], path[4096];
     if (study_make_dir(ctx, MULTIBOUNCE_STUDY_DIR, dir, sizeof dir, e) != 0)
@@ -146,7 +196,7 @@ static int run_scene(const study_context *ctx, const multibounce_state *st, int 
     }
     free(ao);
     if (rc == 0)
-        rc = run_heightfield(ctx, st, k, scene, &in.cam, spp, sources, e);
+        rc = run_heightfield(ctx, req, st, k, scene, &in.cam, sources, e);
     approx_input_free(&in);
     return rc;
 }
@@ -246,10 +296,10 @@ int multibounce_study_gtao(const study_context *ctx, const reference_request *re
         return gt_error_set(e, "multibounce", "out of memory");
     }
     memset(out, 0, sizeof *out);
-    const int spp = req->sampling.spp / 2; /* as many as the 3-D reference's even half */
+    const int spp = req->sampling.spp; /* the 3-D reference's */
     int rc = 0;
     for (int k = 0; k < MULTIBOUNCE_STUDY_SCENES && rc == 0; ++k)
-        rc = run_scene(ctx, st, k, scenes[k], spp, sums, sources, e);
+        rc = run_scene(ctx, req, st, k, scenes[k], sums, sources, e);
     for (int p = 0; p < MULTIBOUNCE_GTAO_PRESETS && rc == 0; ++p)
         preset_row(&sums[p], p, &out->rows[p]);
     if (rc == 0)

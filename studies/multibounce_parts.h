@@ -44,8 +44,8 @@ int multibounce_study_bounces(const study_context *ctx, const reference_request 
                               const char *const *scenes, multibounce_bounce_study *out, gt_error *e);
 
 /* out->gtao_input: GTAO run on the G-buffer of each reference written to
- * <output>/MULTIBOUNCE_STUDY_DIR/<scene>.exr, and the height-field reference
- * rendered at its camera with half req's samples (written to
+ * <output>/MULTIBOUNCE_STUDY_DIR/<scene>.exr, and the height-field
+ * multi-bounce reference rendered at its camera as req (written to
  * <output>/MULTIBOUNCE_HEIGHTFIELD_DIR/<scene>.exr; multibounce_gtao.c). */
 int multibounce_study_gtao(const study_context *ctx, const reference_request *req, const multibounce_state *st,
                            const char *const *scenes, multibounce_gtao_study *out, gt_error *e);

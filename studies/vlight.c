@@ -12,6 +12,7 @@
 #include "core/reference_schema.h"
 #include "metrics/dither_metrics.h"
 #include "metrics/image_error.h"
+#include "metrics/flip.h"
 #include "metrics/ssim.h"
 #include "realtime/raymarch_upsample.h"
 #include "studies/shadow_map_render.h"
@@ -41,10 +42,11 @@ typedef struct {
     float ssim_scale; /* SSIM sees values times 1 / the reference's 99th percentile */
     float *scaled[2], *blurred_reference;
     int threads;
+    int score_flip; /* score() also computes FLIP (the equal-cost images) */
 } vlight_run;
 
 typedef struct {
-    double rmse, dssim, blurred;
+    double rmse, dssim, blurred, flip;
 } image_score;
 
 /* A Gaussian blur (sigma 1 pixel, 5 taps) of `in` over the mask's pixels,
@@ -81,6 +83,13 @@ static int score(vlight_run *r, const float *image, image_score *out, gt_error *
         return -1;
     out->rmse = stats.rmse / r->reference_mean;
     out->dssim = ssim.dssim;
+    out->flip = 0.0;
+    if (r->score_flip) {
+        flip_result f;
+        if (flip_grey(r->scaled[1], r->scaled[0], v->mask, v->gb.width, v->gb.height, "volumetric", NULL, &f, e) != 0)
+            return -1;
+        out->flip = f.mean;
+    }
     blur_masked(image, v->mask, v->gb.width, v->gb.height, r->scaled[0], r->scaled[1]);
     blur_masked(r->reference, v->mask, v->gb.width, v->gb.height, r->scaled[0], r->blurred_reference);
     if (image_error_compute(r->scaled[1], r->blurred_reference, v->mask, v->gb.width, v->gb.height, "volumetric",
@@ -93,14 +102,14 @@ static int score(vlight_run *r, const float *image, image_score *out, gt_error *
 /* Mean and standard error over the seeds. */
 static vlight_error summarise(const image_score *s, int n)
 {
-    double m[3] = {0.0, 0.0, 0.0}, v[3] = {0.0, 0.0, 0.0};
+    double m[4] = {0.0, 0.0, 0.0, 0.0}, v[4] = {0.0, 0.0, 0.0, 0.0};
     for (int k = 0; k < n; ++k)
-        m[0] += s[k].rmse / n, m[1] += s[k].dssim / n, m[2] += s[k].blurred / n;
+        m[0] += s[k].rmse / n, m[1] += s[k].dssim / n, m[2] += s[k].blurred / n, m[3] += s[k].flip / n;
     for (int k = 0; k < n && n > 1; ++k) {
         v[0] += pow(s[k].rmse - m[0], 2) / (n - 1), v[1] += pow(s[k].dssim - m[1], 2) / (n - 1);
-        v[2] += pow(s[k].blurred - m[2], 2) / (n - 1);
+        v[2] += pow(s[k].blurred - m[2], 2) / (n - 1), v[3] += pow(s[k].flip - m[3], 2) / (n - 1);
     }
-    vlight_error out = {m[0], sqrt(v[0] / n), m[1], sqrt(v[1] / n), m[2], sqrt(v[2] / n)};
+    vlight_error out = {m[0], sqrt(v[0] / n), m[1], sqrt(v[1] / n), m[2], sqrt(v[2] / n), m[3], sqrt(v[3] / n)};
     return out;
 }
 
@@ -181,7 +190,7 @@ static void blue_ratios(const vlight_request *rq, image_score (*acc)[VLIGHT_MAX_
     for (int n = RAYMARCH_NOISE_WHITE; n < RAYMARCH_NOISE_COUNT; ++n) {
         image_score ratio[VLIGHT_MAX_SEEDS];
         for (int s = 0; s < rq->seeds; ++s) {
-            ratio[s].rmse = acc[RAYMARCH_NOISE_BLUE][s].rmse / acc[n][s].rmse, ratio[s].dssim = 0.0;
+            ratio[s].rmse = acc[RAYMARCH_NOISE_BLUE][s].rmse / acc[n][s].rmse, ratio[s].dssim = ratio[s].flip = 0.0;
             ratio[s].blurred = single[RAYMARCH_NOISE_BLUE][s].blurred / single[n][s].blurred;
         }
         vlight_error sum = summarise(ratio, rq->seeds);
@@ -392,7 +401,7 @@ static int reference_figures(vlight_run *r, vlight_result *out, gt_error *e)
 
 /* The talk's configuration (6 spp at half resolution, blue noise, noisy
  * upsample, accumulated) per seed against 2 and 24 uniform steps, by
- * DSSIM, on an image of cost_width x cost_height. */
+ * DSSIM and FLIP, on an image of cost_width x cost_height. */
 static int measure_cost_configurations(vlight_run *r, vlight_result *out, gt_error *e)
 {
     image_score talk[VLIGHT_MAX_SEEDS], single, uniform2, uniform24, gap[VLIGHT_MAX_SEEDS] = {{0}};
@@ -403,12 +412,13 @@ static int measure_cost_configurations(vlight_run *r, vlight_result *out, gt_err
     for (int s = 0; s < seeds; ++s) {
         if (measure(r, RAYMARCH_NOISE_BLUE, 6, s, 2, &single, &talk[s], e) != 0)
             return -1;
-        gap[s].dssim = talk[s].dssim - uniform2.dssim;
+        gap[s].dssim = talk[s].dssim - uniform2.dssim, gap[s].flip = talk[s].flip - uniform2.flip;
     }
     out->cost_talk = summarise(talk, seeds);
     out->cost_uniform2 = summarise(&uniform2, 1), out->cost_uniform24 = summarise(&uniform24, 1);
     vlight_error g = summarise(gap, seeds);
     out->cost_dssim_gap = g.dssim, out->cost_dssim_gap_se = g.dssim_se;
+    out->cost_flip_gap = g.flip, out->cost_flip_gap_se = g.flip_se;
     return 0;
 }
 
@@ -422,9 +432,9 @@ static int measure_equal_cost(const study_context *ctx, const vlight_request *rq
     if (!scratch)
         return gt_error_set(e, "volumetric", "out of memory");
     vlight_run r;
-    int rc = run_alloc(&r, ctx, &big, e) == 0 && reference_figures(&r, scratch, e) == 0
-                 ? measure_cost_configurations(&r, out, e)
-                 : -1;
+    int rc = run_alloc(&r, ctx, &big, e);
+    r.score_flip = 1;
+    rc = rc == 0 && reference_figures(&r, scratch, e) == 0 ? measure_cost_configurations(&r, out, e) : -1;
     out->cost_pixels = scratch->pixels, out->cost_reference_seconds = scratch->reference_seconds;
     run_free(&r);
     free(scratch);

@@ -36,7 +36,11 @@
  * blue-noise samples per half-resolution pixel, the noisy depth-aware
  * upsample, the frames accumulated; 1.5 samples per pixel) against the
  * uniform march it replaces at no smaller cost, 2 uniform steps per pixel
- * (and 24, the talk's 3.6 ms slide), by DSSIM; the gap paired per seed. */
+ * (and 24, the talk's 3.6 ms slide), by DSSIM and by mean FLIP (flip_grey
+ * of the images as SSIM sees them, scaled by 1 / the reference's 99th
+ * percentile: HDR-FLIP with the reference's exposures where values exceed
+ * 1, so the figure does not depend on the light's units); each gap paired
+ * per seed. */
 #ifndef GTLAB_STUDIES_VLIGHT_H
 #define GTLAB_STUDIES_VLIGHT_H
 
@@ -65,6 +69,7 @@ typedef struct {
     double rmse, rmse_se;   /* relative RMSE, mean over seeds and its standard error */
     double dssim, dssim_se;
     double blurred, blurred_se; /* relative RMSE after a Gaussian blur (sigma 1 pixel) of both images */
+    double flip, flip_se;       /* mean FLIP (metrics/flip.h, flip_grey) of the scaled images; equal cost only, else 0 */
 } vlight_error;
 
 typedef struct {
@@ -103,6 +108,7 @@ typedef struct {
     double cost_reference_seconds;
     vlight_error cost_talk, cost_uniform2, cost_uniform24;
     double cost_dssim_gap, cost_dssim_gap_se; /* DSSIM(talk) - DSSIM(uniform 2), per seed */
+    double cost_flip_gap, cost_flip_gap_se;   /* FLIP(talk) - FLIP(uniform 2), per seed */
 } vlight_result;
 
 vlight_request vlight_default_request(study_quality quality);

@@ -111,6 +111,14 @@ expect_error merge-gbuffer "g.exr: no Monte Carlo accumulator" "$work/merged.exr
 # lut atmosphere: an axis size out of range is refused before any work.
 expect_error lut-atmosphere-size "--theta-v: 0 is out of range" "$work/atmosphere/atmosphere_luts.h" -- lut atmosphere --theta-v 0 -o "$work/atmosphere"
 expect_error lut-atmosphere-size-high "--weathers: 300 is out of range" "$work/atmosphere/atmosphere_luts.h" -- lut atmosphere --weathers 300 -o "$work/atmosphere"
+# the nonlinear parametrizations' split view axis needs an even size of at least 4; an unknown one is refused
+expect_error lut-atmosphere-yusov-odd "--theta-v: .*Yusov 2013 view axis needs an even size" "$work/atmosphere/atmosphere_inscatter_yusov2013.exr" -- lut atmosphere --parametrization yusov2013 --theta-v 63 -o "$work/atmosphere"
+expect_error lut-atmosphere-unknown-parametrization "--parametrization" "$work/atmosphere/atmosphere_inscatter.exr" -- lut atmosphere --parametrization yusov -o "$work/atmosphere"
+# --help names the parametrizations; yusov2013 writes its three EXRs only (the shaders' lookup is linear)
+help=$("$gtlab" lut atmosphere --help)
+grep -q "linear (default" <<<"$help" && grep -q "yusov2013 (the talk's \[Yus13\])" <<<"$help" && grep -q "bruneton2008 (Bruneton & Neyret 2008)" <<<"$help" && pass || fail "lut atmosphere --help does not name the parametrizations"
+expect_ok lut-atmosphere-yusov lut atmosphere --parametrization yusov2013 --weathers 1 --light-theta-s 2 --threads 2 -o "$work/atmosphere-yusov"
+ls "$work/atmosphere-yusov" | tr '\n' ' ' | grep -qx "atmosphere_inscatter_yusov2013.exr atmosphere_sky_yusov2013.exr atmosphere_sun_yusov2013.exr " && pass || fail "lut atmosphere yusov2013 wrote: $(ls "$work/atmosphere-yusov")"
 # gtlab all --stages: unknown or empty lists are refused before any work;
 # one stage gives a report with that section only.
 expect_error all-unknown-stage "--stages: unknown stage 'smoke'" "" -- all --stages ao,smoke -o "$work/all"

@@ -1,9 +1,10 @@
 /* Writes small atmosphere LUTs in every format to the folder argv[1] (for
  * test_atmosphere_luts_writers.sh), and checks each EXR reads back
- * bit-identical with its sizes attribute. */
+ * bit-identical with its sizes and parametrization ("linear") attributes. */
 #include <string.h>
 
 #include "core/exr_io.h"
+#include "core/reference_schema.h"
 #include "luts/atmosphere_luts_writers.h"
 #include "tests/check.h"
 
@@ -21,6 +22,8 @@ static void check_exr_round_trip(const char *dir, const atmosphere_luts *luts, c
         mismatches += memcmp(&plane[t], &data[t * per_texel], sizeof(float)) != 0;
     CHECK_MSG(mismatches == 0, "%s: %d values differ after the EXR round trip", file, mismatches);
     CHECK(image_get_attribute(&img, "gtlab.lut.sizes") && strcmp(image_get_attribute(&img, "gtlab.lut.sizes"), sizes) == 0);
+    CHECK(image_get_attribute(&img, ATTR_LUT_PARAMETRIZATION) &&
+          strcmp(image_get_attribute(&img, ATTR_LUT_PARAMETRIZATION), "linear") == 0);
     (void)luts;
     image_free(&img);
 }

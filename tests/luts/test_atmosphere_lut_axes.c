@@ -3,7 +3,8 @@
  * from their definitions (endpoints, the horizon split into two halves with
  * their own ends, a power's or a distance's half-way point), the round trip
  * grid point -> parameter -> position on every point but those the papers
- * clamp (checked apart: what they hold), and a Yusov table at 4x the talk's
+ * clamp (checked apart: what they hold), Yusov's positions against the
+ * texture coordinates his sample's shaders compute, and a Yusov table at 4x the talk's
  * size per spatial axis, whose sky (luts/atmosphere_lut_errors.h) is within
  * one sRGB code value at 95% of the pixels: where the parametrization's
  * table should be near exact. */
@@ -75,6 +76,40 @@ static void test_yusov(void)
     /* sun: the formula */
     CHECK_NEAR(at(&f, TALK, 0.0, 0, y, 0).p, 7.0, 1e-12);
     CHECK_NEAR(at(&f, TALK, 0.5 * PI, 0, y, 0).p, 0.37 * 7.0, 1e-12);
+}
+
+/* Yusov's texture coordinates as his sample's shaders write them
+ * (OutdoorLightScattering, ZenithAngle2TexCoord and
+ * WorldParams2InsctrLUTCoords: SafetyHeightMargin 16, HeightPower 0.5,
+ * ViewZenithPower 0.2, the sun by Bruneton's formula), in [0, 1] texture
+ * space: the upper half of the view axis on [0.5 + 0.5/D, 1 - 0.5/D], the
+ * lower on [0.5/D, 0.5 - 0.5/D]; the other axes' texel centres at
+ * (u (D - 1) + 0.5) / D. A texture coordinate is (p + 0.5) / n of a position. */
+static double yusov_view_texcoord(double mu, double h, double D)
+{
+    double c = atmosphere_lut_horizon_cosine(h, 6360e3);
+    if (mu > c)
+        return 0.5 + 0.5 / D + pow(fmin(fmax((mu - c) / (1.0 - c), 0.0), 1.0), 0.2) * (D / 2 - 1) / D;
+    return 0.5 / D + pow(fmin(fmax((c - mu) / (c + 1.0), 0.0), 1.0), 0.2) * (D / 2 - 1) / D;
+}
+
+static void test_yusov_texcoords(void)
+{
+    atmosphere_lut_frame f = frame(ATMOSPHERE_PARAM_YUSOV);
+    int worst = 0;
+    CHECK(f.bottom_radius == 6360e3);
+    for (double y = 20.0; y < 1980.0; y += 97.0)
+        for (double mu = -0.999; mu < 1.0; mu += 0.0371) {
+            double h = y, top = f.max_altitude, m = 16.0;
+            atmosphere_lut_position p[4];
+            atmosphere_lut_positions(&f, TALK, acos(0.3), acos(mu), y, 0.5, p);
+            double view = yusov_view_texcoord(mu, h, TALK[1]);
+            double height = (pow((h - m) / (top - 2 * m), 0.5) * (TALK[2] - 1) + 0.5) / TALK[2];
+            double sun = ((atan(0.3 * tan(1.26 * 1.1)) / 1.1 + (1.0 - 0.26)) * 0.5 * (TALK[0] - 1) + 0.5) / TALK[0];
+            worst += fabs((p[1].p + 0.5) / TALK[1] - view) > 1e-12 || fabs((p[2].p + 0.5) / TALK[2] - height) > 1e-12 ||
+                     fabs((p[0].p + 0.5) / TALK[0] - sun) > 1e-12;
+        }
+    CHECK_MSG(worst == 0, "%d points where a position is not Yusov's texture coordinate", worst);
 }
 
 static void test_bruneton(void)
@@ -207,6 +242,7 @@ int main(void)
 {
     test_sun_formula();
     test_yusov();
+    test_yusov_texcoords();
     test_bruneton();
     int big[4] = {32, 256, 32, 4};
     for (int k = 0; k < ATMOSPHERE_PARAMS; ++k)

@@ -8,7 +8,9 @@
  *    when it crosses the slab within one pixel;
  *  - the option absent and T = INFINITY give today's reference bit for bit;
  *  - with the same seed, AO is non-increasing in T at every pixel (the
- *    slabs are nested), and T = 1e30 matches the infinite height field. */
+ *    slabs are nested), and T = 1e30 matches the infinite height field;
+ *  - heightfield_first_hit (the multi-bounce reference's hits) on the band:
+ *    the side of its column, its top face, nothing above it. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -79,6 +81,35 @@ static void test_band_closed_form(void)
     heightfield_settings_free(&hs);
 }
 
+/* heightfield_first_hit on the band (infinite thickness): a low ray from the
+ * floor meets the side of the band's column at x ~ 1 (the plane through the
+ * eye and a pixel edge, nearly vertical here), facing -x, even a steep one
+ * (the solid is infinitely deep); one from above meets the top face y = 1
+ * where the line does, normal +y; one passing above the band meets nothing. */
+static void test_band_first_hit(void)
+{
+    static surface_hit hits[SIZE * SIZE];
+    static unsigned char mask[SIZE * SIZE];
+    gbuffer gb;
+    band_gbuffer(&gb, hits, mask);
+    heightfield_settings hs;
+    CHECK(heightfield_settings_init(&hs, &gb, INFINITY) == 0);
+    vec3 p = hits[(SIZE / 2) * SIZE + SIZE / 2].p, d = v3_normalize(v3(1.0f, 0.2f, 0.0f)), h = {0};
+    surface_hit hit;
+    CHECK(heightfield_first_hit(&hs, p, d, &hit));
+    h = hit.p;
+    CHECK_MSG(fabsf(h.x - band_lo) < 0.12f && fabsf(h.y - 0.2f * (h.x - p.x)) < 1e-3f && hit.ng.x < -0.95f,
+              "side: (%g %g %g), normal (%g %g %g)", h.x, h.y, h.z, hit.ng.x, hit.ng.y, hit.ng.z);
+    CHECK(fabsf(hit.t - v3_length(v3_sub(h, p))) < 1e-5f);
+    CHECK(heightfield_first_hit(&hs, p, v3_normalize(v3(1.0f, 0.5f, 0.0f)), &hit) && hit.ng.x < -0.95f);
+    /* from a point above the floor, down onto the top face at x = 1.5 */
+    CHECK(heightfield_first_hit(&hs, v3(0.5f, 2.0f, 0.0f), v3_normalize(v3(1.0f, -1.0f, 0.0f)), &hit));
+    CHECK_MSG(fabsf(hit.p.y - 1.0f) < 1e-4f && fabsf(hit.p.x - 1.5f) < 1e-3f && hit.ng.y == 1.0f,
+              "top: (%g %g %g)", hit.p.x, hit.p.y, hit.p.z);
+    CHECK(!heightfield_first_hit(&hs, p, v3_normalize(v3(1.0f, 1.5f, 0.0f)), &hit));
+    heightfield_settings_free(&hs);
+}
+
 /* heightfield-ao on the boxes seen from above; thickness < 0: the option absent. */
 static int render_hf(const scene *s, const camera *cam, float thickness, image *out)
 {
@@ -137,6 +168,7 @@ static void test_boxes(void)
 int main(void)
 {
     test_band_closed_form();
+    test_band_first_hit();
     test_boxes();
     return check_report("test_heightfield_thickness");
 }

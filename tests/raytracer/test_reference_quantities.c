@@ -80,8 +80,8 @@ static void test_descriptors(void)
     CHECK(QUANTITY_GBUFFER->prepare == NULL && QUANTITY_GBUFFER->options == NULL);
     char names[512];
     reference_quantity_names(names, sizeof names);
-    CHECK_MSG(strcmp(names, "gbuffer, ao, multibounce, heightfield-ao, specular-occlusion, sphere-light, fog, "
-                            "volumetric-light, env-diffuse or env-specular") == 0,
+    CHECK_MSG(strcmp(names, "gbuffer, ao, multibounce, heightfield-ao, heightfield-multibounce, specular-occlusion, "
+                            "sphere-light, fog, volumetric-light, env-diffuse or env-specular") == 0,
               "%s", names);
 }
 

@@ -7,7 +7,10 @@
  * gtlab's setting (the talk states neither altitude range nor atmospheres),
  * and a figure straddling 1.7% is not significant; none from the linear or
  * Bruneton rows, nor for the sun and sky tables, whose one altitude the talk
- * takes at a representative position (not the setting scored here). */
+ * takes at a representative position (not the setting scored here). The
+ * sizes table reports day and twilight apart and decides "within 2%" by the
+ * 95% interval (yes, no, undecided); the written sets are listed in the
+ * section and in summary.json. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -19,7 +22,8 @@
 
 static atmosphere_luts_result made_up(void)
 {
-    static const double total[3] = {0.5, 0.01, 0.03}, quadrature[3] = {1e-3, 1e-4, 0.04};
+    /* in-scatter beyond 2%, sun within, sky straddling 2% */
+    static const double total[3] = {0.5, 0.01, 0.019}, quadrature[3] = {1e-3, 1e-4, 0.002}, se[3] = {0.1, 0.002, 0.003};
     atmosphere_luts_result r;
     memset(&r, 0, sizeof r);
     r.request = atmosphere_luts_default_request(QUALITY_PREVIEW);
@@ -31,7 +35,10 @@ static atmosphere_luts_result made_up(void)
         x->error.total.p95 = total[t], x->error.quadrature.p95 = quadrature[t];
         x->error.interpolation.p95 = total[t] * 0.999, x->error.interpolation.max = 1.0 / 3.0;
         x->error.day_total.p95 = total[t] / 100.0;
-        r.talk_row[t] = t, r.smallest_within[t] = t == 0 ? -1 : t;
+        x->error.twilight_total = (atmosphere_error_stats){0.4, 0.3, 0.25, 0.09};
+        x->error.day_points = 40, x->error.twilight_points = 8;
+        x->error.total.p95_se = se[t];
+        r.talk_row[t] = t, r.smallest_within[t] = t == 1 ? 1 : -1;
     }
     /* the sky: one talk-size row per parametrization, Yusov's last */
     static const atmosphere_lut_parametrization order[3] = {ATMOSPHERE_PARAM_LINEAR, ATMOSPHERE_PARAM_BRUNETON,
@@ -46,6 +53,12 @@ static atmosphere_luts_result made_up(void)
         x->twilight = (atmosphere_error_stats){0.9, 0.3, k == 2 ? 0.08 : 0.001, 0.01};
         r.sky_talk_row[order[k]] = k;
     }
+    /* the written sets: linear in every format, Yusov's as EXR */
+    r.file_set_count = 2;
+    r.file_sets[0] = (atmosphere_luts_file_set){ATMOSPHERE_PARAM_LINEAR, atmosphere_lut_sizes_talk(), 2,
+                                                {"luts/atmosphere/atmosphere_inscatter.exr", "luts/atmosphere/atmosphere_luts.h"}};
+    r.file_sets[1] = (atmosphere_luts_file_set){ATMOSPHERE_PARAM_YUSOV, atmosphere_lut_sizes_talk(), 1,
+                                                {"luts/atmosphere/atmosphere_inscatter_yusov2013.exr"}};
     return r;
 }
 
@@ -70,6 +83,20 @@ int main(void)
     const cJSON *sky = cJSON_GetObjectItem(cJSON_GetObjectItem(ctx.summary, "atmosphere_luts"), "sky");
     CHECK(cJSON_GetArraySize(sky) == 3);
     CHECK(cJSON_GetNumberValue(cJSON_GetObjectItem(cJSON_GetArrayItem(sky, 2), "twilight_p95")) == 0.08);
+    /* the sizes table's day and twilight apart, and its decision by the interval */
+    CHECK(cJSON_GetNumberValue(cJSON_GetObjectItem(cJSON_GetArrayItem(rows, 0), "twilight_total_p95")) == 0.25);
+    CHECK(cJSON_GetNumberValue(cJSON_GetObjectItem(cJSON_GetArrayItem(rows, 0), "twilight_points")) == 8);
+    CHECK(strstr(doc.md, "| no |") && strstr(doc.md, "| undecided |") && strstr(doc.md, "| yes |"));
+    CHECK(strstr(doc.findings_md, "in twilight (8 points) 25.0% +- 9.0%"));
+    /* the written files: listed in the section and in summary.json per parametrization */
+    const cJSON *files = cJSON_GetObjectItem(cJSON_GetObjectItem(ctx.summary, "atmosphere_luts"), "files");
+    CHECK(cJSON_GetArraySize(files) == 2);
+    CHECK(strcmp(cJSON_GetStringValue(cJSON_GetObjectItem(cJSON_GetArrayItem(files, 1), "parametrization")),
+                 "yusov2013") == 0);
+    CHECK(strcmp(cJSON_GetStringValue(cJSON_GetArrayItem(cJSON_GetObjectItem(cJSON_GetArrayItem(files, 1), "paths"), 0)),
+                 "luts/atmosphere/atmosphere_inscatter_yusov2013.exr") == 0);
+    CHECK(strstr(doc.md, "Yusov 2013 parametrization (gtlab.lut.parametrization \"yusov2013\")") &&
+          strstr(doc.md, "luts/atmosphere/atmosphere_inscatter_yusov2013.exr"));
     CHECK(claims.count == 2); /* Yusov's table: the day, then twilight */
     CHECK(claims.count == 2 && claims.rows[0].verdict == CLAIM_REPRODUCED);
     CHECK(claims.count == 2 && claims.rows[1].verdict == CLAIM_FAILS_GTLAB_SETTING);
