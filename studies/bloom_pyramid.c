@@ -8,7 +8,7 @@
 #include "core/reference_schema.h"
 #include "metrics/ssim.h"
 #include "studies/bloom_kernels.h"
-#include "studies/dither_inputs.h"
+#include "studies/hdr_test_image.h"
 
 enum { CHAIN_TARGET, CHAIN_NINE, CHAIN_POLICY, CHAINS };
 
@@ -101,7 +101,7 @@ static void level_sizes(const bloom_request *rq, bloom_result *out)
 int bloom_pyramids(const study_context *ctx, const bloom_request *rq, bloom_result *out, gt_error *e)
 {
     image ref;
-    if (dither_sphere_light_reference(ctx, rq->width, rq->height, rq->spp, rq->seed, &ref, e) != 0)
+    if (hdr_test_image_sphere_light(ctx, rq->width, rq->height, rq->spp, rq->seed, &ref, e) != 0)
         return -1;
     const float *hdr = image_channel_data(&ref, CH_SPHERE_G);
     level_sizes(rq, out);

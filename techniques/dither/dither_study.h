@@ -28,10 +28,10 @@
  * R11G11B10: a linear ramp over [0.5, 4[ quantised to the 6-bit-mantissa
  * float with no, RPDF and TPDF dither scaled by the local spacing: bias and
  * error variance in units of that spacing, worst over bins. */
-#ifndef GTLAB_STUDIES_DITHER_H
-#define GTLAB_STUDIES_DITHER_H
+#ifndef GTLAB_DITHER_DITHER_STUDY_H
+#define GTLAB_DITHER_DITHER_STUDY_H
 
-#include "realtime/dither.h"
+#include "dither/dither.h"
 #include "realtime/dither_patterns.h"
 #include "studies/study.h"
 

@@ -40,8 +40,8 @@
  *      fmax returns -1, giving -0.5, the limit from above (1.5 from below:
  *      the inverse CDF jumps there); this function returns -0.5. An 8-bit
  *      texture never holds exactly 1/2 (k/255), a float uniform may. */
-#ifndef GTLAB_REALTIME_DITHER_H
-#define GTLAB_REALTIME_DITHER_H
+#ifndef GTLAB_DITHER_DITHER_H
+#define GTLAB_DITHER_DITHER_H
 
 typedef enum { DITHER_FLOOR = 0, DITHER_ROUND } dither_quantiser;
 

@@ -1,16 +1,16 @@
 /* `gtlab check dither`: the moments of the quantisation error of each
- * dither kind (realtime/dither.h) at `signals` values across one LSB, by
+ * dither kind (dither.h) at `signals` values across one LSB, by
  * Monte Carlo with `samples` draws each (floor quantiser), against the
  * laws of nonsubtractive dither: E[e] = 0; Var[e] = 1/4 (TPDF of 2 LSB) or
  * f (1 - f) (RPDF); the talk's (u0 + u1) / 2 has no signal-independent law
  * and is reported only. Deviations are in standard errors of the run. */
-#ifndef GTLAB_STUDIES_DITHER_CHECK_H
-#define GTLAB_STUDIES_DITHER_CHECK_H
+#ifndef GTLAB_DITHER_DITHER_CHECK_H
+#define GTLAB_DITHER_DITHER_CHECK_H
 
 #include <stdio.h>
 
 #include "core/error.h"
-#include "realtime/dither.h"
+#include "dither/dither.h"
 
 typedef struct {
     dither_kind kind;

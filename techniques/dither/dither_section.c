@@ -1,5 +1,5 @@
-/* The dithering and blue-noise section of `gtlab all` (studies/dither.h). */
-#include "report/dither_section.h"
+/* The dithering and blue-noise section of `gtlab all` (dither_study.h). */
+#include "dither/dither_section.h"
 
 #include <math.h>
 #include <string.h>

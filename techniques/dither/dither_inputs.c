@@ -1,6 +1,6 @@
 /* The dither study's inputs: see dither_inputs.h. */
 #include "luts/color_grade.h" /* linear_to_srgb */
-#include "studies/dither_inputs.h"
+#include "dither/dither_inputs.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -9,10 +9,9 @@
 
 #include "core/progress.h"
 #include "core/reference_schema.h"
+#include "dither/dither.h"
 #include "metrics/dither_metrics.h"
-#include "raytracer/reference_render.h"
-#include "realtime/dither.h"
-#include "scene/scene_loaders.h"
+#include "studies/hdr_test_image.h"
 
 int dither_gradient(const dither_request *rq, dither_input *out, gt_error *e)
 {
@@ -69,30 +68,10 @@ static int tone_map(const image *ref, dither_input *out, gt_error *e)
     return 0;
 }
 
-int dither_sphere_light_reference(const study_context *ctx, int width, int height, int spp, unsigned seed, image *out,
-                                  gt_error *e)
-{
-    scene s;
-    camera cam = {v3(0.0f, 3.0f, 7.0f), v3(0.0f, 0.7f, 0.0f), v3(0.0f, 1.0f, 0.0f), (float)(40.0 * M_PI / 180.0),
-                  width, height};
-    if (scene_load("builtin:sphere-on-plane", &s, e) != 0)
-        return -1;
-    reference_request req;
-    memset(&req, 0, sizeof req);
-    req.quantity = QUANTITY_SPHERE_LIGHT;
-    req.sampling = (sampling_settings){.spp = spp, .seed = seed, .threads = ctx->threads};
-    req.normals = NORMAL_SHADING;
-    req.sphere_light = (sphere_light_settings){v3(-2.5f, 4.0f, 1.5f), 0.5f, 5.0f, 0};
-    render_stats stats;
-    int rc = reference_render(&s, "builtin:sphere-on-plane", &cam, &req, out, &stats, e);
-    scene_free(&s);
-    return rc;
-}
-
 int dither_render(const study_context *ctx, const dither_request *rq, dither_input *out, gt_error *e)
 {
     image ref;
-    if (dither_sphere_light_reference(ctx, rq->render_width, rq->render_height, rq->render_spp, rq->seed, &ref, e) != 0)
+    if (hdr_test_image_sphere_light(ctx, rq->render_width, rq->render_height, rq->render_spp, rq->seed, &ref, e) != 0)
         return -1;
     int rc = tone_map(&ref, out, e);
     image_free(&ref);

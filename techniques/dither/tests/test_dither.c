@@ -1,4 +1,4 @@
-/* Dithered quantisation (realtime/dither.c, metrics/dither_metrics.c) against
+/* Dithered quantisation (dither/dither.c, metrics/dither_metrics.c) against
  * the theory of nonsubtractive dither (Lipshitz, Wannamaker, Vanderkooy 1992;
  * Christou 2008 ch. 2), by Monte Carlo with fixed seeds, within 5 standard
  * errors of the run itself, at 41 signals per LSB:
@@ -17,9 +17,9 @@
  *    TPDF-dithered one (p = 3/4 of keeping a value at integers) under a third. */
 #include <math.h>
 
+#include "dither/dither.h"
 #include "luts/blue_noise.h"
 #include "metrics/dither_metrics.h"
-#include "realtime/dither.h"
 #include "realtime/dither_patterns.h"
 #include "tests/check.h"
 

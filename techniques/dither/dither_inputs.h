@@ -1,12 +1,12 @@
-/* The dither study's inputs and helpers (studies/dither.h): the gradient,
+/* The dither study's inputs and helpers (dither_study.h): the gradient,
  * the tone-mapped HDR render, the display blur, the blue-noise texture and
  * the R11G11B10 rows. */
-#ifndef GTLAB_STUDIES_DITHER_INPUTS_H
-#define GTLAB_STUDIES_DITHER_INPUTS_H
+#ifndef GTLAB_DITHER_DITHER_INPUTS_H
+#define GTLAB_DITHER_DITHER_INPUTS_H
 
 #include "core/image.h"
+#include "dither/dither_study.h"
 #include "luts/blue_noise.h"
-#include "studies/dither.h"
 
 typedef struct {
     const char *name;
@@ -19,14 +19,9 @@ typedef struct {
 int dither_gradient(const dither_request *rq, dither_input *out, gt_error *e);
 
 /* The unshadowed sphere light on builtin:sphere-on-plane, green, Reinhard
- * after scaling the 99th percentile of covered pixels to 1, sRGB-encoded. */
+ * after scaling the 99th percentile of covered pixels to 1, sRGB-encoded
+ * (the HDR image: studies/hdr_test_image.h). */
 int dither_render(const study_context *ctx, const dither_request *rq, dither_input *out, gt_error *e);
-
-/* gtlab's unshadowed sphere-light reference of builtin:sphere-on-plane
- * (light at (-2.5, 4, 1.5), radius 0.5, radiance 5; camera from (0, 3, 7) at
- * (0, 0.7, 0), 40 degrees): the HDR image both INSIDE studies use. */
-int dither_sphere_light_reference(const study_context *ctx, int width, int height, int spp, unsigned seed, image *out,
-                                  gt_error *e);
 
 /* In place: a separable Gaussian of sigma 1 pixel (radius 3, clamped edges). */
 int dither_blur_display(float *plane, int width, int height, gt_error *e);

@@ -1,5 +1,5 @@
-/* Dither patterns at equal noise power on a gradient and an HDR render: see dither.h. */
-#include "studies/dither.h"
+/* Dither patterns at equal noise power on a gradient and an HDR render: see dither_study.h. */
+#include "dither/dither_study.h"
 
 #include <limits.h>
 #include <math.h>
@@ -8,9 +8,9 @@
 #include <string.h>
 
 #include "core/progress.h"
+#include "dither/dither_inputs.h"
 #include "metrics/dither_metrics.h"
 #include "metrics/ssim.h"
-#include "studies/dither_inputs.h"
 
 enum { MODULATION_BINS = 32, UNORM_BITS = 8, WIDE_UNORM_BITS = 10 };
 

@@ -1,5 +1,5 @@
 /* Dithered quantisation: see dither.h for the definitions and sources. */
-#include "realtime/dither.h"
+#include "dither/dither.h"
 
 #include <math.h>
 

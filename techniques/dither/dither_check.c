@@ -1,5 +1,5 @@
 /* The moments of dithered quantisation errors against their laws: see dither_check.h. */
-#include "studies/dither_check.h"
+#include "dither/dither_check.h"
 
 #include <math.h>
 
