@@ -23,8 +23,8 @@
  * w (1 - a)(1 - b), w a (1 - b), ...: rank one, so a target block of rank
  * two (the 13-tap corner block [[1, 1], [1, 5]] / 128) cannot be met, while
  * a separable target (a sampled Gaussian) is met exactly. */
-#ifndef GTLAB_REALTIME_BLOOM_DOWNSAMPLE_H
-#define GTLAB_REALTIME_BLOOM_DOWNSAMPLE_H
+#ifndef GTLAB_BLOOM_BLOOM_DOWNSAMPLE_H
+#define GTLAB_BLOOM_BLOOM_DOWNSAMPLE_H
 
 enum {
     BLOOM_JIMENEZ_TAPS = 13,

@@ -11,7 +11,7 @@
  *       texel centres x in {+-1/2, +-3/2, +-5/2}, normalised, with sigma
  *       chosen so that their variance per axis equals the 13-tap's (7/4
  *       texel^2); its continuous mass outside the footprint is reported.
- * Each fit (fitters/bloom_tap_fit.h) is scored by its worst and RMS texel
+ * Each fit (bloom_tap_fit.h) is scored by its worst and RMS texel
  * weight error, the talk's measure (a tap's four bilinear weights
  * normalised to sum 1 against the target block's, worst over taps), the
  * frequency response against the target's over [0, pi]^2 (and at the
@@ -22,10 +22,10 @@
  * built with the 9 taps against those built with the target, per level.
  * Writes <output>/bloom/bloom_9tap.{hlsl,glsl}: offsets (source texels) and
  * weights. */
-#ifndef GTLAB_STUDIES_BLOOM_H
-#define GTLAB_STUDIES_BLOOM_H
+#ifndef GTLAB_BLOOM_BLOOM_STUDY_H
+#define GTLAB_BLOOM_BLOOM_STUDY_H
 
-#include "fitters/bloom_tap_fit.h"
+#include "bloom/bloom_tap_fit.h"
 #include "studies/study.h"
 
 #define BLOOM_DIR "bloom"
@@ -69,7 +69,7 @@ typedef struct {
 
 bloom_request bloom_default_request(study_quality quality);
 
-/* A target's 6 x 6 weights (studies/bloom_kernels.h) and the Gaussian's sigma. */
+/* A target's 6 x 6 weights (bloom_kernels.h) and the Gaussian's sigma. */
 void bloom_target_weights(int target, double weights[BLOOM_FOOTPRINT][BLOOM_FOOTPRINT], double *sigma);
 
 int bloom_study(const study_context *ctx, const bloom_request *rq, bloom_result *out, gt_error *e);

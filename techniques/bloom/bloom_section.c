@@ -1,5 +1,5 @@
-/* The bloom 13 -> 9 tap section of `gtlab all` (studies/bloom.h). */
-#include "report/bloom_section.h"
+/* The bloom 13 -> 9 tap section of `gtlab all` (bloom_study.h). */
+#include "bloom/bloom_section.h"
 
 #include <math.h>
 

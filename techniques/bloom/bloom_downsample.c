@@ -1,5 +1,5 @@
 /* Jimenez's 13-tap bloom downsample and 9-tap refits: see bloom_downsample.h. */
-#include "realtime/bloom_downsample.h"
+#include "bloom/bloom_downsample.h"
 
 #include <math.h>
 

@@ -1,13 +1,13 @@
-/* The 13 -> 9 bloom tap refit: fits, scores and shader constants; see bloom.h. */
-#include "studies/bloom.h"
+/* The 13 -> 9 bloom tap refit: fits, scores and shader constants; see bloom_study.h. */
+#include "bloom/bloom_study.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "bloom/bloom_kernels.h"
+#include "bloom/bloom_pyramid.h"
 #include "core/atomic_file.h"
-#include "studies/bloom_kernels.h"
-#include "studies/bloom_pyramid.h"
 
 enum { RESPONSE_STEPS = 33, PHASE_STEPS = 16 };
 

@@ -1,15 +1,15 @@
-/* The bloom study's kernels as texel weights at any phase (studies/bloom.h):
+/* The bloom study's kernels as texel weights at any phase (bloom_study.h):
  * Jimenez's 13 taps; the Gaussian of matching variance sampled at the texel
  * centres within 3 texels of the pixel centre per axis (the 6 x 6 footprint
  * at phase 0: the fit's target) or at all 8 x 8 of the grid (the ideal
  * Gaussian, truncated where it is below 3 % of its peak: the reference off
  * half resolution and in the pyramids, since the 6-texel window jumps with
  * the phase), each normalised. */
-#ifndef GTLAB_STUDIES_BLOOM_KERNELS_H
-#define GTLAB_STUDIES_BLOOM_KERNELS_H
+#ifndef GTLAB_BLOOM_BLOOM_KERNELS_H
+#define GTLAB_BLOOM_BLOOM_KERNELS_H
 
+#include "bloom/bloom_downsample.h"
 #include "core/error.h"
-#include "realtime/bloom_downsample.h"
 
 enum { BLOOM_TARGET_JIMENEZ = 0, BLOOM_TARGET_GAUSSIAN_6, BLOOM_TARGET_GAUSSIAN };
 

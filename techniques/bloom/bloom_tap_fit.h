@@ -3,18 +3,18 @@
  * sample each texel once"), by Ceres (fitters/ceres_bridge.h).
  *
  * Parameters: the 27 numbers (x_k, y_k, w_k) of the taps of
- * realtime/bloom_downsample.h's 3 x 3 layout, each position bounded to its
+ * bloom_downsample.h's 3 x 3 layout, each position bounded to its
  * 2 x 2 block (|x_k - X_k| <= 1/2, |y_k - Y_k| <= 1/2: each texel read once);
  * weights free. Residuals: the 36 texel weights of the footprint at half
  * resolution (bloom_texel_weights at phase 0) minus the target's, least
  * squares. Start: taps at the block centres with the target's block sums.
  * A parameter ending on its bound is counted and named in the result: a fit
  * there is constrained by the layout, not by the target. */
-#ifndef GTLAB_FITTERS_BLOOM_TAP_FIT_H
-#define GTLAB_FITTERS_BLOOM_TAP_FIT_H
+#ifndef GTLAB_BLOOM_BLOOM_TAP_FIT_H
+#define GTLAB_BLOOM_BLOOM_TAP_FIT_H
 
+#include "bloom/bloom_downsample.h"
 #include "core/error.h"
-#include "realtime/bloom_downsample.h"
 
 typedef struct {
     bloom_tap taps[BLOOM_FIT_TAPS];

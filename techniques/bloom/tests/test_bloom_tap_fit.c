@@ -1,5 +1,5 @@
-/* The 13 -> 9 bilinear bloom tap refit (fitters/bloom_tap_fit.c,
- * realtime/bloom_downsample.c):
+/* The 13 -> 9 bilinear bloom tap refit (bloom/bloom_tap_fit.c,
+ * bloom/bloom_downsample.c):
  *  - Jimenez's 13 taps reproduce the talk's table of texel weights x 128
  *    (integers 1, 1, 2, ... 8) exactly, and the weights sum to 1 at any phase;
  *  - the fitted kernels reproduce their own weights when convolved as
@@ -18,7 +18,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "fitters/bloom_tap_fit.h"
+#include "bloom/bloom_tap_fit.h"
 #include "tests/check.h"
 
 enum { SRC = 16, DST = 8 };

@@ -1,5 +1,5 @@
 /* gtlab's generated bloom kernels, executed (issue 15, item 4): the bloom
- * study (studies/bloom.h, at a small size) writes bloom_9tap.glsl and
+ * study (bloom/bloom_study.h, at a small size) writes bloom_9tap.glsl and
  * bloom_9tap.hlsl, three constant arrays of 9 (x, y, weight) taps; a compute
  * shader around each file reads every constant back on Vulkan, and each is
  * compared with the fit's own double (bloom_result's taps) it was printed
@@ -17,10 +17,10 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "bloom/bloom_study.h"
 #include "gpu/sample_map.h"
 #include "gpu/shader_compiler.h"
 #include "gpu/vulkan_device.h"
-#include "studies/bloom.h"
 #include "tests/check.h"
 #include "tests/gpu/sample_shader.h"
 

@@ -1,5 +1,5 @@
 /* The bloom study's target kernels at any phase: see bloom_kernels.h. */
-#include "studies/bloom_kernels.h"
+#include "bloom/bloom_kernels.h"
 
 #include <math.h>
 

@@ -1,5 +1,5 @@
 /* The 9-tap bilinear bloom refit: see bloom_tap_fit.h. */
-#include "fitters/bloom_tap_fit.h"
+#include "bloom/bloom_tap_fit.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -1,13 +1,13 @@
 /* Pyramids of an HDR render with the bloom kernels: see bloom_pyramid.h. */
-#include "studies/bloom_pyramid.h"
+#include "bloom/bloom_pyramid.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "bloom/bloom_kernels.h"
 #include "core/reference_schema.h"
 #include "metrics/ssim.h"
-#include "studies/bloom_kernels.h"
 #include "studies/hdr_test_image.h"
 
 enum { CHAIN_TARGET, CHAIN_NINE, CHAIN_POLICY, CHAINS };
