@@ -1,40 +1,13 @@
-/* The INSIDE sections from made-up results (they run nothing): the summary
- * carries the rows' fields, the claims rows take their figures from the
- * right rows and judge them under their records (dithering's:
- * techniques/dither/tests/). */
-#include <math.h>
+/* INSIDE's volumetric-light section from a made-up result (it runs
+ * nothing): the claims rows take their figures from the right fields and
+ * judge them under their records (dithering's, bloom's and the AO decals':
+ * techniques/dither/, techniques/bloom/, techniques/ao_decals/). */
 #include <string.h>
 #include <sys/stat.h>
 
-#include "report/ao_decals_section.h"
 #include "report/vlight_section.h"
 #include "tests/check.h"
-#include "tests/claims_check.h"
-
-/* The AO decals' rows: Quilez against the exact sphere within a code value
- * (1e-7) reproduces, 0.01 refutes; the point decal's exponent is a
- * limitation measured whatever its figure. */
-static void check_ao_decals(report_context *base)
-{
-    static ao_decals_result r;
-    static claims_table claims;
-    report_context ctx = *base;
-    ctx.claims = &claims, ctx.summary = cJSON_CreateObject();
-    gt_error e;
-    memset(&r, 0, sizeof r);
-    for (int k = 0; k < AO_DECAL_VARIANTS; ++k)
-        r.rows[k].variant = "made up";
-    r.fit.params[AO_DECAL_SHAPE] = 0.4, r.fit.standard_errors[AO_DECAL_SHAPE] = 0.01;
-    r.quilez_exact_worst[0] = 1e-7, r.quilez_exact_worst[1] = 2e-7;
-    CHECK(ao_decals_section(&ctx, &r, &e) == 0);
-    r.quilez_exact_worst[1] = 0.01;
-    CHECK(ao_decals_section(&ctx, &r, &e) == 0);
-    CHECK(claims.count == 4 && claims.refused == 0);
-    CHECK(claims.rows[0].figure == 2e-7 && claims.rows[0].verdict == CLAIM_REPRODUCED);
-    CHECK(claims.rows[2].figure == 0.01 && claims.rows[2].verdict == CLAIM_REFUTED);
-    CHECK(claims.rows[1].figure == 0.4 && claims.rows[1].verdict == CLAIM_LIMITATION_MEASURED);
-    cJSON_Delete(ctx.summary);
-}
+#include "tests/section_test.h"
 
 /* The volumetric rows: blue 0.05 below white (past the 1% margin)
  * reproduces, 0.005 below is no visible difference; Bayer's and IGN's
@@ -80,15 +53,9 @@ static void check_vlight(report_context *base)
 
 int main(void)
 {
-    char dir[2048];
-    snprintf(dir, sizeof dir, "%s/inside_sections_output", check_tmp_dir());
-    mkdir(dir, 0755);
-    report doc;
-    report_init(&doc, "test");
-    report_context ctx = {{dir, QUALITY_PREVIEW, 1, NULL, NULL}, &doc, cJSON_CreateObject(), NULL};
-    check_ao_decals(&ctx);
-    check_vlight(&ctx);
-    report_free(&doc);
-    cJSON_Delete(ctx.summary);
+    static section_test t;
+    section_test_begin(&t, "inside_sections_output", NULL);
+    check_vlight(&t.ctx);
+    section_test_end(&t);
     return check_report("test_inside_sections");
 }

@@ -2,11 +2,10 @@
  * the fits, the claims rows take their figures from the right rows and judge
  * them under their records. */
 #include <string.h>
-#include <sys/stat.h>
 
 #include "bloom/bloom_section.h"
 #include "tests/check.h"
-#include "tests/claims_check.h"
+#include "tests/section_test.h"
 
 static void made_up_bloom(bloom_result *r, double normalised)
 {
@@ -46,14 +45,9 @@ static void check_bloom(report_context *base)
 
 int main(void)
 {
-    char dir[2048];
-    snprintf(dir, sizeof dir, "%s/bloom_section_output", check_tmp_dir());
-    mkdir(dir, 0755);
-    report doc;
-    report_init(&doc, "test");
-    report_context ctx = {{dir, QUALITY_PREVIEW, 1, NULL, NULL}, &doc, cJSON_CreateObject(), NULL};
-    check_bloom(&ctx);
-    report_free(&doc);
-    cJSON_Delete(ctx.summary);
+    static section_test t;
+    section_test_begin(&t, "bloom_section_output", NULL);
+    check_bloom(&t.ctx);
+    section_test_end(&t);
     return check_report("test_bloom_section");
 }

@@ -7,11 +7,10 @@
  * difference, 0.04 apart a reproduction. */
 #include <math.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "dither/dither_section.h"
 #include "tests/check.h"
-#include "tests/claims_check.h"
+#include "tests/section_test.h"
 
 static void made_up_dither(dither_result *r)
 {
@@ -35,21 +34,18 @@ static void made_up_dither(dither_result *r)
 
 int main(void)
 {
-    char dir[2048];
-    snprintf(dir, sizeof dir, "%s/dither_section_output", check_tmp_dir());
-    mkdir(dir, 0755);
     static dither_result d, worse;
     static claims_table claims;
+    static section_test t;
     made_up_dither(&d);
     made_up_dither(&worse); /* the TPDF modulated as much as RPDF, blue visibly ahead of white */
     worse.images[0].rows[2].modulation_amplitude = 0.9, worse.images[0].rows[1].modulation_amplitude = 0.2;
     worse.images[1].rows[2].dssim_blurred = 0.01, worse.images[1].rows[3].dssim_blurred = 0.05;
-    report doc;
-    report_init(&doc, "test");
-    report_context ctx = {{dir, QUALITY_PREVIEW, 1, NULL, NULL}, &doc, cJSON_CreateObject(), &claims};
+    section_test_begin(&t, "dither_section_output", &claims);
+    report_context *ctx = &t.ctx;
     gt_error e;
-    CHECK(dither_section(&ctx, &d, &e) == 0);
-    CHECK(dither_section(&ctx, &worse, &e) == 0);
+    CHECK(dither_section(ctx, &d, &e) == 0);
+    CHECK(dither_section(ctx, &worse, &e) == 0);
     CHECK(claims.count == 4 + 4 && claims.refused == 0);
     CHECK(claims.rows[0].figure == 0.01 && claims.rows[1].figure == 1.0 && claims.rows[2].figure == 1.1);
     CHECK(fabs(claims.rows[3].figure - (1e-5 - 2e-5)) < 1e-15);
@@ -63,13 +59,12 @@ int main(void)
                    (const claim_verdict[]){CLAIM_REFUTED, CLAIM_REFUTED, CLAIM_FAILS_STRONGER_READING,
                                            CLAIM_REPRODUCED},
                    4);
-    const cJSON *dither = cJSON_GetObjectItem(ctx.summary, "dither");
+    const cJSON *dither = cJSON_GetObjectItem(ctx->summary, "dither");
     const cJSON *gradient = cJSON_GetObjectItem(dither, "gradient");
     CHECK(cJSON_GetArraySize(gradient) == 6);
     const cJSON *first = cJSON_GetArrayItem(gradient, 1);
     CHECK(cJSON_GetObjectItem(first, "modulation_amplitude")->valuedouble == 1.0);
     CHECK(cJSON_GetObjectItem(first, "longest_run")->valueint == 19);
-    report_free(&doc);
-    cJSON_Delete(ctx.summary);
+    section_test_end(&t);
     return check_report("test_dither_section");
 }

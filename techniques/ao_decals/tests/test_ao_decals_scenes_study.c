@@ -1,4 +1,4 @@
-/* studies/ao_decals_scenes on the decal scenes at 32^2 pixels, 256 spp:
+/* ao_decals/ao_decals_scenes on the decal scenes at 32^2 pixels, 256 spp:
  *  - the exact box is within the reference's noise on box-on-plane (at most
  *    1% of floor pixels beyond 4 standard errors, RMSE below 0.01);
  *  - multiplying exact forms over-occludes the union: on overlap-on-plane their
@@ -14,8 +14,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "studies/ao_decals.h"
-#include "studies/ao_decals_scenes.h"
+#include "ao_decals/ao_decals_scenes.h"
+#include "ao_decals/ao_decals_study.h"
 #include "tests/check.h"
 #include "tests/test_files.h"
 

@@ -24,13 +24,13 @@
  *   single   the rest.
  * The DSSIM map of every row goes to <out>/ao_decals/dssim_<scene>_<row>.png
  * (inferno, 0 to AO_DECAL_DSSIM_MAP_MAX; black outside the receivers). */
-#ifndef GTLAB_STUDIES_AO_DECALS_SCENES_H
-#define GTLAB_STUDIES_AO_DECALS_SCENES_H
+#ifndef GTLAB_AO_DECALS_AO_DECALS_SCENES_H
+#define GTLAB_AO_DECALS_AO_DECALS_SCENES_H
 
 #include <stddef.h>
 
+#include "ao_decals/ao_decals.h"
 #include "core/image.h"
-#include "realtime/ao_decals.h"
 #include "scene/builtin_scene_ao_decals.h"
 #include "studies/study.h"
 
@@ -49,7 +49,7 @@ typedef struct {
     double region_rmse[AO_DECAL_REGIONS]; /* NaN where the region is empty */
 } ao_decal_scene_row;
 
-/* One rendered scene's receivers, kept for the refit (fitters/ao_decals_fit.h). */
+/* One rendered scene's receivers, kept for the refit (ao_decals_fit.h). */
 typedef struct {
     const ao_decal_scene *scene;
     image img;

@@ -1,5 +1,5 @@
 /* The point AO decal's refit: see ao_decals_fit.h. */
-#include "fitters/ao_decals_fit.h"
+#include "ao_decals/ao_decals_fit.h"
 
 #include <math.h>
 #include <string.h>

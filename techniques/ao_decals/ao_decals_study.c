@@ -1,14 +1,14 @@
-/* INSIDE's AO decals against the AO reference on the sphere over a plane: see ao_decals.h. */
-#include "studies/ao_decals.h"
+/* INSIDE's AO decals against the AO reference on the sphere over a plane: see ao_decals_study.h. */
+#include "ao_decals/ao_decals_study.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "ao_decals/ao_decals.h"
 #include "core/reference_schema.h"
 #include "metrics/ssim.h"
 #include "raytracer/reference_render.h"
-#include "realtime/ao_decals.h"
 #include "scene/scene_loaders.h"
 
 #define DECAL_RADIUS 3.0f

@@ -1,4 +1,4 @@
-/* A refit of INSIDE's point AO decal (realtime/ao_decals.h) to AO
+/* A refit of INSIDE's point AO decal (ao_decals.h) to AO
  * references by Ceres, over several configurations at once. Per occluder
  * the decal sits in the occluder's unit space (ao_decal_volume: centre and
  * radii / half extents), pos = (p - centre) / half, d = |pos| in occluder
@@ -32,14 +32,14 @@
  * Bounds: xi in [-3, 3], L in [0.02, 20], w in [-0.9, 4] (below 0 a lobe
  * narrower than Lambert), A in [0, 1]; a parameter ending on a bound is
  * reported. */
-#ifndef GTLAB_FITTERS_AO_DECALS_FIT_H
-#define GTLAB_FITTERS_AO_DECALS_FIT_H
+#ifndef GTLAB_AO_DECALS_AO_DECALS_FIT_H
+#define GTLAB_AO_DECALS_AO_DECALS_FIT_H
 
 #include <stddef.h>
 
+#include "ao_decals/ao_decals.h"
 #include "core/error.h"
 #include "core/vec3.h"
-#include "realtime/ao_decals.h"
 
 #define AO_DECAL_FIT_D0 2.0 /* occluder radii */
 

@@ -1,5 +1,5 @@
 /* INSIDE's AO decals and the exact occlusions they approximate: see ao_decals.h. */
-#include "realtime/ao_decals.h"
+#include "ao_decals/ao_decals.h"
 
 #include <math.h>
 

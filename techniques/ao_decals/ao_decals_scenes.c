@@ -1,16 +1,16 @@
 /* INSIDE's AO decals on the decal scenes: see ao_decals_scenes.h. */
-#include "studies/ao_decals_scenes.h"
+#include "ao_decals/ao_decals_scenes.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "ao_decals/ao_decals_study.h"
 #include "core/image_io.h"
 #include "core/reference_schema.h"
 #include "metrics/ssim.h"
 #include "raytracer/reference_render.h"
-#include "studies/ao_decals.h"
 
 /* ---- Exact forms per occluder ----------------------------------------------------------------- */
 
@@ -25,7 +25,7 @@ static double exact_occlusion(const ao_occluder *o, vec3 p, vec3 n)
 }
 
 /* The form factor of builtin:corner's three 10 x 10 walls: every ray from inside the open cube leaves
- * it through one face, so their sum is their union (tests/realtime/test_ao_decals_scenes.c). */
+ * it through one face, so their sum is their union (tests/test_ao_decals_scenes.c). */
 static double corner_walls(vec3 p, vec3 n)
 {
     const vec3 walls[3][4] = {{v3(0, 0, 0), v3(10, 0, 0), v3(10, 0, 10), v3(0, 0, 10)},
@@ -165,7 +165,7 @@ static void accumulate(ao_decal_scene_row *row, const ao_decal_scene_view *view,
         sum += d[k] * d[k], bias += d[k], region_sum[view->region[k]] += d[k] * d[k];
         ++row->region_pixels[view->region[k]];
         row->worst = fmax(row->worst, fabs(d[k]));
-        /* the larger of the sample s.e. and the binomial one under the decal's value (studies/ao_decals.c) */
+        /* the larger of the sample s.e. and the binomial one under the decal's value (ao_decals_study.c) */
         double m = view->v[k] + d[k], binomial = sqrt(fmax(m * (1.0 - m), 0.0) / spp);
         outliers += fabs(d[k]) > 4.0 * fmax(fmax(view->stderr_[k], binomial), 1e-6);
     }

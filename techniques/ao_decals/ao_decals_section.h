@@ -1,9 +1,9 @@
-/* INSIDE's analytic AO decals against the AO reference (studies/ao_decals.h). */
-#ifndef GTLAB_REPORT_AO_DECALS_SECTION_H
-#define GTLAB_REPORT_AO_DECALS_SECTION_H
+/* INSIDE's analytic AO decals against the AO reference (ao_decals_study.h). */
+#ifndef GTLAB_AO_DECALS_AO_DECALS_SECTION_H
+#define GTLAB_AO_DECALS_AO_DECALS_SECTION_H
 
+#include "ao_decals/ao_decals_study.h"
 #include "report/report_context.h"
-#include "studies/ao_decals.h"
 
 /* Adds the section to ctx's report, summary.json and claims; -1 (e set) on failure. */
 int ao_decals_section(report_context *ctx, const ao_decals_result *r, gt_error *e);

@@ -1,5 +1,5 @@
 /* The AO decal scenes (scene/builtin_scene_ao_decals.h) against the exact
- * forms of realtime/ao_decals.h, with gtlab's AO reference (32^2 pixels,
+ * forms of ao_decals/ao_decals.h, with gtlab's AO reference (32^2 pixels,
  * 512 spp, fixed seed) as the independent estimator:
  *  - builtin:box-on-plane: 1 - the exact box (Lambert's polygon formula) within
  *    4 of the render's standard errors on every floor pixel; the floor points
@@ -12,9 +12,9 @@
  *  - the scene table describes the same occluders the meshes hold (bounds). */
 #include <math.h>
 
+#include "ao_decals/ao_decals.h"
 #include "core/reference_schema.h"
 #include "raytracer/reference_render.h"
-#include "realtime/ao_decals.h"
 #include "scene/builtin_scene_ao_decals.h"
 #include "scene/scene_loaders.h"
 #include "tests/check.h"

@@ -9,13 +9,13 @@
  * view A and scored on view B (held out: other floor points of the same
  * configuration, not another configuration). Per row: RMSE and worst error
  * of V_d, DSSIM over the floor, and the share of floor pixels beyond 4 of the
- * reference's standard errors. Then the decal scenes (studies/ao_decals_scenes.h)
+ * reference's standard errors. Then the decal scenes (ao_decals_scenes.h)
  * at the same size and spp. */
-#ifndef GTLAB_STUDIES_AO_DECALS_H
-#define GTLAB_STUDIES_AO_DECALS_H
+#ifndef GTLAB_AO_DECALS_AO_DECALS_STUDY_H
+#define GTLAB_AO_DECALS_AO_DECALS_STUDY_H
 
-#include "fitters/ao_decals_fit.h"
-#include "studies/ao_decals_scenes.h"
+#include "ao_decals/ao_decals_fit.h"
+#include "ao_decals/ao_decals_scenes.h"
 #include "studies/study.h"
 
 #define AO_DECALS_DIR "ao_decals"

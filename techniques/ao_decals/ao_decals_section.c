@@ -1,5 +1,5 @@
-/* The AO decals section of `gtlab all` (studies/ao_decals.h). */
-#include "report/ao_decals_section.h"
+/* The AO decals section of `gtlab all` (ao_decals_study.h). */
+#include "ao_decals/ao_decals_section.h"
 
 #include "report/claim_thresholds.h"
 #include "report/report_table.h"
@@ -145,7 +145,7 @@ int ao_decals_section(report_context *ctx, const ao_decals_result *r, gt_error *
                      "with a light's (pos = centre - p). View B holds other floor points of the same configuration.",
                      r->request.size, r->request.size, r->request.spp, r->floor_pixels[0], r->floor_pixels[1]);
     report_paragraph(ctx->doc,
-                     "Refit (Ceres, fitters/ao_decals_fit.h) on view A and builtin:pill-on-plane (the talk's setting: "
+                     "Refit (Ceres, ao_decals/ao_decals_fit.h) on view A and builtin:pill-on-plane (the talk's setting: "
                      "a decal stretched over a pill) together, %zu samples; held out: box-on-plane, box-in-corner and "
                      "overlap-on-plane (%zu receivers; other occluder shapes, sizes, walls and several decals "
                      "multiplying). Falloff a = A (1 + xi (d - 2) / L)^(-1 / xi) wrap, d in occluder radii: A the "

@@ -1,13 +1,12 @@
-/* studies/ao_decals: the INSIDE section's numbers without its prose, at
- * small sizes (dithering's and bloom's: techniques/dither/, techniques/bloom/).
- * AO decals: the exact sphere within 4 s.e. of the reference on the floor
+/* The AO decals study's numbers without the report's prose, at small sizes:
+ * the exact sphere within 4 s.e. of the reference on the floor
  * (equal to Quilez's there), the refit better than the light's sign, which
  * is better than the published sign; the refit inside its bounds, with
  * standard errors, better than the published decal on held-out scenes. */
 #include <stdlib.h>
 #include <string.h>
 
-#include "studies/ao_decals.h"
+#include "ao_decals/ao_decals_study.h"
 #include "tests/check.h"
 #include "tests/test_files.h"
 
@@ -35,7 +34,7 @@ int main(void)
     char dir[2048];
     gt_error e;
     study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL};
-    CHECK(study_make_dir(&top, "inside_studies", dir, sizeof dir, &e) == 0);
+    CHECK(study_make_dir(&top, "ao_decals_study", dir, sizeof dir, &e) == 0);
     check_ao_decals(dir);
-    return check_report("test_inside_studies");
+    return check_report("test_ao_decals_study");
 }

@@ -1,7 +1,7 @@
-/* fitters/ao_decals_fit: the generalised Pareto falloff and the refit.
+/* ao_decals/ao_decals_fit: the generalised Pareto falloff and the refit.
  *  - at the published parameters (xi = -1/2, L = 1/2, A = 1/9, w = 1) the
  *    family is the talk's three lines at radius 3 with a light's sign
- *    (realtime/ao_decals.c's ao_point_decal_published, an independent
+ *    (ao_decals/ao_decals.c's ao_point_decal_published, an independent
  *    implementation), for a sphere and for a stretched (pill) volume;
  *  - xi = 0 is the exponential exp(-(d - 2) / L), and at xi = +-1e-5 the
  *    family differs from it by its first-order term xi u^2 / 2 (u = (d - 2) / L);
@@ -13,8 +13,8 @@
  *    fit recovers the rest and k's s.e. is 0. */
 #include <math.h>
 
-#include "fitters/ao_decals_fit.h"
-#include "realtime/ao_decals.h"
+#include "ao_decals/ao_decals.h"
+#include "ao_decals/ao_decals_fit.h"
 #include "tests/check.h"
 
 enum { N = 400 };

@@ -35,8 +35,8 @@
  * summed over the box faces that face the point, each face first clipped to
  * the tangent half-space n.(x - p) >= 0 (a convex box's front faces tile its
  * silhouette without overlap). */
-#ifndef GTLAB_REALTIME_AO_DECALS_H
-#define GTLAB_REALTIME_AO_DECALS_H
+#ifndef GTLAB_AO_DECALS_AO_DECALS_H
+#define GTLAB_AO_DECALS_AO_DECALS_H
 
 #include "core/vec3.h"
 

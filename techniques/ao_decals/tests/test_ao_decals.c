@@ -1,4 +1,4 @@
-/* INSIDE's AO decals (realtime/ao_decals.c) against independent estimators:
+/* INSIDE's AO decals (ao_decals/ao_decals.c) against independent estimators:
  *  - cosine-weighted Monte Carlo with analytic ray-box (slabs) and ray-sphere
  *    intersection, 200000 directions, fixed seeds, within 4 standard errors
  *    sqrt(a (1 - a) / N): the box's Lambert form for a point facing one
@@ -16,10 +16,10 @@
  *    union does (Monte Carlo): reported by the study, checked here. */
 #include <math.h>
 
+#include "ao_decals/ao_decals.h"
 #include "core/reference_schema.h"
 #include "luts/blue_noise.h"
 #include "raytracer/reference_render.h"
-#include "realtime/ao_decals.h"
 #include "scene/scene_loaders.h"
 #include "tests/check.h"
 
