@@ -1,7 +1,7 @@
 /* The AO decal scenes (issue 17, item 1): INSIDE's occluders as real
  * geometry, so gtlab's cosine AO reference counts their union exactly and
- * studies/ao_decals can score each decal against it. Four scenes, all
- * outside the studies' scene list (scene/builtin_scenes.h):
+ * the AO decals study (techniques/ao_decals/) can score each decal against
+ * it. Four scenes, all outside the studies' scene list (scene/builtin_scenes.h):
  *   pill-on-plane     a stretched ellipsoid (the "pill" of the point decal) over the floor;
  *   box-on-plane      a crate standing on the floor;
  *   box-in-corner     a crate in builtin:corner's three walls;

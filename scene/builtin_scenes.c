@@ -456,21 +456,21 @@ static const builtin_scene scenes[] = {
      "the floor; 128 rings x 256 segments (pole fans), every vertex on it, exact ellipsoid normals.\n" WHITE_MATERIAL
      "Bounds: [-50, 50] x [0, 1.3] x [-50, 50].\n"
      "Camera: position (4.5, 4, 6), target (0, 0.5, 0), up +Y, yfov 45 deg, 512 x 512.\n"
-     "Not in the studies' scene list: for the AO decals (studies/ao_decals.h).",
+     "Not in the studies' scene list: for the AO decals (techniques/ao_decals/).",
      builtin_scene_build_pill_on_plane, 1},
     {"box-on-plane",
      FLOOR "A crate (mesh 1) standing on it: x in [-0.75, 0.75], y in [0, 1.2], z in [-0.5, 0.5], 5 faces\n"
      "(no bottom), each 2 triangles with its own 4 vertices and its outward normal.\n" WHITE_MATERIAL
      "Bounds: [-50, 50] x [0, 1.2] x [-50, 50].\n"
      "Camera: position (4.5, 4, 6), target (0, 0.5, 0), up +Y, yfov 45 deg, 512 x 512.\n"
-     "Not in the studies' scene list: for the AO decals (studies/ao_decals.h).",
+     "Not in the studies' scene list: for the AO decals (techniques/ao_decals/).",
      builtin_scene_build_box_on_plane, 1},
     {"box-in-corner",
      "The three walls of 'corner' (mesh 0: y = 0, x = 0, z = 0, 10 x 10, facing into x, y, z >= 0) and a\n"
      "crate (mesh 1) on the floor: x in [0.8, 2], y in [0, 1], z in [0.6, 1.6], 5 faces (no bottom),\n"
      "outward normals.\n" WHITE_MATERIAL "Bounds: [0, 10] x [0, 10] x [0, 10].\n"
      "Camera: position (6, 5, 7), target (1, 0.5, 1), up +Y, yfov 45 deg, 512 x 512.\n"
-     "Not in the studies' scene list: for the AO decals (studies/ao_decals.h).",
+     "Not in the studies' scene list: for the AO decals (techniques/ao_decals/).",
      builtin_scene_build_box_in_corner, 1},
     {"overlap-on-plane",
      FLOOR "Overlapping occluders: spheres (mesh 1, meshed as pill-on-plane's) of radius 0.7 at\n"
@@ -478,7 +478,7 @@ static const builtin_scene scenes[] = {
      "crate (mesh 2: x in [0.3, 1.5], y in [0, 1], z in [-1.5, -0.5], no bottom), and of radius 0.8 at\n"
      "(-3.2, 0.3, -2.4), sunk into the floor, apart.\n" WHITE_MATERIAL "Bounds: [-50, 50] x [-0.5, 1.7] x [-50, 50].\n"
      "Camera: position (5, 5.5, 6.5), target (-0.7, 0.4, -1), up +Y, yfov 45 deg, 512 x 512.\n"
-     "Not in the studies' scene list: for the AO decals (studies/ao_decals.h).",
+     "Not in the studies' scene list: for the AO decals (techniques/ao_decals/).",
      builtin_scene_build_overlap_on_plane, 1},
     {"aa-thin", BUILTIN_AA_THIN_DESCRIPTION, builtin_build_aa_thin, 1},
 };
