@@ -1,5 +1,5 @@
 /* The split-sum DFG LUT (Karis 2013): the quadrature in GGX's own
- * coordinates, the table, its bilinear lookup (luts/dfg_lut.inc, the text
+ * coordinates, the table, its bilinear lookup (luts/table_lookup.inc, the text
  * the generated shaders carry) and the interpolation-error study. See the
  * header for the integrals, the coordinates and the axes. */
 #include "luts/dfg_lut.h"
@@ -12,8 +12,8 @@
 #include "core/quadrature.h"
 #include "core/splitmix64.h"
 #include "core/vec3.h" /* M_PI */
-#include "luts/dfg_lut_c.h"
-#include "luts/dfg_lut.inc"
+#include "luts/table_lookup_c.h"
+#include "luts/table_lookup.inc"
 
 enum { MAX_BREAKS = 64 };
 static const double OUTER_TOLERANCE = 1e-7; /* absolute, on A and on B */

@@ -89,7 +89,7 @@ void dfg_lut_free(dfg_lut *lut);
 
 /* Bilinear lookup at uv = (n.v, r) with clamp-to-edge, as a GPU samples the
  * texture (texel centres at (i + 0.5) / N) and as the generated shaders'
- * DFG() does (both are luts/dfg_lut.inc), in float: x = clamp(n.v, 0, 1) N
+ * DFG() does (both are luts/table_lookup.inc), in float: x = clamp(n.v, 0, 1) N
  * - 0.5, i0 = floor(x), weights x - i0, indices clamped to [0, N - 1].
  * (Hardware filtering also rounds the weights to 8 fractional bits; that is
  * not modelled.) */

@@ -9,6 +9,7 @@
 #include "core/image.h"
 #include "core/image_io.h"
 #include "core/reference_schema.h"
+#include "luts/table_lookup.h" /* table_lookup_inc_text: the lookup's text */
 
 static const char *const CHANNEL_NAMES[DFG_CHANNELS] = {CH_DFG_A, CH_DFG_B, CH_DFG_E};
 
@@ -81,10 +82,10 @@ int dfg_lut_write_c_header(const char *path, const char *identifier, const dfg_l
     return rc;
 }
 
-/* The shaders' dialect of luts/dfg_lut.inc, for the table <identifier> of
+/* The shaders' dialect of luts/table_lookup.inc, for the table <identifier> of
  * <identifier>_SIZE^2 texels (the three %s); then the language's own words. */
 static const char SHADER_DIALECT[] =
-    "\n/* DFG(nv, roughness) below is luts/dfg_lut.inc, the very text of gtlab's lookup dfg_lut_sample,\n"
+    "\n/* DFG(nv, roughness) below is luts/table_lookup.inc, the very text of gtlab's lookup dfg_lut_sample,\n"
     " * behind these definitions. */\n"
     "#define DFG_LUT_SHADER\n"
     "#define DFG_FN\n"
@@ -109,11 +110,11 @@ static const shader_words HLSL = {"static const float3 %s[%d * %d] = {\n", "floa
 static const shader_words GLSL = {"const vec3 %s[%d * %d] = vec3[](\n", "vec3(%.9g, %.9g, %.9g)", "\n);\n",
                                   "#define dfg_saturate(x) clamp(x, 0.0f, 1.0f)\n#define dfg_value vec3\n\n"};
 
-/* The table, the dialect and luts/dfg_lut.inc. */
+/* The table, the dialect and luts/table_lookup.inc. */
 static int write_shader(const char *path, const char *identifier, const dfg_lut *lut, const shader_words *words,
                         gt_error *e)
 {
-    size_t capacity = (size_t)lut->size * lut->size * 80 + strlen(dfg_lut_inc_text) + 8192;
+    size_t capacity = (size_t)lut->size * lut->size * 80 + strlen(table_lookup_inc_text) + 8192;
     char *text = malloc(capacity);
     if (!text)
         return gt_error_set(e, path, "out of memory");
@@ -123,7 +124,7 @@ static int write_shader(const char *path, const char *identifier, const dfg_lut 
     len += (size_t)snprintf(text + len, capacity - len, words->array_open, id, lut->size, lut->size);
     len = append_values(text, len, capacity, lut, words->texel_format, words->array_close);
     len += (size_t)snprintf(text + len, capacity - len, SHADER_DIALECT, id, id, id);
-    snprintf(text + len, capacity - len, "%s%s", words->dialect, dfg_lut_inc_text);
+    snprintf(text + len, capacity - len, "%s%s", words->dialect, table_lookup_inc_text);
     int rc = atomic_write_text(path, text, e);
     free(text);
     return rc;

@@ -8,7 +8,7 @@
  *   <base>.hlsl  `static const float3 <identifier>[N*N]` and
  *                `float3 DFG(float nv, float roughness)`: the bilinear
  *                clamp-to-edge fetch of dfg_lut_sample, whose text
- *                (luts/dfg_lut.inc) it carries behind a few definitions
+ *                (luts/table_lookup.inc) it carries behind a few definitions
  *   <base>.glsl  the same as GLSL: `const vec3 <identifier>[N*N]` and
  *                `vec3 DFG(float nv, float roughness)`.
  * Row 0 of the images is the smoothest roughness. All written atomically;
@@ -18,9 +18,6 @@
 
 #include "core/error.h"
 #include "luts/dfg_lut.h"
-
-/* The text of luts/dfg_lut.inc, embedded by the build. */
-extern const char dfg_lut_inc_text[];
 
 int dfg_lut_write_exr(const char *path, const dfg_lut *lut, gt_error *e);
 int dfg_lut_write_png(const char *path, const dfg_lut *lut, gt_error *e);

@@ -5,8 +5,8 @@
 #include <stdlib.h>
 
 #include "core/vec3.h" /* M_PI */
-#include "luts/dfg_lut_c.h"
-#include "luts/dfg_lut.inc"
+#include "luts/table_lookup_c.h"
+#include "luts/table_lookup.inc"
 
 const char *ltc_ggx_description(void)
 {

@@ -37,7 +37,7 @@
  * it spreads the texels towards grazing views where the lobe changes
  * fastest), row j at perceptual roughness r = (j + 0.5) / N. The fit uses
  * alpha = ggx_alpha_tabulated(r) (alpha >= 1e-3: below that the lobe is a
- * mirror to any table). The lookup is luts/dfg_lut.inc's bilinear,
+ * mirror to any table). The lookup is luts/table_lookup.inc's bilinear,
  * clamp-to-edge fetch, one channel at a time. */
 #ifndef GTLAB_LUTS_LTC_GGX_H
 #define GTLAB_LUTS_LTC_GGX_H
@@ -76,7 +76,7 @@ int ltc_table_alloc(ltc_table *t, int size);
 void ltc_table_free(ltc_table *t);
 
 /* Bilinear, clamp-to-edge lookup of every channel at (n.v, r), in float,
- * as a GPU samples the texture (luts/dfg_lut.inc at uv = (sqrt(1 - n.v), r)). */
+ * as a GPU samples the texture (luts/table_lookup.inc at uv = (sqrt(1 - n.v), r)). */
 void ltc_table_sample(const ltc_table *t, float n_dot_v, float roughness, float out[LTC_CHANNELS]);
 
 #endif

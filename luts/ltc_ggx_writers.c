@@ -9,7 +9,7 @@
 #include "core/exr_io.h"
 #include "core/image.h"
 #include "core/reference_schema.h"
-#include "luts/dfg_lut_writers.h" /* dfg_lut_inc_text: the lookup's text */
+#include "luts/table_lookup.h" /* table_lookup_inc_text: the lookup's text */
 
 static const char *const CHANNEL_NAMES[LTC_CHANNELS] = CH_LTC_NAMES;
 
@@ -79,11 +79,11 @@ int ltc_ggx_write_c_header(const char *path, const char *identifier, const ltc_t
     return rc;
 }
 
-/* The shaders' dialect of luts/dfg_lut.inc for the two arrays (table 0:
+/* The shaders' dialect of luts/table_lookup.inc for the two arrays (table 0:
  * <id>_M, table 1: <id>_E; the %s are the identifier), and the two fetches
  * in the common subset of HLSL and GLSL. */
 static const char SHADER_DIALECT[] =
-    "\n/* The fetches below are luts/dfg_lut.inc, the very text of gtlab's lookup ltc_table_sample,\n"
+    "\n/* The fetches below are luts/table_lookup.inc, the very text of gtlab's lookup ltc_table_sample,\n"
     " * behind these definitions. */\n"
     "#define DFG_FN\n"
     "#define dfg_floor floor\n"
@@ -122,7 +122,7 @@ static size_t append_array(char *text, size_t len, size_t capacity, const char *
 
 static int write_shader(const char *path, const char *id, const ltc_table *t, const shader_words *words, gt_error *e)
 {
-    size_t capacity = (size_t)t->size * t->size * 160 + strlen(dfg_lut_inc_text) + 8192;
+    size_t capacity = (size_t)t->size * t->size * 160 + strlen(table_lookup_inc_text) + 8192;
     char *text = malloc(capacity);
     if (!text)
         return gt_error_set(e, path, "out of memory");
@@ -131,7 +131,7 @@ static int write_shader(const char *path, const char *id, const ltc_table *t, co
     len = append_array(text, len, capacity, id, "M", t, words, LTC_A, 4);
     len = append_array(text, len, capacity, id, "E", t, words, LTC_MAGNITUDE, 2);
     len += (size_t)snprintf(text + len, capacity - len, SHADER_DIALECT, id, id, id, id, id);
-    snprintf(text + len, capacity - len, "%s%s%s", words->dialect, dfg_lut_inc_text, SHADER_FETCHES);
+    snprintf(text + len, capacity - len, "%s%s%s", words->dialect, table_lookup_inc_text, SHADER_FETCHES);
     int rc = atomic_write_text(path, text, e);
     free(text);
     return rc;

@@ -11,7 +11,7 @@
  *                float roughness)`, `float4 LTC_MAGNITUDE_FRESNEL(float nv,
  *                float roughness)`: the bilinear clamp-to-edge fetch at
  *                uv = (sqrt(1 - nv), roughness), i.e. ltc_table_sample,
- *                whose text (luts/dfg_lut.inc) it carries
+ *                whose text (luts/table_lookup.inc) it carries
  *   <base>.glsl  the same as GLSL (vec4).
  * All written atomically; the same table gives byte-identical files. */
 #ifndef GTLAB_LUTS_LTC_GGX_WRITERS_H

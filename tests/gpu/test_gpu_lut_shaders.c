@@ -3,7 +3,7 @@
  * the atmosphere tables' AtmosphereInscatterRayleigh/Mie and
  * AtmosphereSun/Sky, each as its writer writes it (luts/dfg_lut_writers.c,
  * luts/ltc_ggx_writers.c, luts/atmosphere_luts_writers.c: the tables as
- * constant arrays, then the lookup's text, luts/dfg_lut.inc or
+ * constant arrays, then the lookup's text, luts/table_lookup.inc or
  * luts/atmosphere_luts.inc), GLSL and HLSL, wrapped into a compute shader
  * (tests/gpu/sample_shader.h), run on Vulkan at pseudo-random points (ends,
  * texel centres, edges and grid points, outside the range: the clamps) and

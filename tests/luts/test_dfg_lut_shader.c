@@ -1,4 +1,4 @@
-/* One source for the DFG table's lookup (luts/dfg_lut.inc): dfg_lut_sample,
+/* One source for the DFG table's lookup (luts/table_lookup.inc): dfg_lut_sample,
  * compiled from it, gives the same bits as the lookup written before it
  * (transcribed here); the shaders' half of the .inc, compiled here as C with
  * the shaders' table access, gives the same bits as dfg_lut_sample; the
@@ -12,6 +12,7 @@
 
 #include "luts/dfg_lut.h"
 #include "luts/dfg_lut_writers.h"
+#include "luts/table_lookup.h"
 #include "tests/check.h"
 #include "tests/source_text.h"
 
@@ -35,7 +36,7 @@ typedef struct {
 static inline float dfg_saturate(float u) { return fminf(fmaxf(u, 0.0f), 1.0f); }
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-parameter" /* the placeholder table */
-#include "luts/dfg_lut.inc"
+#include "luts/table_lookup.inc"
 #pragma GCC diagnostic pop
 
 /* The lines of the generated shaders that the definitions above mirror. */
@@ -103,7 +104,7 @@ static void test_lookup_matches_previous_and_shader(const dfg_lut *lut)
                 shader_mismatches += memcmp(&got[c], &shader, sizeof(float)) != 0;
             }
     }
-    CHECK_MSG(previous_mismatches == 0, "%d values differ from the lookup before luts/dfg_lut.inc", previous_mismatches);
+    CHECK_MSG(previous_mismatches == 0, "%d values differ from the lookup before luts/table_lookup.inc", previous_mismatches);
     CHECK_MSG(shader_mismatches == 0, "%d values differ between the C and the shaders' DFG()", shader_mismatches);
     /* The lookup is the table at texel centres (i + 0.5)/N. */
     float v[3];
@@ -113,8 +114,8 @@ static void test_lookup_matches_previous_and_shader(const dfg_lut *lut)
 
 static void test_embedded_text_is_the_file(void)
 {
-    char *text = read_text(GTLAB_SOURCE_DIR "/luts/dfg_lut.inc");
-    CHECK(text != NULL && strcmp(text, dfg_lut_inc_text) == 0);
+    char *text = read_text(GTLAB_SOURCE_DIR "/luts/table_lookup.inc");
+    CHECK(text != NULL && strcmp(text, table_lookup_inc_text) == 0);
     free(text);
 }
 
@@ -128,7 +129,7 @@ static int shader_compiles(const dfg_lut *lut, int hlsl)
     int rc = hlsl ? dfg_lut_write_hlsl(path, "DFG_LUT", lut, &e) : dfg_lut_write_glsl(path, "DFG_LUT", lut, &e);
     CHECK_MSG(rc == 0, "%s", e.message);
     char *text = rc == 0 ? read_text(path) : NULL;
-    CHECK(text != NULL && strstr(text, dfg_lut_inc_text) != NULL);
+    CHECK(text != NULL && strstr(text, table_lookup_inc_text) != NULL);
     for (size_t k = 0; text && k < sizeof kShaderTableAccess / sizeof kShaderTableAccess[0]; ++k)
         CHECK_MSG(strstr(text, kShaderTableAccess[k]) != NULL, "the shader lacks %s", kShaderTableAccess[k]);
     snprintf(main_path, sizeof main_path, "%s.%s", path, hlsl ? "hlsl" : "frag");
@@ -152,7 +153,7 @@ static int shader_compiles(const dfg_lut *lut, int hlsl)
 }
 
 /* Fingerprints of the lookup (and of the old hand-written HLSL) that only
- * luts/dfg_lut.inc may contain. */
+ * luts/table_lookup.inc may contain. */
 static void test_no_second_copy(void)
 {
     static const char *const files[] = {"luts/dfg_lut.c", "luts/dfg_lut_writers.c"};
