@@ -50,7 +50,12 @@
  * specular_occlusion_lut.h), so a GPU samples it at uv = (n.v, r) directly.
  * Row 0 (the top row of the images) is the smoothest. n.v is clamped to at
  * least DFG_MIN_N_DOT_V (Filament's MIN_N_DOT_V): at n.v = 0 the integrand's
- * G2 / n.v is 0/0; texel centres never reach the clamp for N <= 5000. */
+ * G2 / n.v is 0/0; texel centres never reach the clamp for N <= 5000.
+ *
+ * The table is shared: the environment lighting's split sum
+ * (luts/prefiltered_radiance.h, realtime/env_approx.h) and the LTC fit's
+ * magnitude and Fresnel term (fitters/ltc_fit.c) read it; the DFG technique
+ * (techniques/dfg/) writes it in every format and studies its size. */
 #ifndef GTLAB_LUTS_DFG_LUT_H
 #define GTLAB_LUTS_DFG_LUT_H
 
@@ -83,7 +88,8 @@ int dfg_lut_size_valid(int size);
  * so the bits do not depend on it). Returns 0, or -1 when the size is out of
  * range (lut left empty) or memory runs out. */
 int dfg_lut_build(dfg_lut *lut, int size, int threads);
-/* The same without the size check (the interpolation study's 16^2). */
+/* The same without the size check (the DFG interpolation study's 16^2,
+ * techniques/dfg/dfg_interpolation.h). */
 int dfg_lut_build_any_size(dfg_lut *lut, int size, int threads);
 void dfg_lut_free(dfg_lut *lut);
 
@@ -94,24 +100,5 @@ void dfg_lut_free(dfg_lut *lut);
  * (Hardware filtering also rounds the weights to 8 fractional bits; that is
  * not modelled.) */
 void dfg_lut_sample(const dfg_lut *lut, float n_dot_v, float roughness, float out[3]);
-
-/* Interpolation error of the bilinear lookup against dfg_integrate at
- * `points` pseudo-random (n.v, r), uniform in [0, 1]^2 (splitmix64 from
- * `seed`; the same points for every size), per channel: over the whole
- * square (what a shader sees, including the clamp-to-edge borders, where the
- * error is O(1/N)) and over the points between the first and last texel
- * centres (bilinear interpolation proper, O(1/N^2) where smooth). */
-typedef struct {
-    int size;
-    double max_error[DFG_CHANNELS], rms_error[DFG_CHANNELS];
-    double interior_max_error[DFG_CHANNELS], interior_rms_error[DFG_CHANNELS];
-    int interior_points;
-    double build_seconds; /* wall time of the table's build */
-} dfg_interpolation_result;
-
-/* For each of the `count` sizes (>= 2 each), builds the table and measures
- * it into results[k]. Returns 0, or -1 when out of memory or a size < 2. */
-int dfg_interpolation_study(const int *sizes, int count, int points, unsigned seed, int threads,
-                            dfg_interpolation_result *results);
 
 #endif

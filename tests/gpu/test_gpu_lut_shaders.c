@@ -1,7 +1,7 @@
 /* gtlab's generated LUT shaders, executed (issue 15, item 4): the DFG
  * table's DFG(), the LTC table's LTC_INVERSE_M and LTC_MAGNITUDE_FRESNEL and
  * the atmosphere tables' AtmosphereInscatterRayleigh/Mie and
- * AtmosphereSun/Sky, each as its writer writes it (luts/dfg_lut_writers.c,
+ * AtmosphereSun/Sky, each as its writer writes it (dfg/dfg_lut_writers.c,
  * luts/ltc_ggx_writers.c, luts/atmosphere_luts_writers.c: the tables as
  * constant arrays, then the lookup's text, luts/table_lookup.inc or
  * luts/atmosphere_luts.inc), GLSL and HLSL, wrapped into a compute shader
@@ -47,13 +47,13 @@
 #include <string.h>
 
 #include "core/splitmix64.h"
+#include "dfg/dfg_lut_writers.h"
 #include "gpu/sample_map.h"
 #include "gpu/shader_compiler.h"
 #include "gpu/vulkan_device.h"
 #include "luts/atmosphere_luts.h"
 #include "luts/atmosphere_luts_writers.h"
 #include "luts/dfg_lut.h"
-#include "luts/dfg_lut_writers.h"
 #include "luts/ltc_ggx.h"
 #include "luts/ltc_ggx_writers.h"
 #include "tests/check.h"

@@ -1,9 +1,10 @@
-/* studies/dfg: the DFG section's numbers without its prose, on small
- * tables. The written table's files exist and its albedo E is a fraction;
- * the lookup is scored per size, worse over the whole square (clamped
- * borders) than between the texel centres, and better at 32 than at 16;
- * Filament's 128 is flagged only when studied; bad requests are refused. */
-#include "studies/dfg.h"
+/* The DFG study (dfg/dfg_study.h): the DFG section's numbers without its
+ * prose, on small tables. The written table's files exist and its albedo E
+ * is a fraction; the lookup is scored per size, worse over the whole square
+ * (clamped borders) than between the texel centres, and better at 32 than
+ * at 16; Filament's 128 is flagged only when studied; bad requests are
+ * refused. */
+#include "dfg/dfg_study.h"
 #include "tests/check.h"
 #include "tests/test_files.h"
 
@@ -55,5 +56,5 @@ int main(void)
     test_small_study();
     test_bad_requests();
     test_default_requests();
-    return check_report("studies_dfg");
+    return check_report("dfg_study");
 }

@@ -1,4 +1,4 @@
-#include "luts/dfg_lut_writers.h"
+#include "dfg/dfg_lut_writers.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,4 +1,5 @@
-/* The split-sum DFG LUT (luts/dfg_lut.c) against mathematics:
+/* The split-sum DFG LUT (luts/dfg_lut.c; its interpolation study,
+ * dfg/dfg_interpolation.c) against mathematics:
  *  - Monte Carlo: an independent estimator (GGX VNDF sampling, core/ggx.h,
  *    Owen-scrambled Sobol' points, fixed seed) agrees with the quadrature
  *    within 5 of its own standard errors, and the quadrature's error
@@ -33,6 +34,7 @@
 #include "core/quadrature.h"
 #include "core/sobol.h"
 #include "core/vec3.h"
+#include "dfg/dfg_interpolation.h"
 #include "luts/dfg_lut.h"
 #include "tests/check.h"
 
@@ -294,5 +296,5 @@ int main(void)
     test_kulla_conty_furnace(&lut, table_error);
     test_sizes_and_threads(&lut);
     dfg_lut_free(&lut);
-    return check_report("test_dfg_lut");
+    return check_report("dfg_lut");
 }

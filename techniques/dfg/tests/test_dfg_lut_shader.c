@@ -10,13 +10,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "dfg/dfg_lut_writers.h"
 #include "luts/dfg_lut.h"
-#include "luts/dfg_lut_writers.h"
 #include "luts/table_lookup.h"
 #include "tests/check.h"
 #include "tests/source_text.h"
 
-/* ---- The shaders' half of the .inc as C: the shaders' dialect (luts/dfg_lut_writers.c)
+/* ---- The shaders' half of the .inc as C: the shaders' dialect (dfg/dfg_lut_writers.c)
  * with the table DFG_LUT a global array, one channel at a time ---- */
 #define DFG_LUT_SIZE 7
 static float DFG_LUT[DFG_LUT_SIZE * DFG_LUT_SIZE];
@@ -156,7 +156,8 @@ static int shader_compiles(const dfg_lut *lut, int hlsl)
  * luts/table_lookup.inc may contain. */
 static void test_no_second_copy(void)
 {
-    static const char *const files[] = {"luts/dfg_lut.c", "luts/dfg_lut_writers.c"};
+    static const char *const files[] = {"luts/dfg_lut.c", "techniques/dfg/dfg_lut_writers.c",
+                                         "techniques/dfg/dfg_interpolation.c"};
     static const char *const prints[] = {"lerp", "floor(", "floorf(", "DFGAxis", "i0 ="};
     check_no_file_spells(files, sizeof files / sizeof files[0], prints, sizeof prints / sizeof prints[0]);
 }
@@ -167,12 +168,12 @@ int main(void)
     arbitrary_table(&lut);
     CHECK(lut.data != NULL);
     if (!lut.data)
-        return check_report("test_dfg_lut_shader");
+        return check_report("dfg_lut_shader");
     test_embedded_text_is_the_file();
     test_lookup_matches_previous_and_shader(&lut);
     CHECK_MSG(shader_compiles(&lut, 1), "generated HLSL does not compile (see the .log beside it)");
     CHECK_MSG(shader_compiles(&lut, 0), "generated GLSL does not compile (see the .log beside it)");
     test_no_second_copy();
     dfg_lut_free(&lut);
-    return check_report("test_dfg_lut_shader");
+    return check_report("dfg_lut_shader");
 }

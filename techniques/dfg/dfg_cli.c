@@ -1,13 +1,13 @@
 /* The split-sum DFG (environment BRDF) LUT of Karis 2013: `gtlab lut dfg`
- * and its section of `gtlab all` (studies/dfg.h), beside Filament's 128^2. */
+ * and its section of `gtlab all` (dfg/dfg_study.h), beside Filament's 128^2. */
 #include <stdio.h>
 
 #include "cli/cli.h"
 #include "cli/cli_options.h"
-#include "report/dfg_section.h"
 #include "cli/technique.h"
-#include "studies/dfg.h"
 #include "core/threads.h"
+#include "dfg/dfg_section.h"
+#include "dfg/dfg_study.h"
 
 static int lut_dfg(int argc, char **argv)
 {

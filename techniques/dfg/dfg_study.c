@@ -1,11 +1,11 @@
-#include "studies/dfg.h"
+#include "dfg/dfg_study.h"
 
 #include <stdio.h>
 #include <string.h>
 
 #include "core/atomic_file.h"
 #include "core/progress.h"
-#include "luts/dfg_lut_writers.h"
+#include "dfg/dfg_lut_writers.h"
 
 dfg_request dfg_default_request(study_quality quality)
 {

@@ -1,7 +1,7 @@
-/* The split-sum DFG LUT's section of `gtlab all` (studies/dfg.h): the
+/* The split-sum DFG LUT's section of `gtlab all` (dfg/dfg_study.h): the
  * table's accuracy, and its bilinear lookup's error against the size beside
  * Filament's 128^2. */
-#include "report/dfg_section.h"
+#include "dfg/dfg_section.h"
 
 #include <stdio.h>
 

@@ -13,8 +13,8 @@
  *                `vec3 DFG(float nv, float roughness)`.
  * Row 0 of the images is the smoothest roughness. All written atomically;
  * the same table gives byte-identical files. */
-#ifndef GTLAB_LUTS_DFG_LUT_WRITERS_H
-#define GTLAB_LUTS_DFG_LUT_WRITERS_H
+#ifndef GTLAB_DFG_LUT_WRITERS_H
+#define GTLAB_DFG_LUT_WRITERS_H
 
 #include "core/error.h"
 #include "luts/dfg_lut.h"

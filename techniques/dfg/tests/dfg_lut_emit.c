@@ -3,7 +3,7 @@
 #include <string.h>
 
 #include "core/exr_io.h"
-#include "luts/dfg_lut_writers.h"
+#include "dfg/dfg_lut_writers.h"
 #include "tests/check.h"
 
 static void check_exr_round_trip(const char *dir, const dfg_lut *lut)

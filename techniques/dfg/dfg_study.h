@@ -7,10 +7,10 @@
  * Writes <output>/luts/dfg_<N>.{exr,png,h,hlsl,glsl} and <output>/luts/dfg_
  * interpolation.dat (size, then max and RMS error of A, B, E over the square
  * and between the texel centres), the data of the report's plot. */
-#ifndef GTLAB_STUDIES_DFG_H
-#define GTLAB_STUDIES_DFG_H
+#ifndef GTLAB_DFG_STUDY_H
+#define GTLAB_DFG_STUDY_H
 
-#include "luts/dfg_lut.h"
+#include "dfg/dfg_interpolation.h"
 #include "studies/study.h"
 
 #define DFG_LUTS_DIR "luts"
