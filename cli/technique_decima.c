@@ -1,7 +1,7 @@
 /* Decima (Advances in Real-Time Rendering 2017) on the command line. The height fog (Kojima; issue 16): its
  * atmosphere LUTs (`gtlab lut|bench atmosphere`, stage atmosphere; studies/atmosphere_luts.h), the analytic fog
  * (`gtlab approx height-fog`, `gtlab bench fog`, stage fog; studies/height_fog.h; references: `gtlab render fog`).
- * Anti-aliasing (issue 19): `gtlab approx|bench aa`, stage aa (studies/anti_aliasing.h, aa_commands.h). */
+ * Anti-aliasing (issue 19) is in techniques/anti_aliasing/. */
 #include <stdio.h>
 
 #include "cli/cli.h"
@@ -9,12 +9,8 @@
 #include "cli/technique.h"
 #include "core/exr_io.h"
 #include "core/threads.h"
-#include "report/anti_aliasing_section.h"
 #include "report/atmosphere_section.h"
 #include "report/height_fog_section.h"
-#include "core/pixel_filter.h"
-#include "studies/aa_commands.h"
-#include "studies/anti_aliasing.h"
 #include "studies/atmosphere_luts.h"
 #include "studies/height_fog.h"
 
@@ -164,69 +160,3 @@ const technique technique_fog = {.name = "fog",
                         "the Decima talk's analytic height fog (published or corrected)"}, {0}},
                     [VERB_BENCH] = (const cli_subcommand[]){{"fog", bench_fog, "height fog: reference rays/s, analytic ns/pixel"}, {0}}},
     .stages = (const all_stage[]){{"fog", "height fog", all_stage_fog, HEIGHT_FOG_DIR, NULL}, {0}}};
-
-GTLAB_STUDY_STAGE(all_stage_aa, aa, aa_section)
-
-static int approx_aa(int argc, char **argv)
-{
-    static const cli_option options[] = {
-        CLI_CHOICE("technique", "T", aa_technique_short_name, AA_T_TECHNIQUES, "none, fxaa, taa, edge-taa, checkerboard"),
-        CLI_STRING("scene", "S", "builtin:NAME or a glTF file"), CLI_INT32("frames", "N", 1, 100000, "frames"),
-        CLI_INT32("threads", "T", 1, 1024, "worker threads; the result does not depend on it"), CLI_OUTPUT_DIR, CLI_END};
-    static const cli_command command = {"approx aa", "An AA technique over 384x288 frames of a pan (4 cm, 0.25 deg a "
-        "frame): DIR/<technique>_NNN.exr, .png\n(display values; studies/aa_commands.h).", options, NULL, NULL};
-    aa_frames_request rq = {"builtin:aa-thin", 384, 288, 8, {0.04f, 0.0f, 0.0f}, 0.25f, 3, NULL, (int)threads_default(),
-                            0, 0};
-    int status;
-    gt_error e;
-    if (cli_options_parse(&command, (void *[]){&rq.technique, &rq.scene, &rq.frames, &rq.threads, &rq.dir}, argc, argv,
-                          &status) != 0 || (status = cli_make_output_dir(rq.dir)) != 0)
-        return status;
-    return aa_approx(&rq, &e) == 0 ? EXIT_OK : cli_fail(&e);
-}
-
-static const char *truth_filter_name(int i) { return pixel_filter_name(i); }
-
-static int render_frames(int argc, char **argv)
-{
-    static const cli_option options[] = {
-        CLI_STRING("scene", "S", "builtin:NAME or a glTF file (default builtin:aa-thin)"),
-        CLI_INT32("width", "W", 8, 8192, "frame width"), CLI_INT32("height", "H", 8, 8192, "frame height"),
-        CLI_INT32("frames", "N", 1, 100000, "frames"),
-        CLI_CHOICE("jitter", "T", aa_technique_short_name, AA_T_TECHNIQUES, "whose sub-pixel jitter: none (centres), "
-                   "taa (Halton 2,3),\nedge-taa (edge midpoints), checkerboard (corners); fxaa = none"),
-        CLI_INT32("truth", "S", 0, 16, "also each frame's truth, S x S stratified samples a pixel\n(4: 16x, 8: 64x; "
-                  "0: none)"),
-        CLI_CHOICE("filter", "F", truth_filter_name, PIXEL_FILTER_COUNT, "the truth's pixel filter: box or "
-                   "blackman-harris"),
-        CLI_INT32("threads", "T", 1, 1024, "worker threads; the result does not depend on it"), CLI_OUTPUT_DIR, CLI_END};
-    static const cli_command command = {"render frames", "Shaded frames (sun + sky, shadow rays) of a pan, 4 cm and 0.25 "
-        "deg a frame: DIR/frame_NNN.exr with\nframe.R/G/B (linear), depth.Z, motion.X/Y, disoccluded.V and, with "
-        "--truth, truth.R/G/B\n(studies/aa_commands.h).", options, NULL, NULL};
-    aa_frames_request rq = {"builtin:aa-thin", 384, 288, 8, {0.04f, 0.0f, 0.0f}, 0.25f, 0, NULL, (int)threads_default(),
-                            0, PIXEL_FILTER_BLACKMAN_HARRIS};
-    int status;
-    gt_error e;
-    if (cli_options_parse(&command, (void *[]){&rq.scene, &rq.width, &rq.height, &rq.frames, &rq.technique,
-                                              &rq.truth_strata, &rq.truth_filter, &rq.threads, &rq.dir},
-                          argc, argv, &status) != 0 || (status = cli_make_output_dir(rq.dir)) != 0)
-        return status;
-    return aa_frames_write(&rq, &e) == 0 ? EXIT_OK : cli_fail(&e);
-}
-
-static int bench_aa(int argc, char **argv)
-{
-    static const cli_command command = {"bench aa", "ms per 1920x1080 frame per AA technique, in C.", threads_only, NULL, NULL};
-    long threads = threads_default();
-    int status;
-    gt_error e;
-    if (cli_options_parse(&command, (void *[]){&threads}, argc, argv, &status) != 0)
-        return status;
-    return aa_bench_print(stdout, (int)threads, &e) == 0 ? EXIT_OK : cli_fail(&e);
-}
-
-const technique technique_anti_aliasing = {.name = "aa",
-    .subcommands = {[VERB_APPROX] = (const cli_subcommand[]){{"aa", approx_aa, "anti-aliasing over frames of a pan"}, {0}},
-                    [VERB_RENDER] = CLI_SUBCOMMANDS({"frames", render_frames, "shaded frames of a pan with motion, and their truth"}),
-                    [VERB_BENCH] = (const cli_subcommand[]){{"aa", bench_aa, "anti-aliasing: ms per 1080p frame"}, {0}}},
-    .stages = (const all_stage[]){{"aa", "anti-aliasing against supersampled truth", all_stage_aa, AA_DIR, NULL}, {0}}};

@@ -204,7 +204,7 @@
 #define CH_ATMOSPHERE_SUN {"sun.R", "sun.G", "sun.B"}
 #define CH_ATMOSPHERE_SKY {"sky.R", "sky.G", "sky.B"}
 
-/* Frames for temporal anti-aliasing (`gtlab render frames`, raytracer/frames_render.h). */
+/* Frames for temporal anti-aliasing (`gtlab render frames`, techniques/anti_aliasing/frames_render.h). */
 #define CH_FRAME_RGB {"frame.R", "frame.G", "frame.B"} /* linear radiance of the jittered sample */
 #define CH_MOTION_X "motion.X"           /* previous image position minus this one, pixels */
 #define CH_MOTION_Y "motion.Y"

@@ -25,10 +25,10 @@
  *      fetched from outside the image (settings.reject = 0 accepts all).
  * A static scene is therefore exact after two frames: every pixel the mean
  * of its 4 corners (without FXAA, and with rejection where history passes). */
-#ifndef GTLAB_REALTIME_CHECKERBOARD_H
-#define GTLAB_REALTIME_CHECKERBOARD_H
+#ifndef GTLAB_ANTI_ALIASING_CHECKERBOARD_H
+#define GTLAB_ANTI_ALIASING_CHECKERBOARD_H
 
-#include "realtime/fxaa.h"
+#include "anti_aliasing/fxaa.h"
 
 typedef struct {
     int fxaa;   /* 1: FXAA on the rotated grid (the talk) */

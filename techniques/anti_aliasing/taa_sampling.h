@@ -5,8 +5,8 @@
  * pixels with pixel (i, j)'s centre at (i + 0.5, j + 0.5); motion vectors
  * (2 floats a pixel) give the previous frame's position of the surface a
  * pixel sees minus its own position, so history is read at centre + motion. */
-#ifndef GTLAB_REALTIME_TAA_SAMPLING_H
-#define GTLAB_REALTIME_TAA_SAMPLING_H
+#ifndef GTLAB_ANTI_ALIASING_TAA_SAMPLING_H
+#define GTLAB_ANTI_ALIASING_TAA_SAMPLING_H
 
 /* The radical inverse of index in base (2 or 3: Halton 1964). */
 double taa_radical_inverse(unsigned index, unsigned base);

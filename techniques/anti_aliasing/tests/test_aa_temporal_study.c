@@ -15,7 +15,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "studies/aa_temporal.h"
+#include "anti_aliasing/aa_temporal_study.h"
 #include "tests/check.h"
 
 static aa_temporal_result run(int threads)
@@ -67,5 +67,5 @@ int main(void)
                           "%s %s - %s: %g vs %g", x->path, x->technique, y->technique, d->mean, x->dssim - y->dssim);
                 CHECK(t == u ? d->mean == 0.0 && d->se == 0.0 : d->se >= 0.0 && d->blocks > 1);
             }
-    return check_report("studies_aa_temporal");
+    return check_report("test_aa_temporal_study");
 }

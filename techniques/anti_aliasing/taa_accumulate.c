@@ -1,10 +1,10 @@
 /* Conventional accumulating TAA (taa_accumulate.h). */
-#include "realtime/taa_accumulate.h"
+#include "anti_aliasing/taa_accumulate.h"
 
 #include <math.h>
 #include <stddef.h>
 
-#include "realtime/taa_sampling.h"
+#include "anti_aliasing/taa_sampling.h"
 
 taa_accumulate_settings taa_accumulate_default_settings(void)
 {

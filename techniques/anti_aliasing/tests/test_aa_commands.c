@@ -1,4 +1,4 @@
-/* `gtlab render frames` and `gtlab approx aa` (studies/aa_commands.h) on a
+/* `gtlab render frames` and `gtlab approx aa` (anti_aliasing/aa_commands.h) on a
  * tiny pan of builtin:aa-thin: the frames hold the schema's channels, frame
  * 0 has no motion, later frames do, and the jitter of the edge TAA's frames
  * alternates in the header; with a truth, its channels and header are
@@ -12,10 +12,10 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "anti_aliasing/aa_commands.h"
 #include "core/exr_io.h"
 #include "core/pixel_filter.h"
 #include "core/reference_schema.h"
-#include "studies/aa_commands.h"
 #include "tests/check.h"
 
 static void check_raw_frames(const char *dir)
@@ -133,5 +133,5 @@ int main(void)
     for (int t = 0; t < AA_T_TECHNIQUES; ++t)
         CHECK(aa_technique_parse(aa_technique_short_name(t)) == t);
     CHECK(aa_technique_parse("smaa") == -1);
-    return check_report("studies_aa_commands");
+    return check_report("test_aa_commands");
 }

@@ -1,11 +1,11 @@
 /* The anti-aliasing section (anti_aliasing_section.h). */
-#include "report/anti_aliasing_section.h"
+#include "anti_aliasing/anti_aliasing_section.h"
 #include "report/claim_thresholds.h"
 
 #include <math.h>
 #include <string.h>
 
-#include "report/aa_temporal_section.h"
+#include "anti_aliasing/aa_temporal_section.h"
 #include "report/report_table.h"
 
 static const report_column truth_columns[] = {
@@ -76,7 +76,7 @@ int aa_section(report_context *ctx, const aa_result *r, gt_error *e)
                      "Shaded frames of built-in scenes (%dx%d; albedo x (sun with shadow rays + sky), Embree primary "
                      "rays, raytracer/shaded_frame.h), their truth at 64 stratified samples per pixel resolved with "
                      "a box and a Blackman-Harris filter (radius 1.5 px), and what a renderer does with one sample "
-                     "per pixel: nothing, FXAA 3.11 (quality preset 12, realtime/fxaa.h), or 2x2 supersampling for "
+                     "per pixel: nothing, FXAA 3.11 (quality preset 12, anti_aliasing/fxaa.h), or 2x2 supersampling for "
                      "comparison. Scores on display values sRGB(L/(1+L)): RMSE over RGB, DSSIM of the luma. The "
                      "truth's own error, 16 against 64 samples per pixel:",
                      r->request.width, r->request.height);

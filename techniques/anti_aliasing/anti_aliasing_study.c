@@ -1,17 +1,17 @@
-/* Anti-aliasing against supersampled truth (studies/anti_aliasing.h). */
-#include "studies/anti_aliasing.h"
+/* Anti-aliasing against supersampled truth (anti_aliasing/anti_aliasing_study.h). */
+#include "anti_aliasing/anti_aliasing_study.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "anti_aliasing/fxaa.h"
 #include "core/image_io.h"
 #include "luts/color_grade.h" /* srgb_to_linear */
 #include "metrics/image_error.h"
 #include "metrics/ssim.h"
 #include "raytracer/shaded_frame.h"
-#include "realtime/fxaa.h"
 
 static const char *const technique_names[AA_TECHNIQUES] = {"no AA (1 sample)", "FXAA 3.11", "SSAA 2x2 (box)"};
 

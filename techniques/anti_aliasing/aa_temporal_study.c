@@ -1,24 +1,24 @@
-/* Temporal anti-aliasing against supersampled truth (studies/aa_temporal.h). */
-#include "studies/aa_temporal.h"
+/* Temporal anti-aliasing against supersampled truth (anti_aliasing/aa_temporal_study.h). */
+#include "anti_aliasing/aa_temporal_study.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "anti_aliasing/anti_aliasing_study.h" /* AA_DIR */
+#include "anti_aliasing/checkerboard.h"
+#include "anti_aliasing/frames_render.h"
+#include "anti_aliasing/fxaa.h"
+#include "anti_aliasing/taa_accumulate.h"
+#include "anti_aliasing/taa_edge.h"
+#include "anti_aliasing/taa_sampling.h"
 #include "core/image_io.h"
-#include "core/progress.h"
 #include "core/pixel_filter.h"
+#include "core/progress.h"
 #include "luts/color_grade.h" /* srgb_to_linear, linear_to_srgb */
 #include "metrics/ssim.h"
-#include "raytracer/frames_render.h"
-#include "realtime/checkerboard.h"
-#include "realtime/fxaa.h"
-#include "realtime/taa_accumulate.h"
-#include "realtime/taa_edge.h"
-#include "realtime/taa_sampling.h"
 #include "scene/camera_path.h"
-#include "studies/anti_aliasing.h" /* AA_DIR */
 
 enum { T_NONE, T_FXAA, T_TAA, T_EDGE, T_CHECKER };
 enum { IN_PLAIN, IN_HALTON, IN_EDGE, IN_CORNER, INPUTS };

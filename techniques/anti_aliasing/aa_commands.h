@@ -1,5 +1,6 @@
 /* What `gtlab render frames`, `gtlab approx aa` and `gtlab bench aa` run
- * (issue 19), kept out of cli/:
+ * (issue 19), the bodies of the command-line face (anti_aliasing_cli.c), in
+ * the study part so that tests reach them:
  *   aa_frames_write   frames of a scene along a camera path, one EXR each
  *                     (linear colour, depth, motion, disocclusion; names from
  *                     core/reference_schema.h), with a technique's jitter,
@@ -9,13 +10,13 @@
  *   aa_approx         a technique over those frames, one display PNG and EXR
  *                     (display values) per frame;
  *   aa_bench          milliseconds per 1920 x 1080 frame of each technique in C. */
-#ifndef GTLAB_STUDIES_AA_COMMANDS_H
-#define GTLAB_STUDIES_AA_COMMANDS_H
+#ifndef GTLAB_ANTI_ALIASING_AA_COMMANDS_H
+#define GTLAB_ANTI_ALIASING_AA_COMMANDS_H
 
 #include <stdio.h>
 
+#include "anti_aliasing/aa_temporal_study.h"
 #include "core/error.h"
-#include "studies/aa_temporal.h"
 
 enum { AA_FRAMES_TRUTH_SEED = 1 }; /* the truth's strata jitter: the same every frame */
 

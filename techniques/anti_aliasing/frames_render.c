@@ -1,5 +1,5 @@
 /* Frames with depth and motion vectors (frames_render.h). */
-#include "raytracer/frames_render.h"
+#include "anti_aliasing/frames_render.h"
 
 #include <math.h>
 #include <stdlib.h>

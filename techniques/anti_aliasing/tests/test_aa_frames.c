@@ -1,12 +1,12 @@
 /* The anti-aliasing frames (issue 19): builtin:aa-thin's alpha-tested cards
  * (glTF alphaMode MASK through Embree's filter functions, and through a glb
  * round trip), camera_project as camera_ray's inverse, and the motion
- * vectors of raytracer/frames_render.h checked by tracing the previous
+ * vectors of anti_aliasing/frames_render.h checked by tracing the previous
  * camera's ray at the reprojected position; thread independence. */
 #include <stdio.h>
 #include <string.h>
 
-#include "raytracer/frames_render.h"
+#include "anti_aliasing/frames_render.h"
 #include "scene/builtin_scenes.h"
 #include "scene/camera_path.h"
 #include "scene/gltf_reader.h"

@@ -2,16 +2,16 @@
  * frames along camera paths (scene/camera_path.h) of scenes with thin
  * geometry, alpha-tested cards and high-frequency texture
  * (builtin:aa-thin), rendered per technique with its own jitter and exact
- * motion vectors (raytracer/frames_render.h), and the truth of every frame
+ * motion vectors (anti_aliasing/frames_render.h), and the truth of every frame
  * at 16 and 64 stratified samples per pixel, Blackman-Harris resolve (the
  * same jittered strata every frame, so a static truth does not change). On
  * display values (aa_display):
  *   none          the unjittered frame;
  *   FXAA 3.11     on it;
- *   TAA           the conventional accumulating TAA (realtime/taa_accumulate.h),
+ *   TAA           the conventional accumulating TAA (anti_aliasing/taa_accumulate.h),
  *                 Halton (2, 3) jitter of period 8;
- *   edge TAA      the talk's 2-frame edge-sample TAA (realtime/taa_edge.h);
- *   checkerboard  the talk's corner checkerboard (realtime/checkerboard.h),
+ *   edge TAA      the talk's 2-frame edge-sample TAA (anti_aliasing/taa_edge.h);
+ *   checkerboard  the talk's corner checkerboard (anti_aliasing/checkerboard.h),
  *                 half the samples a frame;
  *   checkerboard 2x  the same at twice the width and height (the talk's
  *                 2160p checkerboard beside its 1080p TAA: twice the
@@ -31,8 +31,8 @@
  * same path with a standard error: the difference of the two RMS values,
  * its error from the per-pixel sums linearised (delta method) and
  * clustered over 8x8-pixel blocks (metrics/cluster_mean.h). */
-#ifndef GTLAB_STUDIES_AA_TEMPORAL_H
-#define GTLAB_STUDIES_AA_TEMPORAL_H
+#ifndef GTLAB_ANTI_ALIASING_AA_TEMPORAL_STUDY_H
+#define GTLAB_ANTI_ALIASING_AA_TEMPORAL_STUDY_H
 
 #include "core/error.h"
 #include "metrics/cluster_mean.h"

@@ -13,8 +13,8 @@
  *             ray from the previous camera stops before 1 - 1e-4 of the
  *             distance to the point); 0 for the sky.
  * Everything is computed from rays, so it is exact to float rounding. */
-#ifndef GTLAB_RAYTRACER_FRAMES_RENDER_H
-#define GTLAB_RAYTRACER_FRAMES_RENDER_H
+#ifndef GTLAB_ANTI_ALIASING_FRAMES_RENDER_H
+#define GTLAB_ANTI_ALIASING_FRAMES_RENDER_H
 
 #include "raytracer/shaded_frame.h"
 

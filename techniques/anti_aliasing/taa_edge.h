@@ -4,7 +4,7 @@
  * samples on pixel edges (taa_edge_jitter: odd frames at (i + 1, j + 0.5),
  * horizontally between pixel centres, even frames at (i + 0.5, j + 1)),
  * then
- *   1. FXAA 3.11 (realtime/fxaa.h) on those samples, as an ordinary image;
+ *   1. FXAA 3.11 (anti_aliasing/fxaa.h) on those samples, as an ordinary image;
  *   2. a 1-D resample from the edges to the pixel centres along the frame's
  *      direction, the centre lying halfway between samples b and c with a
  *      and d one further out:
@@ -25,10 +25,10 @@
  *      traditional" neighbourhood rejection; the box test is our choice)
  *      and the position is inside the image: out = (S + S_prev) / 2, the
  *      4 edge samples; otherwise out = P, the current frame unsharpened. */
-#ifndef GTLAB_REALTIME_TAA_EDGE_H
-#define GTLAB_REALTIME_TAA_EDGE_H
+#ifndef GTLAB_ANTI_ALIASING_TAA_EDGE_H
+#define GTLAB_ANTI_ALIASING_TAA_EDGE_H
 
-#include "realtime/fxaa.h"
+#include "anti_aliasing/fxaa.h"
 
 typedef struct {
     double sharpen; /* w0, 1/16 */

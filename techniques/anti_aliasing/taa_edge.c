@@ -1,11 +1,11 @@
 /* The talk's 2-frame edge-sample TAA (taa_edge.h). */
-#include "realtime/taa_edge.h"
+#include "anti_aliasing/taa_edge.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "realtime/taa_sampling.h"
+#include "anti_aliasing/taa_sampling.h"
 
 edge_taa_settings edge_taa_default_settings(void)
 {

@@ -1,5 +1,5 @@
 /* Shared temporal anti-aliasing helpers (taa_sampling.h). */
-#include "realtime/taa_sampling.h"
+#include "anti_aliasing/taa_sampling.h"
 
 #include <math.h>
 #include <stddef.h>

@@ -2,7 +2,7 @@
  * shaded frames of built-in scenes (raytracer/shaded_frame.h), the truth at
  * 16 (4 x 4) and 64 (8 x 8) stratified samples per pixel resolved with box
  * and Blackman-Harris filters (core/pixel_filter.h), and the techniques run
- * on one sample per pixel: none, FXAA 3.11 (realtime/fxaa.h), and 2 x 2
+ * on one sample per pixel: none, FXAA 3.11 (anti_aliasing/fxaa.h), and 2 x 2
  * supersampling as a point of comparison. Everything is scored on display
  * values, d = sRGB(L / (1 + L)) (Reinhard, then the sRGB encode): the
  * truth is the filtered radiance, then displayed. Scores: RMSE over the RGB
@@ -10,11 +10,11 @@
  * the 64-sample truth with the same filter; the 16-sample truth's own RMSE
  * against the 64-sample one bounds the truth's error. Writes previews of the
  * first scene to <output>/aa/. */
-#ifndef GTLAB_STUDIES_ANTI_ALIASING_H
-#define GTLAB_STUDIES_ANTI_ALIASING_H
+#ifndef GTLAB_ANTI_ALIASING_ANTI_ALIASING_STUDY_H
+#define GTLAB_ANTI_ALIASING_ANTI_ALIASING_STUDY_H
 
+#include "anti_aliasing/aa_temporal_study.h"
 #include "core/pixel_filter.h"
-#include "studies/aa_temporal.h"
 #include "studies/study.h"
 
 #define AA_DIR "aa"
@@ -26,7 +26,7 @@ typedef struct {
     const char *scenes[AA_MAX_SCENES];
     int scene_count;
     unsigned seed;
-    aa_temporal_request temporal; /* the second part (studies/aa_temporal.h); frames 0: skipped */
+    aa_temporal_request temporal; /* the second part (anti_aliasing/aa_temporal_study.h); frames 0: skipped */
 } aa_request;
 
 typedef struct {

@@ -1,19 +1,19 @@
 /* The anti-aliasing commands' work (aa_commands.h). */
-#include "studies/aa_commands.h"
+#include "anti_aliasing/aa_commands.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "anti_aliasing/frames_render.h"
+#include "anti_aliasing/taa_sampling.h"
 #include "core/exr_io.h"
 #include "core/image_io.h"
+#include "core/pixel_filter.h"
 #include "core/reference_schema.h"
 #include "luts/color_grade.h" /* srgb_to_linear */
-#include "core/pixel_filter.h"
-#include "raytracer/frames_render.h"
 #include "raytracer/shaded_frame.h"
-#include "realtime/taa_sampling.h"
 #include "scene/camera_path.h"
 
 static const char *const names[AA_T_TECHNIQUES] = {"none", "fxaa", "taa", "edge-taa", "checkerboard"};

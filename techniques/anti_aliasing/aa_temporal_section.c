@@ -1,5 +1,5 @@
 /* The temporal anti-aliasing part of the report (aa_temporal_section.h). */
-#include "report/aa_temporal_section.h"
+#include "anti_aliasing/aa_temporal_section.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -219,14 +219,14 @@ void aa_temporal_section(report_context *ctx, cJSON *json, const aa_temporal_res
                      "%d frames of %dx%d along a static and a panning camera (4 cm and 0.25 deg a frame) over "
                      "builtin:aa-thin (a wire fence of 1 cm wires, grass blades, alpha-tested foliage cards, a "
                      "5 cm checker texture), exact motion vectors and disocclusion from the rays "
-                     "(raytracer/frames_render.h). Scores are means over frames %d on; flicker is the RMS of each "
+                     "(anti_aliasing/frames_render.h). Scores are means over frames %d on; flicker is the RMS of each "
                      "frame-to-frame change minus the truth's own; ghosting the RMSE over pixels disoccluded since "
                      "the previous frame. The checkerboard renders half the samples a frame. The talk compares its "
                      "2160p checkerboard with its 1080p TAA: the row \"checkerboard 2x\" renders the checkerboard at "
                      "%dx%d (its own corners, history and rejection there: twice the samples a frame per screen area "
                      "of the edge TAA) and shows it on the %dx%d display by a 2x2 box, scored against the %dx%d "
                      "truth. Differences of RMSE, flicker and ghosting between rows are paired per pixel with "
-                     "delta-method standard errors over 8x8-pixel blocks (studies/aa_temporal.h).",
+                     "delta-method standard errors over 8x8-pixel blocks (anti_aliasing/aa_temporal_study.h).",
                      r->request.frames, r->request.width, r->request.height, AA_T_WARMUP, 2 * r->request.width,
                      2 * r->request.height, r->request.width, r->request.height, r->request.width, r->request.height);
     cJSON *t = cJSON_AddObjectToObject(json, "temporal");

@@ -1,4 +1,4 @@
-/* FXAA 3.11 (realtime/fxaa.h) against what it must do:
+/* FXAA 3.11 (anti_aliasing/fxaa.h) against what it must do:
  * - a constant image comes back unchanged (no pixel passes the edge test);
  * - every output is a convex combination of input texels: within the
  *   input's range per channel, on a random image;
@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "realtime/fxaa.h"
+#include "anti_aliasing/fxaa.h"
 #include "tests/check.h"
 
 enum { W = 40, H = 32 };

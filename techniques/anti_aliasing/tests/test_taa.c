@@ -6,10 +6,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "realtime/checkerboard.h"
-#include "realtime/taa_accumulate.h"
-#include "realtime/taa_edge.h"
-#include "realtime/taa_sampling.h"
+#include "anti_aliasing/checkerboard.h"
+#include "anti_aliasing/taa_accumulate.h"
+#include "anti_aliasing/taa_edge.h"
+#include "anti_aliasing/taa_sampling.h"
 #include "tests/check.h"
 
 enum { W = 40, H = 30, PX = W * H };

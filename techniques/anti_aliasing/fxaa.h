@@ -16,8 +16,8 @@
  * subpixel term (the 3 x 3 low-pass against the centre, smoothed as
  * (3 - 2c) c^2, squared, times `subpix`) sets the least shift. The result is
  * the bilinear colour at the shifted position. */
-#ifndef GTLAB_REALTIME_FXAA_H
-#define GTLAB_REALTIME_FXAA_H
+#ifndef GTLAB_ANTI_ALIASING_FXAA_H
+#define GTLAB_ANTI_ALIASING_FXAA_H
 
 typedef struct {
     double subpix;             /* fxaaQualitySubpix, default 0.75 */

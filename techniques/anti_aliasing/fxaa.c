@@ -1,5 +1,5 @@
 /* FXAA 3.11, quality preset 12 (fxaa.h). */
-#include "realtime/fxaa.h"
+#include "anti_aliasing/fxaa.h"
 
 #include <math.h>
 #include <stdlib.h>

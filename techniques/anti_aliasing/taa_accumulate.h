@@ -10,8 +10,8 @@
  * jittered sample taken as the pixel's value (no unjittering filter). With
  * no history (first frame) or history from outside the previous image the
  * output is I. alpha 0.1 is the usual weight. */
-#ifndef GTLAB_REALTIME_TAA_ACCUMULATE_H
-#define GTLAB_REALTIME_TAA_ACCUMULATE_H
+#ifndef GTLAB_ANTI_ALIASING_TAA_ACCUMULATE_H
+#define GTLAB_ANTI_ALIASING_TAA_ACCUMULATE_H
 
 typedef struct {
     double alpha; /* weight of the current frame, 0.1 */

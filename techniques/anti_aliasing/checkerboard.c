@@ -1,10 +1,10 @@
 /* The talk's checkerboard rendering (checkerboard.h). */
-#include "realtime/checkerboard.h"
+#include "anti_aliasing/checkerboard.h"
 
 #include <stdlib.h>
 #include <string.h>
 
-#include "realtime/taa_sampling.h"
+#include "anti_aliasing/taa_sampling.h"
 
 checkerboard_settings checkerboard_default_settings(void)
 {

@@ -7,7 +7,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "studies/anti_aliasing.h"
+#include "anti_aliasing/anti_aliasing_study.h"
 #include "tests/check.h"
 
 int main(void)
@@ -31,5 +31,5 @@ int main(void)
     }
     for (int i = 0; i < r.row_count; ++i)
         CHECK(isfinite(r.rows[i].rmse) && r.rows[i].rmse >= 0.0 && r.rows[i].dssim >= 0.0);
-    return check_report("studies_anti_aliasing");
+    return check_report("test_anti_aliasing_study");
 }
