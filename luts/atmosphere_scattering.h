@@ -102,7 +102,7 @@ double atmosphere_sky_mean_radiance(const atmosphere_solution *s, atmosphere_met
                                     double tol, double out[ATMOSPHERE_CHANNELS]);
 
 /* ---- A view ray with the sun at its true azimuth (the combination images,
- * studies/aerial_perspective.h) ----------------------------------------------
+ * height_fog/aerial_perspective_study.h) ----------------------------------------------
  * The tables drop the view-sun azimuth; a pixel has it. The segment
  * [0, length] of the ray from radius r with zenith cosine mu, the sun at
  * zenith cosine mu_s and at cosine nu to the ray (nu = mu mu_s +

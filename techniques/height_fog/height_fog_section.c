@@ -1,12 +1,12 @@
-/* The height fog's section of `gtlab all` (studies/height_fog.h). */
-#include "report/height_fog_section.h"
+/* The height fog's section of `gtlab all` (height_fog/height_fog_study.h). */
+#include "height_fog/height_fog_section.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "core/reference_schema.h"
-#include "report/aerial_perspective_section.h"
+#include "height_fog/aerial_perspective_section.h"
 #include "report/claim_thresholds.h"
 #include "report/claims_table.h"
 #include "report/report_table.h"
@@ -114,8 +114,9 @@ int height_fog_section(report_context *ctx, const height_fog_result *r, gt_error
     report_paragraph(ctx->doc,
                      "The talk's HeightFog() as published (its max(1e-2, ...) clamp, float), with the clamp fixed, "
                      "with the sun attenuated by the fog above each point (closed form), and with the ambient too "
-                     "(the upper hemisphere's sky through the fog above, 6-point rule; docs/decisions.md "
-                     "\"Height fog\"), against `gtlab render fog` on builtin:terrain (%dx%d, %d samples per pixel "
+                     "(the upper hemisphere's sky through the fog above, 6-point rule; "
+                     "techniques/height_fog/README.md, \"The sky attenuated\"), against `gtlab render fog` on "
+                     "builtin:terrain (%dx%d, %d samples per pixel "
                      "of volumetric path tracing: the truth, with the sun attenuated and shadowed and the sky "
                      "blocked by the terrain) and against single-scattering quadrature under the model's own "
                      "assumptions. fog.L is the light the fog scatters towards the camera; surfaces absorb. "
@@ -135,7 +136,7 @@ int height_fog_section(report_context *ctx, const height_fog_result *r, gt_error
     const height_fog_timing *cost = &r->analytic_cost;
     report_paragraph(ctx->doc, "Analytic model cost in C, one thread: %.1f ns per pixel published, %.1f clamp fixed, "
                                "%.1f sun attenuated, %.1f sky attenuated, one pixel at a time; the published model "
-                               "over rows of pixels, vectorised (realtime/height_fog_batch.c): %.1f ns (goal < 20 ns).",
+                               "over rows of pixels, vectorised (height_fog/height_fog_batch.c): %.1f ns (goal < 20 ns).",
                      cost->ns_per_pixel[0], cost->ns_per_pixel[1], cost->ns_per_pixel[2], cost->ns_per_pixel[3],
                      cost->published_batch_ns_per_pixel);
     const height_fog_case *dense = &r->cases[HEIGHT_FOG_SUNS];

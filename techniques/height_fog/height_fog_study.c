@@ -1,5 +1,5 @@
 /* The height fog study; see height_fog.h. */
-#include "studies/height_fog.h"
+#include "height_fog/height_fog_study.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -12,7 +12,7 @@
 #include "metrics/ssim.h"
 #include "raytracer/fog_integrator.h"
 #include "raytracer/reference_render.h"
-#include "realtime/height_fog.h"
+#include "height_fog/height_fog.h"
 
 static const char *const weathers[2] = {"sunny", "dense"};
 

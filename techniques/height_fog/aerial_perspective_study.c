@@ -1,5 +1,5 @@
 /* The combination images of the Decima height fog; see aerial_perspective.h. */
-#include "studies/aerial_perspective.h"
+#include "height_fog/aerial_perspective_study.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -9,7 +9,7 @@
 #include "core/progress.h"
 #include "raytracer/embree_scene.h"
 #include "raytracer/gbuffer.h"
-#include "studies/aerial_perspective_parts.h"
+#include "height_fog/aerial_perspective_parts.h"
 
 static const char *const weathers[2] = {"sunny", "dense"};
 

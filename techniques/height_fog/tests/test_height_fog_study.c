@@ -1,4 +1,4 @@
-/* The height fog study's numbers (studies/height_fog.h), no prose: on the
+/* The height fog study's numbers (height_fog/height_fog_study.h), no prose: on the
  * terrain every view ray goes down by far more than H/100, so the published
  * HeightFog() equals the single-scattering quadrature under its own
  * assumptions (sun unattenuated, no shadows) to float rounding; the regime
@@ -11,7 +11,7 @@
 
 #include "core/exr_io.h"
 #include "core/reference_schema.h"
-#include "studies/height_fog.h"
+#include "height_fog/height_fog_study.h"
 #include "tests/check.h"
 
 int main(void)
@@ -31,7 +31,7 @@ int main(void)
         CHECK(c->reference_mean_l > 0.0 && c->reference_mean_stderr > 0.0 && c->single_mean_l > 0.0);
         for (int m = 0; m < HEIGHT_FOG_MODELS; ++m)
             CHECK(isfinite(c->rmse_l[m]) && c->rmse_l[m] > 0.0 && isfinite(c->dssim_l[m]) && c->rmse_t[m] < 1e-4);
-        /* The ambient through the fog is the correction that matters in dense fog (docs/decisions.md). */
+        /* The ambient through the fog is the correction that matters in dense fog (techniques/height_fog/README.md). */
         CHECK(c->reference_noise_rms > 0.0 && c->reference_noise_rms < c->rmse_l[FOG_MODEL_PUBLISHED]);
         if (i >= HEIGHT_FOG_SUNS)
             CHECK_MSG(c->rmse_l[FOG_MODEL_SKY_ATTENUATED] < 0.5 * c->rmse_l[FOG_MODEL_SUN_ATTENUATED], "%g vs %g",
@@ -47,7 +47,7 @@ int main(void)
     CHECK(r.regimes[0].published_depth_error < 0.0051); /* down: exact, or the clamp's f(1e-2) where |dy| < H/100 */
     CHECK(fabs(r.regimes[3].published_depth_error - 0.005) < 1e-4); /* horizontal: f(1e-2) */
     CHECK(r.regimes[4].published_depth_error > 0.9);                /* up: most of the depth lost */
-    CHECK(r.aerial.case_count == 2); /* the combination images ran (tests/studies/test_aerial_perspective_study.c) */
+    CHECK(r.aerial.case_count == 2); /* the combination images ran (techniques/height_fog/tests/test_aerial_perspective_study.c) */
     for (int m = 0; m < HEIGHT_FOG_MODELS; ++m)
         CHECK(r.analytic_cost.ns_per_pixel[m] > 0.0 && r.analytic_cost.ns_per_pixel[m] < 1e4);
     CHECK(r.analytic_cost.published_batch_ns_per_pixel > 0.0 && r.analytic_cost.published_batch_ns_per_pixel < 1e4);

@@ -1,5 +1,5 @@
 /* The combination images' part of the height fog's section
- * (report/aerial_perspective_section.c) from a results struct made up here
+ * (height_fog/aerial_perspective_section.c) from a results struct made up here
  * (no study runs): summary.json carries the cases in "views" and
  * "fisheyes" exactly, its figure is the largest median relative error of
  * the published combination over the cases, and no claims row is added
@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "report/aerial_perspective_section.h"
+#include "height_fog/aerial_perspective_section.h"
 #include "report/claims_table.h"
 #include "tests/check.h"
 

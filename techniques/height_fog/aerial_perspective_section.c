@@ -1,5 +1,5 @@
 /* The combination images' part of the height fog's section (see the header). */
-#include "report/aerial_perspective_section.h"
+#include "height_fog/aerial_perspective_section.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -93,7 +93,7 @@ void aerial_perspective_section(report_context *ctx, cJSON *json, const char *di
                      "ray. Model: the talk's L_background from the in-scatter LUT (%d, %d, %d, %d) at the camera's "
                      "altitude where the ray misses the terrain, HeightFog() with the atmosphere's ground "
                      "coefficients, one fitted scale height and L_sun, L_sky from the LUTs on the terrain "
-                     "(docs/decisions.md, \"The combination images\"). %.1f s.",
+                     "(techniques/height_fog/README.md, \"The combination images\"). %.1f s.",
                      rq->width, rq->height, rq->fisheye, rq->fisheye, rq->tolerance,
                      r->case_count ? r->cases[0].reference_error : 0.0, rq->sizes.inscatter[0], rq->sizes.inscatter[1],
                      rq->sizes.inscatter[2], rq->sizes.inscatter[3], r->seconds);

@@ -1,14 +1,14 @@
-/* The combination images of the Decima height fog (studies/aerial_perspective.h):
+/* The combination images of the Decima height fog (height_fog/aerial_perspective_study.h):
  * the tables of the terrain views and the ground fisheyes, their images,
  * and a finding on the talk's "realistic aerial perspective" (no claims row:
  * the talk's claim is not numeric). Part of the height fog's section. */
-#ifndef GTLAB_REPORT_AERIAL_PERSPECTIVE_SECTION_H
-#define GTLAB_REPORT_AERIAL_PERSPECTIVE_SECTION_H
+#ifndef GTLAB_HEIGHT_FOG_AERIAL_PERSPECTIVE_SECTION_H
+#define GTLAB_HEIGHT_FOG_AERIAL_PERSPECTIVE_SECTION_H
 
 #include <cjson/cJSON.h>
 
 #include "report/report_context.h"
-#include "studies/aerial_perspective.h"
+#include "height_fog/aerial_perspective_study.h"
 
 /* The finding's figure: the largest over the cases of the median pixel's
  * relative error of the published combination on the terrain view, set

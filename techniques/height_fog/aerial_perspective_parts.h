@@ -1,10 +1,10 @@
-/* Internals of the combination images (studies/aerial_perspective.h): the
+/* Internals of the combination images (height_fog/aerial_perspective_study.h): the
  * camera rays of one image and the planes the reference and the models
  * fill. */
-#ifndef GTLAB_STUDIES_AERIAL_PERSPECTIVE_PARTS_H
-#define GTLAB_STUDIES_AERIAL_PERSPECTIVE_PARTS_H
+#ifndef GTLAB_HEIGHT_FOG_AERIAL_PERSPECTIVE_PARTS_H
+#define GTLAB_HEIGHT_FOG_AERIAL_PERSPECTIVE_PARTS_H
 
-#include "studies/aerial_perspective.h"
+#include "height_fog/aerial_perspective_study.h"
 
 /* The rays of one image: per pixel a unit direction, whether it is
  * rendered (inside), whether it ends on the terrain (terrain), the

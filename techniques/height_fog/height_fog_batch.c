@@ -1,5 +1,5 @@
-/* The published HeightFog() over a row of pixels (realtime/height_fog.h):
- * height_fog_published's steps (realtime/height_fog_published.h) in loops
+/* The published HeightFog() over a row of pixels (height_fog/height_fog.h):
+ * height_fog_published's steps (height_fog/height_fog_published.h) in loops
  * GCC vectorises at -O3. gtlab compiles with -fno-math-errno (errno is never
  * read), so expf and sqrtf are pure, and here expf is declared with GCC's
  * simd attribute, which tells the vectoriser that glibc's libmvec has its
@@ -10,7 +10,7 @@
 #include <stddef.h>
 #include <string.h>
 
-#include "realtime/height_fog_published.h"
+#include "height_fog/height_fog_published.h"
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
 __attribute__((__simd__("notinbranch"))) float expf(float);

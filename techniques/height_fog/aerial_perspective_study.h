@@ -23,7 +23,7 @@
  *      L = L_background alpha + (L_sun + L_amb)(1 - alpha) with a black
  *      background behind the surface). Models: the talk's published
  *      HeightFog() and the corrected one with the sun and the sky attenuated
- *      (realtime/height_fog.h, HEIGHT_FOG_ATTENUATE_SKY).
+ *      (height_fog/height_fog.h, HEIGHT_FOG_ATTENUATE_SKY).
  *
  * Scene units are metres, the scene's y = 0 is the planet's surface
  * (radius R_b), and the scene is placed tangent to the sphere below the
@@ -63,12 +63,12 @@
  * mask.A: terrain, resp. inside the circle), .png (reference | published
  * model, one exposure: the reference's mean green at 0.18) and
  * _error.png (heatmap of |model - reference| / reference, green, 0 to 0.5). */
-#ifndef GTLAB_STUDIES_AERIAL_PERSPECTIVE_H
-#define GTLAB_STUDIES_AERIAL_PERSPECTIVE_H
+#ifndef GTLAB_HEIGHT_FOG_AERIAL_PERSPECTIVE_STUDY_H
+#define GTLAB_HEIGHT_FOG_AERIAL_PERSPECTIVE_STUDY_H
 
 #include "core/error.h"
 #include "luts/atmosphere_luts.h"
-#include "realtime/height_fog.h"
+#include "height_fog/height_fog.h"
 #include "studies/study.h"
 
 enum { AERIAL_SUNS = 3, AERIAL_CASES = 2 * AERIAL_SUNS, AERIAL_MODELS = 2 };

@@ -1,10 +1,10 @@
 /* The analytic height fog, published and corrected; see height_fog.h. The
  * arithmetic is float, as in the shader. */
-#include "realtime/height_fog.h"
+#include "height_fog/height_fog.h"
 
 #include <math.h>
 
-#include "realtime/height_fog_published.h"
+#include "height_fog/height_fog_published.h"
 
 void height_fog_uniforms_init(const height_fog_param *p, height_fog_uniforms *u)
 {

@@ -1,4 +1,4 @@
-/* The combination images' pixels (studies/aerial_perspective.h): the rays,
+/* The combination images' pixels (height_fog/aerial_perspective_study.h): the rays,
  * the reference along each, the LUT + HeightFog model, and the fog's
  * parameters from the atmosphere. */
 #include <math.h>
@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "core/vec3.h"
-#include "studies/aerial_perspective_parts.h"
+#include "height_fog/aerial_perspective_parts.h"
 
 int aerial_rays_alloc(aerial_rays *rays, int width, int height)
 {

@@ -1,4 +1,4 @@
-/* The combination images (studies/aerial_perspective.h), no prose:
+/* The combination images (height_fog/aerial_perspective_study.h), no prose:
  *  - the fog's fitted scale height: exactly H_R for an atmosphere without
  *    Mie (one species: the fit's equation has that root), and between the
  *    species' scale heights otherwise (the column of a sum of exponentials
@@ -13,7 +13,7 @@
 
 #include "core/exr_io.h"
 #include "core/reference_schema.h"
-#include "studies/aerial_perspective.h"
+#include "height_fog/aerial_perspective_study.h"
 #include "tests/check.h"
 
 static void test_scale_height(void)

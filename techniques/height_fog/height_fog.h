@@ -1,7 +1,7 @@
 /* The analytic height fog of the Decima talk (Kojima Productions, "Height
  * fog", SIGGRAPH 2017 Advances, slide "Height fog: Analytic model"), in C
  * with the shader's float arithmetic, as published and corrected where the
- * references show it wrong (docs/decisions.md, "Height fog"). The medium is
+ * references show it wrong (techniques/height_fog/README.md). The medium is
  * core/height_fog_medium.h.
  *
  * Published. With beta_t = beta_Rs + beta_Ms + beta_Ma, distance d, camera
@@ -55,8 +55,8 @@
  * Without fog (A, tau_v -> 0) it is half the published term: the lower
  * hemisphere's half of L_amb never arrives. The ground's own shape (hills
  * hiding part of the sky) is not modelled. */
-#ifndef GTLAB_REALTIME_HEIGHT_FOG_H
-#define GTLAB_REALTIME_HEIGHT_FOG_H
+#ifndef GTLAB_HEIGHT_FOG_H
+#define GTLAB_HEIGHT_FOG_H
 
 #include <stddef.h>
 
@@ -92,7 +92,7 @@ void height_fog_uniforms_init(const height_fog_param *p, height_fog_uniforms *u)
  * vectorises, with glibc's vector expf (libmvec, within 4 ulp: glibc manual,
  * "Errors in Math Functions") where the compiler supports it, the scalar
  * expf elsewhere. So the result is height_fog_published's within expf's
- * error propagated (the bound is tests/realtime/test_height_fog_batch.c's),
+ * error propagated (the bound is techniques/height_fog/tests/test_height_fog_batch.c's),
  * and the same bits for any split of the n pixels into calls. */
 void height_fog_published_batch(const height_fog_uniforms *u, float camera_y, size_t n, const float *distance,
                                 const float *world_y, const float *sov, float *const inscatter[3],

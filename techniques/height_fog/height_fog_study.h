@@ -1,5 +1,5 @@
 /* The height fog study (issue 16 items 2, 4, 6): the Decima talk's analytic
- * HeightFog() (realtime/height_fog.h), published and corrected, against the
+ * HeightFog() (height_fog/height_fog.h), published and corrected, against the
  * references of `gtlab render fog` (raytracer/fog_integrator.h) on the
  * built-in terrain, per weather (sunny, dense) and sun elevation, and the
  * regime table of single rays against the quadrature.
@@ -19,14 +19,14 @@
  *     RMSE of their transmittance against the closed form.
  * The analytic models see what a shader sees: the camera's and the
  * surface's altitudes, the distance and dot(sun, view). */
-#ifndef GTLAB_STUDIES_HEIGHT_FOG_H
-#define GTLAB_STUDIES_HEIGHT_FOG_H
+#ifndef GTLAB_HEIGHT_FOG_STUDY_H
+#define GTLAB_HEIGHT_FOG_STUDY_H
 
 #include <stdio.h>
 
 #include "core/error.h"
 #include "core/image.h"
-#include "studies/aerial_perspective.h"
+#include "height_fog/aerial_perspective_study.h"
 #include "studies/study.h"
 
 #define HEIGHT_FOG_DIR "fog"
@@ -41,7 +41,7 @@ typedef enum {
 typedef struct {
     int width, height, spp;
     double sun_elevations[HEIGHT_FOG_SUNS];
-    aerial_perspective_request aerial; /* the combination images (studies/aerial_perspective.h) */
+    aerial_perspective_request aerial; /* the combination images (height_fog/aerial_perspective_study.h) */
 } height_fog_request;
 
 typedef struct {

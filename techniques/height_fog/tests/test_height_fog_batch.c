@@ -13,7 +13,7 @@
 #include <string.h>
 
 #include "core/splitmix64.h"
-#include "realtime/height_fog_published.h"
+#include "height_fog/height_fog_published.h"
 #include "tests/check.h"
 
 enum { PIXELS = 3000 };

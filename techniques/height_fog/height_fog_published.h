@@ -1,12 +1,12 @@
-/* The published HeightFog()'s per-pixel steps (realtime/height_fog.h), shared
+/* The published HeightFog()'s per-pixel steps (height_fog/height_fog.h), shared
  * by the one-pixel function and the batch so both run the same arithmetic.
- * Internal to realtime/height_fog*.c. */
-#ifndef GTLAB_REALTIME_HEIGHT_FOG_PUBLISHED_H
-#define GTLAB_REALTIME_HEIGHT_FOG_PUBLISHED_H
+ * Internal to height_fog/height_fog*.c. */
+#ifndef GTLAB_HEIGHT_FOG_PUBLISHED_H
+#define GTLAB_HEIGHT_FOG_PUBLISHED_H
 
 #include <math.h>
 
-#include "realtime/height_fog.h"
+#include "height_fog/height_fog.h"
 
 #define HEIGHT_FOG_PI_F 3.14159265358979323846f
 

@@ -1,4 +1,4 @@
-/* The analytic height fog (realtime/height_fog.h) against single scattering
+/* The analytic height fog (height_fog/height_fog.h) against single scattering
  * by quadrature (raytracer/fog_single_scatter.h), in every regime of issue
  * 16: rays down, horizontal and up; the camera inside the fog and far above
  * it; the world point above and below the camera; H from 1 m to 1e6 m; beta
@@ -10,7 +10,8 @@
  *     is at least H/100 below the camera (the clamp inactive), and departs
  *     where the clamp acts: horizontal rays lose exactly the factor
  *     f(1e-2) = 0.995 of their optical depth, and an upward ray 5 H high
- *     keeps 3.4 % of it (dense fog, 500 m up: T = 0.83 instead of 0.004) (test numbers quoted in docs/decisions.md);
+ *     keeps 3.4 % of it (dense fog, 500 m up: T = 0.83 instead of 0.004) (test numbers quoted in
+ *     techniques/height_fog/README.md);
  *   - the published sun term ignores the fog above: in dense fog with the
  *     sun low it is several times the attenuated single scattering;
  *   - its 1 - T in float cancels for thin fog seen from far above. */
@@ -18,7 +19,7 @@
 #include <stdio.h>
 
 #include "raytracer/fog_single_scatter.h"
-#include "realtime/height_fog.h"
+#include "height_fog/height_fog.h"
 #include "tests/check.h"
 
 /* The medium with its coefficients scaled by `thickness` (1: clear air). */
@@ -77,7 +78,7 @@ static void analytic(const height_fog_param *p, int model, const view_ray *r, fl
  * too where its clamp is inactive. The sky level's 6-point Gauss-Legendre
  * rule over the sky's elevations is exact to SKY_RULE_TOLERANCE of the
  * in-scatter (the worst case over these regimes: printed, and quoted in
- * docs/decisions.md). */
+ * techniques/height_fog/README.md). */
 #define SKY_RULE_TOLERANCE 5e-3
 static double worst_sky_rule_error;
 

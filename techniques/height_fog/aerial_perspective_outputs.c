@@ -1,4 +1,4 @@
-/* The combination images' scores and files (studies/aerial_perspective.h). */
+/* The combination images' scores and files (height_fog/aerial_perspective_study.h). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -9,7 +9,7 @@
 #include "core/reference_schema.h"
 #include "metrics/image_error.h"
 #include "metrics/ssim.h"
-#include "studies/aerial_perspective_parts.h"
+#include "height_fog/aerial_perspective_parts.h"
 
 static const char *const WHAT = "aerial perspective";
 
