@@ -197,7 +197,7 @@
 #define CH_BLUE_NOISE_B "blue_noise.B"
 #define CH_BLUE_NOISE_A "blue_noise.A"
 #define CH_BLUE_NOISE_RGBA {CH_BLUE_NOISE_R, CH_BLUE_NOISE_G, CH_BLUE_NOISE_B, CH_BLUE_NOISE_A}
-/* The Decima atmosphere LUTs (luts/atmosphere_luts.h): in-scatter per species
+/* The Decima atmosphere LUTs (atmosphere/atmosphere_luts.h): in-scatter per species
  * without phase, the sun and the sky light reaching an altitude. */
 #define CH_ATMOSPHERE_INSCATTER_RAYLEIGH {"inscatter.rayleigh.R", "inscatter.rayleigh.G", "inscatter.rayleigh.B"}
 #define CH_ATMOSPHERE_INSCATTER_MIE {"inscatter.mie.R", "inscatter.mie.G", "inscatter.mie.B"}

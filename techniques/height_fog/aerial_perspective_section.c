@@ -5,7 +5,7 @@
 #include <stdio.h>
 
 #include "report/report_table.h"
-#include "studies/atmosphere_luts.h"
+#include "atmosphere/atmosphere_luts_study.h"
 
 #define ROW aerial_case
 static const report_column view_columns[] = {

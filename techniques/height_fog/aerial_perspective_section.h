@@ -12,7 +12,7 @@
 
 /* The finding's figure: the largest over the cases of the median pixel's
  * relative error of the published combination on the terrain view, set
- * beside Weber's fraction (studies/atmosphere_luts.h, ATMOSPHERE_TOLERANCE):
+ * beside Weber's fraction (atmosphere/atmosphere_luts_study.h, ATMOSPHERE_TOLERANCE):
  * the contrast the eye can tell. */
 double aerial_perspective_worst_median(const aerial_perspective_result *r);
 

@@ -1,7 +1,7 @@
 /* The combination images of the Decima height fog (Kojima Productions,
  * "Height fog", SIGGRAPH 2017 Advances, slide "Height fog: Analytic model";
  * issue 16 item 4): builtin:terrain under the atmosphere of
- * luts/atmosphere_model.h, per weather (sunny t = 0, dense fog t = 1) and
+ * atmosphere/atmosphere_model.h, per weather (sunny t = 0, dense fog t = 1) and
  * sun elevation, rendered
  *
  *  (i) as the reference: per pixel the radiance the atmosphere scatters
@@ -67,7 +67,7 @@
 #define GTLAB_HEIGHT_FOG_AERIAL_PERSPECTIVE_STUDY_H
 
 #include "core/error.h"
-#include "luts/atmosphere_luts.h"
+#include "atmosphere/atmosphere_luts.h"
 #include "height_fog/height_fog.h"
 #include "studies/study.h"
 

@@ -136,7 +136,7 @@ int height_fog_section(report_context *ctx, const height_fog_result *r, gt_error
     const height_fog_timing *cost = &r->analytic_cost;
     report_paragraph(ctx->doc, "Analytic model cost in C, one thread: %.1f ns per pixel published, %.1f clamp fixed, "
                                "%.1f sun attenuated, %.1f sky attenuated, one pixel at a time; the published model "
-                               "over rows of pixels, vectorised (height_fog/height_fog_batch.c): %.1f ns (goal < 20 ns).",
+                               "over rows of pixels, vectorised (techniques/height_fog/height_fog_batch.c): %.1f ns (goal < 20 ns).",
                      cost->ns_per_pixel[0], cost->ns_per_pixel[1], cost->ns_per_pixel[2], cost->ns_per_pixel[3],
                      cost->published_batch_ns_per_pixel);
     const height_fog_case *dense = &r->cases[HEIGHT_FOG_SUNS];
