@@ -26,9 +26,10 @@ endfunction()
 # then shows as leaks from an "<unknown module>" no suppression can name.
 # Preloading the driver keeps it resident (the loader's dlclose leaves it),
 # so its memory stays reachable and gtlab's own allocations stay checked.
-# libasan must come first in the preload list. GTLAB_VULKAN_PRELOAD is that
-# list, or empty: a Vulkan test's LD_PRELOAD, and what a CLI test that runs
-# gtlab on Vulkan gives to gtlab alone (bash and python3 are not built with ASan).
+# libasan must come first in the preload list. GTLAB_VULKAN_PRELOAD holds
+# it (empty without ASan or lavapipe): a CLI test that runs gtlab on Vulkan
+# (tests/cli) gives it to gtlab alone, as bash and python3 are not built
+# with ASan; gtlab_vulkan_preload(test...) preloads it for test executables.
 set(GTLAB_VULKAN_PRELOAD "")
 if(GTLAB_SANITIZE)
   execute_process(COMMAND ${CMAKE_C_COMPILER} -print-file-name=libasan.so OUTPUT_VARIABLE gtlab_libasan
@@ -39,13 +40,17 @@ if(GTLAB_SANITIZE)
   endif()
 endif()
 
+function(gtlab_vulkan_preload)
+  if(GTLAB_VULKAN_PRELOAD)
+    set_property(TEST ${ARGN} APPEND PROPERTY ENVIRONMENT "LD_PRELOAD=${GTLAB_VULKAN_PRELOAD}")
+  endif()
+endfunction()
+
 # gtlab_gpu_test(NAME name SOURCES file... LIBS lib...): a gtlab_test that
 # needs a Vulkan device with a compute queue (lavapipe is enough; without
 # one it fails, it never skips), with the driver preloaded under ASan.
 function(gtlab_gpu_test)
   gtlab_test(${ARGN})
   cmake_parse_arguments(ARG "" "NAME" "SOURCES;LIBS" ${ARGN})
-  if(GTLAB_VULKAN_PRELOAD)
-    set_property(TEST ${ARG_NAME} APPEND PROPERTY ENVIRONMENT "LD_PRELOAD=${GTLAB_VULKAN_PRELOAD}")
-  endif()
+  gtlab_vulkan_preload(${ARG_NAME})
 endfunction()

@@ -139,12 +139,12 @@
 #define CH_FOG_L_ERROR_B "fog_quadrature_error.B"
 #define CH_FOG_L_ERROR_RGB {CH_FOG_L_ERROR_R, CH_FOG_L_ERROR_G, CH_FOG_L_ERROR_B}
 
-/* The fog study's error maps (studies/height_fog.c, fog/<weather>_sunNN.exr):
+/* The fog study's error maps (height_fog/height_fog_study.c, fog/<weather>_sunNN.exr):
  * the analytic model's fog.L minus the reference's, green channel. */
 #define CH_FOG_PUBLISHED_ERROR "fog_published_error.G"
 #define CH_FOG_CORRECTED_ERROR "fog_corrected_error.G"
 
-/* The combination images of the Decima fog (studies/aerial_perspective.h,
+/* The combination images of the Decima fog (height_fog/aerial_perspective_study.h,
  * fog/aerial_<weather>_sunNN.exr and fog/fisheye_<weather>_sunNN.exr): the
  * atmosphere's radiance towards the camera by quadrature (reference), the
  * LUTs + published HeightFog() (model) and + the corrected one (sun and sky
@@ -197,7 +197,7 @@
 #define CH_BLUE_NOISE_B "blue_noise.B"
 #define CH_BLUE_NOISE_A "blue_noise.A"
 #define CH_BLUE_NOISE_RGBA {CH_BLUE_NOISE_R, CH_BLUE_NOISE_G, CH_BLUE_NOISE_B, CH_BLUE_NOISE_A}
-/* The Decima atmosphere LUTs (luts/atmosphere_luts.h): in-scatter per species
+/* The Decima atmosphere LUTs (atmosphere/atmosphere_luts.h): in-scatter per species
  * without phase, the sun and the sky light reaching an altitude. */
 #define CH_ATMOSPHERE_INSCATTER_RAYLEIGH {"inscatter.rayleigh.R", "inscatter.rayleigh.G", "inscatter.rayleigh.B"}
 #define CH_ATMOSPHERE_INSCATTER_MIE {"inscatter.mie.R", "inscatter.mie.G", "inscatter.mie.B"}

@@ -1,6 +1,6 @@
 /* Single scattering in the height fog along one ray, by adaptive quadrature
  * (core/quadrature.h, gk15) with an error estimate: the reference the
- * analytic model (realtime/height_fog.h) is tested against and `gtlab
+ * analytic model (height_fog/height_fog.h) is tested against and `gtlab
  * render fog --fog-scattering single` writes (docs/render-quantities.md).
  *
  * Along the ray x(s) = o + s w, s in [0, d], the transmittance is
