@@ -193,12 +193,14 @@ static void talk_paragraph(report *doc, const gtao_half_res_result *r, const gta
         "%.2f code values of an 8-bit target on average (%.1f%% of pixels change code; RMSE %.4f), against %.2f "
         "at gtlab's 256x256 above; within the %dx%d pass the MIN-filtered chain with %d samples per side has RMSE "
         "%.4f against a %d-sample search, the point-sampled chain %.4f (paired difference in squared error %+.2e "
-        "± %.1e).",
+        "± %.1e). The runs in the talk's setting (the G-buffers, this subsection's, the pattern's and the "
+        "denoisers') took %.0f s of wall clock and %.0f s of CPU on this machine.",
         t->full_width, t->full_height, scenes, t->half_width, t->half_height, k->radius_fraction, t->full_width,
         t->full_height, block_mean_value(&k->change[v]) / CLAIM_ONE_CODE_VALUE_8BIT,
         block_mean_se(&k->change[v]) / CLAIM_ONE_CODE_VALUE_8BIT, 100.0 * block_mean_value(&k->codes[v]),
         k->rmse[v], own ? block_mean_value(&own->change[v]) / CLAIM_ONE_CODE_VALUE_8BIT : NAN, t->half_width, t->half_height, GTAO_HALF_RES_STEPS, p->four_x_min_rmse,
-        GTAO_HALF_RES_CONVERGED_STEPS, p->mip_rmse, p->min_vs_mip_mean, p->min_vs_mip_se);
+        GTAO_HALF_RES_CONVERGED_STEPS, p->mip_rmse, p->min_vs_mip_mean, p->min_vs_mip_se, t->seconds,
+        t->cpu_seconds);
 }
 
 /* summary.half_resolution.talk_setting: the rows' figures. */

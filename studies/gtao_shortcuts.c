@@ -6,7 +6,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/progress.h"
 #include "realtime/gtao_denoiser.h"
 #include "realtime/gtao_pattern.h"
 #include "realtime/gtao_spatial_filter.h"
@@ -124,7 +123,6 @@ int gtao_shortcuts_talk_scene(const char *name, const ss_gbuffer *full, const ss
 {
     if (r->scene_count == GTAO_TALK_MAX_SCENES)
         return gt_error_set(e, name, "more than %d scenes in the talk's setting", GTAO_TALK_MAX_SCENES);
-    double t0 = seconds_now();
     snprintf(r->scenes[r->scene_count++], sizeof r->scenes[0], "%s", name);
     r->full_width = full->width, r->full_height = full->height;
     r->half_width = half->width, r->half_height = half->height;
@@ -139,7 +137,6 @@ int gtao_shortcuts_talk_scene(const char *name, const ss_gbuffer *full, const ss
                      cycle_scene(&h, &r->pattern, &r->denoisers, e) != 0
                  ? -1
                  : 0;
-    r->seconds += seconds_now() - t0;
     return rc;
 }
 

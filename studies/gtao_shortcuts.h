@@ -173,7 +173,7 @@ typedef struct {
     gtao_half_res_result half_res, half_pass;
     gtao_pattern_result pattern;
     gtao_denoisers_result denoisers;
-    double seconds; /* wall clock of the studies (G-buffers excluded) */
+    double seconds, cpu_seconds; /* wall clock and CPU time of the runs, G-buffers included (gtao_validation) */
 } gtao_talk_result;
 
 typedef struct {

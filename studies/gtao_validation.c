@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "core/atomic_file.h"
 #include "core/exr_io.h"
@@ -264,11 +265,15 @@ static int score_scene(const scene_data *d, const image *hf, const char *figures
 static int talk_setting(const study_context *ctx, const char *name, const camera *cam, gtao_talk_result *r,
                         gt_error *e)
 {
+    double t0 = seconds_now();
+    clock_t c0 = clock();
     gtao_talk_frame f;
     if (gtao_talk_frame_render(ctx, name, cam, &f, e) != 0)
         return -1;
     int rc = gtao_shortcuts_talk_scene(name, &f.full.g, &f.half.g, STUDY_RADIUS, f.camera_distance, r, e);
     gtao_talk_frame_free(&f);
+    r->seconds += seconds_now() - t0;
+    r->cpu_seconds += (double)(clock() - c0) / CLOCKS_PER_SEC;
     return rc;
 }
 
