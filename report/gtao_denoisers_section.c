@@ -87,8 +87,10 @@ static void add_summary(const gtao_denoisers_result *r, cJSON *summary)
     "(10% relative, linear ramp) with a gradient test"
 #define DEPTH_TEST_NOTE                                                                                              \
     "the talk's resolution: frame 0 of GTAO medium filtered on the 960x540 half of a 1920x1080 G-buffer from "       \
-    "gtlab's ray tracer, against the 96-direction brute force of the same pass; not the talk's content: gtlab's "   \
-    "boxes and Cornell box (production adds menger and corner), not its game levels"
+    "gtlab's ray tracer, against the 96-direction brute force of the same pass, the talk's radius read as a "      \
+    "quarter of the camera's distance faded over its last quarter; the depth test's details are gtlab's reading "  \
+    "of the slide (realtime/gtao_spatial_filter.h); not the talk's content: gtlab's boxes and Cornell box "         \
+    "(production adds menger and corner), not its game levels"
 static const claim_record depth_claims[2] = {
     {.talk = "Jimenez et al. 2016 (GTAO)",
      .seed = "001",
@@ -143,8 +145,9 @@ static const claim_record shift_record = {
                "resolution, the window moved by 1 pixel each frame",
     .setting_match = CLAIM_SETTING_TALK,
     .setting_note = "the talk's resolution: GTAO medium over the 24-frame cycle with a static camera on the 960x540 "
-                    "half of a 1920x1080 G-buffer from gtlab's ray tracer, the AO change per pixel of shift that "
-                    "of the same pass; not the talk's content: gtlab's boxes and Cornell box (production adds "
+                    "half of a 1920x1080 G-buffer from gtlab's ray tracer, the talk's radius read as a quarter of "
+                    "the camera's distance faded over its last quarter, the AO change per pixel of shift that of "
+                    "the same pass; not the talk's content: gtlab's boxes and Cornell box (production adds "
                     "menger and corner), not its game levels",
     .reading = "moving the window by one pixel on alternate frames cancels the shift a fixed 4x4 window "
                "accumulates, leaving along the diagonal the talk moves it on a shift too small to change the AO "

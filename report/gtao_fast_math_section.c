@@ -106,8 +106,9 @@ static const claim_record fast_math_claim = {
                "direction before the spatio-temporal denoiser; the AO is memory bound (\"ALU not a problem\"), "
                "the fast functions replace sqrt and acos in each slice's integral",
     .setting_match = CLAIM_SETTING_TALK,
-    .setting_note = "the talk's resolution: GTAO medium (1 direction, 4 samples per side, no radius limit), one "
-                    "frame, on the 960x540 half of a 1920x1080 G-buffer from gtlab's ray tracer; not the talk's "
+    .setting_note = "the talk's resolution: GTAO medium (1 direction, 4 samples per side; the talk's radius read "
+                    "as a quarter of the camera's distance faded over its last quarter), one frame, on the 960x540 "
+                    "half of a 1920x1080 G-buffer from gtlab's ray tracer; not the talk's "
                     "content: gtlab's boxes and Cornell box (production adds menger and corner), not its game "
                     "levels",
     .reading = "the talk adopts the fast sqrt and acos as an optimisation of the same integral, so they should "

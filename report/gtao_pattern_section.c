@@ -56,11 +56,15 @@ static const claim_record cycle_claim = {
     .setting_match = CLAIM_SETTING_TALK,
     .setting_note = "the talk's resolution: GTAO medium's 24-frame cycle, its 4x4 bilateral filter and temporal "
                     "accumulation on the 960x540 half of a 1920x1080 G-buffer from gtlab's ray tracer, against the "
-                    "96 directions in one frame of the same pass; a static camera, no radius limit (the screen "
-                    "radius the pass's width); not the talk's content: gtlab's boxes and Cornell box (production "
+                    "96 directions in one frame of the same pass; a static camera, the talk's radius read as a "
+                    "quarter of the camera's distance faded over its last quarter (150 to 200 inches); not the "
+                    "talk's content: gtlab's boxes and Cornell box (production "
                     "adds menger and corner), not its game levels",
-    .reading = "after the cycle the denoised accumulation is the AO of 96 directions per pixel, within one 8-bit "
-               "code value of RMSE",
+    .reading = "the 4x4 tile's 16 rotations times the cycle's 6 temporal ones, gathered by the bilateral filter "
+               "and the temporal accumulation, give each pixel's AO from 96 directions",
+    .stronger_reading = "that after the 24-frame cycle the denoised accumulation is each pixel's AO of 96 directions "
+                        "in one frame within one 8-bit code value of RMSE: the talk counts the directions and gives "
+                        "no figure for how close its filtered result comes to a 96-direction search per pixel",
     .form = CLAIM_RANGE,
     .low = 0.0,
     .high = CLAIM_ONE_CODE_VALUE_8BIT,
@@ -77,7 +81,8 @@ static const claim_record order_claim = {
                "average along rows and columns; 1080p at half resolution",
     .setting_match = CLAIM_SETTING_TALK,
     .setting_note = "the talk's resolution: GTAO medium after one frame of the 4x4 bilateral filter on the 960x540 "
-                    "half of a 1920x1080 G-buffer from gtlab's ray tracer, against the 96 directions in one frame; "
+                    "half of a 1920x1080 G-buffer from gtlab's ray tracer, against the 96 directions in one frame, "
+                    "the talk's radius read as a quarter of the camera's distance faded over its last quarter; "
                     "the content architecture-like but not the talk's levels: gtlab's boxes (a grid of boxes on a "
                     "floor) and Cornell box (a room with two blocks), production adding menger and corner",
     .reading = "with the directions sorted so that each row of the 4x4 tile holds a full rotation, the filtered "

@@ -228,8 +228,8 @@ static int medium_on_off(const gtao_scene_refs *s, float *on, float *off, gtao_f
     return 0;
 }
 
-/* (c) on one scene: GTAO medium (no radius limit, the screen radius the
- * pass's width) on and off on the half-resolution pass of its 1080p frame. */
+/* (c) on one scene: GTAO medium at the talk's radius on and off on the
+ * half-resolution pass of its 1080p frame. */
 static int talk_on_off(const study_context *ctx, const gtao_scene_refs *s, gtao_fast_math_result *r,
                        cluster_mean *change, cluster_mean *codes, gt_error *e)
 {
@@ -240,7 +240,7 @@ static int talk_on_off(const study_context *ctx, const gtao_scene_refs *s, gtao_
     size_t n = (size_t)g->width * g->height;
     float *on = malloc(sizeof *on * n), *off = malloc(sizeof *off * n);
     gtao_params p = gtao_scene_params(s, GTAO_PRESET_MEDIUM);
-    p.max_radius_px = (float)g->width;
+    gtao_talk_radius(f.camera_distance, g, &p);
     int rc = on && off ? on_off(g, p, s->scene, on, off, e) : gt_error_set(e, s->scene, "out of memory");
     if (rc == 0) {
         double mean, max;

@@ -21,8 +21,8 @@
  *     against the talk's polynomial with the fit made without it.
  * (c) (a)'s change in the talk's setting (issue 42, item 4;
  *     studies/gtao_talk_setting.h): GTAO medium on and off on the 960x540
- *     half-resolution pass of a 1920x1080 frame of the talk-setting scenes
- *     (no reference needed: the shortcut's own change). */
+ *     half-resolution pass of a 1920x1080 frame of the talk-setting scenes,
+ *     at the talk's radius (no reference needed: the shortcut's own change). */
 #ifndef GTLAB_STUDIES_GTAO_FAST_MATH_H
 #define GTLAB_STUDIES_GTAO_FAST_MATH_H
 

@@ -9,6 +9,7 @@
 #include "realtime/gtao_denoiser.h"
 #include "realtime/gtao_pattern.h"
 #include "realtime/gtao_spatial_filter.h"
+#include "studies/gtao_talk_setting.h"
 
 const float gtao_clamp_windows[GTAO_CLAMP_WINDOWS] = {0.0f, 0.25f, 0.5f, 1.0f, 2.0f};
 
@@ -17,7 +18,7 @@ gtao_params gtao_cycle_params(const gtao_shortcut_scene *s, int pattern)
     gtao_params p;
     gtao_preset("medium", &p);
     p.radius = s->radius;
-    p.falloff = 0.0f;
+    p.falloff = s->falloff;
     p.max_radius_px = s->max_radius_px;
     p.pattern = pattern;
     p.frames = 1;
@@ -118,7 +119,7 @@ int gtao_shortcuts_scene(const gtao_shortcut_scene *s, gtao_shortcuts_result *r,
     return gtao_half_res_scene_study(s, &r->half_res, e);
 }
 
-int gtao_shortcuts_talk_scene(const char *name, const ss_gbuffer *full, const ss_gbuffer *half, float radius,
+int gtao_shortcuts_talk_scene(const char *name, const ss_gbuffer *full, const ss_gbuffer *half,
                               float camera_distance, gtao_talk_result *r, gt_error *e)
 {
     if (r->scene_count == GTAO_TALK_MAX_SCENES)
@@ -126,12 +127,14 @@ int gtao_shortcuts_talk_scene(const char *name, const ss_gbuffer *full, const ss
     snprintf(r->scenes[r->scene_count++], sizeof r->scenes[0], "%s", name);
     r->full_width = full->width, r->full_height = full->height;
     r->half_width = half->width, r->half_height = half->height;
-    gtao_shortcut_scene f = {.name = name, .g = full, .radius = radius, .max_radius_px = (float)full->width,
+    gtao_params talk = {0};
+    gtao_talk_radius(camera_distance, half, &talk);
+    gtao_shortcut_scene f = {.name = name, .g = full, .radius = talk.radius, .max_radius_px = (float)full->width,
                              .camera_distance = camera_distance, .preview = 1, .claim_radius_only = 1,
-                             .no_four_x = 1};
+                             .no_four_x = 1, .falloff = talk.falloff};
     gtao_shortcut_scene h = f;
     h.g = half;
-    h.max_radius_px = (float)half->width;
+    h.max_radius_px = talk.max_radius_px;
     h.no_four_x = 0;
     int rc = gtao_half_res_scene_study(&f, &r->half_res, e) != 0 || gtao_half_res_scene_study(&h, &r->half_pass, e) != 0 ||
                      cycle_scene(&h, &r->pattern, &r->denoisers, e) != 0

@@ -39,6 +39,7 @@ typedef struct {
     int preview;                  /* preview quality: fewer runs */
     int claim_radius_only;        /* half resolution: only the claims' radius (GTAO_HALF_RES_4X_RADIUS) */
     int no_four_x;                /* half resolution: not the "4x samples" runs */
+    float falloff;                /* the cycle's (0: none, the references') */
 } gtao_shortcut_scene;
 
 /* The talk's configuration over its 24-frame cycle, rendered once per
@@ -162,9 +163,9 @@ typedef struct {
  * the 1920x1080 search (half_res, the claims' radius only); the MIN filter
  * within the 960x540 pass (half_pass: its "4x samples" runs); the pattern
  * and the denoisers on the 960x540 pass (the talk's: the AO, its filter and
- * accumulation run at half resolution). The stage's radius (no limit, the
- * screen radius the pass's width); no reference, so no "against the
- * references" figures. */
+ * accumulation run at half resolution). The cycle at the talk's radius
+ * (gtao_talk_radius), the half-resolution runs at their own radius; no
+ * reference, so no "against the references" figures. */
 enum { GTAO_TALK_MAX_SCENES = 4 };
 typedef struct {
     int scene_count;
@@ -186,9 +187,9 @@ typedef struct {
 /* Every shortcut study on one scene, its rows and pooled blocks added to r. */
 int gtao_shortcuts_scene(const gtao_shortcut_scene *s, gtao_shortcuts_result *r, gt_error *e);
 /* The claims rows' studies on one scene in the talk's setting: `full` the
- * 1920x1080 G-buffer, `half` its 960x540 half, radius and camera_distance as
- * gtao_shortcut_scene's. */
-int gtao_shortcuts_talk_scene(const char *name, const ss_gbuffer *full, const ss_gbuffer *half, float radius,
+ * 1920x1080 G-buffer, `half` its 960x540 half, camera_distance from the
+ * camera to its target. */
+int gtao_shortcuts_talk_scene(const char *name, const ss_gbuffer *full, const ss_gbuffer *half,
                               float camera_distance, gtao_talk_result *r, gt_error *e);
 /* The pooled figures, after the last scene. */
 void gtao_shortcuts_finish(gtao_shortcuts_result *r);

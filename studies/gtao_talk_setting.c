@@ -52,3 +52,10 @@ void gtao_talk_frame_free(gtao_talk_frame *f)
     ss_half_free(&f->half);
     approx_input_free(&f->full);
 }
+
+void gtao_talk_radius(float camera_distance, const ss_gbuffer *pass, gtao_params *p)
+{
+    p->radius = GTAO_TALK_RADIUS_FRACTION * camera_distance;
+    p->falloff = GTAO_TALK_FALLOFF;
+    p->max_radius_px = (float)pass->width;
+}

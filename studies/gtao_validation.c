@@ -270,7 +270,7 @@ static int talk_setting(const study_context *ctx, const char *name, const camera
     gtao_talk_frame f;
     if (gtao_talk_frame_render(ctx, name, cam, &f, e) != 0)
         return -1;
-    int rc = gtao_shortcuts_talk_scene(name, &f.full.g, &f.half.g, STUDY_RADIUS, f.camera_distance, r, e);
+    int rc = gtao_shortcuts_talk_scene(name, &f.full.g, &f.half.g, f.camera_distance, r, e);
     gtao_talk_frame_free(&f);
     r->seconds += seconds_now() - t0;
     r->cpu_seconds += (double)(clock() - c0) / CLOCKS_PER_SEC;
@@ -292,7 +292,7 @@ static int study_scene(const study_context *ctx, const char *refs_dir, const cha
     int rc = score_scene(&d, &hf, figures, s, e);
     gtao_shortcut_scene view = {s->scene, d.g, d.hf, d.ref3d, s->hf_mean_variance, s->ref3d_mean_variance,
                                 STUDY_RADIUS, (float)d.g->width,
-                                v3_length(v3_sub(in.cam.target, in.cam.position)), ctx->quality == QUALITY_PREVIEW, 0, 0};
+                                v3_length(v3_sub(in.cam.target, in.cam.position)), ctx->quality == QUALITY_PREVIEW, 0, 0, 0.0f};
     if (rc == 0)
         rc = gtao_shortcuts_scene(&view, &r->shortcuts, e);
     if (rc == 0 && gtao_talk_scene(ctx, s->scene))

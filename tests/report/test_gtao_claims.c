@@ -101,7 +101,7 @@ static void test_checks(report_context *ctx)
 /* In the talk's setting: half resolution, MIN minus point-sampled MIP worse
  * by 1e-3 of MSE (refuted), the talk's variant changing the AO by half a
  * code value (reproduced); the cycle 5 code values of RMSE from the 96
- * directions (refuted), rows better than Morton by 1e-3 (reproduced); the
+ * directions (fails the stronger reading it names), rows better than Morton by 1e-3 (reproduced); the
  * depth test better at edges (reproduced), 1e-6 on flat pixels (no visible
  * difference); the alternating window leaving half a pixel on a gradient of
  * 0.05 per pixel, 6 code values (refuted). gtlab's 256x256 results hold
@@ -144,7 +144,7 @@ static void test_shortcuts(report_context *ctx)
     const expected_row want[] = {
         {"MIN filter", 1e-3, CLAIM_REFUTED},
         {"half resolution", (float)(0.5 * code), CLAIM_REPRODUCED},
-        {"cycle", 5.0 * code, CLAIM_REFUTED},
+        {"cycle", 5.0 * code, CLAIM_FAILS_STRONGER_READING},
         {"row order", -1e-3f, CLAIM_REPRODUCED},
         {"depth test, edges", -1e-3f, CLAIM_REPRODUCED},
         {"depth test, flat", 1e-6f, CLAIM_NO_VISIBLE_DIFFERENCE},

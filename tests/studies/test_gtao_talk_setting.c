@@ -76,7 +76,7 @@ static void test_studies(void)
     ss_half_gbuffer half;
     CHECK(ss_half_resolution(&full.g, &half) == 0);
     static gtao_talk_result r;
-    rc = gtao_shortcuts_talk_scene("boxes", &full.g, &half.g, 1e6f, 50.0f, &r, &e);
+    rc = gtao_shortcuts_talk_scene("boxes", &full.g, &half.g, 50.0f, &r, &e);
     CHECK_MSG(rc == 0, "%s", e.message);
     CHECK(r.scene_count == 1 && strcmp(r.scenes[0], "boxes") == 0);
     CHECK(r.full_width == 96 && r.full_height == 54 && r.half_width == 48 && r.half_height == 27);
