@@ -151,10 +151,14 @@ static void test_shortcuts(report_context *ctx)
         {"alternating window", 0.5 * 0.05, CLAIM_REFUTED},
     };
     check_rows(ctx->claims, first, want, (int)(sizeof want / sizeof want[0]));
-    for (int i = first; i < ctx->claims->count; ++i)
-        CHECK_MSG(ctx->claims->rows[i].record.setting_match == CLAIM_SETTING_TALK &&
+    /* Every row at the talk's 960x540; the depth test's two rows judge
+     * gtlab's reconstruction of the filter, so under gtlab's setting. */
+    for (int i = first; i < ctx->claims->count; ++i) {
+        int depth = i - first == 4 || i - first == 5;
+        CHECK_MSG(ctx->claims->rows[i].record.setting_match == (depth ? CLAIM_SETTING_GTLAB : CLAIM_SETTING_TALK) &&
                       strstr(ctx->claims->rows[i].quantity, "960x540"),
-                  "row %d: not in the talk's setting", i - first);
+                  "row %d: not in the setting expected", i - first);
+    }
 }
 
 int main(void)
