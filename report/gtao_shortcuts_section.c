@@ -2,10 +2,25 @@
  * gtao_shortcuts_section.h. */
 #include "report/gtao_shortcuts_section.h"
 
+#include <stdio.h>
+
+void gtao_scene_names_text(const char (*names)[64], int count, char *text, size_t size)
+{
+    size_t used = (size_t)snprintf(text, size, "%s", count == 0 ? "no scene" : "");
+    for (int i = 0; i < count && used < size; ++i)
+        used += (size_t)snprintf(text + used, size - used, "%s%s", i == 0 ? "" : i + 1 == count ? " and " : ", ",
+                                 names[i]);
+}
+
+void gtao_talk_scenes_text(const gtao_talk_result *t, char *text, size_t size)
+{
+    gtao_scene_names_text((const char (*)[64])t->scenes, t->scene_count, text, size);
+}
+
 void gtao_shortcuts_section(report_context *ctx, const gtao_shortcuts_result *r)
 {
     cJSON *summary = cJSON_AddObjectToObject(ctx->summary, "gtao_shortcuts");
-    gtao_half_res_section(ctx, &r->half_res, summary);
-    gtao_pattern_section(ctx, &r->pattern, summary);
-    gtao_denoisers_section(ctx, &r->denoisers, summary);
+    gtao_half_res_section(ctx, &r->half_res, &r->talk, summary);
+    gtao_pattern_section(ctx, &r->pattern, &r->talk, summary);
+    gtao_denoisers_section(ctx, &r->denoisers, &r->talk, summary);
 }

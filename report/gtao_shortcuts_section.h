@@ -10,8 +10,18 @@
 
 void gtao_shortcuts_section(report_context *ctx, const gtao_shortcuts_result *r);
 
-void gtao_pattern_section(report_context *ctx, const gtao_pattern_result *r, cJSON *summary);
-void gtao_half_res_section(report_context *ctx, const gtao_half_res_result *r, cJSON *summary);
-void gtao_denoisers_section(report_context *ctx, const gtao_denoisers_result *r, cJSON *summary);
+/* Each subsection's tables are gtlab's 256x256 runs (r); its claims-table
+ * rows come from the runs in the talk's setting (t: a 1920x1080 frame at
+ * half resolution, issue 42 item 4), which a paragraph states beside them. */
+void gtao_pattern_section(report_context *ctx, const gtao_pattern_result *r, const gtao_talk_result *t,
+                          cJSON *summary);
+void gtao_half_res_section(report_context *ctx, const gtao_half_res_result *r, const gtao_talk_result *t,
+                           cJSON *summary);
+void gtao_denoisers_section(report_context *ctx, const gtao_denoisers_result *r, const gtao_talk_result *t,
+                            cJSON *summary);
+/* "boxes and cornell": the talk-setting scenes in words ("no scene" if none). */
+void gtao_talk_scenes_text(const gtao_talk_result *t, char *text, size_t size);
+/* The same of any list of names. */
+void gtao_scene_names_text(const char (*names)[64], int count, char *text, size_t size);
 
 #endif

@@ -9,6 +9,7 @@
 #include "core/exr_io.h"
 #include "core/reference_schema.h"
 #include "core/run_inputs.h"
+#include "raytracer/reference_render.h"
 
 ss_camera approx_ss_camera(const camera *cam)
 {
@@ -78,6 +79,22 @@ int approx_from_image(const char *path, const char *camera_path, approx_input *i
 }
 
 void approx_input_free(approx_input *in) { image_free(&in->img); }
+
+int approx_render_gbuffer(const scene *s, const char *name, const camera *cam, int threads, approx_input *in,
+                          gt_error *e)
+{
+    memset(in, 0, sizeof *in);
+    in->cam = *cam;
+    reference_request req = {.quantity = QUANTITY_GBUFFER, .sampling = {.threads = threads}, .normals = NORMAL_SHADING};
+    render_stats stats;
+    if (reference_render(s, name, cam, &req, &in->img, &stats, e) != 0)
+        return -1;
+    if (ss_gbuffer_from_image(&in->img, name, approx_ss_camera(cam), &in->g, e) != 0) {
+        image_free(&in->img);
+        return -1;
+    }
+    return 0;
+}
 
 int approx_output_init(const approx_input *in, const char *technique, const char *settings, image *out)
 {

@@ -12,6 +12,7 @@
 #include "core/image.h"
 #include "realtime/screen_space.h"
 #include "scene/camera.h"
+#include "scene/scene.h"
 
 typedef struct {
     image img;      /* every channel of the file (a reference's too, e.g. ao.V) */
@@ -30,6 +31,12 @@ int approx_load(const char *path, const char *camera_path, approx_input *in, gt_
  * frees it on failure). */
 int approx_from_image(const char *path, const char *camera_path, approx_input *in, gt_error *e);
 void approx_input_free(approx_input *in);
+/* The G-buffer of scene s (named `name` in errors and the header) at camera
+ * cam, rendered by the ray tracer (primary rays only, shading normals) into
+ * in, its camera cam: what a real-time renderer's G-buffer pass gives.
+ * Returns 0, or -1 with e (nothing to free then). */
+int approx_render_gbuffer(const scene *s, const char *name, const camera *cam, int threads, approx_input *in,
+                          gt_error *e);
 
 /* A fresh output image of the input's size holding mask.A and the header
  * (gtlab.quantity = "approx", gtlab.technique, gtlab.settings, and the

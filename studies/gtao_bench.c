@@ -11,21 +11,14 @@
 #include "scene/scene_loaders.h"
 #include "studies/gbuffer_input.h"
 
-typedef struct {
-    image img;
-    ss_gbuffer g;
-    camera cam;
-} bench_gbuffer;
+typedef approx_input bench_gbuffer;
 
 static int render_gbuffer(const scene *s, int width, int height, int threads, bench_gbuffer *b, gt_error *e)
 {
-    if (scene_choose_camera(s, NULL, width, height, &b->cam, e) != 0)
+    camera cam;
+    if (scene_choose_camera(s, NULL, width, height, &cam, e) != 0)
         return -1;
-    reference_request req = {.quantity = QUANTITY_GBUFFER, .sampling = {.threads = threads}, .normals = NORMAL_SHADING};
-    render_stats stats;
-    if (reference_render(s, s->name, &b->cam, &req, &b->img, &stats, e) != 0)
-        return -1;
-    return ss_gbuffer_from_image(&b->img, s->name, approx_ss_camera(&b->cam), &b->g, e);
+    return approx_render_gbuffer(s, s->name, &cam, threads, b, e);
 }
 
 /* Best seconds per frame of p over `repeats` passes. */

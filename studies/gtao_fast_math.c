@@ -10,6 +10,7 @@
 #include "fitters/ceres_bridge.h"
 #include "studies/study_scenes.h"
 #include "studies/gtao_scene_refs.h"
+#include "studies/gtao_talk_setting.h"
 
 const char *const fast_acos_variant_names[FAST_ACOS_VARIANTS] = {
     "exact acosf", "talk, sqrt constant as transcribed", "talk (Drobot's sqrt constant)", "slope refitted",
@@ -201,22 +202,75 @@ static double rmse_of(const float *a, const float *b, const float *mask, size_t 
     return count ? sqrt(sum / (double)count) : 0.0;
 }
 
+/* GTAO with p's fast maths on into `on`, off into `off`. */
+static int on_off(const ss_gbuffer *g, gtao_params p, const char *name, float *on, float *off, gt_error *e)
+{
+    p.fast_math = 1;
+    if (gtao_render(g, &p, on, NULL) != 0)
+        return gt_error_set(e, name, "out of memory");
+    p.fast_math = 0;
+    if (gtao_render(g, &p, off, NULL) != 0)
+        return gt_error_set(e, name, "out of memory");
+    return 0;
+}
+
 /* (a): GTAO medium, one frame, fast maths on against off. */
 static int medium_on_off(const gtao_scene_refs *s, float *on, float *off, gtao_fast_math_scene *x, gt_error *e)
 {
-    gtao_params p = gtao_scene_params(s, GTAO_PRESET_MEDIUM);
-    p.fast_math = 1;
-    if (gtao_render(&s->in.g, &p, on, NULL) != 0)
-        return gt_error_set(e, s->scene, "out of memory");
-    p.fast_math = 0;
-    if (gtao_render(&s->in.g, &p, off, NULL) != 0)
-        return gt_error_set(e, s->scene, "out of memory");
+    if (on_off(&s->in.g, gtao_scene_params(s, GTAO_PRESET_MEDIUM), s->scene, on, off, e) != 0)
+        return -1;
     shift_stats(on, off, s->mask, (size_t)s->width * s->height, &x->medium_shift_mean, &x->medium_shift_max);
     if (cluster_mean_paired_sq_error(on, off, s->hf_ao, s->mask, s->width, s->height, CLUSTER_MEAN_SIDE,
                                    &x->medium_paired_hf) != 0 ||
         cluster_mean_abs_difference(on, off, s->mask, s->width, s->height, CLUSTER_MEAN_SIDE, &x->medium_change) != 0 ||
         cluster_mean_code_changes(on, off, s->mask, s->width, s->height, CLUSTER_MEAN_SIDE, &x->medium_codes) != 0)
         return gt_error_set(e, s->scene, "no pixel inside the mask, or out of memory");
+    return 0;
+}
+
+/* (c) on one scene: GTAO medium at the talk's radius on and off on the
+ * half-resolution pass of its 1080p frame. */
+static int talk_on_off(const study_context *ctx, const gtao_scene_refs *s, gtao_fast_math_result *r,
+                       cluster_mean *change, cluster_mean *codes, gt_error *e)
+{
+    gtao_talk_frame f;
+    if (gtao_talk_frame_render(ctx, s->scene, &s->in.cam, &f, e) != 0)
+        return -1;
+    const ss_gbuffer *g = &f.half.g;
+    size_t n = (size_t)g->width * g->height;
+    float *on = malloc(sizeof *on * n), *off = malloc(sizeof *off * n);
+    gtao_params p = gtao_scene_params(s, GTAO_PRESET_MEDIUM);
+    gtao_talk_radius(f.camera_distance, g, &p);
+    int rc = on && off ? on_off(g, p, s->scene, on, off, e) : gt_error_set(e, s->scene, "out of memory");
+    if (rc == 0) {
+        double mean, max;
+        shift_stats(on, off, g->mask, n, &mean, &max);
+        r->talk_shift_max = fmax(r->talk_shift_max, max);
+        r->talk_width = g->width, r->talk_height = g->height;
+        if (cluster_mean_abs_difference(on, off, g->mask, g->width, g->height, CLUSTER_MEAN_SIDE, change) != 0 ||
+            cluster_mean_code_changes(on, off, g->mask, g->width, g->height, CLUSTER_MEAN_SIDE, codes) != 0)
+            rc = gt_error_set(e, s->scene, "no pixel inside the mask, or out of memory");
+    }
+    free(on);
+    free(off);
+    gtao_talk_frame_free(&f);
+    return rc;
+}
+
+/* (c) over the talk-setting scenes, pooled. */
+static int talk_setting(const study_context *ctx, const gtao_scene_refs *refs, gtao_fast_math_result *r, gt_error *e)
+{
+    cluster_mean change[FAST_MATH_TALK_SCENES], codes[FAST_MATH_TALK_SCENES];
+    for (int s = 0; s < r->scene_count && r->talk_scene_count < FAST_MATH_TALK_SCENES; ++s) {
+        if (!gtao_talk_scene(ctx, refs[s].scene))
+            continue;
+        int k = r->talk_scene_count++;
+        memcpy(r->talk_scenes[k], refs[s].scene, sizeof r->talk_scenes[k]);
+        if (talk_on_off(ctx, &refs[s], r, &change[k], &codes[k], e) != 0)
+            return -1;
+    }
+    r->talk_change = cluster_mean_pool(change, r->talk_scene_count);
+    r->talk_codes = cluster_mean_pool(codes, r->talk_scene_count);
     return 0;
 }
 
@@ -401,7 +455,7 @@ static int run(const study_context *ctx, gtao_scene_refs *refs, replay_scene *rs
     for (int v = 0; v < FAST_ACOS_VARIANTS; ++v)
         r->function_error[v] = function_error(v == FAST_ACOS_EXACT ? NULL : &r->poly[v]);
     pool(r);
-    return 0;
+    return talk_setting(ctx, refs, r, e);
 }
 
 int gtao_fast_math_study(const study_context *ctx, const gtao_shortcuts_request *rq, gtao_fast_math_result *out,

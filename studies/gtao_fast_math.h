@@ -18,7 +18,11 @@
  *     (AO - height-field reference)^2 with Ceres (fitters/ceres_bridge.h);
  *     their standard errors are jackknifed over scenes (each scene left out
  *     in turn), and each scene's held-out error is its paired difference
- *     against the talk's polynomial with the fit made without it. */
+ *     against the talk's polynomial with the fit made without it.
+ * (c) (a)'s change in the talk's setting (issue 42, item 4;
+ *     studies/gtao_talk_setting.h): GTAO medium on and off on the 960x540
+ *     half-resolution pass of a 1920x1080 frame of the talk-setting scenes,
+ *     at the talk's radius (no reference needed: the shortcut's own change). */
 #ifndef GTLAB_STUDIES_GTAO_FAST_MATH_H
 #define GTLAB_STUDIES_GTAO_FAST_MATH_H
 
@@ -37,7 +41,7 @@ typedef enum {
 } fast_acos_variant;
 extern const char *const fast_acos_variant_names[FAST_ACOS_VARIANTS];
 
-enum { FAST_MATH_MAX_SCENES = 16 };
+enum { FAST_MATH_MAX_SCENES = 16, FAST_MATH_TALK_SCENES = 4 };
 
 typedef struct {
     char scene[64];
@@ -71,6 +75,11 @@ typedef struct {
     double heldout_slope_gain_mean, heldout_slope_gain_se; /* mean over scenes, s.e. over scenes */
     double heldout_both_gain_mean, heldout_both_gain_se;
     double hf_mean_variance; /* the height-field references' noise, MSE units, mean over scenes */
+    /* (c): the talk's setting */
+    int talk_scene_count, talk_width, talk_height; /* the pass's size */
+    char talk_scenes[FAST_MATH_TALK_SCENES][64];
+    cluster_mean talk_change, talk_codes; /* pooled |AO_on - AO_off|, pixels whose 8-bit code differs */
+    double talk_shift_max;
 } gtao_fast_math_result;
 
 typedef struct {

@@ -131,9 +131,9 @@ static void one_radius(work *w, gtao_half_res_radius *k, gtao_half_res_result *r
         add_blocks(w, out, w->base, BLOCKS_ABSOLUTE, &k->change[v]);
         add_blocks(w, out, w->base, BLOCKS_CODE_CHANGED, &k->codes[v]);
     }
-    if (k->radius_fraction == 0.0)
+    if (k->radius_fraction == 0.0 && w->s->hf && w->s->ref3d)
         against_references(w, w->out, x); /* w->out holds the talk's, the last variant */
-    if (k->radius_fraction == GTAO_HALF_RES_4X_RADIUS)
+    if (k->radius_fraction == GTAO_HALF_RES_4X_RADIUS && !w->s->no_four_x)
         four_x(w, r);
 }
 
@@ -141,8 +141,9 @@ static void plan_radii(const gtao_shortcut_scene *s, gtao_half_res_result *r)
 {
     if (r->radius_count > 0)
         return;
-    const double *radii = s->preview ? preview_radii : production_radii;
-    r->radius_count = s->preview ? 3 : 5;
+    static const double claims_radius[] = {GTAO_HALF_RES_4X_RADIUS};
+    const double *radii = s->claim_radius_only ? claims_radius : s->preview ? preview_radii : production_radii;
+    r->radius_count = s->claim_radius_only ? 1 : s->preview ? 3 : 5;
     for (int k = 0; k < r->radius_count; ++k)
         r->radii[k].radius_fraction = radii[k];
 }

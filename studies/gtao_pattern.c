@@ -63,10 +63,10 @@ int gtao_pattern_scene_study(const gtao_shortcut_scene *s, const gtao_cycle *c, 
     const ss_gbuffer *g = s->g;
     size_t n = (size_t)g->width * g->height;
     float *scratch = malloc(sizeof(float) * n);
-    double hf_rmse;
+    double hf_rmse = 0.0;
     if (!scratch)
         return gt_error_set(e, s->name, "out of memory");
-    int rc = rmse_of(s, c->brute, s->hf, &hf_rmse, e);
+    int rc = s->hf ? rmse_of(s, c->brute, s->hf, &hf_rmse, e) : 0; /* no reference in the talk's setting */
     for (int k = 0; k < GTAO_PATTERN_RUNS && rc == 0; ++k)
         rc = run_orders(s, c, k, scratch, x, r, e);
     if (rc == 0 && (rc = rmse_of(s, c->raw_last, c->brute, &x->rmse_raw_cycle, e)) == 0) {

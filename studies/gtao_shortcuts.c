@@ -2,12 +2,14 @@
  * 24-frame cycle items 7 and 8 observe; see gtao_shortcuts.h. */
 #include "studies/gtao_shortcuts.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "realtime/gtao_denoiser.h"
 #include "realtime/gtao_pattern.h"
 #include "realtime/gtao_spatial_filter.h"
+#include "studies/gtao_talk_setting.h"
 
 const float gtao_clamp_windows[GTAO_CLAMP_WINDOWS] = {0.0f, 0.25f, 0.5f, 1.0f, 2.0f};
 
@@ -16,7 +18,7 @@ gtao_params gtao_cycle_params(const gtao_shortcut_scene *s, int pattern)
     gtao_params p;
     gtao_preset("medium", &p);
     p.radius = s->radius;
-    p.falloff = 0.0f;
+    p.falloff = s->falloff;
     p.max_radius_px = s->max_radius_px;
     p.pattern = pattern;
     p.frames = 1;
@@ -83,18 +85,21 @@ static gtao_cycle cycle_view(float **b)
     return c;
 }
 
-static int cycle_studies(const gtao_shortcut_scene *s, float **b, gtao_shortcuts_result *r, gt_error *e)
+static int cycle_studies(const gtao_shortcut_scene *s, float **b, gtao_pattern_result *pattern,
+                         gtao_denoisers_result *denoisers, gt_error *e)
 {
     if (brute_force(s, b[BRUTE]) != 0)
         return gt_error_set(e, s->name, "out of memory");
     run_cycle(s, b);
     gtao_cycle c = cycle_view(b);
-    if (gtao_pattern_scene_study(s, &c, &r->pattern, e) != 0)
+    if (gtao_pattern_scene_study(s, &c, pattern, e) != 0)
         return -1;
-    return gtao_denoisers_scene_study(s, &c, &r->denoisers, e);
+    return gtao_denoisers_scene_study(s, &c, denoisers, e);
 }
 
-int gtao_shortcuts_scene(const gtao_shortcut_scene *s, gtao_shortcuts_result *r, gt_error *e)
+/* The cycle of s observed by the pattern and denoiser studies. */
+static int cycle_scene(const gtao_shortcut_scene *s, gtao_pattern_result *pattern, gtao_denoisers_result *denoisers,
+                       gt_error *e)
 {
     size_t n = (size_t)s->g->width * s->g->height;
     float *storage = malloc(sizeof(float) * n * PLANES), *b[PLANES];
@@ -102,9 +107,40 @@ int gtao_shortcuts_scene(const gtao_shortcut_scene *s, gtao_shortcuts_result *r,
         return gt_error_set(e, s->name, "out of memory");
     for (int k = 0; k < PLANES; ++k)
         b[k] = storage + (size_t)k * n;
-    int rc = cycle_studies(s, b, r, e);
+    int rc = cycle_studies(s, b, pattern, denoisers, e);
     free(storage);
-    return rc != 0 ? -1 : gtao_half_res_scene_study(s, &r->half_res, e);
+    return rc;
+}
+
+int gtao_shortcuts_scene(const gtao_shortcut_scene *s, gtao_shortcuts_result *r, gt_error *e)
+{
+    if (cycle_scene(s, &r->pattern, &r->denoisers, e) != 0)
+        return -1;
+    return gtao_half_res_scene_study(s, &r->half_res, e);
+}
+
+int gtao_shortcuts_talk_scene(const char *name, const ss_gbuffer *full, const ss_gbuffer *half,
+                              float camera_distance, gtao_talk_result *r, gt_error *e)
+{
+    if (r->scene_count == GTAO_TALK_MAX_SCENES)
+        return gt_error_set(e, name, "more than %d scenes in the talk's setting", GTAO_TALK_MAX_SCENES);
+    snprintf(r->scenes[r->scene_count++], sizeof r->scenes[0], "%s", name);
+    r->full_width = full->width, r->full_height = full->height;
+    r->half_width = half->width, r->half_height = half->height;
+    gtao_params talk = {0};
+    gtao_talk_radius(camera_distance, half, &talk);
+    gtao_shortcut_scene f = {.name = name, .g = full, .radius = talk.radius, .max_radius_px = (float)full->width,
+                             .camera_distance = camera_distance, .preview = 1, .claim_radius_only = 1,
+                             .no_four_x = 1, .falloff = talk.falloff};
+    gtao_shortcut_scene h = f;
+    h.g = half;
+    h.max_radius_px = talk.max_radius_px;
+    h.no_four_x = 0;
+    int rc = gtao_half_res_scene_study(&f, &r->half_res, e) != 0 || gtao_half_res_scene_study(&h, &r->half_pass, e) != 0 ||
+                     cycle_scene(&h, &r->pattern, &r->denoisers, e) != 0
+                 ? -1
+                 : 0;
+    return rc;
 }
 
 void gtao_shortcuts_finish(gtao_shortcuts_result *r)
@@ -112,4 +148,8 @@ void gtao_shortcuts_finish(gtao_shortcuts_result *r)
     gtao_pattern_finish(&r->pattern);
     gtao_half_res_finish(&r->half_res);
     gtao_denoisers_finish(&r->denoisers);
+    gtao_pattern_finish(&r->talk.pattern);
+    gtao_half_res_finish(&r->talk.half_res);
+    gtao_half_res_finish(&r->talk.half_pass);
+    gtao_denoisers_finish(&r->talk.denoisers);
 }

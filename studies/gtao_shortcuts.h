@@ -37,6 +37,9 @@ typedef struct {
     float radius, max_radius_px;  /* the gtao stage's: no radius limit */
     float camera_distance;        /* from the camera to its target: the unit of the item-6 radii */
     int preview;                  /* preview quality: fewer runs */
+    int claim_radius_only;        /* half resolution: only the claims' radius (GTAO_HALF_RES_4X_RADIUS) */
+    int no_four_x;                /* half resolution: not the "4x samples" runs */
+    float falloff;                /* the cycle's (0: none, the references') */
 } gtao_shortcut_scene;
 
 /* The talk's configuration over its 24-frame cycle, rendered once per
@@ -154,14 +157,40 @@ typedef struct {
     block_mean clamp_minus_none[GTAO_CLAMP_WINDOWS];    /* (clamped)^2 - (no clamp)^2 */
 } gtao_denoisers_result;
 
+/* The claims rows in the talk's setting (issue 42, item 4;
+ * studies/gtao_talk_setting.h): a 1920x1080 G-buffer and its 960x540 half.
+ * Half resolution's own change: the 960x540 pass with the MIN chain against
+ * the 1920x1080 search (half_res, the claims' radius only); the MIN filter
+ * within the 960x540 pass (half_pass: its "4x samples" runs); the pattern
+ * and the denoisers on the 960x540 pass (the talk's: the AO, its filter and
+ * accumulation run at half resolution). The cycle at the talk's radius
+ * (gtao_talk_radius), the half-resolution runs at their own radius; no
+ * reference, so no "against the references" figures. */
+enum { GTAO_TALK_MAX_SCENES = 4 };
+typedef struct {
+    int scene_count;
+    char scenes[GTAO_TALK_MAX_SCENES][64];
+    int full_width, full_height, half_width, half_height;
+    gtao_half_res_result half_res, half_pass;
+    gtao_pattern_result pattern;
+    gtao_denoisers_result denoisers;
+    double seconds, cpu_seconds; /* wall clock and CPU time of the runs, G-buffers included (gtao_validation) */
+} gtao_talk_result;
+
 typedef struct {
     gtao_pattern_result pattern;
     gtao_half_res_result half_res;
     gtao_denoisers_result denoisers;
+    gtao_talk_result talk; /* the claims rows at the talk's resolution */
 } gtao_shortcuts_result;
 
 /* Every shortcut study on one scene, its rows and pooled blocks added to r. */
 int gtao_shortcuts_scene(const gtao_shortcut_scene *s, gtao_shortcuts_result *r, gt_error *e);
+/* The claims rows' studies on one scene in the talk's setting: `full` the
+ * 1920x1080 G-buffer, `half` its 960x540 half, camera_distance from the
+ * camera to its target. */
+int gtao_shortcuts_talk_scene(const char *name, const ss_gbuffer *full, const ss_gbuffer *half,
+                              float camera_distance, gtao_talk_result *r, gt_error *e);
 /* The pooled figures, after the last scene. */
 void gtao_shortcuts_finish(gtao_shortcuts_result *r);
 

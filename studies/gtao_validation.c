@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "core/atomic_file.h"
 #include "core/exr_io.h"
@@ -21,6 +22,7 @@
 #include "studies/study_scenes.h"
 #include "studies/gbuffer_input.h"
 #include "studies/gtao_scene_refs.h"
+#include "studies/gtao_talk_setting.h"
 
 const int gtao_convergence_steps[GTAO_CONVERGENCE_STEPS] = {2, 4, 8, 16};
 const int gtao_convergence_slices[GTAO_CONVERGENCE_SLICES] = {1, 2, 4, 8, 16};
@@ -259,6 +261,22 @@ static int score_scene(const scene_data *d, const image *hf, const char *figures
     return rc;
 }
 
+/* The claims rows' studies in the talk's setting: the scene's 1080p frame at half resolution. */
+static int talk_setting(const study_context *ctx, const char *name, const camera *cam, gtao_talk_result *r,
+                        gt_error *e)
+{
+    double t0 = seconds_now();
+    clock_t c0 = clock();
+    gtao_talk_frame f;
+    if (gtao_talk_frame_render(ctx, name, cam, &f, e) != 0)
+        return -1;
+    int rc = gtao_shortcuts_talk_scene(name, &f.full.g, &f.half.g, f.camera_distance, r, e);
+    gtao_talk_frame_free(&f);
+    r->seconds += seconds_now() - t0;
+    r->cpu_seconds += (double)(clock() - c0) / CLOCKS_PER_SEC;
+    return rc;
+}
+
 static int study_scene(const study_context *ctx, const char *refs_dir, const char *dir, const char *figures,
                        gtao_validation_result *r, gtao_validation_scene *s, gt_error *e)
 {
@@ -274,9 +292,11 @@ static int study_scene(const study_context *ctx, const char *refs_dir, const cha
     int rc = score_scene(&d, &hf, figures, s, e);
     gtao_shortcut_scene view = {s->scene, d.g, d.hf, d.ref3d, s->hf_mean_variance, s->ref3d_mean_variance,
                                 STUDY_RADIUS, (float)d.g->width,
-                                v3_length(v3_sub(in.cam.target, in.cam.position)), ctx->quality == QUALITY_PREVIEW};
+                                v3_length(v3_sub(in.cam.target, in.cam.position)), ctx->quality == QUALITY_PREVIEW, 0, 0, 0.0f};
     if (rc == 0)
         rc = gtao_shortcuts_scene(&view, &r->shortcuts, e);
+    if (rc == 0 && gtao_talk_scene(ctx, s->scene))
+        rc = talk_setting(ctx, s->scene, &in.cam, &r->shortcuts.talk, e);
     image_free(&hf);
     approx_input_free(&in);
     return rc;

@@ -92,6 +92,16 @@ static void test_fast_math(const study_context *ctx, const gtao_shortcuts_reques
         CHECK(x->medium_codes.mean >= 0.0 && x->medium_codes.mean <= 1.0);
     }
     CHECK(r.medium_change.mean > 0.0 && r.medium_change.mean <= r.medium_shift_max);
+    /* the claims row in the talk's setting: the 960x540 pass of a 1920x1080
+     * frame of the preview's talk-setting scenes; the fast maths move it,
+     * the mean change no more than the largest */
+    CHECK_MSG(r.talk_scene_count == 2 && strcmp(r.talk_scenes[0], "boxes") == 0 &&
+                  strcmp(r.talk_scenes[1], "cornell") == 0,
+              "%d scenes", r.talk_scene_count);
+    CHECK_MSG(r.talk_width == 960 && r.talk_height == 540, "%dx%d", r.talk_width, r.talk_height);
+    CHECK_MSG(r.talk_change.mean > 0.0 && r.talk_change.mean <= r.talk_shift_max && r.talk_change.se > 0.0, "%g %g",
+              r.talk_change.mean, r.talk_change.se);
+    CHECK(r.talk_codes.mean >= 0.0 && r.talk_codes.mean <= 1.0);
     /* The function error of the talk's polynomial with Drobot's constant is
      * smaller than with the slide's (the constant's correction). */
     CHECK(r.function_error[FAST_ACOS_TALK] < r.function_error[FAST_ACOS_TRANSCRIBED]);
