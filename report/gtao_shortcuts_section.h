@@ -5,6 +5,7 @@
 #ifndef GTLAB_REPORT_GTAO_SHORTCUTS_SECTION_H
 #define GTLAB_REPORT_GTAO_SHORTCUTS_SECTION_H
 
+#include "report/gtao_talk_text.h"
 #include "report/report_context.h"
 #include "studies/gtao_shortcuts.h"
 
@@ -19,9 +20,5 @@ void gtao_half_res_section(report_context *ctx, const gtao_half_res_result *r, c
                            cJSON *summary);
 void gtao_denoisers_section(report_context *ctx, const gtao_denoisers_result *r, const gtao_talk_result *t,
                             cJSON *summary);
-/* "boxes and cornell": the talk-setting scenes in words ("no scene" if none). */
-void gtao_talk_scenes_text(const gtao_talk_result *t, char *text, size_t size);
-/* The same of any list of names. */
-void gtao_scene_names_text(const char (*names)[64], int count, char *text, size_t size);
 
 #endif

@@ -111,6 +111,10 @@ def main():
     build = sys.argv[1]
     root = os.path.realpath(os.path.join(os.path.dirname(__file__), "..", ".."))
     files = objects(build, root)
+    missing = [obj for obj in files.values() if not os.path.exists(obj)]
+    if missing:
+        print("file_call_circles: %s is not built (build %s first)" % (missing[0], build))
+        return 1
     defined, referred = {}, {}
     for rel, obj in files.items():
         defined[rel], referred[rel] = symbols(obj)
