@@ -28,8 +28,6 @@ KNOWN = [
     ["raytracer/environment_quantity.c", "raytracer/reference_quantities.c",
      "raytracer/specular_occlusion_quantity.c"],
     ["luts/atmosphere_multiple_scattering.c", "luts/atmosphere_single_scattering.c"],
-    # any user function is scored by the multi-bounce scorer, which SO reuses
-    ["studies/multibounce_score.c", "studies/specular_occlusion_score.c"],
     ["studies/sphere_light.c", "studies/sphere_light_sun.c", "studies/sphere_light_terminator.c",
      "studies/sphere_light_units.c"],
 ]
