@@ -5,7 +5,7 @@
 #include "cli/cli.h"
 #include "cli/cli_options.h"
 #include "cli/subcommands.h"
-#include "studies/multibounce_score.h"
+#include "studies/shader_scores.h"
 #include "studies/shader_run.h"
 
 enum { MAX_PARAMS = 64 };
@@ -60,20 +60,22 @@ static const cli_command score_command = {"shader score", "Scores per-sample fun
 
 static int shader_score_command(int argc, char **argv)
 {
-    const char *functions[MB_SCORE_MAX_FILES], *plugins[MB_SCORE_MAX_FILES], *aos[MB_SCORE_MAX_FILES];
-    cli_list f = {functions, 0, MB_SCORE_MAX_FILES, "--function"}, p = {plugins, 0, MB_SCORE_MAX_FILES, "--plugin"};
-    cli_list a = {aos, 0, MB_SCORE_MAX_FILES, "--ao"};
-    multibounce_score_request r = {.functions = functions, .plugins = plugins, .aos = aos, .timeout = 10.0};
+    enum { MAX = FUNCTION_SCORE_MAX_FILES };
+    const char *functions[MAX], *plugins[MAX], *aos[MAX];
+    cli_list f = {functions, 0, MAX, "--function"}, p = {plugins, 0, MAX, "--plugin"}, a = {aos, 0, MAX, "--ao"};
+    shader_score_request r = {.aos = aos, .files = {.functions = functions, .plugins = plugins, .timeout = 10.0}};
     cli_arguments refs;
     int status;
-    if (cli_options_parse(&score_command, (void *[]){&f, &p, &r.quantity, &a, &r.timeout, &r.device, &refs}, argc, argv,
+    if (cli_options_parse(&score_command,
+                          (void *[]){&f, &p, &r.quantity, &a, &r.files.timeout, &r.files.device, &refs}, argc, argv,
                           &status) != 0)
         return status;
-    r.function_count = f.count, r.plugin_count = p.count, r.reference_count = refs.count, r.ao_count = a.count;
+    r.files.function_count = f.count, r.files.plugin_count = p.count, r.reference_count = refs.count;
+    r.ao_count = a.count;
     r.references = (const char *const *)refs.values;
-    static multibounce_score_result result;
+    static function_score_result result;
     gt_error e;
-    return multibounce_score(&r, &result, &e) != 0 ? cli_fail(&e) : (multibounce_score_print(stdout, &result), EXIT_OK);
+    return shader_score(&r, &result, &e) != 0 ? cli_fail(&e) : (function_score_print(stdout, &result), EXIT_OK);
 }
 
 static const cli_subcommand subcommands[] = {{"run", shader_run_command, "a screen-space shader over a G-buffer"},

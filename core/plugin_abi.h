@@ -19,6 +19,11 @@
  *                          reflection vector, the perceptual roughness
  *                          (alpha = roughness^2) and n.v, for `count` samples
  *
+ * Every entry point has one shape: k float arrays in (the inputs of the
+ * quantity's function contract, gpu/function_shader.h, in its order), one
+ * out, and the count: gtlab_plugin_fn2 and gtlab_plugin_fn4 below, which the
+ * loader (plugins/plugin_loader.h) calls for any quantity.
+ *
  * An entry point must be pure: the same inputs give the same outputs, on
  * any thread, and it may be called from several threads at once on disjoint
  * arrays. examples/multibounce_plugin.c and examples/specular_occlusion_plugin.c
@@ -34,6 +39,12 @@
 #define GTLAB_PLUGIN_ABI_SYMBOL "gtlab_plugin_abi"
 typedef int (*gtlab_plugin_abi_fn)(void);
 
+/* The entry points' shapes by their number of inputs: out[i] = f(in0[i], ...), i < count. */
+typedef void (*gtlab_plugin_fn2)(const float *in0, const float *in1, float *out, size_t count);
+typedef void (*gtlab_plugin_fn4)(const float *in0, const float *in1, const float *in2, const float *in3, float *out,
+                                 size_t count);
+enum { GTLAB_PLUGIN_MAX_INPUTS = 4 };
+
 #define GTLAB_MULTIBOUNCE_V1_SYMBOL "gtlab_multibounce_v1"
 /* out[i] = V'_d(visibility[i], albedo[i]), i < count. */
 typedef void (*gtlab_multibounce_v1_fn)(const float *visibility, const float *albedo, float *out, size_t count);
@@ -42,5 +53,8 @@ typedef void (*gtlab_multibounce_v1_fn)(const float *visibility, const float *al
 /* out[i] = V_s(ao[i], beta[i], roughness[i], n_dot_v[i]), i < count. */
 typedef void (*gtlab_specular_occlusion_v1_fn)(const float *ao, const float *beta, const float *roughness,
                                                const float *n_dot_v, float *out, size_t count);
+
+/* Every entry point this gtlab knows (a plug-in must export one). */
+#define GTLAB_PLUGIN_ENTRY_POINTS {GTLAB_MULTIBOUNCE_V1_SYMBOL, GTLAB_SPECULAR_OCCLUSION_V1_SYMBOL}
 
 #endif

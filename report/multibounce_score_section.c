@@ -8,16 +8,16 @@
 #define COLUMNS(c) (int)(sizeof(c) / sizeof((c)[0]))
 
 static const report_column variant_columns[] = {
-    REPORT_TEXT("variant", "name", multibounce_score_variant, name),
-    REPORT_STRING("from", "kind", multibounce_score_variant, kind),
-    REPORT_REAL("mean DSSIM", "dssim", "%.3e", multibounce_score_variant, dssim),
-    REPORT_REAL("DSSIM floor", "noise_floor_dssim", "%.3e", multibounce_score_variant, dssim_floor),
-    REPORT_REAL("mean RMSE", "rmse", "%.5f", multibounce_score_variant, rmse),
-    REPORT_REAL("RMSE floor", "noise_floor_rmse", "%.5f", multibounce_score_variant, rmse_floor),
+    REPORT_TEXT("variant", "name", function_score_variant, name),
+    REPORT_STRING("from", "kind", function_score_variant, kind),
+    REPORT_REAL("mean DSSIM", "dssim", "%.3e", function_score_variant, dssim),
+    REPORT_REAL("DSSIM floor", "noise_floor_dssim", "%.3e", function_score_variant, dssim_floor),
+    REPORT_REAL("mean RMSE", "rmse", "%.5f", function_score_variant, rmse),
+    REPORT_REAL("RMSE floor", "noise_floor_rmse", "%.5f", function_score_variant, rmse_floor),
 };
 
 /* The table of the variants' means, and summary.json's `key`: {count_name: rows, variants: [...]}. */
-static void variant_table(report_context *ctx, const multibounce_score_result *r, const char *key,
+static void variant_table(report_context *ctx, const function_score_result *r, const char *key,
                           const char *count_name)
 {
     cJSON *o = cJSON_AddObjectToObject(ctx->summary, key);
@@ -26,7 +26,7 @@ static void variant_table(report_context *ctx, const multibounce_score_result *r
                 r->variants, sizeof r->variants[0], r->variant_count);
 }
 
-int multibounce_score_section(report_context *ctx, const multibounce_score_result *r, gt_error *e)
+int multibounce_score_section(report_context *ctx, const function_score_result *r, gt_error *e)
 {
     (void)e;
     if (r->variant_count == 0)
@@ -44,7 +44,7 @@ int multibounce_score_section(report_context *ctx, const multibounce_score_resul
     return 0;
 }
 
-int specular_occlusion_score_section(report_context *ctx, const multibounce_score_result *r, gt_error *e)
+int specular_occlusion_score_section(report_context *ctx, const function_score_result *r, gt_error *e)
 {
     (void)e;
     if (r->variant_count == 0)

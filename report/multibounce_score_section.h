@@ -12,11 +12,11 @@
 #include "studies/shader_scores.h"
 
 /* Adds the section (nothing when r->variant_count == 0); returns 0. */
-int multibounce_score_section(report_context *ctx, const multibounce_score_result *r, gt_error *e);
+int multibounce_score_section(report_context *ctx, const function_score_result *r, gt_error *e);
 
 /* The same for specular occlusion ("Your shaders and plug-ins: specular
  * occlusion", summary.json's shader_scores_specular_occlusion). */
-int specular_occlusion_score_section(report_context *ctx, const multibounce_score_result *r, gt_error *e);
+int specular_occlusion_score_section(report_context *ctx, const function_score_result *r, gt_error *e);
 
 /* The stage's sections: multi-bounce, then specular occlusion. */
 int shader_scores_section(report_context *ctx, const shader_scores_result *r, gt_error *e);

@@ -18,31 +18,6 @@
 
 enum { DEVICE_TIMEOUT_SECONDS = 10 }; /* per frame, as `gtlab shader run` */
 
-/* The plane of the shader's gtlab.output ao.V, or -1 with e. */
-static int find_ao_plane(screen_shader_program *p, const char *path, gt_error *e)
-{
-    for (int k = 0; k < p->interface.output_count; ++k)
-        if (strcmp(p->interface.output_name[k], CH_AO) == 0)
-            return p->ao_plane = k, 0;
-    return gt_error_set(e, path, "no 'gtlab.output %s' line: the stage scores %s", CH_AO, CH_AO);
-}
-
-int screen_shader_prepare(const study_screen_shader *s, screen_shader_program *out, gt_error *e)
-{
-    char *source = NULL;
-    const char *params[PROJECT_MAX_PARAMS];
-    memset(out, 0, sizeof *out);
-    for (int i = 0; i < s->param_count; ++i)
-        params[i] = s->params[i];
-    int rc = gpu_shader_interface_load(s->path, params, s->param_count, &source, &out->interface, e) != 0 ||
-             find_ao_plane(out, s->path, e) != 0 ||
-             gpu_compile_compute(source, s->path, gpu_source_language_of(s->path), NULL, &out->spirv, e) != 0;
-    free(source);
-    return rc ? -1 : 0;
-}
-
-void screen_shader_program_free(screen_shader_program *p) { gpu_spirv_free(&p->spirv); }
-
 /* gtlab's C GTAO in shaders/gtao.glsl's configuration at its defaults. */
 static void c_gtao(const gtao_scene_refs *s, float *ao)
 {
@@ -76,7 +51,7 @@ static int run_shader(stage_state *st, const gtao_scene_refs *s, const gpu_scree
     if (gpu_screen_pass(st->device, &p->spirv, path, in, p->interface.param_value, p->interface.param_count,
                         p->interface.output_count, st->planes, DEVICE_TIMEOUT_SECONDS, NULL, e) != 0)
         return -1;
-    const float *ao = st->planes + (size_t)p->ao_plane * (size_t)s->width * (size_t)s->height;
+    const float *ao = st->planes + (size_t)p->plane * (size_t)s->width * (size_t)s->height;
     fold_max_diff(s, ao, st->c, &out->variants[v].max_diff_vs_c);
     return ao_image_score_compute(s, ao, st->c, &out->scores[out->scene_count][v], e);
 }
@@ -131,7 +106,7 @@ static int prepare_all(stage_state *st, screen_shader_score_result *out, gt_erro
         screen_shader_variant *v = &out->variants[1 + st->prepared];
         snprintf(v->name, sizeof v->name, "%s", path_file_name(p->screen_shaders[st->prepared].path));
         v->kind = "shader";
-        if (screen_shader_prepare(&p->screen_shaders[st->prepared], &st->programs[st->prepared], e) != 0)
+        if (study_screen_shader_prepare(&p->screen_shaders[st->prepared], &st->programs[st->prepared], e) != 0)
             return -1;
     }
     out->variant_count = 1 + p->screen_shader_count;

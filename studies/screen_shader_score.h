@@ -16,28 +16,12 @@
 #ifndef GTLAB_STUDIES_SCREEN_SHADER_SCORE_H
 #define GTLAB_STUDIES_SCREEN_SHADER_SCORE_H
 
-#include "gpu/shader_compiler.h"
-#include "gpu/shader_interface.h"
 #include "metrics/cluster_mean.h"
 #include "studies/ao_image_score.h"
 #include "studies/study.h"
 #include "studies/study_project.h"
 
 enum { SCREEN_SCORE_MAX_VARIANTS = 1 + PROJECT_MAX_FILES, SCREEN_SCORE_MAX_SCENES = 16, SCREEN_SCORE_NAME = 128 };
-
-/* A project's shader made ready: its declarations with the project's
- * parameters applied, its SPIR-V, the output plane that holds ao.V. */
-typedef struct {
-    gpu_shader_interface interface;
-    gpu_spirv spirv;
-    int ao_plane;
-} screen_shader_program;
-
-/* Reads, checks and compiles s (no device needed). Returns 0, or -1 with e
- * the one line naming the file (shaderc's message and line for a compile
- * error, an unknown parameter, no gtlab.output ao.V). */
-int screen_shader_prepare(const study_screen_shader *s, screen_shader_program *out, gt_error *e);
-void screen_shader_program_free(screen_shader_program *p);
 
 typedef struct {
     char name[SCREEN_SCORE_NAME]; /* "GTAO (C)" or the file's name */

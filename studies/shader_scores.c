@@ -6,11 +6,15 @@
 
 #include "gpu/function_shader.h"
 #include "gpu/shader_compiler.h"
-#include "studies/plugin.h"
+#include "plugins/plugin_loader.h"
+#include "studies/multibounce_score.h"
 #include "studies/specular_occlusion_score.h"
 #include "studies/study_project.h"
 
 enum { QUANTITY_MB, QUANTITY_SO, QUANTITIES };
+
+static const function_score_quantity *const kQuantities[QUANTITIES] = {&multibounce_scored_quantity,
+                                                                       &specular_occlusion_scored_quantity};
 
 typedef struct {
     const char *functions[PROJECT_MAX_FILES], *plugins[PROJECT_MAX_FILES];
@@ -20,19 +24,17 @@ typedef struct {
 /* A function file into the list of each quantity it defines. */
 static int sort_function(const char *path, quantity_files q[QUANTITIES], gt_error *e)
 {
-    static const gpu_function_contract *const contracts[QUANTITIES] = {&gpu_function_multibounce,
-                                                                        &gpu_function_specular_occlusion};
     char *text;
     if (gpu_read_source(path, &text, e) != 0)
         return -1;
     int found = 0;
     for (int k = 0; k < QUANTITIES; ++k)
-        if (gpu_function_defines(contracts[k], text))
+        if (gpu_function_defines(kQuantities[k]->function, text))
             q[k].functions[q[k].function_count++] = path, found = 1;
     free(text);
     return found ? 0
                  : gt_error_set(e, path, "defines neither %s nor %s (the function contracts: docs/shaders.md)",
-                                contracts[0]->name, contracts[1]->name);
+                                kQuantities[0]->function->name, kQuantities[1]->function->name);
 }
 
 /* A plug-in into the list of each quantity it exports an entry point of. */
@@ -41,10 +43,9 @@ static int sort_plugin(const char *path, quantity_files q[QUANTITIES], gt_error 
     gtlab_plugin p;
     if (plugin_open(path, &p, e) != 0)
         return -1;
-    if (p.multibounce_v1)
-        q[QUANTITY_MB].plugins[q[QUANTITY_MB].plugin_count++] = path;
-    if (p.specular_occlusion_v1)
-        q[QUANTITY_SO].plugins[q[QUANTITY_SO].plugin_count++] = path;
+    for (int k = 0; k < QUANTITIES; ++k)
+        if (plugin_exports(&p, kQuantities[k]->plugin_symbol))
+            q[k].plugins[q[k].plugin_count++] = path;
     plugin_close(&p);
     return 0;
 }
@@ -70,4 +71,18 @@ int shader_scores_project(const study_context *ctx, shader_scores_result *out, g
         rc = specular_occlusion_score_project(ctx, so->functions, so->function_count, so->plugins, so->plugin_count,
                                               &out->specular_occlusion, e);
     return rc;
+}
+
+int shader_score(const shader_score_request *rq, function_score_result *out, gt_error *e)
+{
+    memset(out, 0, sizeof *out);
+    if (rq->quantity && strcmp(rq->quantity, SO_SCORE_QUANTITY) == 0) {
+        specular_occlusion_score_request so = {rq->references, rq->reference_count, rq->aos, rq->ao_count, rq->files};
+        return specular_occlusion_score(&so, out, e);
+    }
+    if (rq->quantity && strcmp(rq->quantity, "multibounce") != 0)
+        return gt_error_set(e, "--quantity", "'%s': gtlab scores multibounce and %s functions (so far)", rq->quantity,
+                            SO_SCORE_QUANTITY);
+    multibounce_score_request mb = {rq->references, rq->reference_count, rq->files};
+    return multibounce_score(&mb, out, e);
 }

@@ -1,5 +1,6 @@
 /* A user's specular-occlusion functions and plug-ins scored beside gtlab's
- * own variants (studies/specular_occlusion_score.h). */
+ * own variants (studies/specular_occlusion_score.h): the references, rows
+ * and built-ins; the rest is scoring/function_score.h's. */
 #include "studies/specular_occlusion_score.h"
 
 #include <math.h>
@@ -8,9 +9,8 @@
 
 #include "core/exr_io.h"
 #include "core/path_name.h"
+#include "core/plugin_abi.h"
 #include "core/reference_schema.h"
-#include "gpu/function_shader.h"
-#include "studies/plugin.h"
 #include "studies/specular_occlusion.h"
 #include "studies/specular_occlusion_inputs.h"
 #include "studies/study_scenes.h"
@@ -19,66 +19,23 @@
 static const char *const kBuiltins[] = {"ao", "lagarde", "cone-exact:exp2-alpha", "cone-oat:exp2-alpha", "sg"};
 enum { BUILTINS = (int)(sizeof kBuiltins / sizeof kBuiltins[0]) };
 
+const function_score_quantity specular_occlusion_scored_quantity = {
+    "specular occlusion", &gpu_function_specular_occlusion, GTLAB_SPECULAR_OCCLUSION_V1_SYMBOL};
+
 typedef struct {
-    const multibounce_score_request *rq;
+    const specular_occlusion_score_request *rq;
     so_variant builtin[BUILTINS];
-    char *text[MB_SCORE_MAX_FILES]; /* the function files' texts */
-    gtlab_plugin plugin[MB_SCORE_MAX_FILES];
-    gpu_device *device; /* opened for the first function file */
+    function_scorer *scorer; /* the function files and plug-ins */
 } so_variants;
 
-static void name_variant(multibounce_score_result *out, const char *name, const char *kind)
-{
-    multibounce_score_variant *v = &out->variants[out->variant_count++];
-    snprintf(v->name, sizeof v->name, "%s", name);
-    v->kind = kind;
-}
-
 /* gtlab's variants, then each function file (checked against the contract) and plug-in. */
-static int load(so_variants *vs, multibounce_score_result *out, gt_error *e)
+static int load(so_variants *vs, function_score_result *out, gt_error *e)
 {
-    const multibounce_score_request *rq = vs->rq;
     for (int k = 0; k < BUILTINS; ++k) {
         so_variant_parse(kBuiltins[k], &vs->builtin[k]);
-        name_variant(out, kBuiltins[k], "gtlab");
+        function_score_add_builtin(out, kBuiltins[k]);
     }
-    for (int i = 0; i < rq->function_count; ++i) {
-        name_variant(out, path_file_name(rq->functions[i]), "function");
-        if (gpu_function_load(&gpu_function_specular_occlusion, rq->functions[i], &vs->text[i], e) != 0 ||
-            (!vs->device && gpu_device_open(rq->device, &vs->device, e) != 0))
-            return -1;
-        snprintf(out->device, sizeof out->device, "%s", gpu_device_name(vs->device));
-    }
-    for (int i = 0; i < rq->plugin_count; ++i) {
-        name_variant(out, path_file_name(rq->plugins[i]), "plug-in");
-        if (plugin_open(rq->plugins[i], &vs->plugin[i], e) != 0)
-            return -1;
-        if (!vs->plugin[i].specular_occlusion_v1)
-            return gt_error_set(e, rq->plugins[i], "exports no %s (specular occlusion, core/plugin_abi.h)",
-                                GTLAB_SPECULAR_OCCLUSION_V1_SYMBOL);
-    }
-    return 0;
-}
-
-static void release(so_variants *vs)
-{
-    for (int i = 0; i < MB_SCORE_MAX_FILES; ++i) {
-        free(vs->text[i]);
-        plugin_close(&vs->plugin[i]);
-    }
-    if (vs->device)
-        gpu_device_close(vs->device);
-}
-
-/* Function file i at the surface pixels (their ao, beta, roughness, n.v), 0 elsewhere. */
-static int apply_function(const so_variants *vs, int i, const so_pixel_inputs *in, float *out, gt_error *e)
-{
-    const float *const planes[4] = {in->ao_cosine, in->beta, in->roughness, in->n_dot_v};
-    const float constants[4] = {0};
-    double timeout = vs->rq->timeout > 0.0 ? vs->rq->timeout : 10.0;
-    return gpu_function_eval_masked(vs->device, &gpu_function_specular_occlusion, vs->text[i], vs->rq->functions[i],
-                                    planes, constants, in->mask, (size_t)in->width * (size_t)in->height, out, timeout,
-                                    e);
+    return function_scorer_open(&specular_occlusion_scored_quantity, &vs->rq->files, out, &vs->scorer, e);
 }
 
 /* Variant k's V_s at every pixel, 0 outside the mask: so_approx_evaluate's contract. */
@@ -88,21 +45,21 @@ static int apply(const so_variants *vs, int k, const so_pixel_inputs *in, float 
         so_approx_evaluate(in, &vs->builtin[k], out);
         return 0;
     }
-    k -= BUILTINS;
-    if (k < vs->rq->function_count)
-        return apply_function(vs, k, in, out, e);
-    k -= vs->rq->function_count;
-    return plugin_apply_specular_occlusion(&vs->plugin[k], vs->rq->plugins[k], in, out, e);
+    /* a function file or a plug-in at the surface pixels (their ao, beta, roughness, n.v) */
+    const float *const planes[4] = {in->ao_cosine, in->beta, in->roughness, in->n_dot_v};
+    const float constants[4] = {0};
+    return function_scorer_apply(vs->scorer, k, planes, constants, in->mask, (size_t)in->width * (size_t)in->height,
+                                 out, e);
 }
 
 /* One reference's row: its noise floor and every variant, as the study scores them. */
 static int score_row(const so_variants *vs, const image *ref, const aperture_case *c, const char *path, int count,
-                     multibounce_score_row *row, gt_error *e)
+                     function_score_row *row, gt_error *e)
 {
     const char *scene = image_get_attribute(ref, ATTR_SCENE);
     snprintf(row->scene, sizeof row->scene, "%s", scene ? scene : path_file_name(path));
     double roughness = so_reference_roughness(ref);
-    row->albedo = roughness < 0.0 ? NAN : roughness;
+    row->value = roughness < 0.0 ? NAN : roughness;
     if (so_study_ratio_noise_floor(ref, path, CH_SPECOCC, &row->noise_floor_dssim, &row->noise_floor_rmse, e) != 0)
         return -1;
     const so_pixel_inputs *in = &c->inputs;
@@ -116,12 +73,12 @@ static int score_row(const so_variants *vs, const image *ref, const aperture_cas
     return rc;
 }
 
-static int score_reference(const so_variants *vs, int i, multibounce_score_result *out, gt_error *e)
+static int score_reference(const so_variants *vs, int i, function_score_result *out, gt_error *e)
 {
     image ref, ao;
     aperture_case c;
     int loaded = 0;
-    const multibounce_score_request *rq = vs->rq;
+    const specular_occlusion_score_request *rq = vs->rq;
     int rc = aperture_cases_load(&rq->references[i], &rq->aos[i], 1, CH_SPECOCC, &ref, &ao, &c, &loaded, e);
     if (rc == 0)
         rc = score_row(vs, &ref, &c, rq->references[i], out->variant_count, &out->rows[out->row_count++], e);
@@ -129,35 +86,31 @@ static int score_reference(const so_variants *vs, int i, multibounce_score_resul
     return rc;
 }
 
-static int check_request(const multibounce_score_request *rq, gt_error *e)
+static int check_request(const specular_occlusion_score_request *rq, gt_error *e)
 {
-    if (multibounce_score_check_files(rq, e) != 0)
+    if (function_score_check_files(&rq->files, e) != 0)
         return -1;
-    if (rq->reference_count < 1 || rq->reference_count > MB_SCORE_MAX_ROWS || rq->ao_count != rq->reference_count)
+    if (rq->reference_count < 1 || rq->reference_count > FUNCTION_SCORE_MAX_ROWS || rq->ao_count != rq->reference_count)
         return gt_error_set(e, "shader score", "%d references and %d --ao files: 1 to %d specular-occlusion "
                             "references expected, each with one --ao (its view's 'gtlab render ao')",
-                            rq->reference_count, rq->ao_count, MB_SCORE_MAX_ROWS);
+                            rq->reference_count, rq->ao_count, FUNCTION_SCORE_MAX_ROWS);
     return 0;
 }
 
-int specular_occlusion_score(const multibounce_score_request *rq, multibounce_score_result *out, gt_error *e)
+int specular_occlusion_score(const specular_occlusion_score_request *rq, function_score_result *out, gt_error *e)
 {
     memset(out, 0, sizeof *out);
     out->parameter = "roughness";
     out->caption = "specocc.V against each variant on the AO reference's inputs (ao.V, bent normal)";
     if (check_request(rq, e) != 0)
         return -1;
-    so_variants *vs = calloc(1, sizeof *vs);
-    if (!vs)
-        return gt_error_set(e, "shader score", "out of memory");
-    vs->rq = rq;
-    int rc = load(vs, out, e);
+    so_variants vs = {.rq = rq};
+    int rc = load(&vs, out, e);
     for (int i = 0; i < rq->reference_count && rc == 0; ++i)
-        rc = score_reference(vs, i, out, e);
+        rc = score_reference(&vs, i, out, e);
     if (rc == 0)
-        multibounce_score_take_means(out);
-    release(vs);
-    free(vs);
+        function_score_take_means(out);
+    function_scorer_close(vs.scorer);
     return rc;
 }
 
@@ -175,7 +128,7 @@ static int render_file(const study_context *ctx, const scene *s, const study_sce
 }
 
 typedef struct {
-    char references[MB_SCORE_MAX_ROWS][4096], aos[MB_SCORE_MAX_ROWS][4096];
+    char references[FUNCTION_SCORE_MAX_ROWS][4096], aos[FUNCTION_SCORE_MAX_ROWS][4096];
     int count;
 } so_reference_files;
 
@@ -193,8 +146,8 @@ static int render_scene(const study_context *ctx, const study_scene_entry *b, co
     snprintf(ao, sizeof ao, "%s/%s_ao.exr", dir, b->label);
     int rc = render_file(ctx, &s, b, &cam, QUANTITY_AO, -1.0f, ao, e);
     for (int r = 0; r < SO_STUDY_ROUGHNESSES && rc == 0; ++r) {
-        if (f->count == MB_SCORE_MAX_ROWS) {
-            rc = gt_error_set(e, b->label, "more than %d specular-occlusion references", MB_SCORE_MAX_ROWS);
+        if (f->count == FUNCTION_SCORE_MAX_ROWS) {
+            rc = gt_error_set(e, b->label, "more than %d specular-occlusion references", FUNCTION_SCORE_MAX_ROWS);
             break;
         }
         snprintf(f->aos[f->count], sizeof f->aos[0], "%s", ao);
@@ -208,14 +161,14 @@ static int render_scene(const study_context *ctx, const study_scene_entry *b, co
 }
 
 int specular_occlusion_score_project(const study_context *ctx, const char *const *functions, int function_count,
-                                     const char *const *plugins, int plugin_count, multibounce_score_result *out,
+                                     const char *const *plugins, int plugin_count, function_score_result *out,
                                      gt_error *e)
 {
     memset(out, 0, sizeof *out);
     if (function_count + plugin_count == 0)
         return 0;
     static so_reference_files f;
-    static const char *references[MB_SCORE_MAX_ROWS], *aos[MB_SCORE_MAX_ROWS];
+    static const char *references[FUNCTION_SCORE_MAX_ROWS], *aos[FUNCTION_SCORE_MAX_ROWS];
     char dir[2048];
     f.count = 0;
     int rc = study_make_dir(ctx, SO_SCORE_DIR, dir, sizeof dir, e);
@@ -223,9 +176,10 @@ int specular_occlusion_score_project(const study_context *ctx, const char *const
         rc = render_scene(ctx, study_scene_at(ctx, i), dir, &f, e);
     for (int i = 0; i < f.count; ++i)
         references[i] = f.references[i], aos[i] = f.aos[i];
-    multibounce_score_request rq = {.quantity = SO_SCORE_QUANTITY, .references = references,
-                                    .reference_count = f.count, .functions = functions,
-                                    .function_count = function_count, .plugins = plugins,
-                                    .plugin_count = plugin_count, .timeout = 10.0, .aos = aos, .ao_count = f.count};
+    specular_occlusion_score_request rq = {.references = references, .reference_count = f.count, .aos = aos,
+                                           .ao_count = f.count,
+                                           .files = {.functions = functions, .function_count = function_count,
+                                                     .plugins = plugins, .plugin_count = plugin_count,
+                                                     .timeout = 10.0}};
     return rc != 0 ? -1 : specular_occlusion_score(&rq, out, e);
 }

@@ -15,19 +15,33 @@
  * variants: gtlab's AO alone, Lagarde's, GTSO's cone/cone (exact caps and
  * Oat and Sander's, cos a_s = 2^(-3.32193 alpha^2)) and the spherical
  * Gaussians, then each function file and each plug-in, in the order given.
- * One row per reference (its scene and roughness) and the mean row. */
+ * One row per reference (its scene and roughness) and the mean row. The
+ * quantity-agnostic part is scoring/function_score.h's. */
 #ifndef GTLAB_STUDIES_SPECULAR_OCCLUSION_SCORE_H
 #define GTLAB_STUDIES_SPECULAR_OCCLUSION_SCORE_H
 
-#include "studies/multibounce_score.h"
+#include "core/error.h"
+#include "scoring/function_score.h"
+#include "studies/study.h"
 
 #define SO_SCORE_QUANTITY "specular-occlusion"
+
+/* The quantity: gtlab_specular_occlusion(ao, beta, roughness, n_dot_v), gtlab_specular_occlusion_v1. */
+extern const function_score_quantity specular_occlusion_scored_quantity;
+
+typedef struct {
+    const char *const *references; /* EXRs of `gtlab render specular-occlusion` */
+    int reference_count;
+    const char *const *aos;        /* the AO reference of each reference's view */
+    int ao_count;
+    function_score_files files;
+} specular_occlusion_score_request;
 
 /* Scores rq (rq->aos[i] the AO reference of rq->references[i]). Returns 0,
  * or -1 with e naming the file at fault: a reference or AO file without its
  * channels, a function or plug-in that cannot be loaded or compiled or that
  * has no specular occlusion, NaN, no Vulkan device. */
-int specular_occlusion_score(const multibounce_score_request *rq, multibounce_score_result *out, gt_error *e);
+int specular_occlusion_score(const specular_occlusion_score_request *rq, function_score_result *out, gt_error *e);
 
 /* For the stage of `gtlab all` (studies/shader_scores.h): a project's
  * specular-occlusion function files and plug-ins scored on the study's
@@ -38,7 +52,7 @@ int specular_occlusion_score(const multibounce_score_request *rq, multibounce_sc
  * lists empty it renders nothing and out->variant_count = 0. */
 #define SO_SCORE_DIR "shader_scores"
 int specular_occlusion_score_project(const study_context *ctx, const char *const *functions, int function_count,
-                                     const char *const *plugins, int plugin_count, multibounce_score_result *out,
+                                     const char *const *plugins, int plugin_count, function_score_result *out,
                                      gt_error *e);
 
 #endif

@@ -13,7 +13,7 @@
 #include "core/json_check.h"
 #include "core/run_inputs.h"
 #include "scene/builtin_scenes.h"
-#include "studies/screen_shader_score.h"
+#include "core/reference_schema.h"
 
 enum { PROJECT_FILE_MAX = 1 << 20 };
 
@@ -331,6 +331,14 @@ static int read_params(const reader *r, const cJSON *o, const char *where, study
     return 0;
 }
 
+int study_screen_shader_prepare(const study_screen_shader *s, screen_shader_program *out, gt_error *e)
+{
+    const char *params[PROJECT_MAX_PARAMS];
+    for (int i = 0; i < s->param_count; ++i)
+        params[i] = s->params[i];
+    return screen_shader_prepare(s->path, params, s->param_count, CH_AO, out, e);
+}
+
 /* One screen shader: {"path": ..., "quantity": "ao", "params": {...}}, compiled now. */
 static int read_screen_shader(const reader *r, const cJSON *o, const char *where, study_project *p)
 {
@@ -352,7 +360,7 @@ static int read_screen_shader(const reader *r, const cJSON *o, const char *where
     screen_shader_program program;
     if (existing_file(r, at, path, x->path, sizeof x->path) != 0)
         return -1;
-    if (screen_shader_prepare(x, &program, r->e) != 0)
+    if (study_screen_shader_prepare(x, &program, r->e) != 0)
         return fail_again(r, at);
     screen_shader_program_free(&program);
     return ++p->screen_shader_count, 0;

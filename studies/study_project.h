@@ -2,7 +2,7 @@
  * docs/gtlab.schema.json): the user's scenes, each with one or more
  * cameras, and what `gtlab all --project` runs on them — its stages, quality
  * and output folder — with the user's shaders and plug-ins (validated,
- * recorded, scored by studies/multibounce_score.h) and screen-space shaders
+ * recorded, scored by studies/shader_scores.h) and screen-space shaders
  * (compiled, scored by studies/screen_shader_score.h). Paths in the file are
  * relative to the file's folder. Keys starting with '_' are comments; any
  * other unknown key is an error, as is every problem, named by the file and
@@ -12,6 +12,7 @@
 #define GTLAB_STUDIES_STUDY_PROJECT_H
 
 #include "core/error.h"
+#include "scoring/screen_shader_program.h"
 #include "studies/study_scenes.h"
 
 enum { PROJECT_MAX_FILES = 16, PROJECT_STAGES_MAX = 512, PROJECT_MAX_PARAMS = 16, PROJECT_PARAM_TEXT = 96 };
@@ -23,6 +24,9 @@ typedef struct {
     int param_count;
     char params[PROJECT_MAX_PARAMS][PROJECT_PARAM_TEXT]; /* "name=value", as --param takes them */
 } study_screen_shader;
+
+/* s compiled with its parameters, scored on ao.V (scoring/screen_shader_program.h). */
+int study_screen_shader_prepare(const study_screen_shader *s, screen_shader_program *out, gt_error *e);
 
 typedef struct study_project {
     study_scene_list scenes;        /* one entry per scene and camera */

@@ -27,8 +27,6 @@ KNOWN = [
     # the render registry and two of its quantities (raytracer/)
     ["raytracer/environment_quantity.c", "raytracer/reference_quantities.c",
      "raytracer/specular_occlusion_quantity.c"],
-    # any user function is scored by the multi-bounce scorer, which SO reuses
-    ["studies/multibounce_score.c", "studies/specular_occlusion_score.c"],
     ["studies/sphere_light.c", "studies/sphere_light_sun.c", "studies/sphere_light_terminator.c",
      "studies/sphere_light_units.c"],
 ]

@@ -18,7 +18,7 @@
 #include "core/exr_io.h"
 #include "raytracer/reference_render.h"
 #include "realtime/multibounce.h"
-#include "studies/multibounce_score.h"
+#include "studies/shader_scores.h"
 #include "studies/study.h"
 #include "tests/check.h"
 #include "tests/test_files.h"
@@ -58,18 +58,19 @@ static double rmse_bound(void)
 
 static void test_scores(const char *reference)
 {
-    static multibounce_score_result r;
+    static function_score_result r;
     const char *functions[] = {GTLAB_SOURCE_DIR "/shaders/template_multibounce.glsl",
                                GTLAB_SOURCE_DIR "/shaders/template_multibounce.hlsl"};
     const char *plugins[] = {GTLAB_EXAMPLE_PLUGIN};
-    multibounce_score_request rq = {NULL, &reference, 1, functions, 2, plugins, 1, NULL, 60.0, NULL, 0};
+    shader_score_request rq = {.references = &reference, .reference_count = 1,
+                               .files = {functions, 2, plugins, 1, NULL, 60.0}};
     gt_error e = {{0}};
-    CHECK_MSG(multibounce_score(&rq, &r, &e) == 0, "%s", e.message);
-    multibounce_score_print(stdout, &r);
+    CHECK_MSG(shader_score(&rq, &r, &e) == 0, "%s", e.message);
+    function_score_print(stdout, &r);
     CHECK(r.variant_count == 5 && r.row_count == ALBEDOS && strcmp(r.variants[1].name, "talk") == 0);
     double bound = rmse_bound();
     for (int i = 0; i <= r.row_count && r.variant_count == 5; ++i) {
-        const multibounce_score_row *row = i < r.row_count ? &r.rows[i] : &r.mean;
+        const function_score_row *row = i < r.row_count ? &r.rows[i] : &r.mean;
         CHECK_MSG(row->dssim[4] == row->dssim[1] && row->rmse[4] == row->rmse[1], "%s: the plug-in differs",
                   row->scene);
         for (int k = 2; k <= 3; ++k)
@@ -90,13 +91,14 @@ static void expect_error(const char *reference, const char *name, const char *te
         CHECK_MSG(0, "cannot write %s", path);
         return;
     }
-    static multibounce_score_result r;
+    static function_score_result r;
     const char *functions[] = {path};
-    multibounce_score_request rq = {NULL, &reference, 1, functions, 1, NULL, 0, NULL, 60.0, NULL, 0};
+    shader_score_request rq = {.references = &reference, .reference_count = 1,
+                               .files = {functions, 1, NULL, 0, NULL, 60.0}};
     gt_error e = {{0}};
     char want[4200];
     snprintf(want, sizeof want, "%s%s", path, message);
-    CHECK(multibounce_score(&rq, &r, &e) != 0);
+    CHECK(shader_score(&rq, &r, &e) != 0);
     CHECK_MSG(strncmp(e.message, want, strlen(want)) == 0 && !strchr(e.message, '\n'), "%s (expected %s...)",
               e.message, want);
 }

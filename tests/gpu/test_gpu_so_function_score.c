@@ -29,6 +29,7 @@
 #include "raytracer/reference_render.h"
 #include "realtime/specular_occlusion_shader.h"
 #include "studies/specular_occlusion_inputs.h"
+#include "studies/shader_scores.h"
 #include "studies/specular_occlusion_score.h"
 #include "studies/study.h"
 #include "tests/check.h"
@@ -106,14 +107,14 @@ static void measure_difference(const char *reference, const char *ao_path, doubl
 
 static void test_scores(const char *reference, const char *ao)
 {
-    static multibounce_score_result r;
+    static function_score_result r;
     const char *functions[] = {GTLAB_SOURCE_DIR "/shaders/template_specular_occlusion.glsl",
                                GTLAB_SOURCE_DIR "/shaders/template_specular_occlusion.hlsl"};
     const char *plugins[] = {GTLAB_EXAMPLE_SO_PLUGIN};
-    multibounce_score_request rq = {SO_SCORE_QUANTITY, &reference, 1, functions, 2, plugins, 1, NULL, 60.0, &ao, 1};
+    shader_score_request rq = {SO_SCORE_QUANTITY, &reference, 1, &ao, 1, {functions, 2, plugins, 1, NULL, 60.0}};
     gt_error e = {{0}};
-    CHECK_MSG(multibounce_score(&rq, &r, &e) == 0, "%s", e.message);
-    multibounce_score_print(stdout, &r);
+    CHECK_MSG(shader_score(&rq, &r, &e) == 0, "%s", e.message);
+    function_score_print(stdout, &r);
     CHECK(r.variant_count == 8 && r.row_count == 1 &&
           strcmp(r.variants[VARIANT_CONE].name, "cone-exact:exp2-alpha") == 0);
     if (r.variant_count != 8)
@@ -122,7 +123,7 @@ static void test_scores(const char *reference, const char *ao)
     measure_difference(reference, ao, &max_diff, &rms);
     CHECK_MSG(max_diff <= kMaxDifference, "max |gpu - c| %.3g above %.3g", max_diff, kMaxDifference);
     for (int i = 0; i <= r.row_count; ++i) {
-        const multibounce_score_row *row = i < r.row_count ? &r.rows[i] : &r.mean;
+        const function_score_row *row = i < r.row_count ? &r.rows[i] : &r.mean;
         CHECK_MSG(row->dssim[VARIANT_PLUGIN] == row->dssim[VARIANT_LAGARDE] &&
                       row->rmse[VARIANT_PLUGIN] == row->rmse[VARIANT_LAGARDE], "%s: the plug-in differs", row->scene);
         for (int k = VARIANT_GLSL; k <= VARIANT_HLSL; ++k)
@@ -130,7 +131,7 @@ static void test_scores(const char *reference, const char *ao)
                       "%s %s: RMSE %.9g against %.9g (RMS of the difference %.3g)", row->scene, r.variants[k].name,
                       row->rmse[k], row->rmse[VARIANT_CONE], rms);
         CHECK(row->rmse[VARIANT_CONE] > 0.0 && row->noise_floor_rmse > 0.0 && row->noise_floor_dssim > 0.0);
-        CHECK(i == r.row_count || fabs(row->albedo - 0.5) < 1e-6); /* the roughness */
+        CHECK(i == r.row_count || fabs(row->value - 0.5) < 1e-6); /* the roughness */
     }
     printf("template on Vulkan - C: max %.3g, RMS %.3g (bound %.3g); RMSE GLSL, HLSL - C: %.3g, %.3g\n", max_diff,
            rms, kMaxDifference, r.mean.rmse[VARIANT_GLSL] - r.mean.rmse[VARIANT_CONE],
@@ -148,13 +149,13 @@ static void expect_error(const char *reference, const char *ao, const char *name
         CHECK_MSG(0, "cannot write %s", path);
         return;
     }
-    static multibounce_score_result r;
-    multibounce_score_request rq = {SO_SCORE_QUANTITY, &reference, 1, text ? &file : NULL, text ? 1 : 0,
-                                    text ? NULL : &file, text ? 0 : 1, NULL, 60.0, &ao, aos};
+    static function_score_result r;
+    shader_score_request rq = {SO_SCORE_QUANTITY, &reference, 1, &ao, aos,
+                               {text ? &file : NULL, text ? 1 : 0, text ? NULL : &file, text ? 0 : 1, NULL, 60.0}};
     gt_error e = {{0}};
     char want[4200];
     snprintf(want, sizeof want, "%s%s", aos ? file : "", message);
-    CHECK(multibounce_score(&rq, &r, &e) != 0);
+    CHECK(shader_score(&rq, &r, &e) != 0);
     CHECK_MSG(strncmp(e.message, want, strlen(want)) == 0 && !strchr(e.message, '\n'), "%s (expected %s...)",
               e.message, want);
 }

@@ -1,17 +1,19 @@
-/* The C plug-in ABI (core/plugin_abi.h, issue 15, item 5): the example
- * plug-in examples/multibounce_plugin.c, GTAOMultiBounce with the talk's
- * coefficients, loaded with dlopen and applied where gtlab applies its own
- * function (multibounce_apply_model), gives the built-in's values bit for bit
- * and so exactly its scores (DSSIM, RMSE against a target); a library that
- * is not a plug-in, or no library, is one clear line. */
+/* The C plug-in loader (plugins/plugin_loader.h; core/plugin_abi.h, issue
+ * 15, item 5): the example plug-in examples/multibounce_plugin.c,
+ * GTAOMultiBounce with the talk's coefficients, loaded with dlopen and
+ * applied where gtlab applies its own function (multibounce_apply_model),
+ * its albedo a constant input repeated, gives the built-in's values bit for
+ * bit and so exactly its scores (DSSIM, RMSE against a target); an entry
+ * point it does not export, a library that is not a plug-in, or no
+ * library, is one clear line. */
 #include <math.h>
 #include <string.h>
 
 #include "metrics/image_error.h"
 #include "metrics/ssim.h"
+#include "plugins/plugin_loader.h"
 #include "realtime/multibounce.h"
-#include "studies/multibounce.h"
-#include "studies/plugin.h"
+#include "studies/multibounce.h" /* multibounce_apply_model: where gtlab applies its own */
 #include "tests/check.h"
 
 enum { W = 96, H = 64, N = W * H };
@@ -52,7 +54,9 @@ static void test_scores_like_built_in(void)
     static const float albedos[] = {0.0f, 0.3f, 0.6f, 0.9f, 1.0f};
     for (int k = 0; k < 5; ++k) {
         multibounce_apply_model(&talk, v, mask, N, albedos[k], built_in);
-        CHECK_MSG(plugin_apply_multibounce(&p, "example", v, mask, N, albedos[k], plugged, &e) == 0, "%s", e.message);
+        CHECK_MSG(plugin_apply(&p, GTLAB_MULTIBOUNCE_V1_SYMBOL, 2, (const float *const[]){v, NULL},
+                               (const float[]){0.0f, albedos[k]}, mask, N, plugged, "example", &e) == 0,
+                  "%s", e.message);
         CHECK_MSG(memcmp(built_in, plugged, sizeof built_in) == 0, "albedo %g: the plug-in's values differ", albedos[k]);
         double d1, r1, d2, r2;
         score(built_in, target, mask, &d1, &r1);
@@ -62,6 +66,24 @@ static void test_scores_like_built_in(void)
                r2);
     }
     plugin_close(&p);
+}
+
+/* The example exports the multi-bounce entry point only: the other is one line naming it. */
+static void test_missing_entry_point(void)
+{
+    static float v[N], mask[N], target[N], out[N];
+    gtlab_plugin p;
+    gt_error e = {{0}};
+    CHECK_MSG(plugin_open(GTLAB_EXAMPLE_PLUGIN, &p, &e) == 0, "%s", e.message);
+    if (!p.handle)
+        return;
+    CHECK(plugin_exports(&p, GTLAB_MULTIBOUNCE_V1_SYMBOL) && !plugin_exports(&p, GTLAB_SPECULAR_OCCLUSION_V1_SYMBOL));
+    inputs(v, mask, target);
+    CHECK(plugin_apply(&p, GTLAB_SPECULAR_OCCLUSION_V1_SYMBOL, 4, (const float *const[]){v, v, v, v},
+                       (const float[]){0}, mask, N, out, "example", &e) != 0);
+    CHECK_MSG(strcmp(e.message, "example: the plug-in has no gtlab_specular_occlusion_v1") == 0, "%s", e.message);
+    plugin_close(&p);
+    CHECK(p.handle == NULL);
 }
 
 static void test_not_a_plugin(void)
@@ -80,6 +102,7 @@ static void test_not_a_plugin(void)
 int main(void)
 {
     test_scores_like_built_in();
+    test_missing_entry_point();
     test_not_a_plugin();
-    return check_report("test_plugin");
+    return check_report("test_plugin_loader");
 }
