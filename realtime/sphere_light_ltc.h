@@ -1,5 +1,5 @@
 /* Sphere lights by linearly transformed cosines, in C as a shader would
- * evaluate them (conventions of realtime/sphere_light.h: local frame n = +z,
+ * evaluate them (conventions of sphere_light/sphere_light.h: local frame n = +z,
  * the light by its centre direction lc and sin(sigma); the specular returns
  * radiance per unit normal illuminance).
  *
@@ -57,7 +57,7 @@ float ltc_sphere_ggx(const ltc_table *t, vec3 v, vec3 lc, float sin_sigma, float
  * (f0 E + (1 - f0) B) ltc_sphere_integral / (pi sin^2 sigma). */
 float ltc_sphere_ggx_fresnel(const ltc_table *t, vec3 v, vec3 lc, float sin_sigma, float roughness, float f0);
 
-/* ltc_sphere_ggx_fresnel as a sphere_specular_fn (realtime/sphere_light.h):
+/* ltc_sphere_ggx_fresnel as a sphere_specular_fn (sphere_light/sphere_light.h):
  * user is the ltc_table. */
 float ltc_sphere_specular(const void *table, vec3 v, vec3 lc, float sin_sigma, float roughness, float f0);
 

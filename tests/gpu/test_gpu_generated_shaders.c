@@ -13,7 +13,7 @@
  *   gives |gpu - c| <= gamma_10 S, gamma_10 = 10u / (1 - 10u), S the same
  *   polynomial with every coefficient and variable replaced by its absolute
  *   value. Checked: |gpu - c| <= 11 u S at every grid point.
- * - Sphere light: the C is float too (realtime/sphere_light.inc compiled as
+ * - Sphere light: the C is float too (sphere_light/sphere_light.inc compiled as
  *   C), ~60 operations with square roots and divisions (Vulkan: 3 and 2.5
  *   ulp) and the shader's own visibility term. Checked: |gpu - c| <= 64 u
  *   |c| + the C's own spread under input perturbations of 8 u (the
@@ -28,8 +28,8 @@
 #include "gpu/vulkan_device.h"
 #include "realtime/multibounce.h"
 #include "realtime/multibounce_shader.h"
-#include "realtime/sphere_light.h"
-#include "realtime/sphere_light_shader.h"
+#include "sphere_light/sphere_light.h"
+#include "sphere_light/sphere_light_shader.h"
 #include "tests/check.h"
 #include "tests/gpu/sample_shader.h"
 #include "tests/test_multibounce_models.h"

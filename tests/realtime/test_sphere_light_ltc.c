@@ -22,7 +22,7 @@
 
 #include "core/vec3.h"
 #include "luts/ltc_ggx.h"
-#include "realtime/sphere_light.h"
+#include "realtime/sphere_illuminance.h"
 #include "realtime/sphere_light_ltc.h"
 #include "tests/check.h"
 
