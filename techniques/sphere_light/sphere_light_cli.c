@@ -11,8 +11,8 @@
 #include "core/threads.h"
 #include "sphere_light/sphere_light_fit_outputs.h"
 #include "sphere_light/sphere_light_section.h"
-#include "sphere_light/sphere_noh_figures.h"
 #include "sphere_light/sphere_light_study.h"
+#include "sphere_light/sphere_noh_figures.h"
 
 static void print_outcome(const sphere_fit_settings *s, const sphere_fit_outcome *o)
 {
@@ -156,34 +156,6 @@ static int check_sphere_noh(int argc, char **argv)
     return EXIT_OK;
 }
 
-static int lut_ltc(int argc, char **argv)
-{
-    static const cli_option options[] = {
-        CLI_INT("size", "N", LTC_MIN_SIZE, LTC_MAX_SIZE, "texels per axis (default 64, as Heitz ships it)"),
-        CLI_THREADS, CLI_OUTPUT_DIR, CLI_END};
-    static const cli_command command = {
-        "lut ltc",
-        "Fits the GGX LTC table (Heitz et al. 2016) to gtlab's GGX with Ceres: M^-1's a, b, c, d,\n"
-        "magnitude E and Fresnel term B per (sqrt(1 - n.v), roughness) texel centre (luts/ltc_ggx.h).\n"
-        "Writes DIR/ltc_ggx.exr (with the fit's error per texel), .h, .hlsl and .glsl.",
-        options, NULL, NULL};
-    long size = 64, threads = threads_default();
-    const char *dir = NULL;
-    int status;
-    if (cli_options_parse(&command, (void *[]){&size, &threads, &dir}, argc, argv, &status) != 0 ||
-        (status = cli_make_output_dir(dir)) != 0)
-        return status;
-    ltc_table t;
-    double seconds;
-    gt_error e;
-    if (sphere_ltc_write_table(dir, (int)size, (int)threads, &t, &seconds, &e) != 0)
-        return cli_fail(&e);
-    printf("%s/ltc_ggx.{exr,h,hlsl,glsl}: %ld^2 in %.2f s; fit error (total variation) mean %.4f, worst %.4f\n", dir,
-           size, seconds, t.mean_error, t.max_error);
-    ltc_table_free(&t);
-    return EXIT_OK;
-}
-
 GTLAB_STUDY_STAGE_NO_REQUEST(all_stage_sphere_light, sphere_light_result, sphere_light_study, sphere_light_section)
 
 const technique technique_sphere_light = {
@@ -195,7 +167,6 @@ const technique technique_sphere_light = {
             {"sphere-noh", check_sphere_noh, "GetNoHSquared (Karis, 1 and 2 Newton steps) against the brute-force max of (N.H)^2"}),
         [VERB_BENCH] = CLI_SUBCOMMANDS(
             {"sphere-light", bench_sphere_light, "cost of the Newton step: instructions and ns"}),
-        [VERB_LUT] = CLI_SUBCOMMANDS({"ltc", lut_ltc, "GGX LTC table (Heitz 2016) fitted with Ceres: EXR, C, HLSL, GLSL"}),
     },
     .stages = ALL_STAGES({"sphere-light", "GGX sphere lights", all_stage_sphere_light, NULL, NULL}),
 };

@@ -3,7 +3,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "realtime/sphere_light_ltc.h"
+#include "ltc/ltc_sphere.h"
 #include "report/claim_thresholds.h"
 #include "sphere_light/sphere_light_section_parts.h"
 
@@ -50,7 +50,7 @@ void sphere_ltc_section(report_context *ctx, const sphere_light_result *r, cJSON
     report *doc = ctx->doc;
     report_heading(doc, 3, "LTC sphere lights (Heitz et al. 2016; Heitz & Hill 2017)");
     report_paragraph(doc,
-                     "gtlab fits the GGX LTC table itself (fitters/ltc_fit.h: Ceres, L2 distance to f_r (n.l) / E on "
+                     "gtlab fits the GGX LTC table itself (techniques/ltc/ltc_fit.h: Ceres, L2 distance to f_r (n.l) / E on "
                      "a fixed multiple-importance direction grid, warm-started along each row): %dx%d texels in "
                      "%.1f s; total-variation distance between the LTC and the normalised BRDF lobe per texel, mean "
                      "%.3f, worst %.3f (at grazing views). The sphere is the disk facing the shading point that "

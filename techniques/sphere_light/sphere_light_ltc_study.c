@@ -6,24 +6,9 @@
 
 #include "core/progress.h"
 #include "core/sample_mean.h"
+#include "ltc/ltc_sphere.h"
 #include "sphere_light/sphere_light_fit.h"
-#include "fitters/ltc_fit.h"
-#include "luts/ltc_ggx_writers.h"
-#include "realtime/sphere_light_ltc.h"
 #include "sphere_light/sphere_light_study.h"
-
-int sphere_ltc_write_table(const char *dir, int size, int threads, ltc_table *t, double *seconds, gt_error *e)
-{
-    double t0 = seconds_now();
-    if (ltc_fit_table(t, size, threads, e) != 0)
-        return -1;
-    *seconds = seconds_now() - t0;
-    if (ltc_ggx_write_all(dir, "ltc_ggx", "LTC_GGX", t, e) != 0) {
-        ltc_table_free(t);
-        return -1;
-    }
-    return 0;
-}
 
 double sphere_ltc_residual(const ltc_table *t, const sphere_light_sample *s)
 {

@@ -14,12 +14,12 @@
 #include "core/exr_io.h"
 #include "core/image_io.h"
 #include "core/reference_schema.h"
+#include "ltc/ltc_sphere.h"
 #include "metrics/flip.h"
 #include "metrics/ssim.h"
 #include "raytracer/reference_render.h"
 #include "scene/scene_loaders.h"
 #include "sphere_light/sphere_light.h"
-#include "realtime/sphere_light_ltc.h"
 #include "sphere_light/sphere_light_study.h"
 
 const char *const sphere_scene_approx_files[SPHERE_SCENE_APPROX] = {"karis", "decima", "decima_refit", "ltc"};

@@ -14,10 +14,11 @@
 #include "core/ggx.h"
 #include "core/progress.h"
 #include "core/sobol.h"
-#include "fitters/ltc_fit.h"
+#include "ltc/ltc_fit.h"
+#include "ltc/ltc_sphere.h"
+#include "ltc/ltc_study.h"
 #include "raytracer/sphere_light_reference.h"
 #include "sphere_light/sphere_light.h"
-#include "realtime/sphere_light_ltc.h"
 
 /* ---- The refit ---- */
 
@@ -416,7 +417,7 @@ static int fit_ltc(const study_context *ctx, const sphere_fit_settings *fs, cons
     char luts[4096];
     out->table_size = ctx->quality == QUALITY_PREVIEW ? 32 : 64;
     if (study_make_dir(ctx, "luts", luts, sizeof luts, e) != 0 ||
-        sphere_ltc_write_table(luts, out->table_size, ctx->threads, t, &out->fit_seconds, e) != 0)
+        ltc_table_fit_and_write(luts, out->table_size, ctx->threads, t, &out->fit_seconds, e) != 0)
         return -1;
     out->mean_fit_error = t->mean_error, out->max_fit_error = t->max_error;
     if (sphere_fit_held_out_samples(fs, &test, e) != 0) {

@@ -10,7 +10,7 @@
  * Writes under <output>/sphere_light: sphere_noh{,_map,_by_nv}.csv,
  * fit_profile.csv, errors_*.csv, scene_*.exr and the scenes' previews and
  * heatmaps (PNG), and the LTC table it fits under <output>/luts/ltc_ggx.{exr,
- * h,hlsl,glsl} (luts/ltc_ggx_writers.h). The fit's own files
+ * h,hlsl,glsl} (ltc/ltc_ggx_writers.h). The fit's own files
  * (fits/sphere_light.json, .h, .hlsl, .glsl) are the caller's to write from
  * the results. */
 #ifndef GTLAB_SPHERE_LIGHT_SPHERE_LIGHT_STUDY_H
@@ -19,9 +19,9 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "sphere_light/sphere_light_fit_outputs.h"
-#include "luts/ltc_ggx.h"
+#include "ltc/ltc_ggx.h"
 #include "raytracer/sphere_light_reference.h"
+#include "sphere_light/sphere_light_fit_outputs.h"
 #include "studies/study.h"
 
 /* The folder below the output folder. */
@@ -101,7 +101,7 @@ typedef struct {
     int x_is_roughness;                /* x: roughness (else n.v) */
     double fixed;                      /* the other of roughness / n.v */
     double karis, decima, refit;       /* means over the map */
-    double ltc;                        /* the LTC sphere light (realtime/sphere_light_ltc.h) */
+    double ltc;                        /* the LTC sphere light (ltc/ltc_sphere.h) */
 } sphere_map_row;
 
 /* ---- Scene renders ---- */
@@ -239,8 +239,8 @@ int sphere_units_study(int train, int test, uint32_t samples, int threads, spher
 
 /* ---- LTC sphere lights (issue 27, item 2) ---- */
 
-/* The GGX LTC table fitted by gtlab (fitters/ltc_fit.h) and the sphere as
- * an equal-area N-gon (realtime/sphere_light_ltc.h), scored on the refit's
+/* The GGX LTC table fitted by gtlab (ltc/ltc_fit.h) and the sphere as
+ * an equal-area N-gon (ltc/ltc_sphere.h), scored on the refit's
  * held-out configurations beside Karis and Decima (published, refit):
  * the residual ln((ltc + 0.01)/(reference + 0.01)), and the paired
  * difference of |residual| (other minus LTC, positive: the LTC is closer)
@@ -255,11 +255,6 @@ typedef struct {
     double ngon_mean, ngon_max;
 } sphere_ltc_result;
 
-/* Fits a size^2 LTC table (fitters/ltc_fit.h, `threads` workers) into *t
- * and writes DIR/ltc_ggx.{exr,h,hlsl,glsl} (luts/ltc_ggx_writers.h, C and
- * shader identifier LTC_GGX); *seconds: the fit's wall time. On failure t
- * is left empty. */
-int sphere_ltc_write_table(const char *dir, int size, int threads, ltc_table *t, double *seconds, gt_error *e);
 
 /* The residual of one sample under the LTC sphere light with table t. */
 double sphere_ltc_residual(const ltc_table *t, const sphere_light_sample *s);

@@ -9,11 +9,11 @@
 #include <stdlib.h>
 #include <sys/stat.h>
 
+#include "ltc/ltc_fit.h"
+#include "ltc/ltc_sphere.h"
 #include "sphere_light/sphere_light_fit.h"
-#include "fitters/ltc_fit.h"
-#include "realtime/sphere_light_ltc.h"
-#include "tests/check.h"
 #include "sphere_light/sphere_light_study.h"
+#include "tests/check.h"
 
 static void test_noh_sweep(const char *dir)
 {

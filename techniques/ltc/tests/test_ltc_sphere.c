@@ -1,4 +1,4 @@
-/* The LTC polygon and sphere integrals (realtime/sphere_light_ltc.h)
+/* The LTC polygon and sphere integrals (ltc/ltc_sphere.h)
  * against closed forms:
  *  - the identity M (the clamped cosine itself): the cap's form factor is
  *    sin^2(sigma) cos(theta) while the cap is above the horizon, and the
@@ -8,7 +8,7 @@
  *  - the hemisphere as a polygon (a large square around +z clipped at the
  *    horizon): form factor 1;
  *  - a sheared, scaled M: the polygon integral of a small polygon equals
- *    D(w) times its solid angle (luts/ltc_ggx.h's density, an independent
+ *    D(w) times its solid angle (ltc/ltc_ggx.h's density, an independent
  *    formula);
  *  - the N-gon converges to the exact cap (straddling the horizon) as N
  *    grows;
@@ -21,9 +21,9 @@
 #include <stdio.h>
 
 #include "core/vec3.h"
-#include "luts/ltc_ggx.h"
+#include "ltc/ltc_ggx.h"
+#include "ltc/ltc_sphere.h"
 #include "realtime/sphere_illuminance.h"
-#include "realtime/sphere_light_ltc.h"
 #include "tests/check.h"
 
 static const float IDENTITY[4] = {1.0f, 0.0f, 1.0f, 0.0f};

@@ -11,13 +11,13 @@
  *
  * so D integrates to 1 over the sphere for any invertible M, and the
  * integral of D over a polygon P equals that of D_o over the polygon
- * M^-1 P, which is Lambert's form factor (realtime/sphere_light_ltc.h).
+ * M^-1 P, which is Lambert's form factor (ltc/ltc_sphere.h).
  * The BRDF times the cosine is approximated per (n.v, roughness) as
  *
  *   f_r(v, l) (n.l) ~ E D(l),   E = \int_H f_r(v, l)(n.l) dl
  *
  * the magnitude E being the directional albedo (the DFG table's E,
- * luts/dfg_lut.h) and D fitted to f_r (n.l) / E (fitters/ltc_fit.h).
+ * luts/dfg_lut.h) and D fitted to f_r (n.l) / E (ltc/ltc_fit.h).
  * gtlab's BRDF: core/ggx.h (GGX D, height-correlated Smith G2, no Fresnel).
  *
  * Frame: n = +z, the view v = (sin theta_v, 0, cos theta_v) in the xz
@@ -39,8 +39,8 @@
  * alpha = ggx_alpha_tabulated(r) (alpha >= 1e-3: below that the lobe is a
  * mirror to any table). The lookup is luts/table_lookup.inc's bilinear,
  * clamp-to-edge fetch, one channel at a time. */
-#ifndef GTLAB_LUTS_LTC_GGX_H
-#define GTLAB_LUTS_LTC_GGX_H
+#ifndef GTLAB_LTC_LTC_GGX_H
+#define GTLAB_LTC_LTC_GGX_H
 
 enum { LTC_A, LTC_B, LTC_C, LTC_D, LTC_MAGNITUDE, LTC_FRESNEL, LTC_CHANNELS };
 
@@ -65,7 +65,7 @@ void ltc_apply_inverse(const double m[4], const double w[3], double out[3]);
 typedef struct {
     int size;
     float *data;      /* size * size * LTC_CHANNELS, layout above */
-    float *error;     /* size * size: the fit's error per texel (fitters/ltc_fit.h) */
+    float *error;     /* size * size: the fit's error per texel (ltc/ltc_fit.h) */
     double max_error; /* the largest of them */
     double mean_error;
 } ltc_table;

@@ -1,12 +1,12 @@
 #!/bin/bash
-# The GGX LTC table's writers (luts/ltc_ggx_writers.c): two generations are
+# The GGX LTC table's writers (ltc/ltc_ggx_writers.c): two generations are
 # byte-identical, the EXR round-trips bit for bit (in ltc_ggx_emit), the C
 # header compiles as C11, the HLSL and GLSL compile with glslangValidator, no
 # temporary file is left.
 emit=$1
 work=$2
 rm -rf "$work" && mkdir -p "$work/a" "$work/b"
-source "$(dirname "$0")/../cli/cli_test_lib.sh"
+source "$(dirname "$0")/../../../tests/cli/cli_test_lib.sh"
 
 "$emit" "$work/a" && pass || fail "first generation"
 "$emit" "$work/b" >/dev/null && pass || fail "second generation"

@@ -1,12 +1,12 @@
-/* Fits an 8^2 GGX LTC table (fitters/ltc_fit.h) and writes it in every
+/* Fits an 8^2 GGX LTC table (ltc/ltc_fit.h) and writes it in every
  * format to the folder argv[1] (for test_ltc_ggx_writers.sh); checks that
  * the EXR reads back bit-identical, channels and attributes included. */
 #include <string.h>
 
 #include "core/exr_io.h"
 #include "core/reference_schema.h"
-#include "fitters/ltc_fit.h"
-#include "luts/ltc_ggx_writers.h"
+#include "ltc/ltc_fit.h"
+#include "ltc/ltc_ggx_writers.h"
 #include "tests/check.h"
 
 static int plane_mismatches(const float *plane, const ltc_table *t, int c)

@@ -1,5 +1,5 @@
-/* The GGX LTC table's files (luts/ltc_ggx_writers.h). */
-#include "luts/ltc_ggx_writers.h"
+/* The GGX LTC table's files (ltc/ltc_ggx_writers.h). */
+#include "ltc/ltc_ggx_writers.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,4 +1,4 @@
-/* Writers of the GGX LTC table (luts/ltc_ggx.h), each carrying
+/* Writers of the GGX LTC table (ltc/ltc_ggx.h), each carrying
  * ltc_ggx_description() (the axes) in its metadata or comment:
  *   <base>.exr   float, N x N, channels CH_LTC_NAMES (a, b, c, d, E, B) and
  *                CH_LTC_ERROR (the fit's total-variation error per texel;
@@ -14,11 +14,11 @@
  *                whose text (luts/table_lookup.inc) it carries
  *   <base>.glsl  the same as GLSL (vec4).
  * All written atomically; the same table gives byte-identical files. */
-#ifndef GTLAB_LUTS_LTC_GGX_WRITERS_H
-#define GTLAB_LUTS_LTC_GGX_WRITERS_H
+#ifndef GTLAB_LTC_LTC_GGX_WRITERS_H
+#define GTLAB_LTC_LTC_GGX_WRITERS_H
 
 #include "core/error.h"
-#include "luts/ltc_ggx.h"
+#include "ltc/ltc_ggx.h"
 
 int ltc_ggx_write_exr(const char *path, const ltc_table *t, gt_error *e);
 int ltc_ggx_write_c_header(const char *path, const char *identifier, const ltc_table *t, gt_error *e);

@@ -1,5 +1,5 @@
-/* The LTC table's layout, its distribution and its lookup (luts/ltc_ggx.h). */
-#include "luts/ltc_ggx.h"
+/* The LTC table's layout, its distribution and its lookup (ltc/ltc_ggx.h). */
+#include "ltc/ltc_ggx.h"
 
 #include <math.h>
 #include <stdlib.h>

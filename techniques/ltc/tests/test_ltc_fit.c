@@ -1,4 +1,4 @@
-/* The GGX LTC fit (fitters/ltc_fit.h) against mathematics:
+/* The GGX LTC fit (ltc/ltc_fit.h) against mathematics:
  *  - an exact clamped-cosine target gives the identity M^-1 (a = c = 1,
  *    b = d = 0) from a distant start, error ~0;
  *  - every fitted distribution integrates to 1 over the sphere, by an
@@ -17,8 +17,8 @@
 
 #include "core/ggx.h"
 #include "core/sobol.h"
-#include "fitters/ltc_fit.h"
-#include "realtime/sphere_light_ltc.h"
+#include "ltc/ltc_fit.h"
+#include "ltc/ltc_sphere.h"
 #include "tests/check.h"
 
 static double cosine_target(void *user, const double l[3])

@@ -1,6 +1,6 @@
-/* LTC sphere lights (realtime/sphere_light_ltc.h): the clipped polygon's
+/* LTC sphere lights (ltc/ltc_sphere.h): the clipped polygon's
  * form factor and the sphere as an equal-area N-gon facing the point. */
-#include "realtime/sphere_light_ltc.h"
+#include "ltc/ltc_sphere.h"
 
 #include <math.h>
 

@@ -1,4 +1,4 @@
-/* Fitting the GGX LTC table (luts/ltc_ggx.h) with Ceres (fitters/ceres_bridge.h).
+/* Fitting the GGX LTC table (ltc/ltc_ggx.h) with Ceres (fitters/ceres_bridge.h).
  *
  * Objective. Heitz et al. 2016 (their fitting code, fitLTC) minimise
  * an L3 error estimated by importance sampling the BRDF and the LTC. gtlab
@@ -20,7 +20,7 @@
  * cosine) is fitted exactly, whatever the grid's own quadrature error. L2 (not Heitz's L3) because Ceres
  * minimises squares; both weigh the lobe's peak most.
  *
- * Parameters: m = (a, b, c, d) of M^-1 (luts/ltc_ggx.h), a and c kept
+ * Parameters: m = (a, b, c, d) of M^-1 (ltc/ltc_ggx.h), a and c kept
  * positive (bounds [1e-6, 1e7]), derivatives by Ceres' central differences
  * (all in double). Warm start as Heitz's: the column at n.v ~ 1 starts from
  * the isotropic scaling M^-1 = diag(1/alpha, 1/alpha, 1) (GGX at normal
@@ -34,11 +34,11 @@
  * The fit's error per cell: the total-variation distance between D and t,
  * 1/2 \int_S |D - t| dl on the same quadrature: the share of the lobe's
  * energy the LTC puts in the wrong place (0 exact, 1 disjoint). */
-#ifndef GTLAB_FITTERS_LTC_FIT_H
-#define GTLAB_FITTERS_LTC_FIT_H
+#ifndef GTLAB_LTC_LTC_FIT_H
+#define GTLAB_LTC_LTC_FIT_H
 
 #include "core/error.h"
-#include "luts/ltc_ggx.h"
+#include "ltc/ltc_ggx.h"
 
 #define LTC_FIT_BRDF_GRID 16
 #define LTC_FIT_COSINE_GRID 12

@@ -1,5 +1,5 @@
-/* The GGX LTC fit (fitters/ltc_fit.h: the objective, the grid, the warm start). */
-#include "fitters/ltc_fit.h"
+/* The GGX LTC fit (ltc/ltc_fit.h: the objective, the grid, the warm start). */
+#include "ltc/ltc_fit.h"
 
 #include <math.h>
 #include <omp.h>

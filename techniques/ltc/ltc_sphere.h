@@ -14,7 +14,7 @@
  *
  * (the edge's angle from atan2(|p_i x p_j|, p_i . p_j), exact and stable in
  * float down to the sun's size, instead of the shipped code's fitted
- * theta / sin(theta): see realtime/sphere_light_ltc.c). Vertices are held as a common centre plus offsets,
+ * theta / sin(theta): see ltc/ltc_sphere.c). Vertices are held as a common centre plus offsets,
  * so the cross products of a tiny polygon's nearly parallel vertices are
  * taken of the offsets (C x (O_j - O_i) + O_i x O_j): no cancellation.
  *
@@ -27,13 +27,13 @@
  * Heitz 2016's clipped polygon integral, rather than the course's ellipse
  * and sphere form-factor approximation: the polygon route is exact up to
  * the N-gon's own discretisation error, which is measured against a
- * 1024-gon (docs/decisions.md, "LTC sphere lights"), and it reuses the one
+ * 1024-gon (README.md, "Decisions"), and it reuses the one
  * polygon integral the tests check against closed forms. */
-#ifndef GTLAB_REALTIME_SPHERE_LIGHT_LTC_H
-#define GTLAB_REALTIME_SPHERE_LIGHT_LTC_H
+#ifndef GTLAB_LTC_LTC_SPHERE_H
+#define GTLAB_LTC_LTC_SPHERE_H
 
 #include "core/vec3.h"
-#include "luts/ltc_ggx.h"
+#include "ltc/ltc_ggx.h"
 
 #define LTC_SPHERE_SIDES 8     /* the N-gon of the shipped evaluation */
 #define LTC_MAX_SIDES 1024     /* polygons up to this many vertices (before clipping) */
