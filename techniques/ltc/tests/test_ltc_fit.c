@@ -132,5 +132,5 @@ int main(void)
     ltc_table bad;
     CHECK(ltc_fit_table(&bad, 2, 1, &e) == -1 && bad.data == NULL);
     ltc_table_free(&one), ltc_table_free(&two);
-    return check_report("test_ltc_fit");
+    return check_report("ltc_fit");
 }

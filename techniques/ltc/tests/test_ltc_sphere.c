@@ -124,5 +124,5 @@ int main(void)
     check_hemisphere();
     check_small_polygon();
     check_ngon_convergence();
-    return check_report("test_sphere_light_ltc");
+    return check_report("ltc_sphere");
 }

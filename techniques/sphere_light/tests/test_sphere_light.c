@@ -285,5 +285,5 @@ int main(void)
     test_sun_regime();
     test_small_light_limit();
     test_representative_diffuse();
-    return check_report("test_sphere_light");
+    return check_report("sphere_light_realtime");
 }

@@ -48,5 +48,5 @@ int main(void)
     for (int i = 0; i < N; ++i)
         sq += (d[i] - mean) * (d[i] - mean);
     CHECK(se > 0.0 && fabs(se - sqrt(sq / (N - 1) / N)) < 1e-12);
-    return check_report("fitters_sphere_light_paired");
+    return check_report("sphere_light_paired");
 }

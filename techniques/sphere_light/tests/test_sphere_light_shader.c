@@ -102,5 +102,5 @@ int main(void)
     CHECK_MSG(compiles(SHADER_HLSL), "generated HLSL does not compile (see the .log beside it)");
     test_shader_functions_match_c();
     test_no_second_copy();
-    return check_report("test_sphere_light_shader");
+    return check_report("sphere_light_shader");
 }

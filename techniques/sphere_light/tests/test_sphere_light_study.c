@@ -79,5 +79,5 @@ int main(void)
     mkdir(dir, 0755);
     test_noh_sweep(dir);
     test_fit();
-    return check_report("test_sphere_light_study");
+    return check_report("sphere_light_study");
 }
