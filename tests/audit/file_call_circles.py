@@ -29,8 +29,6 @@ KNOWN = [
      "raytracer/specular_occlusion_quantity.c"],
     # any user function is scored by the multi-bounce scorer, which SO reuses
     ["studies/multibounce_score.c", "studies/specular_occlusion_score.c"],
-    ["techniques/sphere_light/sphere_light_study.c", "techniques/sphere_light/sphere_light_sun.c",
-     "techniques/sphere_light/sphere_light_terminator.c", "techniques/sphere_light/sphere_light_units.c"],
 ]
 
 
