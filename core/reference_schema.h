@@ -185,7 +185,7 @@
 #define CH_DFG_A "dfg.A"
 #define CH_DFG_B "dfg.B"
 #define CH_DFG_E "dfg.E"
-/* The GGX LTC table (luts/ltc_ggx.h): M^-1's a, b, c, d, the magnitude E,
+/* The GGX LTC table (techniques/ltc/ltc_ggx.h): M^-1's a, b, c, d, the magnitude E,
  * the Fresnel term B, and the fit's total-variation error per texel. */
 #define CH_LTC_NAMES {"ltc.a", "ltc.b", "ltc.c", "ltc.d", "ltc.E", "ltc.B"}
 #define CH_LTC_ERROR "ltc.error"

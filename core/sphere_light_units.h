@@ -1,6 +1,6 @@
 /* The unit of sphere-light radiance shared by the Monte Carlo reference
  * (raytracer/sphere_light_reference.h) and the real-time approximations
- * (realtime/sphere_light.h): the normal illuminance of a sphere of unit
+ * (sphere_light/sphere_light.h): the normal illuminance of a sphere of unit
  * radiance, E_perp / L_e = pi sin^2(sigma), sin(sigma) = R / d. Specular
  * values are reflected radiance per unit of it. */
 #ifndef GTLAB_CORE_SPHERE_LIGHT_UNITS_H

@@ -54,7 +54,7 @@
  *
  * The table is shared: the environment lighting's split sum
  * (luts/prefiltered_radiance.h, realtime/env_approx.h) and the LTC fit's
- * magnitude and Fresnel term (fitters/ltc_fit.c) read it; the DFG technique
+ * magnitude and Fresnel term (techniques/ltc/ltc_fit.c) read it; the DFG technique
  * (techniques/dfg/) writes it in every format and studies its size. */
 #ifndef GTLAB_LUTS_DFG_LUT_H
 #define GTLAB_LUTS_DFG_LUT_H

@@ -1,6 +1,6 @@
 /* The C dialect of luts/table_lookup.inc, the bilinear clamp-to-edge lookup
  * of a square table at texel centres: what its primitives mean when C
- * compiles it (luts/dfg_lut.c for dfg_lut_sample, luts/ltc_ggx.c for
+ * compiles it (luts/dfg_lut.c for dfg_lut_sample, techniques/ltc/ltc_ggx.c for
  * ltc_table_sample), one channel of an interleaved table at a time, in
  * float, with C's fminf/fmaxf clamp. A C file includes this header, then
  * the .inc (the shaders' writers append its text behind their own dialect:
@@ -19,7 +19,7 @@
 typedef float dfg_value;
 /* Channel `channel` of an interleaved size x size table of `channels`
  * floats per texel: the DFG table (DFG_SCALE, DFG_BIAS, DFG_ALBEDO of
- * DFG_CHANNELS, luts/dfg_lut.h) and the LTC table (luts/ltc_ggx.h) alike. */
+ * DFG_CHANNELS, luts/dfg_lut.h) and the LTC table (techniques/ltc/ltc_ggx.h) alike. */
 typedef struct {
     const float *data;
     int size, channels, channel;

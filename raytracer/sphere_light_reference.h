@@ -70,7 +70,7 @@ void sphere_light_reference(const sphere_light_config *c, uint32_t samples, uint
  * normalised to (core/sphere_light_units.h). */
 
 /* ---- The maximum of (N.H)^2 over the light, by brute force ----
- * The reference for GetNoHSquared (realtime/sphere_light.h): plain double
+ * The reference for GetNoHSquared (sphere_light/sphere_light.h): plain double
  * vector maths, sharing nothing with the real-time code. n = +z, R the
  * mirror direction of v, T = normalize(R - (R.lc) lc), B = +-(T x lc) with
  * N.B >= 0, and the rim point L(phi) = cos(sigma) lc + sin(sigma) (cos(phi) T + sin(phi) B). */

@@ -3,7 +3,7 @@
 
 #include <math.h>
 
-#include "realtime/sphere_light.h"
+#include "realtime/sphere_illuminance.h"
 
 float ao_point_decal_published(vec3 pos, vec3 norm)
 {

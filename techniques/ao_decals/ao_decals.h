@@ -26,7 +26,7 @@
  * with d the vector to the centre: exact while the whole sphere is above
  * the tangent plane (cos theta > sin sigma), as the talk assumes; the exact
  * horizon-clipped form is Lagarde and de Rousiers 2014's illuminance of a
- * sphere (realtime/sphere_light.h) over pi.
+ * sphere (realtime/sphere_illuminance.h) over pi.
  *
  * Box: the talk's box decal is empirical ("not physically accurate in any
  * way") and its code is not in the text; gtlab's exact form is Lambert's

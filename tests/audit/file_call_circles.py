@@ -27,8 +27,6 @@ KNOWN = [
     # the render registry and two of its quantities (raytracer/)
     ["raytracer/environment_quantity.c", "raytracer/reference_quantities.c",
      "raytracer/specular_occlusion_quantity.c"],
-    ["studies/sphere_light.c", "studies/sphere_light_sun.c", "studies/sphere_light_terminator.c",
-     "studies/sphere_light_units.c"],
 ]
 
 

@@ -30,7 +30,7 @@ commands, root, work = json.load(open(sys.argv[1])), sys.argv[2], sys.argv[3]
 seen = set()
 for i, c in enumerate(commands):
     source = c["file"]
-    if not source.endswith(".c") or not source.startswith(root + "/") or source.startswith(root + "/tests/") \
+    if not source.endswith(".c") or not source.startswith(root + "/") or "/tests/" in source[len(root):] \
             or "/build" in source[len(root):] or source in seen:
         continue
     seen.add(source)

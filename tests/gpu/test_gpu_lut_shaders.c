@@ -1,7 +1,7 @@
 /* gtlab's generated LUT shaders, executed (issue 15, item 4): the DFG
  * table's DFG() and the LTC table's LTC_INVERSE_M and LTC_MAGNITUDE_FRESNEL,
  * each as its writer writes it (dfg/dfg_lut_writers.c,
- * luts/ltc_ggx_writers.c: the tables as constant arrays, then the lookup's
+ * ltc/ltc_ggx_writers.c: the tables as constant arrays, then the lookup's
  * text, luts/table_lookup.inc), GLSL and HLSL, run on Vulkan at pseudo-random
  * points and compared with the C lookups (dfg_lut_sample, ltc_table_sample)
  * of the same tables at the same float inputs, within the bound of
@@ -20,9 +20,9 @@
  * test_gpu_specular_occlusion.c), times N: s = 20 N. */
 #define _GNU_SOURCE
 #include "dfg/dfg_lut_writers.h"
+#include "ltc/ltc_ggx.h"
+#include "ltc/ltc_ggx_writers.h"
 #include "luts/dfg_lut.h"
-#include "luts/ltc_ggx.h"
-#include "luts/ltc_ggx_writers.h"
 #include "tests/gpu/lut_shader_check.h"
 
 /* The bounds of an N x N table's channels (bilinear: L = 2), s_x and s_y of

@@ -10,7 +10,7 @@
 
 #include "core/ggx.h"
 #include "raytracer/sphere_light_reference.h"
-#include "realtime/sphere_light.h"
+#include "realtime/sphere_illuminance.h"
 #include "tests/check.h"
 
 #define SAMPLES 4096u
