@@ -1,5 +1,5 @@
 /* gtlab's generated best-fit normals HLSL, executed (issue 15, item 4):
- * luts/best_fit_normals_writers.c writes a small table's <base>.hlsl (the
+ * best_fit_normals/best_fit_normals_writers.c writes a small table's <base>.hlsl (the
  * talk's CompressNormalToUnsignedGBuffer over `Texture2D<float>
  * bestFitNormals; SamplerState pointClamp;`, and DecodeGBufferNormal); the
  * test wraps the two into a compute shader, binds the table as a sampled
@@ -45,9 +45,9 @@
 #include "gpu/sample_map.h"
 #include "gpu/shader_compiler.h"
 #include "gpu/vulkan_device.h"
-#include "luts/best_fit_normals.h"
-#include "luts/best_fit_normals_writers.h"
-#include "realtime/normal_encoding.h"
+#include "best_fit_normals/best_fit_normals.h"
+#include "best_fit_normals/best_fit_normals_writers.h"
+#include "best_fit_normals/normal_encoding.h"
 #include "tests/check.h"
 
 static const double kU = 1.0 / 16777216.0; /* 2^-24 */
@@ -154,7 +154,7 @@ static int candidates(double x, int index[2])
 }
 
 /* The table coordinates (u, v) of n: the two smaller |components| a >= b,
- * u = a, v = b / a (luts/best_fit_normals.h). */
+ * u = a, v = b / a (best_fit_normals/best_fit_normals.h). */
 static void coordinates(const double n[3], double *u, double *v)
 {
     double x = fabs(n[0]), y = fabs(n[1]), z = fabs(n[2]), m = fmax(x, fmax(y, z));

@@ -1,5 +1,5 @@
 /* Best-fit normals (Kaplanyan 2010) as `gtlab all` studies them: the table
- * the talk ships (512^2, luts/best_fit_normals.h) written in every format;
+ * the talk ships (512^2, best_fit_normals/best_fit_normals.h) written in every format;
  * the audit of the talk's cell counts ("Storage techniques breakdown");
  * the angular error of each G-buffer normal encoding over uniformly random
  * directions; and what that error does to a GGX highlight.
@@ -13,8 +13,8 @@
  * Writes <output>/normals/best_fit_normals_512.{exr,png,h,hlsl},
  * highlight previews, normals/cells.dat (face, sampled counts) and
  * normals/error_cdf.dat (each encoding's error by percentile). */
-#ifndef GTLAB_STUDIES_BEST_FIT_NORMALS_H
-#define GTLAB_STUDIES_BEST_FIT_NORMALS_H
+#ifndef GTLAB_BEST_FIT_NORMALS_STUDY_H
+#define GTLAB_BEST_FIT_NORMALS_STUDY_H
 
 #include "studies/study.h"
 

@@ -11,7 +11,7 @@
 #include <stdio.h>
 
 #include "core/vec3.h" /* M_PI */
-#include "studies/best_fit_normals.h"
+#include "best_fit_normals/best_fit_normals_study.h"
 #include "tests/check.h"
 
 int main(void)
@@ -41,5 +41,5 @@ int main(void)
     printf("naive %.4f/%.4f/%.4f  fit %.4f/%.4f/%.4f  exhaustive %.4f deg; dssim r=0.1 naive %.2e fit %.2e\n",
            naive->mean_deg, naive->p99_deg, naive->max_deg, fit->mean_deg, fit->p99_deg, fit->max_deg,
            r.encodings[4].mean_deg, naive->highlight_dssim[0], fit->highlight_dssim[0]);
-    return check_report("studies_best_fit_normals");
+    return check_report("test_best_fit_normals_study");
 }

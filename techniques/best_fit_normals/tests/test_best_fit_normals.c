@@ -1,4 +1,4 @@
-/* Best-fit normals (luts/best_fit_normals.h) against what they must be:
+/* Best-fit normals (best_fit_normals/best_fit_normals.h) against what they must be:
  * - every table value is t = k / 255 with k odd in 3..255, so 8 bits hold it;
  * - the talk's search and the angle search never beat the exhaustive best
  *   cell, and the angle search is never worse than the talk's metric (same
@@ -17,9 +17,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "luts/best_fit_normals.h"
-#include "luts/best_fit_normals_cells.h"
-#include "luts/best_fit_normals_writers.h"
+#include "best_fit_normals/best_fit_normals.h"
+#include "best_fit_normals/best_fit_normals_cells.h"
+#include "best_fit_normals/best_fit_normals_writers.h"
 #include "core/exr_io.h"
 #include "core/reference_schema.h"
 #include "core/vec3.h" /* M_PI */

@@ -26,8 +26,8 @@
  * encode no direction (a above the major component: u > 1 / sqrt(2 + v^2))
  * repeat the nearest valid texel of their row, so filtering near the edge
  * reads valid neighbours. */
-#ifndef GTLAB_LUTS_BEST_FIT_NORMALS_H
-#define GTLAB_LUTS_BEST_FIT_NORMALS_H
+#ifndef GTLAB_BEST_FIT_NORMALS_H
+#define GTLAB_BEST_FIT_NORMALS_H
 
 #include <stdint.h>
 

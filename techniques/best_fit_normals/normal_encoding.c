@@ -1,10 +1,10 @@
 /* G-buffer normal encodings (normal_encoding.h). */
-#include "realtime/normal_encoding.h"
+#include "best_fit_normals/normal_encoding.h"
 
 #include <math.h>
 #include <stdlib.h>
 
-#include "luts/best_fit_normals.h"
+#include "best_fit_normals/best_fit_normals.h"
 
 static const char *const rgb8_names[RGB8_ENCODING_COUNT] = {"naive", "max", "best-fit", "best-fit-bilinear"};
 

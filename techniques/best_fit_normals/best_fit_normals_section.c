@@ -1,11 +1,11 @@
 /* The best-fit normals section of `gtlab all` (best_fit_normals_section.h). */
-#include "report/best_fit_normals_section.h"
+#include "best_fit_normals/best_fit_normals_section.h"
 
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 
-#include "luts/best_fit_normals_cells.h"
+#include "best_fit_normals/best_fit_normals_cells.h"
 #include "report/gnuplot_plot.h"
 #include "report/report_table.h"
 
@@ -233,7 +233,8 @@ int normals_section(report_context *ctx, const normals_result *r, gt_error *e)
     report_paragraph(ctx->doc,
                      "Kaplanyan 2010 stores a unit normal in RGB8 scaled along its ray to the cell whose centre "
                      "deviates least from it, the scale baked per direction into a %dx%d table (Appendix A's search "
-                     "and lookup, transcribed; luts/best_fit_normals.h), written here as normals/best_fit_normals_%d."
+                     "and lookup, transcribed; best_fit_normals/best_fit_normals.h), written here as "
+                     "normals/best_fit_normals_%d."
                      "{exr,png,h,hlsl} (built in %.2f s). First the talk's cell counts, each counted exactly by "
                      "enumerating the 256^3 cells under the stated definition:",
                      r->request.table_size, r->request.table_size, r->request.table_size, r->table_seconds);

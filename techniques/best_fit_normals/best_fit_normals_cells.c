@@ -1,11 +1,11 @@
 /* The cell counts of best_fit_normals_cells.h. */
-#include "luts/best_fit_normals_cells.h"
+#include "best_fit_normals/best_fit_normals_cells.h"
 
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 
-#include "luts/best_fit_normals.h"
+#include "best_fit_normals/best_fit_normals.h"
 
 /* |2 c - 255|: the cell's value in units of 1/255, always odd. */
 static int odd_magnitude(int c)

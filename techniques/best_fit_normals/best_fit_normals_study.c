@@ -1,5 +1,5 @@
-/* The best-fit normals study (studies/best_fit_normals.h). */
-#include "studies/best_fit_normals.h"
+/* The best-fit normals study (best_fit_normals/best_fit_normals_study.h). */
+#include "best_fit_normals/best_fit_normals_study.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -11,11 +11,11 @@
 #include "core/ggx.h"
 #include "core/image_io.h"
 #include "core/progress.h"
-#include "luts/best_fit_normals.h"
-#include "luts/best_fit_normals_cells.h"
-#include "luts/best_fit_normals_writers.h"
+#include "best_fit_normals/best_fit_normals.h"
+#include "best_fit_normals/best_fit_normals_cells.h"
+#include "best_fit_normals/best_fit_normals_writers.h"
 #include "metrics/ssim.h"
-#include "realtime/normal_encoding.h"
+#include "best_fit_normals/normal_encoding.h"
 
 enum { EXHAUSTIVE = 4, OCTAHEDRAL = 5 };
 static const char *const encoding_names[NORMALS_ENCODINGS] = {

@@ -7,7 +7,7 @@
  *   naive      x = n (the normalised normal)
  *   max        x = n / max|n_i| (on the cube's surface)
  *   best fit   x = n / max|n_i| * t, t from the best-fit table
- *              (luts/best_fit_normals.h), point or bilinear lookup
+ *              (best_fit_normals/best_fit_normals.h), point or bilinear lookup
  * Octahedral (Meyer et al. 2010; Cigolle et al. 2014, "A Survey of
  * Efficient Representations for Independent Unit Vectors", JCGT 3(2)):
  * n / (|x| + |y| + |z|) on the octahedron, the lower half folded over the
@@ -15,12 +15,12 @@
  * code = round(clamp(p, -1, 1) (2^(b-1) - 1)). The precise encode
  * (Cigolle et al. §3.2, "oct*P") tries the four codes about p (floor and
  * ceil per axis) and keeps the one that decodes closest to n. */
-#ifndef GTLAB_REALTIME_NORMAL_ENCODING_H
-#define GTLAB_REALTIME_NORMAL_ENCODING_H
+#ifndef GTLAB_BEST_FIT_NORMALS_NORMAL_ENCODING_H
+#define GTLAB_BEST_FIT_NORMALS_NORMAL_ENCODING_H
 
 typedef enum { RGB8_NAIVE, RGB8_MAX, RGB8_BEST_FIT_POINT, RGB8_BEST_FIT_BILINEAR, RGB8_ENCODING_COUNT } rgb8_encoding;
 
-/* The best-fit table the BEST_FIT encodings read (luts/best_fit_normals.h). */
+/* The best-fit table the BEST_FIT encodings read (best_fit_normals/best_fit_normals.h). */
 typedef struct {
     const float *table;
     int size;

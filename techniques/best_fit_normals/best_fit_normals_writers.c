@@ -1,5 +1,5 @@
 /* Writers of the best-fit normals table (best_fit_normals_writers.h). */
-#include "luts/best_fit_normals_writers.h"
+#include "best_fit_normals/best_fit_normals_writers.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -28,7 +28,7 @@ static int write_exr(const char *path, const float *table, int size, const char 
     return rc;
 }
 
-/* The 8-bit code of a texel: t = k / 255 exactly (luts/best_fit_normals.h). */
+/* The 8-bit code of a texel: t = k / 255 exactly (best_fit_normals/best_fit_normals.h). */
 static int texel_code(float t)
 {
     return (int)lround(t * 255.0);

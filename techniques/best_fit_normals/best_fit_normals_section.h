@@ -1,11 +1,11 @@
-/* Best-fit normals (studies/best_fit_normals.h): the audit of the talk's
+/* Best-fit normals (best_fit_normals/best_fit_normals_study.h): the audit of the talk's
  * cell counts, each encoding's angular error and its effect on a GGX
  * highlight, the table in every format (figures/normals_cells.png). */
-#ifndef GTLAB_REPORT_BEST_FIT_NORMALS_SECTION_H
-#define GTLAB_REPORT_BEST_FIT_NORMALS_SECTION_H
+#ifndef GTLAB_BEST_FIT_NORMALS_SECTION_H
+#define GTLAB_BEST_FIT_NORMALS_SECTION_H
 
 #include "report/report_context.h"
-#include "studies/best_fit_normals.h"
+#include "best_fit_normals/best_fit_normals_study.h"
 
 /* Adds the section and its claims rows; -1 (e set) if a figure could not be made. */
 /* The four claims rows of the talk's "Storage techniques breakdown" from the

@@ -18,8 +18,8 @@
  *   centres of a cubemap of `face` x `face` texels per face, the talk's
  *   way of baking directions ("bake it into a cubemap"): such counts grow
  *   with the face size towards the exact ones. */
-#ifndef GTLAB_LUTS_BEST_FIT_NORMALS_CELLS_H
-#define GTLAB_LUTS_BEST_FIT_NORMALS_CELLS_H
+#ifndef GTLAB_BEST_FIT_NORMALS_CELLS_H
+#define GTLAB_BEST_FIT_NORMALS_CELLS_H
 
 enum { BFN_CELL_COUNT = 256 * 256 * 256 };
 

@@ -1,6 +1,6 @@
 /* Best-fit normals: the talk's search, the exhaustive search and the table
  * (best_fit_normals.h). */
-#include "luts/best_fit_normals.h"
+#include "best_fit_normals/best_fit_normals.h"
 
 #include <math.h>
 #include <stdlib.h>
