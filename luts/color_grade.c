@@ -4,21 +4,12 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "core/srgb.h"
 #include "core/vec3.h" /* M_PI */
 
 static double clamp01(double x)
 {
     return x < 0.0 ? 0.0 : (x > 1.0 ? 1.0 : x);
-}
-
-double srgb_to_linear(double v)
-{
-    return v <= 0.04045 ? v / 12.92 : pow((v + 0.055) / 1.055, 2.4);
-}
-
-double linear_to_srgb(double v)
-{
-    return v <= 0.0031308 ? 12.92 * v : 1.055 * pow(v, 1.0 / 2.4) - 0.055;
 }
 
 static double levels(const double p[5], double x)

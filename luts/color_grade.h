@@ -14,7 +14,8 @@
  *   saturation  mix with the Rec. 709 luma Y: Y + s (x - Y)
  *   hue         rotation by an angle about the grey axis (1, 1, 1)/sqrt(3)
  *   cdl         ASC CDL slope, offset, power: (x slope + offset)^power
- *   exposure    2^stops in linear light (decode sRGB, scale, encode), then
+ *   exposure    2^stops in linear light (decode sRGB, scale, encode:
+ *               core/srgb.h), then
  *               the clamp: a clipped edit, the LUT's hardest case (a kink) */
 #ifndef GTLAB_LUTS_COLOR_GRADE_H
 #define GTLAB_LUTS_COLOR_GRADE_H
@@ -48,9 +49,5 @@ const color_grade *color_grade_preset(int index);
 
 /* out = the grade applied to the display colour in (both in [0, 1]^3). */
 void color_grade_apply(const color_grade *g, const double in[3], double out[3]);
-
-/* sRGB transfer functions (IEC 61966-2-1). */
-double srgb_to_linear(double v);
-double linear_to_srgb(double v);
 
 #endif

@@ -4,6 +4,8 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "core/srgb.h"
+
 static const char *const space_names[COLOR_LUT_SPACES] = {"sRGB", "linear", "log2"};
 enum { LOG_STOPS = 12 };
 static const char *const interpolation_names[COLOR_LUT_INTERPOLATIONS] = {"trilinear", "tetrahedral"};

@@ -3,7 +3,7 @@
 
 #include <math.h>
 
-#include "luts/color_grade.h" /* linear_to_srgb: the one sRGB encode */
+#include "core/srgb.h" /* linear_to_srgb: the one sRGB encode */
 
 double gamma_equal_precision_point(double gamma)
 {

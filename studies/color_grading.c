@@ -10,6 +10,7 @@
 #include "core/vec3.h" /* M_PI */
 #include "metrics/color_difference.h"
 #include "core/pixel_filter.h"
+#include "core/srgb.h"
 #include "raytracer/shaded_frame.h"
 #include "realtime/hdr_precision.h"
 
