@@ -17,8 +17,8 @@
  *   exposure    2^stops in linear light (decode sRGB, scale, encode:
  *               core/srgb.h), then
  *               the clamp: a clipped edit, the LUT's hardest case (a kink) */
-#ifndef GTLAB_LUTS_COLOR_GRADE_H
-#define GTLAB_LUTS_COLOR_GRADE_H
+#ifndef GTLAB_COLOR_GRADING_COLOR_GRADE_H
+#define GTLAB_COLOR_GRADING_COLOR_GRADE_H
 
 enum { COLOR_GRADE_MAX_OPS = 6, COLOR_CURVE_MAX_POINTS = 6 };
 

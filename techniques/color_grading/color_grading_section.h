@@ -1,11 +1,11 @@
-/* Colour-grading LUTs (studies/color_grading.h): their error against the
+/* Colour-grading LUTs (color_grading_study.h): their error against the
  * exact grades by size, input space, interpolation and storage, and when
  * 16^3 suffices. */
-#ifndef GTLAB_REPORT_COLOR_GRADING_SECTION_H
-#define GTLAB_REPORT_COLOR_GRADING_SECTION_H
+#ifndef GTLAB_COLOR_GRADING_SECTION_H
+#define GTLAB_COLOR_GRADING_SECTION_H
 
 #include "report/report_context.h"
-#include "studies/color_grading.h"
+#include "color_grading/color_grading_study.h"
 
 /* The claims row "16^3 is enough for the majority of colour transformations"
  * from the rows of the GPU path (sRGB-indexed, RGBA8, trilinear); a NULL

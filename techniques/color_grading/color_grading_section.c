@@ -1,5 +1,5 @@
 /* The colour-grading LUT section (color_grading_section.h). */
-#include "report/color_grading_section.h"
+#include "color_grading/color_grading_section.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -167,8 +167,8 @@ int color_grading_section(report_context *ctx, const grading_result *r, gt_error
     report_paragraph(ctx->doc,
                      "Kaplanyan 2010 bakes all global colour transformations into a 3-D LUT and finds 16^3 enough. "
                      "Six grades as grading tools apply them (levels, monotone curves, saturation, hue rotation, "
-                     "ASC CDL, a clipped exposure; luts/color_grade.h) are baked at 16^3, 32^3 and 64^3, indexed "
-                     "by sRGB, linear or log2 values (12 stops), stored as float or RGBA8, looked up trilinearly or "
+                     "ASC CDL, a clipped exposure; color_grading/color_grade.h) are baked at 16^3, 32^3 and 64^3, "
+                     "indexed by sRGB, linear or log2 values (12 stops), stored as float or RGBA8, looked up trilinearly or "
                      "tetrahedrally, and scored against the exact grade: on a photo-like HDR chart tone-mapped "
                      "to display values (hue, saturation and exposure sweeps, skin tones, a twelve-stop grey "
                      "ramp), on %d random colours (the cube) and on a gtlab render of the Cornell box (the frames of the "

@@ -1,5 +1,5 @@
 /* Colour grades (color_grade.h). */
-#include "luts/color_grade.h"
+#include "color_grading/color_grade.h"
 
 #include <math.h>
 #include <stddef.h>

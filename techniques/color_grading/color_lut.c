@@ -1,5 +1,5 @@
 /* 3-D colour LUTs (color_lut.h). */
-#include "luts/color_lut.h"
+#include "color_grading/color_lut.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -1,5 +1,5 @@
-/* The colour-grading LUT study (studies/color_grading.h). */
-#include "studies/color_grading.h"
+/* The colour-grading LUT study (color_grading_study.h). */
+#include "color_grading/color_grading_study.h"
 
 #include <math.h>
 #include <stdio.h>

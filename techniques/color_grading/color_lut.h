@@ -18,10 +18,10 @@
  *                fractional parts; Kasson, Nin, Plouffe and Hafner 1995),
  *                exact for affine functions, and keeping greys on the grey
  *                diagonal. */
-#ifndef GTLAB_LUTS_COLOR_LUT_H
-#define GTLAB_LUTS_COLOR_LUT_H
+#ifndef GTLAB_COLOR_GRADING_COLOR_LUT_H
+#define GTLAB_COLOR_GRADING_COLOR_LUT_H
 
-#include "luts/color_grade.h"
+#include "color_grading/color_grade.h"
 
 typedef enum { COLOR_LUT_SRGB, COLOR_LUT_LINEAR, COLOR_LUT_LOG, COLOR_LUT_SPACES } color_lut_space;
 typedef enum { COLOR_LUT_TRILINEAR, COLOR_LUT_TETRAHEDRAL, COLOR_LUT_INTERPOLATIONS } color_lut_interpolation;

@@ -1,4 +1,4 @@
-/* Colour grades and 3-D LUTs (luts/color_grade.h, luts/color_lut.h):
+/* Colour grades and 3-D LUTs (color_grade.h, color_lut.h):
  * - each operation at its neutral setting is the identity; hue rotation by
  *   360 degrees is the identity and keeps greys grey at any angle; the curves
  *   pass through their control points and never decrease;
@@ -11,7 +11,7 @@
  *   multilinear one (x y z), and both are continuous across cell faces. */
 #include <math.h>
 
-#include "luts/color_lut.h"
+#include "color_grading/color_lut.h"
 #include "tests/check.h"
 
 static double uniform(unsigned long long *s)

@@ -1,5 +1,5 @@
 /* Colour-grading LUTs (Kaplanyan 2010: "16x16x16 LUT proved to be enough")
- * as `gtlab all` studies them: six grades (luts/color_grade.h) baked into
+ * as `gtlab all` studies them: six grades (color_grade.h) baked into
  * 16^3, 32^3 and 64^3 LUTs indexed in sRGB, linear or log2 values, stored as
  * float or 8 bits, looked up trilinearly or tetrahedrally, and scored
  * against the exact grade on
@@ -16,11 +16,11 @@
  * the render is below 1;
  * it is "within 1 LSB" when the chart's 99th percentile is. Writes <output>/grading/chart.png and the graded
  * chart per grade (exact and 16^3). */
-#ifndef GTLAB_STUDIES_COLOR_GRADING_H
-#define GTLAB_STUDIES_COLOR_GRADING_H
+#ifndef GTLAB_COLOR_GRADING_STUDY_H
+#define GTLAB_COLOR_GRADING_STUDY_H
 
-#include "luts/color_grade.h"
-#include "luts/color_lut.h"
+#include "color_grading/color_grade.h"
+#include "color_grading/color_lut.h"
 #include "studies/study.h"
 
 #define GRADING_DIR "grading"
