@@ -12,7 +12,7 @@
 #include "core/pixel_filter.h"
 #include "core/srgb.h"
 #include "raytracer/shaded_frame.h"
-#include "realtime/hdr_precision.h"
+#include "hdr_precision/hdr_precision.h"
 
 enum { CHART_PIXELS = GRADING_CHART_W * GRADING_CHART_H, CUBE_SAMPLES = 32768 };
 

@@ -5,7 +5,7 @@
  * against the exact grade on
  *   chart  a photo-like HDR test chart (hue and saturation sweeps over seven
  *          stops of exposure, skin tones, a grey ramp over twelve stops)
- *          tone-mapped by the filmic curve (realtime/hdr_precision.h) to
+ *          tone-mapped by the filmic curve (hdr_precision/hdr_precision.h) to
  *          display values, 192 x 128;
  *   cube   32768 uniformly random display colours: every input a grade can see;
  *   render a gtlab frame of builtin:cornell (raytracer/shaded_frame.h, 2 x 2

@@ -24,8 +24,8 @@
  *     of 6.2 (1 - d) x^2 + (0.5 - 1.7 d) x - 0.06 d = 0, and c_min = l (x + 0.004).
  * The slide prints the filmic denominator as x (6.2 (x + 1.7)) + 0.06; that
  * form is kept (filmic_transcribed) to show what it would give. */
-#ifndef GTLAB_REALTIME_HDR_PRECISION_H
-#define GTLAB_REALTIME_HDR_PRECISION_H
+#ifndef GTLAB_HDR_PRECISION_H
+#define GTLAB_HDR_PRECISION_H
 
 #define HDR_DISPLAY_THRESHOLD (1.0 / 510.0) /* 0.5 / 255 */
 

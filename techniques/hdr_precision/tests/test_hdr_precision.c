@@ -9,7 +9,7 @@
  *   slide's "-l ln(510/509)". */
 #include <math.h>
 
-#include "realtime/hdr_precision.h"
+#include "hdr_precision/hdr_precision.h"
 #include "tests/check.h"
 
 static double power_encode(double x) { return pow(x, 1.0 / 2.2); }

@@ -1,11 +1,11 @@
-/* The precision figures of Kaplanyan 2010 (studies/hdr_precision.h). */
-#include "studies/hdr_precision.h"
+/* The precision figures of Kaplanyan 2010 (hdr_precision_study.h). */
+#include "hdr_precision/hdr_precision_study.h"
 
 #include <math.h>
 #include <stdio.h>
 
 #include "core/atomic_file.h"
-#include "realtime/hdr_precision.h"
+#include "hdr_precision/hdr_precision.h"
 
 /* One 8-bit code's step in linear units at x: 1/255 linear, (dx/dg)/255 in
  * gamma space (dx/dg = 1 / (dg/dx), by the encodes' derivatives). */

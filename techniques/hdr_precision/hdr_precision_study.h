@@ -1,4 +1,4 @@
-/* Kaplanyan 2010's precision figures, derived (realtime/hdr_precision.h):
+/* Kaplanyan 2010's precision figures, derived (hdr_precision.h):
  * the point above which 8-bit linear storage is finer than gamma storage
  * (the talk: x = 5/11 ~ 116/255), and the HDR lower bounds c_min / l of the
  * exponential and filmic tone mappers (the talk: 0.00196271 and 0.0119052),
@@ -6,8 +6,8 @@
  * the curve as the slide prints it. Writes <output>/hdr/code_steps.dat
  * (linear x, the step of one 8-bit code in linear units: linear, gamma 2.2,
  * sRGB), the data of the report's plot. */
-#ifndef GTLAB_STUDIES_HDR_PRECISION_H
-#define GTLAB_STUDIES_HDR_PRECISION_H
+#ifndef GTLAB_HDR_PRECISION_STUDY_H
+#define GTLAB_HDR_PRECISION_STUDY_H
 
 #include "studies/study.h"
 

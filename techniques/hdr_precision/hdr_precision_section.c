@@ -1,5 +1,5 @@
 /* The section of Kaplanyan 2010's precision figures (hdr_precision_section.h). */
-#include "report/hdr_precision_section.h"
+#include "hdr_precision/hdr_precision_section.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -105,7 +105,7 @@ int hdr_precision_section(report_context *ctx, const hdr_precision_result *r, gt
                      "Kaplanyan 2010 chooses gamma or linear 8-bit storage per texture by the point where the two "
                      "are equally precise, and bounds an HDR buffer's range from below by inverting the tone "
                      "mapper at the display's threshold 0.5/255 (l: the frame's average luminance). Each figure is "
-                     "derived in closed form (realtime/hdr_precision.h) and checked independently.");
+                     "derived in closed form (hdr_precision/hdr_precision.h) and checked independently.");
     figure_row rows[6] = {
         {"equal-precision point, gamma 2.2 (linear x)", "5/11 = 0.4545 ~ 116/255", r->gamma22_point,
          r->talk_median, "gamma g^1.2 = 1; check column: the talk's 5/11"},

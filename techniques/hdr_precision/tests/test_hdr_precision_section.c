@@ -1,9 +1,7 @@
-/* The claims rows of Kaplanyan 2010 (CryENGINE 3) from made-up results (no
- * study runs): the precision section's three, each verdict the one its
- * made-up figures must give under its record (docs/claims-protocol.md); the
- * other techniques' rows are tested in their folders' tests/
- * (techniques/best_fit_normals/, color_grading/, sg_ndf/). */
-#include "report/hdr_precision_section.h"
+/* The precision section's three claims rows from made-up results (no study
+ * runs): each verdict the one its made-up figures must give under its
+ * record (docs/claims-protocol.md). */
+#include "hdr_precision/hdr_precision_section.h"
 #include "tests/check.h"
 #include "tests/section_test.h"
 
@@ -34,5 +32,5 @@ static void hdr_rows(void)
 int main(void)
 {
     hdr_rows();
-    return check_report("test_cryengine_claims");
+    return check_report("test_hdr_precision_section");
 }

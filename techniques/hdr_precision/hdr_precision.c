@@ -1,5 +1,5 @@
 /* Gamma-vs-linear precision and HDR lower bounds (hdr_precision.h). */
-#include "realtime/hdr_precision.h"
+#include "hdr_precision/hdr_precision.h"
 
 #include <math.h>
 

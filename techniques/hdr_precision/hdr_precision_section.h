@@ -1,11 +1,11 @@
-/* Kaplanyan 2010's precision figures (studies/hdr_precision.h): gamma vs
+/* Kaplanyan 2010's precision figures (hdr_precision_study.h): gamma vs
  * linear storage and the HDR lower bounds, beside the talk's numbers, with
  * the typos the computation exposes (figures/hdr_code_steps.png). */
-#ifndef GTLAB_REPORT_HDR_PRECISION_SECTION_H
-#define GTLAB_REPORT_HDR_PRECISION_SECTION_H
+#ifndef GTLAB_HDR_PRECISION_SECTION_H
+#define GTLAB_HDR_PRECISION_SECTION_H
 
 #include "report/report_context.h"
-#include "studies/hdr_precision.h"
+#include "hdr_precision/hdr_precision_study.h"
 
 /* The three claims rows (the equal-precision point, the two lower bounds);
  * a NULL table ignores them. */
