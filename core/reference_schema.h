@@ -189,7 +189,7 @@
  * the Fresnel term B, and the fit's total-variation error per texel. */
 #define CH_LTC_NAMES {"ltc.a", "ltc.b", "ltc.c", "ltc.d", "ltc.E", "ltc.B"}
 #define CH_LTC_ERROR "ltc.error"
-/* The best-fit normals table (luts/best_fit_normals.h): the scale t per texel. */
+/* The best-fit normals table (best_fit_normals/best_fit_normals.h): the scale t per texel. */
 #define CH_BEST_FIT_SCALE "best_fit.t"
 /* Blue-noise dither textures (luts/blue_noise.h): one channel per seed. */
 #define CH_BLUE_NOISE_R "blue_noise.R"

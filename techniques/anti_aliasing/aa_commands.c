@@ -12,7 +12,7 @@
 #include "core/image_io.h"
 #include "core/pixel_filter.h"
 #include "core/reference_schema.h"
-#include "luts/color_grade.h" /* srgb_to_linear */
+#include "core/srgb.h" /* srgb_to_linear */
 #include "raytracer/shaded_frame.h"
 #include "scene/camera_path.h"
 

@@ -16,7 +16,7 @@
 #include "core/image_io.h"
 #include "core/pixel_filter.h"
 #include "core/progress.h"
-#include "luts/color_grade.h" /* srgb_to_linear, linear_to_srgb */
+#include "core/srgb.h" /* srgb_to_linear, linear_to_srgb */
 #include "metrics/ssim.h"
 #include "scene/camera_path.h"
 

@@ -8,7 +8,7 @@
 
 #include "anti_aliasing/fxaa.h"
 #include "core/image_io.h"
-#include "luts/color_grade.h" /* srgb_to_linear */
+#include "core/srgb.h" /* srgb_to_linear */
 #include "metrics/image_error.h"
 #include "metrics/ssim.h"
 #include "raytracer/shaded_frame.h"

@@ -3,7 +3,8 @@
 # others, except those listed in ALLOWED with the bound on their depth. A
 # recursion whose depth an input sets can overflow the stack, as the JSON
 # parsers did. Every C source of the libraries and the CLI is compiled to
-# LLVM bitcode with the flags of the build (compile_commands.json), linked
+# LLVM bitcode with the flags of the build (compile_commands.json; not the
+# tests, in tests/ or a technique's tests/: each has its own main), linked
 # into one module, and LLVM's call graph is split into strongly connected
 # components: a component of two functions or more, or one with a self-loop,
 # is a recursion. The example plug-ins (examples/) are shared libraries of
