@@ -1,10 +1,10 @@
 /* A spot light's shadow map as the ray-march reads it
- * (realtime/raymarch_volumetric.h): a square perspective depth image seen
+ * (volumetric_light/volumetric_light_raymarch.h): a square perspective depth image seen
  * from the light along its axis, covering the outer cone (half field of
  * view = the cone's half-angle, so the cone is inscribed in the frustum).
  * Each texel holds the radial distance from the light to the first surface
  * along the ray through the texel's centre (+inf: nothing); gtlab renders it
- * with Embree (raytracer/shadow_map_render.h), at a resolution the study
+ * with Embree (volumetric_light/volumetric_light_shadow_map_render.h), at a resolution the study
  * varies.
  *
  * Lookup (shadow_map_visibility): x projects to texel coordinates (u, v);
@@ -14,8 +14,8 @@
  * by a texel when r <= (1 + bias) D: the relative bias absorbs that D is
  * measured along the texel's centre ray, not x's. Outside the frustum: 0 (the
  * light's falloff is 0 there too). */
-#ifndef GTLAB_REALTIME_SHADOW_MAP_H
-#define GTLAB_REALTIME_SHADOW_MAP_H
+#ifndef GTLAB_VOLUMETRIC_LIGHT_SHADOW_MAP_H
+#define GTLAB_VOLUMETRIC_LIGHT_SHADOW_MAP_H
 
 #include "core/error.h"
 #include "core/vec3.h"

@@ -1,5 +1,5 @@
-/* The volumetric-light study; see vlight.h. */
-#include "studies/vlight.h"
+/* The volumetric-light study; see volumetric_light_study.h. */
+#include "volumetric_light/volumetric_light_study.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -14,13 +14,13 @@
 #include "metrics/image_error.h"
 #include "metrics/flip.h"
 #include "metrics/ssim.h"
-#include "realtime/raymarch_upsample.h"
-#include "studies/shadow_map_render.h"
-#include "studies/vlight_setup.h"
+#include "volumetric_light/volumetric_light_upsample.h"
+#include "volumetric_light/volumetric_light_shadow_map_render.h"
+#include "volumetric_light/volumetric_light_setup.h"
 
-vlight_request vlight_default_request(study_quality quality)
+volumetric_light_request volumetric_light_default_request(study_quality quality)
 {
-    vlight_request rq = {.width = 64, .height = 64, .seeds = 3, .frames = 16, .alpha = 0.1, .shadow_size = 512,
+    volumetric_light_request rq = {.width = 64, .height = 64, .seeds = 3, .frames = 16, .alpha = 0.1, .shadow_size = 512,
                          .shadow_bias = 0.01, .spp_count = 12, .spp = {1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 64, 128},
                          .blue_noise_size = 64, .reference_rel_tol = 1e-4, .cost_width = 512, .cost_height = 512,
                          .cost_reference_rel_tol = 1e-3};
@@ -32,18 +32,18 @@ vlight_request vlight_default_request(study_quality quality)
 
 /* What every measurement reads. */
 typedef struct {
-    const vlight_request *rq;
-    vlight_setup v;
+    const volumetric_light_request *rq;
+    volumetric_light_setup v;
     float *reference, *frame, *history, *half, *half_distance;
     shadow_map shadows;
-    blue_noise_texture blue[VLIGHT_MAX_SEEDS];
+    blue_noise_texture blue[VOLUMETRIC_LIGHT_MAX_SEEDS];
     raymarch_lighting lighting;
     double reference_mean;
     float ssim_scale; /* SSIM sees values times 1 / the reference's 99th percentile */
     float *scaled[2], *blurred_reference;
     int threads;
     int score_flip; /* score() also computes FLIP (the equal-cost images) */
-} vlight_run;
+} volumetric_light_run;
 
 typedef struct {
     double rmse, dssim, blurred, flip;
@@ -71,11 +71,11 @@ static void blur_masked(const float *in, const float *mask, int w, int h, float 
     }
 }
 
-static int score(vlight_run *r, const float *image, image_score *out, gt_error *e)
+static int score(volumetric_light_run *r, const float *image, image_score *out, gt_error *e)
 {
     image_error_stats stats;
     ssim_result ssim;
-    const vlight_setup *v = &r->v;
+    const volumetric_light_setup *v = &r->v;
     for (long p = 0; p < (long)v->gb.width * v->gb.height; ++p)
         r->scaled[0][p] = image[p] * r->ssim_scale, r->scaled[1][p] = r->reference[p] * r->ssim_scale;
     if (image_error_compute(image, r->reference, v->mask, v->gb.width, v->gb.height, "volumetric", &stats, e) != 0 ||
@@ -100,7 +100,7 @@ static int score(vlight_run *r, const float *image, image_score *out, gt_error *
 }
 
 /* Mean and standard error over the seeds. */
-static vlight_error summarise(const image_score *s, int n)
+static volumetric_light_error summarise(const image_score *s, int n)
 {
     double m[4] = {0.0, 0.0, 0.0, 0.0}, v[4] = {0.0, 0.0, 0.0, 0.0};
     for (int k = 0; k < n; ++k)
@@ -109,7 +109,7 @@ static vlight_error summarise(const image_score *s, int n)
         v[0] += pow(s[k].rmse - m[0], 2) / (n - 1), v[1] += pow(s[k].dssim - m[1], 2) / (n - 1);
         v[2] += pow(s[k].blurred - m[2], 2) / (n - 1), v[3] += pow(s[k].flip - m[3], 2) / (n - 1);
     }
-    vlight_error out = {m[0], sqrt(v[0] / n), m[1], sqrt(v[1] / n), m[2], sqrt(v[2] / n), m[3], sqrt(v[3] / n)};
+    volumetric_light_error out = {m[0], sqrt(v[0] / n), m[1], sqrt(v[1] / n), m[2], sqrt(v[2] / n), m[3], sqrt(v[3] / n)};
     return out;
 }
 
@@ -117,7 +117,7 @@ static int start_frame(int seed) { return 1009 * seed; }
 
 /* One frame of the given noise and spp, full or half resolution (half 1:
  * bilinear depth-aware upsample, 2: the talk's noisy one). */
-static void render_frame(vlight_run *r, raymarch_noise noise, int spp, int seed, int frame, int half)
+static void render_frame(volumetric_light_run *r, raymarch_noise noise, int spp, int seed, int frame, int half)
 {
     const blue_noise_texture *blue = &r->blue[seed];
     if (!half) {
@@ -132,7 +132,7 @@ static void render_frame(vlight_run *r, raymarch_noise noise, int spp, int seed,
 }
 
 /* The single frame and the accumulated history of one (noise, spp, seed). */
-static int measure(vlight_run *r, raymarch_noise noise, int spp, int seed, int half, image_score *single,
+static int measure(volumetric_light_run *r, raymarch_noise noise, int spp, int seed, int half, image_score *single,
                    image_score *accumulated, gt_error *e)
 {
     long n = (long)r->v.gb.width * r->v.gb.height;
@@ -147,7 +147,7 @@ static int measure(vlight_run *r, raymarch_noise noise, int spp, int seed, int h
 }
 
 /* log-log interpolation of the spp at which the error curve reaches target. */
-static double spp_to_reach(const vlight_request *rq, const vlight_error *curve, double target)
+static double spp_to_reach(const volumetric_light_request *rq, const volumetric_light_error *curve, double target)
 {
     for (int k = 0; k < rq->spp_count; ++k) {
         if (curve[k].rmse > target)
@@ -160,13 +160,13 @@ static double spp_to_reach(const vlight_request *rq, const vlight_error *curve, 
     return INFINITY;
 }
 
-static int measure_noises(vlight_run *r, vlight_result *out, image_score (*ratio_scores)[VLIGHT_MAX_SEEDS],
-                          image_score (*single_scores)[VLIGHT_MAX_SEEDS], gt_error *e)
+static int measure_noises(volumetric_light_run *r, volumetric_light_result *out, image_score (*ratio_scores)[VOLUMETRIC_LIGHT_MAX_SEEDS],
+                          image_score (*single_scores)[VOLUMETRIC_LIGHT_MAX_SEEDS], gt_error *e)
 {
-    const vlight_request *rq = r->rq;
+    const volumetric_light_request *rq = r->rq;
     for (int n = 0; n < RAYMARCH_NOISE_COUNT; ++n)
         for (int k = 0; k < rq->spp_count; ++k) {
-            image_score single[VLIGHT_MAX_SEEDS] = {{0}}, acc[VLIGHT_MAX_SEEDS] = {{0}};
+            image_score single[VOLUMETRIC_LIGHT_MAX_SEEDS] = {{0}}, acc[VOLUMETRIC_LIGHT_MAX_SEEDS] = {{0}};
             int seeds = n == RAYMARCH_NOISE_NONE ? 1 : rq->seeds;
             for (int s = 0; s < seeds; ++s)
                 if (measure(r, (raymarch_noise)n, rq->spp[k], s, 0, &single[s], &acc[s], e) != 0)
@@ -176,7 +176,7 @@ static int measure_noises(vlight_run *r, vlight_result *out, image_score (*ratio
             if (rq->spp[k] != 3)
                 continue;
             memcpy(ratio_scores[n], acc, sizeof acc), memcpy(single_scores[n], single, sizeof single);
-            for (int s = 0; s < VLIGHT_MAX_SEEDS; ++s)
+            for (int s = 0; s < VOLUMETRIC_LIGHT_MAX_SEEDS; ++s)
                 out->rmse3_accumulated_by_seed[n][s] = s < seeds ? acc[s].rmse : NAN;
         }
     return 0;
@@ -184,16 +184,16 @@ static int measure_noises(vlight_run *r, vlight_result *out, image_score (*ratio
 
 /* Blue's accumulated RMSE and single-frame blurred RMSE over each other
  * noise's at 3 spp, per seed. */
-static void blue_ratios(const vlight_request *rq, image_score (*acc)[VLIGHT_MAX_SEEDS],
-                        image_score (*single)[VLIGHT_MAX_SEEDS], vlight_result *out)
+static void blue_ratios(const volumetric_light_request *rq, image_score (*acc)[VOLUMETRIC_LIGHT_MAX_SEEDS],
+                        image_score (*single)[VOLUMETRIC_LIGHT_MAX_SEEDS], volumetric_light_result *out)
 {
     for (int n = RAYMARCH_NOISE_WHITE; n < RAYMARCH_NOISE_COUNT; ++n) {
-        image_score ratio[VLIGHT_MAX_SEEDS];
+        image_score ratio[VOLUMETRIC_LIGHT_MAX_SEEDS];
         for (int s = 0; s < rq->seeds; ++s) {
             ratio[s].rmse = acc[RAYMARCH_NOISE_BLUE][s].rmse / acc[n][s].rmse, ratio[s].dssim = ratio[s].flip = 0.0;
             ratio[s].blurred = single[RAYMARCH_NOISE_BLUE][s].blurred / single[n][s].blurred;
         }
-        vlight_error sum = summarise(ratio, rq->seeds);
+        volumetric_light_error sum = summarise(ratio, rq->seeds);
         out->blue_ratio[n] = sum.rmse, out->blue_ratio_se[n] = sum.rmse_se;
         out->blue_blurred_ratio[n] = sum.blurred, out->blue_blurred_ratio_se[n] = sum.blurred_se;
         for (int s = 0; s < rq->seeds; ++s)
@@ -205,9 +205,9 @@ static void blue_ratios(const vlight_request *rq, image_score (*acc)[VLIGHT_MAX_
 
 /* The periodogram peak ratio of frame 0's error at 3 spp (relative to the
  * reference's mean, 0 off the surface). */
-static int error_peak_ratio(vlight_run *r, raymarch_noise noise, int seed, double *ratio, gt_error *e)
+static int error_peak_ratio(volumetric_light_run *r, raymarch_noise noise, int seed, double *ratio, gt_error *e)
 {
-    const vlight_setup *v = &r->v;
+    const volumetric_light_setup *v = &r->v;
     int n = v->gb.width;
     if (v->gb.height != n)
         return gt_error_set(e, "volumetric", "the error spectrum needs a square image, not %dx%d", n, v->gb.height);
@@ -223,30 +223,30 @@ static int error_peak_ratio(vlight_run *r, raymarch_noise noise, int seed, doubl
 }
 
 /* Each noise's error peak ratio at 3 spp, mean over the seeds, and over blue's per seed. */
-static int measure_structure(vlight_run *r, vlight_result *out, gt_error *e)
+static int measure_structure(volumetric_light_run *r, volumetric_light_result *out, gt_error *e)
 {
-    double peak[RAYMARCH_NOISE_COUNT][VLIGHT_MAX_SEEDS];
+    double peak[RAYMARCH_NOISE_COUNT][VOLUMETRIC_LIGHT_MAX_SEEDS];
     int seeds = r->rq->seeds;
     for (int n = 0; n < RAYMARCH_NOISE_COUNT; ++n)
         for (int s = 0; s < seeds; ++s)
             if (error_peak_ratio(r, (raymarch_noise)n, s, &peak[n][s], e) != 0)
                 return -1;
     for (int n = 0; n < RAYMARCH_NOISE_COUNT; ++n) {
-        image_score own[VLIGHT_MAX_SEEDS] = {{0}}, over[VLIGHT_MAX_SEEDS] = {{0}};
+        image_score own[VOLUMETRIC_LIGHT_MAX_SEEDS] = {{0}}, over[VOLUMETRIC_LIGHT_MAX_SEEDS] = {{0}};
         for (int s = 0; s < seeds; ++s)
             own[s].rmse = peak[n][s], over[s].rmse = peak[n][s] / peak[RAYMARCH_NOISE_BLUE][s];
-        vlight_error a = summarise(own, seeds), b = summarise(over, seeds);
+        volumetric_light_error a = summarise(own, seeds), b = summarise(over, seeds);
         out->peak_ratio[n] = a.rmse, out->peak_ratio_se[n] = a.rmse_se;
         out->peak_over_blue[n] = b.rmse, out->peak_over_blue_se[n] = b.rmse_se;
     }
     return 0;
 }
 
-static int measure_talk(vlight_run *r, vlight_result *out, gt_error *e)
+static int measure_talk(volumetric_light_run *r, volumetric_light_result *out, gt_error *e)
 {
-    static const int talk_spp[VLIGHT_TALK_SPP] = {3, 6, 9};
-    for (int k = 0; k < VLIGHT_TALK_SPP; ++k) {
-        image_score single[VLIGHT_MAX_SEEDS], acc[VLIGHT_MAX_SEEDS];
+    static const int talk_spp[VOLUMETRIC_LIGHT_TALK_SPP] = {3, 6, 9};
+    for (int k = 0; k < VOLUMETRIC_LIGHT_TALK_SPP; ++k) {
+        image_score single[VOLUMETRIC_LIGHT_MAX_SEEDS], acc[VOLUMETRIC_LIGHT_MAX_SEEDS];
         for (int s = 0; s < r->rq->seeds; ++s)
             if (measure(r, RAYMARCH_NOISE_BLUE, talk_spp[k], s, 1, &single[s], &acc[s], e) != 0)
                 return -1;
@@ -262,10 +262,10 @@ static int measure_talk(vlight_run *r, vlight_result *out, gt_error *e)
 }
 
 /* The shadow map's floor: 1024 steps per size. */
-static int measure_shadow_sizes(vlight_run *r, vlight_result *out, gt_error *e)
+static int measure_shadow_sizes(volumetric_light_run *r, volumetric_light_result *out, gt_error *e)
 {
-    static const int sizes[VLIGHT_SHADOW_SIZES] = {128, 256, 512, 1024};
-    for (int k = 0; k < VLIGHT_SHADOW_SIZES; ++k) {
+    static const int sizes[VOLUMETRIC_LIGHT_SHADOW_SIZES] = {128, 256, 512, 1024};
+    for (int k = 0; k < VOLUMETRIC_LIGHT_SHADOW_SIZES; ++k) {
         shadow_map m;
         double t0 = seconds_now();
         if (shadow_map_render(&r->v.es, &r->v.light, sizes[k], r->rq->shadow_bias, r->threads, &m, e) != 0)
@@ -285,14 +285,14 @@ static int measure_shadow_sizes(vlight_run *r, vlight_result *out, gt_error *e)
 
 /* ---- Outputs: the image strip and the plot's data ---------------------------- */
 
-static int write_png(const vlight_run *r, const char *dir, const char *name, const float *plane, gt_error *e)
+static int write_png(const volumetric_light_run *r, const char *dir, const char *name, const float *plane, gt_error *e)
 {
     char path[1024 + 64];
     snprintf(path, sizeof path, "%s/%s.png", dir, name);
     return image_write_preview(path, &plane, 1, r->v.gb.width, r->v.gb.height, (float)(0.5 / r->reference_mean), e);
 }
 
-static int write_strip(vlight_run *r, const char *dir, gt_error *e)
+static int write_strip(volumetric_light_run *r, const char *dir, gt_error *e)
 {
     static const struct {
         const char *name;
@@ -317,7 +317,7 @@ static int write_strip(vlight_run *r, const char *dir, gt_error *e)
     return 0;
 }
 
-static int write_plot_data(const vlight_request *rq, const vlight_result *out, const char *dir, gt_error *e)
+static int write_plot_data(const volumetric_light_request *rq, const volumetric_light_result *out, const char *dir, gt_error *e)
 {
     char path[1024 + 64];
     snprintf(path, sizeof path, "%s/error_vs_spp.dat", dir);
@@ -337,14 +337,14 @@ static int write_plot_data(const vlight_request *rq, const vlight_result *out, c
 
 /* ---- The run ------------------------------------------------------------------ */
 
-static int run_alloc(vlight_run *r, const study_context *ctx, const vlight_request *rq, gt_error *e)
+static int run_alloc(volumetric_light_run *r, const study_context *ctx, const volumetric_light_request *rq, gt_error *e)
 {
     memset(r, 0, sizeof *r);
     r->rq = rq;
     r->threads = ctx->threads;
-    if (rq->seeds < 1 || rq->seeds > VLIGHT_MAX_SEEDS || rq->spp_count < 2 || rq->spp_count > VLIGHT_MAX_SPP)
-        return gt_error_set(e, "volumetric", "1..%d seeds and 2..%d spp counts", VLIGHT_MAX_SEEDS, VLIGHT_MAX_SPP);
-    if (vlight_setup_init(&r->v, rq->width, rq->height, ctx->threads, e) != 0)
+    if (rq->seeds < 1 || rq->seeds > VOLUMETRIC_LIGHT_MAX_SEEDS || rq->spp_count < 2 || rq->spp_count > VOLUMETRIC_LIGHT_MAX_SPP)
+        return gt_error_set(e, "volumetric", "1..%d seeds and 2..%d spp counts", VOLUMETRIC_LIGHT_MAX_SEEDS, VOLUMETRIC_LIGHT_MAX_SPP);
+    if (volumetric_light_setup_init(&r->v, rq->width, rq->height, ctx->threads, e) != 0)
         return -1;
     long n = (long)rq->width * rq->height;
     r->reference = malloc(sizeof(float) * n), r->frame = malloc(sizeof(float) * n);
@@ -364,25 +364,25 @@ static int run_alloc(vlight_run *r, const study_context *ctx, const vlight_reque
     return 0;
 }
 
-static void run_free(vlight_run *r)
+static void run_free(volumetric_light_run *r)
 {
     free(r->reference), free(r->frame), free(r->history), free(r->half), free(r->half_distance);
     free(r->scaled[0]), free(r->scaled[1]), free(r->blurred_reference);
-    for (int s = 0; s < VLIGHT_MAX_SEEDS; ++s)
+    for (int s = 0; s < VOLUMETRIC_LIGHT_MAX_SEEDS; ++s)
         if (r->blue[s].values)
             blue_noise_free(&r->blue[s]);
     shadow_map_free(&r->shadows);
-    vlight_setup_free(&r->v);
+    volumetric_light_setup_free(&r->v);
 }
 
-static int reference_figures(vlight_run *r, vlight_result *out, gt_error *e)
+static int reference_figures(volumetric_light_run *r, volumetric_light_result *out, gt_error *e)
 {
     long n = (long)r->rq->width * r->rq->height;
     float *error = malloc(sizeof(float) * n);
     if (!error)
         return gt_error_set(e, "volumetric", "out of memory");
     double t0 = seconds_now(), sum = 0.0, worst = 0.0;
-    out->reference_rays = vlight_reference(&r->v, r->rq->reference_rel_tol, r->threads, r->reference, error);
+    out->reference_rays = volumetric_light_reference(&r->v, r->rq->reference_rel_tol, r->threads, r->reference, error);
     out->reference_seconds = seconds_now() - t0;
     for (long p = 0; p < n; ++p)
         if (r->v.mask[p] != 0.0f)
@@ -402,9 +402,9 @@ static int reference_figures(vlight_run *r, vlight_result *out, gt_error *e)
 /* The talk's configuration (6 spp at half resolution, blue noise, noisy
  * upsample, accumulated) per seed against 2 and 24 uniform steps, by
  * DSSIM and FLIP, on an image of cost_width x cost_height. */
-static int measure_cost_configurations(vlight_run *r, vlight_result *out, gt_error *e)
+static int measure_cost_configurations(volumetric_light_run *r, volumetric_light_result *out, gt_error *e)
 {
-    image_score talk[VLIGHT_MAX_SEEDS], single, uniform2, uniform24, gap[VLIGHT_MAX_SEEDS] = {{0}};
+    image_score talk[VOLUMETRIC_LIGHT_MAX_SEEDS], single, uniform2, uniform24, gap[VOLUMETRIC_LIGHT_MAX_SEEDS] = {{0}};
     int seeds = r->rq->seeds;
     if (measure(r, RAYMARCH_NOISE_NONE, 2, 0, 0, &uniform2, &single, e) != 0 ||
         measure(r, RAYMARCH_NOISE_NONE, 24, 0, 0, &uniform24, &single, e) != 0)
@@ -416,22 +416,22 @@ static int measure_cost_configurations(vlight_run *r, vlight_result *out, gt_err
     }
     out->cost_talk = summarise(talk, seeds);
     out->cost_uniform2 = summarise(&uniform2, 1), out->cost_uniform24 = summarise(&uniform24, 1);
-    vlight_error g = summarise(gap, seeds);
+    volumetric_light_error g = summarise(gap, seeds);
     out->cost_dssim_gap = g.dssim, out->cost_dssim_gap_se = g.dssim_se;
     out->cost_flip_gap = g.flip, out->cost_flip_gap_se = g.flip_se;
     return 0;
 }
 
-static int measure_equal_cost(const study_context *ctx, const vlight_request *rq, vlight_result *out, gt_error *e)
+static int measure_equal_cost(const study_context *ctx, const volumetric_light_request *rq, volumetric_light_result *out, gt_error *e)
 {
-    vlight_request big = *rq;
+    volumetric_light_request big = *rq;
     big.width = rq->cost_width, big.height = rq->cost_height, big.reference_rel_tol = rq->cost_reference_rel_tol;
     if (big.width < 2 || big.height < 2)
         return gt_error_set(e, "volumetric", "equal-cost image %dx%d too small", big.width, big.height);
-    vlight_result *scratch = calloc(1, sizeof *scratch); /* the reference's figures at this size */
+    volumetric_light_result *scratch = calloc(1, sizeof *scratch); /* the reference's figures at this size */
     if (!scratch)
         return gt_error_set(e, "volumetric", "out of memory");
-    vlight_run r;
+    volumetric_light_run r;
     int rc = run_alloc(&r, ctx, &big, e);
     r.score_flip = 1;
     rc = rc == 0 && reference_figures(&r, scratch, e) == 0 ? measure_cost_configurations(&r, out, e) : -1;
@@ -441,13 +441,13 @@ static int measure_equal_cost(const study_context *ctx, const vlight_request *rq
     return rc;
 }
 
-static int run_study(vlight_run *r, const study_context *ctx, vlight_result *out, gt_error *e)
+static int run_study(volumetric_light_run *r, const study_context *ctx, volumetric_light_result *out, gt_error *e)
 {
     char dir[1024];
-    image_score ratio_scores[RAYMARCH_NOISE_COUNT][VLIGHT_MAX_SEEDS];
-    image_score single_scores[RAYMARCH_NOISE_COUNT][VLIGHT_MAX_SEEDS];
+    image_score ratio_scores[RAYMARCH_NOISE_COUNT][VOLUMETRIC_LIGHT_MAX_SEEDS];
+    image_score single_scores[RAYMARCH_NOISE_COUNT][VOLUMETRIC_LIGHT_MAX_SEEDS];
     image_score single, acc;
-    if (study_make_dir(ctx, VLIGHT_DIR, dir, sizeof dir, e) != 0 || reference_figures(r, out, e) != 0 ||
+    if (study_make_dir(ctx, VOLUMETRIC_LIGHT_DIR, dir, sizeof dir, e) != 0 || reference_figures(r, out, e) != 0 ||
         measure(r, RAYMARCH_NOISE_NONE, 128, 0, 0, &single, &acc, e) != 0)
         return -1;
     out->uniform128 = summarise(&single, 1);
@@ -462,21 +462,21 @@ static int run_study(vlight_run *r, const study_context *ctx, vlight_result *out
     if (measure_structure(r, out, e) != 0 || write_strip(r, dir, e) != 0 ||
         write_plot_data(r->rq, out, dir, e) != 0 || measure_equal_cost(ctx, r->rq, out, e) != 0)
         return -1;
-    return vlight_bench(r->rq->width, r->rq->height, 32, &out->ns_per_pixel_sample, e);
+    return volumetric_light_bench(r->rq->width, r->rq->height, 32, &out->ns_per_pixel_sample, e);
 }
 
-int vlight_study(const study_context *ctx, const vlight_request *rq, vlight_result *out, gt_error *e)
+int volumetric_light_study(const study_context *ctx, const volumetric_light_request *rq, volumetric_light_result *out, gt_error *e)
 {
     memset(out, 0, sizeof *out);
     out->request = *rq;
-    vlight_run r;
+    volumetric_light_run r;
     int rc = run_alloc(&r, ctx, rq, e) == 0 ? run_study(&r, ctx, out, e) : -1;
     run_free(&r);
     return rc;
 }
 
 /* Repeats frames for at least 0.2 s on one thread. */
-static double time_frames(const vlight_setup *v, const shadow_map *m, const blue_noise_texture *blue, int steps,
+static double time_frames(const volumetric_light_setup *v, const shadow_map *m, const blue_noise_texture *blue, int steps,
                           float *out)
 {
     raymarch_lighting l = {&v->light, &v->medium, m, NULL};
@@ -488,12 +488,12 @@ static double time_frames(const vlight_setup *v, const shadow_map *m, const blue
     return 1e9 * (seconds_now() - t0) / ((double)frames * v->gb.width * v->gb.height * steps);
 }
 
-int vlight_bench(int width, int height, int steps, double *ns_per_pixel_sample, gt_error *e)
+int volumetric_light_bench(int width, int height, int steps, double *ns_per_pixel_sample, gt_error *e)
 {
-    vlight_setup v;
+    volumetric_light_setup v;
     shadow_map m = {0};
     blue_noise_texture blue = {0};
-    if (vlight_setup_init(&v, width, height, 1, e) != 0)
+    if (volumetric_light_setup_init(&v, width, height, 1, e) != 0)
         return -1;
     float *out = malloc(sizeof(float) * (size_t)width * height);
     int rc = out ? 0 : gt_error_set(e, "volumetric", "out of memory");
@@ -507,11 +507,11 @@ int vlight_bench(int width, int height, int steps, double *ns_per_pixel_sample, 
     if (blue.values)
         blue_noise_free(&blue);
     shadow_map_free(&m);
-    vlight_setup_free(&v);
+    volumetric_light_setup_free(&v);
     return rc;
 }
 
-static int approx_frames(const vlight_approx_request *rq, const vlight_setup *v, const shadow_map *m,
+static int approx_frames(const volumetric_light_approx_request *rq, const volumetric_light_setup *v, const shadow_map *m,
                          const blue_noise_texture *blue, float *history, gt_error *e)
 {
     long n = (long)rq->width * rq->height;
@@ -533,7 +533,7 @@ static int approx_frames(const vlight_approx_request *rq, const vlight_setup *v,
     return rc;
 }
 
-static int approx_channels(const vlight_setup *v, const float *history, image *out, gt_error *e)
+static int approx_channels(const volumetric_light_setup *v, const float *history, image *out, gt_error *e)
 {
     static const char *const names[3] = CH_VLIGHT_L_RGB;
     if (image_init(out, v->gb.width, v->gb.height) != 0)
@@ -550,12 +550,12 @@ static int approx_channels(const vlight_setup *v, const float *history, image *o
     return 0;
 }
 
-int vlight_approx_image(const vlight_approx_request *rq, image *out, gt_error *e)
+int volumetric_light_approx_image(const volumetric_light_approx_request *rq, image *out, gt_error *e)
 {
-    vlight_setup v;
+    volumetric_light_setup v;
     shadow_map m = {0};
     blue_noise_texture blue = {0};
-    if (vlight_setup_init(&v, rq->width, rq->height, rq->threads, e) != 0)
+    if (volumetric_light_setup_init(&v, rq->width, rq->height, rq->threads, e) != 0)
         return -1;
     float *history = malloc(sizeof(float) * (size_t)rq->width * rq->height);
     int rc = history ? 0 : gt_error_set(e, "volumetric", "out of memory");
@@ -571,6 +571,6 @@ int vlight_approx_image(const vlight_approx_request *rq, image *out, gt_error *e
     if (blue.values)
         blue_noise_free(&blue);
     shadow_map_free(&m);
-    vlight_setup_free(&v);
+    volumetric_light_setup_free(&v);
     return rc;
 }

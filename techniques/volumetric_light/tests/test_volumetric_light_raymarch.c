@@ -1,4 +1,4 @@
-/* realtime/raymarch_volumetric.h and raymarch_upsample.h against the
+/* volumetric_light/volumetric_light_raymarch.h and volumetric_light/volumetric_light_upsample.h against the
  * reference and against statistics, on a spot light above a floor (y = 0),
  * the camera rays ending on the floor:
  *  - with many uniform steps the ray-march converges to the reference
@@ -18,7 +18,7 @@
 #include <string.h>
 
 #include "raytracer/volumetric_light_integral.h"
-#include "realtime/raymarch_upsample.h"
+#include "volumetric_light/volumetric_light_upsample.h"
 #include "tests/check.h"
 
 enum { W = 16, H = 16, FRAMES = 64 };
@@ -193,5 +193,5 @@ int main(void)
     check_threads(&shadowed, &r, &blue);
     shadow_map_free(&shadows);
     blue_noise_free(&blue);
-    return check_report("test_raymarch_volumetric");
+    return check_report("volumetric_light_raymarch");
 }

@@ -1,12 +1,12 @@
-/* The volumetric-light study's scene, rays and reference; see vlight_setup.h. */
-#include "studies/vlight_setup.h"
+/* The volumetric-light study's scene, rays and reference; see volumetric_light_setup.h. */
+#include "volumetric_light/volumetric_light_setup.h"
 
 #include <stdlib.h>
 #include <string.h>
 
 #include "studies/study.h"
 
-static int fill_view(vlight_setup *v, gt_error *e)
+static int fill_view(volumetric_light_setup *v, gt_error *e)
 {
     long n = (long)v->gb.width * v->gb.height;
     v->dir = calloc((size_t)(3 * n), sizeof(float));
@@ -28,7 +28,7 @@ static int fill_view(vlight_setup *v, gt_error *e)
     return 0;
 }
 
-static int place_light(vlight_setup *v, gt_error *e)
+static int place_light(volumetric_light_setup *v, gt_error *e)
 {
     volumetric_light_settings settings;
     volumetric_light_settings_default(&settings);
@@ -37,7 +37,7 @@ static int place_light(vlight_setup *v, gt_error *e)
     return volumetric_light_resolve(&settings, lo, hi, &v->light, &v->medium, e);
 }
 
-int vlight_setup_init(vlight_setup *v, int width, int height, int threads, gt_error *e)
+int volumetric_light_setup_init(volumetric_light_setup *v, int width, int height, int threads, gt_error *e)
 {
     memset(v, 0, sizeof *v);
     camera cam;
@@ -53,13 +53,13 @@ int vlight_setup_init(vlight_setup *v, int width, int height, int threads, gt_er
         return -1;
     }
     if (fill_view(v, e) != 0 || place_light(v, e) != 0) {
-        vlight_setup_free(v);
+        volumetric_light_setup_free(v);
         return -1;
     }
     return 0;
 }
 
-void vlight_setup_free(vlight_setup *v)
+void volumetric_light_setup_free(volumetric_light_setup *v)
 {
     free(v->dir), free(v->distance), free(v->mask);
     gbuffer_free(&v->gb);
@@ -68,7 +68,7 @@ void vlight_setup_free(vlight_setup *v)
     memset(v, 0, sizeof *v);
 }
 
-long vlight_reference(const vlight_setup *v, double rel_tol, int threads, float *reference, float *error)
+long volumetric_light_reference(const volumetric_light_setup *v, double rel_tol, int threads, float *reference, float *error)
 {
     volumetric_lighting l = {&v->light, &v->medium, &v->es};
     long n = (long)v->gb.width * v->gb.height, rays = 0;

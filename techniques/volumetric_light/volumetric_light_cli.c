@@ -1,5 +1,5 @@
 /* INSIDE's volumetric lights (Gjoel & Svendsen, GDC 2016; issue 29): the
- * ray-march against the single-scattering reference (studies/vlight.h; the
+ * ray-march against the single-scattering reference (volumetric_light/volumetric_light_study.h; the
  * reference itself is `gtlab render volumetric-light`): `gtlab approx
  * raymarch`, `gtlab bench raymarch`, stage volumetric. */
 #include <stdio.h>
@@ -9,8 +9,8 @@
 #include "cli/technique.h"
 #include "core/exr_io.h"
 #include "core/threads.h"
-#include "report/vlight_section.h"
-#include "studies/vlight.h"
+#include "volumetric_light/volumetric_light_section.h"
+#include "volumetric_light/volumetric_light_study.h"
 
 static const char *noise_name(int i) { return raymarch_noise_name((raymarch_noise)i); }
 
@@ -29,7 +29,7 @@ static int approx_raymarch(int argc, char **argv)
         CLI_END};
     static const cli_command command = {
         "approx raymarch",
-        "INSIDE's volumetric-light ray-march (realtime/raymarch_volumetric.h) on builtin:cornell with the\n"
+        "INSIDE's volumetric-light ray-march (volumetric_light/volumetric_light_raymarch.h) on builtin:cornell with the\n"
         "default spot of `gtlab render volumetric-light`: N uniform steps in the cone, shadow map, start\n"
         "offset by noise, optionally half resolution and accumulated over frames.",
         options, NULL, NULL};
@@ -40,11 +40,11 @@ static int approx_raymarch(int argc, char **argv)
                                               &out_path},
                           argc, argv, &status) != 0)
         return status;
-    vlight_approx_request rq = {(int)width, (int)height, (int)steps, (int)frames, half, (int)shadow, (int)threads,
+    volumetric_light_approx_request rq = {(int)width, (int)height, (int)steps, (int)frames, half, (int)shadow, (int)threads,
                                 (raymarch_noise)noise, 0.1};
     image out;
     gt_error e;
-    if (vlight_approx_image(&rq, &out, &e) != 0)
+    if (volumetric_light_approx_image(&rq, &out, &e) != 0)
         return cli_fail(&e);
     int rc = exr_write(out_path, &out, &e);
     image_free(&out);
@@ -65,15 +65,15 @@ static int bench_raymarch(int argc, char **argv)
         return status;
     double ns;
     gt_error e;
-    if (vlight_bench(256, 256, (int)steps, &ns, &e) != 0)
+    if (volumetric_light_bench(256, 256, (int)steps, &ns, &e) != 0)
         return cli_fail(&e);
     printf("raymarch: %.2f ns per pixel per sample (%ld steps)\n", ns, steps);
     return EXIT_OK;
 }
 
-GTLAB_STUDY_STAGE(all_stage_volumetric, vlight, vlight_section)
+GTLAB_STUDY_STAGE(all_stage_volumetric, volumetric_light, volumetric_light_section)
 
-const technique technique_volumetric = {
+const technique technique_volumetric_light = {
     .name = "volumetric",
     .subcommands = {
         [VERB_APPROX] = CLI_SUBCOMMANDS(
@@ -81,5 +81,5 @@ const technique technique_volumetric = {
         [VERB_BENCH] = CLI_SUBCOMMANDS(
             {"raymarch", bench_raymarch, "volumetric-light ray-march: ns per pixel per sample"}),
     },
-    .stages = ALL_STAGES({"volumetric", "volumetric lights (INSIDE)", all_stage_volumetric, VLIGHT_DIR, NULL}),
+    .stages = ALL_STAGES({"volumetric", "volumetric lights (INSIDE)", all_stage_volumetric, VOLUMETRIC_LIGHT_DIR, NULL}),
 };

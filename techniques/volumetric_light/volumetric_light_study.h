@@ -1,5 +1,5 @@
 /* The volumetric-light study (issue 29; INSIDE, Gjoel & Svendsen, GDC 2016,
- * seed 002): the ray-march of realtime/raymarch_volumetric.h against the
+ * seed 002): the ray-march of volumetric_light/volumetric_light_raymarch.h against the
  * single-scattering reference (raytracer/volumetric_light_integral.h) on
  * builtin:cornell with the default spot of `gtlab render volumetric-light`,
  * the tall block's shadow cutting a shaft.
@@ -41,15 +41,15 @@
  * percentile: HDR-FLIP with the reference's exposures where values exceed
  * 1, so the figure does not depend on the light's units); each gap paired
  * per seed. */
-#ifndef GTLAB_STUDIES_VLIGHT_H
-#define GTLAB_STUDIES_VLIGHT_H
+#ifndef GTLAB_VOLUMETRIC_LIGHT_STUDY_H
+#define GTLAB_VOLUMETRIC_LIGHT_STUDY_H
 
 #include "core/image.h"
-#include "realtime/raymarch_volumetric.h"
+#include "volumetric_light/volumetric_light_raymarch.h"
 #include "studies/study.h"
 
-#define VLIGHT_DIR "volumetric"
-enum { VLIGHT_MAX_SPP = 16, VLIGHT_MAX_SEEDS = 8, VLIGHT_SHADOW_SIZES = 4, VLIGHT_TALK_SPP = 3 };
+#define VOLUMETRIC_LIGHT_DIR "volumetric"
+enum { VOLUMETRIC_LIGHT_MAX_SPP = 16, VOLUMETRIC_LIGHT_MAX_SEEDS = 8, VOLUMETRIC_LIGHT_SHADOW_SIZES = 4, VOLUMETRIC_LIGHT_TALK_SPP = 3 };
 
 typedef struct {
     int width, height;
@@ -58,41 +58,41 @@ typedef struct {
     int shadow_size;    /* the shadow map of the noise measurements */
     double shadow_bias; /* relative */
     int spp_count;
-    int spp[VLIGHT_MAX_SPP];
+    int spp[VOLUMETRIC_LIGHT_MAX_SPP];
     int blue_noise_size;
     double reference_rel_tol;
     int cost_width, cost_height;  /* the equal-cost comparison's image */
     double cost_reference_rel_tol;
-} vlight_request;
+} volumetric_light_request;
 
 typedef struct {
     double rmse, rmse_se;   /* relative RMSE, mean over seeds and its standard error */
     double dssim, dssim_se;
     double blurred, blurred_se; /* relative RMSE after a Gaussian blur (sigma 1 pixel) of both images */
     double flip, flip_se;       /* mean FLIP (metrics/flip.h, flip_grey) of the scaled images; equal cost only, else 0 */
-} vlight_error;
+} volumetric_light_error;
 
 typedef struct {
-    vlight_request request;
+    volumetric_light_request request;
     int pixels;
     double reference_mean, reference_max_error; /* mean L / I; largest quadrature error estimate over it */
     double reference_seconds;
     long reference_rays;
-    vlight_error single[RAYMARCH_NOISE_COUNT][VLIGHT_MAX_SPP];
-    vlight_error accumulated[RAYMARCH_NOISE_COUNT][VLIGHT_MAX_SPP];
-    vlight_error uniform128;                        /* none, 128 steps, one frame: the target */
+    volumetric_light_error single[RAYMARCH_NOISE_COUNT][VOLUMETRIC_LIGHT_MAX_SPP];
+    volumetric_light_error accumulated[RAYMARCH_NOISE_COUNT][VOLUMETRIC_LIGHT_MAX_SPP];
+    volumetric_light_error uniform128;                        /* none, 128 steps, one frame: the target */
     /* each seed's relative RMSE at 3 spp, frames accumulated: the jitter
      * patterns' gaps paired over the seeds */
-    double rmse3_accumulated_by_seed[RAYMARCH_NOISE_COUNT][VLIGHT_MAX_SEEDS];
+    double rmse3_accumulated_by_seed[RAYMARCH_NOISE_COUNT][VOLUMETRIC_LIGHT_MAX_SEEDS];
     double spp_needed_single[RAYMARCH_NOISE_COUNT]; /* to reach uniform128's RMSE; INFINITY: not reached */
     double spp_needed_accumulated[RAYMARCH_NOISE_COUNT];
-    int talk_spp[VLIGHT_TALK_SPP];                  /* 3, 6, 9 at half resolution */
-    vlight_error talk[VLIGHT_TALK_SPP];             /* half res, blue, upsampled, accumulated */
-    vlight_error talk_single[VLIGHT_TALK_SPP];      /* the same, frame 0 alone */
-    vlight_error talk_noisy[VLIGHT_TALK_SPP];       /* with the talk's noisy upsample, accumulated */
-    int shadow_sizes[VLIGHT_SHADOW_SIZES];
-    double shadow_rmse[VLIGHT_SHADOW_SIZES];        /* relative RMSE of 1024 midpoint steps */
-    double shadow_seconds[VLIGHT_SHADOW_SIZES];
+    int talk_spp[VOLUMETRIC_LIGHT_TALK_SPP];                  /* 3, 6, 9 at half resolution */
+    volumetric_light_error talk[VOLUMETRIC_LIGHT_TALK_SPP];             /* half res, blue, upsampled, accumulated */
+    volumetric_light_error talk_single[VOLUMETRIC_LIGHT_TALK_SPP];      /* the same, frame 0 alone */
+    volumetric_light_error talk_noisy[VOLUMETRIC_LIGHT_TALK_SPP];       /* with the talk's noisy upsample, accumulated */
+    int shadow_sizes[VOLUMETRIC_LIGHT_SHADOW_SIZES];
+    double shadow_rmse[VOLUMETRIC_LIGHT_SHADOW_SIZES];        /* relative RMSE of 1024 midpoint steps */
+    double shadow_seconds[VOLUMETRIC_LIGHT_SHADOW_SIZES];
     /* blue over white, Bayer, IGN at 3 spp: ratios of the accumulated RMSE and of the single frame's
      * blurred RMSE, means over the seeds of the per-seed ratios, with standard errors */
     double blue_ratio[RAYMARCH_NOISE_COUNT], blue_ratio_se[RAYMARCH_NOISE_COUNT];
@@ -106,19 +106,19 @@ typedef struct {
     /* equal cost at cost_width x cost_height: the talk's configuration (accumulated), uniform 2 and 24 steps */
     int cost_pixels;
     double cost_reference_seconds;
-    vlight_error cost_talk, cost_uniform2, cost_uniform24;
+    volumetric_light_error cost_talk, cost_uniform2, cost_uniform24;
     double cost_dssim_gap, cost_dssim_gap_se; /* DSSIM(talk) - DSSIM(uniform 2), per seed */
     double cost_flip_gap, cost_flip_gap_se;   /* FLIP(talk) - FLIP(uniform 2), per seed */
-} vlight_result;
+} volumetric_light_result;
 
-vlight_request vlight_default_request(study_quality quality);
+volumetric_light_request volumetric_light_default_request(study_quality quality);
 /* Runs the study; writes <output>/volumetric/ (reference and image strip
  * PNGs, plot data). Returns 0 or -1 with e. */
-int vlight_study(const study_context *ctx, const vlight_request *rq, vlight_result *out, gt_error *e);
+int volumetric_light_study(const study_context *ctx, const volumetric_light_request *rq, volumetric_light_result *out, gt_error *e);
 
 /* The ray-march's cost on the study's view: ns per pixel per sample (one
  * thread, `steps` steps, blue noise, shadow map 512^2). */
-int vlight_bench(int width, int height, int steps, double *ns_per_pixel_sample, gt_error *e);
+int volumetric_light_bench(int width, int height, int steps, double *ns_per_pixel_sample, gt_error *e);
 
 /* `gtlab approx raymarch`: the ray-march of one configuration on the
  * study's view (builtin:cornell, width x height), accumulated over `frames`
@@ -128,8 +128,8 @@ typedef struct {
     int width, height, steps, frames, half, shadow_size, threads; /* half: 0 full, 1 bilinear, 2 noisy upsample */
     raymarch_noise noise;
     double alpha;
-} vlight_approx_request;
+} volumetric_light_approx_request;
 
-int vlight_approx_image(const vlight_approx_request *rq, image *out, gt_error *e);
+int volumetric_light_approx_image(const volumetric_light_approx_request *rq, image *out, gt_error *e);
 
 #endif

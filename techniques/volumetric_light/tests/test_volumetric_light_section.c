@@ -6,7 +6,7 @@
 #include <sys/stat.h>
 
 #include "report/claim_thresholds.h"
-#include "report/vlight_section.h"
+#include "volumetric_light/volumetric_light_section.h"
 #include "tests/check.h"
 #include "tests/section_test.h"
 
@@ -18,16 +18,16 @@
  * under gtlab's setting (not the talk's scene), 0.04 below (DSSIM still
  * 0.05 below) is no visible difference; the figure text and summary carry
  * both metrics. */
-static void check_vlight(report_context *base)
+static void check_volumetric_light(report_context *base)
 {
-    static vlight_result r;
+    static volumetric_light_result r;
     static claims_table claims;
     report_context ctx = *base;
     ctx.claims = &claims, ctx.summary = cJSON_CreateObject();
     char path[2200];
-    snprintf(path, sizeof path, "%s/%s", base->study.output_dir, VLIGHT_DIR);
+    snprintf(path, sizeof path, "%s/%s", base->study.output_dir, VOLUMETRIC_LIGHT_DIR);
     mkdir(path, 0755);
-    snprintf(path, sizeof path, "%s/%s/error_vs_spp.dat", base->study.output_dir, VLIGHT_DIR);
+    snprintf(path, sizeof path, "%s/%s/error_vs_spp.dat", base->study.output_dir, VOLUMETRIC_LIGHT_DIR);
     FILE *f = fopen(path, "w");
     CHECK(f != NULL);
     if (!f)
@@ -36,14 +36,14 @@ static void check_vlight(report_context *base)
     fclose(f);
     gt_error e;
     memset(&r, 0, sizeof r);
-    r.request = vlight_default_request(QUALITY_PREVIEW);
+    r.request = volumetric_light_default_request(QUALITY_PREVIEW);
     r.uniform128.rmse = 0.001;
     r.blue_blurred_gap[RAYMARCH_NOISE_WHITE] = -0.05, r.blue_blurred_gap_se[RAYMARCH_NOISE_WHITE] = 0.005;
     r.peak_over_blue[RAYMARCH_NOISE_BAYER] = 30, r.peak_over_blue[RAYMARCH_NOISE_IGN] = 20;
     r.cost_talk.flip = 0.05, r.cost_uniform2.flip = 0.15, r.cost_talk.dssim = 0.003, r.cost_uniform2.dssim = 0.053;
     r.cost_flip_gap = -0.1, r.cost_flip_gap_se = 0.005;
     r.cost_dssim_gap = -0.05, r.cost_dssim_gap_se = 0.005;
-    CHECK(vlight_section(&ctx, &r, &e) == 0);
+    CHECK(volumetric_light_section(&ctx, &r, &e) == 0);
     const cJSON *cost = cJSON_GetObjectItem(cJSON_GetObjectItem(ctx.summary, "volumetric"), "equal_cost");
     CHECK(cJSON_GetObjectItem(cost, "flip_gap")->valuedouble == -0.1);
     CHECK(cJSON_GetObjectItem(cost, "talk_flip")->valuedouble == 0.05);
@@ -51,10 +51,10 @@ static void check_vlight(report_context *base)
     r.blue_blurred_gap[RAYMARCH_NOISE_WHITE] = -0.005, r.blue_blurred_gap_se[RAYMARCH_NOISE_WHITE] = 0.001;
     r.cost_flip_gap = 0.1;
     cJSON_Delete(ctx.summary), ctx.summary = cJSON_CreateObject();
-    CHECK(vlight_section(&ctx, &r, &e) == 0);
+    CHECK(volumetric_light_section(&ctx, &r, &e) == 0);
     r.cost_flip_gap = -0.04, r.cost_flip_gap_se = 0.002; /* past a DSSIM margin, within FLIP's; DSSIM gap -0.05 */
     cJSON_Delete(ctx.summary), ctx.summary = cJSON_CreateObject();
-    CHECK(vlight_section(&ctx, &r, &e) == 0);
+    CHECK(volumetric_light_section(&ctx, &r, &e) == 0);
     CHECK(claims.count == 12 && claims.refused == 0);
     check_verdicts(&claims, 0,
                    (const claim_verdict[]){CLAIM_REPRODUCED, CLAIM_LIMITATION_MEASURED, CLAIM_LIMITATION_MEASURED,
@@ -74,8 +74,8 @@ static void check_vlight(report_context *base)
 int main(void)
 {
     static section_test t;
-    section_test_begin(&t, "inside_sections_output", NULL);
-    check_vlight(&t.ctx);
+    section_test_begin(&t, "volumetric_light_section_output", NULL);
+    check_volumetric_light(&t.ctx);
     section_test_end(&t);
-    return check_report("test_inside_sections");
+    return check_report("volumetric_light_section");
 }

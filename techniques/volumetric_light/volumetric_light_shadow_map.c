@@ -1,5 +1,5 @@
-/* A spot light's shadow map; see shadow_map.h. */
-#include "realtime/shadow_map.h"
+/* A spot light's shadow map; see volumetric_light_shadow_map.h. */
+#include "volumetric_light/volumetric_light_shadow_map.h"
 
 #include <math.h>
 #include <stdlib.h>

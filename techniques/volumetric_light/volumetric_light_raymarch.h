@@ -2,7 +2,7 @@
  * "Volumetric Lighting" .. "Reducing Bandwidth"), in C: per pixel, N uniform
  * steps along the camera ray inside the light's volume, each step the
  * integrand of core/volumetric_light.h with the visibility looked up in a
- * shadow map (realtime/shadow_map.h), the start jittered by a noise value.
+ * shadow map (volumetric_light/volumetric_light_shadow_map.h), the start jittered by a noise value.
  *
  * Steps: the ray's part inside the light, [t0, t1] = [0, d] intersected
  * with the spot's outer cone (volumetric_cone_interval; a point light:
@@ -29,12 +29,12 @@
  *          histogram flat and makes each pixel's offsets over frames a
  *          low-discrepancy sequence, so the temporal mean converges.
  * Blue noise is the void-and-cluster texture of luts/blue_noise.h. */
-#ifndef GTLAB_REALTIME_RAYMARCH_VOLUMETRIC_H
-#define GTLAB_REALTIME_RAYMARCH_VOLUMETRIC_H
+#ifndef GTLAB_VOLUMETRIC_LIGHT_RAYMARCH_H
+#define GTLAB_VOLUMETRIC_LIGHT_RAYMARCH_H
 
 #include "core/volumetric_light.h"
 #include "luts/blue_noise.h"
-#include "realtime/shadow_map.h"
+#include "volumetric_light/volumetric_light_shadow_map.h"
 
 typedef enum {
     RAYMARCH_NOISE_NONE = 0,

@@ -1,8 +1,8 @@
-/* The volumetric-light section of `gtlab all` (studies/vlight.h): the
+/* The volumetric-light section of `gtlab all` (volumetric_light/volumetric_light_study.h): the
  * ray-march's error against samples per pixel per noise, the samples each
  * noise needs to match 128 uniform steps, the talk's final configuration,
  * the shadow map's floor, and the claims. */
-#include "report/vlight_section.h"
+#include "volumetric_light/volumetric_light_section.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -67,7 +67,7 @@ static const report_column shadow_columns[] = {
 };
 #undef ROW
 
-static int index_of_spp(const vlight_request *rq, int spp)
+static int index_of_spp(const volumetric_light_request *rq, int spp)
 {
     for (int k = 0; k < rq->spp_count; ++k)
         if (rq->spp[k] == spp)
@@ -75,30 +75,30 @@ static int index_of_spp(const vlight_request *rq, int spp)
     return THREE_SPP_INDEX_NONE;
 }
 
-static void fill_rows(const vlight_result *r, noise_row *noise, talk_row *talk, shadow_row *shadow)
+static void fill_rows(const volumetric_light_result *r, noise_row *noise, talk_row *talk, shadow_row *shadow)
 {
     int k = index_of_spp(&r->request, 3);
     for (int n = 0; n < RAYMARCH_NOISE_COUNT; ++n) {
-        const vlight_error *s = k >= 0 ? &r->single[n][k] : &r->uniform128, *a = k >= 0 ? &r->accumulated[n][k] : s;
+        const volumetric_light_error *s = k >= 0 ? &r->single[n][k] : &r->uniform128, *a = k >= 0 ? &r->accumulated[n][k] : s;
         noise_row row = {"",       r->spp_needed_single[n], r->spp_needed_accumulated[n], s->rmse, s->rmse_se, a->rmse,
                          a->rmse_se, s->dssim, a->dssim, s->blurred, s->blurred_se};
         snprintf(row.noise, sizeof row.noise, "%s", raymarch_noise_name((raymarch_noise)n));
         noise[n] = row;
     }
-    for (int t = 0; t < VLIGHT_TALK_SPP; ++t)
+    for (int t = 0; t < VOLUMETRIC_LIGHT_TALK_SPP; ++t)
         talk[t] = (talk_row){r->talk_spp[t], r->talk_single[t].rmse, r->talk_single[t].rmse_se, r->talk[t].rmse,
                              r->talk[t].rmse_se, r->talk[t].dssim, r->talk[t].rmse / r->uniform128.rmse,
                              r->talk_noisy[t].rmse, r->talk_noisy[t].rmse_se,
                              r->talk_noisy[t].rmse / r->uniform128.rmse};
-    for (int s = 0; s < VLIGHT_SHADOW_SIZES; ++s)
+    for (int s = 0; s < VOLUMETRIC_LIGHT_SHADOW_SIZES; ++s)
         shadow[s] = (shadow_row){r->shadow_sizes[s], r->shadow_rmse[s], r->shadow_seconds[s]};
 }
 
 /* Relative RMSE against spp, log-log: single frame solid, accumulated dashed. */
-static int plot(const report_context *ctx, const vlight_result *r, gt_error *e)
+static int plot(const report_context *ctx, const volumetric_light_result *r, gt_error *e)
 {
     char data[4096], png[4096], script[8192];
-    snprintf(data, sizeof data, "%s/%s/error_vs_spp.dat", ctx->study.output_dir, VLIGHT_DIR);
+    snprintf(data, sizeof data, "%s/%s/error_vs_spp.dat", ctx->study.output_dir, VOLUMETRIC_LIGHT_DIR);
     snprintf(png, sizeof png, "%s/figures/volumetric_error_vs_spp.png", ctx->study.output_dir);
     int n = snprintf(script, sizeof script,
                      "set logscale xy\nset xlabel 'samples per pixel (steps per ray)'\nset ylabel 'relative RMSE'\n"
@@ -173,15 +173,15 @@ static const claim_record kTalkConfiguration = {
                  "linear values scaled by the reference's 99th percentile; the DSSIM gap is given beside it"};
 
 /* A noise's single-frame blurred relative RMSE at 3 spp (NaN if 3 is not sampled). */
-static double blurred_at_3spp(const vlight_result *r, int noise)
+static double blurred_at_3spp(const volumetric_light_result *r, int noise)
 {
     int k = index_of_spp(&r->request, 3);
     return k >= 0 ? r->single[noise][k].blurred : NAN;
 }
 
-static void add_claims(report_context *ctx, const vlight_result *r)
+static void add_claims(report_context *ctx, const volumetric_light_result *r)
 {
-    const vlight_request *rq = &r->request;
+    const volumetric_light_request *rq = &r->request;
     int w = RAYMARCH_NOISE_WHITE, b = RAYMARCH_NOISE_BAYER, g = RAYMARCH_NOISE_IGN, u = RAYMARCH_NOISE_BLUE;
     claims_table_add(ctx->claims, &kBlueOverWhite, r->blue_blurred_gap[w], r->blue_blurred_gap_se[w],
                      "relative RMSE after a 1-pixel Gaussian blur, one frame of 3 spp, blue (%.4f) minus white "
@@ -209,7 +209,7 @@ static void add_claims(report_context *ctx, const vlight_result *r)
 /* The summary table's row: the four jitter patterns (noise rows 1 to 4) by
  * relative RMSE at 3 spp with the frames accumulated, the gap's interval
  * from the per-seed differences. */
-static void add_headline(report *doc, const vlight_result *r, const noise_row *noise)
+static void add_headline(report *doc, const volumetric_light_result *r, const noise_row *noise)
 {
     const char *labels[4];
     double errors[4];
@@ -222,12 +222,12 @@ static void add_headline(report *doc, const vlight_result *r, const noise_row *n
         return;
     char over[64];
     snprintf(over, sizeof over, "paired over %d seeds", r->request.seeds);
-    headline_pair_cases(&h, 4, labels, &r->rmse3_accumulated_by_seed[RAYMARCH_NOISE_WHITE][0], VLIGHT_MAX_SEEDS,
+    headline_pair_cases(&h, 4, labels, &r->rmse3_accumulated_by_seed[RAYMARCH_NOISE_WHITE][0], VOLUMETRIC_LIGHT_MAX_SEEDS,
                         r->request.seeds, over);
     report_add_headline(doc, &h);
 }
 
-static void findings(report_context *ctx, const vlight_result *r, const noise_row *noise)
+static void findings(report_context *ctx, const volumetric_light_result *r, const noise_row *noise)
 {
     add_headline(ctx->doc, r, noise);
     double target = r->uniform128.rmse;
@@ -252,9 +252,9 @@ static void findings(report_context *ctx, const vlight_result *r, const noise_ro
 }
 
 /* The error spectrum's peak per noise and the equal-cost comparison: text and summary. */
-static void structure_and_cost(report_context *ctx, const vlight_result *r, cJSON *json)
+static void structure_and_cost(report_context *ctx, const volumetric_light_result *r, cJSON *json)
 {
-    const vlight_request *rq = &r->request;
+    const volumetric_light_request *rq = &r->request;
     report_paragraph(ctx->doc,
                      "Structure: the peak ratio of frame 0's error periodogram at 3 spp (the largest power over the "
                      "mean, both over non-zero frequencies; a noise gives about ln N = %.1f, a pure pattern up to N / 2): "
@@ -323,29 +323,29 @@ static void figures(report_context *ctx)
     static char storage[9][128];
     paths[0] = "figures/volumetric_error_vs_spp.png", captions[0] = "ray-march error against spp per noise";
     for (int k = 0; k < 9; ++k) {
-        snprintf(storage[k], sizeof storage[k], "%s/%s.png", VLIGHT_DIR, names[k]);
+        snprintf(storage[k], sizeof storage[k], "%s/%s.png", VOLUMETRIC_LIGHT_DIR, names[k]);
         paths[k + 1] = storage[k], captions[k + 1] = names[k];
     }
     report_figures(ctx->doc, 10, paths, captions);
 }
 
-int vlight_section(report_context *ctx, const vlight_result *r, gt_error *e)
+int volumetric_light_section(report_context *ctx, const volumetric_light_result *r, gt_error *e)
 {
     char dir[2048];
     if (study_make_dir(&ctx->study, "figures", dir, sizeof dir, e) != 0 || plot(ctx, r, e) != 0)
         return -1;
     noise_row noise[RAYMARCH_NOISE_COUNT];
-    talk_row talk[VLIGHT_TALK_SPP];
-    shadow_row shadow[VLIGHT_SHADOW_SIZES];
+    talk_row talk[VOLUMETRIC_LIGHT_TALK_SPP];
+    shadow_row shadow[VOLUMETRIC_LIGHT_SHADOW_SIZES];
     fill_rows(r, noise, talk, shadow);
-    const vlight_request *rq = &r->request;
+    const volumetric_light_request *rq = &r->request;
     report_heading(ctx->doc, 2, "Volumetric lights (INSIDE)");
     report_paragraph(
         ctx->doc,
         "A spot light (pbrt-v4 smoothstep falloff, half-angles 30/20 degrees) in builtin:cornell at %dx%d, "
         "homogeneous medium (albedo 0.8, HG g = 0.3), shadowed by the tall block. Reference: single scattering by "
         "adaptive quadrature in the equiangular angle with Embree shadow rays (%d pixels, mean L/I %.4g, largest "
-        "error estimate %.2g, %ld shadow rays in %.2f s). The ray-march (realtime/raymarch_volumetric.h): N uniform "
+        "error estimate %.2g, %ld shadow rays in %.2f s). The ray-march (volumetric_light/volumetric_light_raymarch.h): N uniform "
         "steps in the cone, a %d^2 shadow map with 2x2 PCF, the start offset by noise (animated by the golden ratio; "
         "white: new per frame), accumulated with alpha %.2f over %d frames; %d seeds; errors over the pixels that see "
         "a surface (RMSE relative to the reference's mean). The target is 128 uniform steps: relative RMSE %.4f, "
@@ -359,11 +359,11 @@ int vlight_section(report_context *ctx, const vlight_result *r, gt_error *e)
     report_paragraph(ctx->doc, "The talk's final configuration: half resolution, blue noise, depth-aware upsample, "
                                "accumulation:");
     report_rows(ctx->doc, cJSON_AddArrayToObject(json, "talk"), talk_columns,
-                (int)(sizeof talk_columns / sizeof talk_columns[0]), talk, sizeof talk[0], VLIGHT_TALK_SPP);
+                (int)(sizeof talk_columns / sizeof talk_columns[0]), talk, sizeof talk[0], VOLUMETRIC_LIGHT_TALK_SPP);
     report_paragraph(ctx->doc, "The shadow map's resolution sets a floor under every configuration:");
     report_rows(ctx->doc, cJSON_AddArrayToObject(json, "shadow_maps"), shadow_columns,
                 (int)(sizeof shadow_columns / sizeof shadow_columns[0]), shadow, sizeof shadow[0],
-                VLIGHT_SHADOW_SIZES);
+                VOLUMETRIC_LIGHT_SHADOW_SIZES);
     structure_and_cost(ctx, r, json);
     cJSON_AddNumberToObject(json, "uniform128_rmse", r->uniform128.rmse);
     cJSON_AddNumberToObject(json, "ns_per_pixel_sample", r->ns_per_pixel_sample);

@@ -1,5 +1,5 @@
-/* A point light's cube of shadow maps (realtime/shadow_map.h,
- * studies/shadow_map_render.h) in the ray-march: on builtin:cornell with a
+/* A point light's cube of shadow maps (volumetric_light/volumetric_light_shadow_map.h,
+ * volumetric_light/volumetric_light_shadow_map_render.h) in the ray-march: on builtin:cornell with a
  * point light under the ceiling above the blocks, a 1024-step march with a
  * 512^2 cube matches the reference (quadrature with Embree shadow rays)
  * within 0.3% relative RMSE (0.05% measured), while the same march without
@@ -9,12 +9,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "realtime/raymarch_volumetric.h"
-#include "studies/shadow_map_render.h"
-#include "studies/vlight_setup.h"
+#include "volumetric_light/volumetric_light_raymarch.h"
+#include "volumetric_light/volumetric_light_shadow_map_render.h"
+#include "volumetric_light/volumetric_light_setup.h"
 #include "tests/check.h"
 
-static double relative_rmse(const vlight_setup *v, const float *a, const float *b)
+static double relative_rmse(const volumetric_light_setup *v, const float *a, const float *b)
 {
     double sum = 0.0, sum2 = 0.0;
     int n = 0;
@@ -26,10 +26,10 @@ static double relative_rmse(const vlight_setup *v, const float *a, const float *
 
 int main(void)
 {
-    vlight_setup v;
+    volumetric_light_setup v;
     shadow_cube cube;
     gt_error e;
-    if (vlight_setup_init(&v, 32, 32, 2, &e) != 0) {
+    if (volumetric_light_setup_init(&v, 32, 32, 2, &e) != 0) {
         fprintf(stderr, "%s\n", e.message);
         return 1;
     }
@@ -41,7 +41,7 @@ int main(void)
     }
     int n = 32 * 32;
     float *ref = malloc(sizeof(float) * n), *lit = malloc(sizeof(float) * n), *open = malloc(sizeof(float) * n);
-    vlight_reference(&v, 1e-5, 2, ref, NULL);
+    volumetric_light_reference(&v, 1e-5, 2, ref, NULL);
     raymarch_lighting shadowed = {&v.light, &v.medium, NULL, &cube}, unshadowed = {&v.light, &v.medium, NULL, NULL};
     raymarch_image(&shadowed, &v.view, 1024, RAYMARCH_NOISE_NONE, NULL, 0, 2, lit);
     raymarch_image(&unshadowed, &v.view, 1024, RAYMARCH_NOISE_NONE, NULL, 0, 2, open);
@@ -58,6 +58,6 @@ int main(void)
     CHECK(faces_used == 6);
     free(ref), free(lit), free(open);
     shadow_cube_free(&cube);
-    vlight_setup_free(&v);
-    return check_report("studies_vlight_point_shadows");
+    volumetric_light_setup_free(&v);
+    return check_report("volumetric_light_point_shadows");
 }

@@ -23,10 +23,10 @@
  *   history exponential accumulation with a static camera (no reprojection,
  *           no neighbourhood clamp: nothing moves), h_f = (1 - a) h_{f-1} + a x_f,
  *           h_0 = x_0. TAA's usual a = 0.1. */
-#ifndef GTLAB_REALTIME_RAYMARCH_UPSAMPLE_H
-#define GTLAB_REALTIME_RAYMARCH_UPSAMPLE_H
+#ifndef GTLAB_VOLUMETRIC_LIGHT_UPSAMPLE_H
+#define GTLAB_VOLUMETRIC_LIGHT_UPSAMPLE_H
 
-#include "realtime/raymarch_volumetric.h"
+#include "volumetric_light/volumetric_light_raymarch.h"
 
 #define UPSAMPLE_DEPTH_TOLERANCE 0.1
 

@@ -1,4 +1,4 @@
-/* studies/vlight: the volumetric-light section's numbers without its prose,
+/* volumetric_light/volumetric_light_study: the volumetric-light section's numbers without its prose,
  * on a small request. The jittered ray-march's error falls with the samples,
  * accumulation lowers it, no noise does not change over frames, 128 uniform
  * steps beat 3, the shadow map's floor falls with its size, the talk's
@@ -11,13 +11,13 @@
 #include <math.h>
 #include <string.h>
 
-#include "studies/vlight.h"
+#include "volumetric_light/volumetric_light_study.h"
 #include "tests/check.h"
 #include "tests/test_files.h"
 
-static vlight_request small_request(void)
+static volumetric_light_request small_request(void)
 {
-    vlight_request rq = vlight_default_request(QUALITY_PREVIEW);
+    volumetric_light_request rq = volumetric_light_default_request(QUALITY_PREVIEW);
     rq.width = rq.height = 32;
     rq.seeds = 2, rq.frames = 6, rq.blue_noise_size = 32;
     rq.cost_width = 64, rq.cost_height = 48;
@@ -27,7 +27,7 @@ static vlight_request small_request(void)
     return rq;
 }
 
-static void check_numbers(const vlight_result *r)
+static void check_numbers(const volumetric_light_result *r)
 {
     CHECK(r->pixels > 500 && r->reference_mean > 0.0 && r->reference_max_error < 1e-3 * r->reference_mean);
     for (int n = RAYMARCH_NOISE_WHITE; n < RAYMARCH_NOISE_COUNT; ++n) {
@@ -38,8 +38,8 @@ static void check_numbers(const vlight_result *r)
     }
     CHECK(r->accumulated[RAYMARCH_NOISE_NONE][1].rmse == r->single[RAYMARCH_NOISE_NONE][1].rmse);
     CHECK(r->uniform128.rmse < r->single[RAYMARCH_NOISE_NONE][1].rmse);
-    CHECK_MSG(r->shadow_rmse[0] > r->shadow_rmse[VLIGHT_SHADOW_SIZES - 1], "shadow floor %.3g (128) vs %.3g (1024)",
-              r->shadow_rmse[0], r->shadow_rmse[VLIGHT_SHADOW_SIZES - 1]);
+    CHECK_MSG(r->shadow_rmse[0] > r->shadow_rmse[VOLUMETRIC_LIGHT_SHADOW_SIZES - 1], "shadow floor %.3g (128) vs %.3g (1024)",
+              r->shadow_rmse[0], r->shadow_rmse[VOLUMETRIC_LIGHT_SHADOW_SIZES - 1]);
     CHECK(r->talk[1].rmse < r->talk_single[1].rmse && r->talk_spp[1] == 6);
     CHECK(r->blue_ratio[RAYMARCH_NOISE_WHITE] > 0.0 && isfinite(r->blue_blurred_ratio[RAYMARCH_NOISE_IGN]));
     CHECK(r->ns_per_pixel_sample > 0.0);
@@ -64,24 +64,24 @@ int main(void)
     char dir[2048], path[4096];
     gt_error e;
     study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL};
-    CHECK(study_make_dir(&top, "vlight_study", dir, sizeof dir, &e) == 0);
+    CHECK(study_make_dir(&top, "volumetric_light_study", dir, sizeof dir, &e) == 0);
     study_context two = {dir, QUALITY_PREVIEW, 2, NULL, NULL}, one = {dir, QUALITY_PREVIEW, 1, NULL, NULL};
-    vlight_request rq = small_request();
-    static vlight_result r2, r1;
-    CHECK_MSG(vlight_study(&two, &rq, &r2, &e) == 0, "%s", e.message);
-    CHECK_MSG(vlight_study(&one, &rq, &r1, &e) == 0, "%s", e.message);
+    volumetric_light_request rq = small_request();
+    static volumetric_light_result r2, r1;
+    CHECK_MSG(volumetric_light_study(&two, &rq, &r2, &e) == 0, "%s", e.message);
+    CHECK_MSG(volumetric_light_study(&one, &rq, &r1, &e) == 0, "%s", e.message);
     check_numbers(&r2);
     CHECK(r1.uniform128.rmse == r2.uniform128.rmse && r1.single[4][1].rmse == r2.single[4][1].rmse &&
           r1.accumulated[1][0].dssim == r2.accumulated[1][0].dssim && r1.talk[0].blurred == r2.talk[0].blurred);
     const char *files[] = {"reference.png", "blue_3.png", "talk_half_blue_6_accumulated.png", "error_vs_spp.dat"};
     for (int i = 0; i < 4; ++i) {
-        snprintf(path, sizeof path, "%s/%s/%s", dir, VLIGHT_DIR, files[i]);
+        snprintf(path, sizeof path, "%s/%s/%s", dir, VOLUMETRIC_LIGHT_DIR, files[i]);
         CHECK_MSG(file_exists(path), "%s not written", path);
     }
     CHECK(r1.cost_dssim_gap == r2.cost_dssim_gap && r1.cost_flip_gap == r2.cost_flip_gap && r1.peak_ratio[RAYMARCH_NOISE_IGN] == r2.peak_ratio[RAYMARCH_NOISE_IGN]);
     rq.cost_width = 1;
-    CHECK(vlight_study(&two, &rq, &r1, &e) != 0);
+    CHECK(volumetric_light_study(&two, &rq, &r1, &e) != 0);
     rq = small_request(), rq.seeds = 0;
-    CHECK(vlight_study(&two, &rq, &r1, &e) != 0);
-    return check_report("studies_vlight");
+    CHECK(volumetric_light_study(&two, &rq, &r1, &e) != 0);
+    return check_report("volumetric_light_study");
 }

@@ -1,5 +1,5 @@
-/* The volumetric-light ray-march; see raymarch_volumetric.h. */
-#include "realtime/raymarch_volumetric.h"
+/* The volumetric-light ray-march; see volumetric_light_raymarch.h. */
+#include "volumetric_light/volumetric_light_raymarch.h"
 
 #include <math.h>
 #include <string.h>

@@ -1,6 +1,6 @@
 /* Half resolution, depth-aware upsample and accumulation; see
- * raymarch_upsample.h. */
-#include "realtime/raymarch_upsample.h"
+ * volumetric_light/volumetric_light_upsample.h. */
+#include "volumetric_light/volumetric_light_upsample.h"
 
 #include <math.h>
 

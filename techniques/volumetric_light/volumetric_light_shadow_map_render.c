@@ -1,5 +1,5 @@
-/* A spot light's shadow map by Embree; see shadow_map_render.h. */
-#include "studies/shadow_map_render.h"
+/* A spot light's shadow map by Embree; see volumetric_light_shadow_map_render.h. */
+#include "volumetric_light/volumetric_light_shadow_map_render.h"
 
 #include <math.h>
 #include <string.h>
