@@ -25,7 +25,7 @@
  *
  * The lookup is bilinear (environment/env_approx_equirect.h): the map is smooth
  * (the convolution is a low-pass filter), so 64 x 32 texels interpolate it
- * well; tests/luts/test_irradiance_map.c measures it. */
+ * well; tests/test_irradiance_map.c measures it. */
 #ifndef GTLAB_ENVIRONMENT_IRRADIANCE_MAP_H
 #define GTLAB_ENVIRONMENT_IRRADIANCE_MAP_H
 

@@ -20,7 +20,7 @@
  * Irradiance (eqs. 12-13): E(n) = sum_lm A_l L_lm Y_lm(n), with the clamped
  * cosine's convolution weights A_0 = pi, A_1 = 2 pi / 3, A_2 = pi / 4.
  *
- * Truncation (tests/luts/test_sh_irradiance.c): for a constant environment
+ * Truncation (tests/test_sh_irradiance.c): for a constant environment
  * L the result pi L is exact. For a single clamped-cosine lobe L(w) =
  * max(0, w.d) the exact irradiance at angle g between n and d is
  *   E(g) = 2/3 ((pi - g) cos g + sin g)
