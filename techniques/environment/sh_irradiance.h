@@ -14,13 +14,13 @@
  * Projection (eq. 10): L_lm = \int L(w) Y_lm(w) dw, integrated EXACTLY per
  * texel of the equirect environment read as piecewise constant: each Y_lm
  * is a polynomial of degree <= 2 in w and its integral over a texel has a
- * closed form (luts/env_approx_equirect.h, equirect_texel_moments). No
+ * closed form (environment/env_approx_equirect.h, equirect_texel_moments). No
  * quadrature error beyond the environment's own texels.
  *
  * Irradiance (eqs. 12-13): E(n) = sum_lm A_l L_lm Y_lm(n), with the clamped
  * cosine's convolution weights A_0 = pi, A_1 = 2 pi / 3, A_2 = pi / 4.
  *
- * Truncation (tests/luts/test_sh_irradiance.c): for a constant environment
+ * Truncation (tests/test_sh_irradiance.c): for a constant environment
  * L the result pi L is exact. For a single clamped-cosine lobe L(w) =
  * max(0, w.d) the exact irradiance at angle g between n and d is
  *   E(g) = 2/3 ((pi - g) cos g + sin g)
@@ -30,10 +30,10 @@
  * = -0.0164 (0.78% of the peak 2 pi / 3), at both ends: g = pi (E9 =
  * -0.0164 where E = 0: why engines clamp) and g = 0 (2.0780 against
  * 2.0944). */
-#ifndef GTLAB_LUTS_SH_IRRADIANCE_H
-#define GTLAB_LUTS_SH_IRRADIANCE_H
+#ifndef GTLAB_ENVIRONMENT_SH_IRRADIANCE_H
+#define GTLAB_ENVIRONMENT_SH_IRRADIANCE_H
 
-#include "luts/env_approx_equirect.h"
+#include "environment/env_approx_equirect.h"
 
 enum { SH9_COEFFICIENTS = 9 };
 

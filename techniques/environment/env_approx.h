@@ -8,12 +8,12 @@
  *   ao-bent           E(b) / pi AO                    (b the unit bent normal)
  *   multibounce-n     E(n) / pi G(AO, rho)            (G: the GTAO multi-bounce function,
  *   multibounce-bent  E(b) / pi G(AO, rho)             realtime/multibounce.h, per channel)
- * with E the irradiance from 9 SH coefficients (luts/sh_irradiance.h) or the
- * exact irradiance map (luts/irradiance_map.h);
+ * with E the irradiance from 9 SH coefficients (environment/sh_irradiance.h) or the
+ * exact irradiance map (environment/irradiance_map.h);
  *
  * specular (GGX, F0 per channel), the split sum times a specular occlusion
  *   P(R, r) (F0 A(n.v, r) + B(n.v, r)) V_s
- * (luts/prefiltered_radiance.h, luts/dfg_lut.h), V_s = 1 unoccluded or one
+ * (environment/prefiltered_radiance.h, luts/dfg_lut.h), V_s = 1 unoccluded or one
  * variant of realtime/specular_occlusion_screen.h (AO as V_s, Lagarde,
  * cone/cone, the GTSO cone/lobe LUT).
  *
@@ -22,13 +22,13 @@
  * any other scenario": under a constant environment E(b) = E(n) = pi L and
  * ao-n is L AO, exactly the white-dome AO shading; elsewhere E(n) AO is
  * \int L cos times \int V cos / pi, not \int V L cos. */
-#ifndef GTLAB_REALTIME_ENV_APPROX_H
-#define GTLAB_REALTIME_ENV_APPROX_H
+#ifndef GTLAB_ENVIRONMENT_ENV_APPROX_H
+#define GTLAB_ENVIRONMENT_ENV_APPROX_H
 
 #include "luts/dfg_lut.h"
-#include "luts/irradiance_map.h"
-#include "luts/prefiltered_radiance.h"
-#include "luts/sh_irradiance.h"
+#include "environment/irradiance_map.h"
+#include "environment/prefiltered_radiance.h"
+#include "environment/sh_irradiance.h"
 #include "realtime/multibounce.h"
 
 typedef enum { ENV_IRRADIANCE_SH9, ENV_IRRADIANCE_MAP, ENV_IRRADIANCE_SOURCES } env_irradiance_source;

@@ -1,7 +1,7 @@
 /* 9-coefficient SH irradiance (Ramamoorthi and Hanrahan 2001): the basis,
  * the exact per-texel projection and the convolved evaluation. See the
  * header for the equations and the truncation error. */
-#include "luts/sh_irradiance.h"
+#include "environment/sh_irradiance.h"
 
 #include <math.h>
 #include <string.h>

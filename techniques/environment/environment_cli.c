@@ -8,8 +8,8 @@
 #include "cli/technique.h"
 #include "core/threads.h"
 #include "raytracer/environment_throughput.h"
-#include "report/env_approx_section.h"
-#include "studies/env_approx.h"
+#include "environment/env_approx_section.h"
+#include "environment/env_approx_study.h"
 
 static const cli_option bench_options[] = {
     CLI_STRING("scene", "S", "builtin:NAME or a glTF file (default builtin:cornell)"),

@@ -1,7 +1,7 @@
 /* Equirectangular geometry: directions, texel solid angles and moments in
  * closed form, the bilinear lookup and the solid-angle-weighted pyramid. See
  * the header for the convention. */
-#include "luts/env_approx_equirect.h"
+#include "environment/env_approx_equirect.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -1,8 +1,8 @@
 /* The environment study: the environments and their lighting
  * precomputations, the references of every scene under each, the cases
- * scored (studies/env_approx_scores.c), the means, the specular-occlusion
+ * scored (environment/env_approx_scores.c), the means, the specular-occlusion
  * rankings against the white dome's and the talk's claim. */
-#include "studies/env_approx.h"
+#include "environment/env_approx_study.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -15,8 +15,8 @@
 #include "raytracer/environment_quantity.h"
 #include "raytracer/reference_render.h"
 #include "studies/study_scenes.h"
-#include "studies/env_approx_lighting.h"
-#include "studies/env_approx_parts.h"
+#include "environment/env_approx_lighting.h"
+#include "environment/env_approx_parts.h"
 
 #define BLENDER_WORLD "/usr/share/blender/datafiles/studiolights/world/"
 #define ENV_STUDY_DIR "environment"

@@ -1,5 +1,5 @@
 /* The lighting precomputations of one environment, timed: see the header. */
-#include "studies/env_approx_lighting.h"
+#include "environment/env_approx_lighting.h"
 
 #include <stdlib.h>
 #include <string.h>

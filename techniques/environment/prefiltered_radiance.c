@@ -1,7 +1,7 @@
 /* GGX pre-filtered radiance by Karis's deterministic Hammersley filter
  * with filtered-importance-sampling lookups, its mip chain and the split
  * sum. See the header for the equations and the roughness mapping. */
-#include "luts/prefiltered_radiance.h"
+#include "environment/prefiltered_radiance.h"
 
 #include <math.h>
 #include <omp.h>

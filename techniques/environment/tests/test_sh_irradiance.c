@@ -1,5 +1,5 @@
-/* 9-coefficient SH irradiance (luts/sh_irradiance.h) and the equirect
- * texel moments it is built on (luts/env_approx_equirect.h):
+/* 9-coefficient SH irradiance (environment/sh_irradiance.h) and the equirect
+ * texel moments it is built on (environment/env_approx_equirect.h):
  *  - the closed-form texel moments against a fine midpoint quadrature, and
  *    the texel solid angles summing to 4 pi;
  *  - a constant environment L: E = pi L in every direction (exact);
@@ -15,7 +15,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "luts/sh_irradiance.h"
+#include "environment/sh_irradiance.h"
 #include "core/vec3.h" /* M_PI */
 #include "tests/check.h"
 

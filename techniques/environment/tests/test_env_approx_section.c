@@ -13,7 +13,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "report/env_approx_section.h"
+#include "environment/env_approx_section.h"
 #include "tests/check.h"
 
 enum { SCENES = 4, ENVS = 3 };

@@ -1,7 +1,7 @@
 /* The exact irradiance map: blocks of texels reduced to their radiance-
  * weighted first moments, then E(n) = sum over blocks of max(0, n . LM) per
  * channel. See the header for why this is exact off the horizon. */
-#include "luts/irradiance_map.h"
+#include "environment/irradiance_map.h"
 
 #include <math.h>
 #include <omp.h>

@@ -1,5 +1,5 @@
 /* The equirectangular environment as the engines' lighting approximations
- * (luts/sh_irradiance.h, luts/irradiance_map.h, luts/prefiltered_radiance.h)
+ * (environment/sh_irradiance.h, environment/irradiance_map.h, environment/prefiltered_radiance.h)
  * take it: a float RGB image of width x height texels, row-major, three
  * floats per texel, read as piecewise-constant radiance (each texel's value
  * over its whole solid angle). The mapping is core/environment_map.h's
@@ -21,8 +21,8 @@
  * pyramid of the source) use the same convention; a lookup is bilinear with
  * texel centres at ((i + 0.5) / W, (j + 0.5) / H), wrapping in phi and
  * clamped in theta, as a GPU samples a lat-long texture. */
-#ifndef GTLAB_LUTS_ENV_APPROX_EQUIRECT_H
-#define GTLAB_LUTS_ENV_APPROX_EQUIRECT_H
+#ifndef GTLAB_ENVIRONMENT_ENV_APPROX_EQUIRECT_H
+#define GTLAB_ENVIRONMENT_ENV_APPROX_EQUIRECT_H
 
 /* A view of an environment (not owned). */
 typedef struct {

@@ -1,4 +1,4 @@
-/* The ambient combinations of realtime/env_approx.h as a screen pass: from
+/* The ambient combinations of environment/env_approx.h as a screen pass: from
  * the G-buffer and AO / bent-normal buffers a shader has (the buffers of
  * realtime/specular_occlusion_screen.h, plus the albedo) into RGB images,
  * one float plane per channel, 0 outside the mask.
@@ -7,10 +7,10 @@
  *   the bent normal normalised (n where it is zero);
  *   V_s of a specular-occlusion variant from so_approx_pixel on the
  *   so_pixel_inputs of the same buffers (so_inputs_compute). */
-#ifndef GTLAB_REALTIME_ENV_APPROX_SCREEN_H
-#define GTLAB_REALTIME_ENV_APPROX_SCREEN_H
+#ifndef GTLAB_ENVIRONMENT_ENV_APPROX_SCREEN_H
+#define GTLAB_ENVIRONMENT_ENV_APPROX_SCREEN_H
 
-#include "realtime/env_approx.h"
+#include "environment/env_approx.h"
 #include "realtime/specular_occlusion_screen.h"
 
 /* Diffuse outgoing radiance per unit albedo of one kind into out[3] (planes

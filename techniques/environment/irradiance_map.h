@@ -3,13 +3,13 @@
  * shader samples with the normal (the "pre-convolved probe" of engines;
  * Ramamoorthi and Hanrahan 2001 call the same quantity an irradiance
  * environment map, and approximate it with 9 SH coefficients,
- * luts/sh_irradiance.h).
+ * environment/sh_irradiance.h).
  *
  *   E(n) = \int L(w) max(0, n.w) dw
  *        = sum_t L_t \int_t max(0, n.w) dw          (L piecewise constant per texel t)
  *
  * For a texel wholly above n's horizon the integral is n . M_t with M_t =
- * \int_t w dw, its first moment, in closed form (luts/env_approx_equirect.h);
+ * \int_t w dw, its first moment, in closed form (environment/env_approx_equirect.h);
  * wholly below, 0; straddling the horizon, max(0, n . M_t) (the only
  * approximation: an error of at most L_t Omega_t times the texel's angular
  * size, on the ring of texels the horizon crosses). The same holds for a
@@ -23,13 +23,13 @@
  * is 2048 x 8192 x 9 = 1.5e8 multiply-adds, ~0.1 s on one core; at
  * reduction 0, 64 times that.
  *
- * The lookup is bilinear (luts/env_approx_equirect.h): the map is smooth
+ * The lookup is bilinear (environment/env_approx_equirect.h): the map is smooth
  * (the convolution is a low-pass filter), so 64 x 32 texels interpolate it
- * well; tests/luts/test_irradiance_map.c measures it. */
-#ifndef GTLAB_LUTS_IRRADIANCE_MAP_H
-#define GTLAB_LUTS_IRRADIANCE_MAP_H
+ * well; tests/test_irradiance_map.c measures it. */
+#ifndef GTLAB_ENVIRONMENT_IRRADIANCE_MAP_H
+#define GTLAB_ENVIRONMENT_IRRADIANCE_MAP_H
 
-#include "luts/env_approx_equirect.h"
+#include "environment/env_approx_equirect.h"
 
 typedef struct {
     int width, height; /* height = width / 2 */

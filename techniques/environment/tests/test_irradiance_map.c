@@ -1,4 +1,4 @@
-/* The exact irradiance map (luts/irradiance_map.h):
+/* The exact irradiance map (environment/irradiance_map.h):
  *  - an environment linear in w stored as exact texel means, L = a + b.w
  *    (a >= |b|): E(n) = pi a + 2 pi/3 b.n, but for the piecewise-constant
  *    texels' O(h^2) error and the horizon's ring of texels (h = pi / 128:
@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "luts/irradiance_map.h"
+#include "environment/irradiance_map.h"
 #include "core/vec3.h" /* M_PI */
 #include "tests/check.h"
 

@@ -1,4 +1,4 @@
-/* The engines' ambient combinations (realtime/env_approx.h) under a
+/* The engines' ambient combinations (environment/env_approx.h) under a
  * constant environment L, where every lighting approximation is exact:
  *  - E(n) = pi L from SH (exactly) and from the map (to its horizon ring's
  *    error, 1e-3 relative at 64 x 32), so unoccluded diffuse per unit albedo
@@ -9,14 +9,14 @@
  *  - the bent normal is normalised, and falls back to n when zero;
  * and under a linear environment L = 2 + b.w the bent-normal kinds read E at
  * the bent normal (2 pi + 2 pi/3 b.bent), the others at n; the screen pass
- * (realtime/env_approx_screen.h) gives each pixel's value (a zero bent
+ * (environment/env_approx_screen.h) gives each pixel's value (a zero bent
  * vector: n), 0 outside the mask, and reflects the view about n. */
 #include <math.h>
 #include <stdlib.h>
 
 #include "core/vec3.h" /* M_PI */
-#include "realtime/env_approx.h"
-#include "realtime/env_approx_screen.h"
+#include "environment/env_approx.h"
+#include "environment/env_approx_screen.h"
 #include "tests/check.h"
 
 enum { W = 64, H = 32 };

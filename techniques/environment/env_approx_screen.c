@@ -1,5 +1,5 @@
 /* The ambient combinations per pixel: see the header. */
-#include "realtime/env_approx_screen.h"
+#include "environment/env_approx_screen.h"
 
 #include <math.h>
 

@@ -1,11 +1,11 @@
-/* Inside the environment study (studies/env_approx.c): one case (an
+/* Inside the environment study (environment/env_approx_study.c): one case (an
  * environment and a scene) scored, and the images written. */
-#ifndef GTLAB_STUDIES_ENV_APPROX_PARTS_H
-#define GTLAB_STUDIES_ENV_APPROX_PARTS_H
+#ifndef GTLAB_ENVIRONMENT_ENV_APPROX_PARTS_H
+#define GTLAB_ENVIRONMENT_ENV_APPROX_PARTS_H
 
 #include "core/image.h"
-#include "realtime/env_approx_screen.h"
-#include "studies/env_approx.h"
+#include "environment/env_approx_screen.h"
+#include "environment/env_approx_study.h"
 
 /* What one case reads: the AO reference (G-buffer, ao.V, bent normal), the
  * two environment references, and the lighting of the environment. */

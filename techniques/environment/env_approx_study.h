@@ -12,7 +12,7 @@
  * normal (so the occlusion part is the combination's own error, not an AO
  * estimator's), the G-buffer's normal, albedo and roughness, F0 = 0.04.
  *
- * Combinations (realtime/env_approx.h): diffuse per unit albedo, AO x E(n),
+ * Combinations (environment/env_approx.h): diffuse per unit albedo, AO x E(n),
  * AO x E(bent), G(AO, rho) x E(n) and x E(bent) (G the GTAO multi-bounce
  * function, the talk's coefficients), E from 9 SH coefficients and from the
  * exact irradiance map; specular, the split sum times each specular-
@@ -34,10 +34,10 @@
  * DSSIM of both images divided by twice the reference's mean (so the
  * reference's mean is 1/2 whatever the environment's brightness), means over
  * the scenes, with the per-scene values kept for paired statistics. */
-#ifndef GTLAB_STUDIES_ENV_APPROX_H
-#define GTLAB_STUDIES_ENV_APPROX_H
+#ifndef GTLAB_ENVIRONMENT_ENV_APPROX_STUDY_H
+#define GTLAB_ENVIRONMENT_ENV_APPROX_STUDY_H
 
-#include "realtime/env_approx.h"
+#include "environment/env_approx.h"
 #include "studies/study.h"
 
 enum {

@@ -1,7 +1,7 @@
 /* One case of the environment study: every combination's image, its error
  * split into the lighting's, the occlusion's and the total (studies/
  * env_approx.h), and the side-by-side images. */
-#include "studies/env_approx_parts.h"
+#include "environment/env_approx_parts.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -12,7 +12,7 @@
  * Hammersley points ((i + 0.5)/N, radical inverse of i), l = reflect(-R, h),
  * weights n.l, P = sum L(l) (n.l) / sum (n.l). Each sample reads a filtered
  * level of the source's solid-angle-weighted pyramid
- * (luts/env_approx_equirect.h) chosen by the ratio of the sample's solid
+ * (environment/env_approx_equirect.h) chosen by the ratio of the sample's solid
  * angle to a texel's (Colbert and Krivanek 2007, "GPU-Based Importance
  * Sampling", GPU Gems 3 ch. 20, eq. 13):
  *   lod = max(0, 1/2 log2(Omega_s / Omega_p) + 1),  Omega_s = 1 / (N pdf(l)),  pdf(l) = D(h) / 4
@@ -30,11 +30,11 @@
  * levels to low roughness; with K = 6 the linear one's worst case is the
  * interpolation between r = 0 and 0.2.) Level 0 (r = 0, a mirror) is the
  * source read at the level whose texels match the output's. */
-#ifndef GTLAB_LUTS_PREFILTERED_RADIANCE_H
-#define GTLAB_LUTS_PREFILTERED_RADIANCE_H
+#ifndef GTLAB_ENVIRONMENT_PREFILTERED_RADIANCE_H
+#define GTLAB_ENVIRONMENT_PREFILTERED_RADIANCE_H
 
 #include "luts/dfg_lut.h"
-#include "luts/env_approx_equirect.h"
+#include "environment/env_approx_equirect.h"
 
 enum { PREFILTERED_MAX_LEVELS = 12, PREFILTERED_MIN_WIDTH = 8 };
 

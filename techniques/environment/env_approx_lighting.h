@@ -5,12 +5,12 @@
  * texels) is first written as a small map of its constant; the rotation is
  * left to the caller (the study renders with none) and the intensity is
  * applied to the texels. */
-#ifndef GTLAB_STUDIES_ENV_APPROX_LIGHTING_H
-#define GTLAB_STUDIES_ENV_APPROX_LIGHTING_H
+#ifndef GTLAB_ENVIRONMENT_ENV_APPROX_LIGHTING_H
+#define GTLAB_ENVIRONMENT_ENV_APPROX_LIGHTING_H
 
 #include "core/environment_map.h"
 #include "core/error.h"
-#include "realtime/env_approx.h"
+#include "environment/env_approx.h"
 
 typedef struct {
     int map_width, map_reduction;          /* irradiance map: width x width/2, blocks of 2^reduction texels */

@@ -1,11 +1,11 @@
-/* The environment study's statistics (studies/env_approx.h): the
+/* The environment study's statistics (environment/env_approx_study.h): the
  * specular-occlusion ranking under each environment against the white
  * dome's, and the figures of the GTAO talk's claim, from the per-scene
  * figures alone. */
 #include <math.h>
 
 #include "metrics/noise_corrected.h"
-#include "studies/env_approx.h"
+#include "environment/env_approx_study.h"
 
 static const char *const so_labels[ENV_STUDY_SO_VARIANTS] = {"ao", "lagarde", "cone-exact:exp2-alpha", "lut",
                                                              "cone-horizon:exp2-alpha", "sg"};

@@ -1,4 +1,4 @@
-/* GGX pre-filtered radiance and the split sum (luts/prefiltered_radiance.h):
+/* GGX pre-filtered radiance and the split sum (environment/prefiltered_radiance.h):
  *  - a constant environment L: every texel of every level is L (the weights
  *    are normalised), and the split sum is L (F0 A + B) of the DFG LUT's
  *    lookup, which is dfg_integrate's value at a texel centre;
@@ -18,7 +18,7 @@
 
 #include "core/ggx.h"
 #include "core/quadrature.h"
-#include "luts/prefiltered_radiance.h"
+#include "environment/prefiltered_radiance.h"
 #include "core/vec3.h" /* M_PI */
 #include "tests/check.h"
 

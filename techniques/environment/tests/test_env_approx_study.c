@@ -1,8 +1,8 @@
-/* The environment study's control (studies/env_approx.h), no prose: under
+/* The environment study's control (environment/env_approx_study.h), no prose: under
  * the white dome (a constant environment) every combination's lighting part
  * is the irradiance of a constant, exact for 9 SH coefficients (the
  * constant is band 0 alone) and for the irradiance map but for the ring of
- * 8 x 8-texel blocks the horizon crosses (luts/irradiance_map.h; a 256 x
+ * 8 x 8-texel blocks the horizon crosses (environment/irradiance_map.h; a 256 x
  * 128 stand-in map: under 0.5 %); the occlusion part of AO x E(n) is then 0
  * (the approximation's occlusion factor is the exact AO, a ratio of the
  * same samples' sums), and of AO x E(bent) the map's ring error again.
@@ -11,7 +11,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "studies/env_approx.h"
+#include "environment/env_approx_study.h"
 #include "tests/check.h"
 
 #define AO_N (ENV_DIFFUSE_AO_N - 1)

@@ -1,6 +1,6 @@
 /* The environment section: tables from one column description each, the
  * images, the claims rows and a finding (see the header). */
-#include "report/env_approx_section.h"
+#include "environment/env_approx_section.h"
 
 #include <math.h>
 #include <stdio.h>

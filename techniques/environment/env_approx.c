@@ -1,5 +1,5 @@
 /* The engines' ambient combinations under an environment: see the header. */
-#include "realtime/env_approx.h"
+#include "environment/env_approx.h"
 
 #include <math.h>
 
