@@ -4099,7 +4099,7 @@ float3(0.32238692, 9.98783435e-05, 0.322486788), float3(0.320783496, 8.91578893e
 float3(0.316069484, 6.07136135e-05, 0.316130191), float3(0.314529419, 5.23945964e-05, 0.314581811), float3(0.313004613, 4.46202102e-05, 0.313049227), float3(0.311494827, 3.73695257e-05, 0.311532199)
 };
 
-/* DFG(nv, roughness) below is luts/dfg_lut.inc, the very text of gtlab's lookup dfg_lut_sample,
+/* DFG(nv, roughness) below is luts/table_lookup.inc, the very text of gtlab's lookup dfg_lut_sample,
  * behind these definitions. */
 #define DFG_LUT_SHADER
 #define DFG_FN
@@ -4117,22 +4117,28 @@ struct dfg_axis
 #define dfg_saturate saturate
 #define dfg_value float3
 
-/* The bilinear, clamp-to-edge lookup of the split-sum DFG table (luts/dfg_lut.h:
- * the axes; texel centres at (i + 0.5)/N, as a GPU samples the texture),
- * written once, in the common subset of C, HLSL and GLSL.
- * luts/dfg_lut.c compiles this file as C (luts/dfg_lut_c.h: its dialect,
- * one channel at a time) for dfg_lut_sample; the build embeds the very same
- * text after the table in the shaders luts/dfg_lut_writers.c writes (their
- * dialect: float3/vec3 texels of the array written before it), so the
- * lookup exists nowhere else.
+/* The bilinear, clamp-to-edge lookup of a square table sampled at texel
+ * centres (i + 0.5)/N along both axes, as a GPU samples a texture, written
+ * once, in the common subset of C, HLSL and GLSL. Its tables: the split-sum
+ * DFG table (luts/dfg_lut.h) and the LTC table (luts/ltc_ggx.h).
+ * luts/dfg_lut.c and luts/ltc_ggx.c compile this file as C
+ * (luts/table_lookup_c.h: its dialect, one channel at a time) for
+ * dfg_lut_sample and ltc_table_sample; the build embeds the very same text
+ * (table_lookup_inc_text) after the table in the shaders the tables'
+ * writers write (their dialect: float3/vec3 or float4/vec4 texels of the
+ * arrays written before it), so the lookup exists nowhere else. Its names
+ * keep the prefix of its first table, dfg_, as the generated shaders carry
+ * them; DFG() at the end, compiled where DFG_LUT_SHADER is defined, is the
+ * DFG table's entry point in its shaders.
  *
  * The dialect defines:
  *   DFG_FN                    qualifiers of a function (C: static inline)
- *   dfg_value                 a texel (C: one channel, float; shaders: float3/vec3)
- *   dfg_table                 the table (C: the LUT and a channel; shaders:
- *                             a placeholder int, the table being the array)
+ *   dfg_value                 a texel (C: one channel, float; shaders:
+ *                             float3/vec3 or float4/vec4)
+ *   dfg_table                 the table (C: the table and a channel;
+ *                             shaders: an int naming one of the arrays)
  *   dfg_table_size(t)         N
- *   dfg_texel(t, i, j)        texel i (n.v) of row j (roughness)
+ *   dfg_texel(t, i, j)        texel i (x axis) of row j (y axis)
  *   dfg_saturate, dfg_floor, dfg_float(i), dfg_int(x), and the type dfg_axis */
 
 /* A texel index clamped to [0, n - 1]: clamp-to-edge. */

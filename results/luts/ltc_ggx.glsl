@@ -1029,7 +1029,7 @@ vec4(0.644223809, 0.0142792137, 0, 0), vec4(0.701970518, 0.0190810021, 0, 0),
 vec4(0.778930068, 0.0261340812, 0, 0), vec4(0.894272983, 0.0376918986, 0, 0)
 );
 
-/* The fetches below are luts/dfg_lut.inc, the very text of gtlab's lookup ltc_table_sample,
+/* The fetches below are luts/table_lookup.inc, the very text of gtlab's lookup ltc_table_sample,
  * behind these definitions. */
 #define DFG_FN
 #define dfg_floor floor
@@ -1046,22 +1046,28 @@ struct dfg_axis
 #define dfg_saturate(x) clamp(x, 0.0f, 1.0f)
 #define dfg_value vec4
 
-/* The bilinear, clamp-to-edge lookup of the split-sum DFG table (luts/dfg_lut.h:
- * the axes; texel centres at (i + 0.5)/N, as a GPU samples the texture),
- * written once, in the common subset of C, HLSL and GLSL.
- * luts/dfg_lut.c compiles this file as C (luts/dfg_lut_c.h: its dialect,
- * one channel at a time) for dfg_lut_sample; the build embeds the very same
- * text after the table in the shaders luts/dfg_lut_writers.c writes (their
- * dialect: float3/vec3 texels of the array written before it), so the
- * lookup exists nowhere else.
+/* The bilinear, clamp-to-edge lookup of a square table sampled at texel
+ * centres (i + 0.5)/N along both axes, as a GPU samples a texture, written
+ * once, in the common subset of C, HLSL and GLSL. Its tables: the split-sum
+ * DFG table (luts/dfg_lut.h) and the LTC table (luts/ltc_ggx.h).
+ * luts/dfg_lut.c and luts/ltc_ggx.c compile this file as C
+ * (luts/table_lookup_c.h: its dialect, one channel at a time) for
+ * dfg_lut_sample and ltc_table_sample; the build embeds the very same text
+ * (table_lookup_inc_text) after the table in the shaders the tables'
+ * writers write (their dialect: float3/vec3 or float4/vec4 texels of the
+ * arrays written before it), so the lookup exists nowhere else. Its names
+ * keep the prefix of its first table, dfg_, as the generated shaders carry
+ * them; DFG() at the end, compiled where DFG_LUT_SHADER is defined, is the
+ * DFG table's entry point in its shaders.
  *
  * The dialect defines:
  *   DFG_FN                    qualifiers of a function (C: static inline)
- *   dfg_value                 a texel (C: one channel, float; shaders: float3/vec3)
- *   dfg_table                 the table (C: the LUT and a channel; shaders:
- *                             a placeholder int, the table being the array)
+ *   dfg_value                 a texel (C: one channel, float; shaders:
+ *                             float3/vec3 or float4/vec4)
+ *   dfg_table                 the table (C: the table and a channel;
+ *                             shaders: an int naming one of the arrays)
  *   dfg_table_size(t)         N
- *   dfg_texel(t, i, j)        texel i (n.v) of row j (roughness)
+ *   dfg_texel(t, i, j)        texel i (x axis) of row j (y axis)
  *   dfg_saturate, dfg_floor, dfg_float(i), dfg_int(x), and the type dfg_axis */
 
 /* A texel index clamped to [0, n - 1]: clamp-to-edge. */

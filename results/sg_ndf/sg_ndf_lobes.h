@@ -1,4 +1,4 @@
-/* Spherical-Gaussian fits of anisotropic NDFs (gtlab, studies/sg_ndf.h): D(m) ~ sum over a table's
+/* Spherical-Gaussian fits of anisotropic NDFs (gtlab, techniques/sg_ndf/sg_ndf_study.h): D(m) ~ sum over a table's
  * lobes of amplitude exp(sharpness (dot(m, axis) - 1)), m in the tangent frame (x: alpha_x, z: n).
  * Only fits that passed every check (status ok). Generated; do not edit. */
 #pragma once
