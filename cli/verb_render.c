@@ -92,7 +92,7 @@ static int parse_quantity(const cli_arguments *args, render_options *o)
         return cli_failf("render", "unknown quantity '%s' (%s)", args->values[0], names), -1;
     if (args->count > 1)
         return cli_failf("render", "unexpected argument '%s'", args->values[1]), -1;
-    if (rq->quantity->settings_size && !(rq->settings = calloc(1, rq->quantity->settings_size)))
+    if (rq->quantity->settings_size && !(rq->settings = reference_settings_new(rq->quantity)))
         return cli_failf("render", "out of memory"), -1;
     if (rq->quantity->set_defaults)
         rq->quantity->set_defaults(rq);

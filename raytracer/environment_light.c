@@ -4,9 +4,10 @@
 #include <stdio.h>
 #include <string.h>
 
-void environment_render_settings_default(environment_render_settings *s)
+void environment_render_settings_default(environment_render_settings *s, reference_quantity q)
 {
     memset(s, 0, sizeof *s);
+    s->header.quantity = q;
     snprintf(s->environment, sizeof s->environment, "white");
     s->intensity = 1.0f;
     s->f0 = -1.0f;

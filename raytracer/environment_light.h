@@ -23,16 +23,20 @@
 
 #include "core/environment_map.h"
 #include "core/environment_sampler.h"
+#include "raytracer/reference_quantity.h"
 
-/* The settings block of env-diffuse and env-specular (rq->settings). */
+/* The settings of env-diffuse and env-specular, one struct for both
+ * (reference_request.settings; the header names the one rendered). */
 typedef struct {
+    reference_settings header;
     char environment[ENVIRONMENT_NAME_MAX]; /* "white", "sky", "sun" or a file */
     float rotate_degrees, intensity;
     float f0; /* env-specular: grey F0 for every surface; < 0: the materials' */
 } environment_render_settings;
 
-/* The defaults: white, no rotation, intensity 1, the materials' F0. */
-void environment_render_settings_default(environment_render_settings *s);
+/* The defaults for quantity q (env-diffuse or env-specular, which the header
+ * names): white, no rotation, intensity 1, the materials' F0. */
+void environment_render_settings_default(environment_render_settings *s, reference_quantity q);
 
 typedef struct {
     environment_map map;

@@ -4,19 +4,25 @@
  * raytracer/environment_specular_integrator.h). */
 #include "raytracer/environment_quantity.h"
 
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "core/number_parse.h"
 #include "core/reference_schema.h"
+#include "core/roughness_setting.h"
 #include "raytracer/environment_diffuse_integrator.h"
 #include "raytracer/environment_specular_integrator.h"
 #include "raytracer/reference_render.h"
 
-static environment_render_settings *settings_of(reference_request *rq)
+_Static_assert(offsetof(environment_render_settings, header) == 0, "the header comes first");
+
+/* rq's settings, made for env-diffuse or env-specular (one struct for both). */
+static environment_render_settings *settings_of(const reference_request *rq)
 {
-    return rq->settings;
+    reference_settings *s = reference_settings_of(rq, &reference_quantity_env_diffuse);
+    return (environment_render_settings *)(s ? s : reference_settings_of(rq, &reference_quantity_env_specular));
 }
 
 int environment_quantity_parse_environment(reference_request *rq, const char *value, gt_error *e)
@@ -81,9 +87,9 @@ static const reference_option f0_option = {
 
 static void set_defaults(reference_request *rq)
 {
-    environment_render_settings_default(settings_of(rq));
+    environment_render_settings_default(settings_of(rq), rq->quantity);
     rq->multibounce.bounces = 4; /* as multibounce */
-    rq->roughness = -1.0f;       /* the material's */
+    rq->roughness = ROUGHNESS_OF_MATERIAL;
 }
 
 /* What prepare allocates: the light, and the plan of either integrator
@@ -98,7 +104,8 @@ typedef struct {
 
 static environment_state *state_with_light(const reference_pass *pass, gt_error *e)
 {
-    if (!pass->req->settings) {
+    const environment_render_settings *s = settings_of(pass->req);
+    if (!s) {
         gt_error_set(e, reference_quantity_name(pass->req->quantity), "no settings");
         return NULL;
     }
@@ -107,7 +114,7 @@ static environment_state *state_with_light(const reference_pass *pass, gt_error 
         gt_error_set(e, pass->scene_spec, "out of memory");
         return NULL;
     }
-    if (environment_light_init(&st->light, pass->req->settings, e) != 0) {
+    if (environment_light_init(&st->light, s, e) != 0) {
         free(st);
         return NULL;
     }
@@ -152,7 +159,7 @@ static int prepare_diffuse(const reference_pass *pass, void **state, integrator 
 
 static int write_diffuse_settings(const reference_request *rq, image *out)
 {
-    const environment_render_settings *s = rq->settings;
+    const environment_render_settings *s = settings_of(rq);
     char albedos[512], bounces[16];
     multibounce_albedos_text(&rq->multibounce, albedos, sizeof albedos);
     multibounce_bounces_text(&rq->multibounce, bounces, sizeof bounces);
@@ -191,7 +198,7 @@ static int prepare_specular(const reference_pass *pass, void **state, integrator
     environment_state *st = state_with_light(pass, e);
     if (!st)
         return -1;
-    const environment_render_settings *s = pass->req->settings;
+    const environment_render_settings *s = settings_of(pass->req);
     if (environment_specular_plan_init(&st->plan.specular, &st->light, pass->req->roughness, s->f0,
                                        pass->gb->view.origin, e) != 0) {
         release(st);
@@ -204,13 +211,10 @@ static int prepare_specular(const reference_pass *pass, void **state, integrator
 
 static int write_specular_settings(const reference_request *rq, image *out)
 {
-    const environment_render_settings *s = rq->settings;
-    char roughness[32] = "material", f0[32] = "material";
+    const environment_render_settings *s = settings_of(rq);
+    char roughness[32], f0[32] = "material";
     int rc = write_environment(s, out);
-    if (rq->roughness >= 0.0f) {
-        snprintf(roughness, sizeof roughness, "%.9g", rq->roughness);
-        rc |= schema_set_real(out, ATTR_ROUGHNESS, rq->roughness);
-    }
+    rc |= reference_write_roughness(out, rq->roughness, roughness, sizeof roughness);
     if (s->f0 >= 0.0f) {
         snprintf(f0, sizeof f0, "%.9g", s->f0);
         rc |= schema_set_real(out, ATTR_F0, s->f0);

@@ -6,6 +6,7 @@
 
 #include "core/ggx.h"
 #include "core/reference_schema.h"
+#include "core/roughness_setting.h"
 #include "scene/material_lookup.h"
 
 enum { OCCLUDED = 0, UNOCCLUDED = 3 };
@@ -46,7 +47,7 @@ static void pixel_material(const integrator *self, const pixel_context *px, doub
 {
     const environment_specular_plan *plan = self->settings;
     material_sample m = material_lookup(self->scene->source, px->surface->mesh, px->surface->uv);
-    *alpha = (float)ggx_alpha_phong_cone(plan->roughness >= 0.0f ? plan->roughness : m.roughness);
+    *alpha = (float)ggx_alpha_phong_cone(roughness_choose(plan->roughness, m.roughness));
     for (int c = 0; c < 3; ++c)
         f0[c] = plan->f0 >= 0.0f ? plan->f0 : 0.04f * (1.0f - m.metallic) + m.base_color[c] * m.metallic;
 }

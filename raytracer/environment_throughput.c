@@ -85,7 +85,7 @@ int environment_throughput_bench(FILE *out, const environment_bench_request *rq,
 {
     multibounce_settings albedo = {.albedo_count = 1, .albedos = {0.5f}, .bounces = rq->bounces};
     environment_render_settings light;
-    environment_render_settings_default(&light);
+    environment_render_settings_default(&light, NULL); /* the light alone, no request */
     snprintf(light.environment, sizeof light.environment, "%s", rq->environment);
     scene s;
     camera cam;

@@ -28,12 +28,14 @@
 #include "core/error.h"
 #include "core/mc_film.h"
 #include "raytracer/fog_path_tracer.h"
+#include "raytracer/reference_quantity.h"
 #include "raytracer/render_loop.h"
 
 typedef enum { FOG_QUADRATURE, FOG_SINGLE, FOG_MULTIPLE } fog_scattering;
 
-/* rq->settings of `gtlab render fog`. */
+/* The settings of `gtlab render fog` (reference_request.settings). */
 typedef struct {
+    reference_settings header; /* names reference_quantity_fog */
     char weather[16];         /* height_fog_weather: "sunny" or "dense" */
     double sun_elevation_deg; /* degrees above the horizon */
     fog_scattering scattering;
@@ -56,6 +58,12 @@ typedef struct {
 int fog_plan_init(fog_plan *plan, const fog_settings *settings, const embree_scene *es, const camera_view *view,
                   gt_error *e);
 integrator fog_integrator(const embree_scene *es, const fog_plan *plan);
+
+/* The quantity (fog_quantity.c), and its defaults: sunny, the sun 25 degrees
+ * up, multiple scattering (at most 1024 scatterings), extinction and
+ * shadows on; the header names the quantity. */
+extern const reference_quantity_descriptor reference_quantity_fog;
+void fog_settings_default(fog_settings *s);
 const char *fog_scattering_name(fog_scattering s);
 /* "quadrature" / "single" / "multiple" -> s; -1 if unknown. */
 int fog_scattering_parse(const char *name, fog_scattering *s);

@@ -1,5 +1,6 @@
 /* `gtlab render fog`: transmittance and in-scattered radiance of the height
  * fog in front of each surface (raytracer/fog_integrator.h). */
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -9,9 +10,11 @@
 #include "raytracer/fog_integrator.h"
 #include "raytracer/reference_render.h"
 
-static fog_settings *settings_of(reference_request *rq)
+_Static_assert(offsetof(fog_settings, header) == 0, "the header comes first");
+
+static fog_settings *settings_of(const reference_request *rq)
 {
-    return rq->settings;
+    return (fog_settings *)reference_settings_of(rq, &reference_quantity_fog);
 }
 
 static int parse_weather(reference_request *rq, const char *value, gt_error *e)
@@ -71,13 +74,15 @@ static const reference_option no_shadows_option = {
     .parse = parse_no_shadows,
 };
 
+void fog_settings_default(fog_settings *s)
+{
+    *s = (fog_settings){.header = {&reference_quantity_fog}, .weather = "sunny", .sun_elevation_deg = 25.0,
+                        .scattering = FOG_MULTIPLE, .max_scatterings = 1024};
+}
+
 static void set_defaults(reference_request *rq)
 {
-    fog_settings *s = settings_of(rq);
-    snprintf(s->weather, sizeof s->weather, "sunny");
-    s->sun_elevation_deg = 25.0;
-    s->scattering = FOG_MULTIPLE;
-    s->max_scatterings = 1024;
+    fog_settings_default(settings_of(rq));
 }
 
 static int prepare(const reference_pass *pass, void **state, integrator *it, gt_error *e)
@@ -85,9 +90,10 @@ static int prepare(const reference_pass *pass, void **state, integrator *it, gt_
     fog_plan *plan = malloc(sizeof *plan);
     if (!plan)
         return gt_error_set(e, pass->scene_spec, "out of memory");
-    if (!pass->req->settings || fog_plan_init(plan, pass->req->settings, pass->es, &pass->gb->view, e) != 0) {
+    const fog_settings *s = settings_of(pass->req);
+    if (!s || fog_plan_init(plan, s, pass->es, &pass->gb->view, e) != 0) {
         free(plan);
-        return pass->req->settings ? -1 : gt_error_set(e, "fog", "no settings");
+        return s ? -1 : gt_error_set(e, "fog", "no settings");
     }
     *state = plan;
     *it = fog_integrator(pass->es, plan);
@@ -96,7 +102,7 @@ static int prepare(const reference_pass *pass, void **state, integrator *it, gt_
 
 static int write_settings(const reference_request *rq, image *out)
 {
-    const fog_settings *s = rq->settings;
+    const fog_settings *s = settings_of(rq);
     return reference_set_attributef(out, ATTR_SETTINGS,
                                     "weather=%s sun_elevation_deg=%.9g scattering=%s sun_extinction=%s shadows=%s "
                                     "max_scatterings=%d target_stderr=%.9g",

@@ -1,8 +1,10 @@
 /* The quantities' command-line options, gathered from the registry, and
- * their application to a request (reference_quantity.h). */
+ * their application to a request; the quantities' settings
+ * (reference_quantity.h). */
 #include "raytracer/reference_quantity.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "raytracer/reference_render.h"
 
@@ -110,4 +112,17 @@ int reference_options_apply(reference_request *rq, const char *const *values, co
             return -1;
     }
     return 0;
+}
+
+reference_settings *reference_settings_new(reference_quantity q)
+{
+    reference_settings *s = q->settings_size ? calloc(1, q->settings_size) : NULL;
+    if (s)
+        s->quantity = q;
+    return s;
+}
+
+reference_settings *reference_settings_of(const reference_request *rq, reference_quantity q)
+{
+    return rq->settings && rq->settings->quantity == q ? rq->settings : NULL;
 }

@@ -25,6 +25,18 @@
 #include "scene/scene.h"
 
 struct reference_request; /* raytracer/reference_render.h */
+struct reference_quantity_descriptor;
+
+/* The head of every quantity's own settings struct, as its first member
+ * (`typedef struct { reference_settings header; float thickness; }
+ * heightfield_ao_options;`): it names the quantity the settings are for. A
+ * request carries them as a reference_settings pointer and a quantity
+ * reaches its own through reference_settings_of, which refuses another
+ * quantity's: settings given to the wrong quantity are "no settings", never
+ * memory read as the wrong struct. */
+typedef struct reference_settings {
+    const struct reference_quantity_descriptor *quantity;
+} reference_settings;
 
 /* One command-line option of one or more quantities ("--max-distance D").
  * An option object may be listed by several quantities (ao and heightfield-ao
@@ -37,7 +49,7 @@ typedef struct reference_option {
     const char *hint;     /* with `required`: what to give, appended to the "needs" error, or NULL */
     const char *help;     /* after "<quantities>: ", lines separated by '\n' */
     /* Parses the value (NULL for a flag) into the request (its fields, or the
-     * quantity's settings block rq->settings). Errors name "--<name>". */
+     * quantity's settings, reference_settings_of). Errors name "--<name>". */
     int (*parse)(struct reference_request *rq, const char *value, gt_error *e);
 } reference_option;
 
@@ -55,9 +67,10 @@ typedef struct reference_quantity_descriptor {
     const char *name; /* the QUANTITY argument and the header's gtlab.quantity */
     const char *help; /* the channels it writes, for --help; lines separated by '\n' */
     const reference_option *const *options; /* its own options, NULL-terminated; NULL: none */
-    /* The settings block a quantity keeps outside reference_request: `gtlab
-     * render` allocates settings_size zeroed bytes as rq->settings before
-     * set_defaults and the options run (0: none, the settings live in
+    /* The size of the quantity's own settings struct (which begins with its
+     * reference_settings header): `gtlab render` allocates it zeroed, its
+     * header naming the quantity (reference_settings_new), as rq->settings
+     * before set_defaults and the options run (0: none, the settings live in
      * reference_request's own fields). */
     size_t settings_size;
     /* The defaults of its settings before the options apply; NULL: zeros. */
@@ -108,11 +121,25 @@ void reference_option_owners(const reference_option *option, const char *last_jo
 int reference_options_apply(struct reference_request *rq, const char *const *values, const char *subject,
                             gt_error *e);
 
+/* ---- Settings ------------------------------------------------------------ */
+/* q->settings_size zeroed bytes (free() them) whose header names q; NULL when
+ * q keeps no settings of its own or out of memory. */
+reference_settings *reference_settings_new(reference_quantity q);
+/* rq's settings when their header names q, else NULL (none given, or another
+ * quantity's). A quantity casts the result to its own struct, whose first
+ * member the header is. */
+reference_settings *reference_settings_of(const struct reference_request *rq, reference_quantity q);
+
 /* ---- Helpers for the descriptors --------------------------------------- */
 /* Appends item i of n to the list in text: "a", ", b", ..., "<last_joint>z"
  * (last_joint " and " or " or "). */
 void reference_append_listed(char *text, size_t size, int i, int n, const char *last_joint, const char *item);
 /* image_set_attribute with printf formatting (at most 1023 characters). */
 int reference_set_attributef(image *img, const char *key, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+/* A roughness setting (core/roughness_setting.h) in the header: gtlab.roughness
+ * when it is one roughness for every surface (absent: the materials'), and
+ * its text for gtlab.settings ("material" or the number) into text. Returns
+ * 0, or -1 when out of memory. */
+int reference_write_roughness(image *out, float roughness, char *text, size_t size);
 
 #endif

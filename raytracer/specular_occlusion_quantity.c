@@ -6,6 +6,7 @@
 
 #include "core/number_parse.h"
 #include "core/reference_schema.h"
+#include "core/roughness_setting.h"
 #include "raytracer/environment_quantity.h"
 #include "raytracer/reference_render.h"
 #include "raytracer/specular_occlusion_integrator.h"
@@ -50,7 +51,7 @@ const reference_option reference_option_roughness = {
 
 static void set_defaults(reference_request *rq)
 {
-    rq->roughness = -1.0f; /* the material's */
+    rq->roughness = ROUGHNESS_OF_MATERIAL;
 }
 
 static int prepare(const reference_pass *pass, void **state, integrator *it, gt_error *e)
@@ -67,12 +68,8 @@ static int prepare(const reference_pass *pass, void **state, integrator *it, gt_
 /* gtlab.roughness (when fixed) and gtlab.settings. */
 static int write_settings(const reference_request *rq, image *out)
 {
-    char roughness[32] = "material";
-    int rc = 0;
-    if (rq->roughness >= 0.0f) {
-        snprintf(roughness, sizeof roughness, "%.9g", rq->roughness);
-        rc |= schema_set_real(out, ATTR_ROUGHNESS, rq->roughness);
-    }
+    char roughness[32];
+    int rc = reference_write_roughness(out, rq->roughness, roughness, sizeof roughness);
     rc |= reference_set_attributef(out, ATTR_SETTINGS, "roughness=%s environment=%s target_stderr=%.9g", roughness,
                                    environment_name(rq->environment), rq->sampling.target_stderr);
     return rc;

@@ -2,12 +2,28 @@
  * spherical light over the glTF materials
  * (raytracer/sphere_light_integrator.h). */
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 
 #include "core/number_parse.h"
 #include "core/reference_schema.h"
-#include "raytracer/reference_render.h"
+#include "raytracer/sphere_light_quantity.h"
+
+_Static_assert(offsetof(sphere_light_quantity_settings, header) == 0, "the header comes first");
+
+sphere_light_quantity_settings sphere_light_quantity_settings_of(sphere_light_settings light)
+{
+    return (sphere_light_quantity_settings){{QUANTITY_SPHERE_LIGHT}, light};
+}
+
+/* The light of rq's settings (the options' and set_defaults' rq has them). */
+static sphere_light_settings *light_of(const reference_request *rq)
+{
+    sphere_light_quantity_settings *s =
+        (sphere_light_quantity_settings *)reference_settings_of(rq, QUANTITY_SPHERE_LIGHT);
+    return s ? &s->light : NULL;
+}
 
 /* "X,Y,Z": three finite numbers. */
 static int parse_position(reference_request *rq, const char *value, gt_error *e)
@@ -17,7 +33,7 @@ static int parse_position(reference_request *rq, const char *value, gt_error *e)
     if (sscanf(value, "%lf,%lf,%lf%c", &v[0], &v[1], &v[2], &extra) != 3 || !isfinite(v[0]) || !isfinite(v[1]) ||
         !isfinite(v[2]))
         return gt_error_set(e, "--light-position", "'%s' is not three numbers X,Y,Z", value);
-    rq->sphere_light.position = v3((float)v[0], (float)v[1], (float)v[2]);
+    light_of(rq)->position = v3((float)v[0], (float)v[1], (float)v[2]);
     return 0;
 }
 
@@ -26,7 +42,7 @@ static int parse_radius(reference_request *rq, const char *value, gt_error *e)
     double radius;
     if (parse_real_in("--light-radius", value, 1e-30, 1e30, &radius, e) != 0)
         return -1;
-    rq->sphere_light.radius = (float)radius;
+    light_of(rq)->radius = (float)radius;
     return 0;
 }
 
@@ -35,14 +51,14 @@ static int parse_radiance(reference_request *rq, const char *value, gt_error *e)
     double radiance;
     if (parse_real_in("--light-radiance", value, 1e-30, 1e30, &radiance, e) != 0)
         return -1;
-    rq->sphere_light.radiance = (float)radiance;
+    light_of(rq)->radiance = (float)radiance;
     return 0;
 }
 
 static int parse_shadows(reference_request *rq, const char *value, gt_error *e)
 {
     (void)value, (void)e;
-    rq->sphere_light.shadows = 1;
+    light_of(rq)->shadows = 1;
     return 0;
 }
 
@@ -77,15 +93,18 @@ static const reference_option target_rel_option = {
 
 static void set_defaults(reference_request *rq)
 {
-    rq->sphere_light.radiance = 1.0f;
+    light_of(rq)->radiance = 1.0f;
 }
 
 static int prepare(const reference_pass *pass, void **state, integrator *it, gt_error *e)
 {
+    const sphere_light_settings *light = light_of(pass->req);
+    if (!light)
+        return gt_error_set(e, "sphere-light", "no settings");
     sphere_light_plan *plan = malloc(sizeof *plan);
     if (!plan)
         return gt_error_set(e, pass->scene_spec, "out of memory");
-    if (sphere_light_plan_init(plan, &pass->req->sphere_light, pass->scene, pass->cam->position, e) != 0) {
+    if (sphere_light_plan_init(plan, light, pass->scene, pass->cam->position, e) != 0) {
         free(plan);
         return -1;
     }
@@ -97,7 +116,7 @@ static int prepare(const reference_pass *pass, void **state, integrator *it, gt_
 static int write_settings(const reference_request *rq, image *out)
 {
     char light[512];
-    sphere_light_settings_text(&rq->sphere_light, light, sizeof light);
+    sphere_light_settings_text(light_of(rq), light, sizeof light);
     return reference_set_attributef(out, ATTR_SETTINGS, "%s target_stderr=%.9g target_rel_stderr=%.9g", light,
                                     rq->sampling.target_stderr, rq->sampling.target_rel_stderr);
 }
@@ -110,6 +129,7 @@ const reference_quantity_descriptor reference_quantity_sphere_light = {
             "like the real-time approximations unless --shadows",
     .options = (const reference_option *const[]){&position_option, &radius_option, &radiance_option, &shadows_option,
                                                  &target_rel_option, NULL},
+    .settings_size = sizeof(sphere_light_quantity_settings),
     .set_defaults = set_defaults,
     .prepare = prepare,
     .release = free,

@@ -26,13 +26,17 @@
 
 #include "core/error.h"
 #include "core/mc_film.h"
+#include "raytracer/reference_quantity.h"
 #include "raytracer/render_loop.h"
 #include "raytracer/volumetric_light_integral.h"
 
 typedef enum { VLIGHT_QUADRATURE = 0, VLIGHT_MONTE_CARLO } volumetric_light_method;
 
-/* rq->settings of `gtlab render volumetric-light`. */
+/* The settings of `gtlab render volumetric-light` (reference_request.settings;
+ * their header names reference_quantity_volumetric_light, the quantity of
+ * volumetric_light_quantity.c). */
 typedef struct {
+    reference_settings header;
     volumetric_light_kind kind;
     volumetric_light_method method;
     int has_placement;      /* 1: position and target below; 0: from the scene's bounds */
@@ -45,8 +49,11 @@ typedef struct {
 } volumetric_light_settings;
 
 /* The defaults: spot of half-angles 30 and 20 degrees, albedo 0.8, g 0.3,
- * placement, intensity and extinction from the bounds, rel_tol 1e-5. */
+ * placement, intensity and extinction from the bounds, rel_tol 1e-5; the
+ * header names no quantity (a render sets it). */
 void volumetric_light_settings_default(volumetric_light_settings *s);
+
+extern const reference_quantity_descriptor reference_quantity_volumetric_light;
 
 enum { VLIGHT_QUANTITIES = 6 };
 

@@ -1,6 +1,7 @@
 /* `gtlab render volumetric-light`: single-scattered radiance of a shadowed
  * spot or point light in a homogeneous medium
  * (raytracer/volumetric_light_integrator.h). */
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,9 +11,11 @@
 #include "raytracer/reference_render.h"
 #include "raytracer/volumetric_light_integrator.h"
 
-static volumetric_light_settings *settings_of(reference_request *rq)
+_Static_assert(offsetof(volumetric_light_settings, header) == 0, "the header comes first");
+
+static volumetric_light_settings *settings_of(const reference_request *rq)
 {
-    return rq->settings;
+    return (volumetric_light_settings *)reference_settings_of(rq, &reference_quantity_volumetric_light);
 }
 
 static int parse_light(reference_request *rq, const char *value, gt_error *e)
@@ -71,19 +74,22 @@ static const reference_option no_shadows_option = {
 
 static void set_defaults(reference_request *rq)
 {
-    volumetric_light_settings_default(settings_of(rq));
+    volumetric_light_settings *s = settings_of(rq);
+    volumetric_light_settings_default(s);
+    s->header.quantity = &reference_quantity_volumetric_light;
 }
 
 static int prepare(const reference_pass *pass, void **state, integrator *it, gt_error *e)
 {
-    if (!pass->req->settings)
+    const volumetric_light_settings *s = settings_of(pass->req);
+    if (!s)
         return gt_error_set(e, "volumetric-light", "no settings");
     volumetric_light_plan *plan = malloc(sizeof *plan);
     if (!plan)
         return gt_error_set(e, pass->scene_spec, "out of memory");
     vec3 lo, hi;
     scene_bounds(pass->scene, &lo, &hi);
-    if (volumetric_light_plan_init(plan, pass->req->settings, pass->es, lo, hi, pass->gb->view.origin, e) != 0) {
+    if (volumetric_light_plan_init(plan, s, pass->es, lo, hi, pass->gb->view.origin, e) != 0) {
         free(plan);
         return -1;
     }
@@ -94,7 +100,7 @@ static int prepare(const reference_pass *pass, void **state, integrator *it, gt_
 
 static int write_settings(const reference_request *rq, image *out)
 {
-    const volumetric_light_settings *s = rq->settings;
+    const volumetric_light_settings *s = settings_of(rq);
     return reference_set_attributef(
         out, ATTR_SETTINGS,
         "light=%s method=%s placement=%s outer_deg=%.9g inner_deg=%.9g intensity=%.9g sigma_t=%.9g albedo=%.9g "

@@ -3,7 +3,7 @@
 
 #include <string.h>
 
-#include "raytracer/reference_render.h"
+#include "raytracer/sphere_light_quantity.h"
 #include "scene/scene_loaders.h"
 
 int hdr_test_image_sphere_light(const study_context *ctx, int width, int height, int spp, unsigned seed, image *out,
@@ -19,7 +19,9 @@ int hdr_test_image_sphere_light(const study_context *ctx, int width, int height,
     req.quantity = QUANTITY_SPHERE_LIGHT;
     req.sampling = (sampling_settings){.spp = spp, .seed = seed, .threads = ctx->threads};
     req.normals = NORMAL_SHADING;
-    req.sphere_light = (sphere_light_settings){v3(-2.5f, 4.0f, 1.5f), 0.5f, 5.0f, 0};
+    sphere_light_quantity_settings light =
+        sphere_light_quantity_settings_of((sphere_light_settings){v3(-2.5f, 4.0f, 1.5f), 0.5f, 5.0f, 0});
+    req.settings = &light.header;
     render_stats stats;
     int rc = reference_render(&s, "builtin:sphere-on-plane", &cam, &req, out, &stats, e);
     scene_free(&s);

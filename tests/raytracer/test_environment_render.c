@@ -22,6 +22,7 @@
 #include "core/reference_schema.h"
 #include "raytracer/environment_diffuse_integrator.h"
 #include "raytracer/environment_light.h"
+#include "raytracer/environment_quantity.h"
 #include "raytracer/reference_merge.h"
 #include "raytracer/reference_render.h"
 #include "scene/scene_loaders.h"
@@ -44,16 +45,18 @@ static int render_request(const scene *s, const camera *cam, reference_request *
     return reference_render(s, s->name, cam, req, out, &stats, e);
 }
 
-static image render(const scene *s, const camera *cam, const char *quantity, environment_render_settings *env,
+static image render(const scene *s, const camera *cam, reference_quantity quantity, environment_render_settings *env,
                     multibounce_settings mb, float roughness, sampling sm)
 {
-    reference_request req = {.quantity = reference_quantity_find(quantity),
+    if (env)
+        env->header.quantity = quantity;
+    reference_request req = {.quantity = quantity,
                              .sampling = {sm.spp, sm.offset, 17, 0.0, sm.threads},
                              .normals = NORMAL_SHADING,
                              .max_distance = INFINITY,
                              .multibounce = mb,
                              .roughness = roughness,
-                             .settings = env};
+                             .settings = env ? &env->header : NULL};
     image img;
     gt_error e;
     if (render_request(s, cam, &req, &img, &e) != 0) {
@@ -99,7 +102,7 @@ static multibounce_settings albedo_of(int scene_albedo, float grey, int bounces)
 static environment_render_settings named(const char *name)
 {
     environment_render_settings s;
-    environment_render_settings_default(&s);
+    environment_render_settings_default(&s, NULL); /* render() names the quantity */
     snprintf(s.environment, sizeof s.environment, "%s", name);
     return s;
 }
@@ -111,8 +114,8 @@ static void test_white_dome_is_multibounce(void)
     load("builtin:cornell", 20, &s, &cam);
     environment_render_settings white = named("white");
     const sampling sm = {64, 0, 2};
-    image env = render(&s, &cam, "env-diffuse", &white, albedo_of(1, 0, 4), -1, sm);
-    image mb = render(&s, &cam, "multibounce", NULL, albedo_of(1, 0, 4), -1, sm);
+    image env = render(&s, &cam, &reference_quantity_env_diffuse, &white, albedo_of(1, 0, 4), -1, sm);
+    image mb = render(&s, &cam, QUANTITY_MULTIBOUNCE, NULL, albedo_of(1, 0, 4), -1, sm);
     static const char *const colours[3] = CH_MULTIBOUNCE_RGB;
     for (int c = 0; c < 3; ++c) {
         CHECK_MSG(identical_with_stderr(&env, diffuse[c], &mb, colours[c]), "%s vs %s", diffuse[c], colours[c]);
@@ -122,8 +125,8 @@ static void test_white_dome_is_multibounce(void)
     scene_free(&s);
 
     load("builtin:boxes", 20, &s, &cam);
-    env = render(&s, &cam, "env-diffuse", &white, albedo_of(0, 0.3f, MULTIBOUNCE_UNLIMITED), -1, sm);
-    mb = render(&s, &cam, "multibounce", NULL, albedo_of(0, 0.3f, MULTIBOUNCE_UNLIMITED), -1, sm);
+    env = render(&s, &cam, &reference_quantity_env_diffuse, &white, albedo_of(0, 0.3f, MULTIBOUNCE_UNLIMITED), -1, sm);
+    mb = render(&s, &cam, QUANTITY_MULTIBOUNCE, NULL, albedo_of(0, 0.3f, MULTIBOUNCE_UNLIMITED), -1, sm);
     for (int c = 0; c < 3; ++c)
         CHECK_MSG(identical_with_stderr(&env, diffuse[c], &mb, CH_MULTIBOUNCE), "grey %s", diffuse[c]);
     const float *open = image_channel_data(&env, unoccluded[1]), *mask = image_channel_data(&env, CH_MASK);
@@ -224,7 +227,7 @@ static void test_specular_white_dome(void)
     environment_render_settings white = named("white");
     white.f0 = 1.0f;
     const sampling sm = {64, 0, 2};
-    image env = render(&s, &cam, "env-specular", &white, albedo_of(1, 0, 0), 0.4f, sm);
+    image env = render(&s, &cam, &reference_quantity_env_specular, &white, albedo_of(1, 0, 0), 0.4f, sm);
     reference_request req = {.quantity = QUANTITY_SPECULAR_OCCLUSION,
                              .sampling = {64, 0, 17, 0.0, 2},
                              .normals = NORMAL_SHADING,
@@ -265,11 +268,11 @@ static void test_determinism_and_merge(void)
     environment_render_settings sky = named("sky");
     sky.rotate_degrees = 40.0f;
     const multibounce_settings mb = albedo_of(0, 0.5f, 2);
-    image one = render(&s, &cam, "env-diffuse", &sky, mb, -1, (sampling){64, 0, 1});
-    image two = render(&s, &cam, "env-diffuse", &sky, mb, -1, (sampling){64, 0, 2});
+    image one = render(&s, &cam, &reference_quantity_env_diffuse, &sky, mb, -1, (sampling){64, 0, 1});
+    image two = render(&s, &cam, &reference_quantity_env_diffuse, &sky, mb, -1, (sampling){64, 0, 2});
     CHECK_MSG(all_identical(&one, &two), "1 and 2 threads differ");
-    image halves[2] = {render(&s, &cam, "env-diffuse", &sky, mb, -1, (sampling){32, 0, 2}),
-                       render(&s, &cam, "env-diffuse", &sky, mb, -1, (sampling){32, 32, 2})};
+    image halves[2] = {render(&s, &cam, &reference_quantity_env_diffuse, &sky, mb, -1, (sampling){32, 0, 2}),
+                       render(&s, &cam, &reference_quantity_env_diffuse, &sky, mb, -1, (sampling){32, 32, 2})};
     const char *names[2] = {"first half", "second half"};
     image merged;
     gt_error e;
@@ -281,8 +284,8 @@ static void test_determinism_and_merge(void)
     CHECK(strcmp(image_get_attribute(&merged, ATTR_ENVIRONMENT), "sky") == 0);
     image_free(&merged);
     environment_render_settings specular = named("sky");
-    image s1 = render(&s, &cam, "env-specular", &specular, mb, 0.3f, (sampling){32, 0, 1});
-    image s2 = render(&s, &cam, "env-specular", &specular, mb, 0.3f, (sampling){32, 0, 2});
+    image s1 = render(&s, &cam, &reference_quantity_env_specular, &specular, mb, 0.3f, (sampling){32, 0, 1});
+    image s2 = render(&s, &cam, &reference_quantity_env_specular, &specular, mb, 0.3f, (sampling){32, 0, 2});
     CHECK_MSG(all_identical(&s1, &s2), "env-specular: 1 and 2 threads differ");
     image_free(&s1), image_free(&s2);
     image_free(&halves[0]), image_free(&halves[1]), image_free(&one), image_free(&two);
@@ -295,12 +298,13 @@ static void test_bad_file(void)
     camera cam;
     load("builtin:corner", 8, &s, &cam);
     environment_render_settings bad = named("/nonexistent/sky.exr");
-    reference_request req = {.quantity = reference_quantity_find("env-diffuse"),
+    bad.header.quantity = &reference_quantity_env_diffuse;
+    reference_request req = {.quantity = &reference_quantity_env_diffuse,
                              .sampling = {4, 0, 1, 0.0, 1},
                              .normals = NORMAL_SHADING,
                              .max_distance = INFINITY,
                              .multibounce = albedo_of(0, 0.5f, 1),
-                             .settings = &bad};
+                             .settings = &bad.header};
     image out;
     gt_error e;
     CHECK(render_request(&s, &cam, &req, &out, &e) != 0);

@@ -20,15 +20,16 @@
 
 static int render(const scene *s, const camera *cam, fog_scattering mode, int threads, int spp, image *out)
 {
-    fog_settings fs = {.sun_elevation_deg = 20.0, .scattering = mode, .max_scatterings = 1024};
+    fog_settings fs = {.header = {&reference_quantity_fog}, .sun_elevation_deg = 20.0, .scattering = mode,
+                       .max_scatterings = 1024};
     snprintf(fs.weather, sizeof fs.weather, "dense");
     reference_request req;
     memset(&req, 0, sizeof req);
-    req.quantity = reference_quantity_find("fog");
+    req.quantity = &reference_quantity_fog;
     req.sampling.spp = spp;
     req.sampling.seed = 3;
     req.sampling.threads = threads;
-    req.settings = &fs;
+    req.settings = &fs.header;
     render_stats stats;
     gt_error e;
     if (reference_render(s, "builtin:boxes", cam, &req, out, &stats, &e) != 0) {

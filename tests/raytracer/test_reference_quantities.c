@@ -3,11 +3,13 @@
  * to exactly the quantities that list it (and is refused by the others with
  * the message `gtlab render` prints), and the options parse into the
  * request. */
+#include <stdlib.h>
 #include <string.h>
 
 #include "tests/check.h"
 #include "raytracer/heightfield_ao_integrator.h"
 #include "raytracer/reference_render.h"
+#include "raytracer/sphere_light_quantity.h"
 
 enum { MAX_OPTIONS = 64 };
 
@@ -37,12 +39,12 @@ static int option_index(const reference_option *option)
 static int apply(reference_request *rq, reference_quantity q, gt_error *e, const char *const *pairs)
 {
     const char *values[MAX_OPTIONS] = {0};
-    static _Alignas(16) unsigned char settings[4096]; /* as verb_render's calloc of settings_size */
+    static reference_settings *settings; /* the last request's, as verb_render's */
+    free(settings);
     memset(rq, 0, sizeof *rq);
-    memset(settings, 0, sizeof settings);
     rq->quantity = q;
-    CHECK_MSG(q->settings_size <= sizeof settings, "%s", q->name);
-    rq->settings = q->settings_size ? settings : NULL;
+    rq->settings = settings = reference_settings_new(q);
+    CHECK_MSG(!q->settings_size || settings, "%s", q->name);
     if (q->set_defaults)
         q->set_defaults(rq);
     for (; pairs[0]; pairs += 2) {
@@ -154,13 +156,20 @@ static void test_apply(void)
     CHECK(rq.multibounce.scene_albedo && rq.multibounce.bounces == MULTIBOUNCE_UNLIMITED);
     CHECK(apply(&rq, QUANTITY_SPHERE_LIGHT, &e,
                 (const char *[]){"light-position", "1,2,3", "light-radius", "0.5", "shadows", "", NULL}) == 0);
-    CHECK(rq.sphere_light.position.y == 2.0f && rq.sphere_light.radius == 0.5f);
-    CHECK(rq.sphere_light.radiance == 1.0f && rq.sphere_light.shadows == 1);
+    const sphere_light_settings *light =
+        &((const sphere_light_quantity_settings *)reference_settings_of(&rq, QUANTITY_SPHERE_LIGHT))->light;
+    CHECK(light->position.y == 2.0f && light->radius == 0.5f);
+    CHECK(light->radiance == 1.0f && light->shadows == 1);
     CHECK(apply(&rq, QUANTITY_AO, &e, (const char *[]){NULL}) == 0 && isinf(rq.max_distance));
     CHECK(apply(&rq, QUANTITY_HEIGHTFIELD_AO, &e, (const char *[]){"max-distance", "2.5", NULL}) == 0);
-    CHECK(rq.max_distance == 2.5f && isinf(((const heightfield_ao_options *)rq.settings)->thickness));
+    const heightfield_ao_options *hf =
+        (const heightfield_ao_options *)reference_settings_of(&rq, QUANTITY_HEIGHTFIELD_AO);
+    CHECK(rq.max_distance == 2.5f && hf && isinf(hf->thickness));
     CHECK(apply(&rq, QUANTITY_HEIGHTFIELD_AO, &e, (const char *[]){"thickness", "0.25", NULL}) == 0);
-    CHECK(((const heightfield_ao_options *)rq.settings)->thickness == 0.25f);
+    hf = (const heightfield_ao_options *)reference_settings_of(&rq, QUANTITY_HEIGHTFIELD_AO);
+    CHECK(hf && hf->thickness == 0.25f);
+    /* Settings made for another quantity are not reached as its own. */
+    CHECK(reference_settings_of(&rq, QUANTITY_SPHERE_LIGHT) == NULL);
     CHECK(apply(&rq, QUANTITY_SPECULAR_OCCLUSION, &e, (const char *[]){"environment", "sky", NULL}) == 0);
     CHECK(rq.environment == ENVIRONMENT_SKY && rq.roughness < 0.0f);
 }

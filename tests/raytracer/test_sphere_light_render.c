@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "core/frame.h"
-#include "raytracer/reference_render.h"
+#include "raytracer/sphere_light_quantity.h"
 #include "raytracer/sphere_light_reference.h"
 #include "scene/builtin_scenes.h"
 #include "tests/check.h"
@@ -23,9 +23,9 @@ static int render(const scene *s, const camera *cam, int threads, image *out)
     req.sampling.seed = 7;
     req.sampling.threads = threads;
     req.normals = NORMAL_SHADING;
-    req.sphere_light.position = v3(0.0f, 1.5f, -6.0f);
-    req.sphere_light.radius = 0.8f;
-    req.sphere_light.radiance = 3.0f;
+    sphere_light_quantity_settings light =
+        sphere_light_quantity_settings_of((sphere_light_settings){v3(0.0f, 1.5f, -6.0f), 0.8f, 3.0f, 0});
+    req.settings = &light.header;
     render_stats stats;
     gt_error e;
     if (reference_render(s, "builtin:plane", cam, &req, out, &stats, &e) != 0) {

@@ -12,7 +12,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "raytracer/reference_render.h"
+#include "raytracer/sphere_light_quantity.h"
 #include "scene/builtin_scenes.h"
 #include "tests/check.h"
 
@@ -32,7 +32,9 @@ static int render(const char *name, const camera *cam, int shadows, int threads,
     req.quantity = QUANTITY_SPHERE_LIGHT;
     req.sampling = (sampling_settings){.spp = 64, .seed = 3, .threads = threads};
     req.normals = NORMAL_SHADING;
-    req.sphere_light = (sphere_light_settings){light_position, light_radius, 2.0f, shadows};
+    sphere_light_quantity_settings light =
+        sphere_light_quantity_settings_of((sphere_light_settings){light_position, light_radius, 2.0f, shadows});
+    req.settings = &light.header;
     render_stats stats;
     char spec[64];
     snprintf(spec, sizeof spec, "builtin:%s", name);

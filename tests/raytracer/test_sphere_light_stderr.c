@@ -24,7 +24,7 @@
 #include "core/mc_film.h"
 #include "core/reference_schema.h"
 #include "raytracer/reference_merge.h"
-#include "raytracer/reference_render.h"
+#include "raytracer/sphere_light_quantity.h"
 #include "scene/scene_loaders.h"
 #include "tests/check.h"
 
@@ -48,9 +48,9 @@ static image render(render_setup r)
                                        .target_stderr = r.target, .threads = r.threads,
                                        .target_rel_stderr = r.target_rel};
     req.normals = NORMAL_SHADING;
-    req.sphere_light.position = v3(0.3f, 0.6f, 0.2f);
-    req.sphere_light.radius = 0.5f;
-    req.sphere_light.radiance = 1.0f;
+    sphere_light_quantity_settings light =
+        sphere_light_quantity_settings_of((sphere_light_settings){v3(0.3f, 0.6f, 0.2f), 0.5f, 1.0f, 0});
+    req.settings = &light.header;
     render_stats stats;
     if (scene_choose_camera(&test_scene, NULL, r.size, r.size, &cam, &e) != 0 ||
         reference_render(&test_scene, "builtin:plane", &cam, &req, &img, &stats, &e) != 0) {
