@@ -15,6 +15,7 @@
 #include "raytracer/environment_diffuse_integrator.h"
 #include "raytracer/environment_specular_integrator.h"
 #include "raytracer/reference_render.h"
+#include "raytracer/shared_options.h"
 
 _Static_assert(offsetof(environment_render_settings, header) == 0, "the header comes first");
 
@@ -25,7 +26,8 @@ static environment_render_settings *settings_of(const reference_request *rq)
     return (environment_render_settings *)(s ? s : reference_settings_of(rq, &reference_quantity_env_specular));
 }
 
-int environment_quantity_parse_environment(reference_request *rq, const char *value, gt_error *e)
+/* --environment NAME|FILE: stored in the settings; the file is read by prepare. */
+static int parse_environment(reference_request *rq, const char *value, gt_error *e)
 {
     environment_render_settings *s = settings_of(rq);
     if (value[0] == '\0' || strlen(value) >= sizeof s->environment)
@@ -60,6 +62,16 @@ static int parse_f0(reference_request *rq, const char *value, gt_error *e)
     settings_of(rq)->f0 = (float)f0;
     return 0;
 }
+
+/* Shares its name with specular-occlusion's --environment (white or sky),
+ * whose help comes first in `gtlab render --help`. */
+static const reference_option environment_option = {
+    .name = "environment",
+    .value = "E",
+    .help = "env-*: white (default), sky, sun or an equirectangular image file\n"
+            "(EXR, .hdr, ...: docs/decisions.md, \"Environment lighting\")",
+    .parse = parse_environment,
+};
 
 static const reference_option rotate_option = {
     .name = "env-rotate",
@@ -182,7 +194,7 @@ const reference_quantity_descriptor reference_quantity_env_diffuse = {
             "inter-reflections, env_diffuse_direct.R/G/B (direct light only) and\n"
             "env_diffuse_unoccluded.R/G/B (visibility off), from the same samples;\n"
             "the header holds gtlab.environment, gtlab.albedos and gtlab.bounces",
-    .options = (const reference_option *const[]){&reference_option_environment, &rotate_option, &intensity_option,
+    .options = (const reference_option *const[]){&environment_option, &rotate_option, &intensity_option,
                                                  &reference_option_albedo, &reference_option_bounces, NULL},
     .settings_size = sizeof(environment_render_settings),
     .set_defaults = set_defaults,
@@ -233,7 +245,7 @@ const reference_quantity_descriptor reference_quantity_env_specular = {
             "(Schlick Fresnel, the material's roughness and F0 or --roughness,\n"
             "--f0): env_specular.R/G/B with visibility and\n"
             "env_specular_unoccluded.R/G/B without, from the same samples",
-    .options = (const reference_option *const[]){&reference_option_environment, &rotate_option, &intensity_option,
+    .options = (const reference_option *const[]){&environment_option, &rotate_option, &intensity_option,
                                                  &reference_option_roughness, &f0_option, NULL},
     .settings_size = sizeof(environment_render_settings),
     .set_defaults = set_defaults,

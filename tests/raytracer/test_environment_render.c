@@ -276,7 +276,9 @@ static void test_determinism_and_merge(void)
     const char *names[2] = {"first half", "second half"};
     image merged;
     gt_error e;
-    CHECK_MSG(reference_merge(halves, names, 2, &merged, &e) == 0, "%s", e.message);
+    CHECK_MSG(reference_merge(&REFERENCE_REGISTRY_OF(&reference_quantity_env_diffuse), halves, names, 2, &merged,
+                              &e) == 0,
+              "%s", e.message);
     for (int c = 0; c < 3; ++c) {
         CHECK_MSG(identical_with_stderr(&one, diffuse[c], &merged, diffuse[c]), "merged %s", diffuse[c]);
         CHECK_MSG(identical_with_stderr(&one, unoccluded[c], &merged, unoccluded[c]), "merged %s", unoccluded[c]);

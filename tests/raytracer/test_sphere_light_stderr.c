@@ -237,14 +237,15 @@ static void test_merge_and_threads(void)
     const char *names[3] = {"samples 32..95", "samples 16..31", "samples 0..15"};
     image merged, reread[3], merged_files;
     gt_error e;
-    CHECK_MSG(reference_merge(parts, names, 3, &merged, &e) == 0, "%s", e.message);
+    const reference_registry *quantities = &REFERENCE_REGISTRY_OF(QUANTITY_SPHERE_LIGHT);
+    CHECK_MSG(reference_merge(quantities, parts, names, 3, &merged, &e) == 0, "%s", e.message);
     CHECK_MSG(identical(&whole, &merged), "merged blocks differ from the whole render");
     for (int k = 0; k < 3; ++k) {
         char path[512];
         snprintf(path, sizeof path, "%s/sphere_stderr_part%d.exr", check_tmp_dir(), k);
         CHECK(exr_write(path, &parts[2 - k], &e) == 0 && exr_read(path, &reread[k], &e) == 0);
     }
-    CHECK_MSG(reference_merge(reread, names, 3, &merged_files, &e) == 0, "%s", e.message);
+    CHECK_MSG(reference_merge(quantities, reread, names, 3, &merged_files, &e) == 0, "%s", e.message);
     CHECK_MSG(identical(&whole, &merged_files), "blocks merged through files differ from the whole render");
     for (int k = 0; k < 3; ++k) {
         image_free(&parts[k]);
