@@ -10,7 +10,7 @@
 #include "core/progress.h"
 #include "core/reference_schema.h"
 #include "metrics/ssim.h"
-#include "raytracer/fog_integrator.h"
+#include "height_fog/fog_integrator.h"
 #include "raytracer/reference_render.h"
 #include "height_fog/height_fog.h"
 

@@ -1,5 +1,5 @@
 /* Volumetric path tracing in the height fog; see fog_path_tracer.h. */
-#include "raytracer/fog_path_tracer.h"
+#include "height_fog/fog_path_tracer.h"
 
 #include <math.h>
 

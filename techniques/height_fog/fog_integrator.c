@@ -1,5 +1,5 @@
 /* The height-fog reference over the G-buffer; see fog_integrator.h. */
-#include "raytracer/fog_integrator.h"
+#include "height_fog/fog_integrator.h"
 
 #include <math.h>
 #include <stdio.h>

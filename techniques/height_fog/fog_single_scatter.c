@@ -1,6 +1,6 @@
 /* Single scattering in the height fog by quadrature; see
  * fog_single_scatter.h. */
-#include "raytracer/fog_single_scatter.h"
+#include "height_fog/fog_single_scatter.h"
 
 #include <math.h>
 

@@ -1,4 +1,4 @@
-/* `gtlab render fog` wired right (raytracer/fog_integrator.c): on a
+/* `gtlab render fog` wired right (techniques/height_fog/fog_integrator.c): on a
  * built-in scene in dense fog, the Monte Carlo single scattering of every
  * sampled pixel agrees with the quadrature within 4 standard errors, the
  * transmittance channels agree between the modes and lie in (0, 1), the
@@ -13,7 +13,7 @@
 #include <string.h>
 
 #include "core/height_fog_medium.h"
-#include "raytracer/fog_integrator.h"
+#include "height_fog/fog_integrator.h"
 #include "raytracer/reference_render.h"
 #include "scene/builtin_scenes.h"
 #include "tests/check.h"

@@ -7,12 +7,12 @@
  *   fog.L.R/G/B   radiance the fog scatters towards the camera, sun +
  *                 ambient, with .stderr:
  *                   quadrature  single scattering by gk15
- *                               (raytracer/fog_single_scatter.h), the same in
+ *                               (techniques/height_fog/fog_single_scatter.h), the same in
  *                               every sample; its error estimate in
  *                               fog_quadrature_error.R/G/B
  *                   single      the same integral by Monte Carlo
  *                   multiple    volumetric path tracing
- *                               (raytracer/fog_path_tracer.h)
+ *                               (techniques/height_fog/fog_path_tracer.h)
  *
  * Options separate the analytic model's assumptions: no_sun_extinction
  * (the sun reaches every point unattenuated, as the published model
@@ -22,12 +22,12 @@
  * misses the scene get the fog along the whole ray to infinity (fog.T there
  * is the sky's transmittance: 0 for rays that never leave an infinite
  * layer, i.e. level or descending ones). */
-#ifndef GTLAB_RAYTRACER_FOG_INTEGRATOR_H
-#define GTLAB_RAYTRACER_FOG_INTEGRATOR_H
+#ifndef GTLAB_HEIGHT_FOG_FOG_INTEGRATOR_H
+#define GTLAB_HEIGHT_FOG_FOG_INTEGRATOR_H
 
 #include "core/error.h"
 #include "core/mc_film.h"
-#include "raytracer/fog_path_tracer.h"
+#include "height_fog/fog_path_tracer.h"
 #include "raytracer/reference_quantity.h"
 #include "raytracer/render_loop.h"
 

@@ -1,5 +1,5 @@
-/* The height-fog references (raytracer/fog_single_scatter.h,
- * raytracer/fog_path_tracer.h) against closed forms and each other:
+/* The height-fog references (techniques/height_fog/fog_single_scatter.h,
+ * techniques/height_fog/fog_path_tracer.h) against closed forms and each other:
  *
  *   - homogeneous medium (H = 1e12 m): T = exp(-beta_t d) and single
  *     scattering (E S_sun(mu) + beta_s L_amb) / beta_t (1 - T), by quadrature
@@ -18,7 +18,7 @@
 #include <string.h>
 
 #include "core/phase_function.h"
-#include "raytracer/fog_path_tracer.h"
+#include "height_fog/fog_path_tracer.h"
 #include "tests/check.h"
 
 typedef struct {

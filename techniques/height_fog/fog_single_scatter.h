@@ -32,10 +32,10 @@
  *                   \int_0^1 e^{-a / mu} dmu); else the model's: an isotropic
  *                   sky of radiance L_amb reaching every point from the
  *                   whole sphere, unattenuated and unshadowed.
- * The multiple-scattering reference (raytracer/fog_path_tracer.h) drops
+ * The multiple-scattering reference (techniques/height_fog/fog_path_tracer.h) drops
  * every one of these assumptions. */
-#ifndef GTLAB_RAYTRACER_FOG_SINGLE_SCATTER_H
-#define GTLAB_RAYTRACER_FOG_SINGLE_SCATTER_H
+#ifndef GTLAB_HEIGHT_FOG_FOG_SINGLE_SCATTER_H
+#define GTLAB_HEIGHT_FOG_FOG_SINGLE_SCATTER_H
 
 #include "core/height_fog_medium.h"
 #include "raytracer/embree_scene.h"

@@ -1,5 +1,5 @@
 /* `gtlab render fog`: transmittance and in-scattered radiance of the height
- * fog in front of each surface (raytracer/fog_integrator.h). */
+ * fog in front of each surface (techniques/height_fog/fog_integrator.h). */
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -7,7 +7,7 @@
 
 #include "core/number_parse.h"
 #include "core/reference_schema.h"
-#include "raytracer/fog_integrator.h"
+#include "height_fog/fog_integrator.h"
 #include "raytracer/reference_render.h"
 
 _Static_assert(offsetof(fog_settings, header) == 0, "the header comes first");

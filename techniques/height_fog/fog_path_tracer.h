@@ -1,7 +1,7 @@
 /* Light scattered by the height fog towards a camera, by Monte Carlo
  * volumetric path tracing: the multiple-scattering reference of issue 16
  * (and, limited to one scattering, an estimator of the same integral as the
- * quadrature of raytracer/fog_single_scatter.h, which tests both).
+ * quadrature of techniques/height_fog/fog_single_scatter.h, which tests both).
  *
  * Free flights are sampled exactly in the exponential medium: a channel c*
  * is drawn uniformly, an optical depth -ln(1 - u) / beta_t,c* is drawn, and
@@ -38,12 +38,12 @@
  * Random numbers come from a counter-based hash of (seed, sample index,
  * dimension): a sample depends only on them, so renders are bit-identical
  * for any thread count. */
-#ifndef GTLAB_RAYTRACER_FOG_PATH_TRACER_H
-#define GTLAB_RAYTRACER_FOG_PATH_TRACER_H
+#ifndef GTLAB_HEIGHT_FOG_FOG_PATH_TRACER_H
+#define GTLAB_HEIGHT_FOG_FOG_PATH_TRACER_H
 
 #include <stdint.h>
 
-#include "raytracer/fog_single_scatter.h"
+#include "height_fog/fog_single_scatter.h"
 
 typedef struct {
     fog_lighting lighting; /* medium, sun extinction, occluders (NULL: no scene beyond the camera segment) */
