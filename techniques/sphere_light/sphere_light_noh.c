@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "core/atomic_file.h"
-#include "raytracer/sphere_light_reference.h"
+#include "sphere_light/sphere_light_reference.h"
 #include "sphere_light/sphere_light.h"
 #include "sphere_light/sphere_light_study.h"
 

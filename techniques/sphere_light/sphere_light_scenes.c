@@ -17,7 +17,7 @@
 #include "ltc/ltc_sphere.h"
 #include "metrics/flip.h"
 #include "metrics/ssim.h"
-#include "raytracer/sphere_light_quantity.h"
+#include "sphere_light/sphere_light_quantity.h"
 #include "scene/scene_loaders.h"
 #include "sphere_light/sphere_light.h"
 #include "sphere_light/sphere_light_study.h"

@@ -13,7 +13,7 @@
 #include "raytracer/environment_light.h"
 #include "raytracer/heightfield_ao_integrator.h"
 #include "raytracer/reference_render.h"
-#include "raytracer/sphere_light_quantity.h"
+#include "sphere_light/sphere_light_quantity.h"
 
 enum { MAX_OPTIONS = 64 };
 

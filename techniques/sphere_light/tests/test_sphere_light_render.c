@@ -1,4 +1,4 @@
-/* The sphere-light scene render (raytracer/sphere_light_integrator.c) is
+/* The sphere-light scene render (techniques/sphere_light/sphere_light_integrator.c) is
  * wired right: on a white metal plane (F0 = 1, so Fresnel is 1 and the
  * diffuse lobe 0) every pixel equals L_e times the parameter-space GGX
  * reference of the same surface point, view and light (independent seeds),
@@ -9,8 +9,8 @@
 #include <string.h>
 
 #include "core/frame.h"
-#include "raytracer/sphere_light_quantity.h"
-#include "raytracer/sphere_light_reference.h"
+#include "sphere_light/sphere_light_quantity.h"
+#include "sphere_light/sphere_light_reference.h"
 #include "scene/builtin_scenes.h"
 #include "tests/check.h"
 

@@ -1,4 +1,4 @@
-#include "raytracer/sphere_light_integrator.h"
+#include "sphere_light/sphere_light_integrator.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -6,7 +6,7 @@
 
 #include "core/fresnel.h"
 #include "core/ggx.h"
-#include "raytracer/sphere_light_reference.h"
+#include "sphere_light/sphere_light_reference.h"
 #include "scene/material_lookup.h"
 #include "core/reference_schema.h"
 

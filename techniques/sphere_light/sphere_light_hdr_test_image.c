@@ -1,9 +1,9 @@
-/* The sphere-light HDR test image: see hdr_test_image.h. */
-#include "studies/hdr_test_image.h"
+/* The sphere-light HDR test image: see sphere_light_hdr_test_image.h. */
+#include "sphere_light/sphere_light_hdr_test_image.h"
 
 #include <string.h>
 
-#include "raytracer/sphere_light_quantity.h"
+#include "sphere_light/sphere_light_quantity.h"
 #include "scene/scene_loaders.h"
 
 int hdr_test_image_sphere_light(const study_context *ctx, int width, int height, int spp, unsigned seed, image *out,

@@ -1,10 +1,10 @@
 /* `gtlab render sphere-light` (sphere_light_quantity.c): the quantity and
  * its settings, the light (sphere_light_integrator.h). */
-#ifndef GTLAB_RAYTRACER_SPHERE_LIGHT_QUANTITY_H
-#define GTLAB_RAYTRACER_SPHERE_LIGHT_QUANTITY_H
+#ifndef GTLAB_SPHERE_LIGHT_SPHERE_LIGHT_QUANTITY_H
+#define GTLAB_SPHERE_LIGHT_SPHERE_LIGHT_QUANTITY_H
 
 #include "raytracer/reference_render.h"
-#include "raytracer/sphere_light_integrator.h"
+#include "sphere_light/sphere_light_integrator.h"
 
 extern const reference_quantity_descriptor reference_quantity_sphere_light;
 #define QUANTITY_SPHERE_LIGHT (&reference_quantity_sphere_light)

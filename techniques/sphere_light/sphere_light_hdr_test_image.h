@@ -2,10 +2,11 @@
  * unshadowed sphere-light reference of builtin:sphere-on-plane (light at
  * (-2.5, 4, 1.5), radius 0.5, radiance 5; camera from (0, 3, 7) at
  * (0, 0.7, 0), 40 degrees), the scene INSIDE's talk lights with one sphere
- * light. Shared machinery: the dither and bloom techniques both start from
- * it (techniques/dither/, techniques/bloom/). */
-#ifndef GTLAB_STUDIES_HDR_TEST_IMAGE_H
-#define GTLAB_STUDIES_HDR_TEST_IMAGE_H
+ * light. Part of the sphere light's study: the dither and bloom techniques
+ * both start from it (techniques/dither/, techniques/bloom/: USES
+ * sphere_light). */
+#ifndef GTLAB_SPHERE_LIGHT_SPHERE_LIGHT_HDR_TEST_IMAGE_H
+#define GTLAB_SPHERE_LIGHT_SPHERE_LIGHT_HDR_TEST_IMAGE_H
 
 #include "core/image.h"
 #include "studies/study.h"

@@ -16,8 +16,8 @@
  * specular part, resp. a cosine-distributed l for the diffuse part. Points
  * are Owen-scrambled Sobol' (one dimension pair per technique); the
  * standard error is that of the mean of the per-sample MIS sums. */
-#ifndef GTLAB_RAYTRACER_SPHERE_LIGHT_REFERENCE_H
-#define GTLAB_RAYTRACER_SPHERE_LIGHT_REFERENCE_H
+#ifndef GTLAB_SPHERE_LIGHT_SPHERE_LIGHT_REFERENCE_H
+#define GTLAB_SPHERE_LIGHT_SPHERE_LIGHT_REFERENCE_H
 
 #include <stdint.h>
 

@@ -1,6 +1,6 @@
 /* `gtlab render sphere-light`: radiance towards the camera from a uniform
  * spherical light over the glTF materials
- * (raytracer/sphere_light_integrator.h). */
+ * (techniques/sphere_light/sphere_light_integrator.h). */
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -8,7 +8,7 @@
 
 #include "core/number_parse.h"
 #include "core/reference_schema.h"
-#include "raytracer/sphere_light_quantity.h"
+#include "sphere_light/sphere_light_quantity.h"
 
 _Static_assert(offsetof(sphere_light_quantity_settings, header) == 0, "the header comes first");
 

@@ -24,7 +24,7 @@
 #include "core/mc_film.h"
 #include "core/reference_schema.h"
 #include "raytracer/reference_merge.h"
-#include "raytracer/sphere_light_quantity.h"
+#include "sphere_light/sphere_light_quantity.h"
 #include "scene/scene_loaders.h"
 #include "tests/check.h"
 

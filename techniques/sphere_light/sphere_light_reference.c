@@ -1,4 +1,4 @@
-#include "raytracer/sphere_light_reference.h"
+#include "sphere_light/sphere_light_reference.h"
 
 #include <math.h>
 

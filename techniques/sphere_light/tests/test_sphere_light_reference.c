@@ -1,4 +1,4 @@
-/* The parameter-space sphere-light reference (raytracer/sphere_light_reference.c)
+/* The parameter-space sphere-light reference (techniques/sphere_light/sphere_light_reference.c)
  * against closed forms and an independent quadrature: a Lambert plane under
  * a sphere fully above the horizon (E = pi sin^2(sigma) cos(theta)), the
  * horizon-crossing case against Frostbite's exact formula, the GGX
@@ -9,7 +9,7 @@
 #include <stdio.h>
 
 #include "core/ggx.h"
-#include "raytracer/sphere_light_reference.h"
+#include "sphere_light/sphere_light_reference.h"
 #include "realtime/sphere_illuminance.h"
 #include "tests/check.h"
 

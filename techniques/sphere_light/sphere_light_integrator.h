@@ -2,7 +2,7 @@
  * radiance leaving each G-buffer surface towards the camera, lit by a
  * uniform spherical emitter, integrated exactly over the light's solid
  * angle with the parameter-space reference's MIS sample
- * (raytracer/sphere_light_reference.h), unshadowed by default (the
+ * (techniques/sphere_light/sphere_light_reference.h), unshadowed by default (the
  * real-time approximations have no shadows); with `shadows`, each direction
  * that carries light is weighted by an Embree occlusion ray from the lifted
  * surface point to the light's surface (the light itself is not geometry).
@@ -16,8 +16,8 @@
  * Channels: sphere.R, sphere.G, sphere.B (quantity 0 drives the stop rule).
  * Sampling: the cap technique uses dimension pair 0, the BRDF technique
  * pair 1. */
-#ifndef GTLAB_RAYTRACER_SPHERE_LIGHT_INTEGRATOR_H
-#define GTLAB_RAYTRACER_SPHERE_LIGHT_INTEGRATOR_H
+#ifndef GTLAB_SPHERE_LIGHT_SPHERE_LIGHT_INTEGRATOR_H
+#define GTLAB_SPHERE_LIGHT_SPHERE_LIGHT_INTEGRATOR_H
 
 #include "raytracer/render_loop.h"
 

@@ -1,4 +1,4 @@
-/* `gtlab render sphere-light --shadows` (raytracer/sphere_light_integrator.c)
+/* `gtlab render sphere-light --shadows` (techniques/sphere_light/sphere_light_integrator.c)
  * against geometry whose shadow is known exactly:
  *  - on the open plane nothing blocks the light: shadowed and unshadowed
  *    renders are bit-identical;
@@ -12,7 +12,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "raytracer/sphere_light_quantity.h"
+#include "sphere_light/sphere_light_quantity.h"
 #include "scene/builtin_scenes.h"
 #include "tests/check.h"
 
