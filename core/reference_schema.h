@@ -153,7 +153,8 @@
 #define CH_AERIAL_MODEL_RGB {"aerial_model.R", "aerial_model.G", "aerial_model.B"}
 #define CH_AERIAL_CORRECTED_RGB {"aerial_model_corrected.R", "aerial_model_corrected.G", "aerial_model_corrected.B"}
 
-/* ---- Volumetric light (render volumetric-light; raytracer/volumetric_light_integrator.h) */
+/* ---- Volumetric light (render volumetric-light;
+ * techniques/volumetric_light/volumetric_light_integrator.h) ------------ */
 /* Radiance a spot or point light scatters once towards the camera through a
  * homogeneous medium, shadowed, up to the first surface. */
 #define CH_VLIGHT_L_R "vlight.L.R"

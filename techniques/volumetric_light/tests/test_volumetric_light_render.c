@@ -13,7 +13,7 @@
 #include <string.h>
 
 #include "raytracer/reference_render.h"
-#include "raytracer/volumetric_light_integrator.h"
+#include "volumetric_light/volumetric_light_integrator.h"
 #include "scene/builtin_scenes.h"
 #include "tests/check.h"
 

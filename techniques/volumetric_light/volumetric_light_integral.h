@@ -29,8 +29,8 @@
  *
  * Visibility V(x): a shadow ray from x towards the light through Embree,
  * NULL occluders: 1. */
-#ifndef GTLAB_RAYTRACER_VOLUMETRIC_LIGHT_INTEGRAL_H
-#define GTLAB_RAYTRACER_VOLUMETRIC_LIGHT_INTEGRAL_H
+#ifndef GTLAB_VOLUMETRIC_LIGHT_VOLUMETRIC_LIGHT_INTEGRAL_H
+#define GTLAB_VOLUMETRIC_LIGHT_VOLUMETRIC_LIGHT_INTEGRAL_H
 
 #include "core/volumetric_light.h"
 #include "raytracer/embree_scene.h"

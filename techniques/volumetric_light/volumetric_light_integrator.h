@@ -2,7 +2,7 @@
  * scatters once towards the camera through a homogeneous medium, along each
  * camera ray up to the first surface (issue 29; the lights, medium and
  * integrand in core/volumetric_light.h, the two integrators in
- * raytracer/volumetric_light_integral.h). Channels (core/reference_schema.h):
+ * techniques/volumetric_light/volumetric_light_integral.h). Channels (core/reference_schema.h):
  *
  *   vlight.L.R/G/B   the in-scattered radiance, with .stderr:
  *                      quadrature   adaptive gk15 in the equiangular angle,
@@ -21,14 +21,14 @@
  * extinction 1 / |e|. In builtin:cornell that is a spot in front of the open
  * box, high and to the left, outside the camera's view (its 1/r^2 peak is not
  * on screen), aimed into the box across the blocks, whose shadows cut shafts. */
-#ifndef GTLAB_RAYTRACER_VOLUMETRIC_LIGHT_INTEGRATOR_H
-#define GTLAB_RAYTRACER_VOLUMETRIC_LIGHT_INTEGRATOR_H
+#ifndef GTLAB_VOLUMETRIC_LIGHT_VOLUMETRIC_LIGHT_INTEGRATOR_H
+#define GTLAB_VOLUMETRIC_LIGHT_VOLUMETRIC_LIGHT_INTEGRATOR_H
 
 #include "core/error.h"
 #include "core/mc_film.h"
 #include "raytracer/reference_quantity.h"
 #include "raytracer/render_loop.h"
-#include "raytracer/volumetric_light_integral.h"
+#include "volumetric_light/volumetric_light_integral.h"
 
 typedef enum { VLIGHT_QUADRATURE = 0, VLIGHT_MONTE_CARLO } volumetric_light_method;
 

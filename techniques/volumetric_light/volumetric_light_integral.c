@@ -1,6 +1,6 @@
 /* The single-scattering integral of a volumetric light along a ray; see
  * volumetric_light_integral.h. */
-#include "raytracer/volumetric_light_integral.h"
+#include "volumetric_light/volumetric_light_integral.h"
 
 #include <math.h>
 

@@ -1,6 +1,6 @@
 /* The volumetric-light reference over the G-buffer; see
  * volumetric_light_integrator.h. */
-#include "raytracer/volumetric_light_integrator.h"
+#include "volumetric_light/volumetric_light_integrator.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -1,6 +1,6 @@
 /* `gtlab render volumetric-light`: single-scattered radiance of a shadowed
  * spot or point light in a homogeneous medium
- * (raytracer/volumetric_light_integrator.h). */
+ * (techniques/volumetric_light/volumetric_light_integrator.h). */
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -9,7 +9,7 @@
 #include "core/number_parse.h"
 #include "core/reference_schema.h"
 #include "raytracer/reference_render.h"
-#include "raytracer/volumetric_light_integrator.h"
+#include "volumetric_light/volumetric_light_integrator.h"
 
 _Static_assert(offsetof(volumetric_light_settings, header) == 0, "the header comes first");
 
