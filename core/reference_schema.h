@@ -167,7 +167,7 @@
 #define CH_VLIGHT_L_ERROR_B "vlight_quadrature_error.B"
 #define CH_VLIGHT_L_ERROR_RGB {CH_VLIGHT_L_ERROR_R, CH_VLIGHT_L_ERROR_G, CH_VLIGHT_L_ERROR_B}
 /* ---- Environment lighting (render env-diffuse, env-specular;
- *      raytracer/environment_diffuse_integrator.h, environment_specular_integrator.h) */
+ *      techniques/environment/environment_{diffuse,specular}_integrator.h) */
 /* Lambertian L / albedo with visibility and --bounces inter-reflections. */
 #define CH_ENV_DIFFUSE_RGB {"env_diffuse.R", "env_diffuse.G", "env_diffuse.B"}
 /* The same, direct light only (no inter-reflection). */

@@ -10,7 +10,7 @@
 
 #include "cli/render_quantities.h"
 #include "tests/check.h"
-#include "raytracer/environment_light.h"
+#include "environment/environment_light.h"
 #include "raytracer/heightfield_ao_integrator.h"
 #include "raytracer/reference_render.h"
 #include "sphere_light/sphere_light_quantity.h"

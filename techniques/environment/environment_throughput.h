@@ -3,13 +3,13 @@
  * multibounce reference's samples/s on the same scene): the two loops on
  * the same G-buffer, grey albedo and bounces, at the same spp, each the
  * best of `repeats` passes, and their ratio. */
-#ifndef GTLAB_RAYTRACER_ENVIRONMENT_THROUGHPUT_H
-#define GTLAB_RAYTRACER_ENVIRONMENT_THROUGHPUT_H
+#ifndef GTLAB_ENVIRONMENT_ENVIRONMENT_THROUGHPUT_H
+#define GTLAB_ENVIRONMENT_ENVIRONMENT_THROUGHPUT_H
 
 #include <stdio.h>
 
 #include "core/error.h"
-#include "raytracer/environment_light.h"
+#include "environment/environment_light.h"
 #include "raytracer/multibounce_integrator.h"
 #include "scene/scene.h"
 

@@ -1,4 +1,4 @@
-#include "raytracer/environment_diffuse_integrator.h"
+#include "environment/environment_diffuse_integrator.h"
 
 #include <math.h>
 #include <stdio.h>

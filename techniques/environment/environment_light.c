@@ -1,4 +1,4 @@
-#include "raytracer/environment_light.h"
+#include "environment/environment_light.h"
 
 #include <math.h>
 #include <stdio.h>

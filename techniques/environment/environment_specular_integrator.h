@@ -1,4 +1,4 @@
-/* GGX specular reflection of an environment (raytracer/environment_light.h),
+/* GGX specular reflection of an environment (techniques/environment/environment_light.h),
  * with visibility and without, from the same samples (issue 28):
  *
  *   env_specular.c             \int V(l) L_c(l) f_r(v, l) F_c(v.h) (n.l) dl
@@ -22,10 +22,10 @@
  * below the shading horizon; under a constant environment c = 1 and the
  * weight is G2 / G1. A direction below the geometric surface is blocked.
  * One occlusion ray per sample (dimension pair 0). */
-#ifndef GTLAB_RAYTRACER_ENVIRONMENT_SPECULAR_INTEGRATOR_H
-#define GTLAB_RAYTRACER_ENVIRONMENT_SPECULAR_INTEGRATOR_H
+#ifndef GTLAB_ENVIRONMENT_ENVIRONMENT_SPECULAR_INTEGRATOR_H
+#define GTLAB_ENVIRONMENT_ENVIRONMENT_SPECULAR_INTEGRATOR_H
 
-#include "raytracer/environment_light.h"
+#include "environment/environment_light.h"
 #include "raytracer/render_loop.h"
 
 enum { ENV_SPECULAR_QUANTITIES = 6 };

@@ -1,8 +1,8 @@
 /* `gtlab render env-diffuse` and `env-specular`: Lambertian and GGX
  * surfaces lit by an environment, with visibility and without
- * (raytracer/environment_diffuse_integrator.h,
- * raytracer/environment_specular_integrator.h). */
-#include "raytracer/environment_quantity.h"
+ * (techniques/environment/environment_diffuse_integrator.h,
+ * techniques/environment/environment_specular_integrator.h). */
+#include "environment/environment_quantity.h"
 
 #include <stddef.h>
 #include <stdio.h>
@@ -12,8 +12,8 @@
 #include "core/number_parse.h"
 #include "core/reference_schema.h"
 #include "core/roughness_setting.h"
-#include "raytracer/environment_diffuse_integrator.h"
-#include "raytracer/environment_specular_integrator.h"
+#include "environment/environment_diffuse_integrator.h"
+#include "environment/environment_specular_integrator.h"
 #include "raytracer/reference_render.h"
 #include "raytracer/shared_options.h"
 

@@ -1,10 +1,10 @@
-#include "raytracer/environment_throughput.h"
+#include "environment/environment_throughput.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "raytracer/environment_diffuse_integrator.h"
+#include "environment/environment_diffuse_integrator.h"
 #include "scene/scene_loaders.h"
 
 /* One render of `it`: its samples/s and rays/s, kept when better. */

@@ -1,4 +1,4 @@
-/* Lambertian surfaces lit by an environment (raytracer/environment_light.h),
+/* Lambertian surfaces lit by an environment (techniques/environment/environment_light.h),
  * with visibility and inter-reflections: the reference that engines'
  * AO x irradiance approximates (issue 28). What is estimated, per colour
  * channel c, is the outgoing radiance divided by the shading point's
@@ -35,10 +35,10 @@
  * albedo) and env_diffuse_direct equals ao.V, bit for bit at the same seed.
  *
  * Film scale exponent: the light's (environment_light.h). */
-#ifndef GTLAB_RAYTRACER_ENVIRONMENT_DIFFUSE_INTEGRATOR_H
-#define GTLAB_RAYTRACER_ENVIRONMENT_DIFFUSE_INTEGRATOR_H
+#ifndef GTLAB_ENVIRONMENT_ENVIRONMENT_DIFFUSE_INTEGRATOR_H
+#define GTLAB_ENVIRONMENT_ENVIRONMENT_DIFFUSE_INTEGRATOR_H
 
-#include "raytracer/environment_light.h"
+#include "environment/environment_light.h"
 #include "raytracer/multibounce_integrator.h"
 #include "raytracer/render_loop.h"
 

@@ -1,4 +1,4 @@
-#include "raytracer/environment_specular_integrator.h"
+#include "environment/environment_specular_integrator.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -18,8 +18,8 @@
  * f cos / p_mix <= 1 / c for Lambert (L / albedo) and for GGX without
  * Fresnel (G2 / G1 <= 1), so |sample| <= L_max / c, and
  * E = ceil(log2(max(1, intensity L_max / c))): 0 for the white dome. */
-#ifndef GTLAB_RAYTRACER_ENVIRONMENT_LIGHT_H
-#define GTLAB_RAYTRACER_ENVIRONMENT_LIGHT_H
+#ifndef GTLAB_ENVIRONMENT_ENVIRONMENT_LIGHT_H
+#define GTLAB_ENVIRONMENT_ENVIRONMENT_LIGHT_H
 
 #include "core/environment_map.h"
 #include "core/environment_sampler.h"

@@ -20,9 +20,9 @@
 
 #include "core/environment_map.h"
 #include "core/reference_schema.h"
-#include "raytracer/environment_diffuse_integrator.h"
-#include "raytracer/environment_light.h"
-#include "raytracer/environment_quantity.h"
+#include "environment/environment_diffuse_integrator.h"
+#include "environment/environment_light.h"
+#include "environment/environment_quantity.h"
 #include "raytracer/reference_merge.h"
 #include "raytracer/reference_render.h"
 #include "scene/scene_loaders.h"

@@ -5,8 +5,8 @@
  * raytracer/shared_options.h), --environment by name (their own object:
  * white, sky, sun or an image file), and own --env-rotate, --env-intensity
  * and (env-specular) --f0. */
-#ifndef GTLAB_RAYTRACER_ENVIRONMENT_QUANTITY_H
-#define GTLAB_RAYTRACER_ENVIRONMENT_QUANTITY_H
+#ifndef GTLAB_ENVIRONMENT_ENVIRONMENT_QUANTITY_H
+#define GTLAB_ENVIRONMENT_ENVIRONMENT_QUANTITY_H
 
 #include "raytracer/reference_quantity.h"
 
