@@ -22,8 +22,6 @@ import sys
 
 # Each circle as the sorted files it joins, relative to the repository.
 KNOWN = [
-    # the glTF adapter's three C++ files (scene/)
-    ["scene/gltf_accessors.cpp", "scene/gltf_primitive.cpp", "scene/gltf_reader.cpp"],
     # the render registry and two of its quantities (raytracer/)
     ["raytracer/environment_quantity.c", "raytracer/reference_quantities.c",
      "raytracer/specular_occlusion_quantity.c"],

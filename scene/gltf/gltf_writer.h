@@ -1,7 +1,7 @@
 /* glTF 2.0 out through tinygltf (a C++ adapter, gltf_writer.cpp, behind this
  * C header); the reader is gltf_reader.h. */
-#ifndef GTLAB_SCENE_GLTF_WRITER_H
-#define GTLAB_SCENE_GLTF_WRITER_H
+#ifndef GTLAB_SCENE_GLTF_GLTF_WRITER_H
+#define GTLAB_SCENE_GLTF_GLTF_WRITER_H
 
 #include "core/error.h"
 #include "scene/scene.h"

@@ -1,5 +1,5 @@
 /* Morph targets and skins in the default pose: see vertex_pose.h. */
-#include "scene/vertex_pose.h"
+#include "scene/gltf/vertex_pose.h"
 
 #include <string.h>
 

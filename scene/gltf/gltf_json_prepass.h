@@ -9,8 +9,8 @@
  *    bufferView (the indices are in the Draco data): tinygltf refuses it.
  *    The primitive's "indices" is dropped; the Draco data provides them.
  * The text has passed the JSON gate (core/json_check.h). */
-#ifndef GTLAB_SCENE_GLTF_JSON_PREPASS_H
-#define GTLAB_SCENE_GLTF_JSON_PREPASS_H
+#ifndef GTLAB_SCENE_GLTF_GLTF_JSON_PREPASS_H
+#define GTLAB_SCENE_GLTF_GLTF_JSON_PREPASS_H
 
 #include <stddef.h>
 

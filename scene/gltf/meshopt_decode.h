@@ -9,8 +9,8 @@
  *   (byteStride 8), "EXPONENTIAL" (byteStride a multiple of 4: 2^e * m floats).
  * The decoders are safe on untrusted bytes (they fail or produce garbage
  * values, which the glTF reader then checks like any other data). */
-#ifndef GTLAB_SCENE_MESHOPT_DECODE_H
-#define GTLAB_SCENE_MESHOPT_DECODE_H
+#ifndef GTLAB_SCENE_GLTF_MESHOPT_DECODE_H
+#define GTLAB_SCENE_GLTF_MESHOPT_DECODE_H
 
 #include <stddef.h>
 

@@ -1,5 +1,5 @@
 /* KHR_draco_mesh_compression through libdraco: the thin C++ adapter behind
- * scene/draco_decode.h. */
+ * scene/gltf/draco_decode.h. */
 #include <draco/attributes/attribute_quantization_transform.h>
 #include <draco/compression/decode.h>
 
@@ -7,7 +7,7 @@
 #include <new>
 
 extern "C" {
-#include "scene/draco_decode.h"
+#include "scene/gltf/draco_decode.h"
 }
 
 struct draco_geometry {

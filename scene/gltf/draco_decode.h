@@ -5,8 +5,8 @@
  * the Draco attribute's unique id; the decoded mesh replaces the primitive's
  * accessors. Draco dequantizes its own quantized attributes; integer
  * attributes marked normalized become floats by Draco's normalization. */
-#ifndef GTLAB_SCENE_DRACO_DECODE_H
-#define GTLAB_SCENE_DRACO_DECODE_H
+#ifndef GTLAB_SCENE_GLTF_DRACO_DECODE_H
+#define GTLAB_SCENE_GLTF_DRACO_DECODE_H
 
 #include <stddef.h>
 #include <stdint.h>

@@ -1,5 +1,5 @@
 /* EXT_meshopt_compression through libmeshoptimizer's C API: see meshopt_decode.h. */
-#include "scene/meshopt_decode.h"
+#include "scene/gltf/meshopt_decode.h"
 
 #include <meshoptimizer.h>
 #include <string.h>

@@ -1,5 +1,5 @@
 /* glTF 2.0 in through tinygltf: the thin C++ adapter behind
- * scene/gltf_reader.h (the writer is gltf_writer.cpp; the two share no code).
+ * scene/gltf/gltf_reader.h (the writer is gltf_writer.cpp; the two share no code).
  * This file parses (the JSON gate, the prepass, tinygltf), checks the node
  * tree, converts materials and walks the scene; accessor data is read in
  * gltf_accessors.cpp and a primitive's geometry in gltf_primitive.cpp, with
@@ -38,11 +38,11 @@
 extern "C" {
 #include "core/input_file.h"
 #include "core/json_check.h"
-#include "scene/glb_container.h"
-#include "scene/gltf_json_prepass.h"
-#include "scene/primitive_topology.h"
+#include "scene/gltf/glb_container.h"
+#include "scene/gltf/gltf_json_prepass.h"
+#include "scene/gltf/primitive_topology.h"
 }
-#include "scene/gltf_loader.hpp"
+#include "scene/gltf/gltf_loader.hpp"
 
 namespace gltf_detail {
 
@@ -98,20 +98,6 @@ std::string one_line(const std::string &text)
     return shorten_quotes(out);
 }
 
-/* A name from the file, fit for a one-line message: control characters
- * replaced, long names cut (gt_quote). */
-std::string printable(const std::string &name)
-{
-    gt_quoted q;
-    return gt_quote(name.c_str(), &q);
-}
-
-/* [offset, offset + length) lies inside [0, size), without overflow. */
-bool range_inside(uint64_t offset, uint64_t length, uint64_t size)
-{
-    return offset <= size && length <= size - offset;
-}
-
 std::string directory_of(const char *path)
 {
     const char *slash = std::strrchr(path, '/');
@@ -131,48 +117,6 @@ bool has_extension(const char *path, const char *ext)
         if (std::tolower((unsigned char)path[n - k + i]) != ext[i])
             return false;
     return true;
-}
-
-const char *mode_name(int mode)
-{
-    switch (mode) {
-    case TINYGLTF_MODE_POINTS: return "points";
-    case TINYGLTF_MODE_LINE: return "lines";
-    case TINYGLTF_MODE_LINE_LOOP: return "line loop";
-    case TINYGLTF_MODE_LINE_STRIP: return "line strip";
-    case TINYGLTF_MODE_TRIANGLE_STRIP: return "triangle strip";
-    case TINYGLTF_MODE_TRIANGLE_FAN: return "triangle fan";
-    default: return "unknown";
-    }
-}
-
-const char *component_type_name(int type)
-{
-    switch (type) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE: return "byte";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return "unsigned byte";
-    case TINYGLTF_COMPONENT_TYPE_SHORT: return "short";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return "unsigned short";
-    case TINYGLTF_COMPONENT_TYPE_INT: return "int";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return "unsigned int";
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return "float";
-    case TINYGLTF_COMPONENT_TYPE_DOUBLE: return "double";
-    default: return "unknown";
-    }
-}
-
-const char *type_name(int type)
-{
-    switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
-    case TINYGLTF_TYPE_VEC2: return "VEC2";
-    case TINYGLTF_TYPE_VEC3: return "VEC3";
-    case TINYGLTF_TYPE_VEC4: return "VEC4";
-    case TINYGLTF_TYPE_MAT2: return "MAT2";
-    case TINYGLTF_TYPE_MAT3: return "MAT3";
-    case TINYGLTF_TYPE_MAT4: return "MAT4";
-    default: return "unknown";
-    }
 }
 
 /* Largest glTF/GLB file gtlab reads: a GLB's length field is 32-bit and
@@ -469,37 +413,6 @@ int check_node_graph(Loader &L)
                 on_cycle = L.parent[(size_t)on_cycle];
             return L.fail("node graph has a cycle (node %d is its own ancestor)", on_cycle);
         }
-    return 0;
-}
-
-int node_local_matrix(Loader &L, int index, Mat4 *out)
-{
-    const tinygltf::Node &node = L.model.nodes[(size_t)index];
-    if (!node.matrix.empty()) {
-        if (node.matrix.size() != 16)
-            return L.fail("node %d: matrix has %zu numbers, expected 16", index, node.matrix.size());
-        std::copy(node.matrix.begin(), node.matrix.end(), out->m);
-    } else {
-        double t[3] = {0, 0, 0}, q[4] = {0, 0, 0, 1}, s[3] = {1, 1, 1};
-        if (!node.translation.empty() && node.translation.size() != 3)
-            return L.fail("node %d: translation has %zu numbers, expected 3", index, node.translation.size());
-        if (!node.rotation.empty() && node.rotation.size() != 4)
-            return L.fail("node %d: rotation has %zu numbers, expected 4", index, node.rotation.size());
-        if (!node.scale.empty() && node.scale.size() != 3)
-            return L.fail("node %d: scale has %zu numbers, expected 3", index, node.scale.size());
-        std::copy(node.translation.begin(), node.translation.end(), t);
-        std::copy(node.rotation.begin(), node.rotation.end(), q);
-        std::copy(node.scale.begin(), node.scale.end(), s);
-        /* The spec requires a unit quaternion; exporters round, so normalise. */
-        const double len = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-        if (!(len > 0.0) || !std::isfinite(len))
-            return L.fail("node %d: rotation quaternion has zero or non-finite length", index);
-        for (double &c : q)
-            c /= len;
-        *out = mat4_trs(t, q, s);
-    }
-    if (!mat4_is_finite(*out))
-        return L.fail("node %d: transform has non-finite values", index);
     return 0;
 }
 

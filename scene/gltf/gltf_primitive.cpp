@@ -1,15 +1,15 @@
-/* A glTF primitive's geometry for the reader (scene/gltf_loader.hpp): its
+/* A glTF primitive's geometry for the reader (scene/gltf/gltf_loader.hpp): its
  * vertices from accessors or Draco, its triangles by mode, morph targets and
  * skins in the default pose, unwelded when it has no normals. */
-#include "scene/gltf_loader.hpp"
+#include "scene/gltf/gltf_loader.hpp"
 
 #include <algorithm>
 #include <cstring>
 
 extern "C" {
-#include "scene/draco_decode.h"
-#include "scene/primitive_topology.h"
-#include "scene/vertex_pose.h"
+#include "scene/gltf/draco_decode.h"
+#include "scene/gltf/primitive_topology.h"
+#include "scene/gltf/vertex_pose.h"
 }
 
 namespace gltf_detail {
@@ -197,6 +197,39 @@ int apply_morph_targets(Loader &L, const std::string &what, const tinygltf::Node
 }
 
 /* ------------------------------------------------------------------- skins */
+
+/* The node's own transform: its matrix, or T * R * S from its translation,
+ * rotation (normalised) and scale, checked (glTF 2.0 "Transformations"). */
+int node_local_matrix(Loader &L, int index, Mat4 *out)
+{
+    const tinygltf::Node &node = L.model.nodes[(size_t)index];
+    if (!node.matrix.empty()) {
+        if (node.matrix.size() != 16)
+            return L.fail("node %d: matrix has %zu numbers, expected 16", index, node.matrix.size());
+        std::copy(node.matrix.begin(), node.matrix.end(), out->m);
+    } else {
+        double t[3] = {0, 0, 0}, q[4] = {0, 0, 0, 1}, s[3] = {1, 1, 1};
+        if (!node.translation.empty() && node.translation.size() != 3)
+            return L.fail("node %d: translation has %zu numbers, expected 3", index, node.translation.size());
+        if (!node.rotation.empty() && node.rotation.size() != 4)
+            return L.fail("node %d: rotation has %zu numbers, expected 4", index, node.rotation.size());
+        if (!node.scale.empty() && node.scale.size() != 3)
+            return L.fail("node %d: scale has %zu numbers, expected 3", index, node.scale.size());
+        std::copy(node.translation.begin(), node.translation.end(), t);
+        std::copy(node.rotation.begin(), node.rotation.end(), q);
+        std::copy(node.scale.begin(), node.scale.end(), s);
+        /* The spec requires a unit quaternion; exporters round, so normalise. */
+        const double len = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+        if (!(len > 0.0) || !std::isfinite(len))
+            return L.fail("node %d: rotation quaternion has zero or non-finite length", index);
+        for (double &c : q)
+            c /= len;
+        *out = mat4_trs(t, q, s);
+    }
+    if (!mat4_is_finite(*out))
+        return L.fail("node %d: transform has non-finite values", index);
+    return 0;
+}
 
 /* The node's global transform (parents' transforms times its own), computed
  * once per node by walking up to the first known ancestor (no recursion). */

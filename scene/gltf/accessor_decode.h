@@ -6,8 +6,8 @@
  * and an integer that is not normalized stands for its own value
  * (KHR_mesh_quantization: "the values are converted to float as is"; the
  * node transform then carries the dequantization scale and offset). */
-#ifndef GTLAB_SCENE_ACCESSOR_DECODE_H
-#define GTLAB_SCENE_ACCESSOR_DECODE_H
+#ifndef GTLAB_SCENE_GLTF_ACCESSOR_DECODE_H
+#define GTLAB_SCENE_GLTF_ACCESSOR_DECODE_H
 
 #include <stddef.h>
 #include <stdint.h>

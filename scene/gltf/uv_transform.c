@@ -1,5 +1,5 @@
 /* KHR_texture_transform as an affine map: see uv_transform.h. */
-#include "scene/uv_transform.h"
+#include "scene/gltf/uv_transform.h"
 
 #include <math.h>
 #include <string.h>

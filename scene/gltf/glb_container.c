@@ -1,7 +1,7 @@
 /* GLB container splitting (glb_container.h). Beyond the specification, the
  * BIN chunk is held to what tinygltf 2.7.0 requires of it (at least 4 bytes,
  * a multiple of 4), so that a file accepted here is one tinygltf reads. */
-#include "scene/glb_container.h"
+#include "scene/gltf/glb_container.h"
 
 #include <stdint.h>
 #include <stdlib.h>

@@ -1,12 +1,14 @@
-/* The glTF reader's shared parts (scene/gltf_reader.h is the C interface):
+/* The glTF reader's shared parts (scene/gltf/gltf_reader.h is the C interface):
  * internal to the C++ adapter, which is split by concept into
  * gltf_reader.cpp (parsing, the node tree, materials, the public entry
  * points), gltf_accessors.cpp (accessor data: views, sparse substitution,
  * component types, extension values, meshopt-compressed views) and
  * gltf_primitive.cpp (a primitive's geometry: topology, Draco, morph targets,
- * skins). Only those files include it. */
-#ifndef GTLAB_SCENE_GLTF_LOADER_HPP
-#define GTLAB_SCENE_GLTF_LOADER_HPP
+ * skins, node transforms), over gltf_names.cpp (values in words, range
+ * checks); each file calls only the ones listed after it. Only those files
+ * include it. */
+#ifndef GTLAB_SCENE_GLTF_GLTF_LOADER_HPP
+#define GTLAB_SCENE_GLTF_GLTF_LOADER_HPP
 
 #include <tiny_gltf.h>
 
@@ -22,8 +24,8 @@
 extern "C" {
 #include "core/error.h"
 #include "core/vec3.h"
-#include "scene/gltf_reader.h"
-#include "scene/uv_transform.h"
+#include "scene/gltf/gltf_reader.h"
+#include "scene/gltf/uv_transform.h"
 }
 
 namespace gltf_detail {
@@ -161,13 +163,12 @@ struct Loader {
     }
 };
 
-/* gltf_reader.cpp */
+/* gltf_names.cpp */
 std::string printable(const std::string &name);
 bool range_inside(uint64_t offset, uint64_t length, uint64_t size);
 const char *mode_name(int mode);
 const char *component_type_name(int type);
 const char *type_name(int type);
-int node_local_matrix(Loader &L, int index, Mat4 *out);
 
 /* gltf_accessors.cpp */
 /* A checked window onto count elements of element_size bytes: element i
@@ -202,6 +203,8 @@ const tinygltf::Value *extension(const tinygltf::ExtensionMap &extensions, const
 int decode_meshopt_views(Loader &L);
 
 /* gltf_primitive.cpp */
+/* The node's own transform (matrix, or TRS), checked. */
+int node_local_matrix(Loader &L, int index, Mat4 *out);
 /* One triangle primitive in its mesh's local space (or, skinned, in world
  * space), as a triangle list. */
 struct Primitive {

@@ -1,15 +1,15 @@
-/* Accessor data for the glTF reader (scene/gltf_loader.hpp): checked views
+/* Accessor data for the glTF reader (scene/gltf/gltf_loader.hpp): checked views
  * onto bufferViews, sparse substitution, component types per attribute role
  * (core glTF 2.0 and KHR_mesh_quantization), extension values, and
  * EXT_meshopt_compression views decoded into buffers of their own. */
-#include "scene/gltf_loader.hpp"
+#include "scene/gltf/gltf_loader.hpp"
 
 #include <algorithm>
 #include <cstring>
 
 extern "C" {
-#include "scene/accessor_decode.h"
-#include "scene/meshopt_decode.h"
+#include "scene/gltf/accessor_decode.h"
+#include "scene/gltf/meshopt_decode.h"
 }
 
 namespace gltf_detail {

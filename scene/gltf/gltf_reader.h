@@ -17,8 +17,8 @@
  * naming it, before anything else is read. Every problem that would make the render wrong is an
  * error naming the file; what can be safely skipped (non-triangle primitives,
  * a texture that cannot be decoded) is a warning. */
-#ifndef GTLAB_SCENE_GLTF_READER_H
-#define GTLAB_SCENE_GLTF_READER_H
+#ifndef GTLAB_SCENE_GLTF_GLTF_READER_H
+#define GTLAB_SCENE_GLTF_GLTF_READER_H
 
 #include <stddef.h>
 

@@ -6,8 +6,8 @@
  * so the chunks returned lie inside the file. tinygltf's own GLB reader
  * (2.7.0) lets a BIN chunk run 8 bytes past the file; files it would read
  * that way are refused here. */
-#ifndef GTLAB_SCENE_GLB_CONTAINER_H
-#define GTLAB_SCENE_GLB_CONTAINER_H
+#ifndef GTLAB_SCENE_GLTF_GLB_CONTAINER_H
+#define GTLAB_SCENE_GLTF_GLB_CONTAINER_H
 
 #include <stddef.h>
 

@@ -9,8 +9,8 @@
  * (KHR_mesh_quantization), so a reader that skips it samples textures at the
  * wrong place. The glTF reader bakes a material's transform into the
  * texture coordinates of the meshes that use it. */
-#ifndef GTLAB_SCENE_UV_TRANSFORM_H
-#define GTLAB_SCENE_UV_TRANSFORM_H
+#ifndef GTLAB_SCENE_GLTF_UV_TRANSFORM_H
+#define GTLAB_SCENE_GLTF_UV_TRANSFORM_H
 
 #include <stddef.h>
 

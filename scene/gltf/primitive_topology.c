@@ -1,5 +1,5 @@
 /* Strips and fans as triangle lists: see primitive_topology.h. */
-#include "scene/primitive_topology.h"
+#include "scene/gltf/primitive_topology.h"
 
 int gltf_mode_has_triangles(int mode)
 {

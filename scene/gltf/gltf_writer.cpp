@@ -1,5 +1,5 @@
 /* glTF 2.0 out through tinygltf: the thin C++ adapter behind
- * scene/gltf_writer.h. The scene becomes a tinygltf model (one buffer, one
+ * scene/gltf/gltf_writer.h. The scene becomes a tinygltf model (one buffer, one
  * bufferView and accessor per attribute, one mesh and root node per scene
  * mesh, its materials, textures and camera) that tinygltf serialises as a
  * .glb, written atomically. Reference: the glTF 2.0 specification (Khronos,
@@ -18,7 +18,7 @@
 
 extern "C" {
 #include "core/atomic_file.h"
-#include "scene/gltf_writer.h"
+#include "scene/gltf/gltf_writer.h"
 }
 
 namespace {

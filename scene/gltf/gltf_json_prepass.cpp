@@ -7,7 +7,7 @@
 #include <string>
 
 extern "C" {
-#include "scene/gltf_json_prepass.h"
+#include "scene/gltf/gltf_json_prepass.h"
 }
 
 namespace {

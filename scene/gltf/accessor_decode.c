@@ -1,5 +1,5 @@
 /* Accessor components as numbers: see accessor_decode.h. */
-#include "scene/accessor_decode.h"
+#include "scene/gltf/accessor_decode.h"
 
 #include <math.h>
 #include <string.h>

@@ -11,8 +11,8 @@
  * normals cof(S) n = det(S) S^-T n with the sign of det(S) (the cofactor form
  * needs no division; the length is renormalised later). Matrices are 4x4
  * column-major doubles, m[4 * column + row], as glTF stores them. */
-#ifndef GTLAB_SCENE_VERTEX_POSE_H
-#define GTLAB_SCENE_VERTEX_POSE_H
+#ifndef GTLAB_SCENE_GLTF_VERTEX_POSE_H
+#define GTLAB_SCENE_GLTF_VERTEX_POSE_H
 
 #include <stddef.h>
 #include <stdint.h>

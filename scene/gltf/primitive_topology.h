@@ -6,8 +6,8 @@
  * The strip's formula alternates the order of the last two corners, so that
  * every triangle of the strip keeps the first one's winding (front faces stay
  * counter-clockwise). Points and lines (modes 0-3) have no triangles. */
-#ifndef GTLAB_SCENE_PRIMITIVE_TOPOLOGY_H
-#define GTLAB_SCENE_PRIMITIVE_TOPOLOGY_H
+#ifndef GTLAB_SCENE_GLTF_PRIMITIVE_TOPOLOGY_H
+#define GTLAB_SCENE_GLTF_PRIMITIVE_TOPOLOGY_H
 
 #include <stddef.h>
 #include <stdint.h>
