@@ -16,7 +16,6 @@
 #include "report/multibounce_section.h"
 #include "studies/multibounce_bench.h"
 #include "studies/multibounce_fit_input.h"
-#include "report/multibounce_score_section.h"
 
 enum { MAX_FILES = 256 };
 
@@ -141,7 +140,6 @@ static int bench_multibounce(int argc, char **argv)
 }
 
 GTLAB_STUDY_STAGE_NO_REQUEST(all_stage_multibounce, multibounce_study_result, multibounce_study, multibounce_section)
-GTLAB_STUDY_STAGE_NO_REQUEST(stage_scores, shader_scores_result, shader_scores_project, shader_scores_section)
 
 const technique technique_multibounce = {
     .name = "multibounce",
@@ -152,6 +150,5 @@ const technique technique_multibounce = {
             {"multibounce", bench_multibounce, "multi-bounce paths/s against raw Embree; N albedos in one pass"},
             {"fit", bench_fit, "a million-sample fit, 1- vs 1024-sample blocks"}),
     },
-    .stages = ALL_STAGES({"multibounce", "multi-bounce refit", all_stage_multibounce, MULTIBOUNCE_STUDY_DIR, NULL},
-                         {"shader-scores", "the project's shaders, plug-ins", stage_scores, NULL, "multibounce"}),
+    .stages = ALL_STAGES({"multibounce", "multi-bounce refit", all_stage_multibounce, MULTIBOUNCE_STUDY_DIR, NULL}),
 };

@@ -33,8 +33,9 @@ char *specular_occlusion_shader_source(shader_language language, const char *gen
  * float gtlab_specular_occlusion(float ao, float beta, float roughness, float n_dot_v)
  * as GTSO with the talk's choices, so_cone_cone(so_visibility_cos_cosine(ao),
  * so_reflection_cos_exp2(roughness^2), beta, 1): the same math as gtlab's C
- * variant cone-exact:exp2-alpha. tests/gpu/test_gpu_so_function_score.c
- * checks the files equal this text. */
+ * variant cone-exact:exp2-alpha.
+ * techniques/shader/tests/test_gpu_so_function_score.c checks the files
+ * equal this text. */
 char *specular_occlusion_template_source(shader_language language);
 
 #endif

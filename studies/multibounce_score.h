@@ -37,7 +37,7 @@ typedef struct {
  * function that cannot be loaded or compiled, NaN, no Vulkan device. */
 int multibounce_score(const multibounce_score_request *rq, function_score_result *out, gt_error *e);
 
-/* For the stage of `gtlab all` (studies/shader_scores.h): a project's
+/* For the stage of `gtlab all` (techniques/shader/shader_scores.h): a project's
  * multi-bounce function files and plug-ins scored on the multi-bounce
  * study's references in <output>/MULTIBOUNCE_STUDY_DIR (*.exr, in name
  * order). With both lists empty it reads nothing and out->variant_count = 0. */

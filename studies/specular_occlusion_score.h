@@ -43,7 +43,7 @@ typedef struct {
  * has no specular occlusion, NaN, no Vulkan device. */
 int specular_occlusion_score(const specular_occlusion_score_request *rq, function_score_result *out, gt_error *e);
 
-/* For the stage of `gtlab all` (studies/shader_scores.h): a project's
+/* For the stage of `gtlab all` (techniques/shader/shader_scores.h): a project's
  * specular-occlusion function files and plug-ins scored on the study's
  * references of every scene and roughness, rendered again as the study
  * renders them (so_study_render; the study keeps its own in memory only)

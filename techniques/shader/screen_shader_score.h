@@ -12,9 +12,9 @@
  * slices, 8 steps per side, radius 1, falloff 0.25, at most 256 pixels, no
  * thickness, no denoiser, one frame), so the shader run with its defaults is
  * a sanity line: its largest difference from the C image is within the
- * bound of tests/gpu/test_gpu_screen_pass.c (2e-3). */
-#ifndef GTLAB_STUDIES_SCREEN_SHADER_SCORE_H
-#define GTLAB_STUDIES_SCREEN_SHADER_SCORE_H
+ * bound of tests/test_gpu_screen_pass.c (2e-3). */
+#ifndef GTLAB_SHADER_SCREEN_SHADER_SCORE_H
+#define GTLAB_SHADER_SCREEN_SHADER_SCORE_H
 
 #include "metrics/cluster_mean.h"
 #include "studies/ao_image_score.h"

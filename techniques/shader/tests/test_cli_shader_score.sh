@@ -5,7 +5,7 @@
 # .glsl, the talk's GTAOMultiBounce) and the example plug-in (the same in C)
 # score as gtlab's built-in function does — the plug-in's printed figures
 # equal the talk's column, the GLSL's within float rounding (the RMSE bound
-# of tests/gpu/test_gpu_function_score.c, 7.4e-6, below the 5 printed
+# of test_gpu_function_score.c, 7.4e-6, below the 5 printed
 # decimals' half unit only where it does not straddle one, so compared as
 # numbers). Bad function files: one line, exit 1. A project listing the two
 # gets the section beside V_d and the talk's; one that lists neither gets
@@ -16,7 +16,7 @@ work=$2
 source_dir=$3
 plugin=$4
 rm -rf "$work" && mkdir -p "$work/out/multibounce"
-source "$(dirname "$0")/cli_test_lib.sh"
+source "$(dirname "$0")/../../../tests/cli/cli_test_lib.sh"
 vulkan_preload
 ref=$work/out/multibounce/corner.exr
 "$gtlab" render multibounce --scene builtin:corner --albedo 0.2,0.5,0.8 --width 24 --height 24 --spp 16 -o "$ref" \

@@ -1,12 +1,15 @@
-/* `gtlab bench shader`: a screen-space shader's ms per 1080p frame on Vulkan, dispatch only and end to end
- * (studies/shader_bench.h), and the stage screen-shaders (a project's screen_shaders on the AO references:
- * studies/screen_shader_score.h); `gtlab shader run` is a verb of its own (cli/verb_shader.c). */
+/* The user's shaders and plug-ins (README.md): `gtlab bench shader`, a screen-space shader's ms per 1080p frame on
+ * Vulkan, dispatch only and end to end (shader_bench.h); the stage shader-scores (a project's function files and
+ * plug-ins on the multibounce and specular-occlusion references: shader_scores.h), after multibounce, whose
+ * references it reads; and the stage screen-shaders (a project's screen_shaders on the AO references:
+ * screen_shader_score.h). `gtlab shader run|score` is a verb of its own (cli/verb_shader.c). */
 #include "cli/cli.h"
 #include "cli/cli_options.h"
 #include "cli/technique.h"
 #include "core/threads.h"
-#include "report/screen_shader_section.h"
-#include "studies/shader_bench.h"
+#include "shader/screen_shader_section.h"
+#include "shader/shader_bench.h"
+#include "shader/shader_scores_section.h"
 
 static int bench_shader(int argc, char **argv)
 {
@@ -27,7 +30,9 @@ static int bench_shader(int argc, char **argv)
     return shader_bench_run(&r, &b, &e) != 0 ? cli_fail(&e) : (shader_bench_print(stdout, &r, &b), EXIT_OK);
 }
 
+GTLAB_STUDY_STAGE_NO_REQUEST(stage_scores, shader_scores_result, shader_scores_project, shader_scores_section)
 GTLAB_STUDY_STAGE_NO_REQUEST(stage_screen, screen_shader_score_result, screen_shader_score_project, screen_shader_section)
 const technique technique_shader = {.name = "shader", .subcommands = {[VERB_BENCH] = CLI_SUBCOMMANDS(
                                         {"shader", bench_shader, "a shader's ms per 1080p frame on Vulkan"})},
-    .stages = ALL_STAGES({"screen-shaders", "the project's screen-space shaders", stage_screen, NULL, "ao"})};
+    .stages = ALL_STAGES({"shader-scores", "the project's shaders, plug-ins", stage_scores, NULL, "multibounce"},
+                         {"screen-shaders", "the project's screen-space shaders", stage_screen, NULL, "ao"})};

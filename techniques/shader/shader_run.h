@@ -2,8 +2,8 @@
  * (GLSL or HLSL, docs/shaders.md) run on Vulkan over a G-buffer EXR, its
  * outputs written to an EXR, and optionally scored against a reference
  * channel like `gtlab compare` (DSSIM, RMSE, the reference's noise floor). */
-#ifndef GTLAB_STUDIES_SHADER_RUN_H
-#define GTLAB_STUDIES_SHADER_RUN_H
+#ifndef GTLAB_SHADER_SHADER_RUN_H
+#define GTLAB_SHADER_SHADER_RUN_H
 
 #include <stdio.h>
 

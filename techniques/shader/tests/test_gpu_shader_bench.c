@@ -1,11 +1,11 @@
-/* `gtlab bench shader`'s study (studies/shader_bench.h) on a small image: a
+/* `gtlab bench shader`'s study (shader/shader_bench.h) on a small image: a
  * frame's wall time holds its dispatch (the fence wait is inside the frame's
  * loop), so 0 <= overhead < 1, and the set-up spread over the frames only
  * adds to it; a missing shader is one line naming it. */
 #include <stdio.h>
 #include <string.h>
 
-#include "studies/shader_bench.h"
+#include "shader/shader_bench.h"
 #include "tests/check.h"
 
 int main(void)

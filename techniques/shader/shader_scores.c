@@ -1,5 +1,5 @@
-/* The project's shaders and plug-ins by quantity (studies/shader_scores.h). */
-#include "studies/shader_scores.h"
+/* The project's shaders and plug-ins by quantity (shader_scores.h). */
+#include "shader/shader_scores.h"
 
 #include <stdlib.h>
 #include <string.h>

@@ -1,11 +1,11 @@
-/* The screen-shaders table's verdict (report/screen_shader_section.h):
+/* The screen-shaders table's verdict (shader/screen_shader_section.h):
  * "better" or "worse" only past significance AND a visible margin. The case
  * of issue 42: gtlab's own GLSL GTAO against its C port, a paired
  * difference of squared errors of 3.6e-6 that is significant, with RMSEs
  * that differ by far less than one 8-bit code value, is "no visible
  * difference", not "worse". */
 #include "report/claim_thresholds.h"
-#include "report/screen_shader_section.h"
+#include "shader/screen_shader_section.h"
 #include "tests/check.h"
 
 #include <string.h>

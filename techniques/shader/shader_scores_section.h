@@ -4,12 +4,12 @@
  * the specular-occlusion references (studies/specular_occlusion_score.h), in
  * another, each only when a listed file implements its quantity. A run
  * without such lists adds nothing to the report or summary.json. */
-#ifndef GTLAB_REPORT_MULTIBOUNCE_SCORE_SECTION_H
-#define GTLAB_REPORT_MULTIBOUNCE_SCORE_SECTION_H
+#ifndef GTLAB_SHADER_SHADER_SCORES_SECTION_H
+#define GTLAB_SHADER_SHADER_SCORES_SECTION_H
 
 #include "report/report_context.h"
+#include "shader/shader_scores.h"
 #include "studies/multibounce_score.h"
-#include "studies/shader_scores.h"
 
 /* Adds the section (nothing when r->variant_count == 0); returns 0. */
 int multibounce_score_section(report_context *ctx, const function_score_result *r, gt_error *e);

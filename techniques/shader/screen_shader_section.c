@@ -1,6 +1,6 @@
 /* The project's screen-space shaders beside gtlab's GTAO
- * (report/screen_shader_section.h). */
-#include "report/screen_shader_section.h"
+ * (screen_shader_section.h). */
+#include "shader/screen_shader_section.h"
 
 #include <math.h>
 #include <stdio.h>

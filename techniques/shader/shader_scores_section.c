@@ -1,6 +1,6 @@
 /* The project's shaders and plug-ins beside gtlab's multi-bounce variants
- * (report/multibounce_score_section.h). */
-#include "report/multibounce_score_section.h"
+ * (shader_scores_section.h). */
+#include "shader/shader_scores_section.h"
 
 #include "report/report_table.h"
 #include "studies/specular_occlusion_score.h"

@@ -18,7 +18,7 @@
 #include "core/exr_io.h"
 #include "raytracer/reference_render.h"
 #include "realtime/multibounce.h"
-#include "studies/shader_scores.h"
+#include "shader/shader_scores.h"
 #include "studies/study.h"
 #include "tests/check.h"
 #include "tests/test_files.h"

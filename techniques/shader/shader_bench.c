@@ -1,5 +1,5 @@
 /* The cost of running a screen-space shader; see shader_bench.h. */
-#include "studies/shader_bench.h"
+#include "shader/shader_bench.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -9,8 +9,8 @@
 #include "gpu/shader_interface.h"
 #include "raytracer/reference_render.h"
 #include "scene/scene_loaders.h"
+#include "shader/shader_run.h"
 #include "studies/gbuffer_input.h"
-#include "studies/shader_run.h"
 
 typedef struct {
     char *source;

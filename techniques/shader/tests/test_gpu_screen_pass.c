@@ -1,7 +1,7 @@
 /* The screen-space contract end to end (issue 15, items 2 and 4):
  * shaders/gtao.glsl and shaders/gtao.hlsl, gtlab's GTAO in one configuration
  * (one source, shaders/gtao.inc, behind each language's bindings), run by
- * `gtlab shader run`'s study (studies/shader_run.c) on a built-in scene's
+ * `gtlab shader run`'s study (techniques/shader/shader_run.c) on a built-in scene's
  * G-buffer EXR, against the C gtao_frame on the same G-buffer; then the
  * failures that must leave no output behind.
  *
@@ -30,8 +30,8 @@
 #include "raytracer/reference_render.h"
 #include "realtime/gtao.h"
 #include "scene/scene_loaders.h"
+#include "shader/shader_run.h"
 #include "studies/gbuffer_input.h"
-#include "studies/shader_run.h"
 #include "tests/check.h"
 
 static const char kCamera[] = "{\"position\":[0,26,0],\"target\":[0,0,0],\"up\":[0,0,-1],\"yfov_deg\":40,"

@@ -15,8 +15,8 @@
  *               frame; and with the set-up spread over the run's frames
  * and, apart, the shader's compile time (shaderc, once per run). Writes no
  * file. */
-#ifndef GTLAB_STUDIES_SHADER_BENCH_H
-#define GTLAB_STUDIES_SHADER_BENCH_H
+#ifndef GTLAB_SHADER_SHADER_BENCH_H
+#define GTLAB_SHADER_SHADER_BENCH_H
 
 #include <stdio.h>
 

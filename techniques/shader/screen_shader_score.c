@@ -1,6 +1,6 @@
 /* The project's screen-space shaders beside gtlab's GTAO; see
  * screen_shader_score.h. */
-#include "studies/screen_shader_score.h"
+#include "shader/screen_shader_score.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -12,9 +12,9 @@
 #include "core/sample_mean.h"
 #include "gpu/screen_pass.h"
 #include "realtime/gtao.h"
+#include "shader/shader_run.h"
 #include "studies/ao_references.h"
 #include "studies/gtao_scene_refs.h"
-#include "studies/shader_run.h"
 
 enum { DEVICE_TIMEOUT_SECONDS = 10 }; /* per frame, as `gtlab shader run` */
 

@@ -5,7 +5,7 @@
 # stage's file, from an earlier run into the same folder) gets the section:
 # the two shader rows equal each other bit for bit (the same SPIR-V
 # operations on the same device), and each is within the bound of
-# tests/gpu/test_gpu_screen_pass.c of gtlab's C GTAO row (max |AO - C| <=
+# tests/test_gpu_screen_pass.c of gtlab's C GTAO row (max |AO - C| <=
 # 2e-3, hence |RMSE - RMSE(C)| <= 2e-3 by the triangle inequality). A shader
 # that does not compile, an unknown parameter, a quantity other than ao: one
 # line naming the project file, the JSON path and the shader, before any
@@ -14,7 +14,7 @@ gtlab=$1
 work=$2
 source_dir=$3
 rm -rf "$work" && mkdir -p "$work/out/ao"
-source "$(dirname "$0")/cli_test_lib.sh"
+source "$(dirname "$0")/../../../tests/cli/cli_test_lib.sh"
 vulkan_preload
 "$gtlab" render ao --scene builtin:boxes --width 48 --height 32 --spp 8 --threads 2 -o "$work/out/ao/boxes.exr" \
   2>/dev/null || fail "render ao"

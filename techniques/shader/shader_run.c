@@ -1,5 +1,5 @@
 #define _POSIX_C_SOURCE 199309L
-#include "studies/shader_run.h"
+#include "shader/shader_run.h"
 
 #include <stdio.h>
 #include <stdlib.h>

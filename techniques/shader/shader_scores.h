@@ -10,8 +10,8 @@
  * file that implements neither is an error.
  * Without a project, or with both lists empty, it reads and renders nothing
  * and both results have variant_count = 0. */
-#ifndef GTLAB_STUDIES_SHADER_SCORES_H
-#define GTLAB_STUDIES_SHADER_SCORES_H
+#ifndef GTLAB_SHADER_SHADER_SCORES_H
+#define GTLAB_SHADER_SHADER_SCORES_H
 
 #include "scoring/function_score.h"
 #include "studies/study.h"

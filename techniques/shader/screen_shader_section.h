@@ -2,13 +2,13 @@
  * screen-space shaders: ambient occlusion", one table with a row per
  * variant — gtlab's C GTAO, then each file of the project's
  * `screen_shaders` — scored as the GTAO study scores its own variants
- * (studies/screen_shader_score.h), and summary.json's
+ * (screen_shader_score.h), and summary.json's
  * `screen_shader_scores`. A run without screen shaders adds nothing. */
-#ifndef GTLAB_REPORT_SCREEN_SHADER_SECTION_H
-#define GTLAB_REPORT_SCREEN_SHADER_SECTION_H
+#ifndef GTLAB_SHADER_SCREEN_SHADER_SECTION_H
+#define GTLAB_SHADER_SCREEN_SHADER_SECTION_H
 
 #include "report/report_context.h"
-#include "studies/screen_shader_score.h"
+#include "shader/screen_shader_score.h"
 
 /* A variant's verdict against GTAO (C): "better"/"worse" past significance
  * and a visible margin (one 8-bit code value of RMSE), "no visible

@@ -13,7 +13,7 @@ gtlab=$1
 work=$2
 source_dir=$3
 rm -rf "$work" && mkdir -p "$work"
-source "$(dirname "$0")/cli_test_lib.sh"
+source "$(dirname "$0")/../../../tests/cli/cli_test_lib.sh"
 vulkan_preload
 "$gtlab" render gbuffer --scene builtin:boxes --width 16 --height 16 -o "$work/g.exr" >/dev/null 2>&1 || fail "gbuffer"
 "$gtlab" render multibounce --scene builtin:corner --albedo 0.2,0.8 --width 16 --height 16 --spp 4 \

@@ -5,7 +5,7 @@
 # specular-occlusion reference and the AO reference of its view: the
 # template (GTSO's cone/cone) within float rounding of gtlab's
 # cone-exact:exp2-alpha (|dRMSE| <= max |gpu - c| <= 2e-3,
-# tests/gpu/test_gpu_so_function_score.c), the example plug-in (Lagarde's)
+# test_gpu_so_function_score.c), the example plug-in (Lagarde's)
 # exactly like gtlab's lagarde. Bad input: one line, exit 1. A project
 # listing files of both quantities gets both sections, each with the files
 # implementing its quantity; a function file implementing neither is refused.
@@ -15,12 +15,12 @@ source_dir=$3
 mb_plugin=$4
 so_plugin=$5
 rm -rf "$work" && mkdir -p "$work/out/multibounce"
-if [ -n "$GTLAB_VULKAN_PRELOAD" ]; then  # under ASan: the Vulkan driver kept resident (tests/gpu/CMakeLists.txt)
+if [ -n "$GTLAB_VULKAN_PRELOAD" ]; then  # under ASan: the Vulkan driver kept resident (cmake/gtlab_test.cmake)
   printf '#!/bin/sh\nLD_PRELOAD="%s" exec "%s" "$@"\n' "$GTLAB_VULKAN_PRELOAD" "$gtlab" >"$work/gtlab"
   chmod +x "$work/gtlab"
   gtlab=$work/gtlab
 fi
-source "$(dirname "$0")/cli_test_lib.sh"
+source "$(dirname "$0")/../../../tests/cli/cli_test_lib.sh"
 plugin=$mb_plugin
 "$gtlab" render multibounce --scene builtin:corner --albedo 0.2,0.5,0.8 --width 24 --height 24 --spp 16 \
   -o "$work/out/multibounce/corner.exr" 2>/dev/null || fail "render corner"
