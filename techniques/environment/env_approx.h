@@ -7,7 +7,7 @@
  *   ao-n              E(n) / pi AO                    (AO x the pre-convolved probe)
  *   ao-bent           E(b) / pi AO                    (b the unit bent normal)
  *   multibounce-n     E(n) / pi G(AO, rho)            (G: the GTAO multi-bounce function,
- *   multibounce-bent  E(b) / pi G(AO, rho)             realtime/multibounce.h, per channel)
+ *   multibounce-bent  E(b) / pi G(AO, rho)             techniques/multibounce/multibounce.h, per channel)
  * with E the irradiance from 9 SH coefficients (environment/sh_irradiance.h) or the
  * exact irradiance map (environment/irradiance_map.h);
  *
@@ -29,7 +29,7 @@
 #include "environment/irradiance_map.h"
 #include "environment/prefiltered_radiance.h"
 #include "environment/sh_irradiance.h"
-#include "realtime/multibounce.h"
+#include "multibounce/multibounce.h"
 
 typedef enum { ENV_IRRADIANCE_SH9, ENV_IRRADIANCE_MAP, ENV_IRRADIANCE_SOURCES } env_irradiance_source;
 

@@ -6,8 +6,8 @@
 
 #include "gpu/function_shader.h"
 #include "gpu/shader_compiler.h"
+#include "multibounce/multibounce_score.h"
 #include "plugins/plugin_loader.h"
-#include "studies/multibounce_score.h"
 #include "studies/specular_occlusion_score.h"
 #include "studies/study_project.h"
 

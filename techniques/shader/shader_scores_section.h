@@ -1,15 +1,15 @@
 /* The project's shaders and plug-ins (issue 15, item 6): the functions and
  * plug-ins a project file lists, scored on the multi-bounce references beside
- * gtlab's own variants (studies/multibounce_score.h), in one table, and on
+ * gtlab's own variants (multibounce/multibounce_score.h), in one table, and on
  * the specular-occlusion references (studies/specular_occlusion_score.h), in
  * another, each only when a listed file implements its quantity. A run
  * without such lists adds nothing to the report or summary.json. */
 #ifndef GTLAB_SHADER_SHADER_SCORES_SECTION_H
 #define GTLAB_SHADER_SHADER_SCORES_SECTION_H
 
+#include "multibounce/multibounce_score.h"
 #include "report/report_context.h"
 #include "shader/shader_scores.h"
-#include "studies/multibounce_score.h"
 
 /* Adds the section (nothing when r->variant_count == 0); returns 0. */
 int multibounce_score_section(report_context *ctx, const function_score_result *r, gt_error *e);

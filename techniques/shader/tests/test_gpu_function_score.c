@@ -16,8 +16,8 @@
 #include <string.h>
 
 #include "core/exr_io.h"
+#include "multibounce/multibounce.h"
 #include "raytracer/reference_render.h"
-#include "realtime/multibounce.h"
 #include "shader/shader_scores.h"
 #include "studies/study.h"
 #include "tests/check.h"
