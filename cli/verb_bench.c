@@ -57,16 +57,25 @@ static int run_rays(const char *spec, int width, int height, int threads, int re
     return EXIT_OK;
 }
 
+/* The index in registered[] of the technique's benchmark `name`, or -1. */
+static int registered_index(const cli_subcommand *registered, size_t count, const char *name)
+{
+    for (size_t i = 0; i < count; ++i)
+        if (strcmp(name, registered[i].name) == 0)
+            return (int)i;
+    return -1;
+}
+
 int verb_bench(int argc, char **argv)
 {
     /* The techniques' own benchmarks, each with its options (cli/techniques.c). */
     cli_subcommand registered[32];
     size_t count = technique_subcommands(VERB_BENCH, registered, 32);
-    for (size_t i = 0; argc >= 2 && i < count; ++i)
-        if (strcmp(argv[1], registered[i].name) == 0) {
-            cli_reset_getopt();
-            return registered[i].run(argc - 1, argv + 1);
-        }
+    int at = argc >= 2 ? registered_index(registered, count, argv[1]) : -1;
+    if (at >= 0) {
+        cli_reset_getopt();
+        return registered[at].run(argc - 1, argv + 1);
+    }
     const char *scene_spec = "builtin:menger";
     long width = 256, height = 256, threads = threads_default(), repeats = 3;
     cli_arguments name;
@@ -76,6 +85,16 @@ int verb_bench(int argc, char **argv)
         return status;
     if (name.count > 1)
         return cli_failf("bench", "unexpected argument '%s'", name.values[1]);
+    /* A technique's benchmark named after options of this table (`gtlab bench
+     * --scene S specular-occlusion`; the parse moved the name last): run as if
+     * named first. */
+    if (name.count == 1 && (at = registered_index(registered, count, name.values[0])) >= 0) {
+        char *named = argv[argc - 1];
+        memmove(argv + 2, argv + 1, (size_t)(argc - 2) * sizeof *argv);
+        argv[1] = named;
+        cli_reset_getopt();
+        return registered[at].run(argc - 1, argv + 1);
+    }
     if (name.count == 0 || strcmp(name.values[0], "rays") != 0)
         return cli_failf("bench", "name a benchmark: rays, specular-occlusion, gtao, multibounce, fit, sphere-light, "
                                   "convergence or env-diffuse (see 'gtlab bench --help')");

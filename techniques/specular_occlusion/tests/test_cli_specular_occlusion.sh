@@ -61,6 +61,10 @@ expect_ok bench bench specular-occlusion --scene builtin:corner --width 16 --hei
 grep -q "^specular-occlusion reference on builtin:corner, 16x16, 64 spp, roughness 0.5 (best of 1)" "$work/stdout" &&
   grep -q "^samples/s " "$work/stdout" && grep -q "^speed-up threads / 1 thread " "$work/stdout" && pass ||
   fail "bench specular-occlusion: $(head -c 500 "$work/stdout")"
+# Named after the options, as the verb has always taken it: the same run.
+expect_ok bench-named-last bench --scene builtin:corner --width 16 --height 16 --threads 2 --repeats 1 specular-occlusion
+grep -q "^specular-occlusion reference on builtin:corner, 16x16, 64 spp, roughness 0.5 (best of 1)" "$work/stdout" && pass ||
+  fail "bench ... specular-occlusion: $(head -c 500 "$work/stdout")"
 expect_error bench-width "--width" "" -- bench specular-occlusion --width 8
 expect_error bench-scene "no-such-scene" "" -- bench specular-occlusion --scene builtin:no-such-scene --width 16 --height 16
 expect_error fit-not-so "no channel specocc.V" "$work/f.json" -- fit aperture --reference "$ao" --ao "$ao" -o "$work/f.json"
