@@ -13,7 +13,7 @@
  *                          V'_d from the visibility V_d and one colour
  *                          channel's albedo rho, for `count` samples
  *   gtlab_specular_occlusion_v1
- *                          specular occlusion V_s (realtime/specular_occlusion.h)
+ *                          specular occlusion V_s (specular_occlusion/specular_occlusion.h)
  *                          from the cosine-weighted AO, the angle beta
  *                          (radians) between the bent normal and the
  *                          reflection vector, the perceptual roughness

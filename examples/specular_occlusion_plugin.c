@@ -1,7 +1,7 @@
 /* An example gtlab specular-occlusion plug-in (core/plugin_abi.h): Lagarde
  * and de Rousiers 2014 ("Moving Frostbite to PBR", listing 26),
  *   V_s = saturate((n.v + ao)^(2^(-16 alpha - 1)) - 1 + ao),  alpha = roughness^2,
- * evaluated as realtime/specular_occlusion.inc evaluates so_lagarde in C
+ * evaluated as specular_occlusion/specular_occlusion.inc evaluates so_lagarde in C
  * (double, the same order of operations and libm calls), so gtlab scores it
  * exactly as its own "lagarde" variant
  * (techniques/shader/tests/test_gpu_so_function_score.c).

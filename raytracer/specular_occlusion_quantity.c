@@ -34,7 +34,7 @@ const reference_option reference_option_environment = {
     .name = "environment",
     .value = "E",
     .help = "white (default) or sky, which adds the\n"
-            "two- vs three-split channels (docs/decisions.md, the sky);\n"
+            "two- vs three-split channels (techniques/specular_occlusion/README.md);\n"
             "env-*: white (default), sky, sun or an equirectangular image file\n"
             "(EXR, .hdr, ...: docs/decisions.md, \"Environment lighting\")",
     .parse = parse_environment,

@@ -14,7 +14,7 @@
  * specular (GGX, F0 per channel), the split sum times a specular occlusion
  *   P(R, r) (F0 A(n.v, r) + B(n.v, r)) V_s
  * (environment/prefiltered_radiance.h, luts/dfg_lut.h), V_s = 1 unoccluded or one
- * variant of realtime/specular_occlusion_screen.h (AO as V_s, Lagarde,
+ * variant of specular_occlusion/specular_occlusion_screen.h (AO as V_s, Lagarde,
  * cone/cone, the GTSO cone/lobe LUT).
  *
  * The talk's claim (Jimenez et al. 2016, seed 001): AO x a pre-convolved

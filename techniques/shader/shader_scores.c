@@ -8,7 +8,8 @@
 #include "gpu/shader_compiler.h"
 #include "multibounce/multibounce_score.h"
 #include "plugins/plugin_loader.h"
-#include "studies/specular_occlusion_score.h"
+#include "multibounce/multibounce_score.h"
+#include "specular_occlusion/specular_occlusion_score.h"
 #include "studies/study_project.h"
 
 enum { QUANTITY_MB, QUANTITY_SO, QUANTITIES };

@@ -5,7 +5,7 @@
  * exporting gtlab_multibounce_v1 and/or gtlab_specular_occlusion_v1
  * (core/plugin_abi.h) — on that quantity's references beside gtlab's own
  * variants: multibounce/multibounce_score.h (the multibounce stage's references)
- * and studies/specular_occlusion_score.h (the specular-occlusion study's,
+ * and specular_occlusion/specular_occlusion_score.h (the specular-occlusion study's,
  * rendered again), the two users of scoring/function_score.h. A function
  * file that implements neither is an error.
  * Without a project, or with both lists empty, it reads and renders nothing

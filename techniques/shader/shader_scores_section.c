@@ -3,7 +3,7 @@
 #include "shader/shader_scores_section.h"
 
 #include "report/report_table.h"
-#include "studies/specular_occlusion_score.h"
+#include "specular_occlusion/specular_occlusion_score.h"
 
 #define COLUMNS(c) (int)(sizeof(c) / sizeof((c)[0]))
 

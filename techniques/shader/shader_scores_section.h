@@ -1,7 +1,7 @@
 /* The project's shaders and plug-ins (issue 15, item 6): the functions and
  * plug-ins a project file lists, scored on the multi-bounce references beside
  * gtlab's own variants (multibounce/multibounce_score.h), in one table, and on
- * the specular-occlusion references (studies/specular_occlusion_score.h), in
+ * the specular-occlusion references (specular_occlusion/specular_occlusion_score.h), in
  * another, each only when a listed file implements its quantity. A run
  * without such lists adds nothing to the report or summary.json. */
 #ifndef GTLAB_SHADER_SHADER_SCORES_SECTION_H

@@ -6,7 +6,6 @@
 
 #include "studies/ao_convergence.h"
 #include "studies/ray_throughput.h"
-#include "studies/specular_occlusion_bench.h"
 #include "tests/check.h"
 
 static void test_ray_throughput(void)
@@ -50,21 +49,9 @@ static void test_ao_convergence(void)
     }
 }
 
-static void test_specular_occlusion(void)
-{
-    specular_occlusion_bench_result r;
-    gt_error e;
-    CHECK(specular_occlusion_bench_run("builtin:corner", 16, 12, 2, 1, &r, &e) == 0);
-    CHECK(r.width == 16 && r.height == 12);
-    for (int t = 0; t < 2; ++t)
-        CHECK(r.samples_per_s[t] > 0.0 && r.rays_per_s[t] > 0.0 && r.rays_per_s[t] <= r.samples_per_s[t]);
-    CHECK(specular_occlusion_bench_run("builtin:no-such-scene", 16, 16, 1, 1, &r, &e) == -1);
-}
-
 int main(void)
 {
     test_ray_throughput();
     test_ao_convergence();
-    test_specular_occlusion();
     return check_report("studies_benchmarks");
 }

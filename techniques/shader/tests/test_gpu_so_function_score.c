@@ -1,8 +1,8 @@
 /* The specular-occlusion function contract and plug-in entry point (issue
- * 15, items 3 and 5; studies/specular_occlusion_score.h): on a small
+ * 15, items 3 and 5; specular_occlusion/specular_occlusion_score.h): on a small
  * specular-occlusion reference and the AO reference of its view,
  *  - shaders/template_specular_occlusion.glsl/.hlsl are the text gtlab
- *    generates from realtime/specular_occlusion.inc (specular_occlusion_
+ *    generates from specular_occlusion/specular_occlusion.inc (specular_occlusion_
  *    template_source), byte for byte;
  *  - wrapped and run on Vulkan they score within a float bound of gtlab's C
  *    variant cone-exact:exp2-alpha (the same math in double): |RMSE(gpu) -
@@ -27,10 +27,10 @@
 #include "gpu/function_shader.h"
 #include "gpu/shader_compiler.h"
 #include "raytracer/reference_render.h"
-#include "realtime/specular_occlusion_shader.h"
+#include "specular_occlusion/specular_occlusion_shader.h"
 #include "shader/shader_scores.h"
-#include "studies/specular_occlusion_inputs.h"
-#include "studies/specular_occlusion_score.h"
+#include "specular_occlusion/specular_occlusion_inputs.h"
+#include "specular_occlusion/specular_occlusion_score.h"
 #include "studies/study.h"
 #include "tests/check.h"
 #include "tests/test_files.h"
