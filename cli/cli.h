@@ -27,7 +27,6 @@ int verb_shader(int argc, char **argv);
 
 /* Subcommands in their own files (cli/<verb>_<name>.c), in the techniques'
  * registries (cli/technique_*.c). */
-int bench_fit(int argc, char **argv);
 int bench_convergence(int argc, char **argv);
 int approx_hbao(int argc, char **argv);
 int approx_vo(int argc, char **argv);

@@ -70,6 +70,13 @@ typedef struct {
 #define CLI_OUTPUT_FILE(n, v, text) {.kind = CLI_KIND_STRING, .name = n, .value = v, .writes = 1, .help = text}
 #define CLI_THREADS CLI_INT("threads", "T", 1, 1024, "worker threads (default: all cores); the result does not depend on it")
 #define CLI_OUTPUT_DIR CLI_OUTPUT("DIR", 1, "output folder (created if absent)")
+/* A throughput benchmark's view and passes (`gtlab bench rays`, `bench
+ * specular-occlusion`): --scene, --width, --height, --threads, --repeats. */
+#define CLI_BENCH_VIEW                                                                                       \
+    CLI_STRING("scene", "S", "builtin:NAME or a glTF file"), CLI_INT("width", "W", 16, 8192, "image width"), \
+        CLI_INT("height", "H", 16, 8192, "image height"),                                                    \
+        CLI_INT("threads", "T", 1, 1024, "threads for the parallel figures (default: all cores)"),          \
+        CLI_INT("repeats", "R", 1, 100, "passes per figure")
 #define CLI_END {.kind = CLI_KIND_END}
 
 typedef struct {

@@ -1,6 +1,6 @@
 /* gtlab bench: throughput figures and their ratios, measured in one run
- * (studies/ray_throughput.h, studies/specular_occlusion_bench.h); here the
- * options, the dispatch to the techniques' benchmarks and the printing. */
+ * (studies/ray_throughput.h); here the options, the dispatch to the
+ * techniques' benchmarks and the printing. */
 #define _GNU_SOURCE
 #include <stdio.h>
 #include <string.h>
@@ -9,14 +9,9 @@
 #include "cli/cli_options.h"
 #include "cli/technique.h"
 #include "studies/ray_throughput.h"
-#include "studies/specular_occlusion_bench.h"
 #include "core/threads.h"
 
-static const cli_option options[] = {
-    CLI_STRING("scene", "S", "builtin:NAME or a glTF file"), CLI_INT("width", "W", 16, 8192, "image width"),
-    CLI_INT("height", "H", 16, 8192, "image height"),
-    CLI_INT("threads", "T", 1, 1024, "threads for the parallel figures (default: all cores)"),
-    CLI_INT("repeats", "R", 1, 100, "passes per figure"), CLI_END};
+static const cli_option options[] = {CLI_BENCH_VIEW, CLI_END};
 static const cli_command command = {
     "bench",
     "'gtlab bench rays' measures, in one run, on the same scene, camera and machine:\n"
@@ -51,32 +46,24 @@ static void print_rays(const ray_throughput_result *r)
     printf("%-34s %14s %14.3f\n", "speed-up threads / 1 thread (raw)", "", r->speedup_raw);
 }
 
-static void print_specular_occlusion(const char *spec, int repeats, const specular_occlusion_bench_result *r)
-{
-    printf("specular-occlusion reference on %s, %dx%d, %d spp, roughness %.1f (best of %d)\n", spec, r->width,
-           r->height, SPECOCC_BENCH_SPP, SPECOCC_BENCH_ROUGHNESS, repeats);
-    printf("%-34s %14s %14s\n", "", "1 thread", "threads");
-    printf("%-34s %14.3e %14.3e\n", "samples/s", r->samples_per_s[0], r->samples_per_s[1]);
-    printf("%-34s %14.3e %14.3e\n", "rays/s (one ray per sample above)", r->rays_per_s[0], r->rays_per_s[1]);
-    printf("%-34s %14s %14.3f\n", "speed-up threads / 1 thread", "", r->samples_per_s[1] / r->samples_per_s[0]);
-}
-
-/* `gtlab bench rays` or `gtlab bench specular-occlusion`, measured and printed. */
-static int run_named(int specular, const char *spec, int width, int height, int threads, int repeats)
+/* `gtlab bench rays`, measured and printed. */
+static int run_rays(const char *spec, int width, int height, int threads, int repeats)
 {
     gt_error e;
-    if (specular) {
-        specular_occlusion_bench_result r;
-        if (specular_occlusion_bench_run(spec, width, height, threads, repeats, &r, &e) != 0)
-            return cli_fail(&e);
-        print_specular_occlusion(spec, repeats, &r);
-    } else {
-        ray_throughput_result r;
-        if (ray_throughput_measure(spec, width, height, threads, repeats, &r, &e) != 0)
-            return cli_fail(&e);
-        print_rays(&r);
-    }
+    ray_throughput_result r;
+    if (ray_throughput_measure(spec, width, height, threads, repeats, &r, &e) != 0)
+        return cli_fail(&e);
+    print_rays(&r);
     return EXIT_OK;
+}
+
+/* The index in registered[] of the technique's benchmark `name`, or -1. */
+static int registered_index(const cli_subcommand *registered, size_t count, const char *name)
+{
+    for (size_t i = 0; i < count; ++i)
+        if (strcmp(name, registered[i].name) == 0)
+            return (int)i;
+    return -1;
 }
 
 int verb_bench(int argc, char **argv)
@@ -84,11 +71,11 @@ int verb_bench(int argc, char **argv)
     /* The techniques' own benchmarks, each with its options (cli/techniques.c). */
     cli_subcommand registered[32];
     size_t count = technique_subcommands(VERB_BENCH, registered, 32);
-    for (size_t i = 0; argc >= 2 && i < count; ++i)
-        if (strcmp(argv[1], registered[i].name) == 0) {
-            cli_reset_getopt();
-            return registered[i].run(argc - 1, argv + 1);
-        }
+    int at = argc >= 2 ? registered_index(registered, count, argv[1]) : -1;
+    if (at >= 0) {
+        cli_reset_getopt();
+        return registered[at].run(argc - 1, argv + 1);
+    }
     const char *scene_spec = "builtin:menger";
     long width = 256, height = 256, threads = threads_default(), repeats = 3;
     cli_arguments name;
@@ -98,9 +85,18 @@ int verb_bench(int argc, char **argv)
         return status;
     if (name.count > 1)
         return cli_failf("bench", "unexpected argument '%s'", name.values[1]);
-    int specular = name.count == 1 && strcmp(name.values[0], "specular-occlusion") == 0;
-    if (name.count == 0 || (strcmp(name.values[0], "rays") != 0 && !specular))
+    /* A technique's benchmark named after options of this table (`gtlab bench
+     * --scene S specular-occlusion`; the parse moved the name last): run as if
+     * named first. */
+    if (name.count == 1 && (at = registered_index(registered, count, name.values[0])) >= 0) {
+        char *named = argv[argc - 1];
+        memmove(argv + 2, argv + 1, (size_t)(argc - 2) * sizeof *argv);
+        argv[1] = named;
+        cli_reset_getopt();
+        return registered[at].run(argc - 1, argv + 1);
+    }
+    if (name.count == 0 || strcmp(name.values[0], "rays") != 0)
         return cli_failf("bench", "name a benchmark: rays, specular-occlusion, gtao, multibounce, fit, sphere-light, "
                                   "convergence or env-diffuse (see 'gtlab bench --help')");
-    return run_named(specular, scene_spec, (int)width, (int)height, (int)threads, (int)repeats);
+    return run_rays(scene_spec, (int)width, (int)height, (int)threads, (int)repeats);
 }

@@ -11,8 +11,8 @@
 #include "cli/cli_options.h"
 #include "scene/builtin_scene_family.h"
 #include "scene/builtin_scenes.h"
-#include "scene/gltf_reader.h"
-#include "scene/gltf_writer.h"
+#include "scene/gltf/gltf_reader.h"
+#include "scene/gltf/gltf_writer.h"
 #include "scene/scene_describe.h"
 #include "scene/scene_loaders.h"
 

@@ -1,12 +1,12 @@
 /* gtlab shader run: a user's screen-space GLSL/HLSL on Vulkan over a G-buffer
- * (docs/shaders.md; the work is studies/shader_run.c), optionally scored. */
+ * (docs/shaders.md; the work is techniques/shader/shader_run.c), optionally scored. */
 #include <stdio.h>
 
 #include "cli/cli.h"
 #include "cli/cli_options.h"
 #include "cli/subcommands.h"
-#include "studies/shader_scores.h"
-#include "studies/shader_run.h"
+#include "shader/shader_run.h"
+#include "shader/shader_scores.h"
 
 enum { MAX_PARAMS = 64 };
 

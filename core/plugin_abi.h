@@ -9,11 +9,11 @@
  * the version of its signature (a changed signature gets a new name; gtlab
  * keeps loading the old ones):
  *
- *   gtlab_multibounce_v1   GTAOMultiBounce's quantity (realtime/multibounce.h):
+ *   gtlab_multibounce_v1   GTAOMultiBounce's quantity (techniques/multibounce/multibounce.h):
  *                          V'_d from the visibility V_d and one colour
  *                          channel's albedo rho, for `count` samples
  *   gtlab_specular_occlusion_v1
- *                          specular occlusion V_s (realtime/specular_occlusion.h)
+ *                          specular occlusion V_s (specular_occlusion/specular_occlusion.h)
  *                          from the cosine-weighted AO, the angle beta
  *                          (radians) between the bent normal and the
  *                          reflection vector, the perceptual roughness

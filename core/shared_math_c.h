@@ -1,9 +1,9 @@
 /* The C meaning of the dialect in which core/spherical_caps.inc,
- * core/spherical_gaussian.inc, realtime/specular_occlusion.inc and
- * realtime/specular_occlusion_sg.inc are written (the common subset of C, HLSL
+ * core/spherical_gaussian.inc, specular_occlusion/specular_occlusion.inc and
+ * specular_occlusion/specular_occlusion_sg.inc are written (the common subset of C, HLSL
  * and GLSL): C computes in double, with the library's fmin/fmax/fabs; the
  * shaders that embed the same text define the same names for float
- * (realtime/specular_occlusion_shader.c). */
+ * (specular_occlusion/specular_occlusion_shader.c). */
 #ifndef GTLAB_CORE_SHARED_MATH_C_H
 #define GTLAB_CORE_SHARED_MATH_C_H
 

@@ -1,6 +1,6 @@
 /* An example gtlab plug-in (core/plugin_abi.h): GTAOMultiBounce with the
  * talk's coefficients (Jimenez et al. 2016, "Shader Code"), evaluated as
- * realtime/multibounce.inc evaluates it in C (double, the same order of
+ * techniques/multibounce/multibounce.inc evaluates it in C (double, the same order of
  * operations), so gtlab scores it exactly as its own built-in function
  * (tests/plugins/test_plugin_loader.c). Build it as a shared library:
  *   cc -std=c11 -O2 -ffp-contract=off -shared -fPIC -I<gtlab> multibounce_plugin.c -o libmultibounce.so */

@@ -1,9 +1,10 @@
 /* An example gtlab specular-occlusion plug-in (core/plugin_abi.h): Lagarde
  * and de Rousiers 2014 ("Moving Frostbite to PBR", listing 26),
  *   V_s = saturate((n.v + ao)^(2^(-16 alpha - 1)) - 1 + ao),  alpha = roughness^2,
- * evaluated as realtime/specular_occlusion.inc evaluates so_lagarde in C
+ * evaluated as specular_occlusion/specular_occlusion.inc evaluates so_lagarde in C
  * (double, the same order of operations and libm calls), so gtlab scores it
- * exactly as its own "lagarde" variant (tests/gpu/test_gpu_so_function_score.c).
+ * exactly as its own "lagarde" variant
+ * (techniques/shader/tests/test_gpu_so_function_score.c).
  * beta is unused: Lagarde's form has no bent normal. Build it as a shared library:
  *   cc -std=c11 -O2 -ffp-contract=off -shared -fPIC -I<gtlab> specular_occlusion_plugin.c -o libso.so -lm */
 #include <math.h>

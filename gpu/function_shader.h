@@ -36,7 +36,7 @@ enum { GPU_FUNCTION_MAX_INPUTS = 4 };
 extern const gpu_function_contract gpu_function_multibounce;
 /* float gtlab_specular_occlusion(float ao, float beta, float roughness, float n_dot_v): V_s from the cosine AO,
  * the angle between the bent normal and the reflection vector, the perceptual roughness and n.v
- * (realtime/specular_occlusion_screen.h's per-pixel inputs). */
+ * (specular_occlusion/specular_occlusion_screen.h's per-pixel inputs). */
 extern const gpu_function_contract gpu_function_specular_occlusion;
 
 /* Whether `text` names contract c's function (a file may implement several quantities). */

@@ -33,7 +33,7 @@ static const reference_option environment_option = {
     .name = "environment",
     .value = "E",
     .help = "white (default) or sky, which adds the\n"
-            "two- vs three-split channels (docs/decisions.md, the sky);",
+            "two- vs three-split channels (techniques/specular_occlusion/README.md);",
     .parse = parse_environment,
 };
 

@@ -10,7 +10,7 @@
 #include <stdio.h>
 
 #include "scene/builtin_scenes.h"
-#include "scene/gltf_reader.h"
+#include "scene/gltf/gltf_reader.h"
 
 void builtin_scene_describe(FILE *f, const builtin_scene *b);
 void scene_describe(FILE *f, const scene *s);

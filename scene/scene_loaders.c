@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "scene/builtin_scenes.h"
-#include "scene/gltf_reader.h"
+#include "scene/gltf/gltf_reader.h"
 
 typedef struct {
     const char *prefix;    /* the spec starts with it ("" for any); removed before loading */

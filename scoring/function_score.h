@@ -2,7 +2,7 @@
  * quantity (issue 15, items 3, 5 and 6): `gtlab shader score` and the stage
  * shader-scores of `gtlab all --project`.
  *
- * A quantity's user (studies/multibounce_score.h, studies/specular_occlusion_score.h)
+ * A quantity's user (multibounce/multibounce_score.h, specular_occlusion/specular_occlusion_score.h)
  * supplies what is its own: its function contract and plug-in entry point
  * (function_score_quantity), its references, its built-in variants, how a
  * variant is scored against a reference and the noise floor. This scorer

@@ -2,12 +2,12 @@
  * docs/gtlab.schema.json): the user's scenes, each with one or more
  * cameras, and what `gtlab all --project` runs on them — its stages, quality
  * and output folder — with the user's shaders and plug-ins (validated,
- * recorded, scored by studies/shader_scores.h) and screen-space shaders
- * (compiled, scored by studies/screen_shader_score.h). Paths in the file are
- * relative to the file's folder. Keys starting with '_' are comments; any
- * other unknown key is an error, as is every problem, named by the file and
- * the JSON path of the value at fault ("gtlab.json: scenes[0].cameras[1].gltf:
- * no camera named 'Top'"). */
+ * recorded, scored by techniques/shader/shader_scores.h) and screen-space
+ * shaders (compiled, scored by techniques/shader/screen_shader_score.h).
+ * Paths in the file are relative to the file's folder. Keys starting with
+ * '_' are comments; any other unknown key is an error, as is every
+ * problem, named by the file and the JSON path of the value at fault
+ * ("gtlab.json: scenes[0].cameras[1].gltf: no camera named 'Top'"). */
 #ifndef GTLAB_STUDIES_STUDY_PROJECT_H
 #define GTLAB_STUDIES_STUDY_PROJECT_H
 

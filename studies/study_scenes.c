@@ -4,7 +4,7 @@
 #include <string.h>
 
 #include "scene/builtin_scenes.h"
-#include "scene/gltf_reader.h"
+#include "scene/gltf/gltf_reader.h"
 #include "scene/scene_loaders.h"
 
 const study_scene_list *study_scenes_builtin(void)

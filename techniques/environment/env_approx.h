@@ -7,14 +7,14 @@
  *   ao-n              E(n) / pi AO                    (AO x the pre-convolved probe)
  *   ao-bent           E(b) / pi AO                    (b the unit bent normal)
  *   multibounce-n     E(n) / pi G(AO, rho)            (G: the GTAO multi-bounce function,
- *   multibounce-bent  E(b) / pi G(AO, rho)             realtime/multibounce.h, per channel)
+ *   multibounce-bent  E(b) / pi G(AO, rho)             techniques/multibounce/multibounce.h, per channel)
  * with E the irradiance from 9 SH coefficients (environment/sh_irradiance.h) or the
  * exact irradiance map (environment/irradiance_map.h);
  *
  * specular (GGX, F0 per channel), the split sum times a specular occlusion
  *   P(R, r) (F0 A(n.v, r) + B(n.v, r)) V_s
  * (environment/prefiltered_radiance.h, luts/dfg_lut.h), V_s = 1 unoccluded or one
- * variant of realtime/specular_occlusion_screen.h (AO as V_s, Lagarde,
+ * variant of specular_occlusion/specular_occlusion_screen.h (AO as V_s, Lagarde,
  * cone/cone, the GTSO cone/lobe LUT).
  *
  * The talk's claim (Jimenez et al. 2016, seed 001): AO x a pre-convolved
@@ -29,7 +29,7 @@
 #include "environment/irradiance_map.h"
 #include "environment/prefiltered_radiance.h"
 #include "environment/sh_irradiance.h"
-#include "realtime/multibounce.h"
+#include "multibounce/multibounce.h"
 
 typedef enum { ENV_IRRADIANCE_SH9, ENV_IRRADIANCE_MAP, ENV_IRRADIANCE_SOURCES } env_irradiance_source;
 

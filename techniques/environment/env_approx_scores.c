@@ -13,7 +13,7 @@
 #include "metrics/image_error.h"
 #include "metrics/noise_corrected.h"
 #include "metrics/ssim.h"
-#include "studies/specular_occlusion_inputs.h"
+#include "specular_occlusion/specular_occlusion_inputs.h"
 
 /* Scratch planes of one case: approximations (occluded, unoccluded), the
  * occlusion part's mix, and two luminance planes. */

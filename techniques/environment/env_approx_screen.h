@@ -1,6 +1,6 @@
 /* The ambient combinations of environment/env_approx.h as a screen pass: from
  * the G-buffer and AO / bent-normal buffers a shader has (the buffers of
- * realtime/specular_occlusion_screen.h, plus the albedo) into RGB images,
+ * specular_occlusion/specular_occlusion_screen.h, plus the albedo) into RGB images,
  * one float plane per channel, 0 outside the mask.
  *
  *   v = normalize(eye - P),  R = 2 (n.v) n - v,  n.v clamped to >= 0;
@@ -11,7 +11,7 @@
 #define GTLAB_ENVIRONMENT_ENV_APPROX_SCREEN_H
 
 #include "environment/env_approx.h"
-#include "realtime/specular_occlusion_screen.h"
+#include "specular_occlusion/specular_occlusion_screen.h"
 
 /* Diffuse outgoing radiance per unit albedo of one kind into out[3] (planes
  * of width x height). */

@@ -19,7 +19,7 @@
  * occlusion variant (AO as V_s, Lagarde, cone/cone with the talk's exp2
  * aperture, the GTSO cone/lobe LUT 32^3, cone/cone normalised above the
  * horizon, the spherical-Gaussian cone/lobe product of Unity HDRP,
- * realtime/specular_occlusion_sg.h). The one-bounce combinations are scored against the direct
+ * specular_occlusion/specular_occlusion_sg.h). The one-bounce combinations are scored against the direct
  * diffuse reference, the multi-bounce ones against the reference with
  * inter-reflections.
  *

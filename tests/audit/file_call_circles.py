@@ -31,8 +31,6 @@ import sys
 
 # Each circle as the sorted files it joins, relative to the repository.
 KNOWN = [
-    # the glTF adapter's three C++ files (scene/)
-    ["scene/gltf_accessors.cpp", "scene/gltf_primitive.cpp", "scene/gltf_reader.cpp"],
 ]
 
 

@@ -1,17 +1,17 @@
 /* Fuzz target "fit_inputs": an EXR file (the input is its bytes) as each
  * fit reads its inputs before fitting: a multi-bounce reference
- * (`gtlab fit multibounce --data`, fitters/fit_multibounce.h), a
+ * (`gtlab fit multibounce --data`, techniques/multibounce/multibounce_fit.h), a
  * specular-occlusion reference with its AO (`gtlab fit aperture`; here the
- * same file is both, studies/specular_occlusion_inputs.h), and a G-buffer
+ * same file is both, specular_occlusion/specular_occlusion_inputs.h), and a G-buffer
  * with its camera (`gtlab fit gtao-params` and `gtlab approx`,
  * studies/gbuffer_input.h). The fits themselves run on what these accept. */
 #include "core/exr_io.h"
 #include "core/reference_schema.h"
-#include "fitters/aperture_fit.h"
-#include "fitters/fit_multibounce.h"
+#include "multibounce/multibounce_fit.h"
+#include "specular_occlusion/aperture_fit.h"
 #include "fuzz_target.h"
 #include "studies/gbuffer_input.h"
-#include "studies/specular_occlusion_inputs.h"
+#include "specular_occlusion/specular_occlusion_inputs.h"
 
 static void read_as_fit_inputs(const image *img)
 {

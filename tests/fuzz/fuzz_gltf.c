@@ -4,7 +4,7 @@
  * images, sparse and quantized accessors, strips and fans, morph targets and
  * skins, the EXT_meshopt_compression and KHR_draco_mesh_compression decoders
  * (seeds: plane-meshopt.glb, draco.glb, strip-sparse.gltf, morph-skin.gltf),
- * the flattening of the node tree and scene_validate (scene/gltf_reader.h).
+ * the flattening of the node tree and scene_validate (scene/gltf/gltf_reader.h).
  * External buffers and images are looked up in a folder that does not
  * exist. What loads is then used as a render would use it: its bounds, the
  * automatic camera framing them, and each mesh's material at its
@@ -13,7 +13,7 @@
 
 #include "fuzz_target.h"
 #include "scene/camera.h"
-#include "scene/gltf_reader.h"
+#include "scene/gltf/gltf_reader.h"
 #include "scene/material_lookup.h"
 
 static void use_scene(const scene *s)

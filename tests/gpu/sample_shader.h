@@ -1,8 +1,8 @@
 /* The compute shader that wraps generated functions for gpu/sample_map.h
  * (its bindings: count, inputs v[], outputs r[]): `functions`, then `body`
  * once per sample i < count. Shared by the tests that run gtlab's generated
- * GLSL and HLSL against the C (tests/gpu/test_gpu_generated_shaders.c,
- * tests/gpu/test_gpu_specular_occlusion.c). */
+ * GLSL and HLSL against the C (techniques/multibounce/tests/test_multibounce_gpu.c,
+ * techniques/specular_occlusion/tests/test_gpu_specular_occlusion.c). */
 #ifndef GTLAB_TESTS_GPU_SAMPLE_SHADER_H
 #define GTLAB_TESTS_GPU_SAMPLE_SHADER_H
 

@@ -17,7 +17,8 @@
  * x = saturate(u) N - 0.5 is two correctly rounded operations (Vulkan's +,
  * *), <= 2 u N each side: s = 4 N. LTC's first axis adds sqrt(1 - n.v)
  * (Vulkan: 1 / inversesqrt, taken as 16 u relative as in
- * test_gpu_specular_occlusion.c), times N: s = 20 N. */
+ * techniques/specular_occlusion/tests/test_gpu_specular_occlusion.c), times
+ * N: s = 20 N. */
 #define _GNU_SOURCE
 #include "dfg/dfg_lut_writers.h"
 #include "ltc/ltc_ggx.h"

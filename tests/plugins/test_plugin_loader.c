@@ -11,9 +11,9 @@
 
 #include "metrics/image_error.h"
 #include "metrics/ssim.h"
+#include "multibounce/multibounce.h"
+#include "multibounce/multibounce_study.h" /* multibounce_apply_model: where gtlab applies its own */
 #include "plugins/plugin_loader.h"
-#include "realtime/multibounce.h"
-#include "studies/multibounce.h" /* multibounce_apply_model: where gtlab applies its own */
 #include "tests/check.h"
 
 enum { W = 96, H = 64, N = W * H };

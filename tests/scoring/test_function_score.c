@@ -10,8 +10,8 @@
 #include <string.h>
 
 #include "core/plugin_abi.h"
-#include "realtime/multibounce.h"
-#include "studies/multibounce.h" /* multibounce_apply_model: where gtlab applies its own */
+#include "multibounce/multibounce.h"
+#include "multibounce/multibounce_study.h" /* multibounce_apply_model: where gtlab applies its own */
 #include "scoring/function_score.h"
 #include "tests/check.h"
 

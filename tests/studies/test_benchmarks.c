@@ -5,9 +5,7 @@
 #include <string.h>
 
 #include "studies/ao_convergence.h"
-#include "studies/multibounce_bench.h"
 #include "studies/ray_throughput.h"
-#include "studies/specular_occlusion_bench.h"
 #include "tests/check.h"
 
 static void test_ray_throughput(void)
@@ -51,36 +49,9 @@ static void test_ao_convergence(void)
     }
 }
 
-static void test_specular_occlusion(void)
-{
-    specular_occlusion_bench_result r;
-    gt_error e;
-    CHECK(specular_occlusion_bench_run("builtin:corner", 16, 12, 2, 1, &r, &e) == 0);
-    CHECK(r.width == 16 && r.height == 12);
-    for (int t = 0; t < 2; ++t)
-        CHECK(r.samples_per_s[t] > 0.0 && r.rays_per_s[t] > 0.0 && r.rays_per_s[t] <= r.samples_per_s[t]);
-    CHECK(specular_occlusion_bench_run("builtin:no-such-scene", 16, 16, 1, 1, &r, &e) == -1);
-}
-
-static void test_multibounce(void)
-{
-    multibounce_settings settings = {0};
-    settings.bounces = 2;
-    multibounce_benchmark b;
-    gt_error e;
-    CHECK(multibounce_parse_albedos("0.2,0.8", &settings, &e) == 0);
-    CHECK(multibounce_bench_run("builtin:corner", 16, 16, &settings, 2, 2, 1, &b, &e) == 0);
-    CHECK(b.spp == 2 && b.threads == 2 && b.raw_rays > 0);
-    for (int t = 0; t < 2; ++t)
-        CHECK(b.paths_per_s[t] > 0.0 && b.rays_per_s[t] >= b.paths_per_s[t]);
-    CHECK(multibounce_bench_run("builtin:no-such-scene", 16, 16, &settings, 2, 1, 1, &b, &e) == -1);
-}
-
 int main(void)
 {
     test_ray_throughput();
     test_ao_convergence();
-    test_specular_occlusion();
-    test_multibounce();
     return check_report("studies_benchmarks");
 }

@@ -9,8 +9,8 @@
 #include "anti_aliasing/frames_render.h"
 #include "scene/builtin_scenes.h"
 #include "scene/camera_path.h"
-#include "scene/gltf_reader.h"
-#include "scene/gltf_writer.h"
+#include "scene/gltf/gltf_reader.h"
+#include "scene/gltf/gltf_writer.h"
 #include "scene/material_lookup.h"
 #include "tests/check.h"
 

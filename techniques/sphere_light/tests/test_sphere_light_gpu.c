@@ -3,7 +3,7 @@
  * and HLSL (sphere_light_shader.h), wrapped into a compute shader, run on
  * Vulkan over a dense grid of inputs and compared with the C they were
  * generated from (the multi-bounce functions':
- * tests/gpu/test_gpu_generated_shaders.c).
+ * techniques/multibounce/tests/test_multibounce_gpu.c).
  *
  * The bound (docs/decisions.md, "Shaders on Vulkan"), u = 2^-24: the C is
  * float too (sphere_light.inc compiled as C), ~60 operations with square

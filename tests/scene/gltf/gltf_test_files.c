@@ -9,7 +9,7 @@
 #include <unistd.h>
 
 #include "../../check.h"
-#include "scene/gltf_reader.h"
+#include "scene/gltf/gltf_reader.h"
 
 const char *tmp_path(const char *name)
 {

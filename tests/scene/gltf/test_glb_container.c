@@ -1,4 +1,4 @@
-/* The GLB container (scene/glb_container.h): a well-formed file splits into
+/* The GLB container (scene/gltf/glb_container.h): a well-formed file splits into
  * chunks that lie inside it; every cut of it, and every length field that
  * points past the bytes there, is refused with one line. Among them the
  * file tinygltf 2.7.0 reads 8 bytes past: a BIN chunk whose data would end
@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "scene/glb_container.h"
+#include "scene/gltf/glb_container.h"
 #include "tests/check.h"
 
 enum { JSON_LENGTH = 28, BIN_LENGTH = 8, FILE_LENGTH = 12 + 8 + JSON_LENGTH + 8 + BIN_LENGTH };

@@ -17,8 +17,8 @@
 #include <string.h>
 
 #include "gltf_test_files.h"
-#include "scene/accessor_decode.h"
-#include "scene/gltf_reader.h"
+#include "scene/gltf/accessor_decode.h"
+#include "scene/gltf/gltf_reader.h"
 #include "tests/check.h"
 
 typedef struct {

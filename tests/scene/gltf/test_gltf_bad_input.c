@@ -13,7 +13,7 @@
 
 #include "../../check.h"
 #include "gltf_test_files.h"
-#include "scene/gltf_reader.h"
+#include "scene/gltf/gltf_reader.h"
 
 #define ASSIMP "/usr/share/assimp/models/glTF2/"
 

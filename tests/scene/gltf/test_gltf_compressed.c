@@ -21,7 +21,7 @@
 
 #include "gltf_equivalence.h"
 #include "gltf_test_files.h"
-#include "scene/gltf_reader.h"
+#include "scene/gltf/gltf_reader.h"
 #include "tests/check.h"
 
 #define MODELS "/usr/share/assimp/models/glTF2/"

@@ -11,7 +11,7 @@
 
 #include "raytracer/reference_render.h"
 #include "scene/builtin_scenes.h"
-#include "scene/gltf_writer.h"
+#include "scene/gltf/gltf_writer.h"
 #include "scene/scene_loaders.h"
 #include "tests/check.h"
 #include "tests/scene/gltf/gltf_test_files.h"

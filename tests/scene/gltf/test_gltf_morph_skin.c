@@ -1,5 +1,5 @@
 /* Morph targets and skins in the default pose (glTF 2.0, "Morph Targets",
- * "Skins"; scene/vertex_pose.h), on tiny files written here:
+ * "Skins"; scene/gltf/vertex_pose.h), on tiny files written here:
  *  - a triangle with one morph target of weight 1 (from the mesh, or from
  *    the node overriding the mesh's 0) loads to the same bits as the file
  *    whose positions are the target's (base + delta) and whose normal is the
@@ -18,7 +18,7 @@
 #include <string.h>
 
 #include "gltf_test_files.h"
-#include "scene/gltf_reader.h"
+#include "scene/gltf/gltf_reader.h"
 #include "tests/check.h"
 
 typedef struct {

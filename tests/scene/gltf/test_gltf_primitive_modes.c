@@ -1,5 +1,5 @@
 /* Triangle strips and fans (glTF 2.0, "Primitive topology";
- * scene/primitive_topology.h):
+ * scene/gltf/primitive_topology.h):
  *  - the triangulation itself: counts n - 2, the spec's corner formulas
  *    written out by hand for n = 5, and every triangle of a zig-zag strip and
  *    of a convex fan in the z = 0 plane facing +z like the first (the strip's
@@ -18,8 +18,8 @@
 #include <sys/stat.h>
 
 #include "raytracer/reference_render.h"
-#include "scene/gltf_reader.h"
-#include "scene/primitive_topology.h"
+#include "scene/gltf/gltf_reader.h"
+#include "scene/gltf/primitive_topology.h"
 #include "tests/check.h"
 
 #define MODES "/usr/share/assimp/models/glTF2/glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_"

@@ -19,7 +19,7 @@
 
 #include "gltf_equivalence.h"
 #include "gltf_test_files.h"
-#include "scene/gltf_reader.h"
+#include "scene/gltf/gltf_reader.h"
 #include "tests/check.h"
 
 #define ENGINE "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb"

@@ -11,8 +11,8 @@
 
 #include "../../check.h"
 #include "gltf_test_files.h"
-#include "scene/gltf_reader.h"
-#include "scene/gltf_writer.h"
+#include "scene/gltf/gltf_reader.h"
+#include "scene/gltf/gltf_writer.h"
 
 static const float quad_positions[] = {0, 0, 0, 2, 0, 0, 2, 0, -3, 0, 0, -3};
 static const float quad_texcoords[] = {0, 0, 1, 0, 1, 1, 0, 1};

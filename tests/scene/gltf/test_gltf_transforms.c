@@ -23,7 +23,7 @@
 
 #include "../../check.h"
 #include "gltf_test_files.h"
-#include "scene/gltf_reader.h"
+#include "scene/gltf/gltf_reader.h"
 
 enum { NONE = 0, U8 = 5121, U16 = 5123, U32 = 5125, F32 = 5126 };
 

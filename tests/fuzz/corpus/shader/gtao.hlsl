@@ -1,8 +1,9 @@
 // GTAO (Jimenez et al. 2016) as gtlab runs it in C (realtime/gtao.c), under
 // gtlab's screen-space contract (docs/shaders.md), in HLSL. The technique is
 // shaders/gtao.inc, shared with shaders/gtao.glsl; this file holds only the
-// bindings, the declarations and the dialect. tests/gpu/test_gpu_screen_pass.c
-// compares both with the C gtao_frame.
+// bindings, the declarations and the dialect.
+// techniques/shader/tests/test_gpu_screen_pass.c compares both with the C
+// gtao_frame.
 //
 // gtlab.param radius 1.0
 // gtlab.param falloff 0.25
