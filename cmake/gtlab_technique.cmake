@@ -179,3 +179,35 @@ function(gtlab_technique)
     set_property(GLOBAL APPEND PROPERTY GTLAB_TECHNIQUE_LIBRARIES ${top})
   endif()
 endfunction()
+
+# The render registry's quantities in order (techniques/CMakeLists.txt,
+# docs/render-quantities.md): those of `order` first, then the rest of
+# `shared` and of the techniques' QUANTITIES (in the order of `techniques`).
+# A quantity declared twice (by two techniques, or by one and `shared`) or
+# one `order` names that nobody declares is a configure error.
+function(gtlab_render_quantity_list out_var techniques shared order)
+  set(declared ${shared})
+  foreach(name IN LISTS techniques)
+    get_property(quantities GLOBAL PROPERTY GTLAB_TECHNIQUE_QUANTITIES_${name})
+    foreach(quantity IN LISTS quantities)
+      if(quantity IN_LIST declared)
+        message(FATAL_ERROR "techniques/${name}: QUANTITIES ${quantity}, which is declared twice "
+                            "(by another technique, or in GTLAB_SHARED_QUANTITIES)")
+      endif()
+      list(APPEND declared ${quantity})
+    endforeach()
+  endforeach()
+  set(ordered)
+  foreach(quantity IN LISTS order)
+    if(NOT quantity IN_LIST declared)
+      message(FATAL_ERROR "GTLAB_QUANTITY_ORDER names ${quantity}, which no technique declares")
+    endif()
+    list(APPEND ordered ${quantity})
+  endforeach()
+  foreach(quantity IN LISTS declared)
+    if(NOT quantity IN_LIST ordered)
+      list(APPEND ordered ${quantity})
+    endif()
+  endforeach()
+  set(${out_var} ${ordered} PARENT_SCOPE)
+endfunction()
