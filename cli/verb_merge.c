@@ -7,6 +7,7 @@
 #include "cli/cli_options.h"
 #include "core/atomic_file.h"
 #include "core/exr_io.h"
+#include "cli/render_quantities.h"
 #include "raytracer/reference_merge.h"
 
 static const cli_option options[] = {
@@ -48,7 +49,7 @@ int verb_merge(int argc, char **argv)
         }
     image merged;
     if (status == EXIT_OK) {
-        if (reference_merge_planned(inputs, (const char *const *)files.values, count, planned, &merged, &e) != 0 ||
+        if (reference_merge_planned(render_quantities(), inputs, (const char *const *)files.values, count, planned, &merged, &e) != 0 ||
             exr_write(output, &merged, &e) != 0)
             status = cli_fail(&e);
         image_free(&merged);

@@ -6,6 +6,7 @@
 
 #include "cli/cli.h"
 #include "cli/cli_options.h"
+#include "cli/render_quantities.h"
 #include "cli/technique.h"
 #include "core/atomic_file.h"
 #include "core/exr_io.h"
@@ -43,7 +44,7 @@ typedef struct {
     const char *scene, *camera, *output;
     long width, height, seed, sample_offset;
     reference_request request;
-    /* The quantity options as given (reference_option_at(i); "" for a flag), or NULL. */
+    /* The quantity options as given (reference_option_at(render_quantities(), i); "" for a flag), or NULL. */
     const char *values[MAX_QUANTITY_OPTIONS];
     int flags[MAX_QUANTITY_OPTIONS];
 } render_options;
@@ -60,22 +61,25 @@ static void append_indented(char *help, int *k, const char *text, int indent)
  * help ("q1, q2 (required): help") into texts, from one buffer. */
 static void describe(char *help, const char *texts[MAX_QUANTITY_OPTIONS])
 {
+    const reference_registry *quantities = render_quantities();
     int k = snprintf(help, HELP_SIZE, "Renders a reference quantity at the surface seen through each pixel centre.\n"
                                       "QUANTITY:");
-    for (int i = 0; i < reference_quantity_count(); ++i) {
-        k += snprintf(help + k, HELP_SIZE - (size_t)k, "\n  %-8s  ", reference_quantity_at(i)->name);
-        append_indented(help, &k, reference_quantity_at(i)->help, 12);
+    for (int i = 0; i < reference_quantity_count(quantities); ++i) {
+        k += snprintf(help + k, HELP_SIZE - (size_t)k, "\n  %-8s  ", reference_quantity_at(quantities, i)->name);
+        append_indented(help, &k, reference_quantity_at(quantities, i)->help, 12);
     }
     cli_subcommand more[8]; /* not reference quantities: a technique's own (their options: --help) */
     for (size_t i = 0, n = technique_subcommands(VERB_RENDER, more, 8); i < n; ++i)
         k += snprintf(help + k, HELP_SIZE - (size_t)k, "\n  %-8s  %s (own options: 'gtlab render %s --help')",
                       more[i].name, more[i].summary, more[i].name);
-    for (int i = 0; i < reference_option_count() && k < HELP_SIZE - 512; ++i) {
-        const reference_option *option = reference_option_at(i);
+    for (int i = 0; i < reference_option_count(quantities) && k < HELP_SIZE - 512; ++i) {
+        const reference_option *option = reference_option_at(quantities, i);
+        char text[1024];
         texts[i] = help + ++k;
-        reference_option_owners(option, ", ", help + k, 256);
+        reference_option_owners(quantities, option, ", ", help + k, 256);
         k += (int)strlen(help + k);
-        k += snprintf(help + k, HELP_SIZE - (size_t)k, "%s: %s", option->required ? " (required)" : "", option->help);
+        reference_option_help(quantities, option, text, sizeof text);
+        k += snprintf(help + k, HELP_SIZE - (size_t)k, "%s: %s", option->required ? " (required)" : "", text);
     }
 }
 
@@ -83,24 +87,25 @@ static void describe(char *help, const char *texts[MAX_QUANTITY_OPTIONS])
  * of other quantities). */
 static int parse_quantity(const cli_arguments *args, render_options *o)
 {
+    const reference_registry *quantities = render_quantities();
     char names[512];
-    reference_quantity_names(names, sizeof names);
+    reference_quantity_names(quantities, names, sizeof names);
     if (args->count == 0)
         return cli_failf("render", "no QUANTITY given (%s; see 'gtlab render --help')", names), -1;
     reference_request *rq = &o->request;
-    if (reference_quantity_parse(args->values[0], &rq->quantity) != 0)
+    if (reference_quantity_parse(quantities, args->values[0], &rq->quantity) != 0)
         return cli_failf("render", "unknown quantity '%s' (%s)", args->values[0], names), -1;
     if (args->count > 1)
         return cli_failf("render", "unexpected argument '%s'", args->values[1]), -1;
-    if (rq->quantity->settings_size && !(rq->settings = calloc(1, rq->quantity->settings_size)))
+    if (rq->quantity->settings_size && !(rq->settings = reference_settings_new(rq->quantity)))
         return cli_failf("render", "out of memory"), -1;
     if (rq->quantity->set_defaults)
         rq->quantity->set_defaults(rq);
-    for (int i = 0; i < reference_option_count(); ++i)
+    for (int i = 0; i < reference_option_count(quantities); ++i)
         if (o->flags[i])
             o->values[i] = "";
     gt_error e;
-    return reference_options_apply(rq, o->values, "render", &e) != 0 ? (cli_fail(&e), -1) : 0;
+    return reference_options_apply(quantities, rq, o->values, "render", &e) != 0 ? (cli_fail(&e), -1) : 0;
 }
 
 /* The common options, then every quantity's; 0 to go on, else 1 and the exit status. */
@@ -112,13 +117,14 @@ static int parse_options(int argc, char **argv, render_options *o, int *status)
     sampling_settings *ss = &o->request.sampling;
     void *dest[COMMON_OPTIONS + MAX_QUANTITY_OPTIONS + 1] = {&o->scene, &o->camera, &o->width, &o->height, &ss->spp,
         &o->seed, &o->sample_offset, &ss->target_stderr, &o->request.normals, &ss->threads, &o->request.resume, &o->output};
-    int n = reference_option_count();
+    const reference_registry *quantities = render_quantities();
+    int n = reference_option_count(quantities);
     if (n > MAX_QUANTITY_OPTIONS)
         return *status = cli_failf("render", "more than %d quantity options", MAX_QUANTITY_OPTIONS), 1;
     describe(help, texts);
     memcpy(options, common_options, sizeof common_options);
     for (int i = 0; i < n; ++i) {
-        const reference_option *q = reference_option_at(i);
+        const reference_option *q = reference_option_at(quantities, i);
         options[COMMON_OPTIONS + i] = q->value ? (cli_option)CLI_STRING(q->name, q->value, texts[i])
                                                : (cli_option)CLI_FLAG(q->name, texts[i]);
         dest[COMMON_OPTIONS + i] = q->value ? (void *)&o->values[i] : (void *)&o->flags[i];

@@ -14,6 +14,11 @@
 #   SECTION     its STUDY, report/
 #   CLI         compiled into cli/ (the verbs and `gtlab all` from the registry)
 #
+# QUANTITIES d...: the render quantities its REFERENCE part defines, by their
+# descriptors (`QUANTITIES reference_quantity_fog`): `gtlab render`'s registry
+# is generated from them (techniques/CMakeLists.txt, cli/render_quantities.h),
+# so a technique adds a quantity in its folder alone.
+#
 # USES t...: the technique builds on technique t: each of its parts links t's
 # part of the same name, where t has one (a declared, one-way dependency:
 # GTSO's study uses GTAO's AO). Headers are included as "<name>/file.h"; a
@@ -130,16 +135,21 @@ function(gtlab_technique_part name part files uses)
   endif()
 endfunction()
 
-# gtlab_technique(NAME name [USES technique...] [LUTS file...] [REALTIME file...]
+# gtlab_technique(NAME name [USES technique...] [QUANTITIES descriptor...]
+#                 [LUTS file...] [REALTIME file...]
 #                 [REFERENCE file...] [FIT file...] [STUDY file...]
 #                 [SECTION file...] [CLI file...] [LINKS lib...])
 # LINKS: further libraries the technique's sources need (e.g. a Debian
 # library only it uses), linked privately by its topmost part.
 function(gtlab_technique)
-  cmake_parse_arguments(ARG "" "NAME" "USES;LUTS;REALTIME;REFERENCE;FIT;STUDY;SECTION;CLI;LINKS" ${ARGN})
+  cmake_parse_arguments(ARG "" "NAME" "USES;QUANTITIES;LUTS;REALTIME;REFERENCE;FIT;STUDY;SECTION;CLI;LINKS" ${ARGN})
   if(NOT ARG_NAME OR ARG_UNPARSED_ARGUMENTS)
-    message(FATAL_ERROR "gtlab_technique(NAME name [USES ...] [LUTS ...] ... [CLI ...]): bad arguments")
+    message(FATAL_ERROR "gtlab_technique(NAME name [USES ...] [QUANTITIES ...] [LUTS ...] ... [CLI ...]): bad arguments")
   endif()
+  if(ARG_QUANTITIES AND NOT ARG_REFERENCE)
+    message(FATAL_ERROR "gtlab_technique(NAME ${ARG_NAME}): QUANTITIES without a REFERENCE part to define them")
+  endif()
+  set_property(GLOBAL PROPERTY GTLAB_TECHNIQUE_QUANTITIES_${ARG_NAME} ${ARG_QUANTITIES})
   set(listed)
   foreach(part IN LISTS GTLAB_TECHNIQUE_PARTS ITEMS CLI)
     list(APPEND listed ${ARG_${part}})
@@ -168,4 +178,36 @@ function(gtlab_technique)
   if(top)
     set_property(GLOBAL APPEND PROPERTY GTLAB_TECHNIQUE_LIBRARIES ${top})
   endif()
+endfunction()
+
+# The render registry's quantities in order (techniques/CMakeLists.txt,
+# docs/render-quantities.md): those of `order` first, then the rest of
+# `shared` and of the techniques' QUANTITIES (in the order of `techniques`).
+# A quantity declared twice (by two techniques, or by one and `shared`) or
+# one `order` names that nobody declares is a configure error.
+function(gtlab_render_quantity_list out_var techniques shared order)
+  set(declared ${shared})
+  foreach(name IN LISTS techniques)
+    get_property(quantities GLOBAL PROPERTY GTLAB_TECHNIQUE_QUANTITIES_${name})
+    foreach(quantity IN LISTS quantities)
+      if(quantity IN_LIST declared)
+        message(FATAL_ERROR "techniques/${name}: QUANTITIES ${quantity}, which is declared twice "
+                            "(by another technique, or in GTLAB_SHARED_QUANTITIES)")
+      endif()
+      list(APPEND declared ${quantity})
+    endforeach()
+  endforeach()
+  set(ordered)
+  foreach(quantity IN LISTS order)
+    if(NOT quantity IN_LIST declared)
+      message(FATAL_ERROR "GTLAB_QUANTITY_ORDER names ${quantity}, which no technique declares")
+    endif()
+    list(APPEND ordered ${quantity})
+  endforeach()
+  foreach(quantity IN LISTS declared)
+    if(NOT quantity IN_LIST ordered)
+      list(APPEND ordered ${quantity})
+    endif()
+  endforeach()
+  set(${out_var} ${ordered} PARENT_SCOPE)
 endfunction()

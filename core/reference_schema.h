@@ -122,7 +122,7 @@
 #define CH_SPHERE_B "sphere.B"
 #define CH_SPHERE_RGB {CH_SPHERE_R, CH_SPHERE_G, CH_SPHERE_B}
 
-/* ---- Height fog (render fog; raytracer/fog_integrator.h) ---------------- */
+/* ---- Height fog (render fog; techniques/height_fog/fog_integrator.h) --- */
 /* Transmittance of the fog from the camera to the surface (closed form). */
 #define CH_FOG_T_R "fog.T.R"
 #define CH_FOG_T_G "fog.T.G"
@@ -153,7 +153,8 @@
 #define CH_AERIAL_MODEL_RGB {"aerial_model.R", "aerial_model.G", "aerial_model.B"}
 #define CH_AERIAL_CORRECTED_RGB {"aerial_model_corrected.R", "aerial_model_corrected.G", "aerial_model_corrected.B"}
 
-/* ---- Volumetric light (render volumetric-light; raytracer/volumetric_light_integrator.h) */
+/* ---- Volumetric light (render volumetric-light;
+ * techniques/volumetric_light/volumetric_light_integrator.h) ------------ */
 /* Radiance a spot or point light scatters once towards the camera through a
  * homogeneous medium, shadowed, up to the first surface. */
 #define CH_VLIGHT_L_R "vlight.L.R"
@@ -166,7 +167,7 @@
 #define CH_VLIGHT_L_ERROR_B "vlight_quadrature_error.B"
 #define CH_VLIGHT_L_ERROR_RGB {CH_VLIGHT_L_ERROR_R, CH_VLIGHT_L_ERROR_G, CH_VLIGHT_L_ERROR_B}
 /* ---- Environment lighting (render env-diffuse, env-specular;
- *      raytracer/environment_diffuse_integrator.h, environment_specular_integrator.h) */
+ *      techniques/environment/environment_{diffuse,specular}_integrator.h) */
 /* Lambertian L / albedo with visibility and --bounces inter-reflections. */
 #define CH_ENV_DIFFUSE_RGB {"env_diffuse.R", "env_diffuse.G", "env_diffuse.B"}
 /* The same, direct light only (no inter-reflection). */

@@ -1,5 +1,5 @@
 /* The unit of sphere-light radiance shared by the Monte Carlo reference
- * (raytracer/sphere_light_reference.h) and the real-time approximations
+ * (techniques/sphere_light/sphere_light_reference.h) and the real-time approximations
  * (sphere_light/sphere_light.h): the normal illuminance of a sphere of unit
  * radiance, E_perp / L_e = pi sin^2(sigma), sin(sigma) = R / d. Specular
  * values are reflected radiance per unit of it. */

@@ -1,6 +1,6 @@
 /* The lights and the medium of INSIDE's volumetric lighting (Gjoel & Svendsen,
  * GDC 2016, seed 002, "Volumetric Lighting"; issue 29), written once: the
- * single-scattering reference (raytracer/volumetric_light_integral.h) and
+ * single-scattering reference (techniques/volumetric_light/volumetric_light_integral.h) and
  * the real-time ray-march (techniques/volumetric_light/) both evaluate
  * the integrand below, so they differ only in how they integrate it and in
  * how they find the shadows.

@@ -1,6 +1,6 @@
 /* The paths of a batch of samples as a wavefront, shared by the two diffuse
  * path tracers (raytracer/multibounce_integrator.c under the white dome,
- * raytracer/environment_diffuse_integrator.c under an environment): every
+ * techniques/environment/environment_diffuse_integrator.c under an environment): every
  * live path takes one bounce before any takes the next, so each depth's
  * rays go to Embree as one stream and each dimension pair's scramble seeds
  * are derived once per batch.

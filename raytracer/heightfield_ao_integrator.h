@@ -21,6 +21,7 @@
 #ifndef GTLAB_RAYTRACER_HEIGHTFIELD_AO_INTEGRATOR_H
 #define GTLAB_RAYTRACER_HEIGHTFIELD_AO_INTEGRATOR_H
 
+#include "raytracer/reference_quantity.h"
 #include "raytracer/render_loop.h"
 
 enum { HEIGHTFIELD_LEVELS = 2 };
@@ -36,11 +37,16 @@ typedef struct {
     float thickness;    /* each pixel's slab, depth d to d + thickness; INFINITY (init's default): solid behind */
 } heightfield_settings;
 
-/* The heightfield-ao quantity's own settings block (reference_request.settings;
+/* The heightfield-ao quantity's own settings (reference_request.settings;
  * NULL there: INFINITY): `--thickness T`. */
 typedef struct {
+    reference_settings header; /* names reference_quantity_heightfield_ao */
     float thickness;
 } heightfield_ao_options;
+
+/* The settings of a render at that thickness (heightfield_ao_quantity.c;
+ * point the request's settings at .header). */
+heightfield_ao_options heightfield_ao_thickness(float thickness);
 
 /* Prepares the settings from a G-buffer (keeps a pointer to it), thickness
  * INFINITY. Returns 0, or -1 when out of memory. */

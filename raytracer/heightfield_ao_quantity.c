@@ -3,6 +3,7 @@
  * --max-distance and the settings header with ao; --thickness T makes each
  * pixel a slab of depth T (the header's settings then end in thickness=T). */
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 
 #include "core/number_parse.h"
@@ -10,9 +11,21 @@
 #include "raytracer/ao_quantity.h"
 #include "raytracer/heightfield_ao_integrator.h"
 
+_Static_assert(offsetof(heightfield_ao_options, header) == 0, "the header comes first");
+
+heightfield_ao_options heightfield_ao_thickness(float thickness)
+{
+    return (heightfield_ao_options){{QUANTITY_HEIGHTFIELD_AO}, thickness};
+}
+
+static heightfield_ao_options *options_of(const reference_request *rq)
+{
+    return (heightfield_ao_options *)reference_settings_of(rq, QUANTITY_HEIGHTFIELD_AO);
+}
+
 static float thickness_of(const reference_request *rq)
 {
-    const heightfield_ao_options *o = rq->settings;
+    const heightfield_ao_options *o = options_of(rq);
     return o ? o->thickness : INFINITY;
 }
 
@@ -21,7 +34,7 @@ static int parse_thickness(reference_request *rq, const char *value, gt_error *e
     double t;
     if (parse_real_in("--thickness", value, 1e-30, 1e30, &t, e) != 0)
         return -1;
-    ((heightfield_ao_options *)rq->settings)->thickness = (float)t;
+    options_of(rq)->thickness = (float)t;
     return 0;
 }
 
@@ -36,8 +49,8 @@ static const reference_option option_thickness = {
 static void set_defaults(reference_request *rq)
 {
     ao_quantity_set_defaults(rq);
-    if (rq->settings)
-        ((heightfield_ao_options *)rq->settings)->thickness = INFINITY;
+    if (options_of(rq))
+        options_of(rq)->thickness = INFINITY;
 }
 
 /* ao's settings (heightfield-ao has no fade), " thickness=T" appended when T is finite. */

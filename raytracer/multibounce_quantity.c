@@ -8,9 +8,9 @@
 #include <stdlib.h>
 
 #include "core/reference_schema.h"
-#include "raytracer/environment_quantity.h"
 #include "raytracer/heightfield_multibounce_integrator.h"
 #include "raytracer/reference_render.h"
+#include "raytracer/shared_options.h"
 
 static int parse_albedo(reference_request *rq, const char *value, gt_error *e)
 {
@@ -22,7 +22,7 @@ static int parse_bounces(reference_request *rq, const char *value, gt_error *e)
     return multibounce_parse_bounces(value, &rq->multibounce, e);
 }
 
-/* Shared with env-diffuse (raytracer/environment_quantity.h), which takes
+/* Shared with env-diffuse (raytracer/shared_options.h), which takes
  * one grey albedo or the scene's. */
 const reference_option reference_option_albedo = {
     .name = "albedo",

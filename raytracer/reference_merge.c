@@ -146,8 +146,8 @@ static int is_film_channel(const mc_film *film, const char *name)
     return 0;
 }
 
-static int write_merged(const image *first, const mc_film *film, const sample_block *blocks, int block_count,
-                        image *out)
+static int write_merged(const reference_registry *quantities, const image *first, const mc_film *film,
+                        const sample_block *blocks, int block_count, image *out)
 {
     if (image_init(out, first->width, first->height) != 0)
         return -1;
@@ -164,7 +164,7 @@ static int write_merged(const image *first, const mc_film *film, const sample_bl
         return -1;
     /* Derived channels (ratios) from the merged sums: the quantity's finish. */
     const char *name = image_get_attribute(first, ATTR_QUANTITY);
-    reference_quantity quantity = name ? reference_quantity_find(name) : NULL;
+    reference_quantity quantity = name ? reference_quantity_find(quantities, name) : NULL;
     if (quantity && quantity->finish && quantity->finish(out) != 0)
         return -1;
     for (int a = 0; a < first->attribute_count; ++a)
@@ -233,8 +233,8 @@ static int read_plan(const char *planned, block_plan *plan, gt_error *e)
     return 0;
 }
 
-int reference_merge_planned(const image *inputs, const char *const *names, int count, const char *planned,
-                            image *out, gt_error *e)
+int reference_merge_planned(const reference_registry *quantities, const image *inputs, const char *const *names,
+                            int count, const char *planned, image *out, gt_error *e)
 {
     memset(out, 0, sizeof *out);
     if (count < 1)
@@ -248,7 +248,7 @@ int reference_merge_planned(const image *inputs, const char *const *names, int c
     if (rc == 0)
         rc = merge_all(inputs, names, count, plan, &total, blocks, &block_count, e);
     if (rc == 0) {
-        if (write_merged(&inputs[0], &total, blocks, block_count, out) != 0)
+        if (write_merged(quantities, &inputs[0], &total, blocks, block_count, out) != 0)
             rc = gt_error_set(e, "merge", "out of memory");
         mc_film_free(&total);
     }
@@ -259,7 +259,8 @@ int reference_merge_planned(const image *inputs, const char *const *names, int c
     return rc;
 }
 
-int reference_merge(const image *inputs, const char *const *names, int count, image *out, gt_error *e)
+int reference_merge(const reference_registry *quantities, const image *inputs, const char *const *names, int count,
+                    image *out, gt_error *e)
 {
-    return reference_merge_planned(inputs, names, count, NULL, out, e);
+    return reference_merge_planned(quantities, inputs, names, count, NULL, out, e);
 }

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "core/reference_schema.h"
+#include "core/roughness_setting.h"
 #include "raytracer/render_checkpoint.h"
 #include "scene/scene_hash.h"
 
@@ -18,6 +19,15 @@ int reference_set_attributef(image *img, const char *key, const char *fmt, ...)
     vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
     return image_set_attribute(img, key, text);
+}
+
+int reference_write_roughness(image *out, float roughness, char *text, size_t size)
+{
+    snprintf(text, size, "material");
+    if (roughness_is_material(roughness))
+        return 0;
+    snprintf(text, size, "%.9g", roughness);
+    return schema_set_real(out, ATTR_ROUGHNESS, roughness);
 }
 
 /* A zeroed request (quantity NULL) renders the G-buffer. */

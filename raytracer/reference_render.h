@@ -12,28 +12,29 @@
 #include "raytracer/multibounce_integrator.h"
 #include "raytracer/reference_quantity.h"
 #include "raytracer/render_loop.h"
-#include "raytracer/sphere_light_integrator.h"
 #include "scene/scene.h"
 
-/* The built-in quantities (raytracer/<quantity>_quantity.c), by name for
- * callers: `.quantity = QUANTITY_AO`. A quantity added later needs no macro
- * here: reference_quantity_find("name") names it. */
+/* The quantities defined in raytracer/<quantity>_quantity.c, by name for
+ * callers: `.quantity = QUANTITY_AO`. A technique's quantity is declared by
+ * its reference part (e.g. techniques/sphere_light/sphere_light_quantity.h). */
 extern const reference_quantity_descriptor reference_quantity_gbuffer, reference_quantity_ao,
-    reference_quantity_multibounce, reference_quantity_heightfield_ao, reference_quantity_specular_occlusion,
-    reference_quantity_sphere_light;
+    reference_quantity_multibounce, reference_quantity_heightfield_ao, reference_quantity_heightfield_multibounce,
+    reference_quantity_specular_occlusion;
 #define QUANTITY_GBUFFER (&reference_quantity_gbuffer)
 #define QUANTITY_AO (&reference_quantity_ao)
 #define QUANTITY_MULTIBOUNCE (&reference_quantity_multibounce)
 #define QUANTITY_HEIGHTFIELD_AO (&reference_quantity_heightfield_ao)
+#define QUANTITY_HEIGHTFIELD_MULTIBOUNCE (&reference_quantity_heightfield_multibounce)
 #define QUANTITY_SPECULAR_OCCLUSION (&reference_quantity_specular_occlusion)
-#define QUANTITY_SPHERE_LIGHT (&reference_quantity_sphere_light)
 
-/* What to render. The fields after `normals` are the built-in quantities'
- * settings; a quantity added later keeps its settings in its own struct,
- * pointed at by `settings` (its descriptor's settings_size; its options fill
- * it on the command line, a caller points it at its own struct), so adding a
- * quantity changes nothing here. A zeroed request (quantity NULL) renders
- * the G-buffer. */
+/* What to render. A quantity keeps its settings in its own struct, headed by
+ * a reference_settings naming it (reference_quantity.h), pointed at by
+ * `settings` (its descriptor's settings_size: its options fill it on the
+ * command line, a caller points it at its own struct), so adding a quantity
+ * changes nothing here. The fields from max_distance to environment are the
+ * settings of ao, multibounce and specular-occlusion, which move into their
+ * own structs next (docs/render-quantities.md). A zeroed request (quantity
+ * NULL) renders the G-buffer. */
 typedef struct reference_request {
     reference_quantity quantity;
     sampling_settings sampling;
@@ -43,10 +44,10 @@ typedef struct reference_request {
                                          (raytracer/ao_integrator.h); 0: a hard cutoff */
     ao_control_variate control_variate; /* ao only: none (plain sampling) or heightfield */
     multibounce_settings multibounce; /* multibounce only: albedos, bounces */
-    sphere_light_settings sphere_light; /* sphere-light only: the light */
-    float roughness;                  /* specular-occlusion only: perceptual roughness, < 0: the material's */
+    float roughness;                  /* specular-occlusion and env-specular: a roughness setting
+                                         (core/roughness_setting.h) */
     environment_kind environment;     /* specular-occlusion only: sky adds the split-integral channels */
-    void *settings;                   /* a later quantity's own settings, or NULL */
+    reference_settings *settings;     /* the quantity's own settings (their header names it), or NULL */
     /* Where this process keeps its checkpoint (raytracer/render_checkpoint.h;
      * under mpirun each rank its own: render_checkpoint_files.h), or NULL:
      * no checkpoints. */

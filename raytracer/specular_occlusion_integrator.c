@@ -5,6 +5,7 @@
 
 #include "core/ggx.h"
 #include "core/phong.h"
+#include "core/roughness_setting.h"
 #include "core/sky_environment.h"
 #include "scene/material_lookup.h"
 #include "core/reference_schema.h"
@@ -38,7 +39,7 @@ static float pixel_alpha(const integrator *self, const pixel_context *px)
 {
     const specular_occlusion_settings *settings = self->settings;
     float r = settings->roughness;
-    if (r < 0.0f)
+    if (roughness_is_material(r))
         r = material_lookup(self->scene->source, px->surface->mesh, px->surface->uv).roughness;
     return (float)ggx_alpha(r);
 }

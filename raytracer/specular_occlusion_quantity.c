@@ -6,16 +6,15 @@
 
 #include "core/number_parse.h"
 #include "core/reference_schema.h"
-#include "raytracer/environment_quantity.h"
+#include "core/roughness_setting.h"
 #include "raytracer/reference_render.h"
+#include "raytracer/shared_options.h"
 #include "raytracer/specular_occlusion_integrator.h"
 
-/* Shared with env-diffuse and env-specular, whose environments are parsed
- * into their own settings (raytracer/environment_quantity.h). */
+/* env-diffuse and env-specular have their own --environment (their help
+ * follows this one's in `gtlab render --help`). */
 static int parse_environment(reference_request *rq, const char *value, gt_error *e)
 {
-    if (rq->quantity != QUANTITY_SPECULAR_OCCLUSION)
-        return environment_quantity_parse_environment(rq, value, e);
     if (environment_parse(value, &rq->environment) != 0)
         return gt_error_set(e, "--environment", "'%s' is neither white nor sky", value);
     return 0;
@@ -30,13 +29,11 @@ static int parse_roughness(reference_request *rq, const char *value, gt_error *e
     return 0;
 }
 
-const reference_option reference_option_environment = {
+static const reference_option environment_option = {
     .name = "environment",
     .value = "E",
     .help = "white (default) or sky, which adds the\n"
-            "two- vs three-split channels (techniques/specular_occlusion/README.md);\n"
-            "env-*: white (default), sky, sun or an equirectangular image file\n"
-            "(EXR, .hdr, ...: docs/decisions.md, \"Environment lighting\")",
+            "two- vs three-split channels (techniques/specular_occlusion/README.md);",
     .parse = parse_environment,
 };
 
@@ -50,7 +47,7 @@ const reference_option reference_option_roughness = {
 
 static void set_defaults(reference_request *rq)
 {
-    rq->roughness = -1.0f; /* the material's */
+    rq->roughness = ROUGHNESS_OF_MATERIAL;
 }
 
 static int prepare(const reference_pass *pass, void **state, integrator *it, gt_error *e)
@@ -67,12 +64,8 @@ static int prepare(const reference_pass *pass, void **state, integrator *it, gt_
 /* gtlab.roughness (when fixed) and gtlab.settings. */
 static int write_settings(const reference_request *rq, image *out)
 {
-    char roughness[32] = "material";
-    int rc = 0;
-    if (rq->roughness >= 0.0f) {
-        snprintf(roughness, sizeof roughness, "%.9g", rq->roughness);
-        rc |= schema_set_real(out, ATTR_ROUGHNESS, rq->roughness);
-    }
+    char roughness[32];
+    int rc = reference_write_roughness(out, rq->roughness, roughness, sizeof roughness);
     rc |= reference_set_attributef(out, ATTR_SETTINGS, "roughness=%s environment=%s target_stderr=%.9g", roughness,
                                    environment_name(rq->environment), rq->sampling.target_stderr);
     return rc;
@@ -90,7 +83,7 @@ const reference_quantity_descriptor reference_quantity_specular_occlusion = {
             "standard errors by the delta method. With --environment sky also\n"
             "the GTSO talk's split integrals under an analytic sky: split_truth.V\n"
             "(integral of V L f_r cos), split_two.V, split_three.V",
-    .options = (const reference_option *const[]){&reference_option_environment, &reference_option_roughness, NULL},
+    .options = (const reference_option *const[]){&environment_option, &reference_option_roughness, NULL},
     .set_defaults = set_defaults,
     .prepare = prepare,
     .release = free,

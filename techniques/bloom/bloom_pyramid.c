@@ -8,7 +8,7 @@
 #include "bloom/bloom_kernels.h"
 #include "core/reference_schema.h"
 #include "metrics/ssim.h"
-#include "studies/hdr_test_image.h"
+#include "sphere_light/sphere_light_hdr_test_image.h"
 
 enum { CHAIN_TARGET, CHAIN_NINE, CHAIN_POLICY, CHAINS };
 

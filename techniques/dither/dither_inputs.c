@@ -11,7 +11,7 @@
 #include "core/reference_schema.h"
 #include "dither/dither.h"
 #include "metrics/dither_metrics.h"
-#include "studies/hdr_test_image.h"
+#include "sphere_light/sphere_light_hdr_test_image.h"
 
 int dither_gradient(const dither_request *rq, dither_input *out, gt_error *e)
 {

@@ -20,7 +20,7 @@ int dither_gradient(const dither_request *rq, dither_input *out, gt_error *e);
 
 /* The unshadowed sphere light on builtin:sphere-on-plane, green, Reinhard
  * after scaling the 99th percentile of covered pixels to 1, sRGB-encoded
- * (the HDR image: studies/hdr_test_image.h). */
+ * (the HDR image: techniques/sphere_light/sphere_light_hdr_test_image.h). */
 int dither_render(const study_context *ctx, const dither_request *rq, dither_input *out, gt_error *e);
 
 /* In place: a separable Gaussian of sigma 1 pixel (radius 3, clamped edges). */

@@ -3,7 +3,7 @@
  *   - a smooth gradient (display values 0.20 .. 0.30 over the width: 25.5
  *     LSB of 8 bits, runs of ~20 pixels undithered);
  *   - an HDR render gtlab makes: the unshadowed sphere light over
- *     builtin:sphere-on-plane (raytracer/sphere_light_integrator.h; no rays
+ *     builtin:sphere-on-plane (techniques/sphere_light/sphere_light_integrator.h; no rays
  *     are traced), green channel, Reinhard x / (1 + x) after an exposure
  *     putting the 99th percentile at 1, then the sRGB transfer function;
  *     statistics over the pixels that see a surface (the background is 0,

@@ -11,8 +11,9 @@
 
 #include "core/environment_map.h"
 #include "core/progress.h"
-#include "raytracer/environment_light.h"
-#include "raytracer/environment_quantity.h"
+#include "core/roughness_setting.h"
+#include "environment/environment_light.h"
+#include "environment/environment_quantity.h"
 #include "raytracer/reference_render.h"
 #include "studies/study_scenes.h"
 #include "environment/env_approx_lighting.h"
@@ -106,14 +107,14 @@ static int render(const env_state *st, const scene *s, const char *spec, const c
                   const char *environment, image *out, gt_error *e)
 {
     environment_render_settings light;
-    environment_render_settings_default(&light);
+    environment_render_settings_default(&light, q);
     snprintf(light.environment, sizeof light.environment, "%s", environment ? environment : "white");
     light.f0 = 0.04f;
     reference_request req = {.quantity = q,
                              .sampling = {.spp = st->out->spp, .seed = 1, .threads = st->ctx->threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY, .roughness = -1.0f,
+                             .normals = NORMAL_SHADING, .max_distance = INFINITY, .roughness = ROUGHNESS_OF_MATERIAL,
                              .multibounce = {.scene_albedo = 1, .bounces = st->out->bounces},
-                             .settings = environment ? &light : NULL};
+                             .settings = environment ? &light.header : NULL};
     render_stats stats;
     return reference_render(s, spec, cam, &req, out, &stats, e);
 }

@@ -1,13 +1,13 @@
 /* Environment lighting (issue 28): `gtlab bench env-diffuse`, the
  * environment-lit diffuse reference's samples/s against the white-dome
- * multibounce reference on the same scene (raytracer/environment_throughput.h). */
+ * multibounce reference on the same scene (techniques/environment/environment_throughput.h). */
 #include <stdio.h>
 
 #include "cli/cli.h"
 #include "cli/cli_options.h"
 #include "cli/technique.h"
 #include "core/threads.h"
-#include "raytracer/environment_throughput.h"
+#include "environment/environment_throughput.h"
 #include "environment/env_approx_section.h"
 #include "environment/env_approx_study.h"
 

@@ -2,7 +2,7 @@
  * `gtlab approx height-fog` (the analytic fog over a G-buffer), `gtlab bench
  * fog` and the stage fog of `gtlab all` (the study, height_fog_study.h, with
  * the combination images, aerial_perspective_study.h, and their sections).
- * The references are `gtlab render fog` (raytracer/fog_quantity.c). */
+ * The references are `gtlab render fog` (techniques/height_fog/fog_quantity.c). */
 #include <stdio.h>
 
 #include "cli/cli.h"

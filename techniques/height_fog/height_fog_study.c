@@ -10,7 +10,7 @@
 #include "core/progress.h"
 #include "core/reference_schema.h"
 #include "metrics/ssim.h"
-#include "raytracer/fog_integrator.h"
+#include "height_fog/fog_integrator.h"
 #include "raytracer/reference_render.h"
 #include "height_fog/height_fog.h"
 
@@ -159,16 +159,16 @@ void height_fog_time_models(int n, height_fog_timing *cost)
 
 /* ---- The terrain cases ----------------------------------------------------- */
 
-static int render_fog(const scene *s, const camera *cam, const fog_settings *fs, int spp, int threads, image *out,
+static int render_fog(const scene *s, const camera *cam, fog_settings *fs, int spp, int threads, image *out,
                       render_stats *stats, gt_error *e)
 {
     reference_request req;
     memset(&req, 0, sizeof req);
-    req.quantity = reference_quantity_find("fog");
+    req.quantity = &reference_quantity_fog;
     req.sampling.spp = spp;
     req.sampling.seed = 16;
     req.sampling.threads = threads;
-    req.settings = (void *)fs;
+    req.settings = &fs->header;
     return reference_render(s, "builtin:terrain", cam, &req, out, stats, e);
 }
 
@@ -317,7 +317,8 @@ static int score_case(const height_fog_param *p, image *ref, const image *single
 static int run_case(const study_context *ctx, const height_fog_request *rq, const scene *s, const camera *cam,
                     int weather, int sun, height_fog_case *out, gt_error *e)
 {
-    fog_settings fs = {.sun_elevation_deg = rq->sun_elevations[sun], .scattering = FOG_MULTIPLE, .max_scatterings = 1024};
+    fog_settings fs = {.header = {&reference_quantity_fog}, .sun_elevation_deg = rq->sun_elevations[sun],
+                       .scattering = FOG_MULTIPLE, .max_scatterings = 1024};
     snprintf(fs.weather, sizeof fs.weather, "%s", weathers[weather]);
     snprintf(out->weather, sizeof out->weather, "%s", weathers[weather]);
     out->sun_elevation_deg = rq->sun_elevations[sun];
@@ -408,7 +409,8 @@ int height_fog_bench(int threads, double *rays_per_second, height_fog_timing *co
     camera cam;
     if (study_load_view("builtin:terrain", 128, 96, &s, &cam, e) != 0)
         return -1;
-    fog_settings fs = {.weather = "dense", .sun_elevation_deg = 20.0, .scattering = FOG_MULTIPLE, .max_scatterings = 1024};
+    fog_settings fs = {.header = {&reference_quantity_fog}, .weather = "dense", .sun_elevation_deg = 20.0,
+                       .scattering = FOG_MULTIPLE, .max_scatterings = 1024};
     image img;
     render_stats stats;
     int rc = render_fog(&s, &cam, &fs, 16, threads, &img, &stats, e);

@@ -1,6 +1,6 @@
 /* The height fog study (issue 16 items 2, 4, 6): the Decima talk's analytic
  * HeightFog() (height_fog/height_fog.h), published and corrected, against the
- * references of `gtlab render fog` (raytracer/fog_integrator.h) on the
+ * references of `gtlab render fog` (techniques/height_fog/fog_integrator.h) on the
  * built-in terrain, per weather (sunny, dense) and sun elevation, and the
  * regime table of single rays against the quadrature.
  *

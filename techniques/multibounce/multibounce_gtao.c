@@ -147,7 +147,7 @@ static int run_heightfield(const study_context *ctx, const reference_request *re
     snprintf(path, sizeof path, "%s/%s.exr", dir, name);
     snprintf(spec, sizeof spec, "builtin:%s", name);
     reference_request hreq = *req;
-    hreq.quantity = reference_quantity_find("heightfield-multibounce");
+    hreq.quantity = QUANTITY_HEIGHTFIELD_MULTIBOUNCE;
     scene s;
     if (scene_load(spec, &s, e) != 0)
         return -1;

@@ -6,6 +6,7 @@
 
 #include "core/exr_io.h"
 #include "core/reference_schema.h"
+#include "core/roughness_setting.h"
 #include "specular_occlusion/specular_occlusion_inputs.h"
 
 /* The output: specocc.V, mask.A, the camera and the variant in the header. */
@@ -53,7 +54,7 @@ int so_approx_from_files(const so_approx_files *f, so_variant *v, gt_error *e)
     image gbuffer, ao;
     if (exr_read(f->gbuffer, &gbuffer, e) != 0)
         return -1;
-    double roughness = f->roughness < 0.0 ? so_reference_roughness(&gbuffer) : f->roughness;
+    double roughness = roughness_is_material(f->roughness) ? so_reference_roughness(&gbuffer) : f->roughness;
     if (exr_read(f->ao, &ao, e) != 0) {
         image_free(&gbuffer);
         return -1;

@@ -11,6 +11,7 @@
 #include "core/path_name.h"
 #include "core/plugin_abi.h"
 #include "core/reference_schema.h"
+#include "core/roughness_setting.h"
 #include "specular_occlusion/specular_occlusion_study.h"
 #include "specular_occlusion/specular_occlusion_inputs.h"
 #include "studies/study_scenes.h"
@@ -59,7 +60,7 @@ static int score_row(const so_variants *vs, const image *ref, const aperture_cas
     const char *scene = image_get_attribute(ref, ATTR_SCENE);
     snprintf(row->scene, sizeof row->scene, "%s", scene ? scene : path_file_name(path));
     double roughness = so_reference_roughness(ref);
-    row->value = roughness < 0.0 ? NAN : roughness;
+    row->value = roughness_is_material(roughness) ? NAN : roughness;
     if (so_study_ratio_noise_floor(ref, path, CH_SPECOCC, &row->noise_floor_dssim, &row->noise_floor_rmse, e) != 0)
         return -1;
     const so_pixel_inputs *in = &c->inputs;

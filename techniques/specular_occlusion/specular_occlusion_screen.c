@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/roughness_setting.h"
 #include "specular_occlusion/specular_occlusion_sg.h"
 
 void so_inputs_free(so_pixel_inputs *in)
@@ -52,7 +53,7 @@ int so_inputs_compute(const so_screen_buffers *b, vec3 eye, double roughness, so
         in->mask[p] = 1.0f;
         in->ao_cosine[p] = b->ao_cosine[p];
         in->ao_uniform[p] = b->ao_uniform ? b->ao_uniform[p] : NAN;
-        in->roughness[p] = roughness >= 0.0 ? (float)roughness : b->roughness[p];
+        in->roughness[p] = (float)roughness_choose(roughness, b->roughness[p]);
     }
     if (!b->ao_uniform)
         in->ao_uniform = NULL;

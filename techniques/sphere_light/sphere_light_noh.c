@@ -1,6 +1,6 @@
 /* GetNoHSquared against the brute-force maximum of (N.H)^2 over the light
  * (sphere_light/sphere_light_study.h): Karis's point and de Carpentier's Newton step
- * (sphere_light/sphere_light.h) against raytracer/sphere_light_reference.h. */
+ * (sphere_light/sphere_light.h) against sphere_light/sphere_light_reference.h (the REFERENCE part). */
 #define _GNU_SOURCE
 #include <math.h>
 #include <stdio.h>
@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "core/atomic_file.h"
-#include "raytracer/sphere_light_reference.h"
+#include "sphere_light/sphere_light_reference.h"
 #include "sphere_light/sphere_light.h"
 #include "sphere_light/sphere_light_study.h"
 

@@ -8,7 +8,7 @@
 
 #include "core/ggx.h"
 #include "core/sobol.h"
-#include "raytracer/sphere_light_reference.h"
+#include "sphere_light/sphere_light_reference.h"
 
 #define SUN_SIN_SIGMA 0.00465 /* the sun seen from the earth */
 #define MAX_SIN_SIGMA 0.5

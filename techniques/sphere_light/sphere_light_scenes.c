@@ -17,7 +17,7 @@
 #include "ltc/ltc_sphere.h"
 #include "metrics/flip.h"
 #include "metrics/ssim.h"
-#include "raytracer/reference_render.h"
+#include "sphere_light/sphere_light_quantity.h"
 #include "scene/scene_loaders.h"
 #include "sphere_light/sphere_light.h"
 #include "sphere_light/sphere_light_study.h"
@@ -80,9 +80,9 @@ static int render_floor(const study_context *ctx, const light_scene *ls, const c
     req.sampling.seed = 1;
     req.sampling.threads = ctx->threads;
     req.normals = NORMAL_SHADING;
-    req.sphere_light.position = ls->light.position;
-    req.sphere_light.radius = ls->light.radius;
-    req.sphere_light.radiance = ls->light.radiance;
+    sphere_light_quantity_settings light = sphere_light_quantity_settings_of(
+        (sphere_light_settings){ls->light.position, ls->light.radius, ls->light.radiance, 0});
+    req.settings = &light.header;
     render_stats stats;
     int rc = reference_render(&s, "builtin:plane (glossy grey floor)", cam, &req, ref, &stats, e);
     scene_free(&s);
@@ -204,7 +204,9 @@ static int render_sphere_on_plane(const study_context *ctx, const camera *cam, i
     req.sampling = (sampling_settings){.spp = ctx->quality == QUALITY_PREVIEW ? 64 : 1024, .seed = 1,
                                        .threads = ctx->threads};
     req.normals = NORMAL_SHADING;
-    req.sphere_light = (sphere_light_settings){v3(-2.5f, 4.0f, 1.5f), 0.5f, 5.0f, shadows};
+    sphere_light_quantity_settings light =
+        sphere_light_quantity_settings_of((sphere_light_settings){v3(-2.5f, 4.0f, 1.5f), 0.5f, 5.0f, shadows});
+    req.settings = &light.header;
     render_stats stats;
     int rc = reference_render(&s, "builtin:sphere-on-plane", cam, &req, out, &stats, e);
     scene_free(&s);

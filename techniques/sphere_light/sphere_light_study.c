@@ -18,7 +18,7 @@
 #include "ltc/ltc_fit.h"
 #include "ltc/ltc_sphere.h"
 #include "ltc/ltc_study.h"
-#include "raytracer/sphere_light_reference.h"
+#include "sphere_light/sphere_light_reference.h"
 #include "sphere_light/sphere_light.h"
 
 /* ---- The refit ---- */

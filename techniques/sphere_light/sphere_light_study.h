@@ -20,7 +20,7 @@
 #include <stdio.h>
 
 #include "ltc/ltc_ggx.h"
-#include "raytracer/sphere_light_reference.h"
+#include "sphere_light/sphere_light_reference.h"
 #include "sphere_light/sphere_light_fit_outputs.h"
 #include "studies/study.h"
 

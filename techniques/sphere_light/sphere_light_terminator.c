@@ -7,7 +7,7 @@
 #include "core/sample_mean.h"
 #include "core/sobol.h"
 #include "sphere_light/sphere_light_fit.h"
-#include "raytracer/sphere_light_reference.h"
+#include "sphere_light/sphere_light_reference.h"
 #include "sphere_light/sphere_light_study.h"
 
 #define TERMINATOR_SEED 0x7e2au

@@ -1,6 +1,6 @@
 /* What the volumetric-light study (volumetric_light/volumetric_light_study.h), `gtlab approx raymarch`
  * and `gtlab bench` share: builtin:cornell at a given size with the default
- * spot of `gtlab render volumetric-light` (raytracer/volumetric_light_integrator.h),
+ * spot of `gtlab render volumetric-light` (techniques/volumetric_light/volumetric_light_integrator.h),
  * its camera rays as the ray-march reads them (volumetric_light/volumetric_light_raymarch.h:
  * the G-buffer's unit directions and distances, 0 where the ray misses), and
  * the reference L / I per pixel by quadrature with Embree shadow rays. */
@@ -9,7 +9,7 @@
 
 #include "raytracer/embree_scene.h"
 #include "raytracer/gbuffer.h"
-#include "raytracer/volumetric_light_integrator.h"
+#include "volumetric_light/volumetric_light_integrator.h"
 #include "volumetric_light/volumetric_light_raymarch.h"
 #include "scene/scene.h"
 

@@ -1,6 +1,6 @@
 /* The volumetric-light study (issue 29; INSIDE, Gjoel & Svendsen, GDC 2016,
  * seed 002): the ray-march of volumetric_light/volumetric_light_raymarch.h against the
- * single-scattering reference (raytracer/volumetric_light_integral.h) on
+ * single-scattering reference (techniques/volumetric_light/volumetric_light_integral.h) on
  * builtin:cornell with the default spot of `gtlab render volumetric-light`,
  * the tall block's shadow cutting a shaft.
  *

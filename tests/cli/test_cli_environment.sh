@@ -2,7 +2,7 @@
 # Environment-lit references as a user runs them (issue 28): env-diffuse
 # and env-specular under a Blender HDR (DWAB EXR), the sky and the sun,
 # blocks merging into the whole render (the white dome against multibounce:
-# tests/raytracer/test_environment_render.c), `bench env-diffuse`'s verdict on
+# techniques/environment/tests/test_environment_render.c), `bench env-diffuse`'s verdict on
 # its ratio, and
 # bad input (one error line naming the file or option, exit 1, no output).
 gtlab=$1

@@ -8,7 +8,7 @@
 #include "core/mc_film.h"
 #include "core/reference_schema.h"
 #include "fuzz_target.h"
-#include "raytracer/reference_quantity.h"
+#include "raytracer/reference_render.h"
 #include "raytracer/sample_blocks.h"
 #include "scene/camera.h"
 
@@ -32,7 +32,8 @@ static void read_attributes(const image *img)
         FUZZ_REQUIRE(count >= 1 && count <= SAMPLE_BLOCKS_MAX);
     const char *quantity = image_get_attribute(img, ATTR_QUANTITY);
     if (quantity)
-        (void)reference_quantity_find(quantity);
+        (void)reference_quantity_find(&REFERENCE_REGISTRY_OF(QUANTITY_GBUFFER, QUANTITY_AO, QUANTITY_MULTIBOUNCE),
+                                      quantity);
     mc_film film;
     if (mc_film_read_channels(img, "fuzz.exr", &film, &e) == 0)
         mc_film_free(&film);

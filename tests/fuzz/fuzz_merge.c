@@ -156,7 +156,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     const char *names[2] = {"a.exr", "b.exr"};
     image merged;
     gt_error e;
-    if (reference_merge(inputs, names, 2, &merged, &e) == 0) {
+    if (reference_merge(&REFERENCE_REGISTRY_OF(QUANTITY_AO), inputs, names, 2, &merged, &e) == 0) {
         check_merged(&merged);
         image_free(&merged);
     }

@@ -212,12 +212,12 @@ static void test_determinism_and_merge(void)
                       render(&s, &cam, AO_CONTROL_VARIATE_HEIGHTFIELD, 32, 32, 9, 2)};
     const char *names[2] = {"first", "second"};
     image merged;
-    CHECK(reference_merge(parts, names, 2, &merged, &e) == 0);
+    CHECK(reference_merge(&REFERENCE_REGISTRY_OF(QUANTITY_AO), parts, names, 2, &merged, &e) == 0);
     CHECK_MSG(identical(&merged, &one), "merged parts differ from the whole render");
     CHECK(strcmp(image_get_attribute(&merged, ATTR_CONTROL_VARIATE), "heightfield") == 0);
     image mixed[2] = {parts[0], render(&s, &cam, AO_CONTROL_VARIATE_NONE, 32, 32, 9, 2)};
     image refused = {0};
-    CHECK(reference_merge(mixed, names, 2, &refused, &e) != 0);
+    CHECK(reference_merge(&REFERENCE_REGISTRY_OF(QUANTITY_AO), mixed, names, 2, &refused, &e) != 0);
     CHECK_MSG(strstr(e.message, ATTR_CONTROL_VARIATE) != NULL, "refusal names the attribute: %s", e.message);
     image_free(&mixed[1]);
     image_free(&merged);

@@ -27,9 +27,7 @@
 
 static reference_quantity heightfield_multibounce(void)
 {
-    reference_quantity q = reference_quantity_find("heightfield-multibounce");
-    CHECK(q != NULL);
-    return q;
+    return QUANTITY_HEIGHTFIELD_MULTIBOUNCE;
 }
 
 static image render(reference_quantity q, const scene *s, const camera *cam, const char *albedos, int bounces,

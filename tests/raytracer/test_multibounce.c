@@ -502,7 +502,7 @@ static void test_determinism_and_merge(void)
     const char *names[2] = {"first half", "second half"};
     image merged;
     gt_error e;
-    CHECK(reference_merge(halves, names, 2, &merged, &e) == 0);
+    CHECK(reference_merge(&REFERENCE_REGISTRY_OF(QUANTITY_MULTIBOUNCE), halves, names, 2, &merged, &e) == 0);
     static const char *const compared[] = {"multibounce.R", "multibounce.G", "multibounce.B", "ao.V",
                                            "multibounce.R.stderr", "multibounce.B.stderr", "ao.V.stderr"};
     for (size_t c = 0; c < sizeof compared / sizeof compared[0]; ++c)
@@ -514,7 +514,7 @@ static void test_determinism_and_merge(void)
     /* A block rendered with other settings is not part of the same render. */
     image other = render(&s, &cam, scene_albedo(4), (sampling){32, 32, 13, 2});
     image parts[2] = {halves[0], other};
-    CHECK(reference_merge(parts, names, 2, &merged, &e) != 0);
+    CHECK(reference_merge(&REFERENCE_REGISTRY_OF(QUANTITY_MULTIBOUNCE), parts, names, 2, &merged, &e) != 0);
     CHECK_MSG(strstr(e.message, ATTR_SETTINGS) != NULL, "unexpected refusal: %s", e.message);
 
     image_free(&other);

@@ -65,7 +65,7 @@ static void test_merge(void)
     const char *names[2] = {"first half", "second half"};
     image merged;
     gt_error e;
-    CHECK(reference_merge(halves, names, 2, &merged, &e) == 0);
+    CHECK(reference_merge(&REFERENCE_REGISTRY_OF(QUANTITY_AO), halves, names, 2, &merged, &e) == 0);
     static const char *const quantities[] = {"ao.V", "ao.Vuniform", "bent.X", "bent.Y", "bent.Z"};
     for (int q = 0; q < 5; ++q) {
         char err_name[64];
@@ -84,14 +84,14 @@ static void test_merge(void)
         CHECK(exr_read(path, &reread[h], &e) == 0);
     }
     image merged_files;
-    CHECK(reference_merge(reread, names, 2, &merged_files, &e) == 0);
+    CHECK(reference_merge(&REFERENCE_REGISTRY_OF(QUANTITY_AO), reread, names, 2, &merged_files, &e) == 0);
     CHECK(channels_identical(&full, &merged_files, "ao.V"));
     CHECK(channels_identical(&full, &merged_files, "bent.Y"));
 
     /* The same block twice would count samples twice. */
     image same[2] = {halves[0], halves[0]};
     image refused;
-    CHECK(reference_merge(same, names, 2, &refused, &e) != 0);
+    CHECK(reference_merge(&REFERENCE_REGISTRY_OF(QUANTITY_AO), same, names, 2, &refused, &e) != 0);
     CHECK(strstr(e.message, "counted twice") != NULL);
 
     for (int h = 0; h < 2; ++h) {

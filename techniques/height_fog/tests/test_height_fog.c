@@ -1,5 +1,5 @@
 /* The analytic height fog (height_fog/height_fog.h) against single scattering
- * by quadrature (raytracer/fog_single_scatter.h), in every regime of issue
+ * by quadrature (techniques/height_fog/fog_single_scatter.h), in every regime of issue
  * 16: rays down, horizontal and up; the camera inside the fog and far above
  * it; the world point above and below the camera; H from 1 m to 1e6 m; beta
  * from clear air to dense fog.
@@ -18,7 +18,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "raytracer/fog_single_scatter.h"
+#include "height_fog/fog_single_scatter.h"
 #include "height_fog/height_fog.h"
 #include "tests/check.h"
 

@@ -11,7 +11,7 @@
 
 #include "core/ggx.h"
 #include "core/sobol.h"
-#include "raytracer/sphere_light_reference.h"
+#include "sphere_light/sphere_light_reference.h"
 #include "sphere_light/sphere_light.h"
 #include "tests/check.h"
 

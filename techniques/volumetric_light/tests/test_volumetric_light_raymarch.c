@@ -2,7 +2,7 @@
  * reference and against statistics, on a spot light above a floor (y = 0),
  * the camera rays ending on the floor:
  *  - with many uniform steps the ray-march converges to the reference
- *    quadrature (raytracer/volumetric_light_integral.h, an independent
+ *    quadrature (techniques/volumetric_light/volumetric_light_integral.h, an independent
  *    integrator in another variable), its error falling as 1/N (the steps
  *    are a left Riemann sum and the integrand does not vanish at the floor);
  *  - every noise type is unbiased: the mean over frames of a 3-step march
@@ -17,7 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "raytracer/volumetric_light_integral.h"
+#include "volumetric_light/volumetric_light_integral.h"
 #include "volumetric_light/volumetric_light_upsample.h"
 #include "tests/check.h"
 

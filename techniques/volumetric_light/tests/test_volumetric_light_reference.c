@@ -1,4 +1,4 @@
-/* raytracer/volumetric_light_integral.h against mathematics, one ray at a
+/* techniques/volumetric_light/volumetric_light_integral.h against mathematics, one ray at a
  * time, unshadowed point light, isotropic phase:
  *  - the quadrature against the airlight integral of Sun, Ramamoorthi,
  *    Narasimhan & Nayar 2005 (eq. 12 with scattering sigma_s and extinction
@@ -18,7 +18,7 @@
 #include <stdint.h>
 
 #include "core/quadrature.h"
-#include "raytracer/volumetric_light_integral.h"
+#include "volumetric_light/volumetric_light_integral.h"
 #include "tests/check.h"
 
 typedef struct {

@@ -13,7 +13,7 @@
 #include <string.h>
 
 #include "raytracer/reference_render.h"
-#include "raytracer/volumetric_light_integrator.h"
+#include "volumetric_light/volumetric_light_integrator.h"
 #include "scene/builtin_scenes.h"
 #include "tests/check.h"
 
@@ -22,11 +22,13 @@ static int render(const scene *s, const camera *cam, const volumetric_light_sett
 {
     reference_request req;
     memset(&req, 0, sizeof req);
-    req.quantity = reference_quantity_find("volumetric-light");
+    req.quantity = &reference_quantity_volumetric_light;
     req.sampling.spp = spp;
     req.sampling.seed = 5;
     req.sampling.threads = threads;
-    req.settings = (void *)vs;
+    volumetric_light_settings settings = *vs;
+    settings.header.quantity = req.quantity;
+    req.settings = &settings.header;
     render_stats stats;
     gt_error e;
     if (reference_render(s, "builtin:cornell", cam, &req, out, &stats, &e) != 0) {
