@@ -4,7 +4,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "raytracer/specular_occlusion_quantity.h"
+#include "specular_occlusion/specular_occlusion_quantity.h"
 #include "studies/study.h"
 
 /* The best samples/s over `repeats` renders, and the rays/s of that render. */

@@ -14,7 +14,7 @@
 #include "raytracer/heightfield_ao_integrator.h"
 #include "raytracer/multibounce_quantity.h"
 #include "raytracer/reference_render.h"
-#include "raytracer/specular_occlusion_quantity.h"
+#include "specular_occlusion/specular_occlusion_quantity.h"
 #include "sphere_light/sphere_light_quantity.h"
 
 enum { MAX_OPTIONS = 64 };

@@ -26,7 +26,7 @@
 #include "raytracer/multibounce_quantity.h"
 #include "raytracer/reference_merge.h"
 #include "raytracer/reference_render.h"
-#include "raytracer/specular_occlusion_quantity.h"
+#include "specular_occlusion/specular_occlusion_quantity.h"
 #include "scene/scene_loaders.h"
 #include "tests/check.h"
 

@@ -27,7 +27,7 @@
 #include "gpu/function_shader.h"
 #include "gpu/shader_compiler.h"
 #include "raytracer/reference_render.h"
-#include "raytracer/specular_occlusion_quantity.h"
+#include "specular_occlusion/specular_occlusion_quantity.h"
 #include "specular_occlusion/specular_occlusion_shader.h"
 #include "shader/shader_scores.h"
 #include "specular_occlusion/specular_occlusion_inputs.h"

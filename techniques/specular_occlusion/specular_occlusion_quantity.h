@@ -1,15 +1,18 @@
-/* The settings of `gtlab render specular-occlusion`
- * (specular_occlusion_quantity.c), headed by a reference_settings naming it
- * (reference_quantity.h). A caller of reference_render points `.settings` at
- * its header:
+/* `gtlab render specular-occlusion` (specular_occlusion_quantity.c): its
+ * descriptor, and its settings, headed by a reference_settings naming it
+ * (raytracer/reference_quantity.h). A caller of reference_render points
+ * `.settings` at its header:
  *
  *   specular_occlusion_render_settings so = specular_occlusion_render_settings_make(0.4f, ENVIRONMENT_WHITE);
  *   reference_request req = {.quantity = QUANTITY_SPECULAR_OCCLUSION, ..., .settings = &so.header}; */
-#ifndef GTLAB_RAYTRACER_SPECULAR_OCCLUSION_QUANTITY_H
-#define GTLAB_RAYTRACER_SPECULAR_OCCLUSION_QUANTITY_H
+#ifndef GTLAB_SPECULAR_OCCLUSION_SPECULAR_OCCLUSION_QUANTITY_H
+#define GTLAB_SPECULAR_OCCLUSION_SPECULAR_OCCLUSION_QUANTITY_H
 
 #include "core/sky_environment.h"
 #include "raytracer/reference_render.h"
+
+extern const reference_quantity_descriptor reference_quantity_specular_occlusion;
+#define QUANTITY_SPECULAR_OCCLUSION (&reference_quantity_specular_occlusion)
 
 typedef struct {
     reference_settings header;

@@ -1,7 +1,7 @@
 /* `gtlab render specular-occlusion`: GTSO specular occlusion under a white
  * dome, and with --environment sky the split integrals under an analytic sky
- * (raytracer/specular_occlusion_integrator.h). */
-#include "raytracer/specular_occlusion_quantity.h"
+ * (specular_occlusion_integrator.h). */
+#include "specular_occlusion/specular_occlusion_quantity.h"
 
 #include <stddef.h>
 #include <stdio.h>
@@ -10,7 +10,7 @@
 #include "core/number_parse.h"
 #include "core/reference_schema.h"
 #include "core/roughness_setting.h"
-#include "raytracer/specular_occlusion_integrator.h"
+#include "specular_occlusion/specular_occlusion_integrator.h"
 
 _Static_assert(offsetof(specular_occlusion_render_settings, header) == 0, "the header comes first");
 

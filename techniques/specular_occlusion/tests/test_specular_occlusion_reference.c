@@ -1,4 +1,4 @@
-/* The specular-occlusion reference (raytracer/specular_occlusion_integrator.c):
+/* The specular-occlusion reference (specular_occlusion_integrator.c):
  *  - a lone plane: V_s = V_s^D = V_s^Phong = 1 exactly at every roughness,
  *    stderr 0;
  *  - inside a closed box: all three V_s = 0 exactly;
@@ -27,7 +27,7 @@
 #include "core/sobol.h"
 #include "raytracer/embree_scene.h"
 #include "raytracer/reference_render.h"
-#include "raytracer/specular_occlusion_quantity.h"
+#include "specular_occlusion/specular_occlusion_quantity.h"
 #include "scene/scene_loaders.h"
 #include "tests/check.h"
 #include "tests/raytracer/closed_box.h"
