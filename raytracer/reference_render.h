@@ -16,12 +16,10 @@
  * callers: `.quantity = QUANTITY_AO`. A technique's quantity is declared by
  * its reference part (e.g. techniques/sphere_light/sphere_light_quantity.h). */
 extern const reference_quantity_descriptor reference_quantity_gbuffer, reference_quantity_ao,
-    reference_quantity_multibounce, reference_quantity_heightfield_ao, reference_quantity_heightfield_multibounce;
+    reference_quantity_heightfield_ao;
 #define QUANTITY_GBUFFER (&reference_quantity_gbuffer)
 #define QUANTITY_AO (&reference_quantity_ao)
-#define QUANTITY_MULTIBOUNCE (&reference_quantity_multibounce)
 #define QUANTITY_HEIGHTFIELD_AO (&reference_quantity_heightfield_ao)
-#define QUANTITY_HEIGHTFIELD_MULTIBOUNCE (&reference_quantity_heightfield_multibounce)
 
 /* What to render. A quantity keeps its settings in its own struct, headed by
  * a reference_settings naming it (reference_quantity.h), pointed at by

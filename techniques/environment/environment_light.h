@@ -23,7 +23,7 @@
 
 #include "core/environment_map.h"
 #include "core/environment_sampler.h"
-#include "raytracer/multibounce_integrator.h"
+#include "multibounce/multibounce_integrator.h"
 #include "raytracer/reference_quantity.h"
 
 /* The settings of env-diffuse and env-specular, one struct for both

@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "multibounce/multibounce_parts.h"
-#include "raytracer/multibounce_quantity.h"
+#include "multibounce/multibounce_quantity.h"
 #include "scene/scene_loaders.h"
 
 static const int kBounces[MULTIBOUNCE_BOUNCE_COUNTS] = {1, 2, 4, MULTIBOUNCE_UNLIMITED};

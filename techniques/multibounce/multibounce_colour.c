@@ -10,7 +10,7 @@
 #include "metrics/reference_halves.h"
 #include "metrics/ssim.h"
 #include "multibounce/multibounce_parts.h"
-#include "raytracer/multibounce_quantity.h"
+#include "multibounce/multibounce_quantity.h"
 #include "scene/scene_loaders.h"
 
 /* The coloured scenes: the Cornell box as built, and two of the white

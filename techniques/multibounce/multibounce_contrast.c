@@ -10,7 +10,7 @@
 #include "core/reference_schema.h"
 #include "metrics/reference_halves.h"
 #include "multibounce/multibounce_parts.h"
-#include "raytracer/multibounce_quantity.h"
+#include "multibounce/multibounce_quantity.h"
 #include "scene/scene_loaders.h"
 
 /* Scenes with a floor (mesh 0) and objects (the other meshes). */

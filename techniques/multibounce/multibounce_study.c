@@ -8,8 +8,8 @@
 #include "core/exr_io.h"
 #include "metrics/reference_halves.h"
 #include "multibounce/multibounce_parts.h"
-#include "raytracer/multibounce_quantity.h"
-#include "raytracer/multibounce_throughput.h"
+#include "multibounce/multibounce_quantity.h"
+#include "multibounce/multibounce_throughput.h"
 #include "scene/scene_loaders.h"
 
 /* The plane is left out: V_d = V'_d = 1 everywhere, nothing to fit. */

@@ -12,7 +12,7 @@
 #include "tests/check.h"
 #include "environment/environment_light.h"
 #include "raytracer/heightfield_ao_integrator.h"
-#include "raytracer/multibounce_quantity.h"
+#include "multibounce/multibounce_quantity.h"
 #include "raytracer/reference_render.h"
 #include "specular_occlusion/specular_occlusion_quantity.h"
 #include "sphere_light/sphere_light_quantity.h"

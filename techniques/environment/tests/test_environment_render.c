@@ -23,7 +23,7 @@
 #include "environment/environment_diffuse_integrator.h"
 #include "environment/environment_light.h"
 #include "environment/environment_quantity.h"
-#include "raytracer/multibounce_quantity.h"
+#include "multibounce/multibounce_quantity.h"
 #include "raytracer/reference_merge.h"
 #include "raytracer/reference_render.h"
 #include "specular_occlusion/specular_occlusion_quantity.h"

@@ -17,7 +17,7 @@
 
 #include "core/exr_io.h"
 #include "multibounce/multibounce.h"
-#include "raytracer/multibounce_quantity.h"
+#include "multibounce/multibounce_quantity.h"
 #include "raytracer/reference_render.h"
 #include "shader/shader_scores.h"
 #include "studies/study.h"

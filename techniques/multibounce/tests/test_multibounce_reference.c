@@ -19,7 +19,7 @@
 #include <string.h>
 
 #include "core/hemisphere_sampling.h"
-#include "raytracer/multibounce_quantity.h"
+#include "multibounce/multibounce_quantity.h"
 #include "raytracer/reference_merge.h"
 #include "raytracer/reference_render.h"
 #include "scene/scene_loaders.h"

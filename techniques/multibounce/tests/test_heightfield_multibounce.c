@@ -1,5 +1,5 @@
 /* The height-field multi-bounce reference
- * (raytracer/heightfield_multibounce_integrator.h) against mathematics:
+ * (heightfield_multibounce_integrator.h) against mathematics:
  *  - a plane: nothing in the height field rises above it, V'_d = V_d = 1
  *    exactly at every pixel, for any albedo (1 included);
  *  - albedo 0 is the height-field AO: multibounce_0.V equals its own ao.V
@@ -20,7 +20,7 @@
 #include <string.h>
 
 #include "core/reference_schema.h"
-#include "raytracer/multibounce_quantity.h"
+#include "multibounce/multibounce_quantity.h"
 #include "raytracer/reference_render.h"
 #include "scene/quad_mesh.h"
 #include "scene/scene_loaders.h"

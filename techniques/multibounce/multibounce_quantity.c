@@ -1,17 +1,17 @@
 /* `gtlab render multibounce`: GTAO's multi-bounce AO V'_d under a white dome
  * for one or several albedos, or the scene's colours
- * (raytracer/multibounce_integrator.h); `gtlab render
+ * (multibounce_integrator.h); `gtlab render
  * heightfield-multibounce`: the same of the depth buffer taken as a height
- * field (raytracer/heightfield_multibounce_integrator.h), with the same
+ * field (heightfield_multibounce_integrator.h), with the same
  * options, channels and header. */
-#include "raytracer/multibounce_quantity.h"
+#include "multibounce/multibounce_quantity.h"
 
 #include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
 
 #include "core/reference_schema.h"
-#include "raytracer/heightfield_multibounce_integrator.h"
+#include "multibounce/heightfield_multibounce_integrator.h"
 
 _Static_assert(offsetof(multibounce_render_settings, header) == 0, "the header comes first");
 
