@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ao/ao_references.h"
 #include "cli/approx_io.h"
 #include "cli/cli.h"
 #include "cli/cli_options.h"
@@ -28,7 +29,6 @@
 #include "gtao/gtao_section.h"
 #include "gtao/hbao.h"
 #include "gtao/volumetric_obscurance.h"
-#include "studies/ao_references.h"
 
 /* The parameters and the preset they started from (for the header). */
 typedef struct {

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ao/ao_references.h"
 #include "core/path_name.h"
 #include "core/reference_schema.h"
 #include "core/sample_mean.h"
@@ -14,7 +15,6 @@
 #include "gtao/gtao.h"
 #include "gtao/gtao_scene_refs.h"
 #include "shader/shader_run.h"
-#include "studies/ao_references.h"
 
 enum { DEVICE_TIMEOUT_SECONDS = 10 }; /* per frame, as `gtlab shader run` */
 

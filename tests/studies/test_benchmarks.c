@@ -1,10 +1,9 @@
-/* The benchmarks' studies on a tiny view (builtin:corner, 16x16, 1 pass):
+/* The ray-throughput benchmark's study on a tiny view (builtin:corner, 16x16, 1 pass):
  * the figures are rates (positive), the derived rows are the quotients of the
  * measured ones, and a failing scene is an error. Timings themselves are not
  * checked. */
 #include <string.h>
 
-#include "studies/ao_convergence.h"
 #include "studies/ray_throughput.h"
 #include "tests/check.h"
 
@@ -26,32 +25,8 @@ static void test_ray_throughput(void)
     CHECK(ray_throughput_measure("builtin:no-such-scene", 16, 16, 1, 1, &r, &e) == -1);
 }
 
-/* gtlab bench convergence on 8x8 images: every built-in scene measured in
- * both modes, the plane exact in both (RMSE 0), the time to the target and
- * the ratio consistent with the series. */
-static void test_ao_convergence(void)
-{
-    static ao_convergence_result r;
-    ao_convergence_request rq = {8, 8, 2, 256, 64, 0.05};
-    gt_error e;
-    CHECK(ao_convergence_run(&rq, &r, &e) == 0);
-    CHECK(r.scene_count >= 6);
-    for (int i = 0; i < r.scene_count; ++i) {
-        const ao_convergence_scene *s = &r.scenes[i];
-        for (int m = 0; m < CONVERGENCE_MODES; ++m) {
-            CHECK(s->count[m] >= 1 && s->points[m][0].spp == AO_CONVERGENCE_FIRST_SPP);
-            CHECK(s->points[m][0].seconds > 0.0 && s->points[m][0].rmse >= 0.0 && s->time_to_target[m] > 0.0);
-            CHECK((s->kind[m] == TARGET_AT_FIRST) == (s->points[m][0].rmse <= rq.target));
-            if (strcmp(s->scene, "plane") == 0)
-                CHECK_MSG(s->points[m][0].rmse == 0.0, "plane, mode %d: RMSE %g", m, s->points[m][0].rmse);
-        }
-        CHECK(s->speedup == s->time_to_target[CONVERGENCE_PLAIN] / s->time_to_target[CONVERGENCE_CV]);
-    }
-}
-
 int main(void)
 {
     test_ray_throughput();
-    test_ao_convergence();
     return check_report("studies_benchmarks");
 }

@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "ao/ao_references.h"
 #include "core/exr_io.h"
 #include "gtao/gtao_baselines.h"
 #include "gtao/gtao_bent_normals.h"
@@ -19,7 +20,6 @@
 #include "raytracer/reference_render.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_loaders.h"
-#include "studies/ao_references.h"
 #include "studies/gbuffer_input.h"
 #include "tests/check.h"
 #include "tests/test_files.h"

@@ -1,11 +1,11 @@
 /* Report section: the AO and bent-normal references of every built-in
- * scene (studies/ao_references.h), rendered into the report: a table of
+ * scene (ao_references.h), rendered into the report: a table of
  * their sampling, noise and noise floor, and their previews. */
 #include <stdio.h>
 
-#include "report/ao_section.h"
+#include "ao/ao_section.h"
+#include "ao/ao_references.h"
 #include "report/report_table.h"
-#include "studies/ao_references.h"
 
 static void size_cell(const void *row, char *text, size_t size)
 {

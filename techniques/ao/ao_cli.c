@@ -1,15 +1,19 @@
-/* gtlab bench convergence: the AO reference's time to an RMSE, plain and
- * with the height-field control variate, on every built-in scene
- * (studies/ao_convergence.h; the figure: report/convergence_plot.h); here
- * the options and the printing. */
+/* Ambient occlusion and bent-normal references (README.md): the AO stage of
+ * `gtlab all` (its references are the inputs of the screen-space
+ * techniques' stages) and `gtlab bench convergence`, the AO reference's time
+ * to an RMSE, plain and with the height-field control variate, on every
+ * built-in scene (ao_convergence.h; the figure: ao_convergence_plot.h). */
 #define _GNU_SOURCE
 #include <stdio.h>
 
+#include "ao/ao_convergence.h"
+#include "ao/ao_convergence_plot.h"
+#include "ao/ao_references.h"
+#include "ao/ao_section.h"
 #include "cli/cli.h"
 #include "cli/cli_options.h"
+#include "cli/technique.h"
 #include "core/threads.h"
-#include "report/convergence_plot.h"
-#include "studies/ao_convergence.h"
 
 static const cli_option options[] = {
     CLI_OUTPUT("DIR", 0, "output folder"), CLI_INT32("width", "W", 8, 4096, "image width"),
@@ -58,7 +62,7 @@ static void print_result(const ao_convergence_result *r)
            worst >= 1.0 ? worst : 1.0 / worst, worst >= 1.0 ? "slower" : "faster");
 }
 
-int bench_convergence(int argc, char **argv)
+static int bench_convergence(int argc, char **argv)
 {
     ao_convergence_request rq = ao_convergence_default_request(threads_default());
     const char *dir = "bench_convergence";
@@ -77,3 +81,12 @@ int bench_convergence(int argc, char **argv)
     printf("figure: %s/convergence.png, data: %s/convergence.dat\n", dir, dir);
     return EXIT_OK;
 }
+
+GTLAB_STUDY_STAGE(all_stage_ao_references, ao_references, ao_references_section)
+
+const technique technique_ao = {
+    .name = "ao",
+    .subcommands = {[VERB_BENCH] = CLI_SUBCOMMANDS(
+        {"convergence", bench_convergence, "AO time to RMSE 0.01, plain against the height-field control variate"})},
+    .stages = ALL_STAGES({"ao", "AO references", all_stage_ao_references, AO_REFERENCES_DIR, NULL}),
+};

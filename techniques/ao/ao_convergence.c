@@ -1,6 +1,6 @@
 /* RMSE against wall time, plain and with the height-field control variate;
  * see ao_convergence.h. */
-#include "studies/ao_convergence.h"
+#include "ao/ao_convergence.h"
 
 #include <math.h>
 #include <stdio.h>

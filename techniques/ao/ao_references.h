@@ -8,8 +8,8 @@
  *
  * Writes <output>/ao/<scene>.exr with <scene>.camera.json (the inputs of the
  * screen-space studies) and <output>/figures/{ao,bent,ao_stderr}_<scene>.png. */
-#ifndef GTLAB_STUDIES_AO_REFERENCES_H
-#define GTLAB_STUDIES_AO_REFERENCES_H
+#ifndef GTLAB_AO_AO_REFERENCES_H
+#define GTLAB_AO_AO_REFERENCES_H
 
 #include <stdint.h>
 

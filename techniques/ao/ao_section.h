@@ -1,10 +1,10 @@
 /* The AO and bent-normal references of every built-in scene: a table of their
  * sampling, noise and noise floor, and their previews. */
-#ifndef GTLAB_REPORT_AO_SECTION_H
-#define GTLAB_REPORT_AO_SECTION_H
+#ifndef GTLAB_AO_AO_SECTION_H
+#define GTLAB_AO_AO_SECTION_H
 
+#include "ao/ao_references.h"
 #include "report/report_context.h"
-#include "studies/ao_references.h"
 
 /* Adds the section to ctx's report and summary.json; -1 (e set) if a file it
  * writes could not be made. */

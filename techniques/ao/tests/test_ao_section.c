@@ -2,8 +2,8 @@
  * (no study runs) puts the struct's fields into summary.json exactly (full
  * doubles, integers, text) and into the report's table with the column's
  * format, one row per struct row, in order. The AO references' section
- * (report/ao_section.c) stands for all: they share report/report_table.c. */
-#include "report/ao_section.h"
+ * (ao_section.c) stands for all: they share report/report_table.c. */
+#include "ao/ao_section.h"
 #include "tests/check.h"
 
 #include <stdio.h>
@@ -101,5 +101,5 @@ int main(void)
     free(md);
     report_free(&doc);
     cJSON_Delete(ctx.summary);
-    return check_report("test_report_sections");
+    return check_report("report_ao_section");
 }

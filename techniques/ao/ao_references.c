@@ -1,4 +1,4 @@
-#include "studies/ao_references.h"
+#include "ao/ao_references.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -1,9 +1,9 @@
-/* studies/ao_references: the AO stage's numbers without its prose. On the
+/* ao_references: the AO stage's numbers without its prose. On the
  * open plane every ray escapes, so AO is exactly 1 with zero standard error
  * and a zero noise floor; in the corner it is not, and the row's statistics
  * are consistent (mean <= max, every pixel took every sample); the rows do
  * not depend on the thread count; the references and previews are written. */
-#include "studies/ao_references.h"
+#include "ao/ao_references.h"
 #include "tests/check.h"
 #include "tests/test_files.h"
 

@@ -1,5 +1,5 @@
 /* The convergence figure; see convergence_plot.h. */
-#include "report/convergence_plot.h"
+#include "ao/ao_convergence_plot.h"
 
 #include <stdio.h>
 #include <string.h>

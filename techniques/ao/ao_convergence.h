@@ -16,8 +16,8 @@
  * log-log between the two renders around it, extrapolated from the last two
  * with RMSE ~ t^(-1/2) when the series never reaches it, and the first
  * render's time (an upper bound) when the first render already does. */
-#ifndef GTLAB_STUDIES_AO_CONVERGENCE_H
-#define GTLAB_STUDIES_AO_CONVERGENCE_H
+#ifndef GTLAB_AO_AO_CONVERGENCE_H
+#define GTLAB_AO_AO_CONVERGENCE_H
 
 #include "core/error.h"
 
