@@ -1,5 +1,5 @@
 /* gtlab bench: throughput figures and their ratios, measured in one run
- * (studies/ray_throughput.h); here the options, the dispatch to the
+ * (throughput/ray_throughput_study.h); here the options, the dispatch to the
  * techniques' benchmarks and the printing. */
 #define _GNU_SOURCE
 #include <stdio.h>
@@ -8,7 +8,7 @@
 #include "cli/cli.h"
 #include "cli/cli_options.h"
 #include "cli/technique.h"
-#include "studies/ray_throughput.h"
+#include "throughput/ray_throughput_study.h"
 #include "core/threads.h"
 
 static const cli_option options[] = {CLI_BENCH_VIEW, CLI_END};

@@ -1,8 +1,8 @@
 /* Running a generated LUT lookup (a table's writer's GLSL or HLSL: the
  * table as constant arrays, then the lookup's text) on Vulkan against the C
  * lookup of the same table at the same float inputs, within a derived
- * bound. Shared by tests/gpu/test_gpu_lut_shaders.c (DFG, LTC) and
- * techniques/atmosphere/tests/test_gpu_atmosphere_shader.c; the shader
+ * bound. Shared by the LUT techniques' GPU tests (techniques/dfg/,
+ * techniques/ltc/, techniques/atmosphere/: tests/test_*_gpu*.c); the shader
  * wraps the functions as tests/gpu/sample_shader.h does. The tables are
  * small and pseudo-random (fill_table): the lookup is under test, and
  * texels differing from their neighbours make a wrong index or axis
@@ -82,6 +82,18 @@ static double lookup_bound(const table_scale *s, int levels, const double slack[
     for (int a = 0; a < AXES; ++a)
         b += slack[a] * s->step[a];
     return kU * b;
+}
+
+/* The bounds of an N x N table's channels (bilinear: L = 2), s_x and s_y of
+ * the two axes. */
+static void square_bounds(const float *data, int size, int channels, double s_x, double s_y, double *bound)
+{
+    int n[AXES] = {size, size, 1, 1};
+    double slack[AXES] = {s_x, s_y, 0.0, 0.0};
+    for (int c = 0; c < channels; ++c) {
+        table_scale sc = channel_scale(data, n, channels, c);
+        bound[c] = lookup_bound(&sc, 2, slack);
+    }
 }
 
 /* ---- Inputs ---- */

@@ -1,5 +1,5 @@
 /* The scaling bench (scale_bench.h). */
-#include "raytracer/scale_bench.h"
+#include "scale/scale_bench.h"
 
 #include "core/progress.h"
 #include "core/threads.h"

@@ -1,13 +1,13 @@
 /* Ray throughput (the `throughput` stage of `gtlab all`, the figures of
- * `gtlab bench rays`; raytracer/ray_throughput.h): occlusion rays per second
+ * `gtlab bench rays`; throughput/ray_throughput.h): occlusion rays per second
  * of raw Embree calls on a prepared array of the very rays the AO reference
  * traces, against gtlab's AO reference loop end to end at 64 samples per
  * pixel, on one scene, with 1 and with all threads, the best of several
  * passes. Writes no file. */
-#ifndef GTLAB_STUDIES_RAY_THROUGHPUT_H
-#define GTLAB_STUDIES_RAY_THROUGHPUT_H
+#ifndef GTLAB_THROUGHPUT_RAY_THROUGHPUT_STUDY_H
+#define GTLAB_THROUGHPUT_RAY_THROUGHPUT_STUDY_H
 
-#include "raytracer/ray_throughput.h"
+#include "throughput/ray_throughput.h"
 #include "studies/study.h"
 
 /* One way of tracing the rays: rays/s with 1 thread and with `threads`. */

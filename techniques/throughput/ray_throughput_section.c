@@ -1,11 +1,11 @@
 /* Report section: ray throughput of the AO reference against raw Embree,
- * measured in this run (studies/ray_throughput.h, the figures of `gtlab
+ * measured in this run (throughput/ray_throughput_study.h, the figures of `gtlab
  * bench rays`), rendered into the report and summary.json. */
 #include <stdio.h>
 
-#include "report/ray_throughput_section.h"
+#include "throughput/ray_throughput_section.h"
 #include "report/report_table.h"
-#include "studies/ray_throughput.h"
+#include "throughput/ray_throughput_study.h"
 
 #define COLUMNS(c) (int)(sizeof(c) / sizeof((c)[0]))
 

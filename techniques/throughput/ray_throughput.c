@@ -1,4 +1,4 @@
-#include "raytracer/ray_throughput.h"
+#include "throughput/ray_throughput.h"
 
 #include <math.h>
 #include <stdlib.h>

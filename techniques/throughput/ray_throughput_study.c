@@ -1,5 +1,5 @@
 /* Ray throughput; see ray_throughput.h. */
-#include "studies/ray_throughput.h"
+#include "throughput/ray_throughput_study.h"
 
 #include <string.h>
 

@@ -1,9 +1,9 @@
 /* Ray throughput of the AO reference against raw Embree, measured in this run. */
-#ifndef GTLAB_REPORT_RAY_THROUGHPUT_SECTION_H
-#define GTLAB_REPORT_RAY_THROUGHPUT_SECTION_H
+#ifndef GTLAB_THROUGHPUT_RAY_THROUGHPUT_SECTION_H
+#define GTLAB_THROUGHPUT_RAY_THROUGHPUT_SECTION_H
 
 #include "report/report_context.h"
-#include "studies/ray_throughput.h"
+#include "throughput/ray_throughput_study.h"
 
 /* Adds the section to ctx's report and summary.json; -1 (e set) if a file it
  * writes could not be made. */

@@ -1,11 +1,11 @@
 /* MPI renders (issue 20): `gtlab bench scale`, measured strong scaling and
- * its projection (raytracer/scale_bench.h). */
+ * its projection (scale/scale_bench.h). */
 #include <stdio.h>
 
 #include "cli/cli.h"
 #include "cli/cli_options.h"
 #include "cli/technique.h"
-#include "raytracer/scale_bench.h"
+#include "scale/scale_bench.h"
 
 static const cli_option options[] = {CLI_END};
 static const cli_command command = {"bench scale", "Times one AO reference and the reduction of its film under this job's ranks\n"

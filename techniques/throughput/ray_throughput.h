@@ -3,8 +3,8 @@
  * reference traces (incoherent, cosine- and uniform-distributed, leaving the
  * visible surfaces), against gtlab's own AO reference loop on the same scene
  * and camera, each with 1 and N threads. */
-#ifndef GTLAB_RAYTRACER_RAY_THROUGHPUT_H
-#define GTLAB_RAYTRACER_RAY_THROUGHPUT_H
+#ifndef GTLAB_THROUGHPUT_RAY_THROUGHPUT_H
+#define GTLAB_THROUGHPUT_RAY_THROUGHPUT_H
 
 #include "core/error.h"
 #include "scene/scene.h"

@@ -12,8 +12,8 @@
  *
  * for M = 1, 16, 256: the sampling divides (every rank does 1/M of every
  * pixel's samples), the linear gather does not. */
-#ifndef GTLAB_RAYTRACER_SCALE_BENCH_H
-#define GTLAB_RAYTRACER_SCALE_BENCH_H
+#ifndef GTLAB_SCALE_SCALE_BENCH_H
+#define GTLAB_SCALE_SCALE_BENCH_H
 
 #include <stdio.h>
 

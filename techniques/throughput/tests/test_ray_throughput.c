@@ -1,11 +1,11 @@
-/* The ray-throughput benchmark's study on a tiny view (builtin:corner, 16x16, 1 pass):
- * the figures are rates (positive), the derived rows are the quotients of the
- * measured ones, and a failing scene is an error. Timings themselves are not
- * checked. */
+/* `gtlab bench rays` and the throughput stage's study on a tiny view
+ * (builtin:corner, 16x16, 1 pass): the figures are rates (positive), each raw
+ * call at most the best, the derived rows are the quotients of the measured
+ * ones, and a failing scene is an error. Timings themselves are not checked. */
 #include <string.h>
 
-#include "studies/ray_throughput.h"
 #include "tests/check.h"
+#include "throughput/ray_throughput_study.h"
 
 static void test_ray_throughput(void)
 {
@@ -28,5 +28,5 @@ static void test_ray_throughput(void)
 int main(void)
 {
     test_ray_throughput();
-    return check_report("studies_benchmarks");
+    return check_report("throughput_study");
 }
