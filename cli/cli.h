@@ -25,14 +25,6 @@ int verb_lut(int argc, char **argv);
 int verb_approx(int argc, char **argv);
 int verb_shader(int argc, char **argv);
 
-/* Subcommands in their own files (cli/<verb>_<name>.c), in the techniques'
- * registries (cli/technique_*.c). */
-int bench_convergence(int argc, char **argv);
-int approx_hbao(int argc, char **argv);
-int approx_vo(int argc, char **argv);
-int approx_alchemy(int argc, char **argv);
-int approx_crytek(int argc, char **argv);
-
 /* Prints "gtlab: <message>" on stderr and returns EXIT_USER_ERROR. */
 int cli_fail(const gt_error *e);
 /* Prints "gtlab: <subject>: <formatted problem>" and returns EXIT_USER_ERROR. */

@@ -1,6 +1,7 @@
 /* gtlab approx TECHNIQUE: a real-time approximation on a G-buffer.
- * One file per technique (cli/approx_<name>.c).
- * The subcommands come from the technique registry (cli/techniques.c). */
+ * The subcommands come from the technique registry (cli/techniques.c):
+ * each technique's face (e.g. techniques/gtao/gtao_cli.c) through
+ * cli/approx_io.h. */
 #include "cli/cli.h"
 #include "cli/technique.h"
 

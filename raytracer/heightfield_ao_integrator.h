@@ -17,7 +17,8 @@
  * each pixel's surface is a slab: a point blocks a ray only where its depth
  * along the camera axis lies between the surface's depth d and d + T, so
  * light passes behind thin objects (the occluder model of visibility-bitmask
- * AO, realtime/vbao.h). T = INFINITY is the height field above, bit for bit. */
+ * AO, techniques/gtao/vbao.h). T = INFINITY is the height field above, bit
+ * for bit. */
 #ifndef GTLAB_RAYTRACER_HEIGHTFIELD_AO_INTEGRATOR_H
 #define GTLAB_RAYTRACER_HEIGHTFIELD_AO_INTEGRATOR_H
 

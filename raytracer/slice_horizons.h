@@ -3,7 +3,8 @@
  * variate").
  *
  * Directions about the surface point p are parametrised around the view
- * vector v (unit, from p to the eye), as in GTAO's slices (realtime/gtao.h):
+ * vector v (unit, from p to the eye), as in GTAO's slices
+ * (techniques/gtao/gtao.h):
  *   w(psi, theta) = cos theta v + sin theta (cos psi e1 + sin psi e2),
  *   psi in [0, 2 pi) the half-slice's rotation about v, theta in [0, pi] the
  *   angle from v, dw = sin theta dtheta dpsi,

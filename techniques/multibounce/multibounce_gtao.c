@@ -13,10 +13,10 @@
 
 #include "core/exr_io.h"
 #include "core/reference_schema.h"
+#include "gtao/gtao.h"
 #include "metrics/reference_halves.h"
 #include "multibounce/multibounce_parts.h"
 #include "raytracer/reference_render.h"
-#include "realtime/gtao.h"
 #include "scene/scene_loaders.h"
 #include "studies/gbuffer_input.h"
 

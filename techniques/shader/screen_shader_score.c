@@ -7,18 +7,19 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ao/ao_references.h"
 #include "core/path_name.h"
 #include "core/reference_schema.h"
 #include "core/sample_mean.h"
 #include "gpu/screen_pass.h"
-#include "realtime/gtao.h"
+#include "gtao/gtao.h"
+#include "gtao/gtao_scene_refs.h"
 #include "shader/shader_run.h"
-#include "studies/ao_references.h"
-#include "studies/gtao_scene_refs.h"
 
 enum { DEVICE_TIMEOUT_SECONDS = 10 }; /* per frame, as `gtlab shader run` */
 
-/* gtlab's C GTAO in shaders/gtao.glsl's configuration at its defaults. */
+/* gtlab's C GTAO in the configuration of techniques/gtao/gtao.glsl at its
+ * defaults. */
 static void c_gtao(const gtao_scene_refs *s, float *ao)
 {
     const gtao_params p = gtao_params_shader_port();

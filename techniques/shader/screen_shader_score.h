@@ -4,20 +4,20 @@
  * each AO reference's G-buffer (the ao stage's <output>/ao/<scene>.exr,
  * which carries depth.Z, N, P, albedo, mask.A, the bent normal and the
  * camera) and its ao.V is scored as the GTAO study scores gtlab's own
- * variants (studies/ao_image_score.h): RMSE, DSSIM and FLIP against the 3-D
- * reference, and the paired difference of squared errors against gtlab's C
- * GTAO on the same pixels with its 8x8-block standard error, pooled over the
- * scenes. The first row is that C GTAO, in the configuration of
- * shaders/gtao.glsl at its gtlab.param defaults (cosine weighting, 4 regular
- * slices, 8 steps per side, radius 1, falloff 0.25, at most 256 pixels, no
- * thickness, no denoiser, one frame), so the shader run with its defaults is
- * a sanity line: its largest difference from the C image is within the
- * bound of tests/test_gpu_screen_pass.c (2e-3). */
+ * variants (techniques/gtao/ao_image_score.h): RMSE, DSSIM and FLIP against
+ * the 3-D reference, and the paired difference of squared errors against
+ * gtlab's C GTAO on the same pixels with its 8x8-block standard error,
+ * pooled over the scenes. The first row is that C GTAO, in the
+ * configuration of techniques/gtao/gtao.glsl at its gtlab.param defaults
+ * (cosine weighting, 4 regular slices, 8 steps per side, radius 1, falloff
+ * 0.25, at most 256 pixels, no thickness, no denoiser, one frame), so the
+ * shader run with its defaults is a sanity line: its largest difference from
+ * the C image is within the bound of tests/test_gpu_screen_pass.c (2e-3). */
 #ifndef GTLAB_SHADER_SCREEN_SHADER_SCORE_H
 #define GTLAB_SHADER_SCREEN_SHADER_SCORE_H
 
+#include "gtao/ao_image_score.h"
 #include "metrics/cluster_mean.h"
-#include "studies/ao_image_score.h"
 #include "studies/study.h"
 #include "studies/study_project.h"
 

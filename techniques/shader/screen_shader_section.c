@@ -58,7 +58,7 @@ int screen_shader_section(report_context *ctx, const screen_shader_score_result 
                      "3-D reference, and the paired difference of squared errors against gtlab's C GTAO on the same "
                      "pixels, pooled with its 8x8-block standard error (better or worse where it exceeds Student's "
                      "t_0.975 standard errors and the two RMSEs differ by more than one 8-bit code value, %.4f, the "
-                     "smallest change an AO target shows; below that, no visible difference). GTAO (C) is realtime/gtao.c in the configuration of shaders/gtao.glsl "
+                     "smallest change an AO target shows; below that, no visible difference). GTAO (C) is techniques/gtao/gtao.c in the configuration of techniques/gtao/gtao.glsl "
                      "at its defaults: that shader, listed without parameters, differs from it by at most 2e-3 "
                      "(float rounding of cos, sin and acos on the device).",
                      r->device, r->scene_count, CLAIM_ONE_CODE_VALUE_8BIT);

@@ -1,7 +1,7 @@
 /* The cost of running a screen-space shader (`gtlab bench shader`; issue 15,
  * Performance): a shader under the contract of docs/shaders.md (e.g.
- * shaders/gtao.glsl, its gtlab.param defaults) over a 1920x1080 G-buffer of
- * a scene (one primary ray per pixel: no path tracing), `frames` frames on a
+ * techniques/gtao/gtao.glsl, its gtlab.param defaults) over a 1920x1080
+ * G-buffer of a scene (one primary ray per pixel: no path tracing), `frames` frames on a
  * Vulkan device, in one run (gpu_screen_pass_timed):
  *   dispatch    the device's wall time per frame, submission to fence: the
  *               shader's work alone

@@ -14,7 +14,7 @@
 static int bench_shader(int argc, char **argv)
 {
     static const cli_option options[] = {
-        CLI_REQUIRED_STRING("shader", "F.glsl|F.hlsl", "a shader of docs/shaders.md's contract, e.g. shaders/gtao.glsl"),
+        CLI_REQUIRED_STRING("shader", "F.glsl|F.hlsl", "a shader of docs/shaders.md's contract, e.g. techniques/gtao/gtao.glsl"),
         CLI_STRING("scene", "S", "builtin:NAME or a glTF file (default builtin:boxes)"),
         CLI_INT32("frames", "N", 1, 4096, "frames (default 4)"), CLI_STRING("device", "NAME", "a Vulkan device"),
         CLI_INT32("width", "W", 8, 8192, "default 1920"), CLI_INT32("height", "H", 8, 8192, "default 1080"), CLI_END};

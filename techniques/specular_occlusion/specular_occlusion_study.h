@@ -53,7 +53,7 @@ enum {
 /* GTAO's inputs by the bent-normal estimator (issue 25, item 10, downstream):
  * gtlab's exact arc mean, the talk's halfway angles (each slice weighted by
  * its visibility), the talk's average of the two horizon vectors
- * (realtime/gtao_bent_horizons.h). The AO is the same in all three. */
+ * (techniques/gtao/gtao_bent_horizons.h). The AO is the same in all three. */
 typedef enum { SO_GTAO_ARC_MEAN = 1, SO_GTAO_HALFWAY, SO_GTAO_HORIZON_VECTORS } so_gtao_bent;
 enum { SO_GTAO_INPUTS = 3 };
 

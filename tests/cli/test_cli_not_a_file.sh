@@ -63,7 +63,7 @@ for x in /dev/zero fifo folder; do
   expect_refused "approx --camera $x" "$x" approx gtao --gbuffer ao.exr --camera "$x" -o out.exr
   expect_refused "environment $x" "$x" render env-diffuse --scene builtin:plane --albedo 0.5 --environment "$x" $small -o out.exr
   expect_refused "shader $x" "$x" shader run --shader "$x" --gbuffer ao.exr -o out.exr
-  expect_refused "shader reference $x" "$x" shader run --shader "$source_dir/shaders/gtao.glsl" --gbuffer ao.exr --reference "$x" -o out.exr
+  expect_refused "shader reference $x" "$x" shader run --shader "$source_dir/techniques/gtao/gtao.glsl" --gbuffer ao.exr --reference "$x" -o out.exr
   expect_refused "function $x" "$x" shader score --function "$x" ao.exr
   expect_refused "plug-in $x" "$x" shader score --plugin "$x" ao.exr
   expect_refused "scene info $x" "$x" scene info "$x"

@@ -4,10 +4,11 @@
  * run`: glslang runs in a child process, and a crash there must come back
  * as one error line, never kill this process (issue 41). Text holding
  * "#version" is GLSL, anything else HLSL. The input is named as a file in
- * the project's shaders/ folder, so `#include "gtao.inc"` resolves as it
- * does for shaders/gtao.hlsl. What compiles is a SPIR-V module; what does
- * not, an error of one line. (glslang is Debian's uninstrumented library:
- * the fuzzer sees gtlab's branches, not glslang's.) */
+ * the folder of gtlab's GTAO shaders (techniques/gtao/), so `#include
+ * "gtao.inc"` resolves as it does for techniques/gtao/gtao.hlsl. What
+ * compiles is a SPIR-V module; what does not, an error of one line.
+ * (glslang is Debian's uninstrumented library: the fuzzer sees gtlab's
+ * branches, not glslang's.) */
 #include <string.h>
 
 #include "fuzz_target.h"
@@ -24,7 +25,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     memcpy(text, data, size);
     text[size] = '\0';
     const int glsl = strstr(text, "#version") != NULL;
-    const char *name = glsl ? GTLAB_SOURCE_DIR "/shaders/fuzz.glsl" : GTLAB_SOURCE_DIR "/shaders/fuzz.hlsl";
+    const char *name =
+        glsl ? GTLAB_SOURCE_DIR "/techniques/gtao/fuzz.glsl" : GTLAB_SOURCE_DIR "/techniques/gtao/fuzz.hlsl";
     gpu_spirv spirv;
     gt_error e = {{0}};
     if (gpu_compile_compute(text, name, glsl ? GPU_SOURCE_GLSL : GPU_SOURCE_HLSL, NULL, &spirv, &e) == 0) {

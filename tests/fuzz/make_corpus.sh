@@ -160,7 +160,7 @@ printf -- 'gtlab.sample_blocks=4294967295:18446744073709551615+18446744073709551
 # includes gtao.inc), small valid and broken ones, and the family of issue
 # 41's crash that does not crash (a main without its body: no entry point).
 # The members that crashed glslang are in regressions/shader/.
-cp "$here/../../shaders/gtao.glsl" "$here/../../shaders/gtao.hlsl" "$corpus/shader/"
+cp "$here/../../techniques/gtao/gtao.glsl" "$here/../../techniques/gtao/gtao.hlsl" "$corpus/shader/"
 printf 'RWStructuredBuffer<float> o : register(u0);\n[numthreads(8, 1, 1)]\nvoid main(uint3 id : SV_DispatchThreadID)\n{\n    o[id.x] = 2.0 * id.x;\n}\n' >"$corpus/shader/small.hlsl"
 printf '#version 450\nlayout(local_size_x = 8) in;\nlayout(std430, binding = 0) buffer O { float o[]; };\nvoid main() { o[gl_GlobalInvocationID.x] = 1.0; }\n' >"$corpus/shader/small.glsl"
 printf '#version 450\nlayout(local_size_x = 8) in;\nvoid main() { undeclared = 1; }\n' >"$corpus/shader/broken.glsl"

@@ -1,6 +1,6 @@
 /* `gtlab bench multibounce`'s study (multibounce_bench.h) on a tiny view
- * (builtin:corner, 16x16, 1 pass), as tests/studies/test_benchmarks.c checks
- * the other benchmarks: the figures are rates (positive), a path casts at
+ * (builtin:corner, 16x16, 1 pass), as the other benchmarks' tests check
+ * theirs (techniques/throughput/, techniques/ao/): the figures are rates (positive), a path casts at
  * least one ray, and a failing scene is an error. Timings themselves are
  * not checked. */
 #include "multibounce/multibounce_bench.h"

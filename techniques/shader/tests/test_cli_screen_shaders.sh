@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The project's screen-space shaders in `gtlab all` (issue 15, item 6), as a
-# user runs them: a project listing shaders/gtao.glsl and shaders/gtao.hlsl
-# (one source, shaders/gtao.inc) on builtin:boxes' AO reference (the ao
-# stage's file, from an earlier run into the same folder) gets the section:
+# user runs them: a project listing techniques/gtao/gtao.glsl and
+# techniques/gtao/gtao.hlsl (one source, techniques/gtao/gtao.inc) on
+# builtin:boxes' AO reference (the ao stage's file, from an earlier run into
+# the same folder) gets the section:
 # the two shader rows equal each other bit for bit (the same SPIR-V
 # operations on the same device), and each is within the bound of
 # tests/test_gpu_screen_pass.c of gtlab's C GTAO row (max |AO - C| <=
@@ -18,7 +19,7 @@ source "$(dirname "$0")/../../../tests/cli/cli_test_lib.sh"
 vulkan_preload
 "$gtlab" render ao --scene builtin:boxes --width 48 --height 32 --spp 8 --threads 2 -o "$work/out/ao/boxes.exr" \
   2>/dev/null || fail "render ao"
-cp "$source_dir/shaders/gtao.glsl" "$source_dir/shaders/gtao.hlsl" "$source_dir/shaders/gtao.inc" "$work/"
+cp "$source_dir/techniques/gtao/gtao.glsl" "$source_dir/techniques/gtao/gtao.hlsl" "$source_dir/techniques/gtao/gtao.inc" "$work/"
 
 printf '{"scenes": [{"path": "builtin:boxes"}], "screen_shaders": [{"path": "gtao.glsl"}, %s]}' \
   '{"path": "gtao.hlsl", "quantity": "ao", "params": {"radius": 1.0}}' >"$work/project.json"

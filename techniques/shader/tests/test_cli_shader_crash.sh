@@ -46,7 +46,7 @@ expect_error "main without body" "main-without-body.hlsl: no function main with 
   shader run --shader "$work/main-without-body.hlsl" --gbuffer "$work/g.exr" -o "$work/o.exr"
 
 # The child still resolves #include beside the file: the project's GTAO, whose HLSL includes gtao.inc.
-cp "$source_dir/shaders/gtao.hlsl" "$source_dir/shaders/gtao.inc" "$work/"
+cp "$source_dir/techniques/gtao/gtao.hlsl" "$source_dir/techniques/gtao/gtao.inc" "$work/"
 expect_ok "gtao.hlsl" shader run --shader "$work/gtao.hlsl" --gbuffer "$work/g.exr" -o "$work/o.exr"
 [ -s "$work/o.exr" ] && pass || fail "gtao.hlsl wrote no output"
 no_leftovers "$work"

@@ -1,7 +1,7 @@
 /* The screen-space contract end to end (issue 15, items 2 and 4):
- * shaders/gtao.glsl and shaders/gtao.hlsl, gtlab's GTAO in one configuration
- * (one source, shaders/gtao.inc, behind each language's bindings), run by
- * `gtlab shader run`'s study (techniques/shader/shader_run.c) on a built-in scene's
+ * techniques/gtao/gtao.glsl and techniques/gtao/gtao.hlsl, gtlab's GTAO in one
+ * configuration (one source, techniques/gtao/gtao.inc, behind each
+ * language's bindings), run by `gtlab shader run`'s study (techniques/shader/shader_run.c) on a built-in scene's
  * G-buffer EXR, against the C gtao_frame on the same G-buffer; then the
  * failures that must leave no output behind.
  *
@@ -27,8 +27,8 @@
 #include "core/exr_io.h"
 #include "gpu/shader_compiler.h"
 #include "gpu/shader_interface.h"
+#include "gtao/gtao.h"
 #include "raytracer/reference_render.h"
-#include "realtime/gtao.h"
 #include "scene/scene_loaders.h"
 #include "shader/shader_run.h"
 #include "studies/gbuffer_input.h"
@@ -206,7 +206,7 @@ static void test_frames_average(void)
 
 static void test_failures(void)
 {
-    shader_run_request r = request(GTLAB_SOURCE_DIR "/shaders/gtao.glsl");
+    shader_run_request r = request(GTLAB_SOURCE_DIR "/techniques/gtao/gtao.glsl");
     const char *params[1] = {"radius_typo=2"};
     r.params = params, r.param_count = 1;
     check_fails(&r, "--param radius_typo: the shader declares no such parameter (its gtlab.param lines: radius,");
@@ -234,10 +234,10 @@ int main(void)
     float *ao = NULL;
     if (write_gbuffer() != 0 || c_gtao(&ao) != 0)
         return 1;
-    test_defaults_are_the_c_configuration(GTLAB_SOURCE_DIR "/shaders/gtao.glsl");
-    test_defaults_are_the_c_configuration(GTLAB_SOURCE_DIR "/shaders/gtao.hlsl");
-    test_gtao_matches_c(ao, GTLAB_SOURCE_DIR "/shaders/gtao.glsl");
-    test_gtao_matches_c(ao, GTLAB_SOURCE_DIR "/shaders/gtao.hlsl");
+    test_defaults_are_the_c_configuration(GTLAB_SOURCE_DIR "/techniques/gtao/gtao.glsl");
+    test_defaults_are_the_c_configuration(GTLAB_SOURCE_DIR "/techniques/gtao/gtao.hlsl");
+    test_gtao_matches_c(ao, GTLAB_SOURCE_DIR "/techniques/gtao/gtao.glsl");
+    test_gtao_matches_c(ao, GTLAB_SOURCE_DIR "/techniques/gtao/gtao.hlsl");
     test_frames_average();
     test_failures();
     free(ao);

@@ -1,7 +1,8 @@
 /* `gtlab bench specular-occlusion`'s study on a tiny view (builtin:corner,
  * 16x12, 1 pass): the figures are rates (positive), one ray per sample at
  * most, and a failing scene is an error. Timings themselves are not
- * checked (the other benchmarks: tests/studies/test_benchmarks.c). */
+ * checked (the other benchmarks: techniques/throughput/tests/,
+ * techniques/ao/tests/test_ao_convergence.c). */
 #include "specular_occlusion/specular_occlusion_bench.h"
 #include "tests/check.h"
 

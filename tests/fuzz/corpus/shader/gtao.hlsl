@@ -1,7 +1,7 @@
-// GTAO (Jimenez et al. 2016) as gtlab runs it in C (realtime/gtao.c), under
-// gtlab's screen-space contract (docs/shaders.md), in HLSL. The technique is
-// shaders/gtao.inc, shared with shaders/gtao.glsl; this file holds only the
-// bindings, the declarations and the dialect.
+// GTAO (Jimenez et al. 2016) as gtlab runs it in C (techniques/gtao/gtao.c),
+// under gtlab's screen-space contract (docs/shaders.md), in HLSL. The
+// technique is gtao.inc beside this file, shared with gtao.glsl; this file
+// holds only the bindings, the declarations and the dialect.
 // techniques/shader/tests/test_gpu_screen_pass.c compares both with the C
 // gtao_frame.
 //
