@@ -1,5 +1,5 @@
 /* The paths of a batch of samples as a wavefront, shared by the two diffuse
- * path tracers (raytracer/multibounce_integrator.c under the white dome,
+ * path tracers (techniques/multibounce/multibounce_integrator.c under the white dome,
  * techniques/environment/environment_diffuse_integrator.c under an environment): every
  * live path takes one bounce before any takes the next, so each depth's
  * rays go to Embree as one stream and each dimension pair's scramble seeds
@@ -16,7 +16,7 @@
 #ifndef GTLAB_RAYTRACER_DIFFUSE_PATH_WAVEFRONT_H
 #define GTLAB_RAYTRACER_DIFFUSE_PATH_WAVEFRONT_H
 
-#include "raytracer/multibounce_integrator.h"
+#include "raytracer/diffuse_path_albedos.h"
 #include "raytracer/render_loop.h"
 
 /* A live path at its current vertex. Its throughput lives apart, per

@@ -60,7 +60,7 @@ void heightfield_settings_free(heightfield_settings *hs);
 int heightfield_unoccluded(const heightfield_settings *hs, vec3 p, vec3 d);
 
 /* The surface the ray p + t d first meets in the height-field world (the
- * multi-bounce reference of raytracer/heightfield_multibounce_integrator.h):
+ * multi-bounce reference of techniques/multibounce/heightfield_multibounce_integrator.h):
  * 0 where heightfield_unoccluded is 1; else 1 and, if hit is not NULL, the
  * G-buffer hit of the pixel whose solid the ray enters (its material), at
  * the point where it does: on the pixel's surface (its tangent plane,

@@ -86,7 +86,7 @@ void reference_option_help(const reference_registry *r, const reference_option *
     text[0] = '\0';
     for (int i = 0; i < r->count; ++i) {
         const reference_option *own = reference_quantity_option(r->quantities[i], option);
-        if (!own || listed_before(r, i, own))
+        if (!own || !own->help || listed_before(r, i, own))
             continue;
         size_t used = strlen(text);
         snprintf(text + used, size - used, "%s%s", used ? "\n" : "", own->help);

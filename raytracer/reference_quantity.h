@@ -45,7 +45,8 @@ typedef struct reference_settings {
  * An option is its name: quantities share one by listing the same object
  * (ao and heightfield-ao share --max-distance) or objects of the same name,
  * value placeholder and `required` (specular-occlusion and env-* each parse
- * their own --environment: a quantity never calls another's code). `gtlab
+ * their own --environment and --roughness into their own settings: a
+ * quantity never calls another's code). `gtlab
  * render` shows it once, its help the distinct objects' helps in registry
  * order, parses it with the rendered quantity's object and refuses it with
  * any other quantity ("--max-distance: applies to ao and heightfield-ao
@@ -55,7 +56,7 @@ typedef struct reference_option {
     const char *value;    /* the value's placeholder in the help ("D"), or NULL: a flag */
     int required;         /* 1: the quantities listing it need it */
     const char *hint;     /* with `required`: what to give, appended to the "needs" error, or NULL */
-    const char *help;     /* after "<quantities>: ", lines separated by '\n' */
+    const char *help;     /* after "<quantities>: ", lines separated by '\n'; NULL: another object's of its name says it all */
     /* Parses the value (NULL for a flag) into the request (its fields, or the
      * quantity's settings, reference_settings_of). Errors name "--<name>". */
     int (*parse)(struct reference_request *rq, const char *value, gt_error *e);

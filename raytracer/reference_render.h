@@ -6,10 +6,8 @@
 #define GTLAB_RAYTRACER_REFERENCE_RENDER_H
 
 #include "core/image.h"
-#include "core/sky_environment.h"
 #include "raytracer/ao_control_variate.h"
 #include "raytracer/gbuffer.h"
-#include "raytracer/multibounce_integrator.h"
 #include "raytracer/reference_quantity.h"
 #include "raytracer/render_loop.h"
 #include "scene/scene.h"
@@ -18,22 +16,18 @@
  * callers: `.quantity = QUANTITY_AO`. A technique's quantity is declared by
  * its reference part (e.g. techniques/sphere_light/sphere_light_quantity.h). */
 extern const reference_quantity_descriptor reference_quantity_gbuffer, reference_quantity_ao,
-    reference_quantity_multibounce, reference_quantity_heightfield_ao, reference_quantity_heightfield_multibounce,
-    reference_quantity_specular_occlusion;
+    reference_quantity_heightfield_ao;
 #define QUANTITY_GBUFFER (&reference_quantity_gbuffer)
 #define QUANTITY_AO (&reference_quantity_ao)
-#define QUANTITY_MULTIBOUNCE (&reference_quantity_multibounce)
 #define QUANTITY_HEIGHTFIELD_AO (&reference_quantity_heightfield_ao)
-#define QUANTITY_HEIGHTFIELD_MULTIBOUNCE (&reference_quantity_heightfield_multibounce)
-#define QUANTITY_SPECULAR_OCCLUSION (&reference_quantity_specular_occlusion)
 
 /* What to render. A quantity keeps its settings in its own struct, headed by
  * a reference_settings naming it (reference_quantity.h), pointed at by
  * `settings` (its descriptor's settings_size: its options fill it on the
  * command line, a caller points it at its own struct), so adding a quantity
- * changes nothing here. The fields from max_distance to environment are the
- * settings of ao, multibounce and specular-occlusion, which move into their
- * own structs next (docs/render-quantities.md). A zeroed request (quantity
+ * changes nothing here. The fields from max_distance to control_variate are
+ * the settings of ao, which move into its own struct next
+ * (docs/render-quantities.md). A zeroed request (quantity
  * NULL) renders the G-buffer. */
 typedef struct reference_request {
     reference_quantity quantity;
@@ -43,10 +37,6 @@ typedef struct reference_request {
     float fade_start;                 /* ao only: occlusion fades linearly to 0 from here to max_distance
                                          (raytracer/ao_integrator.h); 0: a hard cutoff */
     ao_control_variate control_variate; /* ao only: none (plain sampling) or heightfield */
-    multibounce_settings multibounce; /* multibounce only: albedos, bounces */
-    float roughness;                  /* specular-occlusion and env-specular: a roughness setting
-                                         (core/roughness_setting.h) */
-    environment_kind environment;     /* specular-occlusion only: sky adds the split-integral channels */
     reference_settings *settings;     /* the quantity's own settings (their header names it), or NULL */
     /* Where this process keeps its checkpoint (raytracer/render_checkpoint.h;
      * under mpirun each rank its own: render_checkpoint_files.h), or NULL:

@@ -110,10 +110,11 @@ static int render(const env_state *st, const scene *s, const char *spec, const c
     environment_render_settings_default(&light, q);
     snprintf(light.environment, sizeof light.environment, "%s", environment ? environment : "white");
     light.f0 = 0.04f;
+    light.roughness = ROUGHNESS_OF_MATERIAL;
+    light.multibounce = (multibounce_settings){.scene_albedo = 1, .bounces = st->out->bounces};
     reference_request req = {.quantity = q,
                              .sampling = {.spp = st->out->spp, .seed = 1, .threads = st->ctx->threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY, .roughness = ROUGHNESS_OF_MATERIAL,
-                             .multibounce = {.scene_albedo = 1, .bounces = st->out->bounces},
+                             .normals = NORMAL_SHADING, .max_distance = INFINITY,
                              .settings = environment ? &light.header : NULL};
     render_stats stats;
     return reference_render(s, spec, cam, &req, out, &stats, e);

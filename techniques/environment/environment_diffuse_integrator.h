@@ -3,7 +3,7 @@
  * AO x irradiance approximates (issue 28). What is estimated, per colour
  * channel c, is the outgoing radiance divided by the shading point's
  * albedo, as the white-dome multibounce reference does
- * (raytracer/multibounce_integrator.h):
+ * (techniques/multibounce/multibounce_integrator.h):
  *
  *   env_diffuse.c            L_c / rho_c, every surface of albedo rho (a grey
  *                            one, or the glTF base colour per channel), with
@@ -39,7 +39,7 @@
 #define GTLAB_ENVIRONMENT_ENVIRONMENT_DIFFUSE_INTEGRATOR_H
 
 #include "environment/environment_light.h"
-#include "raytracer/multibounce_integrator.h"
+#include "multibounce/multibounce_integrator.h"
 #include "raytracer/render_loop.h"
 
 enum { ENV_DIFFUSE_QUANTITIES = 9 };

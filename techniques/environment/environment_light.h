@@ -23,6 +23,7 @@
 
 #include "core/environment_map.h"
 #include "core/environment_sampler.h"
+#include "multibounce/multibounce_integrator.h"
 #include "raytracer/reference_quantity.h"
 
 /* The settings of env-diffuse and env-specular, one struct for both
@@ -32,6 +33,8 @@ typedef struct {
     char environment[ENVIRONMENT_NAME_MAX]; /* "white", "sky", "sun" or a file */
     float rotate_degrees, intensity;
     float f0; /* env-specular: grey F0 for every surface; < 0: the materials' */
+    multibounce_settings multibounce; /* env-diffuse: albedos (one grey or the scene's), bounces */
+    float roughness;                  /* env-specular: a roughness setting (core/roughness_setting.h) */
 } environment_render_settings;
 
 /* The defaults for quantity q (env-diffuse or env-specular, which the header

@@ -15,7 +15,6 @@
 #include "environment/environment_diffuse_integrator.h"
 #include "environment/environment_specular_integrator.h"
 #include "raytracer/reference_render.h"
-#include "raytracer/shared_options.h"
 
 _Static_assert(offsetof(environment_render_settings, header) == 0, "the header comes first");
 
@@ -63,6 +62,49 @@ static int parse_f0(reference_request *rq, const char *value, gt_error *e)
     return 0;
 }
 
+static int parse_albedo(reference_request *rq, const char *value, gt_error *e)
+{
+    return multibounce_parse_albedos(value, &settings_of(rq)->multibounce, e);
+}
+
+static int parse_bounces(reference_request *rq, const char *value, gt_error *e)
+{
+    return multibounce_parse_bounces(value, &settings_of(rq)->multibounce, e);
+}
+
+static int parse_roughness(reference_request *rq, const char *value, gt_error *e)
+{
+    double r;
+    if (parse_real_in("--roughness", value, 0.0, 1.0, &r, e) != 0)
+        return -1;
+    settings_of(rq)->roughness = (float)r;
+    return 0;
+}
+
+/* Share their names with multibounce's --albedo and --bounces and
+ * specular-occlusion's --roughness, whose helps come first in `gtlab render
+ * --help` (--bounces and --roughness add nothing to them). */
+static const reference_option albedo_option = {
+    .name = "albedo",
+    .value = "A,B,...|scene",
+    .required = 1,
+    .hint = "grey albedos such as 0.1,0.5,0.9, or 'scene'",
+    .help = "(env-diffuse: one grey albedo or 'scene')",
+    .parse = parse_albedo,
+};
+
+static const reference_option bounces_option = {
+    .name = "bounces",
+    .value = "N|inf",
+    .parse = parse_bounces,
+};
+
+static const reference_option roughness_option = {
+    .name = "roughness",
+    .value = "R",
+    .parse = parse_roughness,
+};
+
 /* Shares its name with specular-occlusion's --environment (white or sky),
  * whose help comes first in `gtlab render --help`. */
 static const reference_option environment_option = {
@@ -99,9 +141,10 @@ static const reference_option f0_option = {
 
 static void set_defaults(reference_request *rq)
 {
-    environment_render_settings_default(settings_of(rq), rq->quantity);
-    rq->multibounce.bounces = 4; /* as multibounce */
-    rq->roughness = ROUGHNESS_OF_MATERIAL;
+    environment_render_settings *s = settings_of(rq);
+    environment_render_settings_default(s, rq->quantity);
+    s->multibounce.bounces = 4; /* as multibounce */
+    s->roughness = ROUGHNESS_OF_MATERIAL;
 }
 
 /* What prepare allocates: the light, and the plan of either integrator
@@ -157,12 +200,12 @@ static int prepare_diffuse(const reference_pass *pass, void **state, integrator 
     environment_state *st = state_with_light(pass, e);
     if (!st)
         return -1;
-    if (environment_diffuse_plan_init(&st->plan.diffuse, &st->light, &pass->req->multibounce, pass->req->normals,
-                                      e) != 0) {
+    const environment_render_settings *s = settings_of(pass->req);
+    if (environment_diffuse_plan_init(&st->plan.diffuse, &st->light, &s->multibounce, pass->req->normals, e) != 0) {
         release(st);
         return -1;
     }
-    if (pass->req->multibounce.scene_albedo)
+    if (s->multibounce.scene_albedo)
         multibounce_warn_albedo_range(pass->scene);
     *state = st;
     *it = environment_diffuse_integrator(pass->es, &st->plan.diffuse);
@@ -173,8 +216,8 @@ static int write_diffuse_settings(const reference_request *rq, image *out)
 {
     const environment_render_settings *s = settings_of(rq);
     char albedos[512], bounces[16];
-    multibounce_albedos_text(&rq->multibounce, albedos, sizeof albedos);
-    multibounce_bounces_text(&rq->multibounce, bounces, sizeof bounces);
+    multibounce_albedos_text(&s->multibounce, albedos, sizeof albedos);
+    multibounce_bounces_text(&s->multibounce, bounces, sizeof bounces);
     int rc = write_environment(s, out);
     rc |= image_set_attribute(out, ATTR_ALBEDOS, albedos);
     rc |= image_set_attribute(out, ATTR_BOUNCES, bounces);
@@ -195,7 +238,7 @@ const reference_quantity_descriptor reference_quantity_env_diffuse = {
             "env_diffuse_unoccluded.R/G/B (visibility off), from the same samples;\n"
             "the header holds gtlab.environment, gtlab.albedos and gtlab.bounces",
     .options = (const reference_option *const[]){&environment_option, &rotate_option, &intensity_option,
-                                                 &reference_option_albedo, &reference_option_bounces, NULL},
+                                                 &albedo_option, &bounces_option, NULL},
     .settings_size = sizeof(environment_render_settings),
     .set_defaults = set_defaults,
     .prepare = prepare_diffuse,
@@ -211,7 +254,7 @@ static int prepare_specular(const reference_pass *pass, void **state, integrator
     if (!st)
         return -1;
     const environment_render_settings *s = settings_of(pass->req);
-    if (environment_specular_plan_init(&st->plan.specular, &st->light, pass->req->roughness, s->f0,
+    if (environment_specular_plan_init(&st->plan.specular, &st->light, s->roughness, s->f0,
                                        pass->gb->view.origin, e) != 0) {
         release(st);
         return -1;
@@ -226,7 +269,7 @@ static int write_specular_settings(const reference_request *rq, image *out)
     const environment_render_settings *s = settings_of(rq);
     char roughness[32], f0[32] = "material";
     int rc = write_environment(s, out);
-    rc |= reference_write_roughness(out, rq->roughness, roughness, sizeof roughness);
+    rc |= reference_write_roughness(out, s->roughness, roughness, sizeof roughness);
     if (s->f0 >= 0.0f) {
         snprintf(f0, sizeof f0, "%.9g", s->f0);
         rc |= schema_set_real(out, ATTR_F0, s->f0);
@@ -246,7 +289,7 @@ const reference_quantity_descriptor reference_quantity_env_specular = {
             "--f0): env_specular.R/G/B with visibility and\n"
             "env_specular_unoccluded.R/G/B without, from the same samples",
     .options = (const reference_option *const[]){&environment_option, &rotate_option, &intensity_option,
-                                                 &reference_option_roughness, &f0_option, NULL},
+                                                 &roughness_option, &f0_option, NULL},
     .settings_size = sizeof(environment_render_settings),
     .set_defaults = set_defaults,
     .prepare = prepare_specular,

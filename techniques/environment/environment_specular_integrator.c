@@ -30,7 +30,7 @@ int environment_specular_plan_init(environment_specular_plan *plan, const enviro
 }
 
 /* The view direction in the shading frame, never below its horizon (as
- * raytracer/specular_occlusion_integrator.c). */
+ * techniques/specular_occlusion/specular_occlusion_integrator.c). */
 static vec3 local_view(const pixel_context *px, vec3 camera_position)
 {
     vec3 v = frame_to_local(&px->shading, v3_normalize(v3_sub(camera_position, px->surface->p)));

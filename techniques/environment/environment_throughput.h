@@ -10,7 +10,7 @@
 
 #include "core/error.h"
 #include "environment/environment_light.h"
-#include "raytracer/multibounce_integrator.h"
+#include "multibounce/multibounce_integrator.h"
 #include "scene/scene.h"
 
 /* Issue 28's goal for the ratio below. */

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "multibounce/multibounce_parts.h"
+#include "multibounce/multibounce_quantity.h"
 #include "scene/scene_loaders.h"
 
 static const int kBounces[MULTIBOUNCE_BOUNCE_COUNTS] = {1, 2, 4, MULTIBOUNCE_UNLIMITED};
@@ -38,8 +39,10 @@ static int render_into(const study_context *ctx, const reference_request *req, c
 static int render_bounces(const study_context *ctx, const reference_request *base, int bounces,
                           const char *const *scenes, multibounce_data *d, double *seconds, gt_error *e)
 {
+    multibounce_render_settings mb = {{QUANTITY_MULTIBOUNCE}, *multibounce_settings_of(base)};
+    mb.multibounce.bounces = bounces;
     reference_request req = *base;
-    req.multibounce.bounces = bounces;
+    req.settings = &mb.header;
     multibounce_data_init(d);
     for (int k = 0; k < MULTIBOUNCE_STUDY_SCENES; ++k) {
         char spec[128];

@@ -10,6 +10,7 @@
 #include "metrics/reference_halves.h"
 #include "metrics/ssim.h"
 #include "multibounce/multibounce_parts.h"
+#include "multibounce/multibounce_quantity.h"
 #include "scene/scene_loaders.h"
 
 /* The coloured scenes: the Cornell box as built, and two of the white
@@ -38,8 +39,10 @@ static int load_colour_scene(const colour_scene *c, const char *spec, scene *s, 
 static int render_colour(const study_context *ctx, const reference_request *base, const colour_scene *c,
                          const char *spec, image *img, gt_error *e)
 {
+    multibounce_render_settings mb = {{QUANTITY_MULTIBOUNCE},
+                                      {.scene_albedo = 1, .bounces = multibounce_settings_of(base)->bounces}};
     reference_request req = *base;
-    req.multibounce = (multibounce_settings){.scene_albedo = 1, .bounces = base->multibounce.bounces};
+    req.settings = &mb.header;
     scene s;
     if (load_colour_scene(c, spec, &s, e) != 0)
         return -1;

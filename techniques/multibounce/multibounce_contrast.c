@@ -10,6 +10,7 @@
 #include "core/reference_schema.h"
 #include "metrics/reference_halves.h"
 #include "multibounce/multibounce_parts.h"
+#include "multibounce/multibounce_quantity.h"
 #include "scene/scene_loaders.h"
 
 /* Scenes with a floor (mesh 0) and objects (the other meshes). */
@@ -64,8 +65,10 @@ static int load_contrast_scene(const char *spec, float floor_albedo, float objec
 static int render_contrast(const study_context *ctx, const reference_request *base, const char *spec,
                            const float pair[2], image *img, gt_error *e)
 {
+    multibounce_render_settings mb = {{QUANTITY_MULTIBOUNCE},
+                                      {.scene_albedo = 1, .bounces = multibounce_settings_of(base)->bounces}};
     reference_request req = *base;
-    req.multibounce = (multibounce_settings){.scene_albedo = 1, .bounces = base->multibounce.bounces};
+    req.settings = &mb.header;
     scene s;
     if (load_contrast_scene(spec, pair[0], pair[1], &s, e) != 0)
         return -1;

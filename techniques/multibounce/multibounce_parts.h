@@ -5,7 +5,7 @@
 #define GTLAB_MULTIBOUNCE_MULTIBOUNCE_PARTS_H
 
 #include "multibounce/multibounce_study.h"
-#include "raytracer/multibounce_integrator.h"
+#include "multibounce/multibounce_quantity.h"
 #include "raytracer/reference_render.h"
 
 typedef struct {

@@ -8,8 +8,8 @@
 #include "core/exr_io.h"
 #include "metrics/reference_halves.h"
 #include "multibounce/multibounce_parts.h"
-#include "raytracer/multibounce_throughput.h"
-#include "raytracer/reference_render.h"
+#include "multibounce/multibounce_quantity.h"
+#include "multibounce/multibounce_throughput.h"
 #include "scene/scene_loaders.h"
 
 /* The plane is left out: V_d = V'_d = 1 everywhere, nothing to fit. */
@@ -21,16 +21,18 @@ static const float kAlbedos[MULTIBOUNCE_STUDY_ALBEDOS] = {0.1f, 0.2f, 0.3f, 0.4f
 
 /* ---- References ------------------------------------------------------------------------ */
 
-static reference_request request(const study_context *ctx)
+/* The study's request, its settings in *mb. */
+static reference_request request(const study_context *ctx, multibounce_render_settings *mb)
 {
     int preview = ctx->quality == QUALITY_PREVIEW;
-    reference_request req = {.quantity = QUANTITY_MULTIBOUNCE,
-                             .sampling = {.spp = preview ? 128 : 2048, .seed = 1, .threads = ctx->threads},
-                             .normals = NORMAL_SHADING,
-                             .max_distance = INFINITY,
-                             .multibounce = {.albedo_count = MULTIBOUNCE_STUDY_ALBEDOS, .bounces = 4}};
-    memcpy(req.multibounce.albedos, kAlbedos, sizeof kAlbedos);
-    return req;
+    *mb = (multibounce_render_settings){{QUANTITY_MULTIBOUNCE},
+                                        {.albedo_count = MULTIBOUNCE_STUDY_ALBEDOS, .bounces = 4}};
+    memcpy(mb->multibounce.albedos, kAlbedos, sizeof kAlbedos);
+    return (reference_request){.quantity = QUANTITY_MULTIBOUNCE,
+                               .sampling = {.spp = preview ? 128 : 2048, .seed = 1, .threads = ctx->threads},
+                               .normals = NORMAL_SHADING,
+                               .max_distance = INFINITY,
+                               .settings = &mb->header};
 }
 
 /* Scene k rendered at its default camera into st->refs[k]. */
@@ -121,8 +123,8 @@ static int measure_performance(const study_context *ctx, const reference_request
                                multibounce_performance *p, gt_error *e)
 {
     *p = (multibounce_performance){.scene = "builtin:menger", .width = 96, .height = 96, .spp = 32,
-                                   .albedos = req->multibounce.albedo_count,
-                                   .channels = req->multibounce.albedo_count + 1};
+                                   .albedos = multibounce_settings_of(req)->albedo_count,
+                                   .channels = multibounce_settings_of(req)->albedo_count + 1};
     scene s;
     if (scene_load(p->scene, &s, e) != 0)
         return -1;
@@ -130,7 +132,7 @@ static int measure_performance(const study_context *ctx, const reference_request
     multibounce_benchmark b;
     int rc = scene_choose_camera(&s, NULL, p->width, p->height, &cam, e);
     if (rc == 0)
-        rc = multibounce_benchmark_run(&s, &cam, &req->multibounce, p->spp, ctx->threads, 1, &b, e);
+        rc = multibounce_benchmark_run(&s, &cam, multibounce_settings_of(req), p->spp, ctx->threads, 1, &b, e);
     scene_free(&s);
     if (rc != 0)
         return -1;
@@ -195,11 +197,12 @@ int multibounce_study(const study_context *ctx, multibounce_study_result *out, g
         return gt_error_set(e, "multibounce", "out of memory");
     }
     multibounce_data_init(&st->data);
-    const reference_request req = request(ctx);
-    out->bounces = req.multibounce.bounces;
+    multibounce_render_settings mb;
+    const reference_request req = request(ctx, &mb);
+    out->bounces = mb.multibounce.bounces;
     out->spp = req.sampling.spp;
     memcpy(out->albedo_values, kAlbedos, sizeof kAlbedos);
-    int rc = multibounce_plan_init(&st->plan, &req.multibounce, req.normals, e);
+    int rc = multibounce_plan_init(&st->plan, &mb.multibounce, req.normals, e);
     if (rc == 0)
         rc = study_references(ctx, &req, st, out, e);
     if (rc == 0)

@@ -12,7 +12,7 @@
  * V_d alone, the talk's model, ours and ours fitted without the scene, each
  * fed V_d of the even-index samples (metrics/reference_halves.h), with the
  * noise floors (the even half of V'_d against the odd half). Performance: a
- * short multi-bounce benchmark (raytracer/multibounce_throughput.h).
+ * short multi-bounce benchmark (multibounce_throughput.h).
  *
  * Writes <output>/multibounce/<scene>.exr and .camera.json (and the
  * height-field multi-bounce reference at the same camera, multibounce/heightfield/<scene>.exr), the fit's
@@ -158,7 +158,7 @@ typedef struct {
 /* The bounce count (issue 25, item 3): the published a, b, c were fitted
  * to 4-bounce references; the same scenes, camera and samples rendered at
  * 1, 2, 4 and unlimited inter-reflections (Russian roulette,
- * raytracer/multibounce_integrator.h: unbiased but for paths cut after
+ * multibounce_integrator.h: unbiased but for paths cut after
  * 1024 bounces), the joint linear refit of each, and how far the talk's
  * curve is from each refit. */
 enum { MULTIBOUNCE_BOUNCE_COUNTS = 4 };

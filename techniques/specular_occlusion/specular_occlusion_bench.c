@@ -4,17 +4,18 @@
 #include <math.h>
 #include <string.h>
 
-#include "raytracer/reference_render.h"
+#include "specular_occlusion/specular_occlusion_quantity.h"
 #include "studies/study.h"
 
 /* The best samples/s over `repeats` renders, and the rays/s of that render. */
 static int best_rate(const scene *s, const char *spec, const camera *cam, int threads, int repeats, double *samples,
                      double *rays, gt_error *e)
 {
+    specular_occlusion_render_settings so =
+        specular_occlusion_render_settings_make(SPECOCC_BENCH_ROUGHNESS, ENVIRONMENT_WHITE);
     reference_request req = {.quantity = QUANTITY_SPECULAR_OCCLUSION,
                              .sampling = {.spp = SPECOCC_BENCH_SPP, .seed = 1, .threads = threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY,
-                             .roughness = SPECOCC_BENCH_ROUGHNESS};
+                             .normals = NORMAL_SHADING, .max_distance = INFINITY, .settings = &so.header};
     *samples = *rays = 0.0;
     for (int r = 0; r < repeats; ++r) {
         image img;

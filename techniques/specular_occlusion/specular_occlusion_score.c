@@ -14,6 +14,7 @@
 #include "core/roughness_setting.h"
 #include "specular_occlusion/specular_occlusion_study.h"
 #include "specular_occlusion/specular_occlusion_inputs.h"
+#include "specular_occlusion/specular_occlusion_quantity.h"
 #include "studies/study_scenes.h"
 
 /* gtlab's own rows (so_variant_parse's texts). */

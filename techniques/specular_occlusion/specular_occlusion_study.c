@@ -15,7 +15,8 @@
 #include "metrics/image_error.h"
 #include "metrics/ssim.h"
 #include "raytracer/reference_render.h"
-#include "raytracer/specular_occlusion_integrator.h"
+#include "specular_occlusion/specular_occlusion_integrator.h"
+#include "specular_occlusion/specular_occlusion_quantity.h"
 #include "gtao/gtao.h"
 #include "gtao/gtao_bent_horizons.h"
 #include "studies/study_scenes.h"
@@ -415,9 +416,10 @@ int so_study_render(const study_context *ctx, const scene *s, const char *spec, 
 {
     int size, spp;
     so_study_resolution(ctx, &size, &spp);
+    specular_occlusion_render_settings so = specular_occlusion_render_settings_make(roughness, ENVIRONMENT_SKY);
     reference_request req = {.quantity = q, .sampling = {.spp = spp, .seed = 1, .threads = ctx->threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY, .roughness = roughness,
-                             .environment = ENVIRONMENT_SKY};
+                             .normals = NORMAL_SHADING, .max_distance = INFINITY,
+                             .settings = q == QUANTITY_SPECULAR_OCCLUSION ? &so.header : NULL};
     return reference_render(s, spec, cam, &req, out, stats, e);
 }
 

@@ -6,7 +6,7 @@
  * Fresnel, view from the camera), VNDF-sampled under the analytic sky, of
  * every built-in scene at perceptual roughness 0.25, 0.5 and 0.8, with the
  * D-only and Phong definitions and the split integrals from the same samples
- * (raytracer/specular_occlusion_integrator.h); an AO reference of the same
+ * (specular_occlusion/specular_occlusion_integrator.h); an AO reference of the same
  * view gives the exact AO and bent normal, GTAO (high preset, one frame, no
  * radius limit) the shipped ones.
  *

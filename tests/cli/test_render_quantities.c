@@ -12,7 +12,9 @@
 #include "tests/check.h"
 #include "environment/environment_light.h"
 #include "raytracer/heightfield_ao_integrator.h"
+#include "multibounce/multibounce_quantity.h"
 #include "raytracer/reference_render.h"
+#include "specular_occlusion/specular_occlusion_quantity.h"
 #include "sphere_light/sphere_light_quantity.h"
 
 enum { MAX_OPTIONS = 64 };
@@ -136,6 +138,20 @@ static void test_shared_names(void)
     CHECK_MSG(strcmp(help, expected) == 0, "%s", help);
     reference_option_help(R, option_named("max-distance"), help, sizeof help);
     CHECK(strcmp(help, option_named("max-distance")->help) == 0);
+    /* env-diffuse's --albedo adds its line to multibounce's help; its
+     * --bounces and env-specular's --roughness have none to add. */
+    reference_quantity multibounce = reference_quantity_find(R, "multibounce");
+    const reference_option *albedo = option_named("albedo");
+    CHECK(reference_quantity_option(multibounce, albedo) != reference_quantity_option(diffuse, albedo));
+    reference_option_help(R, albedo, help, sizeof help);
+    snprintf(expected, sizeof expected, "%s\n%s", reference_quantity_option(multibounce, albedo)->help,
+             reference_quantity_option(diffuse, albedo)->help);
+    CHECK_MSG(strcmp(help, expected) == 0, "%s", help);
+    CHECK(reference_quantity_option(diffuse, option_named("bounces"))->help == NULL);
+    reference_option_help(R, option_named("bounces"), help, sizeof help);
+    CHECK(strcmp(help, reference_quantity_option(multibounce, option_named("bounces"))->help) == 0);
+    reference_option_help(R, option_named("roughness"), help, sizeof help);
+    CHECK(strcmp(help, reference_quantity_option(so, option_named("roughness"))->help) == 0);
 }
 
 /* Each option is refused by exactly the quantities that do not list it, with
@@ -185,9 +201,12 @@ static void test_apply(void)
     CHECK_MSG(strcmp(e.message, "--roughness: 1.5 is out of range [0, 1]") == 0, "%s", e.message);
 
     CHECK(apply(&rq, QUANTITY_MULTIBOUNCE, &e, (const char *[]){"albedo", "0.3,0.6", NULL}) == 0);
-    CHECK(rq.multibounce.albedo_count == 2 && rq.multibounce.bounces == 4 && !rq.multibounce.scene_albedo);
-    CHECK(apply(&rq, QUANTITY_MULTIBOUNCE, &e, (const char *[]){"bounces", "inf", "albedo", "scene", NULL}) == 0);
-    CHECK(rq.multibounce.scene_albedo && rq.multibounce.bounces == MULTIBOUNCE_UNLIMITED);
+    const multibounce_settings *mb = multibounce_settings_of(&rq);
+    CHECK(mb && mb->albedo_count == 2 && mb->bounces == 4 && !mb->scene_albedo);
+    CHECK(apply(&rq, QUANTITY_HEIGHTFIELD_MULTIBOUNCE, &e,
+                (const char *[]){"bounces", "inf", "albedo", "scene", NULL}) == 0);
+    mb = multibounce_settings_of(&rq);
+    CHECK(mb && mb->scene_albedo && mb->bounces == MULTIBOUNCE_UNLIMITED);
     CHECK(apply(&rq, QUANTITY_SPHERE_LIGHT, &e,
                 (const char *[]){"light-position", "1,2,3", "light-radius", "0.5", "shadows", "", NULL}) == 0);
     const sphere_light_settings *light =
@@ -205,13 +224,23 @@ static void test_apply(void)
     /* Settings made for another quantity are not reached as its own. */
     CHECK(reference_settings_of(&rq, QUANTITY_SPHERE_LIGHT) == NULL);
     CHECK(apply(&rq, QUANTITY_SPECULAR_OCCLUSION, &e, (const char *[]){"environment", "sky", NULL}) == 0);
-    CHECK(rq.environment == ENVIRONMENT_SKY && rq.roughness < 0.0f);
-    /* env-diffuse parses --environment with its own object, into its settings. */
+    const specular_occlusion_render_settings *so =
+        (const specular_occlusion_render_settings *)reference_settings_of(&rq, QUANTITY_SPECULAR_OCCLUSION);
+    CHECK(so && so->environment == ENVIRONMENT_SKY && so->roughness < 0.0f);
+    CHECK(apply(&rq, QUANTITY_SPECULAR_OCCLUSION, &e, (const char *[]){"roughness", "0.25", NULL}) == 0);
+    so = (const specular_occlusion_render_settings *)reference_settings_of(&rq, QUANTITY_SPECULAR_OCCLUSION);
+    CHECK(so && so->environment == ENVIRONMENT_WHITE && so->roughness == 0.25f);
+    /* env-diffuse parses --environment, --albedo and --bounces with its own
+     * objects, into its settings; env-specular --roughness. */
     CHECK(apply(&rq, reference_quantity_find(R, "env-diffuse"), &e,
                 (const char *[]){"environment", "sun", "albedo", "0.5", NULL}) == 0);
     const environment_render_settings *env =
         (const environment_render_settings *)reference_settings_of(&rq, reference_quantity_find(R, "env-diffuse"));
-    CHECK(rq.environment == ENVIRONMENT_WHITE && env && strcmp(env->environment, "sun") == 0);
+    CHECK(env && strcmp(env->environment, "sun") == 0 && multibounce_settings_of(&rq) == NULL);
+    CHECK(env->multibounce.albedo_count == 1 && env->multibounce.albedos[0] == 0.5f && env->multibounce.bounces == 4);
+    CHECK(apply(&rq, reference_quantity_find(R, "env-specular"), &e, (const char *[]){"roughness", "0.75", NULL}) == 0);
+    env = (const environment_render_settings *)reference_settings_of(&rq, reference_quantity_find(R, "env-specular"));
+    CHECK(env && env->roughness == 0.75f && reference_settings_of(&rq, QUANTITY_SPECULAR_OCCLUSION) == NULL);
 }
 
 int main(void)

@@ -8,6 +8,7 @@
 #include "core/mc_film.h"
 #include "core/reference_schema.h"
 #include "fuzz_target.h"
+#include "multibounce/multibounce_quantity.h"
 #include "raytracer/reference_render.h"
 #include "raytracer/sample_blocks.h"
 #include "scene/camera.h"

@@ -23,8 +23,10 @@
 #include "environment/environment_diffuse_integrator.h"
 #include "environment/environment_light.h"
 #include "environment/environment_quantity.h"
+#include "multibounce/multibounce_quantity.h"
 #include "raytracer/reference_merge.h"
 #include "raytracer/reference_render.h"
+#include "specular_occlusion/specular_occlusion_quantity.h"
 #include "scene/scene_loaders.h"
 #include "tests/check.h"
 
@@ -48,15 +50,14 @@ static int render_request(const scene *s, const camera *cam, reference_request *
 static image render(const scene *s, const camera *cam, reference_quantity quantity, environment_render_settings *env,
                     multibounce_settings mb, float roughness, sampling sm)
 {
+    multibounce_render_settings white_dome = {{quantity}, mb}; /* multibounce's, without env */
     if (env)
-        env->header.quantity = quantity;
+        env->header.quantity = quantity, env->multibounce = mb, env->roughness = roughness;
     reference_request req = {.quantity = quantity,
                              .sampling = {sm.spp, sm.offset, 17, 0.0, sm.threads},
                              .normals = NORMAL_SHADING,
                              .max_distance = INFINITY,
-                             .multibounce = mb,
-                             .roughness = roughness,
-                             .settings = env ? &env->header : NULL};
+                             .settings = env ? &env->header : &white_dome.header};
     image img;
     gt_error e;
     if (render_request(s, cam, &req, &img, &e) != 0) {
@@ -228,11 +229,12 @@ static void test_specular_white_dome(void)
     white.f0 = 1.0f;
     const sampling sm = {64, 0, 2};
     image env = render(&s, &cam, &reference_quantity_env_specular, &white, albedo_of(1, 0, 0), 0.4f, sm);
+    specular_occlusion_render_settings dome = specular_occlusion_render_settings_make(0.4f, ENVIRONMENT_WHITE);
     reference_request req = {.quantity = QUANTITY_SPECULAR_OCCLUSION,
                              .sampling = {64, 0, 17, 0.0, 2},
                              .normals = NORMAL_SHADING,
                              .max_distance = INFINITY,
-                             .roughness = 0.4f};
+                             .settings = &dome.header};
     image so;
     gt_error e;
     CHECK(render_request(&s, &cam, &req, &so, &e) == 0);
@@ -301,11 +303,11 @@ static void test_bad_file(void)
     load("builtin:corner", 8, &s, &cam);
     environment_render_settings bad = named("/nonexistent/sky.exr");
     bad.header.quantity = &reference_quantity_env_diffuse;
+    bad.multibounce = albedo_of(0, 0.5f, 1);
     reference_request req = {.quantity = &reference_quantity_env_diffuse,
                              .sampling = {4, 0, 1, 0.0, 1},
                              .normals = NORMAL_SHADING,
                              .max_distance = INFINITY,
-                             .multibounce = albedo_of(0, 0.5f, 1),
                              .settings = &bad.header};
     image out;
     gt_error e;

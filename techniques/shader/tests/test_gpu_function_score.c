@@ -17,6 +17,7 @@
 
 #include "core/exr_io.h"
 #include "multibounce/multibounce.h"
+#include "multibounce/multibounce_quantity.h"
 #include "raytracer/reference_render.h"
 #include "shader/shader_scores.h"
 #include "studies/study.h"
@@ -30,10 +31,10 @@ enum { ALBEDOS = 3 };
 /* A small `gtlab render multibounce --albedo 0.2,0.5,0.9` of builtin:corner into path. */
 static int render_reference(const char *path)
 {
+    multibounce_render_settings mb = {{QUANTITY_MULTIBOUNCE}, {.albedo_count = ALBEDOS, .bounces = 4}};
+    memcpy(mb.multibounce.albedos, kAlbedos, sizeof kAlbedos);
     reference_request rq = {.quantity = QUANTITY_MULTIBOUNCE, .sampling = {.spp = 16, .seed = 1, .threads = 2},
-                            .normals = NORMAL_SHADING, .max_distance = INFINITY,
-                            .multibounce = {.albedo_count = ALBEDOS, .bounces = 4}};
-    memcpy(rq.multibounce.albedos, kAlbedos, sizeof kAlbedos);
+                            .normals = NORMAL_SHADING, .max_distance = INFINITY, .settings = &mb.header};
     return test_render_reference_file("builtin:corner", 32, 24, &rq, path);
 }
 

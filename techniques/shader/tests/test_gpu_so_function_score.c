@@ -27,6 +27,7 @@
 #include "gpu/function_shader.h"
 #include "gpu/shader_compiler.h"
 #include "raytracer/reference_render.h"
+#include "specular_occlusion/specular_occlusion_quantity.h"
 #include "specular_occlusion/specular_occlusion_shader.h"
 #include "shader/shader_scores.h"
 #include "specular_occlusion/specular_occlusion_inputs.h"
@@ -42,8 +43,10 @@ static const double kMaxDifference = 2e-3;
 /* builtin:corner's specular-occlusion (roughness 0.5) or AO reference into path. */
 static int render(const char *path, reference_quantity q)
 {
+    specular_occlusion_render_settings so = specular_occlusion_render_settings_make(0.5f, ENVIRONMENT_WHITE);
     reference_request rq = {.quantity = q, .sampling = {.spp = 16, .seed = 1, .threads = 2},
-                            .normals = NORMAL_SHADING, .max_distance = INFINITY, .roughness = 0.5f};
+                            .normals = NORMAL_SHADING, .max_distance = INFINITY,
+                            .settings = q == QUANTITY_SPECULAR_OCCLUSION ? &so.header : NULL};
     return test_render_reference_file("builtin:corner", 32, 24, &rq, path);
 }
 

@@ -1,4 +1,4 @@
-#include "raytracer/specular_occlusion_integrator.h"
+#include "specular_occlusion/specular_occlusion_integrator.h"
 
 #include <math.h>
 #include <stdio.h>

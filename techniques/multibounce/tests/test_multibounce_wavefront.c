@@ -13,7 +13,7 @@
 #include <string.h>
 
 #include "core/hemisphere_sampling.h"
-#include "raytracer/multibounce_integrator.h"
+#include "multibounce/multibounce_integrator.h"
 #include "scene/material_lookup.h"
 #include "scene/scene_loaders.h"
 #include "tests/check.h"

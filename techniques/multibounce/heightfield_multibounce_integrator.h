@@ -1,5 +1,5 @@
 /* Height-field multi-bounce AO: the multi-bounce reference V'_d
- * (raytracer/multibounce_integrator.h: Lambertian surfaces of albedo rho
+ * (multibounce_integrator.h: Lambertian surfaces of albedo rho
  * under a white dome of radiance 1, L / rho) of the world a screen-space
  * technique sees, the depth buffer as a height field of infinite thickness
  * (raytracer/heightfield_ao_integrator.h). A path's rays are blocked where
@@ -15,18 +15,18 @@
  * the pair (ao.V, multibounce*.V) is a ground truth of one world: the one
  * whose visibility screen-space AO estimates.
  *
- * Mathematics it satisfies (tests/raytracer/test_heightfield_multibounce.c):
+ * Mathematics it satisfies (techniques/multibounce/tests/test_heightfield_multibounce.c):
  * albedo 0 gives ao.V; every sample lies in [V, V + rho (1 - V)] of its own
  * first ray's V in {0, 1}, so the means do; on a plane V'_d = 1 for any
  * albedo; where the depth buffer is the whole scene (an open box seen from
  * above, every face in view) it agrees with the 3-D reference to within
  * the pixel discretisation of the faces' edges (under a code value at
  * 128^2); tests/raytracer/test_heightfield_thickness.c checks the hits. */
-#ifndef GTLAB_RAYTRACER_HEIGHTFIELD_MULTIBOUNCE_INTEGRATOR_H
-#define GTLAB_RAYTRACER_HEIGHTFIELD_MULTIBOUNCE_INTEGRATOR_H
+#ifndef GTLAB_MULTIBOUNCE_HEIGHTFIELD_MULTIBOUNCE_INTEGRATOR_H
+#define GTLAB_MULTIBOUNCE_HEIGHTFIELD_MULTIBOUNCE_INTEGRATOR_H
 
 #include "raytracer/heightfield_ao_integrator.h"
-#include "raytracer/multibounce_integrator.h"
+#include "multibounce/multibounce_integrator.h"
 
 /* Sets plan's world to the height field of hs (which must outlive the
  * integrator, as plan) and returns the multi-bounce integrator over it; es

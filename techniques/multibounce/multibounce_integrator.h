@@ -47,29 +47,18 @@
  * Rays leave p offset along the geometric normal; the hemisphere is built on
  * the shading normal (or the geometric one, normal_mode), and a direction
  * below the geometric surface ends the path: the surface blocks it. */
-#ifndef GTLAB_RAYTRACER_MULTIBOUNCE_INTEGRATOR_H
-#define GTLAB_RAYTRACER_MULTIBOUNCE_INTEGRATOR_H
+#ifndef GTLAB_MULTIBOUNCE_MULTIBOUNCE_INTEGRATOR_H
+#define GTLAB_MULTIBOUNCE_MULTIBOUNCE_INTEGRATOR_H
 
 #include <stddef.h>
 
-#include "raytracer/render_loop.h"
 #include "core/reference_schema.h"
+#include "raytracer/diffuse_path_albedos.h"
+#include "raytracer/render_loop.h"
 
-enum {
-    MULTIBOUNCE_MAX_ALBEDOS = 32,
-    MULTIBOUNCE_UNLIMITED = -1,
-    MULTIBOUNCE_PATH_LIMIT = 1024,
-    MULTIBOUNCE_ROULETTE_PAIRS = MULTIBOUNCE_PATH_LIMIT + 1,
-    MULTIBOUNCE_MAX_QUANTITIES = MULTIBOUNCE_MAX_ALBEDOS + 1
-};
-
-
-typedef struct {
-    int scene_albedo;                       /* 1: the scene's base colours, coloured */
-    int albedo_count;                       /* grey albedos (without scene_albedo) */
-    float albedos[MULTIBOUNCE_MAX_ALBEDOS]; /* each in [0, 1], distinct */
-    int bounces;                            /* inter-reflections >= 0, or MULTIBOUNCE_UNLIMITED */
-} multibounce_settings;
+/* The albedos and bounces (multibounce_settings) and their limits are the
+ * diffuse path tracers' (raytracer/diffuse_path_albedos.h). */
+enum { MULTIBOUNCE_MAX_QUANTITIES = MULTIBOUNCE_MAX_ALBEDOS + 1 };
 
 /* "0.1,0.3,0.5" or "scene" (the --albedo option). Errors name "--albedo". */
 int multibounce_parse_albedos(const char *text, multibounce_settings *s, gt_error *e);
@@ -86,7 +75,7 @@ void multibounce_bounces_text(const multibounce_settings *s, char *text, size_t 
  * the surface it meets (at least `parts` of it, embree_scene.h), normals
  * facing the side the ray came from. The 3-D scene (Embree streams) when a
  * plan's world has no trace; the depth buffer as a height field in
- * raytracer/heightfield_multibounce_integrator.h. */
+ * heightfield_multibounce_integrator.h. */
 typedef struct {
     void (*trace)(const void *data, struct RTCRayHit *rays, int n, int last, unsigned parts, unsigned char *escaped,
                   surface_hit *hits);

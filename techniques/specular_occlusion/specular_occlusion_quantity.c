@@ -1,21 +1,36 @@
 /* `gtlab render specular-occlusion`: GTSO specular occlusion under a white
  * dome, and with --environment sky the split integrals under an analytic sky
- * (raytracer/specular_occlusion_integrator.h). */
+ * (specular_occlusion_integrator.h). */
+#include "specular_occlusion/specular_occlusion_quantity.h"
+
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 
 #include "core/number_parse.h"
 #include "core/reference_schema.h"
 #include "core/roughness_setting.h"
-#include "raytracer/reference_render.h"
-#include "raytracer/shared_options.h"
-#include "raytracer/specular_occlusion_integrator.h"
+#include "specular_occlusion/specular_occlusion_integrator.h"
 
-/* env-diffuse and env-specular have their own --environment (their help
- * follows this one's in `gtlab render --help`). */
+_Static_assert(offsetof(specular_occlusion_render_settings, header) == 0, "the header comes first");
+
+specular_occlusion_render_settings specular_occlusion_render_settings_make(float roughness,
+                                                                           environment_kind environment)
+{
+    return (specular_occlusion_render_settings){{QUANTITY_SPECULAR_OCCLUSION}, roughness, environment};
+}
+
+static specular_occlusion_render_settings *settings_of(const reference_request *rq)
+{
+    return (specular_occlusion_render_settings *)reference_settings_of(rq, QUANTITY_SPECULAR_OCCLUSION);
+}
+
+/* env-diffuse and env-specular have their own --environment and
+ * --roughness (their --environment's help follows this one's in `gtlab
+ * render --help`). */
 static int parse_environment(reference_request *rq, const char *value, gt_error *e)
 {
-    if (environment_parse(value, &rq->environment) != 0)
+    if (environment_parse(value, &settings_of(rq)->environment) != 0)
         return gt_error_set(e, "--environment", "'%s' is neither white nor sky", value);
     return 0;
 }
@@ -25,7 +40,7 @@ static int parse_roughness(reference_request *rq, const char *value, gt_error *e
     double r;
     if (parse_real_in("--roughness", value, 0.0, 1.0, &r, e) != 0)
         return -1;
-    rq->roughness = (float)r;
+    settings_of(rq)->roughness = (float)r;
     return 0;
 }
 
@@ -37,7 +52,7 @@ static const reference_option environment_option = {
     .parse = parse_environment,
 };
 
-const reference_option reference_option_roughness = {
+static const reference_option option_roughness = {
     .name = "roughness",
     .value = "R",
     .help = "perceptual roughness in [0, 1] for\n"
@@ -47,15 +62,19 @@ const reference_option reference_option_roughness = {
 
 static void set_defaults(reference_request *rq)
 {
-    rq->roughness = ROUGHNESS_OF_MATERIAL;
+    if (settings_of(rq))
+        settings_of(rq)->roughness = ROUGHNESS_OF_MATERIAL;
 }
 
 static int prepare(const reference_pass *pass, void **state, integrator *it, gt_error *e)
 {
+    const specular_occlusion_render_settings *s = settings_of(pass->req);
+    if (!s)
+        return gt_error_set(e, reference_quantity_name(pass->req->quantity), "no settings");
     specular_occlusion_settings *so = malloc(sizeof *so);
     if (!so)
         return gt_error_set(e, pass->scene_spec, "out of memory");
-    *so = (specular_occlusion_settings){pass->req->roughness, pass->gb->view.origin, pass->req->environment};
+    *so = (specular_occlusion_settings){s->roughness, pass->gb->view.origin, s->environment};
     *state = so;
     *it = specular_occlusion_integrator(pass->es, so);
     return 0;
@@ -64,10 +83,11 @@ static int prepare(const reference_pass *pass, void **state, integrator *it, gt_
 /* gtlab.roughness (when fixed) and gtlab.settings. */
 static int write_settings(const reference_request *rq, image *out)
 {
+    const specular_occlusion_render_settings *s = settings_of(rq);
     char roughness[32];
-    int rc = reference_write_roughness(out, rq->roughness, roughness, sizeof roughness);
+    int rc = reference_write_roughness(out, s->roughness, roughness, sizeof roughness);
     rc |= reference_set_attributef(out, ATTR_SETTINGS, "roughness=%s environment=%s target_stderr=%.9g", roughness,
-                                   environment_name(rq->environment), rq->sampling.target_stderr);
+                                   environment_name(s->environment), rq->sampling.target_stderr);
     return rc;
 }
 
@@ -83,7 +103,8 @@ const reference_quantity_descriptor reference_quantity_specular_occlusion = {
             "standard errors by the delta method. With --environment sky also\n"
             "the GTSO talk's split integrals under an analytic sky: split_truth.V\n"
             "(integral of V L f_r cos), split_two.V, split_three.V",
-    .options = (const reference_option *const[]){&environment_option, &reference_option_roughness, NULL},
+    .options = (const reference_option *const[]){&environment_option, &option_roughness, NULL},
+    .settings_size = sizeof(specular_occlusion_render_settings),
     .set_defaults = set_defaults,
     .prepare = prepare,
     .release = free,

@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "core/hemisphere_sampling.h"
+#include "multibounce/multibounce_quantity.h"
 #include "raytracer/reference_merge.h"
 #include "raytracer/reference_render.h"
 #include "scene/scene_loaders.h"
@@ -66,11 +67,12 @@ static image render_request(const scene *s, const camera *cam, const reference_r
 
 static image render(const scene *s, const camera *cam, multibounce_settings mb, sampling sm)
 {
+    multibounce_render_settings settings = {{QUANTITY_MULTIBOUNCE}, mb};
     reference_request req = {.quantity = QUANTITY_MULTIBOUNCE,
                              .sampling = {sm.spp, sm.offset, sm.seed, 0.0, sm.threads},
                              .normals = NORMAL_SHADING,
                              .max_distance = INFINITY,
-                             .multibounce = mb};
+                             .settings = &settings.header};
     return render_request(s, cam, &req);
 }
 

@@ -2,11 +2,11 @@
  * reference loop (paths/s and rays/s) next to raw Embree closest-hit
  * queries on the same scene, and the cost of N albedos in one pass against
  * N single-albedo renders. */
-#ifndef GTLAB_RAYTRACER_MULTIBOUNCE_THROUGHPUT_H
-#define GTLAB_RAYTRACER_MULTIBOUNCE_THROUGHPUT_H
+#ifndef GTLAB_MULTIBOUNCE_MULTIBOUNCE_THROUGHPUT_H
+#define GTLAB_MULTIBOUNCE_MULTIBOUNCE_THROUGHPUT_H
 
 #include "core/error.h"
-#include "raytracer/multibounce_integrator.h"
+#include "multibounce/multibounce_integrator.h"
 #include "scene/scene.h"
 
 typedef struct {

@@ -1,5 +1,5 @@
 /* The height-field multi-bounce reference
- * (raytracer/heightfield_multibounce_integrator.h) against mathematics:
+ * (heightfield_multibounce_integrator.h) against mathematics:
  *  - a plane: nothing in the height field rises above it, V'_d = V_d = 1
  *    exactly at every pixel, for any albedo (1 included);
  *  - albedo 0 is the height-field AO: multibounce_0.V equals its own ao.V
@@ -20,6 +20,7 @@
 #include <string.h>
 
 #include "core/reference_schema.h"
+#include "multibounce/multibounce_quantity.h"
 #include "raytracer/reference_render.h"
 #include "scene/quad_mesh.h"
 #include "scene/scene_loaders.h"
@@ -33,12 +34,13 @@ static reference_quantity heightfield_multibounce(void)
 static image render(reference_quantity q, const scene *s, const camera *cam, const char *albedos, int bounces,
                     int spp, int threads)
 {
+    multibounce_render_settings mb = {{q}, {.bounces = bounces}}; /* with albedos: q is a multibounce */
     reference_request req = {.quantity = q, .sampling = {.spp = spp, .seed = 7, .threads = threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
+                             .normals = NORMAL_SHADING, .max_distance = INFINITY,
+                             .settings = albedos ? &mb.header : NULL};
     gt_error e;
     if (albedos)
-        CHECK(multibounce_parse_albedos(albedos, &req.multibounce, &e) == 0);
-    req.multibounce.bounces = bounces;
+        CHECK(multibounce_parse_albedos(albedos, &mb.multibounce, &e) == 0);
     image img = {0};
     render_stats stats;
     if (reference_render(s, s->name, cam, &req, &img, &stats, &e) != 0) {

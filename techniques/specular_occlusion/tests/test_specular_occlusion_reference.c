@@ -1,4 +1,4 @@
-/* The specular-occlusion reference (raytracer/specular_occlusion_integrator.c):
+/* The specular-occlusion reference (specular_occlusion_integrator.c):
  *  - a lone plane: V_s = V_s^D = V_s^Phong = 1 exactly at every roughness,
  *    stderr 0;
  *  - inside a closed box: all three V_s = 0 exactly;
@@ -27,6 +27,7 @@
 #include "core/sobol.h"
 #include "raytracer/embree_scene.h"
 #include "raytracer/reference_render.h"
+#include "specular_occlusion/specular_occlusion_quantity.h"
 #include "scene/scene_loaders.h"
 #include "tests/check.h"
 #include "tests/raytracer/closed_box.h"
@@ -36,9 +37,9 @@ static image render_in(const scene *s, const camera *cam, float roughness, int s
 {
     gt_error e;
     image img = {0};
+    specular_occlusion_render_settings so = specular_occlusion_render_settings_make(roughness, environment);
     reference_request req = {.quantity = QUANTITY_SPECULAR_OCCLUSION, .sampling = {.spp = spp, .seed = seed, .threads = 2},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY, .roughness = roughness,
-                             .environment = environment};
+                             .normals = NORMAL_SHADING, .max_distance = INFINITY, .settings = &so.header};
     render_stats stats;
     if (reference_render(s, "test", cam, &req, &img, &stats, &e) != 0) {
         fprintf(stderr, "%s\n", e.message);

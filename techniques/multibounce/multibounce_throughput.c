@@ -1,4 +1,4 @@
-#include "raytracer/multibounce_throughput.h"
+#include "multibounce/multibounce_throughput.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -1,4 +1,4 @@
-#include "raytracer/multibounce_integrator.h"
+#include "multibounce/multibounce_integrator.h"
 
 #include <errno.h>
 #include <math.h>

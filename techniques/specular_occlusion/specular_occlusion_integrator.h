@@ -57,8 +57,8 @@
  * horizon and lifted by 1e-4 so the sampler is defined. Directions below the
  * geometric surface count as occluded, as for AO. A pixel whose denominator
  * is 0 gets V_s = 0 with standard error 0. */
-#ifndef GTLAB_RAYTRACER_SPECULAR_OCCLUSION_INTEGRATOR_H
-#define GTLAB_RAYTRACER_SPECULAR_OCCLUSION_INTEGRATOR_H
+#ifndef GTLAB_SPECULAR_OCCLUSION_SPECULAR_OCCLUSION_INTEGRATOR_H
+#define GTLAB_SPECULAR_OCCLUSION_SPECULAR_OCCLUSION_INTEGRATOR_H
 
 #include "core/image.h"
 #include "core/sky_environment.h"

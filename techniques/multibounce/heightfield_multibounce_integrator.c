@@ -1,6 +1,6 @@
 /* The multi-bounce reference of the height-field world; see
  * heightfield_multibounce_integrator.h. */
-#include "raytracer/heightfield_multibounce_integrator.h"
+#include "multibounce/heightfield_multibounce_integrator.h"
 
 /* multibounce_world over the height field: each ray marched on its own. */
 static void heightfield_trace(const void *data, struct RTCRayHit *rays, int n, int last, unsigned parts,
