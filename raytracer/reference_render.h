@@ -6,7 +6,7 @@
 #define GTLAB_RAYTRACER_REFERENCE_RENDER_H
 
 #include "core/image.h"
-#include "core/sky_environment.h"
+#include "core/optics/sky_environment.h"
 #include "raytracer/ao_control_variate.h"
 #include "raytracer/gbuffer.h"
 #include "raytracer/multibounce_integrator.h"

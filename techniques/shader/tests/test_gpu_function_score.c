@@ -15,11 +15,11 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "multibounce/multibounce.h"
 #include "raytracer/reference_render.h"
 #include "shader/shader_scores.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 #include "tests/check.h"
 #include "tests/test_files.h"
 #include "tests/test_reference_file.h"
