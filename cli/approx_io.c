@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "core/threads.h"
 
 enum { MAX_TECHNIQUE_OPTIONS = 24 };

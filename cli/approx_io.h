@@ -1,5 +1,5 @@
 /* What every `gtlab approx TECHNIQUE` shares on the command line: the options
- * common to every technique, reading the G-buffer (studies/gbuffer_input.h)
+ * common to every technique, reading the G-buffer (project/gbuffer_input.h)
  * and writing the result (ao.V, optional bent.*, mask.A copied, header naming
  * the technique and its parameters) atomically. */
 #ifndef GTLAB_CLI_APPROX_IO_H
@@ -10,7 +10,7 @@
 #include "cli/cli_options.h"
 #include "core/image.h"
 #include "realtime/screen_space.h"
-#include "studies/gbuffer_input.h"
+#include "project/gbuffer_input.h"
 
 /* A technique's command line: its options (ending CLI_END; the common ones
  * --gbuffer, --camera, --threads, -o follow), the text of its parameters

@@ -9,7 +9,7 @@
 #include <sys/stat.h>
 
 #include "cli/cli.h"
-#include "core/run_inputs.h"
+#include "core/files/run_inputs.h"
 
 enum { MAX_OPTIONS = 96, HELP_COLUMN = 20 };
 

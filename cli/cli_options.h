@@ -42,7 +42,7 @@ typedef struct {
     const char *(*choice)(int index); /* CLI_KIND_CHOICE: the name of each value */
     int required;
     /* A file (or folder) the command writes: its value is no input, and
-     * must not be one of the run's inputs (core/run_inputs.h). Every other
+     * must not be one of the run's inputs (core/files/run_inputs.h). Every other
      * value, and every positional argument, that names an existing file is
      * noted as an input. */
     int writes;
@@ -109,7 +109,7 @@ int cli_list_add(void *list, const char *text);
  * Returns 0 to go on; otherwise the subcommand returns *status: EXIT_OK
  * after --help, EXIT_USER_ERROR after a one-line error on stderr. Every
  * value naming an existing file, but those of outputs (`writes`), and every
- * positional argument is noted as an input of the run (core/run_inputs.h);
+ * positional argument is noted as an input of the run (core/files/run_inputs.h);
  * an output that is one of them is then refused. */
 int cli_options_parse(const cli_command *cmd, void *const *dest, int argc, char **argv, int *status);
 

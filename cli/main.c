@@ -3,7 +3,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "core/output_set.h"
+#include "core/files/output_set.h"
 
 typedef struct {
     const char *name;
@@ -36,7 +36,7 @@ static void print_help(FILE *out)
     fprintf(out, "\nErrors are one line on stderr; exit status 0 success, 1 bad input, 2 internal error.\n");
 }
 
-/* A verb's files are kept together or not at all (core/output_set.h):
+/* A verb's files are kept together or not at all (core/files/output_set.h):
  * on failure or interruption none of them stays, and what they replaced
  * is back. */
 static int run_verb(const verb *v, int argc, char **argv)

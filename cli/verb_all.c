@@ -12,10 +12,10 @@
 #include "cli/cli.h"
 #include "cli/cli_options.h"
 #include "cli/technique.h"
-#include "core/atomic_file.h"
-#include "core/output_set.h"
+#include "core/files/atomic_file.h"
+#include "core/files/output_set.h"
 #include "core/progress.h"
-#include "core/run_inputs.h"
+#include "core/files/run_inputs.h"
 #include "core/threads.h"
 
 enum { STAGE_MAX = 64 };
@@ -123,7 +123,7 @@ static int check_inputs(const report_context *ctx, const int selected[STAGE_MAX]
 
 /* No input of the run (the project and the files it names) is where the
  * run writes: the output folder itself, the report's files, figures/ and
- * each selected stage's folder; checked before any work (core/atomic_file.c
+ * each selected stage's folder; checked before any work (core/files/atomic_file.c
  * refuses any other input at its write). */
 static int check_outputs(const report_context *ctx, const int selected[STAGE_MAX])
 {

@@ -5,8 +5,8 @@
 
 #include "cli/cli.h"
 #include "cli/cli_options.h"
-#include "core/atomic_file.h"
-#include "core/exr_io.h"
+#include "core/files/atomic_file.h"
+#include "core/files/exr_io.h"
 #include "cli/render_quantities.h"
 #include "raytracer/reference_merge.h"
 

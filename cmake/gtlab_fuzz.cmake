@@ -27,7 +27,7 @@ if(GTLAB_FUZZ)
   add_compile_options("$<$<COMPILE_LANGUAGE:C>:-Dtarget_clones(...)=unused>")
   add_link_options(-fsanitize=address,undefined)
   # libFuzzer's convention: limits that only cost time when fuzzing are
-  # lowered (core/exr_io.c, scene/gltf/gltf_reader.cpp, scene/gltf/gltf_accessors.cpp).
+  # lowered (core/files/exr_io.c, scene/gltf/gltf_reader.cpp, scene/gltf/gltf_accessors.cpp).
   add_compile_definitions(FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION)
   add_library(gtlab_tinygltf_instrumented STATIC ${PROJECT_SOURCE_DIR}/tests/fuzz/tinygltf_instrumented.cpp)
   target_include_directories(gtlab_tinygltf_instrumented SYSTEM PUBLIC /usr/include/stb)

@@ -10,7 +10,7 @@
 #   REALTIME    its LUTS, realtime/ luts/ core/   what a shader runs
 #   REFERENCE   raytracer/ scene/ core/           the ground truth
 #   FIT         its REALTIME, fitters/            Ceres fits of the real-time code
-#   STUDY       its parts below, studies/ (and all below it)
+#   STUDY       its parts below, project/ (and all below it)
 #   SECTION     its STUDY, report/
 #   CLI         compiled into cli/ (the verbs and `gtlab all` from the registry)
 #
@@ -35,7 +35,7 @@ set(gtlab_part_base_LUTS gtlab_luts)
 set(gtlab_part_base_REALTIME gtlab_realtime)
 set(gtlab_part_base_REFERENCE gtlab_raytracer)
 set(gtlab_part_base_FIT gtlab_fitters)
-set(gtlab_part_base_STUDY gtlab_studies)
+set(gtlab_part_base_STUDY gtlab_project)
 set(gtlab_part_base_SECTION gtlab_report)
 # The technique's own parts each part links (those that exist).
 set(gtlab_part_below_LUTS "")

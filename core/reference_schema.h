@@ -9,7 +9,7 @@
  * them): a scalar quantity is "<layer>.V", a vector one "<layer>.X/Y/Z", a
  * colour "<layer>.R/G/B". Every Monte Carlo quantity Q also has "Q.stderr"
  * (its standard error) and the exact accumulators "Q.sum", "Q.sum_lo",
- * "Q.peak", "Q.m1_0", ... (core/mc_film.h) from which partial renders merge
+ * "Q.peak", "Q.m1_0", ... (core/statistics/mc_film.h) from which partial renders merge
  * bit for bit.
  *
  * Header attributes are EXR string attributes (OpenEXR's string type keeps
@@ -44,18 +44,18 @@
 #define CH_P_XYZ {CH_P_X, CH_P_Y, CH_P_Z}
 #define CH_ALBEDO_RGB {CH_ALBEDO_R, CH_ALBEDO_G, CH_ALBEDO_B}
 
-/* ---- Monte Carlo bookkeeping (core/mc_film.h) --------------------------- */
+/* ---- Monte Carlo bookkeeping (core/statistics/mc_film.h) --------------------------- */
 #define CH_SPP "spp.N"           /* samples taken in the pixel */
 #define CH_SPP_EVEN "spp.Neven"  /* of which even-indexed (the noise-floor halves) */
 #define CH_SPP_LO "spp.Nlo"      /* count - spp.N exactly: spp.N is the count rounded to */
 #define CH_SPP_EVEN_LO "spp.Nevenlo" /* a float, for people; hi + lo is exact to 2^32 */
 #define CH_LAYER_SPP "spp"       /* their layer */
 #define CH_SUFFIX_STDERR "stderr" /* "Q.stderr": standard error of Q's mean */
-#define CH_SUFFIX_SUM "sum"      /* exact accumulators on the quantity's grid: see core/mc_film.h */
+#define CH_SUFFIX_SUM "sum"      /* exact accumulators on the quantity's grid: see core/statistics/mc_film.h */
 #define CH_SUFFIX_SUM_LO "sum_lo"
 #define CH_SUFFIX_SUMEVEN "sumeven"
 #define CH_SUFFIX_SUMEVEN_LO "sumeven_lo"
-/* Moment sums at the pixel's scale (core/moment_sums.h), what Q.stderr comes
+/* Moment sums at the pixel's scale (core/statistics/moment_sums.h), what Q.stderr comes
  * from: the largest |sample|, and limb k of the sum of samples (moment 1) or
  * of their squares (moment 2) as hi + lo floats, "Q.m1_0", "Q.m1_0lo", ... */
 #define CH_SUFFIX_PEAK "peak"

@@ -7,7 +7,7 @@
 #include <string.h>
 #include <strings.h>
 
-#include "core/input_file.h"
+#include "core/files/input_file.h"
 #include "core/isolated_call.h"
 
 gpu_source_language gpu_source_language_of(const char *path)

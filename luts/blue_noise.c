@@ -6,9 +6,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "core/image.h"
-#include "core/image_io.h"
+#include "core/files/image_io.h"
 #include "core/reference_schema.h"
 
 #define BLUE_NOISE_RADIUS_MAX 9 /* exp(-81 / 4.5) = 1.5e-8 of the centre weight */

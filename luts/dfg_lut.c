@@ -7,8 +7,8 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "core/ggx.h"
-#include "core/quadrature.h"
+#include "core/optics/ggx.h"
+#include "core/sampling/quadrature.h"
 #include "core/vec3.h" /* M_PI */
 #include "luts/table_lookup_c.h"
 #include "luts/table_lookup.inc"

@@ -1,7 +1,7 @@
 /* The split-sum DFG (environment BRDF) LUT of Karis 2013, "Real Shading in
  * Unreal Engine 4" (SIGGRAPH course notes, eqs. 4-8).
  *
- * The BRDF: GGX D and Smith height-correlated G2 from core/ggx.h (alpha =
+ * The BRDF: GGX D and Smith height-correlated G2 from core/optics/ggx.h (alpha =
  * ggx_alpha(r) = r^2, r the perceptual roughness), Schlick Fresnel
  *   F(v.h) = F0 + (1 - F0) Fc,   Fc = (1 - v.h)^5          (Schlick 1994, eq. 15)
  *   f_r(v, l) = F D(h) G2(v, l) / (4 (n.v)(n.l))
@@ -22,7 +22,7 @@
  * F0 = 1, an approximation for F0 < 1). E is computed in double and rounded
  * once, so it is not exactly float(A) + float(B).
  *
- * Quadrature (deterministic, core/quadrature.h adaptive Gauss-Kronrod): over
+ * Quadrature (deterministic, core/sampling/quadrature.h adaptive Gauss-Kronrod): over
  * the half vector h, in the coordinates (s, phi) of GGX's own cumulative
  * distribution (Walter et al. 2007, eqs. 35-36):
  *   tan^2 theta_h = alpha^2 s / (1 - s),   D(h) cos theta_h dw_h = ds dphi / (2 pi)

@@ -4,9 +4,9 @@
 #include <cjson/cJSON.h>
 #include <stdlib.h>
 
-#include "core/atomic_file.h"
-#include "core/exr_io.h"
-#include "core/image_io.h"
+#include "core/files/atomic_file.h"
+#include "core/files/exr_io.h"
+#include "core/files/image_io.h"
 
 static const char *scale_rule(metrics_heatmap_scale scale)
 {

@@ -1,6 +1,6 @@
 #include "metrics/reference_halves.h"
 
-#include "core/mc_film.h"
+#include "core/statistics/mc_film.h"
 #include "core/reference_schema.h"
 
 /* Zeroes every channel of `half` where the mask is 0 (none without a mask). */

@@ -1,5 +1,5 @@
 /* The two independent half-references of a gtlab reference render: the
- * means of its even-index and of its odd-index samples (core/mc_film.h
+ * means of its even-index and of its odd-index samples (core/statistics/mc_film.h
  * keeps both sums), for every Monte Carlo quantity of the file. Each half
  * has the noise of a render of half the samples, and the two halves are
  * independent: scoring one against the other gives the reference's noise

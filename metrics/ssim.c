@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/mc_film.h"
+#include "core/statistics/mc_film.h"
 #include "metrics/image_error.h"
 
 void ssim_gaussian_weights(double g[SSIM_WINDOW])

@@ -75,7 +75,7 @@ int ssim_compute(const float *a, const float *b, const float *mask, int width, i
 /* The noise floor of a gtlab reference render (DESIGN.md): the SSIM/DSSIM
  * between the means of its even-index samples and of its odd-index samples,
  * for one Monte Carlo quantity `channel`, rebuilt from the accumulator
- * channels (core/mc_film.h). As in the written mean channel, pixels outside
+ * channels (core/statistics/mc_film.h). As in the written mean channel, pixels outside
  * the mask hold 0 in both halves; the mean runs over the same centres as
  * ssim_compute with that mask. `what` names the file. Returns 0, or -1 with e:
  * not a reference render, `channel` not one of its quantities, a pixel inside

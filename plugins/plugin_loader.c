@@ -8,7 +8,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/input_file.h"
+#include "core/files/input_file.h"
 
 /* dlsym's void * as a function pointer (POSIX guarantees the conversion). */
 static void *lookup(void *handle, const char *name)
@@ -48,7 +48,7 @@ int plugin_open(const char *path, gtlab_plugin *p, gt_error *e)
     }
     /* A file that exists (not a library on the search path; a missing one
      * gets dlopen's message) must be a regular one: dlopen of a FIFO would
-     * hang (core/input_file.h). */
+     * hang (core/files/input_file.h). */
     if ((load != path || (strchr(path, '/') && access(path, F_OK) == 0)) && input_file_check(path, NULL, e) != 0)
         return -1;
     p->handle = dlopen(load, RTLD_NOW | RTLD_LOCAL);

@@ -1,6 +1,6 @@
 #include "raytracer/ao_integrator.h"
 
-#include "core/hemisphere_sampling.h"
+#include "core/sampling/hemisphere_sampling.h"
 #include "core/reference_schema.h"
 
 enum { AO_V, AO_VUNIFORM, BENT_X, BENT_Y, BENT_Z, AO_QUANTITY_COUNT };

@@ -14,7 +14,7 @@
  *     r + 2N, ... (interleaved, so a costly region is shared), and the stop
  *     rule is decided where all of the pixel's samples are.
  *
- * Then the exact accumulators (grid sums, moment sums, counts; core/mc_film.h)
+ * Then the exact accumulators (grid sums, moment sums, counts; core/statistics/mc_film.h)
  * of ranks 1 .. N-1 are sent to rank 0 and added there in rank order. Those
  * sums are exact integers, so the total does not depend on how the samples
  * were shared: rank 0 holds the film of one process, bit for bit, and it
@@ -27,7 +27,7 @@
 #define GTLAB_RAYTRACER_DISTRIBUTED_RENDER_H
 
 #include "core/error.h"
-#include "core/mc_film.h"
+#include "core/statistics/mc_film.h"
 #include "raytracer/render_loop.h"
 
 typedef struct {

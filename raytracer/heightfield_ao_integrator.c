@@ -5,8 +5,8 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "core/heightfield_model.h"
-#include "core/hemisphere_sampling.h"
+#include "core/optics/heightfield_model.h"
+#include "core/sampling/hemisphere_sampling.h"
 #include "core/reference_schema.h"
 
 enum { HF_V, HF_VUNIFORM, HF_QUANTITY_COUNT };
@@ -38,7 +38,7 @@ static vec3 eye_direction(const camera_view *v, float x, float y)
 
 /* Depth of pixel j's surface (its tangent plane) along the eye ray through
  * screen point (x, y), clamped to its neighbourhood's depths
- * (core/heightfield_model.h). */
+ * (core/optics/heightfield_model.h). */
 static float surface_depth(const heightfield_settings *hs, long j, float x, float y)
 {
     const camera_view *v = &hs->gb->view;

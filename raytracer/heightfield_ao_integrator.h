@@ -6,7 +6,7 @@
  * it lies farther along its eye ray than the surface the G-buffer holds
  * there. Each pixel's surface is its tangent plane (geometric normal) over the
  * pixel's footprint, clamped to its neighbours' depths, so planes are
- * reproduced exactly (core/heightfield_model.h); background pixels hold
+ * reproduced exactly (core/optics/heightfield_model.h); background pixels hold
  * nothing. A ray that leaves the image or crosses the camera plane escapes
  * (nothing beyond the screen is known). This is the quantity GTAO computes
  * exactly, given enough slices and samples, so GTAO minus this reference is

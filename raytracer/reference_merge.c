@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/mc_film.h"
+#include "core/statistics/mc_film.h"
 #include "raytracer/reference_quantity.h"
 #include "raytracer/sample_blocks.h"
 #include "core/reference_schema.h"

@@ -9,7 +9,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "core/progress.h"
 #include "core/reference_schema.h"
 #include "raytracer/distributed_render.h"

@@ -1,6 +1,6 @@
 /* A render that survives its interruption (issue 20): the samples are
  * rendered in blocks of CHECKPOINT_BLOCK per pixel, and the exact
- * accumulators of the completed blocks (core/mc_film.h) are saved beside
+ * accumulators of the completed blocks (core/statistics/mc_film.h) are saved beside
  * the output as "F.checkpoint.exr" (render_checkpoint_files.h): every
  * CHECKPOINT_SECONDS, and when SIGINT, SIGTERM or SIGHUP arrives (the block
  * under way is dropped, the checkpoint written, then the signal takes its

@@ -1,7 +1,7 @@
 /* The sampling loop every reference shares: for each G-buffer pixel, draw
  * samples (sequence indices sample_offset, sample_offset + 1, ...) from the
  * pixel's Owen-scrambled Sobol' sequence, ask the integrator for one sample of
- * each quantity, and accumulate them exactly (core/mc_film.h).
+ * each quantity, and accumulate them exactly (core/statistics/mc_film.h).
  *
  * Stop rule: with target_stderr > 0 (or target_rel_stderr > 0) a pixel stops
  * at the first power-of-two sample count >= 64 at which the standard error of
@@ -11,7 +11,7 @@
  * (docs/decisions.md, "Stop rule"): fewer estimate the variance too poorly
  * where rare samples carry the integral (a penumbra seen through 16 samples
  * that all missed the light reports a standard error of 0). The standard
- * error is each pixel's own (core/moment_sums.h), so the rule does not
+ * error is each pixel's own (core/statistics/moment_sums.h), so the rule does not
  * depend on how bright other pixels are.
  *
  * Determinism: a pixel's samples depend only on (seed, pixel, index), and each
@@ -24,8 +24,8 @@
 #include <stdint.h>
 
 #include "core/frame.h"
-#include "core/mc_film.h"
-#include "core/sobol.h"
+#include "core/statistics/mc_film.h"
+#include "core/sampling/sobol.h"
 #include "raytracer/embree_scene.h"
 #include "raytracer/gbuffer.h"
 

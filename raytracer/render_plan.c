@@ -9,7 +9,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/atomic_file.h"
+#include "core/files/atomic_file.h"
 #include "core/number_parse.h"
 
 enum { PLAN_PATH_MAX = 4096, MAX_ARGS = 1024 };

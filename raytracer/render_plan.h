@@ -2,7 +2,7 @@
  *
  * A render of spp samples from sequence index K (`--sample-offset K
  * --spp S`) is the sum of renders of disjoint blocks of those samples:
- * sums are exact (core/mc_film.h), so merging the parts gives the bits of
+ * sums are exact (core/statistics/mc_film.h), so merging the parts gives the bits of
  * the render in one process. The plan splits [K, K + S) into N blocks,
  * job j taking [K + floor(j S / N), K + floor((j + 1) S / N)), and writes
  * into its folder:

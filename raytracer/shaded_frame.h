@@ -11,7 +11,7 @@
  *
  * Supersampling: s x s strata per pixel, one sample per stratum at a
  * position jittered by a hash of (pixel, stratum, seed), written as an
- * image of (W s) x (H s) samples for core/pixel_filter.h to resolve. */
+ * image of (W s) x (H s) samples for core/sampling/pixel_filter.h to resolve. */
 #ifndef GTLAB_RAYTRACER_SHADED_FRAME_H
 #define GTLAB_RAYTRACER_SHADED_FRAME_H
 

@@ -2,7 +2,7 @@
 
 #include <math.h>
 
-#include "core/heightfield_model.h"
+#include "core/optics/heightfield_model.h"
 #include "core/reference_schema.h"
 
 int ss_gbuffer_from_image(const image *img, const char *what, ss_camera camera, ss_gbuffer *g, gt_error *e)

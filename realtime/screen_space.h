@@ -54,7 +54,7 @@ vec3 ss_view_position(const ss_gbuffer *g, int x, int y);
  * point (fx, fy) (pixels, not snapped to a centre): the eye ray through the
  * point meets the tangent plane of the pixel it falls in (that pixel's
  * position and normal), clamped to the depths of the pixel and its
- * neighbours (core/heightfield_model.h, shared with the height-field
+ * neighbours (core/optics/heightfield_model.h, shared with the height-field
  * reference). Each pixel is a planar piece of the height field, so a sample
  * stays exactly in its slice and a plane is reproduced exactly; snapping
  * samples to pixel centres moves them off the slice and raises a plane's

@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/atomic_file.h"
+#include "core/files/atomic_file.h"
 
 int gnuplot_available(void) { return system("gnuplot --version >/dev/null 2>&1") == 0; }
 

@@ -3,7 +3,7 @@
 
 #include <stdio.h>
 
-#include "core/image_io.h"
+#include "core/files/image_io.h"
 
 enum { BAR_STOPS = 17 };
 

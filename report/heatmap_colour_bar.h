@@ -1,4 +1,4 @@
-/* The colour bar of a heatmap (core/image_io.h, image_write_heatmap): the
+/* The colour bar of a heatmap (core/files/image_io.h, image_write_heatmap): the
  * heatmap PNG records its colour map and range in its ImageDescription
  * ("gtlab heatmap: inferno, 0 to 0.25"), and the report draws the bar
  * beside it in HTML: the map's colours as a CSS gradient between the

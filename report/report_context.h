@@ -1,5 +1,5 @@
 /* The accuracy report's layer: each technique's section of `gtlab all`
- * rendered from its study's results struct (studies/), into the report
+ * rendered from its study's results struct (techniques/<name>/), into the report
  * (report_writer.h: Markdown and HTML), summary.json and the figures under
  * the output folder. A section computes nothing but presentation: tables and
  * JSON from one description of their columns (report_table.h), prose whose
@@ -17,7 +17,7 @@
 #include "core/error.h"
 #include "report/claims_table.h"
 #include "report/report_writer.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 typedef struct {
     study_context study; /* output folder, quality, threads: what the studies saw */

@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "core/atomic_file.h"
+#include "core/files/atomic_file.h"
 
 void report_introduce(report_context *ctx, const char *stage_list, const char *project)
 {

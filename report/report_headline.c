@@ -7,8 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/paired_power.h"
-#include "core/sample_mean.h"
+#include "core/statistics/paired_power.h"
+#include "core/statistics/sample_mean.h"
 #include "report/claims_table.h"
 #include "report/html_text.h"
 
@@ -119,7 +119,7 @@ void headline_apply_margin(report_headline *h, double d, double w)
 }
 
 /* Not decided: how many paired cases would decide it at 80% power, if the
- * gap and the per-case spread stay as observed (core/paired_power.h). The
+ * gap and the per-case spread stay as observed (core/statistics/paired_power.h). The
  * gap to resolve is |d| (is there a difference?) or, with a margin m, its
  * distance | |d| - m | (visible or not?). */
 static void say_cases_to_decide(report_headline *h, double d, double spread)

@@ -63,7 +63,7 @@ int headline_rank(report_headline *h, int count, const char *const *labels, cons
  * (errors[i * cases + k]: candidate i, case k, e.g. a scene), then the
  * verdict of the paired difference runner-up - best over the cases, its
  * mean and standard error over the cases where both are numbers
- * (core/sample_mean.h; NaN cases left out); `over` names the cases ("6
+ * (core/statistics/sample_mean.h; NaN cases left out); `over` names the cases ("6
  * scenes"). -1 (h unchanged) when fewer than two candidates have a mean. */
 int headline_rank_paired(report_headline *h, int count, const char *const *labels, const double *errors, int cases,
                          const char *over);
@@ -76,7 +76,7 @@ void headline_pair_cases(report_headline *h, int count, const char *const *label
 
 /* The verdict of the mean d of `cases` paired differences with its own
  * standard error s: |d| > t s with Student's t quantile for cases - 1
- * degrees of freedom (core/sample_mean.h), not the normal 1.96, so a few
+ * degrees of freedom (core/statistics/sample_mean.h), not the normal 1.96, so a few
  * cases are not over-trusted (3 scenes: 4.30). Not significant, it says
  * how many cases would decide it (cases_to_decide). */
 void headline_from_paired_cases(report_headline *h, double d, double s, int cases, const char *over);

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/atomic_file.h"
+#include "core/files/atomic_file.h"
 #include "report/compare_viewer.h"
 #include "report/figure_resolve.h"
 

@@ -1,4 +1,4 @@
-/* The scenes of a run (studies/study_scenes.h) at the top of the report:
+/* The scenes of a run (project/scene_list.h) at the top of the report:
  * when `gtlab all --project` gave the user's scenes, a table of each entry's
  * label, scene file and camera, and in summary.json "project" (the file, its
  * scenes, and the shaders and plug-ins it lists). The built-in scenes need
@@ -7,7 +7,7 @@
 #define GTLAB_REPORT_SCENE_LIST_SECTION_H
 
 #include "report/report_context.h"
-#include "studies/study_project.h"
+#include "project/project_file.h"
 
 /* parent's "scenes": the names of the scenes a section averaged over, so
  * that summary.json says which scenes (a project's, or the built-in ones)

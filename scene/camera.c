@@ -8,10 +8,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/atomic_file.h"
-#include "core/input_file.h"
-#include "core/json_check.h"
-#include "core/hemisphere_sampling.h"
+#include "core/files/atomic_file.h"
+#include "core/files/input_file.h"
+#include "core/files/json_check.h"
+#include "core/sampling/hemisphere_sampling.h"
 
 static const float degrees_per_radian = (float)(180.0 / M_PI);
 

@@ -39,7 +39,7 @@ float camera_depth(const camera_view *view, vec3 p);
 int camera_read_json(const char *path, camera *cam, gt_error *e);
 int camera_parse_json(const char *text, const char *what, camera *cam, gt_error *e);
 /* The same for text[0, length), which need not end in a NUL (a NUL inside
- * is an error). Every camera JSON passes the JSON gate (core/json_check.h)
+ * is an error). Every camera JSON passes the JSON gate (core/files/json_check.h)
  * before cJSON parses it. */
 int camera_parse_json_bytes(const char *text, size_t length, const char *what, camera *cam, gt_error *e);
 /* The JSON text (malloc'd, free()) and an atomic write of it. */

@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/path_name.h"
+#include "core/files/path_name.h"
 #include "plugins/plugin_loader.h"
 
 struct function_scorer {

@@ -2,7 +2,7 @@
  * made ready to score, for any channel it writes: its declarations with the
  * caller's parameters applied, its SPIR-V, and which output plane holds the
  * scored channel. The project reader compiles each screen shader with it
- * before any work (studies/study_project.h), the stage screen-shaders runs
+ * before any work (project/project_file.h), the stage screen-shaders runs
  * them (techniques/shader/screen_shader_score.h). No device is needed. */
 #ifndef GTLAB_SCORING_SCREEN_SHADER_PROGRAM_H
 #define GTLAB_SCORING_SCREEN_SHADER_PROGRAM_H

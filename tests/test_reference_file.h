@@ -3,9 +3,9 @@
 #ifndef GTLAB_TESTS_TEST_REFERENCE_FILE_H
 #define GTLAB_TESTS_TEST_REFERENCE_FILE_H
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "raytracer/reference_render.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 #include "tests/check.h"
 
 /* Renders rq of `spec` seen by its study view at width x height into path; 0, or -1 after a failed CHECK. */

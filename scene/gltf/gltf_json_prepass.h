@@ -8,7 +8,7 @@
  *  - a KHR_draco_mesh_compression primitive's indices accessor has no
  *    bufferView (the indices are in the Draco data): tinygltf refuses it.
  *    The primitive's "indices" is dropped; the Draco data provides them.
- * The text has passed the JSON gate (core/json_check.h). */
+ * The text has passed the JSON gate (core/files/json_check.h). */
 #ifndef GTLAB_SCENE_GLTF_GLTF_JSON_PREPASS_H
 #define GTLAB_SCENE_GLTF_GLTF_JSON_PREPASS_H
 

@@ -36,8 +36,8 @@
 #include <unistd.h>
 
 extern "C" {
-#include "core/input_file.h"
-#include "core/json_check.h"
+#include "core/files/input_file.h"
+#include "core/files/json_check.h"
 #include "scene/gltf/glb_container.h"
 #include "scene/gltf/gltf_json_prepass.h"
 #include "scene/gltf/primitive_topology.h"
@@ -127,7 +127,7 @@ const size_t max_gltf_bytes = (size_t)UINT32_MAX;
 bool named_file_exists(const std::string &path, void *) { return access(path.c_str(), F_OK) == 0; }
 
 /* tinygltf's ReadWholeFile for the buffers and images a .gltf names: only
- * regular files (core/input_file.h), so a `"uri": "/dev/zero"` cannot grow
+ * regular files (core/files/input_file.h), so a `"uri": "/dev/zero"` cannot grow
  * gtlab without end, nor a FIFO hang it. */
 bool read_named_file(std::vector<unsigned char> *out, std::string *err, const std::string &path, void *)
 {
@@ -281,7 +281,7 @@ int fail_tinygltf(Loader &L, bool binary, const unsigned char *json, size_t json
 }
 
 /* The JSON of the file (all of a .gltf, the JSON chunk of a .glb) must pass
- * the JSON gate (core/json_check.h) before tinygltf's recursive parser sees
+ * the JSON gate (core/files/json_check.h) before tinygltf's recursive parser sees
  * it, and a GLB's chunks must lie inside the file. */
 int check_container(Loader &L, const unsigned char *bytes, size_t size, bool binary, const unsigned char **json,
                     size_t *json_length)

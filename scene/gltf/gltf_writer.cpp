@@ -17,7 +17,7 @@
 #include <vector>
 
 extern "C" {
-#include "core/atomic_file.h"
+#include "core/files/atomic_file.h"
 #include "scene/gltf/gltf_writer.h"
 }
 

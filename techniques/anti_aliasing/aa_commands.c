@@ -8,11 +8,11 @@
 
 #include "anti_aliasing/frames_render.h"
 #include "anti_aliasing/taa_sampling.h"
-#include "core/exr_io.h"
-#include "core/image_io.h"
-#include "core/pixel_filter.h"
+#include "core/files/exr_io.h"
+#include "core/files/image_io.h"
+#include "core/sampling/pixel_filter.h"
 #include "core/reference_schema.h"
-#include "core/srgb.h" /* srgb_to_linear */
+#include "core/optics/srgb.h" /* srgb_to_linear */
 #include "raytracer/shaded_frame.h"
 #include "scene/camera_path.h"
 

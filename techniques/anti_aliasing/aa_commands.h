@@ -28,7 +28,7 @@ typedef struct {
     const char *dir;         /* output folder */
     int threads;
     int truth_strata;        /* aa_frames_write: 0, or S (S x S samples a pixel) */
-    int truth_filter;        /* a pixel_filter (core/pixel_filter.h) */
+    int truth_filter;        /* a pixel_filter (core/sampling/pixel_filter.h) */
 } aa_frames_request;
 
 /* The technique's index from its short name (none, fxaa, taa, edge-taa,

@@ -13,10 +13,10 @@
 #include "anti_aliasing/taa_accumulate.h"
 #include "anti_aliasing/taa_edge.h"
 #include "anti_aliasing/taa_sampling.h"
-#include "core/image_io.h"
-#include "core/pixel_filter.h"
+#include "core/files/image_io.h"
+#include "core/sampling/pixel_filter.h"
 #include "core/progress.h"
-#include "core/srgb.h" /* srgb_to_linear, linear_to_srgb */
+#include "core/optics/srgb.h" /* srgb_to_linear, linear_to_srgb */
 #include "metrics/ssim.h"
 #include "scene/camera_path.h"
 

@@ -38,7 +38,7 @@
 #include "metrics/cluster_mean.h"
 #include "raytracer/embree_scene.h"
 #include "scene/camera.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 enum { AA_T_TECHNIQUES = 5, AA_T_PATHS = 2, AA_T_MAX_SCENES = 2, AA_T_MAX_FRAMES = 64, AA_T_WARMUP = 4 };
 /* The study's rows per path: the techniques, then the checkerboard at 2x. */

@@ -11,7 +11,7 @@
 #include "cli/cli.h"
 #include "cli/cli_options.h"
 #include "cli/technique.h"
-#include "core/pixel_filter.h"
+#include "core/sampling/pixel_filter.h"
 #include "core/threads.h"
 
 GTLAB_STUDY_STAGE(all_stage_aa, aa, aa_section)

@@ -7,8 +7,8 @@
 #include <string.h>
 
 #include "anti_aliasing/fxaa.h"
-#include "core/image_io.h"
-#include "core/srgb.h" /* srgb_to_linear */
+#include "core/files/image_io.h"
+#include "core/optics/srgb.h" /* srgb_to_linear */
 #include "metrics/image_error.h"
 #include "metrics/ssim.h"
 #include "raytracer/shaded_frame.h"

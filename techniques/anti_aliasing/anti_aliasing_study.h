@@ -1,7 +1,7 @@
 /* Anti-aliasing against supersampled ground truth (issue 19, first part):
  * shaded frames of built-in scenes (raytracer/shaded_frame.h), the truth at
  * 16 (4 x 4) and 64 (8 x 8) stratified samples per pixel resolved with box
- * and Blackman-Harris filters (core/pixel_filter.h), and the techniques run
+ * and Blackman-Harris filters (core/sampling/pixel_filter.h), and the techniques run
  * on one sample per pixel: none, FXAA 3.11 (anti_aliasing/fxaa.h), and 2 x 2
  * supersampling as a point of comparison. Everything is scored on display
  * values, d = sRGB(L / (1 + L)) (Reinhard, then the sRGB encode): the
@@ -14,8 +14,8 @@
 #define GTLAB_ANTI_ALIASING_ANTI_ALIASING_STUDY_H
 
 #include "anti_aliasing/aa_temporal_study.h"
-#include "core/pixel_filter.h"
-#include "studies/study.h"
+#include "core/sampling/pixel_filter.h"
+#include "project/study_context.h"
 
 #define AA_DIR "aa"
 

@@ -9,7 +9,7 @@
 #include "core/progress.h"
 #include "core/reference_schema.h"
 #include "raytracer/reference_render.h"
-#include "studies/study_scenes.h"
+#include "project/scene_list.h"
 
 enum { SERIES_SEED = 1, REFERENCE_SEED = 7 };
 

@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "core/atomic_file.h"
+#include "core/files/atomic_file.h"
 #include "report/gnuplot_plot.h"
 
 static int write_data(const ao_convergence_result *r, const char *path, gt_error *e)

@@ -4,12 +4,12 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "core/exr_io.h"
-#include "core/image_io.h"
+#include "core/files/exr_io.h"
+#include "core/files/image_io.h"
 #include "core/reference_schema.h"
 #include "metrics/ssim.h"
 #include "raytracer/reference_render.h"
-#include "studies/study_scenes.h"
+#include "project/scene_list.h"
 
 /* Samples, standard errors and throughput over the covered pixels. */
 static void measure(const image *img, const render_stats *stats, ao_reference_row *r)

@@ -13,7 +13,7 @@
 
 #include <stdint.h>
 
-#include "studies/study.h"
+#include "project/study_context.h"
 
 /* The folder below the output folder that holds the references. */
 #define AO_REFERENCES_DIR "ao"

@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "ao_decals/ao_decals_study.h"
-#include "core/image_io.h"
+#include "core/files/image_io.h"
 #include "core/reference_schema.h"
 #include "metrics/ssim.h"
 #include "raytracer/reference_render.h"

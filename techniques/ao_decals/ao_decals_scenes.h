@@ -32,7 +32,7 @@
 #include "ao_decals/ao_decals.h"
 #include "core/image.h"
 #include "scene/builtin_scene_ao_decals.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 #define AO_DECAL_POINT_RADIUS 3.0f /* the point decal's size in occluder radii (half extents) */
 #define AO_DECAL_DSSIM_MAP_MAX 0.05f

@@ -16,7 +16,7 @@
 
 #include "ao_decals/ao_decals_fit.h"
 #include "ao_decals/ao_decals_scenes.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 #define AO_DECALS_DIR "ao_decals"
 

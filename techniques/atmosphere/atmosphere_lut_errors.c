@@ -5,9 +5,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/bootstrap.h"
-#include "core/phase_function.h"
-#include "core/splitmix64.h"
+#include "core/statistics/bootstrap.h"
+#include "core/optics/phase_function.h"
+#include "core/sampling/splitmix64.h"
 #include "core/vec3.h" /* M_PI */
 
 static const double SINGLE_TOLERANCE = 1e-7, MULTIPLE_TOLERANCE = 1e-6, FLOOR = 1e-3;

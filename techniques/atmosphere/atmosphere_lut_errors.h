@@ -50,7 +50,7 @@ void atmosphere_lut_reference_free(atmosphere_lut_reference *ref);
 
 typedef struct {
     double max, rms, p95;
-    double p95_se; /* the 95th percentile's bootstrap standard error (core/bootstrap.h; -1 out of memory) */
+    double p95_se; /* the 95th percentile's bootstrap standard error (core/statistics/bootstrap.h; -1 out of memory) */
 } atmosphere_error_stats;
 
 /* The daytime subset: the sun at least 10 degrees above the horizon. */

@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "core/phase_function.h"
+#include "core/optics/phase_function.h"
 #include "atmosphere/atmosphere_luts_c.h"
 #include "atmosphere/atmosphere_luts.inc"
 #include "atmosphere/atmosphere_scattering.h"

@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "core/atomic_file.h"
+#include "core/files/atomic_file.h"
 #include "core/progress.h"
 #include "atmosphere/atmosphere_luts_writers.h"
 

@@ -38,7 +38,7 @@
 
 #include "atmosphere/atmosphere_lut_errors.h"
 #include "atmosphere/atmosphere_luts.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 #define ATMOSPHERE_LUTS_DIR "luts"
 #define ATMOSPHERE_TOLERANCE 0.02

@@ -5,7 +5,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "core/quadrature.h"
+#include "core/sampling/quadrature.h"
 
 atmosphere_weather atmosphere_weather_clear(void)
 {

@@ -11,7 +11,7 @@
  *             beta_R = (5.802, 13.558, 33.1) 1e-6 /m at (680, 550, 440) nm, H_R = 8 km;
  *   Mie:      beta_s^M(h) = beta_Ms exp(-h / H_M), beta_t^M = beta_Me exp(-h / H_M),
  *             beta_Ms = 3.996e-6 /m, beta_Me = 4.440e-6 /m (grey), H_M = 1.2 km,
- *             phase Cornette-Shanks with g = 0.8 (core/phase_function.h).
+ *             phase Cornette-Shanks with g = 0.8 (core/optics/phase_function.h).
  * No ozone (Bruneton's optional layer): the sunset sky is less blue than his.
  * Solar irradiance E_sun = (1.474, 1.8504, 1.91198) W m^-2 nm^-1 at the three
  * wavelengths (Bruneton 2017 demo, kSolarIrradiance), angular radius 0.004675.
@@ -86,7 +86,7 @@ double atmosphere_distance_to_boundary(const atmosphere_model *m, double r, doub
 double atmosphere_radius_at(double r, double mu, double d);
 
 /* The optical depth tau of the segment [0, d] of the ray (r, mu), per
- * channel, for blend t, by adaptive quadrature (core/quadrature.h) of the
+ * channel, for blend t, by adaptive quadrature (core/sampling/quadrature.h) of the
  * species' column densities, split at the closest approach to the centre;
  * tolerance `tol` relative to each column's scale height. *error (may be
  * NULL) receives the largest channel's error estimate. */

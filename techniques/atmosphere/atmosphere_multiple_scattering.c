@@ -6,8 +6,8 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "core/phase_function.h"
-#include "core/quadrature.h"
+#include "core/optics/phase_function.h"
+#include "core/sampling/quadrature.h"
 #include "core/vec3.h" /* M_PI */
 #include "atmosphere/atmosphere_scattering.h"
 #include "atmosphere/atmosphere_scattering_parts.h"

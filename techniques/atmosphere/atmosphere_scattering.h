@@ -125,7 +125,7 @@ void atmosphere_view_integrands(const atmosphere_solution *s, atmosphere_method 
 /* The radiance the segment scatters towards the ray's origin,
  *   L = sum_i p_i(nu) S_i + M,   S_i = \int_0^length single_i ds,   M = \int_0^length multiple ds,
  * p_R Rayleigh, p_M Cornette-Shanks (the model's g): the nine integrals by
- * one adaptive Gauss-Kronrod (core/quadrature.h, vector form) split at the
+ * one adaptive Gauss-Kronrod (core/sampling/quadrature.h, vector form) split at the
  * ray rule's breaks, each to tol times its scale (E_sun beta_s^i(0) H_i;
  * M: Rayleigh's), the transmittances as `how` says (FAST is taken as
  * ADAPTIVE). S (may be NULL) receives S_i, M (may be NULL) M. Returns the

@@ -2,7 +2,7 @@
  * ComputeSingleScatteringIntegrand without the phase) and the ray rules. */
 #include <math.h>
 
-#include "core/quadrature.h"
+#include "core/sampling/quadrature.h"
 #include "atmosphere/atmosphere_scattering.h"
 #include "atmosphere/atmosphere_scattering_parts.h"
 
@@ -70,7 +70,7 @@ double atmosphere_single_scale(const atmosphere_solution *s, int species, int c)
     return m->solar_irradiance[c] * k.scattering[species][c] * h;
 }
 
-/* One component (species i, channel c) of the integrand, for core/quadrature.h. */
+/* One component (species i, channel c) of the integrand, for core/sampling/quadrature.h. */
 typedef struct {
     const atmosphere_solution *s;
     atmosphere_method how;

@@ -2,11 +2,11 @@
  * (atmosphere_scattering.h), FAST or REFERENCE. */
 #include <math.h>
 
-#include "core/quadrature.h"
+#include "core/sampling/quadrature.h"
 #include "atmosphere/atmosphere_scattering.h"
 #include "atmosphere/atmosphere_scattering_parts.h"
 
-/* One channel of T(x, x_s) J(x_s) at distance s, for core/quadrature.h. */
+/* One channel of T(x, x_s) J(x_s) at distance s, for core/sampling/quadrature.h. */
 typedef struct {
     const atmosphere_solution *s;
     atmosphere_method how;

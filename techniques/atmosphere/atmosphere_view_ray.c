@@ -3,8 +3,8 @@
  * of both species and the solved higher orders, integrated together. */
 #include <math.h>
 
-#include "core/phase_function.h"
-#include "core/quadrature.h"
+#include "core/optics/phase_function.h"
+#include "core/sampling/quadrature.h"
 #include "atmosphere/atmosphere_scattering.h"
 #include "atmosphere/atmosphere_scattering_parts.h"
 

@@ -6,10 +6,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/atomic_file.h"
+#include "core/files/atomic_file.h"
 #include "core/frame.h"
-#include "core/ggx.h"
-#include "core/image_io.h"
+#include "core/optics/ggx.h"
+#include "core/files/image_io.h"
 #include "core/progress.h"
 #include "best_fit_normals/best_fit_normals.h"
 #include "best_fit_normals/best_fit_normals_cells.h"

@@ -16,7 +16,7 @@
 #ifndef GTLAB_BEST_FIT_NORMALS_STUDY_H
 #define GTLAB_BEST_FIT_NORMALS_STUDY_H
 
-#include "studies/study.h"
+#include "project/study_context.h"
 
 #define NORMALS_DIR "normals"
 

@@ -6,10 +6,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/atomic_file.h"
-#include "core/exr_io.h"
+#include "core/files/atomic_file.h"
+#include "core/files/exr_io.h"
 #include "core/image.h"
-#include "core/image_io.h"
+#include "core/files/image_io.h"
 #include "core/reference_schema.h"
 
 static int write_exr(const char *path, const float *table, int size, const char *description, gt_error *e)

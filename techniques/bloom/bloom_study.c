@@ -7,7 +7,7 @@
 
 #include "bloom/bloom_kernels.h"
 #include "bloom/bloom_pyramid.h"
-#include "core/atomic_file.h"
+#include "core/files/atomic_file.h"
 
 enum { RESPONSE_STEPS = 33, PHASE_STEPS = 16 };
 

@@ -26,7 +26,7 @@
 #define GTLAB_BLOOM_BLOOM_STUDY_H
 
 #include "bloom/bloom_tap_fit.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 #define BLOOM_DIR "bloom"
 

@@ -4,7 +4,7 @@
 #include <math.h>
 #include <stddef.h>
 
-#include "core/srgb.h"
+#include "core/optics/srgb.h"
 #include "core/vec3.h" /* M_PI */
 
 static double clamp01(double x)

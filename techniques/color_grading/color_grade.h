@@ -15,7 +15,7 @@
  *   hue         rotation by an angle about the grey axis (1, 1, 1)/sqrt(3)
  *   cdl         ASC CDL slope, offset, power: (x slope + offset)^power
  *   exposure    2^stops in linear light (decode sRGB, scale, encode:
- *               core/srgb.h), then
+ *               core/optics/srgb.h), then
  *               the clamp: a clipped edit, the LUT's hardest case (a kink) */
 #ifndef GTLAB_COLOR_GRADING_COLOR_GRADE_H
 #define GTLAB_COLOR_GRADING_COLOR_GRADE_H

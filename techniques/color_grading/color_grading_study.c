@@ -6,11 +6,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/image_io.h"
+#include "core/files/image_io.h"
 #include "core/vec3.h" /* M_PI */
 #include "metrics/color_difference.h"
-#include "core/pixel_filter.h"
-#include "core/srgb.h"
+#include "core/sampling/pixel_filter.h"
+#include "core/optics/srgb.h"
 #include "raytracer/shaded_frame.h"
 #include "hdr_precision/hdr_precision.h"
 

@@ -21,7 +21,7 @@
 
 #include "color_grading/color_grade.h"
 #include "color_grading/color_lut.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 #define GRADING_DIR "grading"
 

@@ -4,7 +4,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "core/srgb.h"
+#include "core/optics/srgb.h"
 
 static const char *const space_names[COLOR_LUT_SPACES] = {"sRGB", "linear", "log2"};
 enum { LOG_STOPS = 12 };

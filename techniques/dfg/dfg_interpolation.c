@@ -7,7 +7,7 @@
 #include <omp.h>
 #include <stdlib.h>
 
-#include "core/splitmix64.h"
+#include "core/sampling/splitmix64.h"
 
 /* The study's points (as floats, the lookup's argument type) and the exact
  * values at them: uv[2k], uv[2k+1]; exact[3k + c]. */

@@ -3,7 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "core/atomic_file.h"
+#include "core/files/atomic_file.h"
 #include "core/progress.h"
 #include "dfg/dfg_lut_writers.h"
 

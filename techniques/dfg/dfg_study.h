@@ -11,7 +11,7 @@
 #define GTLAB_DFG_STUDY_H
 
 #include "dfg/dfg_interpolation.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 #define DFG_LUTS_DIR "luts"
 /* Filament's DFG table (libs/ibl, cmgen): 128 x 128, RG16F. */

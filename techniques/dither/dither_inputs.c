@@ -1,5 +1,5 @@
 /* The dither study's inputs: see dither_inputs.h. */
-#include "core/srgb.h" /* linear_to_srgb */
+#include "core/optics/srgb.h" /* linear_to_srgb */
 #include "dither/dither_inputs.h"
 
 #include <math.h>

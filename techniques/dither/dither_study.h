@@ -33,7 +33,7 @@
 
 #include "dither/dither.h"
 #include "realtime/dither_patterns.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 #define DITHER_DIR "dither"
 

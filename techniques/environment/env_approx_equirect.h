@@ -2,7 +2,7 @@
  * (environment/sh_irradiance.h, environment/irradiance_map.h, environment/prefiltered_radiance.h)
  * take it: a float RGB image of width x height texels, row-major, three
  * floats per texel, read as piecewise-constant radiance (each texel's value
- * over its whole solid angle). The mapping is core/environment_map.h's
+ * over its whole solid angle). The mapping is core/optics/environment_map.h's
  * (Blender's world mapping through the glTF axes, world up +Y): a texel
  * (i, j) covers
  *

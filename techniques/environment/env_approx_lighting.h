@@ -1,5 +1,5 @@
 /* The engines' lighting precomputations for one environment
- * (core/environment_map.h), as the environment study uses them: the 9 SH
+ * (core/optics/environment_map.h), as the environment study uses them: the 9 SH
  * coefficients, the exact irradiance map, the pre-filtered radiance levels
  * (the DFG LUT is the caller's, built once), with the time each took. A constant environment (no
  * texels) is first written as a small map of its constant; the rotation is
@@ -8,7 +8,7 @@
 #ifndef GTLAB_ENVIRONMENT_ENV_APPROX_LIGHTING_H
 #define GTLAB_ENVIRONMENT_ENV_APPROX_LIGHTING_H
 
-#include "core/environment_map.h"
+#include "core/optics/environment_map.h"
 #include "core/error.h"
 #include "environment/env_approx.h"
 

@@ -1,6 +1,5 @@
 /* One case of the environment study: every combination's image, its error
- * split into the lighting's, the occlusion's and the total (studies/
- * env_approx.h), and the side-by-side images. */
+ * split into the lighting's, the occlusion's and the total (env_approx.h), and the side-by-side images. */
 #include "environment/env_approx_parts.h"
 
 #include <math.h>
@@ -8,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/image_io.h"
+#include "core/files/image_io.h"
 #include "core/reference_schema.h"
 #include "metrics/image_error.h"
 #include "metrics/noise_corrected.h"

@@ -9,13 +9,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/environment_map.h"
+#include "core/optics/environment_map.h"
 #include "core/progress.h"
 #include "core/roughness_setting.h"
 #include "environment/environment_light.h"
 #include "environment/environment_quantity.h"
 #include "raytracer/reference_render.h"
-#include "studies/study_scenes.h"
+#include "project/scene_list.h"
 #include "environment/env_approx_lighting.h"
 #include "environment/env_approx_parts.h"
 

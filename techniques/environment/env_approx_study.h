@@ -5,7 +5,7 @@
  * and which the occlusion's.
  *
  * Environments: the white dome (the control, constant 1), the analytic sky
- * (core/sky_environment.h), a synthetic small bright sun over a dim sky
+ * (core/optics/sky_environment.h), a synthetic small bright sun over a dim sky
  * (environment_sun_default: the hardest case for AO x probe) and Blender's
  * studio-light HDRs (a few at preview, all eight in production). Scenes: the
  * built-in study scenes. Inputs: the AO reference's exact AO and bent
@@ -38,7 +38,7 @@
 #define GTLAB_ENVIRONMENT_ENV_APPROX_STUDY_H
 
 #include "environment/env_approx.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 enum {
     ENV_STUDY_MAX_ENVIRONMENTS = 12,

@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "core/hemisphere_sampling.h"
+#include "core/sampling/hemisphere_sampling.h"
 #include "core/reference_schema.h"
 #include "raytracer/diffuse_path_wavefront.h"
 

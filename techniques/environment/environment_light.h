@@ -1,12 +1,12 @@
 /* The light of the environment-lit references (`gtlab render env-diffuse`,
- * `env-specular`): an environment (core/environment_map.h) chosen by name,
- * turned and scaled, with its sampler (core/environment_sampler.h), the MIS
+ * `env-specular`): an environment (core/optics/environment_map.h) chosen by name,
+ * turned and scaled, with its sampler (core/optics/environment_sampler.h), the MIS
  * mixture weight c of BRDF sampling, and the film's scale exponent.
  *
  *   "white"  constant radiance 1 (the white dome); c = 1: BRDF sampling
  *            alone, which makes env-diffuse under it the multibounce
  *            reference bit for bit (docs/decisions.md)
- *   "sky"    the analytic sky (core/sky_environment.h) on 1024 x 512
+ *   "sky"    the analytic sky (core/optics/sky_environment.h) on 1024 x 512
  *   "sun"    the synthetic sun, environment_sun_default()
  *   a path   an equirectangular image any format OIIO reads
  *
@@ -14,15 +14,15 @@
  * probability c = 1/2, else from the environment's sampler (one-sample
  * balance heuristic); an environment of luminance 0 everywhere uses c = 1.
  *
- * The film's scale exponent E (core/mc_film.h) bounds a direct sample:
+ * The film's scale exponent E (core/statistics/mc_film.h) bounds a direct sample:
  * f cos / p_mix <= 1 / c for Lambert (L / albedo) and for GGX without
  * Fresnel (G2 / G1 <= 1), so |sample| <= L_max / c, and
  * E = ceil(log2(max(1, intensity L_max / c))): 0 for the white dome. */
 #ifndef GTLAB_ENVIRONMENT_ENVIRONMENT_LIGHT_H
 #define GTLAB_ENVIRONMENT_ENVIRONMENT_LIGHT_H
 
-#include "core/environment_map.h"
-#include "core/environment_sampler.h"
+#include "core/optics/environment_map.h"
+#include "core/optics/environment_sampler.h"
 #include "multibounce/multibounce_integrator.h"
 #include "raytracer/reference_quantity.h"
 

@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "core/ggx.h"
+#include "core/optics/ggx.h"
 #include "core/reference_schema.h"
 #include "core/roughness_setting.h"
 #include "scene/material_lookup.h"

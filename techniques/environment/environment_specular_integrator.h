@@ -4,7 +4,7 @@
  *   env_specular.c             \int V(l) L_c(l) f_r(v, l) F_c(v.h) (n.l) dl
  *   env_specular_unoccluded.c  \int L_c(l) f_r(v, l) F_c(v.h) (n.l) dl
  *
- * f_r core/ggx.h's GGX (height-correlated Smith G2, no Fresnel) with
+ * f_r core/optics/ggx.h's GGX (height-correlated Smith G2, no Fresnel) with
  * alpha = max(roughness^2, 1e-4) rounded to float (ggx_alpha_phong_cone: a
  * roughness-0 mirror stays a finite lobe; float as specular-occlusion's), the roughness the glTF material's (G-buffer
  * roughness.Y) or --roughness; F_c Schlick's F0_c + (1 - F0_c)(1 - v.h)^5
@@ -14,7 +14,7 @@
  * faces away, as specular-occlusion does); n is the shading normal.
  *
  * Each direction comes from a mixture (the one-sample balance heuristic,
- * core/environment_sampler.h) of visible-normal sampling (Heitz 2018;
+ * core/optics/environment_sampler.h) of visible-normal sampling (Heitz 2018;
  * probability c) and the environment's sampler, chosen by u0 < c as in
  * env-diffuse, with weight
  *   f_r cos / p_mix = (G2 / G1) / (c + (1 - c) p_env / p_vndf)

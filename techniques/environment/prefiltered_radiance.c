@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include "core/frame.h"
-#include "core/ggx.h"
+#include "core/optics/ggx.h"
 
 double prefiltered_level_roughness(int k, int levels) { return levels > 1 ? (double)k / (levels - 1) : 0.0; }
 

@@ -13,7 +13,7 @@
 #include "gtao/gtao_sin_n_pitfall.h"
 #include "gtao/hbao.h"
 #include "gtao/volumetric_obscurance.h"
-#include "studies/study_scenes.h"
+#include "project/scene_list.h"
 #include "gtao/gtao_scene_refs.h"
 
 const char *const baseline_names[BASELINE_COUNT] = {

@@ -16,7 +16,7 @@
 #include "gtao/ao_image_score.h"
 #include "gtao/gtao_fast_math.h"
 #include "metrics/cluster_mean.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 typedef enum {
     BASELINE_GTAO,

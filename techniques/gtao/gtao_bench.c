@@ -9,7 +9,7 @@
 #include "core/progress.h"
 #include "raytracer/reference_render.h"
 #include "scene/scene_loaders.h"
-#include "studies/gbuffer_input.h"
+#include "project/gbuffer_input.h"
 
 typedef approx_input bench_gbuffer;
 

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "gtao/gtao_bent_horizons.h"
-#include "studies/study_scenes.h"
+#include "project/scene_list.h"
 #include "gtao/gtao_scene_refs.h"
 
 const char *const bent_estimator_names[BENT_ESTIMATORS] = {"average of the horizon vectors",

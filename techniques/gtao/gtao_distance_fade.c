@@ -9,7 +9,7 @@
 
 #include "core/reference_schema.h"
 #include "raytracer/reference_render.h"
-#include "studies/study_scenes.h"
+#include "project/scene_list.h"
 #include "scene/scene_loaders.h"
 #include "gtao/gtao_scene_refs.h"
 

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "fitters/ceres_bridge.h"
-#include "studies/study_scenes.h"
+#include "project/scene_list.h"
 #include "gtao/gtao_scene_refs.h"
 #include "gtao/gtao_talk_setting.h"
 

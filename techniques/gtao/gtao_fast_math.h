@@ -28,7 +28,7 @@
 
 #include "gtao/gtao_fast_acos.h"
 #include "metrics/cluster_mean.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 typedef enum {
     FAST_ACOS_EXACT,

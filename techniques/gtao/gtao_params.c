@@ -7,7 +7,7 @@
 
 #include "core/reference_schema.h"
 #include "gtao/gtao.h"
-#include "studies/gbuffer_input.h"
+#include "project/gbuffer_input.h"
 
 /* The references of one list of scenes, loaded. */
 typedef struct {

@@ -9,8 +9,8 @@
 
 #include "core/image.h"
 #include "gtao/gtao.h"
-#include "studies/gbuffer_input.h"
-#include "studies/study.h"
+#include "project/gbuffer_input.h"
+#include "project/study_context.h"
 
 typedef struct {
     char scene[64];

@@ -14,7 +14,7 @@
 #include "gtao/gtao_params_json.h"
 #include "report/gnuplot_plot.h"
 #include "report/report_table.h"
-#include "core/atomic_file.h"
+#include "core/files/atomic_file.h"
 #include "gtao/gtao_validation.h"
 
 static const report_column variant_columns[] = {

@@ -4,7 +4,7 @@
 #include <string.h>
 
 #include "scene/scene_loaders.h"
-#include "studies/study_scenes.h"
+#include "project/scene_list.h"
 
 static const char *const builtin_scenes[] = {"boxes", "cornell", "menger", "corner"};
 enum { PREVIEW_SCENES = 2, PRODUCTION_SCENES = 4, PROJECT_PREVIEW_SCENES = 1, PROJECT_PRODUCTION_SCENES = 2 };

@@ -30,8 +30,8 @@
 
 #include "gtao/gtao.h"
 #include "gtao/gtao_depth_mip.h"
-#include "studies/gbuffer_input.h"
-#include "studies/study.h"
+#include "project/gbuffer_input.h"
+#include "project/study_context.h"
 
 enum { GTAO_TALK_WIDTH = 1920, GTAO_TALK_HEIGHT = 1080 };
 #define GTAO_TALK_RADIUS_FRACTION 0.25f /* of the camera's distance to its target: the talk's 200 inches */

@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "studies/study_scenes.h"
+#include "project/scene_list.h"
 #include "gtao/gtao_scene_refs.h"
 
 const float gtao_thickness_values[THICKNESS_VALUES] = {0.05f, 0.1f, 0.25f, 0.5f};

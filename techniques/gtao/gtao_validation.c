@@ -8,9 +8,9 @@
 #include <string.h>
 #include <time.h>
 
-#include "core/atomic_file.h"
-#include "core/exr_io.h"
-#include "core/image_io.h"
+#include "core/files/atomic_file.h"
+#include "core/files/exr_io.h"
+#include "core/files/image_io.h"
 #include "core/progress.h"
 #include "core/reference_schema.h"
 #include "metrics/flip.h"
@@ -19,8 +19,8 @@
 #include "metrics/ssim.h"
 #include "gtao/hbao.h"
 #include "gtao/volumetric_obscurance.h"
-#include "studies/study_scenes.h"
-#include "studies/gbuffer_input.h"
+#include "project/scene_list.h"
+#include "project/gbuffer_input.h"
 #include "gtao/gtao_scene_refs.h"
 #include "gtao/gtao_talk_setting.h"
 

@@ -29,7 +29,7 @@
 #include "gtao/gtao_params.h"
 #include "gtao/gtao_params_fit.h"
 #include "gtao/gtao_shortcuts.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 /* The folder below the output folder that holds the study's files. */
 #define GTAO_VALIDATION_DIR "gtao"

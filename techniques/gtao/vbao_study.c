@@ -6,14 +6,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "core/progress.h"
 #include "core/reference_schema.h"
 #include "metrics/noise_corrected.h"
 #include "raytracer/heightfield_ao_integrator.h"
 #include "raytracer/reference_render.h"
 #include "gtao/vbao.h"
-#include "studies/study_scenes.h"
+#include "project/scene_list.h"
 #include "scene/scene_loaders.h"
 #include "gtao/gtao_scene_refs.h"
 

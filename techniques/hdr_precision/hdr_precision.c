@@ -3,7 +3,7 @@
 
 #include <math.h>
 
-#include "core/srgb.h" /* linear_to_srgb: the one sRGB encode */
+#include "core/optics/srgb.h" /* linear_to_srgb: the one sRGB encode */
 
 double gamma_equal_precision_point(double gamma)
 {

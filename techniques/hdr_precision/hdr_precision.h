@@ -33,7 +33,7 @@
 double gamma_equal_precision_point(double gamma);
 /* x* for the sRGB curve. */
 double srgb_equal_precision_point(void);
-/* The sRGB encode g(x) (IEC 61966-2-1): core/srgb.h's linear_to_srgb. */
+/* The sRGB encode g(x) (IEC 61966-2-1): core/optics/srgb.h's linear_to_srgb. */
 double srgb_encode(double x);
 
 double tonemap_exponential(double c, double l);

@@ -4,7 +4,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "core/atomic_file.h"
+#include "core/files/atomic_file.h"
 #include "hdr_precision/hdr_precision.h"
 
 /* One 8-bit code's step in linear units at x: 1/255 linear, (dx/dg)/255 in

@@ -9,7 +9,7 @@
 #ifndef GTLAB_HDR_PRECISION_STUDY_H
 #define GTLAB_HDR_PRECISION_STUDY_H
 
-#include "studies/study.h"
+#include "project/study_context.h"
 
 #define HDR_PRECISION_DIR "hdr"
 

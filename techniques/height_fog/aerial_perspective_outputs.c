@@ -4,8 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/exr_io.h"
-#include "core/image_io.h"
+#include "core/files/exr_io.h"
+#include "core/files/image_io.h"
 #include "core/reference_schema.h"
 #include "metrics/image_error.h"
 #include "metrics/ssim.h"

@@ -69,7 +69,7 @@
 #include "core/error.h"
 #include "atmosphere/atmosphere_luts.h"
 #include "height_fog/height_fog.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 enum { AERIAL_SUNS = 3, AERIAL_CASES = 2 * AERIAL_SUNS, AERIAL_MODELS = 2 };
 typedef enum { AERIAL_MODEL_PUBLISHED, AERIAL_MODEL_SKY_ATTENUATED } aerial_model;

@@ -3,7 +3,7 @@
  * (core/reference_schema.h):
  *
  *   fog.T.R/G/B   transmittance from the camera to the surface, closed form
- *                 (core/height_fog_medium.h), the same in every sample
+ *                 (core/optics/height_fog_medium.h), the same in every sample
  *   fog.L.R/G/B   radiance the fog scatters towards the camera, sun +
  *                 ambient, with .stderr:
  *                   quadrature  single scattering by gk15
@@ -26,7 +26,7 @@
 #define GTLAB_HEIGHT_FOG_FOG_INTEGRATOR_H
 
 #include "core/error.h"
-#include "core/mc_film.h"
+#include "core/statistics/mc_film.h"
 #include "height_fog/fog_path_tracer.h"
 #include "raytracer/reference_quantity.h"
 #include "raytracer/render_loop.h"

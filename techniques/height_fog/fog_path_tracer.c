@@ -3,8 +3,8 @@
 
 #include <math.h>
 
-#include "core/phase_function.h"
-#include "core/sobol.h"
+#include "core/optics/phase_function.h"
+#include "core/sampling/sobol.h"
 
 enum { ROULETTE_AFTER = 8 };
 

@@ -19,7 +19,7 @@
  * and where it is rare (a thick but finite layer along a rising ray) the
  * per-pixel standard error would not see it. At each collision:
  *   - the sun is added by next-event estimation: w_c E_c S_sun,c(mu) T_sun,c
- *     V_sun / beta_t,c (S_sun: core/height_fog_medium.h; T_sun the fog's
+ *     V_sun / beta_t,c (S_sun: core/optics/height_fog_medium.h; T_sun the fog's
  *     transmittance towards the sun when sun_extinction, V_sun a shadow ray
  *     when occluders);
  *   - single scattering (max_scatterings = 1) adds the model's ambient term

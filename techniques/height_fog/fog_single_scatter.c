@@ -4,7 +4,7 @@
 
 #include <math.h>
 
-#include "core/quadrature.h"
+#include "core/sampling/quadrature.h"
 
 enum { MAX_SPLITS = 12 };
 #define DEPTH_CUT 50.0 /* optical depth beyond which nothing is integrated */

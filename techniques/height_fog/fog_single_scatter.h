@@ -1,10 +1,10 @@
 /* Single scattering in the height fog along one ray, by adaptive quadrature
- * (core/quadrature.h, gk15) with an error estimate: the reference the
+ * (core/sampling/quadrature.h, gk15) with an error estimate: the reference the
  * analytic model (height_fog/height_fog.h) is tested against and `gtlab
  * render fog --fog-scattering single` writes (docs/render-quantities.md).
  *
  * Along the ray x(s) = o + s w, s in [0, d], the transmittance is
- * T_c = exp(-beta_t,c D(d)) (D the integral of rho, core/height_fog_medium.h)
+ * T_c = exp(-beta_t,c D(d)) (D the integral of rho, core/optics/height_fog_medium.h)
  * and the light scattered once towards o is
  *
  *   L_c = \int_0^d rho(s) e^{-beta_t,c D(s)} J_c(s) ds
@@ -37,7 +37,7 @@
 #ifndef GTLAB_HEIGHT_FOG_FOG_SINGLE_SCATTER_H
 #define GTLAB_HEIGHT_FOG_FOG_SINGLE_SCATTER_H
 
-#include "core/height_fog_medium.h"
+#include "core/optics/height_fog_medium.h"
 #include "raytracer/embree_scene.h"
 
 typedef struct {

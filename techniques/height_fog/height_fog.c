@@ -49,7 +49,7 @@ void height_fog_published(const height_fog_param *p, float distance, float camer
     }
 }
 
-/* f(x) = (1 - e^-x) / x, x >= 0 (core/height_fog_medium.h). */
+/* f(x) = (1 - e^-x) / x, x >= 0 (core/optics/height_fog_medium.h). */
 static float mean_factor_f(float x)
 {
     return x > 0.0f ? -expm1f(-x) / x : 1.0f;

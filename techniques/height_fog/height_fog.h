@@ -2,7 +2,7 @@
  * fog", SIGGRAPH 2017 Advances, slide "Height fog: Analytic model"), in C
  * with the shader's float arithmetic, as published and corrected where the
  * references show it wrong (techniques/height_fog/README.md). The medium is
- * core/height_fog_medium.h.
+ * core/optics/height_fog_medium.h.
  *
  * Published. With beta_t = beta_Rs + beta_Ms + beta_Ma, distance d, camera
  * and world altitudes y_c, y_w:
@@ -13,7 +13,7 @@
  *
  * For t >= 1e-2 (the world point at least H/100 below the camera) T is the
  * exact transmittance exp(-beta_t d e^{-y_low/H} f(|Delta|/H)) of
- * core/height_fog_medium.h. The clamp replaces t < 1e-2, i.e. every
+ * core/optics/height_fog_medium.h. The clamp replaces t < 1e-2, i.e. every
  * horizontal or upward ray and every world point above the camera, by
  * t = 1e-2, which uses the density of the world point, the thinnest point of
  * an upward ray: T is too high, by exp(beta_t d [e^{-y_c/H} f(Delta/H) -
@@ -60,7 +60,7 @@
 
 #include <stddef.h>
 
-#include "core/height_fog_medium.h"
+#include "core/optics/height_fog_medium.h"
 
 /* The talk's HeightFog(): the argument order and the max(1e-2, ...) clamp
  * as published; in-scatter and transmittance RGB. inSov = dot(sun_dir,

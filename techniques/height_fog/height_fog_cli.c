@@ -8,7 +8,7 @@
 #include "cli/cli.h"
 #include "cli/cli_options.h"
 #include "cli/technique.h"
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "core/threads.h"
 #include "height_fog/height_fog_section.h"
 #include "height_fog/height_fog_study.h"

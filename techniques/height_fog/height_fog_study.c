@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "core/progress.h"
 #include "core/reference_schema.h"
 #include "metrics/ssim.h"

@@ -27,7 +27,7 @@
 #include "core/error.h"
 #include "core/image.h"
 #include "height_fog/aerial_perspective_study.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 #define HEIGHT_FOG_DIR "fog"
 enum { HEIGHT_FOG_SUNS = 3, HEIGHT_FOG_CASES = 2 * HEIGHT_FOG_SUNS, HEIGHT_FOG_MODELS = 4, HEIGHT_FOG_REGIMES = 8 };

@@ -4,7 +4,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "core/quadrature.h"
+#include "core/sampling/quadrature.h"
 #include "core/vec3.h" /* M_PI */
 #include "luts/dfg_lut.h"
 

@@ -10,7 +10,7 @@
 #define GTLAB_KULLA_CONTY_STUDY_H
 
 #include "kulla_conty/kulla_conty_lut.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 #define KULLA_CONTY_DIR "luts"
 enum { KULLA_CONTY_MAX_SIZES = 8, KULLA_CONTY_LOSS_ROWS = 5 };

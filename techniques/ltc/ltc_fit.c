@@ -5,8 +5,8 @@
 #include <omp.h>
 #include <stdlib.h>
 
-#include "core/ggx.h"
-#include "core/hemisphere_sampling.h"
+#include "core/optics/ggx.h"
+#include "core/sampling/hemisphere_sampling.h"
 #include "fitters/ceres_bridge.h"
 #include "luts/dfg_lut.h"
 

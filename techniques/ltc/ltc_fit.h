@@ -60,7 +60,7 @@ typedef struct {
 int ltc_fit_cell_target(double n_dot_v, double alpha, ltc_target_fn target, void *user, double norm, double m[4],
                         ltc_cell_fit *out, gt_error *e);
 
-/* The same for gtlab's GGX (core/ggx.h, no Fresnel) at (n.v, alpha),
+/* The same for gtlab's GGX (core/optics/ggx.h, no Fresnel) at (n.v, alpha),
  * normalised by its directional albedo `albedo`. */
 int ltc_fit_cell(double n_dot_v, double alpha, double albedo, double m[4], ltc_cell_fit *out, gt_error *e);
 

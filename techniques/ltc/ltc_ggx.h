@@ -18,7 +18,7 @@
  *
  * the magnitude E being the directional albedo (the DFG table's E,
  * luts/dfg_lut.h) and D fitted to f_r (n.l) / E (ltc/ltc_fit.h).
- * gtlab's BRDF: core/ggx.h (GGX D, height-correlated Smith G2, no Fresnel).
+ * gtlab's BRDF: core/optics/ggx.h (GGX D, height-correlated Smith G2, no Fresnel).
  *
  * Frame: n = +z, the view v = (sin theta_v, 0, cos theta_v) in the xz
  * plane; isotropic GGX is symmetric about that plane, so (as in Heitz's

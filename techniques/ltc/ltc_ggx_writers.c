@@ -5,8 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/atomic_file.h"
-#include "core/exr_io.h"
+#include "core/files/atomic_file.h"
+#include "core/files/exr_io.h"
 #include "core/image.h"
 #include "core/reference_schema.h"
 #include "luts/table_lookup.h" /* table_lookup_inc_text: the lookup's text */

@@ -1,7 +1,7 @@
 /* The multi-bounce reference's throughput; see multibounce_bench.h. */
 #include "multibounce/multibounce_bench.h"
 
-#include "studies/study.h"
+#include "project/study_context.h"
 
 int multibounce_bench_run(const char *spec, int width, int height, const multibounce_settings *settings, int spp,
                           int threads, int repeats, multibounce_benchmark *out, gt_error *e)

@@ -4,7 +4,7 @@
 
 #include <stdlib.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 
 int multibounce_fit_input_load(const char *const *files, int count, multibounce_data *d, gt_error *e)
 {

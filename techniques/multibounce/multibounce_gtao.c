@@ -11,14 +11,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "core/reference_schema.h"
 #include "gtao/gtao.h"
 #include "metrics/reference_halves.h"
 #include "multibounce/multibounce_parts.h"
 #include "raytracer/reference_render.h"
 #include "scene/scene_loaders.h"
-#include "studies/gbuffer_input.h"
+#include "project/gbuffer_input.h"
 
 /* Squared-error sums of one (scene, albedo) group, per preset. */
 typedef struct {

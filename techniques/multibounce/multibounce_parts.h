@@ -1,6 +1,6 @@
 /* The parts of multibounce/multibounce_study.c kept in their own files: what they
  * share (the study's working state), the validation and the plot data.
- * Internal to studies/. */
+ * Internal to the technique's study. */
 #ifndef GTLAB_MULTIBOUNCE_MULTIBOUNCE_PARTS_H
 #define GTLAB_MULTIBOUNCE_MULTIBOUNCE_PARTS_H
 

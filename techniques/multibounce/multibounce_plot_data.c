@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "core/atomic_file.h"
+#include "core/files/atomic_file.h"
 #include "multibounce/multibounce_parts.h"
 
 enum { SCATTER_POINTS = 2500, CURVE_STEPS = 100 };

@@ -9,8 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/exr_io.h"
-#include "core/path_name.h"
+#include "core/files/exr_io.h"
+#include "core/files/path_name.h"
 #include "core/plugin_abi.h"
 #include "core/reference_schema.h"
 #include "metrics/reference_halves.h"

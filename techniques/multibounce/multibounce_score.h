@@ -19,7 +19,7 @@
 
 #include "core/error.h"
 #include "scoring/function_score.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 enum { MB_SCORE_MAX_ALBEDOS = 8 }; /* per reference (the study renders 7) */
 

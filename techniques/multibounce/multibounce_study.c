@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "metrics/reference_halves.h"
 #include "multibounce/multibounce_parts.h"
 #include "multibounce/multibounce_quantity.h"

@@ -25,7 +25,7 @@
 
 #include "multibounce/multibounce_fit.h"
 #include "multibounce/multibounce_fit_constrained.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 #define MULTIBOUNCE_STUDY_DIR "multibounce" /* the references, below the output folder */
 /* The height-field references at the same cameras, below the output folder

@@ -1,7 +1,7 @@
 /* The NDF fit with spherical Gaussians of Kaplanyan's CryENGINE 3 talk
  * (SIGGRAPH 2010, "Anisotropic deferred materials, part I": "Approximate NDF
  * with Spherical Gaussians [WRGSG09] - need only ~7 lobes for anisotropic
- * Ward NDF"): a sum of k lobes (core/spherical_gaussian.h)
+ * Ward NDF"): a sum of k lobes (core/optics/spherical_gaussian.h)
  *
  *   S(m) = sum_j mu_j exp(lambda_j (m.p_j - 1))
  *
@@ -39,7 +39,7 @@
 #define GTLAB_SG_NDF_FIT_H
 
 #include "core/error.h"
-#include "core/spherical_gaussian.h"
+#include "core/optics/spherical_gaussian.h"
 
 enum { SG_NDF_MAX_LOBES = 12, SG_NDF_LOBE_PARAMS = 4 };
 

@@ -4,8 +4,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "core/sky_environment.h"
-#include "core/sobol.h"
+#include "core/optics/sky_environment.h"
+#include "core/sampling/sobol.h"
 
 /* The sphere's normal at pixel (x, y); 0 off the sphere. */
 static int pixel_normal(int size, int x, int y, double n[3])

@@ -1,6 +1,6 @@
 /* The specular images of the spherical-Gaussian NDF fit (issue 18 item 4):
  * an orthographic unit sphere filling a size x size image, seen along -z
- * (view v = +z), under core/sky_environment.h's analytic sky (world up +Y).
+ * (view v = +z), under core/optics/sky_environment.h's analytic sky (world up +Y).
  * At the pixel's normal n, with the anisotropy's tangent t = Y x n
  * (horizontal; normalised) and b = n x t, the pixel's value is the
  * NDF-weighted environment
@@ -15,7 +15,7 @@
  * an SG sum S, the same integral with S for D, m drawn from the lobe
  * mixture with weights proportional to each lobe's sphere integral I_j:
  * each sample weighs (sum_j I_j) (m.n)_+ L_sky(r) [r.n > 0]. Both are Monte
- * Carlo over Owen-scrambled Sobol' points (core/sobol.h) from a fixed seed,
+ * Carlo over Owen-scrambled Sobol' points (core/sampling/sobol.h) from a fixed seed,
  * per pixel mean and standard error; pixels compute independently, so the
  * bits do not depend on the thread count. Background pixels are 0. */
 #ifndef GTLAB_SG_NDF_IMAGES_H
@@ -23,9 +23,9 @@
 
 #include <stdint.h>
 
-#include "core/anisotropic_ndf.h"
+#include "core/optics/anisotropic_ndf.h"
 #include "core/error.h"
-#include "core/spherical_gaussian.h"
+#include "core/optics/spherical_gaussian.h"
 
 enum { SG_IMAGE_MAX_LOBES = 16 };
 

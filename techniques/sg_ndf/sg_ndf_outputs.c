@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/atomic_file.h"
+#include "core/files/atomic_file.h"
 #include "sg_ndf/sg_ndf_parts.h"
 
 void sg_ndf_material_name(const anisotropic_ndf *ndf, char *out, size_t size)

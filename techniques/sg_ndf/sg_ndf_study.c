@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/image_io.h"
+#include "core/files/image_io.h"
 #include "core/progress.h"
 #include "metrics/ssim.h"
 #include "sg_ndf/sg_ndf_images.h"

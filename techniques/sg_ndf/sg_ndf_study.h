@@ -16,9 +16,9 @@
 #ifndef GTLAB_SG_NDF_STUDY_H
 #define GTLAB_SG_NDF_STUDY_H
 
-#include "core/anisotropic_ndf.h"
+#include "core/optics/anisotropic_ndf.h"
 #include "sg_ndf/sg_ndf_fit.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 #define SG_NDF_DIR "sg_ndf"
 enum { SG_NDF_MATERIALS = 16, SG_NDF_STUDY_LOBES = 9 };

@@ -8,9 +8,9 @@
 #include <string.h>
 
 #include "ao/ao_references.h"
-#include "core/path_name.h"
+#include "core/files/path_name.h"
 #include "core/reference_schema.h"
-#include "core/sample_mean.h"
+#include "core/statistics/sample_mean.h"
 #include "gpu/screen_pass.h"
 #include "gtao/gtao.h"
 #include "gtao/gtao_scene_refs.h"

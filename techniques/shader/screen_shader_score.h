@@ -18,8 +18,8 @@
 
 #include "gtao/ao_image_score.h"
 #include "metrics/cluster_mean.h"
-#include "studies/study.h"
-#include "studies/study_project.h"
+#include "project/study_context.h"
+#include "project/project_file.h"
 
 enum { SCREEN_SCORE_MAX_VARIANTS = 1 + PROJECT_MAX_FILES, SCREEN_SCORE_MAX_SCENES = 16, SCREEN_SCORE_NAME = 128 };
 

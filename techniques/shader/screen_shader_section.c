@@ -5,7 +5,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "core/sample_mean.h"
+#include "core/statistics/sample_mean.h"
 #include "report/claim_thresholds.h"
 #include "report/report_table.h"
 

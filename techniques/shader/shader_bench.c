@@ -10,7 +10,7 @@
 #include "raytracer/reference_render.h"
 #include "scene/scene_loaders.h"
 #include "shader/shader_run.h"
-#include "studies/gbuffer_input.h"
+#include "project/gbuffer_input.h"
 
 typedef struct {
     char *source;

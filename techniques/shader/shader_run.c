@@ -5,12 +5,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "core/progress.h"
 #include "core/reference_schema.h"
 #include "gpu/screen_pass.h"
 #include "gpu/shader_interface.h"
-#include "studies/gbuffer_input.h"
+#include "project/gbuffer_input.h"
 
 /* What a run holds between its steps. */
 typedef struct {

@@ -10,7 +10,7 @@
 #include "plugins/plugin_loader.h"
 #include "multibounce/multibounce_score.h"
 #include "specular_occlusion/specular_occlusion_score.h"
-#include "studies/study_project.h"
+#include "project/project_file.h"
 
 enum { QUANTITY_MB, QUANTITY_SO, QUANTITIES };
 

@@ -14,7 +14,7 @@
 #define GTLAB_SHADER_SHADER_SCORES_H
 
 #include "scoring/function_score.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 typedef struct {
     function_score_result multibounce, specular_occlusion;

@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "core/atomic_file.h"
+#include "core/files/atomic_file.h"
 #include "report/gnuplot_plot.h"
 
 cJSON *aperture_fit_json(const aperture_fit *fit, const char *channel, int exact)

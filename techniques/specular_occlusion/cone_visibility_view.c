@@ -2,7 +2,7 @@
 
 #include <stdint.h>
 
-#include "core/ggx.h"
+#include "core/optics/ggx.h"
 
 /* The jitter in [0, 1) of stratum (i, j), coordinate c, for a seed: a
  * 32-bit integer hash (Wellons' lowbias32), uniform over the stratum. */

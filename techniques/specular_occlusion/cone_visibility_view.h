@@ -5,7 +5,7 @@
  *                              / \int_{H(n)}        f_r(v, l) (n.l) dl
  *
  * in the local frame of the shading normal (n = +z), f_r the GGX BRDF
- * without Fresnel (core/ggx.h), cone(b, a_v) the directions within a_v of the
+ * without Fresnel (core/optics/ggx.h), cone(b, a_v) the directions within a_v of the
  * unit axis b (the bent normal). Against the reference V_s (the same ratio
  * with the real visibility) its error is that of the visibility cone alone;
  * the 3-D table differs from it by its lobe taken at normal incidence (the

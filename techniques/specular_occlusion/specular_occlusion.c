@@ -4,10 +4,10 @@
  * transcription's corrections. */
 #include "specular_occlusion/specular_occlusion.h"
 
-#include "core/ggx.h"
-#include "core/phong.h"
-#include "core/shared_math_c.h"
-#include "core/spherical_caps.h"
+#include "core/optics/ggx.h"
+#include "core/optics/phong.h"
+#include "core/optics/shared_math_c.h"
+#include "core/optics/spherical_caps.h"
 
 /* The cone/cone forms, the apertures and Lagarde's, the text the shaders
  * embed too. */

@@ -10,7 +10,7 @@
  *     (every published mapping, below)
  *   V_s = Omega(a_v, a_s, beta) / (2 pi (1 - cos a_s)),  beta = angle between
  *     the bent normal and the reflection vector, Omega the cap intersection,
- *     exact (core/spherical_caps.h) or Oat and Sander 2007's smoothstep.
+ *     exact (core/optics/spherical_caps.h) or Oat and Sander 2007's smoothstep.
  *
  * Roughness: `roughness` is perceptual (glTF), alpha = roughness^2 (GGX). A
  * Phong exponent p is tied to alpha by Walter et al. 2007's Beckmann-Phong
@@ -36,7 +36,7 @@ double so_visibility_cos_aperture(double ao, so_ao_weighting weighting);
 double so_visibility_cos_cosine(double ao);
 double so_reflection_cos_exp2(double r);
 
-/* Phong exponent from alpha: p = 2 / alpha^2 - 2 (core/phong.h). */
+/* Phong exponent from alpha: p = 2 / alpha^2 - 2 (core/optics/phong.h). */
 double so_phong_exponent(double alpha);
 
 typedef enum {

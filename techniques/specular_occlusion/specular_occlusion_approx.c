@@ -4,7 +4,7 @@
 
 #include <string.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "core/reference_schema.h"
 #include "core/roughness_setting.h"
 #include "specular_occlusion/specular_occlusion_inputs.h"

@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "specular_occlusion/specular_occlusion_quantity.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 /* The best samples/s over `repeats` renders, and the rays/s of that render. */
 static int best_rate(const scene *s, const char *spec, const camera *cam, int threads, int repeats, double *samples,

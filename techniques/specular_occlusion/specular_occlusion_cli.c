@@ -12,7 +12,7 @@
 #include "cli/cli.h"
 #include "cli/cli_options.h"
 #include "cli/technique.h"
-#include "core/atomic_file.h"
+#include "core/files/atomic_file.h"
 #include "core/reference_schema.h"
 #include "core/threads.h"
 #include "specular_occlusion/aperture_fit_figures.h"

@@ -3,10 +3,10 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "core/ggx.h"
-#include "core/phong.h"
+#include "core/optics/ggx.h"
+#include "core/optics/phong.h"
 #include "core/roughness_setting.h"
-#include "core/sky_environment.h"
+#include "core/optics/sky_environment.h"
 #include "scene/material_lookup.h"
 #include "core/reference_schema.h"
 

@@ -5,10 +5,10 @@
  *   V_s   = \int V f_r cos / \int f_r cos          -> specocc.V   (GTSO)
  *   V_s^D = \int V D(h) cos / \int D(h) cos        -> specocc_d.V (the talk's
  *                                                    older, D-only definition)
- *   V_s^P = the same with Phong's D_p (core/phong.h) -> specocc_phong.V (the
+ *   V_s^P = the same with Phong's D_p (core/optics/phong.h) -> specocc_phong.V (the
  *                                                    talk's Phong comparisons)
  *
- * with f_r the GGX BRDF without Fresnel (core/ggx.h), alpha = roughness^2,
+ * with f_r the GGX BRDF without Fresnel (core/optics/ggx.h), alpha = roughness^2,
  * the roughness from the glTF material (G-buffer roughness.Y) or one value
  * for every surface, and the view direction pointing to the camera. The
  * numerators and denominators are written too: specocc_occluded.V and
@@ -34,11 +34,11 @@
  * where the covariance of the means comes from a third accumulated quantity,
  * the blocked part B = D - N = (1 - V) w (specocc_blocked.V):
  *   cov(N, D) = (se_N^2 + se_D^2 - se_B^2) / 2.
- * All three are exact sums (core/mc_film.h), so merge and the even/odd noise
+ * All three are exact sums (core/statistics/mc_film.h), so merge and the even/odd noise
  * floor work on them; the ratio channels are derived from them on output.
  *
  * Split integrals (slides "Two Split", "Three Split"), with an environment
- * L (core/sky_environment.h; settings.environment = ENVIRONMENT_SKY) from
+ * L (core/optics/sky_environment.h; settings.environment = ENVIRONMENT_SKY) from
  * the same samples and rays, all exact sums:
  *   split_truth.V             \int V L f_r cos         (the ground truth, with
  *                                                     its .stderr)
@@ -61,7 +61,7 @@
 #define GTLAB_SPECULAR_OCCLUSION_SPECULAR_OCCLUSION_INTEGRATOR_H
 
 #include "core/image.h"
-#include "core/sky_environment.h"
+#include "core/optics/sky_environment.h"
 #include "raytracer/render_loop.h"
 
 typedef struct {

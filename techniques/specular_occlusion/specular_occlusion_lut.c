@@ -7,10 +7,10 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "core/ggx.h"
-#include "core/phong.h"
-#include "core/quadrature.h"
-#include "core/splitmix64.h"
+#include "core/optics/ggx.h"
+#include "core/optics/phong.h"
+#include "core/sampling/quadrature.h"
+#include "core/sampling/splitmix64.h"
 #include "core/vec3.h" /* M_PI */
 
 enum { MAX_BREAKS = 40 };
@@ -41,7 +41,7 @@ const char *so_lut_axes_description(so_lut_axes axes)
                  "k: t = r, perceptual roughness in [0, 1] (GGX alpha = r^2)";
 }
 
-/* alpha >= 1e-3 (core/ggx.h says why). */
+/* alpha >= 1e-3 (core/optics/ggx.h says why). */
 static double lobe_alpha(double roughness) { return ggx_alpha_tabulated(roughness); }
 
 double so_lobe_value(so_lobe lobe, double c, double roughness)

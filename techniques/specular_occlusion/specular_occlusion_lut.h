@@ -12,12 +12,12 @@
  *   SO_LOBE_GGX_D  L = D(h) (R.w)                           (the talk's older one)
  *   SO_LOBE_PHONG  L = D_p(h) (R.w), D_p = (p+2)/(2 pi) (n.h)^p, p = 2/alpha^2 - 2
  * with h = normalize(w + R), alpha = r^2 (r perceptual, clamped to alpha >=
- * 1e-3), GGX D and G2 from core/ggx.h.
+ * 1e-3), GGX D and G2 from core/optics/ggx.h.
  *
  * Integration: in polar coordinates (theta, phi) about R the cone cuts each
  * circle theta = const in an arc of length 2 acos((cos a_v - cos theta cos
  * beta) / (sin theta sin beta)) (clamped), so V_s is a 1-D integral over
- * theta in [0, pi/2], done by adaptive Gauss-Kronrod (core/quadrature.h)
+ * theta in [0, pi/2], done by adaptive Gauss-Kronrod (core/sampling/quadrature.h)
  * split at the arc's kinks |a_v - beta|, a_v + beta and at the lobe's scale
  * 2 alpha 2^k, to an absolute tolerance of 1e-8 of the normaliser (tests
  * compare with an independent 2-D quadrature about the cone's axis).

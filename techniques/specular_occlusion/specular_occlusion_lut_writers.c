@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "core/atomic_file.h"
+#include "core/files/atomic_file.h"
 #include "core/progress.h"
 #include "luts/lut_writers.h"
 

@@ -8,7 +8,7 @@
 #ifndef GTLAB_SPECULAR_OCCLUSION_SPECULAR_OCCLUSION_QUANTITY_H
 #define GTLAB_SPECULAR_OCCLUSION_SPECULAR_OCCLUSION_QUANTITY_H
 
-#include "core/sky_environment.h"
+#include "core/optics/sky_environment.h"
 #include "raytracer/reference_render.h"
 
 extern const reference_quantity_descriptor reference_quantity_specular_occlusion;

@@ -7,15 +7,15 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/exr_io.h"
-#include "core/path_name.h"
+#include "core/files/exr_io.h"
+#include "core/files/path_name.h"
 #include "core/plugin_abi.h"
 #include "core/reference_schema.h"
 #include "core/roughness_setting.h"
 #include "specular_occlusion/specular_occlusion_study.h"
 #include "specular_occlusion/specular_occlusion_inputs.h"
 #include "specular_occlusion/specular_occlusion_quantity.h"
-#include "studies/study_scenes.h"
+#include "project/scene_list.h"
 
 /* gtlab's own rows (so_variant_parse's texts). */
 static const char *const kBuiltins[] = {"ao", "lagarde", "cone-exact:exp2-alpha", "cone-oat:exp2-alpha", "sg"};

@@ -22,7 +22,7 @@
 
 #include "core/error.h"
 #include "scoring/function_score.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 #define SO_SCORE_QUANTITY "specular-occlusion"
 

@@ -3,7 +3,7 @@
  * (com.unity.render-pipelines.core, ShaderLibrary/CommonLighting.hlsl), the
  * successor of its cone/cone form (specular_occlusion/specular_occlusion.h). Every
  * lobe is an SG G(v; p, lambda) = exp(lambda (v.p - 1)) of amplitude 1
- * (core/spherical_gaussian.h), and
+ * (core/optics/spherical_gaussian.h), and
  *
  *   V_s = saturate( <D_w, V> / <D_w, H> ),   <A, B> = int_S2 A B dv,
  *

@@ -1,7 +1,7 @@
 /* GTSO's cone/cone specular occlusion, its analytic baselines and the
  * spherical-Gaussian form for an engine, as HLSL or GLSL functions:
- * core/spherical_caps.inc, specular_occlusion/specular_occlusion.inc,
- * core/spherical_gaussian.inc and specular_occlusion/specular_occlusion_sg.inc
+ * core/optics/spherical_caps.inc, specular_occlusion/specular_occlusion.inc,
+ * core/optics/spherical_gaussian.inc and specular_occlusion/specular_occlusion_sg.inc
  * themselves, the texts gtlab compiles as C, behind the dialect's
  * definitions for float. No formula is written for the
  * shaders alone. The functions (float in, float out):

@@ -5,12 +5,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "studies/gbuffer_input.h"
-#include "core/image_io.h"
-#include "core/mc_film.h"
+#include "project/gbuffer_input.h"
+#include "core/files/image_io.h"
+#include "core/statistics/mc_film.h"
 #include "core/progress.h"
 #include "core/reference_schema.h"
-#include "core/spherical_caps.h"
+#include "core/optics/spherical_caps.h"
 #include "metrics/flip.h"
 #include "metrics/image_error.h"
 #include "metrics/ssim.h"
@@ -19,7 +19,7 @@
 #include "specular_occlusion/specular_occlusion_quantity.h"
 #include "gtao/gtao.h"
 #include "gtao/gtao_bent_horizons.h"
-#include "studies/study_scenes.h"
+#include "project/scene_list.h"
 #include "specular_occlusion/specular_occlusion_inputs.h"
 #include "specular_occlusion/specular_occlusion_rankings.h"
 

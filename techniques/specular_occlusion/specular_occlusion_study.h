@@ -39,7 +39,7 @@
 #include "raytracer/reference_render.h"
 #include "specular_occlusion/specular_occlusion_lut.h"
 #include "specular_occlusion/specular_occlusion_screen.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 enum {
     SO_STUDY_ROUGHNESSES = 3,

@@ -28,7 +28,7 @@
 #include "sphere_light/sphere_light.h"
 
 #include "core/frame.h"
-#include "core/sphere_light_units.h"
+#include "core/optics/sphere_light_units.h"
 #include "sphere_light/sphere_light_c.h"
 #include "sphere_light/sphere_light.inc"
 

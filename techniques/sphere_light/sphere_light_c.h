@@ -10,8 +10,8 @@
 #include <math.h>
 #include <stdbool.h>
 
-#include "core/fresnel.h"
-#include "core/ggx.h"
+#include "core/optics/fresnel.h"
+#include "core/optics/ggx.h"
 #include "sphere_light/sphere_light.h"
 
 /* Always inlined, so that sphere_noh_squared_karis and _decima are each one
@@ -30,7 +30,7 @@ static inline float sl_max(float a, float b) { return a > b ? a : b; }
 static inline float sl_saturate(float x) { return x < 0.0f ? 0.0f : x > 1.0f ? 1.0f : x; }
 
 #ifndef SPHERE_LIGHT_SHADER
-/* G2 / (4 n.l n.v) in double (core/ggx.h). */
+/* G2 / (4 n.l n.v) in double (core/optics/ggx.h). */
 static inline float sl_ggx_visibility(float n_dot_v, float n_dot_l, float alpha)
 {
     return (float)(ggx_smith_g2(n_dot_v, n_dot_l, alpha) / (4.0 * (double)n_dot_l * n_dot_v));

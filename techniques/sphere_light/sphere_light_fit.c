@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/sample_mean.h"
+#include "core/statistics/sample_mean.h"
 #include "fitters/ceres_bridge.h"
 
 double sphere_light_residual(sphere_light_model model, const decima_sphere_constants *k,

@@ -60,7 +60,7 @@ void sphere_light_error_finish(const sphere_light_error_sums *s, sphere_light_er
 
 /* The paired difference |residual_a| - |residual_b| over the same samples:
  * its mean and the standard error of that mean over the configurations
- * (core/sample_mean.h), so that two models' gap has an interval even where
+ * (core/statistics/sample_mean.h), so that two models' gap has an interval even where
  * their own standard errors overlap. */
 void sphere_light_paired_abs(sphere_light_model a, const decima_sphere_constants *ka, sphere_light_model b,
                              const decima_sphere_constants *kb, const sphere_light_sample *samples, size_t count,

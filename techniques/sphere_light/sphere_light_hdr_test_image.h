@@ -9,7 +9,7 @@
 #define GTLAB_SPHERE_LIGHT_SPHERE_LIGHT_HDR_TEST_IMAGE_H
 
 #include "core/image.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 /* width x height at spp samples per pixel, seed seed, ctx->threads threads:
  * the reference's channels (CH_SPHERE_*, CH_MASK) into out. */

@@ -4,8 +4,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "core/fresnel.h"
-#include "core/ggx.h"
+#include "core/optics/fresnel.h"
+#include "core/optics/ggx.h"
 #include "sphere_light/sphere_light_reference.h"
 #include "scene/material_lookup.h"
 #include "core/reference_schema.h"
@@ -25,7 +25,7 @@ int sphere_light_plan_init(sphere_light_plan *plan, const sphere_light_settings 
      * at the closest point of the scene; 4x that bounds the diffuse ones
      * and keeps the grid of the means fine (larger specular samples take the
      * film's exact scalar path). The grid rounds a mean by 2^(E-25) at most,
-     * absolutely; the standard errors do not depend on it (core/mc_film.h). */
+     * absolutely; the standard errors do not depend on it (core/statistics/mc_film.h). */
     vec3 lo, hi;
     scene_bounds(s, &lo, &hi);
     vec3 nearest = v3_min(v3_max(light->position, lo), hi);

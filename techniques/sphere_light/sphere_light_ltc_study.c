@@ -5,7 +5,7 @@
 #include <stdlib.h>
 
 #include "core/progress.h"
-#include "core/sample_mean.h"
+#include "core/statistics/sample_mean.h"
 #include "ltc/ltc_sphere.h"
 #include "sphere_light/sphere_light_fit.h"
 #include "sphere_light/sphere_light_study.h"

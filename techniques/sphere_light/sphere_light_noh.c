@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/atomic_file.h"
+#include "core/files/atomic_file.h"
 #include "sphere_light/sphere_light_reference.h"
 #include "sphere_light/sphere_light.h"
 #include "sphere_light/sphere_light_study.h"

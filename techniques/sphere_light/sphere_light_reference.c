@@ -2,10 +2,10 @@
 
 #include <math.h>
 
-#include "core/cone_sampling.h"
-#include "core/ggx.h"
-#include "core/hemisphere_sampling.h"
-#include "core/sobol.h"
+#include "core/sampling/cone_sampling.h"
+#include "core/optics/ggx.h"
+#include "core/sampling/hemisphere_sampling.h"
+#include "core/sampling/sobol.h"
 
 sphere_light_config sphere_light_config_make(double n_dot_v, double theta_l, double phi_l, double sin_sigma,
                                              double roughness)

@@ -21,7 +21,7 @@
 
 #include <stdint.h>
 
-#include "core/sphere_light_units.h"
+#include "core/optics/sphere_light_units.h"
 #include "core/vec3.h"
 
 /* One configuration, in the local frame of the surface (n = +z). */
@@ -67,7 +67,7 @@ void sphere_light_reference(const sphere_light_config *c, uint32_t samples, uint
 
 /* sphere_light_normal_illuminance: pi sin^2(sigma), the illuminance of the
  * sphere at normal incidence per unit radiance, which the approximations are
- * normalised to (core/sphere_light_units.h). */
+ * normalised to (core/optics/sphere_light_units.h). */
 
 /* ---- The maximum of (N.H)^2 over the light, by brute force ----
  * The reference for GetNoHSquared (sphere_light/sphere_light.h): plain double

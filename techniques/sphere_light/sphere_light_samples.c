@@ -6,8 +6,8 @@
 
 #include <math.h>
 
-#include "core/ggx.h"
-#include "core/sobol.h"
+#include "core/optics/ggx.h"
+#include "core/sampling/sobol.h"
 #include "sphere_light/sphere_light_reference.h"
 
 #define SUN_SIN_SIGMA 0.00465 /* the sun seen from the earth */

@@ -11,8 +11,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/exr_io.h"
-#include "core/image_io.h"
+#include "core/files/exr_io.h"
+#include "core/files/image_io.h"
 #include "core/reference_schema.h"
 #include "ltc/ltc_sphere.h"
 #include "metrics/flip.h"

@@ -11,10 +11,10 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/atomic_file.h"
-#include "core/ggx.h"
+#include "core/files/atomic_file.h"
+#include "core/optics/ggx.h"
 #include "core/progress.h"
-#include "core/sobol.h"
+#include "core/sampling/sobol.h"
 #include "ltc/ltc_fit.h"
 #include "ltc/ltc_sphere.h"
 #include "ltc/ltc_study.h"

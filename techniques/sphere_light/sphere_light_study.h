@@ -22,7 +22,7 @@
 #include "ltc/ltc_ggx.h"
 #include "sphere_light/sphere_light_reference.h"
 #include "sphere_light/sphere_light_fit_outputs.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 /* The folder below the output folder. */
 #define SPHERE_LIGHT_DIR "sphere_light"

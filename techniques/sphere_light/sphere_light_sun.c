@@ -3,8 +3,8 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "core/sample_mean.h"
-#include "core/sobol.h"
+#include "core/statistics/sample_mean.h"
+#include "core/sampling/sobol.h"
 #include "sphere_light/sphere_light_fit.h"
 #include "sphere_light/sphere_light_study.h"
 

@@ -3,9 +3,9 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "core/ggx.h"
-#include "core/sample_mean.h"
-#include "core/sobol.h"
+#include "core/optics/ggx.h"
+#include "core/statistics/sample_mean.h"
+#include "core/sampling/sobol.h"
 #include "sphere_light/sphere_light_fit.h"
 #include "sphere_light/sphere_light_reference.h"
 #include "sphere_light/sphere_light_study.h"

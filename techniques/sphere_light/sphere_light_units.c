@@ -3,7 +3,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "core/sobol.h"
+#include "core/sampling/sobol.h"
 #include "sphere_light/sphere_light_fit.h"
 #include "sphere_light/sphere_light_study.h"
 

@@ -5,9 +5,9 @@
 #include <string.h>
 
 #include "core/frame.h"
-#include "core/hemisphere_sampling.h"
+#include "core/sampling/hemisphere_sampling.h"
 #include "core/progress.h"
-#include "core/sobol.h"
+#include "core/sampling/sobol.h"
 #include "raytracer/ao_integrator.h"
 #include "raytracer/gbuffer.h"
 

@@ -8,7 +8,7 @@
 #define GTLAB_THROUGHPUT_RAY_THROUGHPUT_STUDY_H
 
 #include "throughput/ray_throughput.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 /* One way of tracing the rays: rays/s with 1 thread and with `threads`. */
 typedef struct {

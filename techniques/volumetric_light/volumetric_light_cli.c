@@ -7,7 +7,7 @@
 #include "cli/cli.h"
 #include "cli/cli_options.h"
 #include "cli/technique.h"
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "core/threads.h"
 #include "volumetric_light/volumetric_light_section.h"
 #include "volumetric_light/volumetric_light_study.h"

@@ -4,7 +4,7 @@
 
 #include <math.h>
 
-#include "core/quadrature.h"
+#include "core/sampling/quadrature.h"
 
 enum { MIN_PIECES = 16, MAX_POINTS = 40, MAX_MC_BATCH = 64 };
 

@@ -1,8 +1,8 @@
 /* The single-scattering integral of a shadowed spot or point light along one
- * camera ray (core/volumetric_light.h for the lights, the medium and the
+ * camera ray (core/optics/volumetric_light.h for the lights, the medium and the
  * integrand j), two ways:
  *
- * 1. Adaptive quadrature (core/quadrature.h, gk15) in the equiangular angle
+ * 1. Adaptive quadrature (core/sampling/quadrature.h, gk15) in the equiangular angle
  *    (Kulla & Fajardo 2012, "Importance Sampling Techniques for Path Tracing
  *    in Participating Media", EGSR): with s0 = dot(p - o, w) the closest
  *    approach to the light and h = |p - o - s0 w| its distance,
@@ -32,7 +32,7 @@
 #ifndef GTLAB_VOLUMETRIC_LIGHT_VOLUMETRIC_LIGHT_INTEGRAL_H
 #define GTLAB_VOLUMETRIC_LIGHT_VOLUMETRIC_LIGHT_INTEGRAL_H
 
-#include "core/volumetric_light.h"
+#include "core/optics/volumetric_light.h"
 #include "raytracer/embree_scene.h"
 
 typedef struct {

@@ -1,7 +1,7 @@
 /* `gtlab render volumetric-light`: the radiance a shadowed spot or point light
  * scatters once towards the camera through a homogeneous medium, along each
  * camera ray up to the first surface (issue 29; the lights, medium and
- * integrand in core/volumetric_light.h, the two integrators in
+ * integrand in core/optics/volumetric_light.h, the two integrators in
  * techniques/volumetric_light/volumetric_light_integral.h). Channels (core/reference_schema.h):
  *
  *   vlight.L.R/G/B   the in-scattered radiance, with .stderr:
@@ -25,7 +25,7 @@
 #define GTLAB_VOLUMETRIC_LIGHT_VOLUMETRIC_LIGHT_INTEGRATOR_H
 
 #include "core/error.h"
-#include "core/mc_film.h"
+#include "core/statistics/mc_film.h"
 #include "raytracer/reference_quantity.h"
 #include "raytracer/render_loop.h"
 #include "volumetric_light/volumetric_light_integral.h"

@@ -1,7 +1,7 @@
 /* INSIDE's volumetric-light ray-march (Gjoel & Svendsen, GDC 2016, seed 002,
  * "Volumetric Lighting" .. "Reducing Bandwidth"), in C: per pixel, N uniform
  * steps along the camera ray inside the light's volume, each step the
- * integrand of core/volumetric_light.h with the visibility looked up in a
+ * integrand of core/optics/volumetric_light.h with the visibility looked up in a
  * shadow map (volumetric_light/volumetric_light_shadow_map.h), the start jittered by a noise value.
  *
  * Steps: the ray's part inside the light, [t0, t1] = [0, d] intersected
@@ -32,7 +32,7 @@
 #ifndef GTLAB_VOLUMETRIC_LIGHT_RAYMARCH_H
 #define GTLAB_VOLUMETRIC_LIGHT_RAYMARCH_H
 
-#include "core/volumetric_light.h"
+#include "core/optics/volumetric_light.h"
 #include "luts/blue_noise.h"
 #include "volumetric_light/volumetric_light_shadow_map.h"
 

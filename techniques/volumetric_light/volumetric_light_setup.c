@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "studies/study.h"
+#include "project/study_context.h"
 
 static int fill_view(volumetric_light_setup *v, gt_error *e)
 {

@@ -5,7 +5,7 @@
 #ifndef GTLAB_VOLUMETRIC_LIGHT_SHADOW_MAP_RENDER_H
 #define GTLAB_VOLUMETRIC_LIGHT_SHADOW_MAP_RENDER_H
 
-#include "core/volumetric_light.h"
+#include "core/optics/volumetric_light.h"
 #include "raytracer/embree_scene.h"
 #include "volumetric_light/volumetric_light_shadow_map.h"
 

@@ -6,8 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/atomic_file.h"
-#include "core/image_io.h"
+#include "core/files/atomic_file.h"
+#include "core/files/image_io.h"
 #include "core/progress.h"
 #include "core/reference_schema.h"
 #include "metrics/dither_metrics.h"

@@ -46,7 +46,7 @@
 
 #include "core/image.h"
 #include "volumetric_light/volumetric_light_raymarch.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 
 #define VOLUMETRIC_LIGHT_DIR "volumetric"
 enum { VOLUMETRIC_LIGHT_MAX_SPP = 16, VOLUMETRIC_LIGHT_MAX_SEEDS = 8, VOLUMETRIC_LIGHT_SHADOW_SIZES = 4, VOLUMETRIC_LIGHT_TALK_SPP = 3 };

@@ -13,7 +13,7 @@ The include paths keep a lower layer from including a higher one's headers
 (cmake/gtlab_layers.cmake, tests/layering), but a static library may still
 refer to a symbol only a higher library defines (a declaration of its own
 and the final link resolve it). So a file of a shared folder (core/,
-raytracer/, studies/, ...) that refers to a symbol defined under techniques/
+raytracer/, project/, ...) that refers to a symbol defined under techniques/
 or cli/ fails the audit too: the render registry, for one, is handed down
 from cli/ (cli/render_quantities.h), never named by the ray tracer.
 

@@ -21,8 +21,8 @@ trap 'rm -rf "$work"' EXIT
 
 # "function: why its depth is bounded", one cycle each.
 ALLOWED=(
-  "adapt: adaptive Gauss-Kronrod bisection, depth at most MAX_DEPTH = 30 (core/quadrature.c), no input sets it"
-  "vector_adapt: the vector Gauss-Kronrod's bisection, the same MAX_DEPTH = 30 (core/quadrature.c), no input sets it"
+  "adapt: adaptive Gauss-Kronrod bisection, depth at most MAX_DEPTH = 30 (core/sampling/quadrature.c), no input sets it"
+  "vector_adapt: the vector Gauss-Kronrod's bisection, the same MAX_DEPTH = 30 (core/sampling/quadrature.c), no input sets it"
 )
 
 python3 - "$build/compile_commands.json" "$root" "$work" >"$work/commands" <<'PY'

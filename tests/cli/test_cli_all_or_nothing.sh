@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# All or nothing (core/output_set.h), end to end: an output onto a device is
+# All or nothing (core/files/output_set.h), end to end: an output onto a device is
 # refused and the device stays; an interrupted run exits 128 + signal, keeps
 # the previous outputs as they were and leaves no temporary or backup. (The
 # removal of temporaries and the roll-back themselves are proven in

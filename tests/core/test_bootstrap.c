@@ -1,5 +1,5 @@
 /* The bootstrap standard error against the bootstrap's own closed forms
- * (the B -> infinity limit of core/bootstrap.c's resampling):
+ * (the B -> infinity limit of core/statistics/bootstrap.c's resampling):
  *   - the mean: se = sqrt(sum (x_i - mean)^2 / n) / sqrt(n) (the plug-in
  *     variance over n);
  *   - the nearest-rank quantile, the k-th smallest of a resample: it is at
@@ -11,7 +11,7 @@
  * standard errors. */
 #include <math.h>
 
-#include "core/bootstrap.h"
+#include "core/statistics/bootstrap.h"
 #include "tests/check.h"
 
 enum { N = 48, B = 20000 };

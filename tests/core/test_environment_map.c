@@ -1,4 +1,4 @@
-/* Equirectangular environments (core/environment_map.h): the documented
+/* Equirectangular environments (core/optics/environment_map.h): the documented
  * direction <-> (u, v) convention at the axes and round trips, texel solid
  * angles summing to 4 pi, the rotation moving a texel where the header says,
  * procedural texels against closed-form texel means, the synthetic sun's
@@ -8,7 +8,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include <string.h>
 
-#include "core/environment_map.h"
+#include "core/optics/environment_map.h"
 #include "tests/check.h"
 #include "tests/core/oiio_test_helpers.h"
 

@@ -1,4 +1,4 @@
-/* The environment sampler (core/environment_sampler.h): its density
+/* The environment sampler (core/optics/environment_sampler.h): its density
  * integrates to 1 over the sphere (texel by texel, and by Monte Carlo over
  * uniform directions); a chi-square test of 400,000 samples' texel histogram
  * against the density, and of their positions within a texel against
@@ -12,10 +12,10 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "core/environment_sampler.h"
+#include "core/optics/environment_sampler.h"
 #include "core/frame.h"
-#include "core/ggx.h"
-#include "core/hemisphere_sampling.h"
+#include "core/optics/ggx.h"
+#include "core/sampling/hemisphere_sampling.h"
 #include "tests/check.h"
 
 static uint64_t rng_state = 0x9E3779B97F4A7C15ull;
@@ -167,7 +167,7 @@ static void test_mis(const environment_sampler *s, double c)
 }
 
 /* The same for GGX (alpha 0.36) against visible-normal sampling:
- * (1/pi is not there) \int L f_r max(0, n.w) dw, with f_r core/ggx.h's. */
+ * (1/pi is not there) \int L f_r max(0, n.w) dw, with f_r core/optics/ggx.h's. */
 static void test_mis_ggx(const environment_sampler *s, double c)
 {
     const environment_map *env = s->env;

@@ -1,4 +1,4 @@
-/* EXR I/O (core/exr_io.c): bit-exact round trips checked both by our reader
+/* EXR I/O (core/files/exr_io.c): bit-exact round trips checked both by our reader
  * and by an independent one (OpenImageIO over the OpenEXR C++ library);
  * files of kinds gtlab never writes (tiled, HALF, UINT, offset data and
  * display windows) made by OpenImageIO and read back; bad files and failed
@@ -9,7 +9,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "tests/check.h"
 #include "tests/test_files.h"
 #include "tests/core/oiio_test_helpers.h"

@@ -1,4 +1,4 @@
-/* GGX (core/ggx.c) against its mathematics:
+/* GGX (core/optics/ggx.c) against its mathematics:
  *   - D is normalised: the integral of D(m) (n.m) over the hemisphere is 1;
  *   - the visible normals are normalised (Heitz 2014's weak white furnace):
  *     the integral of G1(v) max(0, v.m) D(m) dm is n.v, i.e. D_v integrates
@@ -18,8 +18,8 @@
  * fixed seeds, asserted within 4 standard errors. */
 #include <math.h>
 
-#include "core/ggx.h"
-#include "core/sobol.h"
+#include "core/optics/ggx.h"
+#include "core/sampling/sobol.h"
 #include "tests/check.h"
 
 typedef double (*spherical_fn)(vec3 w, const void *ctx);

@@ -8,8 +8,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "core/height_fog_medium.h"
-#include "core/quadrature.h"
+#include "core/optics/height_fog_medium.h"
+#include "core/sampling/quadrature.h"
 #include "tests/check.h"
 
 typedef struct {

@@ -1,12 +1,12 @@
-/* Hemisphere and disc sampling (core/hemisphere_sampling.c) against their
+/* Hemisphere and disc sampling (core/sampling/hemisphere_sampling.c) against their
  * densities' closed-form moments and distribution functions, with
  * Owen-scrambled Sobol' points; tolerances are 4 standard errors computed
  * from the run itself (generous for low-discrepancy points, which converge
  * faster than independent ones). */
 #include <string.h>
 
-#include "core/hemisphere_sampling.h"
-#include "core/sobol.h"
+#include "core/sampling/hemisphere_sampling.h"
+#include "core/sampling/sobol.h"
 #include "tests/check.h"
 
 #define N_SAMPLES (1 << 16)

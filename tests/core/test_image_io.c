@@ -1,4 +1,4 @@
-/* Previews and heatmaps (core/image_io.cpp), read back by OpenImageIO:
+/* Previews and heatmaps (core/files/image_io.cpp), read back by OpenImageIO:
  * 8-bit sRGB values against the IEC 61966-2-1 formula and known values,
  * heatmap colours against OIIO's colour map evaluated on its own and
  * against matplotlib's published end colours, masked pixels black, errors
@@ -11,7 +11,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "core/image_io.h"
+#include "core/files/image_io.h"
 #include "tests/check.h"
 #include "tests/test_files.h"
 #include "tests/core/oiio_test_helpers.h"

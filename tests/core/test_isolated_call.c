@@ -13,9 +13,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/atomic_file.h"
+#include "core/files/atomic_file.h"
 #include "core/isolated_call.h"
-#include "core/output_set.h"
+#include "core/files/output_set.h"
 #include "tests/check.h"
 
 enum { BIG = 3 << 20 }; /* 3 MiB: far more than a pipe's buffer (64 KiB) */

@@ -1,4 +1,4 @@
-/* The JSON gate (core/json_check.h): it accepts RFC 8259 texts within the
+/* The JSON gate (core/files/json_check.h): it accepts RFC 8259 texts within the
  * limits (and cJSON, an independent parser, parses each of them), and
  * refuses everything else with the problem at the right line and column —
  * including the two crafted inputs of issue 21: 100,000 nested arrays, and
@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/json_check.h"
+#include "core/files/json_check.h"
 #include "tests/check.h"
 
 static int accepted(const char *text, size_t length, json_limits limits)

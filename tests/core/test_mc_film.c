@@ -1,4 +1,4 @@
-/* Monte Carlo film (core/mc_film.c) against a direct long-double computation
+/* Monte Carlo film (core/statistics/mc_film.c) against a direct long-double computation
  * over the same samples: order- and split-independent exact sums, means and
  * standard errors, the even/odd half means, normalised vector layers, and an
  * exact round trip through an EXR file. Sample values are random floats, not
@@ -6,8 +6,8 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "core/exr_io.h"
-#include "core/mc_film.h"
+#include "core/files/exr_io.h"
+#include "core/statistics/mc_film.h"
 #include "tests/check.h"
 
 #define W 5

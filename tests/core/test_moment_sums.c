@@ -1,4 +1,4 @@
-/* Moment sums (core/moment_sums.c) and the film's standard errors (core/
+/* Moment sums (core/statistics/moment_sums.c) and the film's standard errors (core/
  * mc_film.c) on a synthetic sample stream spanning 1e-9 to 1e3 in one image
  * (issue 23), against long double and exact integer arithmetic:
  *   - every pixel's variance within the documented 2^-45 P^2 (P its largest
@@ -15,8 +15,8 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "core/mc_film.h"
-#include "core/moment_sums.h"
+#include "core/statistics/mc_film.h"
+#include "core/statistics/moment_sums.h"
 #include "tests/check.h"
 
 __extension__ typedef __int128 int128;

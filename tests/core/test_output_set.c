@@ -1,10 +1,10 @@
-/* core/output_set.c with core/atomic_file.c: the files of a set are kept
+/* core/files/output_set.c with core/files/atomic_file.c: the files of a set are kept
  * together (commit) or not at all (abort, a signal), what they replaced comes
  * back, no hidden temporary or backup stays, and a destination that is not a
  * regular file is refused. */
 #define _POSIX_C_SOURCE 200809L
-#include "core/atomic_file.h"
-#include "core/output_set.h"
+#include "core/files/atomic_file.h"
+#include "core/files/output_set.h"
 #include "tests/check.h"
 
 #include <dirent.h>

@@ -1,12 +1,12 @@
-/* core/paired_power.h against independent answers: Student's quantiles
- * against the printed table (core/sample_mean.c's t_0.975 and the usual
+/* core/statistics/paired_power.h against independent answers: Student's quantiles
+ * against the printed table (core/statistics/sample_mean.c's t_0.975 and the usual
  * t_0.80 values); the cases needed against the exact noncentral-t sample
  * sizes of the paired t-test (two-sided 5%, power 80%) as G*Power and
  * Cohen's tables print them, and, for small effects, against the normal
  * closed form with Guenther's correction n = ((z_a + z_b) / d)^2 + z_a^2 / 2
  * to within one case; only the ratio effect / spread matters. */
-#include "core/paired_power.h"
-#include "core/sample_mean.h"
+#include "core/statistics/paired_power.h"
+#include "core/statistics/sample_mean.h"
 #include "tests/check.h"
 
 #include <math.h>

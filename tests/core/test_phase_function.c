@@ -5,7 +5,7 @@
  * of the run itself; sampled directions lie at the drawn angle from w. */
 #include <math.h>
 
-#include "core/phase_function.h"
+#include "core/optics/phase_function.h"
 #include "tests/check.h"
 
 /* 2 pi \int_{-1}^{1} f(mu) mu^k dmu by composite Simpson, n even. */

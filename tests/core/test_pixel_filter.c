@@ -1,4 +1,4 @@
-/* Pixel filters (core/pixel_filter.h): a constant image resolves to the
+/* Pixel filters (core/sampling/pixel_filter.h): a constant image resolves to the
  * constant with both filters (the weights are normalised, borders too); the
  * box filter is the mean of each pixel's own samples; the Blackman-Harris
  * window is 1 at the centre, 0 at its radius and symmetric, and with
@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/pixel_filter.h"
+#include "core/sampling/pixel_filter.h"
 #include "tests/check.h"
 
 enum { W = 12, H = 10, S = 4 };

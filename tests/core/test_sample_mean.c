@@ -2,7 +2,7 @@
  * two-pass form where one pass would cancel: a tiny spread about 1e8. */
 #include <math.h>
 
-#include "core/sample_mean.h"
+#include "core/statistics/sample_mean.h"
 #include "tests/check.h"
 
 int main(void)

@@ -1,4 +1,4 @@
-/* Owen-scrambled Sobol' points (core/sobol.c), checked against independent
+/* Owen-scrambled Sobol' points (core/sampling/sobol.c), checked against independent
  * mathematics:
  *  - the raw dimensions against direction numbers rebuilt here from the
  *    Joe-Kuo recurrence, and against published first points;
@@ -10,7 +10,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "core/sobol.h"
+#include "core/sampling/sobol.h"
 #include "tests/check.h"
 
 static uint32_t xorshift(uint32_t *s)

@@ -14,9 +14,9 @@
  *  - Gauss-Kronrod: exact on polynomials of degree 22, and known integrals. */
 #include <math.h>
 
-#include "core/quadrature.h"
-#include "core/spherical_caps.h"
-#include "core/splitmix64.h"
+#include "core/sampling/quadrature.h"
+#include "core/optics/spherical_caps.h"
+#include "core/sampling/splitmix64.h"
 #include "core/vec3.h"
 #include "tests/check.h"
 

@@ -2,14 +2,14 @@
  * integrations: the closed-form integrals against nested adaptive
  * quadrature of the evaluated functions in (theta, phi) on the sphere, the
  * NDFs' projected-area normalisation likewise, the isotropic GGX limit
- * against core/ggx.h, and the gnomonic axis' derivative by differences. */
+ * against core/optics/ggx.h, and the gnomonic axis' derivative by differences. */
 #include <math.h>
 
-#include "core/anisotropic_ndf.h"
-#include "core/ggx.h"
-#include "core/quadrature.h"
-#include "core/sobol.h"
-#include "core/spherical_gaussian.h"
+#include "core/optics/anisotropic_ndf.h"
+#include "core/optics/ggx.h"
+#include "core/sampling/quadrature.h"
+#include "core/sampling/sobol.h"
+#include "core/optics/spherical_gaussian.h"
 #include "tests/check.h"
 
 /* f(theta, phi) sin theta integrated by GK15 in phi inside GK15 in theta. */

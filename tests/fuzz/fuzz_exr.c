@@ -1,11 +1,11 @@
 /* Fuzz target "exr": an EXR file (the input is its bytes) read as gtlab
- * reads every EXR (core/exr_io.h), then each gtlab header attribute read as
+ * reads every EXR (core/files/exr_io.h), then each gtlab header attribute read as
  * its reader reads it: the typed numbers (core/reference_schema.h), the
  * camera JSON (scene/camera.h), the sample blocks
  * (raytracer/sample_blocks.h), the quantity, and the exact accumulators with
- * their scale exponents and normalised layers (core/mc_film.h). */
-#include "core/exr_io.h"
-#include "core/mc_film.h"
+ * their scale exponents and normalised layers (core/statistics/mc_film.h). */
+#include "core/files/exr_io.h"
+#include "core/statistics/mc_film.h"
 #include "core/reference_schema.h"
 #include "fuzz_target.h"
 #include "multibounce/multibounce_quantity.h"

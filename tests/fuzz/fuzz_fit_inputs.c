@@ -4,13 +4,13 @@
  * specular-occlusion reference with its AO (`gtlab fit aperture`; here the
  * same file is both, specular_occlusion/specular_occlusion_inputs.h), and a G-buffer
  * with its camera (`gtlab fit gtao-params` and `gtlab approx`,
- * studies/gbuffer_input.h). The fits themselves run on what these accept. */
-#include "core/exr_io.h"
+ * project/gbuffer_input.h). The fits themselves run on what these accept. */
+#include "core/files/exr_io.h"
 #include "core/reference_schema.h"
 #include "multibounce/multibounce_fit.h"
 #include "specular_occlusion/aperture_fit.h"
 #include "fuzz_target.h"
-#include "studies/gbuffer_input.h"
+#include "project/gbuffer_input.h"
 #include "specular_occlusion/specular_occlusion_inputs.h"
 
 static void read_as_fit_inputs(const image *img)

@@ -1,4 +1,4 @@
-/* Fuzz target "json": the JSON gate (core/json_check.h) against the two
+/* Fuzz target "json": the JSON gate (core/files/json_check.h) against the two
  * parsers it guards. Whatever text the gate accepts, nlohmann json (which
  * tinygltf parses glTF with) and cJSON (camera JSON; with the gate's cJSON
  * limits) must parse too, and nothing the gate accepts nests deeper than its
@@ -11,7 +11,7 @@
 #include <string>
 
 extern "C" {
-#include "core/json_check.h"
+#include "core/files/json_check.h"
 }
 #include "fuzz_target.h"
 

@@ -33,7 +33,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/splitmix64.h"
+#include "core/sampling/splitmix64.h"
 #include "gpu/sample_map.h"
 #include "gpu/shader_compiler.h"
 #include "gpu/vulkan_device.h"

@@ -4,7 +4,7 @@
  * the constant images a and b, whose SSIM has a closed form. */
 #include <string.h>
 
-#include "core/mc_film.h"
+#include "core/statistics/mc_film.h"
 #include "metrics/ssim.h"
 #include "tests/check.h"
 

@@ -1,7 +1,7 @@
 /* metrics/reference_halves.h on a synthetic film: each half holds the mean
  * of its own samples (even or odd indices) in every quantity, and 0 off the
  * mask; an image that is not a gtlab reference is an error. */
-#include "core/mc_film.h"
+#include "core/statistics/mc_film.h"
 #include "core/reference_schema.h"
 #include "metrics/reference_halves.h"
 #include "tests/check.h"

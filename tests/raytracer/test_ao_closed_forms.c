@@ -12,7 +12,7 @@
 #include <string.h>
 
 #include "raytracer/reference_render.h"
-#include "core/hemisphere_sampling.h"
+#include "core/sampling/hemisphere_sampling.h"
 #include "scene/scene_loaders.h"
 #include "tests/check.h"
 

@@ -6,7 +6,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "raytracer/reference_merge.h"
 #include "raytracer/reference_render.h"
 #include "scene/scene_loaders.h"

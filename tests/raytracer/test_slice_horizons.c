@@ -2,7 +2,7 @@
  *  - each half-slice's integrals of g (kinks split in closed form, then
  *    6-point Gauss-Legendre) against an independent adaptive Gauss-Kronrod
  *    double integral of max(n.w, 0) sin(theta) over theta <= h, split where
- *    n.w changes sign (core/quadrature.h), for random normals and horizons;
+ *    n.w changes sign (core/sampling/quadrature.h), for random normals and horizons;
  *  - with every half-slice open, G_d = G_u = 1 (the hemisphere) to 1e-12,
  *    and so 1.0f exactly;
  *  - the mean of g over cosine- (uniform-) distributed directions equals
@@ -11,8 +11,8 @@
 #include <math.h>
 #include <stdint.h>
 
-#include "core/hemisphere_sampling.h"
-#include "core/quadrature.h"
+#include "core/sampling/hemisphere_sampling.h"
+#include "core/sampling/quadrature.h"
 #include "raytracer/slice_horizons.h"
 #include "tests/check.h"
 

@@ -9,9 +9,9 @@
  * images (report/figure_resolve.c, report/compare_viewer.c); HTML special
  * characters are escaped; a report without findings has no such section. */
 #include "report/report_writer.h"
-#include "core/image_io.h"
+#include "core/files/image_io.h"
 #include "tests/check.h"
-#include "core/paired_power.h"
+#include "core/statistics/paired_power.h"
 
 #include <math.h>
 #include <stdlib.h>

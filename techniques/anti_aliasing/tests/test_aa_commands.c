@@ -13,8 +13,8 @@
 #include <sys/stat.h>
 
 #include "anti_aliasing/aa_commands.h"
-#include "core/exr_io.h"
-#include "core/pixel_filter.h"
+#include "core/files/exr_io.h"
+#include "core/sampling/pixel_filter.h"
 #include "core/reference_schema.h"
 #include "tests/check.h"
 

@@ -9,7 +9,7 @@
 
 #include <string.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "core/reference_schema.h"
 
 static int run(int threads, const char *sub, ao_references_result *r)

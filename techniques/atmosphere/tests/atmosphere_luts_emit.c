@@ -3,7 +3,7 @@
  * bit-identical with its sizes and parametrization ("linear") attributes. */
 #include <string.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "core/reference_schema.h"
 #include "atmosphere/atmosphere_luts_writers.h"
 #include "tests/check.h"

@@ -17,7 +17,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "core/reference_schema.h"
 #include "atmosphere/atmosphere_luts_writers.h"
 #include "atmosphere/atmosphere_luts_study.h"

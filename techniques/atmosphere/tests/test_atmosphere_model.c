@@ -20,8 +20,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "core/quadrature.h"
-#include "core/phase_function.h"
+#include "core/sampling/quadrature.h"
+#include "core/optics/phase_function.h"
 #include "core/vec3.h"
 #include "atmosphere/atmosphere_model.h"
 #include "atmosphere/atmosphere_scattering.h"

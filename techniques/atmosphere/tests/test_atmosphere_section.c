@@ -16,7 +16,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "core/atomic_file.h"
+#include "core/files/atomic_file.h"
 #include "atmosphere/atmosphere_section.h"
 #include "tests/check.h"
 

@@ -1,6 +1,6 @@
 /* The view-ray radiance of the combination images (atmosphere/atmosphere_scattering.h,
  * atmosphere_view_radiance) and the vector Gauss-Kronrod under it
- * (core/quadrature.h), against mathematics:
+ * (core/sampling/quadrature.h), against mathematics:
  *  - the vector rule: integrals of several closed forms at once, each within
  *    its own tolerance, and equal to the scalar rule's;
  *  - closed forms in a homogeneous shell (H -> infinity), the sun at the
@@ -19,8 +19,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "core/phase_function.h"
-#include "core/quadrature.h"
+#include "core/optics/phase_function.h"
+#include "core/sampling/quadrature.h"
 #include "atmosphere/atmosphere_model.h"
 #include "atmosphere/atmosphere_scattering.h"
 #include "tests/check.h"

@@ -20,7 +20,7 @@
 #include "best_fit_normals/best_fit_normals.h"
 #include "best_fit_normals/best_fit_normals_cells.h"
 #include "best_fit_normals/best_fit_normals_writers.h"
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "core/reference_schema.h"
 #include "core/vec3.h" /* M_PI */
 #include "tests/check.h"

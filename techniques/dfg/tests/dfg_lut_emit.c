@@ -2,7 +2,7 @@
  * test_dfg_lut_writers.sh), and checks the EXR reads back bit-identical. */
 #include <string.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "dfg/dfg_lut_writers.h"
 #include "tests/check.h"
 

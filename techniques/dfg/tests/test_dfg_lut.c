@@ -1,12 +1,12 @@
 /* The split-sum DFG LUT (luts/dfg_lut.c; its interpolation study,
  * dfg/dfg_interpolation.c) against mathematics:
- *  - Monte Carlo: an independent estimator (GGX VNDF sampling, core/ggx.h,
+ *  - Monte Carlo: an independent estimator (GGX VNDF sampling, core/optics/ggx.h,
  *    Owen-scrambled Sobol' points, fixed seed) agrees with the quadrature
  *    within 5 of its own standard errors, and the quadrature's error
  *    estimate is below 2e-6;
  *  - the coordinates: ds/dtheta_h = 2 pi D cos sin (the header's Jacobian)
- *    against core/ggx.h's D;
- *  - n.v = 1: an independent 1-D quadrature in theta_h with D from core/ggx.h
+ *    against core/optics/ggx.h's D;
+ *  - n.v = 1: an independent 1-D quadrature in theta_h with D from core/optics/ggx.h
  *    (l at 2 theta_h, the lobe symmetric about n);
  *  - limits: r = 0 gives E = 1 and B = (1 - n.v)^5 exactly (the
  *    Fresnel-weighted mirror), r = 0.02 within 1e-4; A, B >= 0, E <= 1; E
@@ -30,9 +30,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "core/ggx.h"
-#include "core/quadrature.h"
-#include "core/sobol.h"
+#include "core/optics/ggx.h"
+#include "core/sampling/quadrature.h"
+#include "core/sampling/sobol.h"
 #include "core/vec3.h"
 #include "dfg/dfg_interpolation.h"
 #include "luts/dfg_lut.h"

@@ -18,7 +18,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "core/environment_map.h"
+#include "core/optics/environment_map.h"
 #include "core/reference_schema.h"
 #include "environment/environment_diffuse_integrator.h"
 #include "environment/environment_light.h"

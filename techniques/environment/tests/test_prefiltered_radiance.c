@@ -16,8 +16,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/ggx.h"
-#include "core/quadrature.h"
+#include "core/optics/ggx.h"
+#include "core/sampling/quadrature.h"
 #include "environment/prefiltered_radiance.h"
 #include "core/vec3.h" /* M_PI */
 #include "tests/check.h"

@@ -35,7 +35,7 @@ static void test_moments(void)
     for (int j = 0; j < H; ++j)
         total += W * equirect_texel_solid_angle(W, H, j);
     CHECK_NEAR(total, 4.0 * M_PI, 1e-12);
-    /* the mapping of core/environment_map.h: +X at the centre, -Z at u = 1/4, the zenith at v = 0 */
+    /* the mapping of core/optics/environment_map.h: +X at the centre, -Z at u = 1/4, the zenith at v = 0 */
     double w[3], u, v, expect[4][4] = {{0.5, 0.5, 1, 0}, {0.25, 0.5, 0, -1}, {0.75, 0.5, 0, 1}, {0.3, 0.0, 0, 0}};
     for (int k = 0; k < 4; ++k) {
         equirect_direction(expect[k][0], expect[k][1], w);

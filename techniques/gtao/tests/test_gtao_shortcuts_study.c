@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include "ao/ao_references.h"
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "gtao/gtao_baselines.h"
 #include "gtao/gtao_bent_normals.h"
 #include "gtao/gtao_distance_fade.h"
@@ -20,7 +20,7 @@
 #include "raytracer/reference_render.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_loaders.h"
-#include "studies/gbuffer_input.h"
+#include "project/gbuffer_input.h"
 #include "tests/check.h"
 #include "tests/test_files.h"
 

@@ -17,7 +17,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "core/phase_function.h"
+#include "core/optics/phase_function.h"
 #include "height_fog/fog_path_tracer.h"
 #include "tests/check.h"
 

@@ -12,7 +12,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "core/height_fog_medium.h"
+#include "core/optics/height_fog_medium.h"
 #include "height_fog/fog_integrator.h"
 #include "raytracer/reference_render.h"
 #include "scene/builtin_scenes.h"

@@ -12,7 +12,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "core/splitmix64.h"
+#include "core/sampling/splitmix64.h"
 #include "height_fog/height_fog_published.h"
 #include "tests/check.h"
 

@@ -9,7 +9,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "core/reference_schema.h"
 #include "height_fog/height_fog_study.h"
 #include "tests/check.h"

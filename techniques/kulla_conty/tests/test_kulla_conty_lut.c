@@ -11,7 +11,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "core/quadrature.h"
+#include "core/sampling/quadrature.h"
 #include "core/vec3.h" /* M_PI */
 #include "kulla_conty/kulla_conty_lut.h"
 #include "luts/dfg_lut.h"

@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <sys/stat.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "core/reference_schema.h"
 #include "kulla_conty/kulla_conty_study.h"
 #include "tests/check.h"

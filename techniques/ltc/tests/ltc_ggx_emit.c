@@ -3,7 +3,7 @@
  * the EXR reads back bit-identical, channels and attributes included. */
 #include <string.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "core/reference_schema.h"
 #include "ltc/ltc_fit.h"
 #include "ltc/ltc_ggx_writers.h"

@@ -15,8 +15,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "core/ggx.h"
-#include "core/sobol.h"
+#include "core/optics/ggx.h"
+#include "core/sampling/sobol.h"
 #include "ltc/ltc_fit.h"
 #include "ltc/ltc_sphere.h"
 #include "tests/check.h"
@@ -53,7 +53,7 @@ static double sphere_integral(const double m[4], int n)
     return sum;
 }
 
-/* E by VNDF sampling: mean of G2 / G1 (core/ggx.h). */
+/* E by VNDF sampling: mean of G2 / G1 (core/optics/ggx.h). */
 static void albedo_mc(double mu, double alpha, int count, double *mean, double *se)
 {
     vec3 v = v3((float)sqrt(1.0 - mu * mu), 0.0f, (float)mu);

@@ -18,7 +18,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "core/hemisphere_sampling.h"
+#include "core/sampling/hemisphere_sampling.h"
 #include "multibounce/multibounce_quantity.h"
 #include "raytracer/reference_merge.h"
 #include "raytracer/reference_render.h"

@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/hemisphere_sampling.h"
+#include "core/sampling/hemisphere_sampling.h"
 #include "multibounce/multibounce_integrator.h"
 #include "scene/material_lookup.h"
 #include "scene/scene_loaders.h"

@@ -8,7 +8,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "core/anisotropic_ndf.h"
+#include "core/optics/anisotropic_ndf.h"
 #include "sg_ndf/sg_ndf_fit.h"
 #include "tests/check.h"
 

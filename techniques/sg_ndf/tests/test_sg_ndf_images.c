@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/sky_environment.h"
+#include "core/optics/sky_environment.h"
 #include "sg_ndf/sg_ndf_images.h"
 #include "tests/check.h"
 

@@ -15,12 +15,12 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "multibounce/multibounce.h"
 #include "multibounce/multibounce_quantity.h"
 #include "raytracer/reference_render.h"
 #include "shader/shader_scores.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 #include "tests/check.h"
 #include "tests/test_files.h"
 #include "tests/test_reference_file.h"

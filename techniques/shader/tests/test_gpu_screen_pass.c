@@ -24,14 +24,14 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "gpu/shader_compiler.h"
 #include "gpu/shader_interface.h"
 #include "gtao/gtao.h"
 #include "raytracer/reference_render.h"
 #include "scene/scene_loaders.h"
 #include "shader/shader_run.h"
-#include "studies/gbuffer_input.h"
+#include "project/gbuffer_input.h"
 #include "tests/check.h"
 
 static const char kCamera[] = "{\"position\":[0,26,0],\"target\":[0,0,0],\"up\":[0,0,-1],\"yfov_deg\":40,"

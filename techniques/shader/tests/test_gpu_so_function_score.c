@@ -22,7 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/exr_io.h"
+#include "core/files/exr_io.h"
 #include "core/reference_schema.h"
 #include "gpu/function_shader.h"
 #include "gpu/shader_compiler.h"
@@ -32,7 +32,7 @@
 #include "shader/shader_scores.h"
 #include "specular_occlusion/specular_occlusion_inputs.h"
 #include "specular_occlusion/specular_occlusion_score.h"
-#include "studies/study.h"
+#include "project/study_context.h"
 #include "tests/check.h"
 #include "tests/test_files.h"
 #include "tests/test_reference_file.h"

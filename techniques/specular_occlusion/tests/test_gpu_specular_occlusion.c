@@ -143,10 +143,10 @@ static double moved_sqrt(double x)
 #define acos_clamped moved_acos_clamped
 #define so_clamp01 moved_clamp01
 #define so_smoothstep01 moved_smoothstep01
-#include "core/shared_math_c.h"
-#include "core/spherical_caps.inc"
+#include "core/optics/shared_math_c.h"
+#include "core/optics/spherical_caps.inc"
 #include "specular_occlusion/specular_occlusion.inc"
-#include "core/spherical_gaussian.inc"
+#include "core/optics/spherical_gaussian.inc"
 #include "specular_occlusion/specular_occlusion_sg.inc"
 #undef acos
 #undef sqrt

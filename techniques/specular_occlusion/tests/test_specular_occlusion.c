@@ -15,8 +15,8 @@
  *  - cone/cone and Lagarde's limits. */
 #include <math.h>
 
-#include "core/quadrature.h"
-#include "core/spherical_caps.h"
+#include "core/sampling/quadrature.h"
+#include "core/optics/spherical_caps.h"
 #include "core/vec3.h"
 #include "specular_occlusion/specular_occlusion.h"
 #include "tests/check.h"

@@ -5,7 +5,7 @@
  *    integral about the reflection vector with the arc length in closed
  *    form), numerator over the cone and normaliser over the whole sphere;
  *    the largest difference is printed and asserted below 2e-6;
- *  - the lobe against core/ggx.h's f_r (GGX lobe = f_r(R, w) (R.w) at n = R);
+ *  - the lobe against core/optics/ggx.h's f_r (GGX lobe = f_r(R, w) (R.w) at n = R);
  *  - monotone in a_v (a wider visibility cone never sees less);
  *  - the lookup returns the entries at grid points; the table is the same
  *    for 1 and 2 threads.
@@ -14,8 +14,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "core/ggx.h"
-#include "core/quadrature.h"
+#include "core/optics/ggx.h"
+#include "core/sampling/quadrature.h"
 #include "core/vec3.h"
 #include "specular_occlusion/specular_occlusion_lut.h"
 #include "tests/check.h"

@@ -3,7 +3,7 @@
  *    stderr 0;
  *  - inside a closed box: all three V_s = 0 exactly;
  *  - the unoccluded integral on the plane equals the GGX directional albedo
- *    \int f_r cos computed by deterministic quadrature of core/ggx.h's f_r
+ *    \int f_r cos computed by deterministic quadrature of core/optics/ggx.h's f_r
  *    (within 4 standard errors per pixel);
  *  - the talk's white-dome identity V_s * \int f_r cos = \int V f_r cos,
  *    against an INDEPENDENT estimate of the occluded integral (cosine-
@@ -14,7 +14,7 @@
  *    independent seeds differ by an RMS z of at most 1.3;
  *  - split integrals under the analytic sky: on the plane the Monte Carlo
  *    means of \int L f_r cos, \int L D cos and \int D cos equal quadratures
- *    of core/ggx.h's f_r and D times core/sky_environment.h's L within 4
+ *    of core/optics/ggx.h's f_r and D times core/optics/sky_environment.h's L within 4
  *    standard errors, and nothing is occluded, so the two- and three-split
  *    approximations agree to rounding; inside a closed box all are 0; a
  *    white-dome render has no split channels. */
@@ -22,9 +22,9 @@
 #include <string.h>
 
 #include "core/frame.h"
-#include "core/ggx.h"
-#include "core/sky_environment.h"
-#include "core/sobol.h"
+#include "core/optics/ggx.h"
+#include "core/optics/sky_environment.h"
+#include "core/sampling/sobol.h"
 #include "raytracer/embree_scene.h"
 #include "raytracer/reference_render.h"
 #include "specular_occlusion/specular_occlusion_quantity.h"

@@ -9,8 +9,8 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "core/ggx.h"
-#include "core/sobol.h"
+#include "core/optics/ggx.h"
+#include "core/sampling/sobol.h"
 #include "sphere_light/sphere_light_reference.h"
 #include "sphere_light/sphere_light.h"
 #include "tests/check.h"

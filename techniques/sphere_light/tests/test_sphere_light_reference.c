@@ -8,7 +8,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "core/ggx.h"
+#include "core/optics/ggx.h"
 #include "sphere_light/sphere_light_reference.h"
 #include "realtime/sphere_illuminance.h"
 #include "tests/check.h"

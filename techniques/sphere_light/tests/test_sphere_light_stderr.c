@@ -20,8 +20,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/exr_io.h"
-#include "core/mc_film.h"
+#include "core/files/exr_io.h"
+#include "core/statistics/mc_film.h"
 #include "core/reference_schema.h"
 #include "raytracer/reference_merge.h"
 #include "sphere_light/sphere_light_quantity.h"
@@ -67,7 +67,7 @@ static const float *channel(const image *img, const char *name)
     return data;
 }
 
-/* 2^(E-25): how far the grid moves a mean (core/mc_film.h), E from the header. */
+/* 2^(E-25): how far the grid moves a mean (core/statistics/mc_film.h), E from the header. */
 static double grid_bound(const image *img)
 {
     const char *text = image_get_attribute(img, ATTR_EXPONENTS);

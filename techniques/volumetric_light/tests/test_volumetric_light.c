@@ -1,4 +1,4 @@
-/* core/volumetric_light.h: the spot's falloff is pbrt-v4's smoothstep (1 on
+/* core/optics/volumetric_light.h: the spot's falloff is pbrt-v4's smoothstep (1 on
  * the axis and inside the inner cone, 0 outside the outer, 1/2 half way in
  * cosine); the analytic ray-cone interval agrees with the falloff sampled
  * densely along random rays (inside the outer cone exactly where the falloff
@@ -8,8 +8,8 @@
 #include <math.h>
 #include <stdint.h>
 
-#include "core/phase_function.h"
-#include "core/volumetric_light.h"
+#include "core/optics/phase_function.h"
+#include "core/optics/volumetric_light.h"
 #include "tests/check.h"
 
 static double uniform(uint64_t *state)

@@ -17,7 +17,7 @@
 #include <math.h>
 #include <stdint.h>
 
-#include "core/quadrature.h"
+#include "core/sampling/quadrature.h"
 #include "volumetric_light/volumetric_light_integral.h"
 #include "tests/check.h"
 
