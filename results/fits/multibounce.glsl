@@ -1,7 +1,7 @@
 // GTAO multi-bounce, refitted by gtlab 0.1.0:
 //   gtlab all --quality preview
 // Same form as GTAOMultiBounce (Jimenez et al. 2016), new coefficients. Generated file.
-// The formula is realtime/multibounce.inc, the very text gtlab compiles as C, behind the
+// The formula is techniques/multibounce/multibounce.inc, the very text gtlab compiles as C, behind the
 // definitions below.
 
 #define MB_FN
@@ -9,15 +9,16 @@
 #define mb_color vec3
 #define mb_max max
 
-/* GTAOMultiBounce (Jimenez et al. 2016, "Shader Code"; realtime/multibounce.h
- * has the formula and the reading of the talk's coefficients), written once,
- * in the common subset of C, HLSL and GLSL:
+/* GTAOMultiBounce (Jimenez et al. 2016, "Shader Code";
+ * techniques/multibounce/multibounce.h has the formula and the reading of the
+ * talk's coefficients), written once, in the common subset of C, HLSL and GLSL:
  *     V'_d = max(V_d, ((a V_d + b) V_d + c) V_d),
  * a, b, c polynomials in the albedo rho of degree 1 or 2.
- * realtime/multibounce.c compiles this file as C in double (its dialect is at
- * its top); the build embeds the very same text in the C header and the
- * HLSL/GLSL functions gtlab writes (realtime/multibounce_shader.c: their
- * dialects, float and float3/vec3), so the formula exists nowhere else.
+ * techniques/multibounce/multibounce.c compiles this file as C in double (its
+ * dialect is at its top); the build embeds the very same text in the C header
+ * and the HLSL/GLSL functions gtlab writes
+ * (techniques/multibounce/multibounce_shader.c: their dialects, float and
+ * float3/vec3), so the formula exists nowhere else.
  *
  * The dialect defines:
  *   MB_FN              qualifiers of a function (C: static inline)

@@ -2,7 +2,7 @@
  *   gtlab all --quality preview
  * V'_d = max(V_d, ((a V_d + b) V_d + c) V_d) with a, b, c polynomials in the albedo
  * (Jimenez et al. 2016). Generated file: edit the data, not the numbers. The formula is
- * realtime/multibounce.inc, the very text gtlab compiles as C, behind the definitions below. */
+ * techniques/multibounce/multibounce.inc, the very text gtlab compiles as C, behind the definitions below. */
 #ifndef GTLAB_MULTIBOUNCE_FIT_H
 #define GTLAB_MULTIBOUNCE_FIT_H
 
@@ -11,15 +11,16 @@ typedef float mb_real;
 typedef float mb_color;
 static inline float mb_max(float y, float x) { return y > x ? y : x; }
 
-/* GTAOMultiBounce (Jimenez et al. 2016, "Shader Code"; realtime/multibounce.h
- * has the formula and the reading of the talk's coefficients), written once,
- * in the common subset of C, HLSL and GLSL:
+/* GTAOMultiBounce (Jimenez et al. 2016, "Shader Code";
+ * techniques/multibounce/multibounce.h has the formula and the reading of the
+ * talk's coefficients), written once, in the common subset of C, HLSL and GLSL:
  *     V'_d = max(V_d, ((a V_d + b) V_d + c) V_d),
  * a, b, c polynomials in the albedo rho of degree 1 or 2.
- * realtime/multibounce.c compiles this file as C in double (its dialect is at
- * its top); the build embeds the very same text in the C header and the
- * HLSL/GLSL functions gtlab writes (realtime/multibounce_shader.c: their
- * dialects, float and float3/vec3), so the formula exists nowhere else.
+ * techniques/multibounce/multibounce.c compiles this file as C in double (its
+ * dialect is at its top); the build embeds the very same text in the C header
+ * and the HLSL/GLSL functions gtlab writes
+ * (techniques/multibounce/multibounce_shader.c: their dialects, float and
+ * float3/vec3), so the formula exists nowhere else.
  *
  * The dialect defines:
  *   MB_FN              qualifiers of a function (C: static inline)

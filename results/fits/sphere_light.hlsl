@@ -47,14 +47,14 @@ struct decima_sphere_constants
  *   sl_ggx_visibility(n_dot_v, n_dot_l, alpha)   height-correlated Smith G2 / (4 n.l n.v)
  *   sl_fresnel_schlick(l_dot_h, f0)               F0 + (1 - F0) (1 - l.h)^5
  *   the types sphere_rim, sphere_rim_step and decima_sphere_constants.
- * C takes the last two functions from core/ (core/ggx.h, core/fresnel.h);
+ * C takes the last two functions from core/ (core/optics/ggx.h, core/optics/fresnel.h);
  * shaders take them from the first SPHERE_LIGHT_SHADER part, which
  * tests/test_sphere_light_shader.c compiles as C against core/. */
 
 #ifdef SPHERE_LIGHT_SHADER
 /* ---- What a shader needs besides: C has these from core/ ---- */
 
-/* Height-correlated Smith G2 / (4 n.l n.v) (core/ggx.h's ggx_smith_g2 over
+/* Height-correlated Smith G2 / (4 n.l n.v) (core/optics/ggx.h's ggx_smith_g2 over
  * 4 n.l n.v, in the form of Lagarde & de Rousiers 2014, eq. 3). */
 SL_FN float sl_ggx_visibility(float n_dot_v, float n_dot_l, float alpha)
 {
@@ -64,7 +64,7 @@ SL_FN float sl_ggx_visibility(float n_dot_v, float n_dot_l, float alpha)
     return 0.5f / (lv + ll);
 }
 
-/* Schlick (core/fresnel.h). */
+/* Schlick (core/optics/fresnel.h). */
 SL_FN sl_spec sl_fresnel_schlick(float cos_theta, sl_spec f0)
 {
     float m = 1.0f - cos_theta, m2 = m * m;

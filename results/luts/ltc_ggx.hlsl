@@ -1049,8 +1049,8 @@ struct dfg_axis
 /* The bilinear, clamp-to-edge lookup of a square table sampled at texel
  * centres (i + 0.5)/N along both axes, as a GPU samples a texture, written
  * once, in the common subset of C, HLSL and GLSL. Its tables: the split-sum
- * DFG table (luts/dfg_lut.h) and the LTC table (luts/ltc_ggx.h).
- * luts/dfg_lut.c and luts/ltc_ggx.c compile this file as C
+ * DFG table (luts/dfg_lut.h) and the LTC table (techniques/ltc/ltc_ggx.h).
+ * luts/dfg_lut.c and techniques/ltc/ltc_ggx.c compile this file as C
  * (luts/table_lookup_c.h: its dialect, one channel at a time) for
  * dfg_lut_sample and ltc_table_sample; the build embeds the very same text
  * (table_lookup_inc_text) after the table in the shaders the tables'
