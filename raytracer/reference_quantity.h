@@ -174,5 +174,8 @@ int reference_set_attributef(image *img, const char *key, const char *fmt, ...) 
  * its text for gtlab.settings ("material" or the number) into text. Returns
  * 0, or -1 when out of memory. */
 int reference_write_roughness(image *out, float roughness, char *text, size_t size);
+/* The value of --roughness, one perceptual roughness in [0, 1] for every
+ * surface (errors name "--roughness"). Returns 0, or -1 with e set. */
+int reference_parse_roughness(const char *value, float *roughness, gt_error *e);
 
 #endif

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/number_parse.h"
 #include "core/reference_schema.h"
 #include "core/roughness_setting.h"
 #include "raytracer/render_checkpoint.h"
@@ -19,6 +20,15 @@ int reference_set_attributef(image *img, const char *key, const char *fmt, ...)
     vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
     return image_set_attribute(img, key, text);
+}
+
+int reference_parse_roughness(const char *value, float *roughness, gt_error *e)
+{
+    double r;
+    if (parse_real_in("--roughness", value, 0.0, 1.0, &r, e) != 0)
+        return -1;
+    *roughness = (float)r;
+    return 0;
 }
 
 int reference_write_roughness(image *out, float roughness, char *text, size_t size)

@@ -74,11 +74,7 @@ static int parse_bounces(reference_request *rq, const char *value, gt_error *e)
 
 static int parse_roughness(reference_request *rq, const char *value, gt_error *e)
 {
-    double r;
-    if (parse_real_in("--roughness", value, 0.0, 1.0, &r, e) != 0)
-        return -1;
-    settings_of(rq)->roughness = (float)r;
-    return 0;
+    return reference_parse_roughness(value, &settings_of(rq)->roughness, e);
 }
 
 /* Share their names with multibounce's --albedo and --bounces and

@@ -7,7 +7,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "core/number_parse.h"
 #include "core/reference_schema.h"
 #include "core/roughness_setting.h"
 #include "specular_occlusion/specular_occlusion_integrator.h"
@@ -37,11 +36,7 @@ static int parse_environment(reference_request *rq, const char *value, gt_error 
 
 static int parse_roughness(reference_request *rq, const char *value, gt_error *e)
 {
-    double r;
-    if (parse_real_in("--roughness", value, 0.0, 1.0, &r, e) != 0)
-        return -1;
-    settings_of(rq)->roughness = (float)r;
-    return 0;
+    return reference_parse_roughness(value, &settings_of(rq)->roughness, e);
 }
 
 static const reference_option environment_option = {

@@ -86,7 +86,7 @@ static double lookup_bound(const table_scale *s, int levels, const double slack[
 
 /* The bounds of an N x N table's channels (bilinear: L = 2), s_x and s_y of
  * the two axes. */
-static void square_bounds(const float *data, int size, int channels, double s_x, double s_y, double *bound)
+static inline void square_bounds(const float *data, int size, int channels, double s_x, double s_y, double *bound)
 {
     int n[AXES] = {size, size, 1, 1};
     double slack[AXES] = {s_x, s_y, 0.0, 0.0};
