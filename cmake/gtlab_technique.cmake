@@ -24,6 +24,8 @@
 # GTSO's study uses GTAO's AO). Headers are included as "<name>/file.h"; a
 # part's include path holds links to its own headers only, so a part cannot
 # include a part above it (tests/layering probes it for every technique).
+# The include name is the file's name whatever subfolder holds it, so moving a
+# file into study/ changes no #include.
 #
 # Every file in the folder belongs to exactly one part (CMakeLists.txt and
 # README.md aside; tests/ holds its tests): a file in none is a configure
@@ -51,12 +53,15 @@ function(gtlab_technique_target name part out_var)
   set(${out_var} gtlab_${name}_${lower} PARENT_SCOPE)
 endfunction()
 
-# Configure error unless every file of the folder is named by one part.
+# Configure error unless every file of the folder is named by one part. A
+# part's files may sit in a subfolder named after it (study/, section/: a
+# folder that would otherwise hold more than 40 files keeps its study and
+# section there), named by their path in the folder ("study/gtao_params.c").
 function(gtlab_technique_check_files name listed)
   file(RELATIVE_PATH folder ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_SOURCE_DIR}/)
-  file(GLOB present RELATIVE ${CMAKE_CURRENT_SOURCE_DIR} ${CMAKE_CURRENT_SOURCE_DIR}/*)
+  file(GLOB_RECURSE present RELATIVE ${CMAKE_CURRENT_SOURCE_DIR} ${CMAKE_CURRENT_SOURCE_DIR}/*)
   foreach(file IN LISTS present)
-    if(file STREQUAL "CMakeLists.txt" OR file STREQUAL "README.md" OR file STREQUAL "tests")
+    if(file STREQUAL "CMakeLists.txt" OR file MATCHES "(^|/)README\\.md$" OR file MATCHES "^tests/")
       continue()
     endif()
     list(FIND listed ${file} at)
@@ -76,14 +81,54 @@ function(gtlab_technique_check_files name listed)
   endforeach()
 endfunction()
 
+# Configure error unless the folder's file names are unique whatever subfolder
+# holds them: a header is included as "<name>/<file name>" from any subfolder.
+function(gtlab_technique_check_names name listed)
+  set(seen)
+  foreach(file IN LISTS listed)
+    get_filename_component(base ${file} NAME)
+    if(base IN_LIST seen)
+      message(FATAL_ERROR "techniques/${name}: two files are named ${base} (a header is included as ${name}/${base})")
+    endif()
+    list(APPEND seen ${base})
+  endforeach()
+endfunction()
+
 # The include directory of one part: <dir>/<name>/ holds a link to each of the
-# part's headers, and nothing else of the folder.
+# part's headers (by file name, whatever subfolder holds it), and nothing else
+# of the folder.
 function(gtlab_technique_part_layer name part files out_var)
   set(dir ${CMAKE_BINARY_DIR}/layers/techniques/${name}/${part})
   file(MAKE_DIRECTORY ${dir}/${name})
   foreach(file IN LISTS files)
-    if(NOT file MATCHES "\\.(c|cpp)$" AND NOT IS_SYMLINK ${dir}/${name}/${file})
-      file(CREATE_LINK ${CMAKE_CURRENT_SOURCE_DIR}/${file} ${dir}/${name}/${file} SYMBOLIC)
+    get_filename_component(base ${file} NAME)
+    set(link ${dir}/${name}/${base})
+    set(target ${CMAKE_CURRENT_SOURCE_DIR}/${file})
+    if(file MATCHES "\\.(c|cpp)$")
+      continue()
+    endif()
+    if(IS_SYMLINK ${link})
+      file(READ_SYMLINK ${link} linked)
+      if(linked STREQUAL target)
+        continue()
+      endif()
+      file(REMOVE ${link}) # the file moved within the folder
+    endif()
+    file(CREATE_LINK ${target} ${link} SYMBOLIC)
+  endforeach()
+  # A header that left the part (moved to another part, or deleted) leaves no
+  # link behind, or the part would still see it.
+  file(GLOB linked_names RELATIVE ${dir}/${name} ${dir}/${name}/*)
+  foreach(base IN LISTS linked_names)
+    set(named FALSE)
+    foreach(file IN LISTS files)
+      get_filename_component(file_base ${file} NAME)
+      if(file_base STREQUAL base)
+        set(named TRUE)
+      endif()
+    endforeach()
+    if(NOT named)
+      file(REMOVE ${dir}/${name}/${base})
     endif()
   endforeach()
   set(${out_var} ${dir} PARENT_SCOPE)
@@ -155,6 +200,7 @@ function(gtlab_technique)
     list(APPEND listed ${ARG_${part}})
   endforeach()
   gtlab_technique_check_files(${ARG_NAME} "${listed}")
+  gtlab_technique_check_names(${ARG_NAME} "${listed}")
   get_property(configured GLOBAL PROPERTY GTLAB_TECHNIQUES_CONFIGURED)
   foreach(used IN LISTS ARG_USES)
     if(NOT used IN_LIST configured)

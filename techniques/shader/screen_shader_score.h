@@ -4,7 +4,7 @@
  * each AO reference's G-buffer (the ao stage's <output>/ao/<scene>.exr,
  * which carries depth.Z, N, P, albedo, mask.A, the bent normal and the
  * camera) and its ao.V is scored as the GTAO study scores gtlab's own
- * variants (techniques/gtao/ao_image_score.h): RMSE, DSSIM and FLIP against
+ * variants (techniques/gtao/study/ao_image_score.h): RMSE, DSSIM and FLIP against
  * the 3-D reference, and the paired difference of squared errors against
  * gtlab's C GTAO on the same pixels with its 8x8-block standard error,
  * pooled over the scenes. The first row is that C GTAO, in the
