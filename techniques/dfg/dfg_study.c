@@ -6,11 +6,12 @@
 #include "core/files/atomic_file.h"
 #include "core/progress.h"
 #include "dfg/dfg_lut_writers.h"
+#include "dfg/dfg_quality.h"
 
 dfg_request dfg_default_request(study_quality quality)
 {
-    int production = quality == QUALITY_PRODUCTION;
-    dfg_request rq = {DFG_FILAMENT_SIZE, {16, 32, 64, 128, 256}, production ? 5 : 4, production ? 4096 : 1024, 1};
+    const dfg_quality *q = dfg_quality_of(quality);
+    dfg_request rq = {DFG_FILAMENT_SIZE, {16, 32, 64, 128, 256}, q->interpolation_sizes, q->interpolation_points, 1};
     return rq;
 }
 

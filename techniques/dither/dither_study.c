@@ -9,6 +9,7 @@
 
 #include "core/progress.h"
 #include "dither/dither_inputs.h"
+#include "dither/dither_quality.h"
 #include "metrics/dither_metrics.h"
 #include "metrics/ssim.h"
 
@@ -16,9 +17,8 @@ enum { MODULATION_BINS = 32, UNORM_BITS = 8, WIDE_UNORM_BITS = 10 };
 
 dither_request dither_default_request(study_quality quality)
 {
-    int production = quality == QUALITY_PRODUCTION;
-    dither_request rq = {512, 256, production ? 384 : 192, production ? 256 : 128, production ? 1024 : 64,
-                         production ? 128 : 64, 1};
+    const dither_quality *q = dither_quality_of(quality);
+    dither_request rq = {512, 256, q->render_width, q->render_height, q->render_spp, q->blue_noise_size, 1};
     return rq;
 }
 
