@@ -24,10 +24,10 @@ enum { STAGE_MAX = 64 };
 static const all_stage *stages[STAGE_MAX];
 static int stage_count;
 
-static const char *quality_name(int i) { return i == QUALITY_PRODUCTION ? "production" : "preview"; }
+static const char *quality_name(int i) { return study_quality_name((study_quality)i); }
 
 static const cli_option options[] = {
-    CLI_CHOICE("quality", "Q", quality_name, 2, "preview (a few minutes on 2 cores) or production"),
+    CLI_CHOICE("quality", "Q", quality_name, STUDY_QUALITY_COUNT, "preview (a few minutes on 2 cores) or production"),
     CLI_OUTPUT("DIR", 0, "output folder"),
     CLI_INT32("threads", "T", 1, 1024, "worker threads (default: all cores; results do not depend on it)"),
     CLI_STRING("stages", "LIST", "comma-separated stage names from the list above (default: all);\n"

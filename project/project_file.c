@@ -255,11 +255,11 @@ static int read_quality(const reader *r, const cJSON *root, study_project *p)
     const char *q;
     if (member_string(r, root, "quality", "quality", &q) != 0)
         return -1;
-    p->quality = !q                              ? -1
-                 : strcmp(q, "preview") == 0    ? QUALITY_PREVIEW
-                 : strcmp(q, "production") == 0 ? QUALITY_PRODUCTION
-                                                : -2;
-    return p->quality == -2 ? fail(r, "quality", "'preview' or 'production' expected") : 0;
+    p->quality = -1;
+    for (int i = 0; q && i < STUDY_QUALITY_COUNT; ++i)
+        if (strcmp(q, study_quality_name((study_quality)i)) == 0)
+            p->quality = i;
+    return q && p->quality == -1 ? fail(r, "quality", "'preview' or 'production' expected") : 0;
 }
 
 /* An array of strings (absent: empty), each handed to `take`. */

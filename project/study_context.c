@@ -7,6 +7,11 @@
 
 #include "scene/scene_loaders.h"
 
+const char *study_quality_name(study_quality quality)
+{
+    return quality == QUALITY_PRODUCTION ? "production" : "preview";
+}
+
 int study_make_dir(const study_context *ctx, const char *sub, char *path, size_t size, gt_error *e)
 {
     snprintf(path, size, "%s/%s", ctx->output_dir, sub);

@@ -14,6 +14,11 @@
 #include "scene/scene.h"
 
 typedef enum { QUALITY_PREVIEW, QUALITY_PRODUCTION } study_quality;
+enum { STUDY_QUALITY_COUNT = 2 };
+
+/* "preview" or "production", as --quality and the project file spell it.
+ * What each means is techniques/quality_table.txt. */
+const char *study_quality_name(study_quality quality);
 
 typedef struct study_scene_list study_scene_list; /* project/scene_list.h */
 typedef struct study_project study_project;       /* project/project_file.h */

@@ -8,7 +8,7 @@
 
 void report_introduce(report_context *ctx, const char *stage_list, const char *project)
 {
-    const char *quality = ctx->study.quality == QUALITY_PREVIEW ? "preview" : "production";
+    const char *quality = study_quality_name(ctx->study.quality);
     cJSON_AddStringToObject(ctx->summary, "gtlab_version", GTLAB_VERSION);
     cJSON_AddStringToObject(ctx->summary, "quality", quality);
     char stage_option[512] = "";
