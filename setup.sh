@@ -4,7 +4,7 @@
 # info). Safe to run again. clang, its libFuzzer runtime (libclang-rt-14-dev),
 # its OpenMP (libomp-dev) and LLVM's tools (llvm) are for the fuzz build and
 # the recursion audit (tests/fuzz, tests/audit). blender-data ships the eight
-# CC0 HDR environments (docs/decisions.md, "Environment lighting"). chromium
+# CC0 HDR environments (techniques/environment/README.md, "The references"). chromium
 # (headless) loads report.html in the browser test (tests/report).
 # libvulkan-dev, mesa-vulkan-drivers (lavapipe: a Vulkan device on the CPU),
 # libshaderc-dev with glslang-dev and spirv-tools (static libraries shaderc

@@ -107,7 +107,7 @@ static const reference_option environment_option = {
     .name = "environment",
     .value = "E",
     .help = "env-*: white (default), sky, sun or an equirectangular image file\n"
-            "(EXR, .hdr, ...: docs/decisions.md, \"Environment lighting\")",
+            "(EXR, .hdr, ...: techniques/environment/README.md, \"The references\")",
     .parse = parse_environment,
 };
 
