@@ -9,6 +9,7 @@
 
 #include "gtao/gtao_bent_horizons.h"
 #include "project/scene_list.h"
+#include "gtao/gtao_quality.h"
 #include "gtao/gtao_scene_refs.h"
 
 const char *const bent_estimator_names[BENT_ESTIMATORS] = {"average of the horizon vectors",
@@ -137,9 +138,9 @@ int gtao_bent_normals_study(const study_context *ctx, const gtao_shortcuts_reque
                             gt_error *e)
 {
     memset(out, 0, sizeof *out);
-    int preview = ctx->quality == QUALITY_PREVIEW;
-    out->slices = preview ? 4 : 8;
-    out->steps = preview ? 8 : 16;
+    const gtao_quality *q = gtao_quality_of(ctx->quality);
+    out->slices = q->bent_normals_slices;
+    out->steps = q->bent_normals_steps;
     out->scene_count = study_scene_count(ctx) < BENT_MAX_SCENES ? study_scene_count(ctx) : BENT_MAX_SCENES;
     for (int i = 0; i < out->scene_count; ++i)
         if (study_scene(rq, study_scene_at(ctx, i)->label, out, i, e) != 0)

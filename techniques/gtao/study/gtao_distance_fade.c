@@ -11,6 +11,7 @@
 #include "raytracer/reference_render.h"
 #include "project/scene_list.h"
 #include "scene/scene_loaders.h"
+#include "gtao/gtao_quality.h"
 #include "gtao/gtao_scene_refs.h"
 
 #define FADE_START_FRACTION 0.75f /* 150 / 200 */
@@ -117,10 +118,10 @@ int gtao_distance_fade_study(const study_context *ctx, const gtao_shortcuts_requ
                              gtao_distance_fade_result *out, gt_error *e)
 {
     memset(out, 0, sizeof *out);
-    int preview = ctx->quality == QUALITY_PREVIEW;
-    out->slices = preview ? 4 : 8;
-    out->steps = preview ? 8 : 16;
-    out->spp = preview ? 64 : 1024;
+    const gtao_quality *q = gtao_quality_of(ctx->quality);
+    out->slices = q->distance_fade_slices;
+    out->steps = q->distance_fade_steps;
+    out->spp = q->distance_fade_spp;
     out->scene_count = study_scene_count(ctx) < FADE_MAX_SCENES ? study_scene_count(ctx) : FADE_MAX_SCENES;
     cluster_mean a[FADE_MAX_SCENES], b[FADE_MAX_SCENES], c[FADE_MAX_SCENES], g[FADE_MAX_SCENES], t[FADE_MAX_SCENES],
         h[FADE_MAX_SCENES];

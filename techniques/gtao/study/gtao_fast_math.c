@@ -9,6 +9,7 @@
 
 #include "fitters/ceres_bridge.h"
 #include "project/scene_list.h"
+#include "gtao/gtao_quality.h"
 #include "gtao/gtao_scene_refs.h"
 #include "gtao/gtao_talk_setting.h"
 
@@ -413,11 +414,11 @@ static int prepare_scene(const gtao_fast_math_result *r, gtao_scene_refs *refs, 
 
 static void setup(const study_context *ctx, gtao_fast_math_result *r)
 {
-    int preview = ctx->quality == QUALITY_PREVIEW;
+    const gtao_quality *q = gtao_quality_of(ctx->quality);
     memset(r, 0, sizeof *r);
-    r->slices = preview ? 4 : 8;
-    r->steps = preview ? 8 : 16;
-    r->fit_stride = preview ? 16 : 4; /* the fits run the replay ~150 times per pixel kept */
+    r->slices = q->fast_math_slices;
+    r->steps = q->fast_math_steps;
+    r->fit_stride = q->fast_math_fit_stride;
     r->poly[FAST_ACOS_TALK] = gtao_acos_poly_talk();
     r->poly[FAST_ACOS_TRANSCRIBED] = r->poly[FAST_ACOS_TALK];
     r->poly[FAST_ACOS_TRANSCRIBED].magic = GTAO_FAST_SQRT_MAGIC_AS_TRANSCRIBED;

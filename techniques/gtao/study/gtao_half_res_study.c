@@ -17,8 +17,9 @@
 const char *const gtao_half_res_variant_names[GTAO_HALF_RES_VARIANTS] = {
     "full res, MIP", "full res, MIP + MIN filter", "half res", "half res, MIP + MIN filter (the talk's)"};
 
-static const double production_radii[] = {0.05, 0.1, 0.2, 0.4, 0.0};
-static const double preview_radii[] = {0.05, 0.2, 0.0};
+/* Of the camera distance; 0: no limit. A scene runs every
+ * half_res_radius_stride-th (gtao_shortcut_scene; 0 or 1: every one). */
+static const double radius_fractions[GTAO_HALF_RES_MAX_RADII] = {0.05, 0.1, 0.2, 0.4, 0.0};
 
 typedef struct {
     const gtao_shortcut_scene *s;
@@ -141,11 +142,14 @@ static void plan_radii(const gtao_shortcut_scene *s, gtao_half_res_result *r)
 {
     if (r->radius_count > 0)
         return;
-    static const double claims_radius[] = {GTAO_HALF_RES_4X_RADIUS};
-    const double *radii = s->claim_radius_only ? claims_radius : s->preview ? preview_radii : production_radii;
-    r->radius_count = s->claim_radius_only ? 1 : s->preview ? 3 : 5;
-    for (int k = 0; k < r->radius_count; ++k)
-        r->radii[k].radius_fraction = radii[k];
+    if (s->claim_radius_only) {
+        r->radius_count = 1;
+        r->radii[0].radius_fraction = GTAO_HALF_RES_4X_RADIUS;
+        return;
+    }
+    int stride = s->half_res_radius_stride > 1 ? s->half_res_radius_stride : 1;
+    for (int k = 0; k < GTAO_HALF_RES_MAX_RADII; k += stride)
+        r->radii[r->radius_count++].radius_fraction = radius_fractions[k];
 }
 
 static int run(work *w, gtao_half_res_result *r, gtao_half_res_scene *x)

@@ -130,7 +130,7 @@ int gtao_shortcuts_talk_scene(const char *name, const ss_gbuffer *full, const ss
     gtao_params talk = {0};
     gtao_talk_radius(camera_distance, half, &talk);
     gtao_shortcut_scene f = {.name = name, .g = full, .radius = talk.radius, .max_radius_px = (float)full->width,
-                             .camera_distance = camera_distance, .preview = 1, .claim_radius_only = 1,
+                             .camera_distance = camera_distance, .claim_radius_only = 1,
                              .no_four_x = 1, .falloff = talk.falloff};
     gtao_shortcut_scene h = f;
     h.g = half;

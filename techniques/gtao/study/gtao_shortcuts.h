@@ -36,7 +36,7 @@ typedef struct {
     double ref3d_mean_variance;
     float radius, max_radius_px;  /* the gtao stage's: no radius limit */
     float camera_distance;        /* from the camera to its target: the unit of the item-6 radii */
-    int preview;                  /* preview quality: fewer runs */
+    int half_res_radius_stride;   /* half resolution: every n-th of its radius fractions (the quality table's) */
     int claim_radius_only;        /* half resolution: only the claims' radius (GTAO_HALF_RES_4X_RADIUS) */
     int no_four_x;                /* half resolution: not the "4x samples" runs */
     float falloff;                /* the cycle's (0: none, the references') */

@@ -3,23 +3,24 @@
 
 #include <string.h>
 
+#include "gtao/gtao_quality.h"
 #include "scene/scene_loaders.h"
 #include "project/scene_list.h"
 
+/* In the order the quality table's talk_scenes takes them. */
 static const char *const builtin_scenes[] = {"boxes", "cornell", "menger", "corner"};
-enum { PREVIEW_SCENES = 2, PRODUCTION_SCENES = 4, PROJECT_PREVIEW_SCENES = 1, PROJECT_PRODUCTION_SCENES = 2 };
+enum { BUILTIN_SCENES = sizeof builtin_scenes / sizeof builtin_scenes[0] };
 
 int gtao_talk_scene(const study_context *ctx, const char *label)
 {
-    int preview = ctx->quality == QUALITY_PREVIEW;
+    const gtao_quality *q = gtao_quality_of(ctx->quality);
     if (ctx->scenes) {
-        int first = preview ? PROJECT_PREVIEW_SCENES : PROJECT_PRODUCTION_SCENES;
-        for (int i = 0; i < first && i < study_scene_count(ctx); ++i)
+        for (int i = 0; i < q->talk_project_scenes && i < study_scene_count(ctx); ++i)
             if (strcmp(study_scene_at(ctx, i)->label, label) == 0)
                 return 1;
         return 0;
     }
-    for (int i = 0; i < (preview ? PREVIEW_SCENES : PRODUCTION_SCENES); ++i)
+    for (int i = 0; i < q->talk_scenes && i < BUILTIN_SCENES; ++i)
         if (strcmp(builtin_scenes[i], label) == 0)
             return 1;
     return 0;

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "project/scene_list.h"
+#include "gtao/gtao_quality.h"
 #include "gtao/gtao_scene_refs.h"
 
 const float gtao_thickness_values[THICKNESS_VALUES] = {0.05f, 0.1f, 0.25f, 0.5f};
@@ -86,9 +87,9 @@ int gtao_thickness_study(const study_context *ctx, const gtao_shortcuts_request 
                          gt_error *e)
 {
     memset(out, 0, sizeof *out);
-    int preview = ctx->quality == QUALITY_PREVIEW;
-    out->slices = preview ? 4 : 8;
-    out->steps = preview ? 8 : 16;
+    const gtao_quality *q = gtao_quality_of(ctx->quality);
+    out->slices = q->thickness_slices;
+    out->steps = q->thickness_steps;
     out->corner_scene = -1;
     out->scene_count = study_scene_count(ctx) < THICKNESS_MAX_SCENES ? study_scene_count(ctx) : THICKNESS_MAX_SCENES;
     for (int i = 0; i < out->scene_count; ++i) {

@@ -21,14 +21,12 @@
 #include "gtao/volumetric_obscurance.h"
 #include "project/scene_list.h"
 #include "project/gbuffer_input.h"
+#include "gtao/gtao_quality.h"
 #include "gtao/gtao_scene_refs.h"
 #include "gtao/gtao_talk_setting.h"
 
 const int gtao_convergence_steps[GTAO_CONVERGENCE_STEPS] = {2, 4, 8, 16};
 const int gtao_convergence_slices[GTAO_CONVERGENCE_SLICES] = {1, 2, 4, 8, 16};
-
-enum { FULL_CYCLE = 24 };   /* 6 temporal rotations x 4 temporal offsets */
-enum { PREVIEW_FRAMES = 6 }; /* one cycle of the rotations, to keep the preview quick */
 
 /* No radius limit: the references see the whole height field / scene. */
 #define STUDY_RADIUS 1e6f
@@ -105,17 +103,19 @@ static void add_variant(gtao_validation_scene *s, ao_technique_kind technique, i
 
 /* The variants of one scene in the report's order: each GTAO preset for one
  * frame and converged, then HBAO and VO. Brute-force GTAO (the reference
- * preset; tests prove it equals the height field) and the baselines'
- * converged runs are production only. */
-static void plan_variants(gtao_validation_scene *s, int frames, int preview)
+ * preset; tests prove it equals the height field) runs q->brute_force_runs
+ * times (one frame, or not at all), the baselines q->baseline_runs times
+ * (one frame, then converged). */
+static void plan_variants(gtao_validation_scene *s, const gtao_quality *q)
 {
-    for (int preset = 0; preset < GTAO_PRESET_COUNT; ++preset)
-        for (int converged = 0; converged <= 1; ++converged)
-            if (preset != GTAO_PRESET_REFERENCE || (!converged && !preview))
-                add_variant(s, AO_TECHNIQUE_GTAO, preset, converged, frames);
-    for (int converged = 0; converged <= !preview; ++converged) {
-        add_variant(s, AO_TECHNIQUE_HBAO, -1, converged, frames);
-        add_variant(s, AO_TECHNIQUE_VO, -1, converged, frames);
+    for (int preset = 0; preset < GTAO_PRESET_COUNT; ++preset) {
+        int runs = preset == GTAO_PRESET_REFERENCE ? q->brute_force_runs : 2;
+        for (int converged = 0; converged < runs; ++converged)
+            add_variant(s, AO_TECHNIQUE_GTAO, preset, converged, q->converged_frames);
+    }
+    for (int converged = 0; converged < q->baseline_runs; ++converged) {
+        add_variant(s, AO_TECHNIQUE_HBAO, -1, converged, q->converged_frames);
+        add_variant(s, AO_TECHNIQUE_VO, -1, converged, q->converged_frames);
     }
 }
 
@@ -288,11 +288,13 @@ static int study_scene(const study_context *ctx, const char *refs_dir, const cha
                     0.25f * v3_length(v3_sub(in.cam.target, in.cam.position))};
     s->ref3d_mean_variance = noise_mean_variance(image_channel_data(&in.img, CH_AO_STDERR), d.mask,
                                                  image_pixel_count(&in.img));
-    plan_variants(s, r->converged_frames, ctx->quality == QUALITY_PREVIEW);
+    const gtao_quality *q = gtao_quality_of(ctx->quality);
+    plan_variants(s, q);
     int rc = score_scene(&d, &hf, figures, s, e);
     gtao_shortcut_scene view = {s->scene, d.g, d.hf, d.ref3d, s->hf_mean_variance, s->ref3d_mean_variance,
                                 STUDY_RADIUS, (float)d.g->width,
-                                v3_length(v3_sub(in.cam.target, in.cam.position)), ctx->quality == QUALITY_PREVIEW, 0, 0, 0.0f};
+                                v3_length(v3_sub(in.cam.target, in.cam.position)), q->half_res_radius_stride, 0, 0,
+                                0.0f};
     if (rc == 0)
         rc = gtao_shortcuts_scene(&view, &r->shortcuts, e);
     if (rc == 0 && gtao_talk_scene(ctx, s->scene))
@@ -392,9 +394,8 @@ int gtao_validation_study(const study_context *ctx, const gtao_validation_reques
     memset(out, 0, sizeof *out);
     snprintf(out->convergence_scene, sizeof out->convergence_scene, "%s",
              ctx->scenes ? study_scene_at(ctx, 0)->label : GTAO_CONVERGENCE_SCENE);
-    int preview = ctx->quality == QUALITY_PREVIEW;
-    out->heightfield_spp = preview ? 32 : 1024;
-    out->converged_frames = preview ? PREVIEW_FRAMES : FULL_CYCLE;
+    out->heightfield_spp = gtao_quality_of(ctx->quality)->heightfield_spp;
+    out->converged_frames = gtao_quality_of(ctx->quality)->converged_frames;
     for (int i = 0; i < study_scene_count(ctx); ++i) {
         if (i == GTAO_VALIDATION_MAX_SCENES)
             return gt_error_set(e, "gtao", "more than %d scenes", GTAO_VALIDATION_MAX_SCENES);

@@ -15,6 +15,7 @@
 #include "gtao/vbao.h"
 #include "project/scene_list.h"
 #include "scene/scene_loaders.h"
+#include "gtao/gtao_quality.h"
 #include "gtao/gtao_scene_refs.h"
 
 const char *const vbao_row_names[VBAO_ROW_COUNT] = {
@@ -213,7 +214,7 @@ int vbao_study(const study_context *ctx, const gtao_shortcuts_request *rq, float
                gt_error *e)
 {
     memset(out, 0, sizeof *out);
-    out->heightfield_spp = ctx->quality == QUALITY_PREVIEW ? 8 : 1024; /* preview: cheap, the split is noise-corrected */
+    out->heightfield_spp = gtao_quality_of(ctx->quality)->vbao_heightfield_spp;
     out->heuristic_thickness = heuristic;
     int count = study_scene_count(ctx);
     out->scene_count = count < VBAO_MAX_SCENES ? count : VBAO_MAX_SCENES;
