@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "ao/ao_quality.h"
 #include "core/files/exr_io.h"
 #include "core/files/image_io.h"
 #include "core/reference_schema.h"
@@ -16,13 +17,13 @@ static void measure(const image *img, const render_stats *stats, ao_reference_ro
 {
     const float *mask = image_channel_data(img, CH_MASK), *n = image_channel_data(img, CH_SPP);
     const float *err = image_channel_data(img, CH_AO_STDERR);
-    double spp = 0.0, sum_err = 0.0, max_err = 0.0;
+    double samples = 0.0, sum_err = 0.0, max_err = 0.0;
     int covered = 0;
     for (size_t i = 0; i < image_pixel_count(img); ++i) {
         if (mask[i] == 0.0f)
             continue;
         ++covered;
-        spp += n[i];
+        samples += n[i];
         sum_err += err[i];
         max_err = fmax(max_err, err[i]);
     }
@@ -31,7 +32,7 @@ static void measure(const image *img, const render_stats *stats, ao_reference_ro
     r->covered_pixels = covered;
     r->seconds = stats->seconds;
     r->rays_per_second = stats->seconds > 0 ? (double)stats->rays / stats->seconds : 0.0;
-    r->mean_spp = covered ? spp / covered : 0.0;
+    r->mean_spp = covered ? samples / covered : 0.0;
     r->mean_stderr = covered ? sum_err / covered : 0.0;
     r->max_stderr = max_err;
 }
@@ -119,8 +120,8 @@ static int study_scene(const study_scene_entry *b, const reference_request *req,
 
 ao_references_request ao_references_default_request(study_quality quality)
 {
-    int preview = quality == QUALITY_PREVIEW;
-    ao_references_request rq = {preview ? 256 : 512, preview ? 256 : 4096, preview ? 0.0 : 0.002, 1, 0};
+    const ao_quality *q = ao_quality_of(quality);
+    ao_references_request rq = {q->image_width, q->reference_spp, q->target_stderr, 1, 0};
     return rq;
 }
 

@@ -43,8 +43,9 @@ typedef struct {
     ao_reference_row rows[AO_REFERENCES_MAX_SCENES]; /* study_scene_at order */
 } ao_references_result;
 
-/* The request of `gtlab all` at a quality: preview 256 px, 256 spp;
- * production 512 px, up to 4096 spp stopping at a standard error of 0.002. */
+/* The request of `gtlab all` at a quality: its image width, samples per
+ * pixel and target standard error are the quality table's (ao rows of
+ * techniques/quality_table.txt); seed 1, every built-in scene. */
 ao_references_request ao_references_default_request(study_quality quality);
 
 int ao_references_study(const study_context *ctx, const ao_references_request *rq, ao_references_result *out,

@@ -23,7 +23,6 @@ import sys
 KNOWN = [
     "techniques/anti_aliasing/aa_temporal_study.c",
     "techniques/anti_aliasing/anti_aliasing_study.c",
-    "techniques/ao/ao_references.c",
     "techniques/ao_decals/ao_decals_study.c",
     "techniques/atmosphere/atmosphere_luts_study.c",
     "techniques/best_fit_normals/best_fit_normals_study.c",
@@ -32,10 +31,6 @@ KNOWN = [
     "techniques/height_fog/aerial_perspective_study.c",
     "techniques/height_fog/height_fog_study.c",
     "techniques/kulla_conty/kulla_conty_study.c",
-    "techniques/multibounce/study/multibounce_bounces.c",
-    "techniques/multibounce/study/multibounce_colour.c",
-    "techniques/multibounce/study/multibounce_contrast.c",
-    "techniques/multibounce/study/multibounce_study.c",
     "techniques/sg_ndf/sg_ndf_study.c",
     "techniques/specular_occlusion/study/specular_occlusion_study.c",
     "techniques/sphere_light/sphere_light_scenes.c",

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "multibounce/multibounce_parts.h"
+#include "multibounce/multibounce_quality.h"
 #include "multibounce/multibounce_quantity.h"
 #include "scene/scene_loaders.h"
 
@@ -20,7 +21,7 @@ static int render_into(const study_context *ctx, const reference_request *req, c
     scene s;
     if (scene_load(spec, &s, e) != 0)
         return -1;
-    int size = ctx->quality == QUALITY_PREVIEW ? 128 : 384;
+    int size = multibounce_quality_of(ctx->quality)->image_width;
     camera cam;
     image img;
     render_stats stats;

@@ -10,6 +10,7 @@
 #include "metrics/reference_halves.h"
 #include "metrics/ssim.h"
 #include "multibounce/multibounce_parts.h"
+#include "multibounce/multibounce_quality.h"
 #include "multibounce/multibounce_quantity.h"
 #include "scene/scene_loaders.h"
 
@@ -48,7 +49,7 @@ static int render_colour(const study_context *ctx, const reference_request *base
         return -1;
     camera cam;
     render_stats stats;
-    int rc = scene_choose_camera(&s, NULL, ctx->quality == QUALITY_PREVIEW ? 128 : 384, 0, &cam, e);
+    int rc = scene_choose_camera(&s, NULL, multibounce_quality_of(ctx->quality)->image_width, 0, &cam, e);
     if (rc == 0)
         rc = reference_render(&s, spec, &cam, &req, img, &stats, e);
     scene_free(&s);

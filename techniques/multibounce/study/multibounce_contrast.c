@@ -10,6 +10,7 @@
 #include "core/reference_schema.h"
 #include "metrics/reference_halves.h"
 #include "multibounce/multibounce_parts.h"
+#include "multibounce/multibounce_quality.h"
 #include "multibounce/multibounce_quantity.h"
 #include "scene/scene_loaders.h"
 
@@ -74,7 +75,7 @@ static int render_contrast(const study_context *ctx, const reference_request *ba
         return -1;
     camera cam;
     render_stats stats;
-    int size = ctx->quality == QUALITY_PREVIEW ? 128 : 384;
+    int size = multibounce_quality_of(ctx->quality)->image_width;
     int rc = scene_choose_camera(&s, NULL, size, 0, &cam, e);
     if (rc == 0)
         rc = reference_render(&s, spec, &cam, &req, img, &stats, e);

@@ -8,6 +8,7 @@
 #include "core/files/exr_io.h"
 #include "metrics/reference_halves.h"
 #include "multibounce/multibounce_parts.h"
+#include "multibounce/multibounce_quality.h"
 #include "multibounce/multibounce_quantity.h"
 #include "multibounce/multibounce_throughput.h"
 #include "scene/scene_loaders.h"
@@ -24,12 +25,11 @@ static const float kAlbedos[MULTIBOUNCE_STUDY_ALBEDOS] = {0.1f, 0.2f, 0.3f, 0.4f
 /* The study's request, its settings in *mb. */
 static reference_request request(const study_context *ctx, multibounce_render_settings *mb)
 {
-    int preview = ctx->quality == QUALITY_PREVIEW;
     *mb = (multibounce_render_settings){{QUANTITY_MULTIBOUNCE},
                                         {.albedo_count = MULTIBOUNCE_STUDY_ALBEDOS, .bounces = 4}};
     memcpy(mb->multibounce.albedos, kAlbedos, sizeof kAlbedos);
     return (reference_request){.quantity = QUANTITY_MULTIBOUNCE,
-                               .sampling = {.spp = preview ? 128 : 2048, .seed = 1, .threads = ctx->threads},
+                               .sampling = {.spp = multibounce_quality_of(ctx->quality)->reference_spp, .seed = 1, .threads = ctx->threads},
                                .normals = NORMAL_SHADING,
                                .max_distance = INFINITY,
                                .settings = &mb->header};
@@ -42,7 +42,7 @@ static int render_scene(const study_context *ctx, const reference_request *req, 
     scene s;
     if (scene_load(spec, &s, e) != 0)
         return -1;
-    int size = ctx->quality == QUALITY_PREVIEW ? 128 : 384;
+    int size = multibounce_quality_of(ctx->quality)->image_width;
     int rc = scene_choose_camera(&s, NULL, size, 0, cam, e);
     if (rc == 0)
         rc = reference_render(&s, spec, cam, req, &st->refs[k], stats, e);
@@ -107,13 +107,13 @@ static int run_fit(const study_context *ctx, multibounce_state *st, gt_error *e)
     snprintf(header, sizeof header, "%s/multibounce.h", fits);
     snprintf(hlsl, sizeof hlsl, "%s/multibounce.hlsl", fits);
     snprintf(glsl, sizeof glsl, "%s/multibounce.glsl", fits);
+    char command[64];
+    snprintf(command, sizeof command, "gtlab all --quality %s", study_quality_name(ctx->quality));
     multibounce_data_weigh(&st->data);
     if (multibounce_analyse(&st->data, st->analysis, e) != 0)
         return -1;
     return multibounce_write_outputs(&st->data, st->analysis,
-                                     ctx->quality == QUALITY_PREVIEW ? "gtlab all --quality preview"
-                                                                     : "gtlab all --quality production",
-                                     json, header, hlsl, glsl, e);
+                                     command, json, header, hlsl, glsl, e);
 }
 
 /* ---- Performance ------------------------------------------------------------------------ */
@@ -122,7 +122,8 @@ static int run_fit(const study_context *ctx, multibounce_state *st, gt_error *e)
 static int measure_performance(const study_context *ctx, const reference_request *req, const multibounce_state *st,
                                multibounce_performance *p, gt_error *e)
 {
-    *p = (multibounce_performance){.scene = "builtin:menger", .width = 96, .height = 96, .spp = 32,
+    *p = (multibounce_performance){.scene = "builtin:menger", .width = 96, .height = 96,
+                                   .spp = multibounce_quality_of(ctx->quality)->bench_spp,
                                    .albedos = multibounce_settings_of(req)->albedo_count,
                                    .channels = multibounce_settings_of(req)->albedo_count + 1};
     scene s;
