@@ -31,7 +31,6 @@ static reference_request request(const study_context *ctx, multibounce_render_se
     return (reference_request){.quantity = QUANTITY_MULTIBOUNCE,
                                .sampling = {.spp = preview ? 128 : 2048, .seed = 1, .threads = ctx->threads},
                                .normals = NORMAL_SHADING,
-                               .max_distance = INFINITY,
                                .settings = &mb->header};
 }
 
