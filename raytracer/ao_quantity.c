@@ -3,22 +3,47 @@
 #include "raytracer/ao_quantity.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 
 #include "core/number_parse.h"
 #include "core/reference_schema.h"
 #include "raytracer/ao_integrator.h"
 
-static int parse_max_distance(reference_request *rq, const char *value, gt_error *e)
+_Static_assert(offsetof(ao_render_settings, header) == 0, "the header comes first");
+
+ao_render_settings ao_render_settings_defaults(void)
+{
+    return (ao_render_settings){{QUANTITY_AO}, INFINITY, 0.0f, AO_CONTROL_VARIATE_NONE};
+}
+
+static ao_render_settings *settings_of(const reference_request *rq)
+{
+    return (ao_render_settings *)reference_settings_of(rq, QUANTITY_AO);
+}
+
+/* rq's settings, or the defaults when it carries none of ao's. */
+static ao_render_settings settings_or_defaults(const reference_request *rq)
+{
+    const ao_render_settings *s = settings_of(rq);
+    return s ? *s : ao_render_settings_defaults();
+}
+
+int ao_parse_max_distance(const char *value, float *max_distance, gt_error *e)
 {
     double d;
     if (parse_real_in("--max-distance", value, 1e-30, 1e30, &d, e) != 0)
         return -1;
-    rq->max_distance = (float)d;
+    *max_distance = (float)d;
     return 0;
 }
 
-const reference_option reference_option_max_distance = {
+static int parse_max_distance(reference_request *rq, const char *value, gt_error *e)
+{
+    return ao_parse_max_distance(value, &settings_of(rq)->max_distance, e);
+}
+
+static const reference_option option_max_distance = {
     .name = "max-distance",
     .value = "D",
     .help = "rays farther than D count as\nunoccluded (default: none)",
@@ -30,7 +55,7 @@ static int parse_fade_start(reference_request *rq, const char *value, gt_error *
     double d;
     if (parse_real_in("--fade-start", value, 1e-30, 1e30, &d, e) != 0)
         return -1;
-    rq->fade_start = (float)d;
+    settings_of(rq)->fade_start = (float)d;
     return 0;
 }
 
@@ -44,7 +69,7 @@ static const reference_option option_fade_start = {
 
 static int parse_control_variate(reference_request *rq, const char *value, gt_error *e)
 {
-    if (ao_control_variate_parse(value, &rq->control_variate) != 0)
+    if (ao_control_variate_parse(value, &settings_of(rq)->control_variate) != 0)
         return gt_error_set(e, "--control-variate", "'%s' is not none or heightfield", value);
     return 0;
 }
@@ -58,27 +83,27 @@ static const reference_option option_control_variate = {
     .parse = parse_control_variate,
 };
 
-void ao_quantity_set_defaults(reference_request *rq)
+static void set_defaults(reference_request *rq)
 {
-    rq->max_distance = INFINITY;
-    rq->fade_start = 0.0f;
-    rq->control_variate = AO_CONTROL_VARIATE_NONE;
+    if (settings_of(rq))
+        *settings_of(rq) = ao_render_settings_defaults();
 }
 
-int ao_quantity_write_settings(const reference_request *rq, image *out)
+int ao_quantity_write_settings(image *out, float max_distance, float fade_start, double target_stderr)
 {
-    if (rq->fade_start > 0.0f && rq->fade_start < rq->max_distance)
+    if (fade_start > 0.0f && fade_start < max_distance)
         return reference_set_attributef(out, ATTR_SETTINGS, "max_distance=%.9g fade_start=%.9g target_stderr=%.9g",
-                                        rq->max_distance, rq->fade_start, rq->sampling.target_stderr);
-    return reference_set_attributef(out, ATTR_SETTINGS, "max_distance=%.9g target_stderr=%.9g", rq->max_distance,
-                                    rq->sampling.target_stderr);
+                                        max_distance, fade_start, target_stderr);
+    return reference_set_attributef(out, ATTR_SETTINGS, "max_distance=%.9g target_stderr=%.9g", max_distance,
+                                    target_stderr);
 }
 
 /* ao's settings and, always, its sampling mode: merge compares it. */
 static int write_settings(const reference_request *rq, image *out)
 {
-    return ao_quantity_write_settings(rq, out) |
-           image_set_attribute(out, ATTR_CONTROL_VARIATE, ao_control_variate_name(rq->control_variate));
+    ao_render_settings s = settings_or_defaults(rq);
+    return ao_quantity_write_settings(out, s.max_distance, s.fade_start, rq->sampling.target_stderr) |
+           image_set_attribute(out, ATTR_CONTROL_VARIATE, ao_control_variate_name(s.control_variate));
 }
 
 typedef struct {
@@ -91,11 +116,12 @@ static int prepare(const reference_pass *pass, void **state, integrator *it, gt_
     ao_state *ao = calloc(1, sizeof *ao);
     if (!ao)
         return gt_error_set(e, pass->scene_spec, "out of memory");
-    ao->settings.max_distance = pass->req->max_distance;
-    ao->settings.fade_start = pass->req->fade_start;
-    if (pass->req->control_variate == AO_CONTROL_VARIATE_HEIGHTFIELD) {
-        if (ao_control_variate_build(&ao->field, pass->es, pass->gb, pass->req->max_distance,
-                                     pass->req->sampling.threads) != 0) {
+    ao_render_settings s = settings_or_defaults(pass->req);
+    ao->settings.max_distance = s.max_distance;
+    ao->settings.fade_start = s.fade_start;
+    if (s.control_variate == AO_CONTROL_VARIATE_HEIGHTFIELD) {
+        int threads = pass->req->sampling.threads;
+        if (ao_control_variate_build(&ao->field, pass->es, pass->gb, s.max_distance, threads) != 0) {
             free(ao);
             return gt_error_set(e, pass->scene_spec, "out of memory for the control variate's horizons");
         }
@@ -119,9 +145,10 @@ const reference_quantity_descriptor reference_quantity_ao = {
             "bent.X/Y/Z (bent normal), each with .stderr and the exact\n"
             "accumulators (.sum, .sumeven, .peak, .m1_*, .m2_*) that 'gtlab merge'\n"
             "combines",
-    .options = (const reference_option *const[]){&reference_option_max_distance, &option_fade_start,
+    .options = (const reference_option *const[]){&option_max_distance, &option_fade_start,
                                                   &option_control_variate, NULL},
-    .set_defaults = ao_quantity_set_defaults,
+    .settings_size = sizeof(ao_render_settings),
+    .set_defaults = set_defaults,
     .prepare = prepare,
     .release = release,
     .write_settings = write_settings,

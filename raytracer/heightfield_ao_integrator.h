@@ -39,14 +39,15 @@ typedef struct {
 } heightfield_settings;
 
 /* The heightfield-ao quantity's own settings (reference_request.settings;
- * NULL there: INFINITY): `--thickness T`. */
+ * NULL there: both INFINITY): `--max-distance D` and `--thickness T`. */
 typedef struct {
     reference_settings header; /* names reference_quantity_heightfield_ao */
+    float max_distance;        /* V = 1 beyond it along the ray; INFINITY: none */
     float thickness;
 } heightfield_ao_options;
 
-/* The settings of a render at that thickness (heightfield_ao_quantity.c;
- * point the request's settings at .header). */
+/* The settings of a render at that thickness, without a distance limit
+ * (heightfield_ao_quantity.c; point the request's settings at .header). */
 heightfield_ao_options heightfield_ao_thickness(float thickness);
 
 /* Prepares the settings from a G-buffer (keeps a pointer to it), thickness

@@ -31,7 +31,7 @@ struct reference_request; /* raytracer/reference_render.h */
 struct reference_quantity_descriptor;
 
 /* The head of every quantity's own settings struct, as its first member
- * (`typedef struct { reference_settings header; float thickness; }
+ * (`typedef struct { reference_settings header; float max_distance, thickness; }
  * heightfield_ao_options;`): it names the quantity the settings are for. A
  * request carries them as a reference_settings pointer and a quantity
  * reaches its own through reference_settings_of, which refuses another
@@ -43,10 +43,10 @@ typedef struct reference_settings {
 
 /* One command-line option of one or more quantities ("--max-distance D").
  * An option is its name: quantities share one by listing the same object
- * (ao and heightfield-ao share --max-distance) or objects of the same name,
- * value placeholder and `required` (specular-occlusion and env-* each parse
- * their own --environment and --roughness into their own settings: a
- * quantity never calls another's code). `gtlab
+ * or objects of the same name, value placeholder and `required`, each
+ * parsing into its own quantity's settings (ao and heightfield-ao each
+ * their --max-distance; specular-occlusion and env-* their --environment
+ * and --roughness: a quantity never calls another technique's code). `gtlab
  * render` shows it once, its help the distinct objects' helps in registry
  * order, parses it with the rendered quantity's object and refuses it with
  * any other quantity ("--max-distance: applies to ao and heightfield-ao
@@ -57,8 +57,8 @@ typedef struct reference_option {
     int required;         /* 1: the quantities listing it need it */
     const char *hint;     /* with `required`: what to give, appended to the "needs" error, or NULL */
     const char *help;     /* after "<quantities>: ", lines separated by '\n'; NULL: another object's of its name says it all */
-    /* Parses the value (NULL for a flag) into the request (its fields, or the
-     * quantity's settings, reference_settings_of). Errors name "--<name>". */
+    /* Parses the value (NULL for a flag) into the request (its sampling, or
+     * the quantity's settings, reference_settings_of). Errors name "--<name>". */
     int (*parse)(struct reference_request *rq, const char *value, gt_error *e);
 } reference_option;
 
@@ -79,8 +79,7 @@ typedef struct reference_quantity_descriptor {
     /* The size of the quantity's own settings struct (which begins with its
      * reference_settings header): `gtlab render` allocates it zeroed, its
      * header naming the quantity (reference_settings_new), as rq->settings
-     * before set_defaults and the options run (0: none, the settings live in
-     * reference_request's own fields). */
+     * before set_defaults and the options run (0: none). */
     size_t settings_size;
     /* The defaults of its settings before the options apply; NULL: zeros. */
     void (*set_defaults)(struct reference_request *rq);

@@ -6,7 +6,6 @@
 #define GTLAB_RAYTRACER_REFERENCE_RENDER_H
 
 #include "core/image.h"
-#include "raytracer/ao_control_variate.h"
 #include "raytracer/gbuffer.h"
 #include "raytracer/reference_quantity.h"
 #include "raytracer/render_loop.h"
@@ -25,18 +24,12 @@ extern const reference_quantity_descriptor reference_quantity_gbuffer, reference
  * a reference_settings naming it (reference_quantity.h), pointed at by
  * `settings` (its descriptor's settings_size: its options fill it on the
  * command line, a caller points it at its own struct), so adding a quantity
- * changes nothing here. The fields from max_distance to control_variate are
- * the settings of ao, which move into its own struct next
- * (docs/render-quantities.md). A zeroed request (quantity
- * NULL) renders the G-buffer. */
+ * changes nothing here. A zeroed request (quantity NULL) renders the
+ * G-buffer. */
 typedef struct reference_request {
     reference_quantity quantity;
     sampling_settings sampling;
     normal_mode normals;
-    float max_distance;               /* ao and heightfield-ao; INFINITY: none */
-    float fade_start;                 /* ao only: occlusion fades linearly to 0 from here to max_distance
-                                         (raytracer/ao_integrator.h); 0: a hard cutoff */
-    ao_control_variate control_variate; /* ao only: none (plain sampling) or heightfield */
     reference_settings *settings;     /* the quantity's own settings (their header names it), or NULL */
     /* Where this process keeps its checkpoint (raytracer/render_checkpoint.h;
      * under mpirun each rank its own: render_checkpoint_files.h), or NULL:

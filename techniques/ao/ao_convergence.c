@@ -8,7 +8,7 @@
 
 #include "core/progress.h"
 #include "core/reference_schema.h"
-#include "raytracer/reference_render.h"
+#include "raytracer/ao_quantity.h"
 #include "project/scene_list.h"
 
 enum { SERIES_SEED = 1, REFERENCE_SEED = 7 };
@@ -22,8 +22,10 @@ ao_convergence_request ao_convergence_default_request(int threads)
 static int render_ao(const scene *s, const camera *cam, ao_control_variate cv, int spp, uint32_t seed, int threads,
                      image *out, double *seconds, gt_error *e)
 {
+    ao_render_settings ao = ao_render_settings_defaults();
+    ao.control_variate = cv;
     reference_request req = {.quantity = QUANTITY_AO, .sampling = {.spp = spp, .seed = seed, .threads = threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY, .control_variate = cv};
+                             .normals = NORMAL_SHADING, .settings = &ao.header};
     render_stats stats;
     double start = seconds_now();
     int rc = reference_render(s, s->name, cam, &req, out, &stats, e);

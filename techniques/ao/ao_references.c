@@ -133,7 +133,7 @@ int ao_references_study(const study_context *ctx, const ao_references_request *r
     reference_request req = {.quantity = QUANTITY_AO,
                              .sampling = {.spp = rq->spp, .seed = rq->seed, .target_stderr = rq->target_stderr,
                                           .threads = ctx->threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
+                             .normals = NORMAL_SHADING};
     char refs[2048], figures[2048];
     if (study_make_dir(ctx, AO_REFERENCES_DIR, refs, sizeof refs, e) != 0 ||
         study_make_dir(ctx, "figures", figures, sizeof figures, e) != 0)

@@ -74,7 +74,7 @@ static int render(const ao_decal_scene *d, int size, int spp, unsigned seed, int
     if (study_load_view(spec, size, size, &s, &cam, e) != 0)
         return -1;
     reference_request req = {.quantity = QUANTITY_AO, .sampling = {.spp = spp, .seed = seed, .threads = threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
+                             .normals = NORMAL_SHADING};
     render_stats stats;
     int rc = reference_render(&s, spec, &cam, &req, img, &stats, e);
     scene_free(&s);

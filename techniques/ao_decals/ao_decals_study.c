@@ -43,7 +43,7 @@ static int render_view(const study_context *ctx, const ao_decals_request *rq, in
     if (scene_load("builtin:sphere-on-plane", &s, e) != 0)
         return -1;
     reference_request req = {.quantity = QUANTITY_AO, .sampling = {.spp = rq->spp, .seed = rq->seed + view,
-                             .threads = ctx->threads}, .normals = NORMAL_SHADING, .max_distance = INFINITY};
+                             .threads = ctx->threads}, .normals = NORMAL_SHADING};
     render_stats stats;
     int rc = reference_render(&s, "builtin:sphere-on-plane", &cam, &req, &dv->img, &stats, e);
     scene_free(&s);

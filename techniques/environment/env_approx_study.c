@@ -114,8 +114,7 @@ static int render(const env_state *st, const scene *s, const char *spec, const c
     light.multibounce = (multibounce_settings){.scene_albedo = 1, .bounces = st->out->bounces};
     reference_request req = {.quantity = q,
                              .sampling = {.spp = st->out->spp, .seed = 1, .threads = st->ctx->threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY,
-                             .settings = environment ? &light.header : NULL};
+                             .normals = NORMAL_SHADING, .settings = environment ? &light.header : NULL};
     render_stats stats;
     return reference_render(s, spec, cam, &req, out, &stats, e);
 }

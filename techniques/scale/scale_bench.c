@@ -19,9 +19,9 @@ typedef struct {
 /* The AO reference under the job: its stats are the job's (rank 0). */
 static int time_render(const scene *s, const camera *cam, scale_figures *f, gt_error *e)
 {
-    reference_request rq = {.quantity = QUANTITY_AO, .normals = NORMAL_SHADING};
-    QUANTITY_AO->set_defaults(&rq);
-    rq.sampling = (sampling_settings){.spp = SCALE_BENCH_SPP, .seed = 1, .threads = f->threads};
+    reference_request rq = {.quantity = QUANTITY_AO,
+                            .sampling = {.spp = SCALE_BENCH_SPP, .seed = 1, .threads = f->threads},
+                            .normals = NORMAL_SHADING};
     image out;
     if (reference_render(s, SCALE_BENCH_SCENE, cam, &rq, &out, &f->sampling, e) != 0)
         return -1;

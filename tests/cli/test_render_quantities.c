@@ -11,6 +11,7 @@
 #include "cli/render_quantities.h"
 #include "tests/check.h"
 #include "environment/environment_light.h"
+#include "raytracer/ao_quantity.h"
 #include "raytracer/heightfield_ao_integrator.h"
 #include "multibounce/multibounce_quantity.h"
 #include "raytracer/reference_render.h"
@@ -213,14 +214,21 @@ static void test_apply(void)
         &((const sphere_light_quantity_settings *)reference_settings_of(&rq, QUANTITY_SPHERE_LIGHT))->light;
     CHECK(light->position.y == 2.0f && light->radius == 0.5f);
     CHECK(light->radiance == 1.0f && light->shadows == 1);
-    CHECK(apply(&rq, QUANTITY_AO, &e, (const char *[]){NULL}) == 0 && isinf(rq.max_distance));
+    CHECK(apply(&rq, QUANTITY_AO, &e, (const char *[]){NULL}) == 0);
+    const ao_render_settings *ao = (const ao_render_settings *)reference_settings_of(&rq, QUANTITY_AO);
+    CHECK(ao && isinf(ao->max_distance) && ao->fade_start == 0.0f && ao->control_variate == AO_CONTROL_VARIATE_NONE);
+    CHECK(apply(&rq, QUANTITY_AO, &e,
+                (const char *[]){"max-distance", "2", "fade-start", "1", "control-variate", "heightfield", NULL}) == 0);
+    ao = (const ao_render_settings *)reference_settings_of(&rq, QUANTITY_AO);
+    CHECK(ao && ao->max_distance == 2.0f && ao->fade_start == 1.0f &&
+          ao->control_variate == AO_CONTROL_VARIATE_HEIGHTFIELD);
     CHECK(apply(&rq, QUANTITY_HEIGHTFIELD_AO, &e, (const char *[]){"max-distance", "2.5", NULL}) == 0);
     const heightfield_ao_options *hf =
         (const heightfield_ao_options *)reference_settings_of(&rq, QUANTITY_HEIGHTFIELD_AO);
-    CHECK(rq.max_distance == 2.5f && hf && isinf(hf->thickness));
+    CHECK(hf && hf->max_distance == 2.5f && isinf(hf->thickness));
     CHECK(apply(&rq, QUANTITY_HEIGHTFIELD_AO, &e, (const char *[]){"thickness", "0.25", NULL}) == 0);
     hf = (const heightfield_ao_options *)reference_settings_of(&rq, QUANTITY_HEIGHTFIELD_AO);
-    CHECK(hf && hf->thickness == 0.25f);
+    CHECK(hf && hf->thickness == 0.25f && isinf(hf->max_distance));
     /* Settings made for another quantity are not reached as its own. */
     CHECK(reference_settings_of(&rq, QUANTITY_SPHERE_LIGHT) == NULL);
     CHECK(apply(&rq, QUANTITY_SPECULAR_OCCLUSION, &e, (const char *[]){"environment", "sky", NULL}) == 0);

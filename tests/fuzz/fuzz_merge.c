@@ -32,8 +32,7 @@ static image render_half(const scene *s, const camera *cam, uint32_t offset)
 {
     reference_request req = {.quantity = QUANTITY_AO,
                              .sampling = {.spp = 4, .sample_offset = offset, .seed = 7, .threads = 1},
-                             .normals = NORMAL_SHADING,
-                             .max_distance = INFINITY};
+                             .normals = NORMAL_SHADING};
     image img;
     render_stats stats;
     gt_error e;

@@ -11,7 +11,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "raytracer/reference_render.h"
+#include "raytracer/ao_quantity.h"
 #include "core/sampling/hemisphere_sampling.h"
 #include "scene/scene_loaders.h"
 #include "tests/check.h"
@@ -32,8 +32,9 @@ static image render(const char *spec, const camera *cam_override, int size, int 
         cam = *cam_override;
     else
         CHECK(scene_choose_camera(&s, NULL, size, size, &cam, &e) == 0);
+    ao_render_settings ao = {{QUANTITY_AO}, .max_distance = max_distance};
     reference_request req = {.quantity = QUANTITY_AO, .sampling = {.spp = spp, .seed = 7, .threads = 2},
-                             .normals = NORMAL_SHADING, .max_distance = max_distance};
+                             .normals = NORMAL_SHADING, .settings = &ao.header};
     render_stats stats;
     CHECK(reference_render(&s, spec, &cam, &req, &img, &stats, &e) == 0);
     if (s_out)

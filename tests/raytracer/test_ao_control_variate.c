@@ -16,7 +16,7 @@
 
 #include "core/reference_schema.h"
 #include "raytracer/reference_merge.h"
-#include "raytracer/reference_render.h"
+#include "raytracer/ao_quantity.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_loaders.h"
 #include "tests/check.h"
@@ -28,9 +28,11 @@ static image render(const scene *s, const camera *cam, ao_control_variate cv, in
 {
     gt_error e;
     image img = {0};
+    ao_render_settings ao = ao_render_settings_defaults();
+    ao.control_variate = cv;
     reference_request req = {.quantity = QUANTITY_AO,
                              .sampling = {.spp = spp, .sample_offset = offset, .seed = seed, .threads = threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY, .control_variate = cv};
+                             .normals = NORMAL_SHADING, .settings = &ao.header};
     render_stats stats;
     if (reference_render(s, s->name, cam, &req, &img, &stats, &e) != 0) {
         fprintf(stderr, "%s\n", e.message);

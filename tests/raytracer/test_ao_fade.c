@@ -11,7 +11,7 @@
  * bit-identical output to the hard cutoff the renderer had before. */
 #include <math.h>
 
-#include "raytracer/reference_render.h"
+#include "raytracer/ao_quantity.h"
 #include "tests/check.h"
 #include "tests/raytracer/closed_box.h"
 
@@ -40,8 +40,9 @@ static double closed_form(double d, double start, double end)
 static image render(const scene *s, float start, float end)
 {
     camera cam = {v3(0.5f, 0.5f, 0.0f), v3(0.9f, -1.0f, 0.0f), v3(0.0f, 1.0f, 0.0f), 0.3f, 9, 9};
+    ao_render_settings ao = {{QUANTITY_AO}, .max_distance = end, .fade_start = start};
     reference_request req = {.quantity = QUANTITY_AO, .sampling = {.spp = 16384, .seed = 3, .threads = 2},
-                             .normals = NORMAL_SHADING, .max_distance = end, .fade_start = start};
+                             .normals = NORMAL_SHADING, .settings = &ao.header};
     gt_error e;
     image img = {0};
     render_stats stats;
@@ -73,13 +74,14 @@ static void check_centre(const scene *s, float start, float end)
 static void test_fade_start_zero_is_the_hard_cutoff(const scene *s)
 {
     camera cam = {v3(0.5f, 0.5f, 0.0f), v3(0.9f, -1.0f, 0.0f), v3(0.0f, 1.0f, 0.0f), 0.6f, 8, 8};
+    ao_render_settings ao = {{QUANTITY_AO}, .max_distance = 0.3f};
     reference_request req = {.quantity = QUANTITY_AO, .sampling = {.spp = 64, .seed = 3, .threads = 2},
-                             .normals = NORMAL_SHADING, .max_distance = 0.3f};
+                             .normals = NORMAL_SHADING, .settings = &ao.header};
     gt_error e;
     image a = {0}, b = {0};
     render_stats stats;
     CHECK(reference_render(s, s->name, &cam, &req, &a, &stats, &e) == 0);
-    req.fade_start = 0.3f; /* at or beyond the end: no fade */
+    ao.fade_start = 0.3f; /* at or beyond the end: no fade */
     CHECK(reference_render(s, s->name, &cam, &req, &b, &stats, &e) == 0);
     const float *va = image_channel_data(&a, "ao.V"), *vb = image_channel_data(&b, "ao.V");
     int same = va && vb;

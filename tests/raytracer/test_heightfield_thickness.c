@@ -116,8 +116,7 @@ static int render_hf(const scene *s, const camera *cam, float thickness, image *
     heightfield_ao_options o = heightfield_ao_thickness(thickness);
     reference_request req = {.quantity = QUANTITY_HEIGHTFIELD_AO,
                              .sampling = {.spp = 32, .seed = 3, .threads = 2},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY,
-                             .settings = thickness < 0.0f ? NULL : &o.header};
+                             .normals = NORMAL_SHADING, .settings = thickness < 0.0f ? NULL : &o.header};
     render_stats stats;
     gt_error e;
     int rc = reference_render(s, "builtin:boxes", cam, &req, out, &stats, &e);

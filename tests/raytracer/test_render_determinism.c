@@ -23,7 +23,7 @@ static image render(int spp, uint32_t offset, int threads, double target_stderr)
     reference_request req = {.quantity = QUANTITY_AO,
                              .sampling = {.spp = spp, .sample_offset = offset, .seed = 11,
                                           .target_stderr = target_stderr, .threads = threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
+                             .normals = NORMAL_SHADING};
     render_stats stats;
     if (reference_render(&test_scene, "builtin:boxes", &test_camera, &req, &img, &stats, &e) != 0) {
         fprintf(stderr, "%s\n", e.message);

@@ -131,7 +131,7 @@ static void check_reference(void)
     CHECK(scene_load("builtin:sphere-on-plane", &s, &e) == 0);
     CHECK(scene_choose_camera(&s, NULL, 32, 32, &cam, &e) == 0);
     reference_request req = {.quantity = QUANTITY_AO, .sampling = {.spp = 512, .seed = 3, .threads = 2},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
+                             .normals = NORMAL_SHADING};
     CHECK(reference_render(&s, "builtin:sphere-on-plane", &cam, &req, &img, &stats, &e) == 0);
     const float *mask = image_channel_data(&img, CH_MASK), *py = image_channel_data(&img, CH_P_Y);
     const float *px = image_channel_data(&img, CH_P_X), *pz = image_channel_data(&img, CH_P_Z);

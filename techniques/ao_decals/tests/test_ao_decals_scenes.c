@@ -51,7 +51,7 @@ static void check_against_reference(const char *spec, exact_fn exact, int floor_
     CHECK_MSG(scene_load(spec, &s, &e) == 0, "%s", e.message);
     CHECK(scene_choose_camera(&s, NULL, SIZE, SIZE, &cam, &e) == 0);
     reference_request req = {.quantity = QUANTITY_AO, .sampling = {.spp = SPP, .seed = 5, .threads = 2},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
+                             .normals = NORMAL_SHADING};
     CHECK_MSG(reference_render(&s, spec, &cam, &req, &img, &stats, &e) == 0, "%s", e.message);
     const float *mask = image_channel_data(&img, CH_MASK), *v = image_channel_data(&img, CH_AO);
     const float *ve = image_channel_data(&img, CH_AO_STDERR);

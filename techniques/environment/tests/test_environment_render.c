@@ -56,7 +56,6 @@ static image render(const scene *s, const camera *cam, reference_quantity quanti
     reference_request req = {.quantity = quantity,
                              .sampling = {sm.spp, sm.offset, 17, 0.0, sm.threads},
                              .normals = NORMAL_SHADING,
-                             .max_distance = INFINITY,
                              .settings = env ? &env->header : &white_dome.header};
     image img;
     gt_error e;
@@ -233,7 +232,6 @@ static void test_specular_white_dome(void)
     reference_request req = {.quantity = QUANTITY_SPECULAR_OCCLUSION,
                              .sampling = {64, 0, 17, 0.0, 2},
                              .normals = NORMAL_SHADING,
-                             .max_distance = INFINITY,
                              .settings = &dome.header};
     image so;
     gt_error e;
@@ -307,7 +305,6 @@ static void test_bad_file(void)
     reference_request req = {.quantity = &reference_quantity_env_diffuse,
                              .sampling = {4, 0, 1, 0.0, 1},
                              .normals = NORMAL_SHADING,
-                             .max_distance = INFINITY,
                              .settings = &bad.header};
     image out;
     gt_error e;

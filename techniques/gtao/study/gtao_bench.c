@@ -69,7 +69,7 @@ static int time_heightfield(const scene *s, const char *spec, const bench_gbuffe
 {
     reference_request req = {.quantity = QUANTITY_HEIGHTFIELD_AO,
                              .sampling = {.spp = GTAO_BENCH_HEIGHTFIELD_SPP, .seed = 1, .threads = threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
+                             .normals = NORMAL_SHADING};
     image hf;
     render_stats stats;
     double t0 = seconds_now();

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "core/reference_schema.h"
-#include "raytracer/reference_render.h"
+#include "raytracer/ao_quantity.h"
 #include "project/scene_list.h"
 #include "scene/scene_loaders.h"
 #include "gtao/gtao_quality.h"
@@ -26,9 +26,9 @@ static int render_faded(const study_context *ctx, const gtao_scene_refs *s, cons
     scene sc;
     if (scene_load(spec, &sc, e) != 0)
         return -1;
+    ao_render_settings ao = {{QUANTITY_AO}, .max_distance = end, .fade_start = start};
     reference_request req = {.quantity = QUANTITY_AO, .sampling = {.spp = r->spp, .seed = 1, .threads = threads},
-                             .normals = NORMAL_SHADING, .max_distance = end,
-                             .fade_start = start};
+                             .normals = NORMAL_SHADING, .settings = &ao.header};
     render_stats stats;
     int rc = reference_render(&sc, spec, &s->in.cam, &req, out, &stats, e);
     scene_free(&sc);

@@ -96,7 +96,7 @@ int gtao_render_heightfield(const study_context *ctx, const char *spec, const ca
         return -1;
     reference_request req = {.quantity = QUANTITY_HEIGHTFIELD_AO,
                              .sampling = {.spp = spp, .seed = 1, .threads = ctx->threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
+                             .normals = NORMAL_SHADING};
     render_stats stats;
     int rc = reference_render(&s, spec, cam, &req, hf, &stats, e);
     scene_free(&s);

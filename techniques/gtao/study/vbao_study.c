@@ -161,7 +161,7 @@ static int render_thick(const study_context *ctx, const char *gtao_dir, int spp,
     heightfield_ao_options o = heightfield_ao_thickness(thickness);
     reference_request req = {.quantity = QUANTITY_HEIGHTFIELD_AO,
                              .sampling = {.spp = spp, .seed = 1, .threads = ctx->threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY, .settings = &o.header};
+                             .normals = NORMAL_SHADING, .settings = &o.header};
     render_stats stats;
     int rc = reference_render(&sc, spec, &s->refs.in.cam, &req, &s->hf_thick, &stats, e);
     scene_free(&sc);

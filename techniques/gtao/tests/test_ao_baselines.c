@@ -28,7 +28,7 @@ static int render_gbuffer(const char *spec, const char *camera_json, image *img,
     if (scene_load(spec, &s, &e) != 0 || camera_parse_json(camera_json, "test", &cam, &e) != 0)
         return fprintf(stderr, "%s\n", e.message), -1;
     reference_request req = {.quantity = QUANTITY_GBUFFER, .sampling = {.spp = 0, .seed = 1, .threads = 2},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
+                             .normals = NORMAL_SHADING};
     render_stats stats;
     int rc = reference_render(&s, spec, &cam, &req, img, &stats, &e);
     scene_free(&s);

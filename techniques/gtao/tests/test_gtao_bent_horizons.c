@@ -39,7 +39,7 @@ static void test_one_slice_is_halfway(void)
         return;
     }
     reference_request req = {.quantity = QUANTITY_GBUFFER, .sampling = {.spp = 0, .seed = 1, .threads = 2},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
+                             .normals = NORMAL_SHADING};
     render_stats stats;
     int rc = reference_render(&s, "builtin:boxes", &cam, &req, &img, &stats, &e);
     scene_free(&s);

@@ -42,7 +42,7 @@ static int render_boxes(image *img, ss_gbuffer *g)
     if (scene_load("builtin:boxes", &s, &e) != 0 || camera_parse_json(boxes_camera, "test", &cam, &e) != 0)
         return fprintf(stderr, "%s\n", e.message), -1;
     reference_request req = {.quantity = QUANTITY_GBUFFER, .sampling = {.spp = 0, .seed = 1, .threads = 2},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
+                             .normals = NORMAL_SHADING};
     render_stats stats;
     int rc = reference_render(&s, "builtin:boxes", &cam, &req, img, &stats, &e);
     scene_free(&s);

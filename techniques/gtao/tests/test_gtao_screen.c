@@ -33,7 +33,7 @@ static int render(const char *scene_spec, const char *camera_json, int spp, rend
     }
     reference_request req = {.quantity = spp > 0 ? QUANTITY_HEIGHTFIELD_AO : QUANTITY_GBUFFER,
                              .sampling = {.spp = spp, .seed = 7, .threads = 2},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
+                             .normals = NORMAL_SHADING};
     render_stats stats;
     int rc = reference_render(&s, scene_spec, &cam, &req, &r->img, &stats, &e);
     scene_free(&s);

@@ -39,7 +39,7 @@ static int heightfield(const char *refs, const char *gtao, const char *name, gt_
         return -1;
     }
     reference_request req = {.quantity = QUANTITY_HEIGHTFIELD_AO, .sampling = {.spp = 16, .seed = 1, .threads = 2},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
+                             .normals = NORMAL_SHADING};
     render_stats stats;
     image hf;
     int rc = reference_render(&s, spec, &in.cam, &req, &hf, &stats, e);

@@ -22,7 +22,7 @@ static int render_gbuffer(const char *spec, const char *camera_json, image *img,
         return -1;
     }
     reference_request req = {.quantity = QUANTITY_GBUFFER, .sampling = {.spp = 1, .seed = 7, .threads = 2},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
+                             .normals = NORMAL_SHADING};
     render_stats stats;
     int rc = reference_render(&s, spec, &cam, &req, img, &stats, &e);
     scene_free(&s);

@@ -82,7 +82,7 @@ static int render(const char *scene_spec, const char *camera_json, int spp, floa
     heightfield_ao_options o = heightfield_ao_thickness(thickness);
     reference_request req = {.quantity = spp > 0 ? QUANTITY_HEIGHTFIELD_AO : QUANTITY_GBUFFER,
                              .sampling = {.spp = spp, .seed = 11, .threads = 2}, .normals = NORMAL_SHADING,
-                             .max_distance = INFINITY, .settings = &o.header};
+                             .settings = &o.header};
     render_stats stats;
     int rc = reference_render(&s, scene_spec, &cam, &req, &r->img, &stats, &e);
     scene_free(&s);

@@ -31,7 +31,6 @@ static reference_request request(const study_context *ctx, multibounce_render_se
     return (reference_request){.quantity = QUANTITY_MULTIBOUNCE,
                                .sampling = {.spp = multibounce_quality_of(ctx->quality)->reference_spp, .seed = 1, .threads = ctx->threads},
                                .normals = NORMAL_SHADING,
-                               .max_distance = INFINITY,
                                .settings = &mb->header};
 }
 

@@ -36,8 +36,7 @@ static image render(reference_quantity q, const scene *s, const camera *cam, con
 {
     multibounce_render_settings mb = {{q}, {.bounces = bounces}}; /* with albedos: q is a multibounce */
     reference_request req = {.quantity = q, .sampling = {.spp = spp, .seed = 7, .threads = threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY,
-                             .settings = albedos ? &mb.header : NULL};
+                             .normals = NORMAL_SHADING, .settings = albedos ? &mb.header : NULL};
     gt_error e;
     if (albedos)
         CHECK(multibounce_parse_albedos(albedos, &mb.multibounce, &e) == 0);

@@ -71,7 +71,6 @@ static image render(const scene *s, const camera *cam, multibounce_settings mb, 
     reference_request req = {.quantity = QUANTITY_MULTIBOUNCE,
                              .sampling = {sm.spp, sm.offset, sm.seed, 0.0, sm.threads},
                              .normals = NORMAL_SHADING,
-                             .max_distance = INFINITY,
                              .settings = &settings.header};
     return render_request(s, cam, &req);
 }
@@ -465,8 +464,7 @@ static void test_shared_paths(void)
     image mb = render(&s, &cam, grey(4, 1, albedos), (sampling){256, 0, 4, 2});
     reference_request ao_req = {.quantity = QUANTITY_AO,
                                 .sampling = {256, 0, 5, 0.0, 2},
-                                .normals = NORMAL_SHADING,
-                                .max_distance = INFINITY};
+                                .normals = NORMAL_SHADING};
     image ao = render_request(&s, &cam, &ao_req);
     z_summary z = compare_renders(&mb, "ao.V", &ao, "ao.V");
     z_check(&z, 400, "cornell: multibounce ao.V vs the AO integrator");

@@ -34,7 +34,7 @@ static int render_reference(const char *path)
     multibounce_render_settings mb = {{QUANTITY_MULTIBOUNCE}, {.albedo_count = ALBEDOS, .bounces = 4}};
     memcpy(mb.multibounce.albedos, kAlbedos, sizeof kAlbedos);
     reference_request rq = {.quantity = QUANTITY_MULTIBOUNCE, .sampling = {.spp = 16, .seed = 1, .threads = 2},
-                            .normals = NORMAL_SHADING, .max_distance = INFINITY, .settings = &mb.header};
+                            .normals = NORMAL_SHADING, .settings = &mb.header};
     return test_render_reference_file("builtin:corner", 32, 24, &rq, path);
 }
 

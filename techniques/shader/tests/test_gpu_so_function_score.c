@@ -45,7 +45,7 @@ static int render(const char *path, reference_quantity q)
 {
     specular_occlusion_render_settings so = specular_occlusion_render_settings_make(0.5f, ENVIRONMENT_WHITE);
     reference_request rq = {.quantity = q, .sampling = {.spp = 16, .seed = 1, .threads = 2},
-                            .normals = NORMAL_SHADING, .max_distance = INFINITY,
+                            .normals = NORMAL_SHADING,
                             .settings = q == QUANTITY_SPECULAR_OCCLUSION ? &so.header : NULL};
     return test_render_reference_file("builtin:corner", 32, 24, &rq, path);
 }

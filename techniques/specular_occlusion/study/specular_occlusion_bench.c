@@ -15,7 +15,7 @@ static int best_rate(const scene *s, const char *spec, const camera *cam, int th
         specular_occlusion_render_settings_make(SPECOCC_BENCH_ROUGHNESS, ENVIRONMENT_WHITE);
     reference_request req = {.quantity = QUANTITY_SPECULAR_OCCLUSION,
                              .sampling = {.spp = SPECOCC_BENCH_SPP, .seed = 1, .threads = threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY, .settings = &so.header};
+                             .normals = NORMAL_SHADING, .settings = &so.header};
     *samples = *rays = 0.0;
     for (int r = 0; r < repeats; ++r) {
         image img;

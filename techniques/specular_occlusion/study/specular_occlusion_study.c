@@ -418,7 +418,7 @@ int so_study_render(const study_context *ctx, const scene *s, const char *spec, 
     so_study_resolution(ctx, &size, &spp);
     specular_occlusion_render_settings so = specular_occlusion_render_settings_make(roughness, ENVIRONMENT_SKY);
     reference_request req = {.quantity = q, .sampling = {.spp = spp, .seed = 1, .threads = ctx->threads},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY,
+                             .normals = NORMAL_SHADING,
                              .settings = q == QUANTITY_SPECULAR_OCCLUSION ? &so.header : NULL};
     return reference_render(s, spec, cam, &req, out, stats, e);
 }

@@ -39,7 +39,7 @@ static image render_in(const scene *s, const camera *cam, float roughness, int s
     image img = {0};
     specular_occlusion_render_settings so = specular_occlusion_render_settings_make(roughness, environment);
     reference_request req = {.quantity = QUANTITY_SPECULAR_OCCLUSION, .sampling = {.spp = spp, .seed = seed, .threads = 2},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY, .settings = &so.header};
+                             .normals = NORMAL_SHADING, .settings = &so.header};
     render_stats stats;
     if (reference_render(s, "test", cam, &req, &img, &stats, &e) != 0) {
         fprintf(stderr, "%s\n", e.message);

@@ -140,7 +140,7 @@ int check_same_vertex_sets(const scene *a, const scene *b, double normal_bound, 
 static int render_ao(const scene *s, const camera *cam, image *out)
 {
     reference_request req = {.quantity = QUANTITY_AO, .sampling = {.spp = 16, .seed = 7, .threads = 2},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
+                             .normals = NORMAL_SHADING};
     render_stats stats;
     gt_error e;
     return reference_render(s, "test", cam, &req, out, &stats, &e);

@@ -62,7 +62,7 @@ static int same_mesh(const scene_mesh *a, const scene_mesh *b)
 static int render_ao(const scene *s, const camera *cam, image *out)
 {
     reference_request req = {.quantity = QUANTITY_AO, .sampling = {.spp = 8, .seed = 3, .threads = 2},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
+                             .normals = NORMAL_SHADING};
     render_stats stats;
     gt_error e;
     return reference_render(s, "test", cam, &req, out, &stats, &e);

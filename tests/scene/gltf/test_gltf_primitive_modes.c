@@ -112,7 +112,7 @@ static int load(const char *number, scene *s)
 static int render_ao(const scene *s, const camera *cam, image *out)
 {
     reference_request req = {.quantity = QUANTITY_AO, .sampling = {.spp = 4, .seed = 11, .threads = 2},
-                             .normals = NORMAL_SHADING, .max_distance = INFINITY};
+                             .normals = NORMAL_SHADING};
     render_stats stats;
     gt_error e;
     return reference_render(s, "test", cam, &req, out, &stats, &e);
