@@ -31,6 +31,7 @@
 # README.md aside; tests/ holds its tests): a file in none is a configure
 # error, so a new file cannot silently escape the layering.
 
+include(${CMAKE_CURRENT_LIST_DIR}/gtlab_quality.cmake) # gtlab_quality_header()
 set(GTLAB_TECHNIQUE_PARTS LUTS REALTIME REFERENCE FIT STUDY SECTION)
 # The shared library each part stands on.
 set(gtlab_part_base_LUTS gtlab_luts)
@@ -176,6 +177,7 @@ function(gtlab_technique_part name part files uses)
   list(FILTER headers INCLUDE REGEX "\\.h$")
   if(headers)
     list(GET headers 0 header)
+    get_filename_component(header ${header} NAME) # included by its name, whatever subfolder holds it
     set_property(GLOBAL APPEND PROPERTY GTLAB_TECHNIQUE_PARTS_BUILT "${name}:${part}:${header}")
   endif()
 endfunction()

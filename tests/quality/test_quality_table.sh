@@ -30,7 +30,7 @@ C
 refuse() { # table line, expected message
   printf '%s\n' "demo a 1 2 spp fine" "$1" > "$dir/bad.txt"
   if read_table "$dir/bad.txt" 2> "$dir/err.txt"; then echo "accepted: $1" >&2; exit 1; fi
-  grep -qF "bad.txt:2: $2" "$dir/err.txt" || { echo "for '$1' expected '$2', got:" >&2; cat "$dir/err.txt" >&2; exit 1; }
+  tr -s ' \n' ' ' < "$dir/err.txt" | grep -qF "bad.txt:2: $2" || { echo "for '$1' expected '$2', got:" >&2; cat "$dir/err.txt" >&2; exit 1; }
 }
 refuse "demo b 1 spp too few columns"   "expected: technique setting preview production unit"
 refuse "demo b 1.5 2 spp not integers"  "b is counted in spp, so its values must be integers"
