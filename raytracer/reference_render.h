@@ -11,14 +11,12 @@
 #include "raytracer/render_loop.h"
 #include "scene/scene.h"
 
-/* The quantities defined in raytracer/<quantity>_quantity.c, by name for
- * callers: `.quantity = QUANTITY_AO`. A technique's quantity is declared by
- * its reference part (e.g. techniques/sphere_light/sphere_light_quantity.h). */
-extern const reference_quantity_descriptor reference_quantity_gbuffer, reference_quantity_ao,
-    reference_quantity_heightfield_ao;
+/* The quantity every other stands on, the G-buffer (gbuffer_quantity.c), by
+ * name for callers: `.quantity = QUANTITY_GBUFFER`. A technique's quantities
+ * are declared by its reference part (e.g. techniques/ao/ao_quantity.h:
+ * QUANTITY_AO). */
+extern const reference_quantity_descriptor reference_quantity_gbuffer;
 #define QUANTITY_GBUFFER (&reference_quantity_gbuffer)
-#define QUANTITY_AO (&reference_quantity_ao)
-#define QUANTITY_HEIGHTFIELD_AO (&reference_quantity_heightfield_ao)
 
 /* What to render. A quantity keeps its settings in its own struct, headed by
  * a reference_settings naming it (reference_quantity.h), pointed at by

@@ -1,5 +1,5 @@
 /* The height field a depth buffer stands for, shared by the height-field AO
- * reference (raytracer/heightfield_ao_integrator.c) and the screen-space
+ * reference (techniques/ao/heightfield_ao_integrator.c) and the screen-space
  * techniques (realtime/screen_space.c), two independent implementations that
  * must agree on what the depth buffer means:
  *  - each pixel is a planar piece: along an eye ray through any point of the

@@ -8,7 +8,7 @@
 
 #include "core/progress.h"
 #include "core/reference_schema.h"
-#include "raytracer/ao_quantity.h"
+#include "ao/ao_quantity.h"
 #include "project/scene_list.h"
 
 enum { SERIES_SEED = 1, REFERENCE_SEED = 7 };

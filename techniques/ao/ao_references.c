@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "ao/ao_quantity.h"
 #include "ao/ao_quality.h"
 #include "core/files/exr_io.h"
 #include "core/files/image_io.h"

@@ -2,7 +2,7 @@
  * the exact forms they approximate (issue 17, item 1). Every function
  * returns an OCCLUSION a in [0, 1]: the share of the cosine-weighted
  * hemisphere the occluder covers, so the visibility V_d of gtlab's AO
- * reference (raytracer/ao_integrator.h) is 1 - a for one occluder. Decals
+ * reference (techniques/ao/ao_integrator.h) is 1 - a for one occluder. Decals
  * are blended multiplicatively (Src: Zero, Dst: SrcColor): N decals give
  * prod (1 - a_i), not the union's 1 - a_union (reported, not hidden).
  *

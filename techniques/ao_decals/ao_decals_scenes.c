@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ao/ao_quantity.h"
 #include "ao_decals/ao_decals_study.h"
 #include "core/files/image_io.h"
 #include "core/reference_schema.h"

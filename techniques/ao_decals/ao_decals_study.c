@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ao/ao_quantity.h"
 #include "ao_decals/ao_decals.h"
 #include "core/reference_schema.h"
 #include "metrics/ssim.h"

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ao/ao_quantity.h"
 #include "core/optics/environment_map.h"
 #include "core/progress.h"
 #include "core/roughness_setting.h"

@@ -15,7 +15,7 @@
  *  - the back face: the paper's listing offsets q by -v T (v the view vector
  *    of the centre pixel: VBAO_BACK_VIEW); VBAO_BACK_DEPTH moves q along its
  *    own eye ray to depth + T, the slab of the thickness-T height-field
- *    reference (raytracer/heightfield_ao_integrator.h). Scaling q from the
+ *    reference (techniques/ao/heightfield_ao_integrator.h). Scaling q from the
  *    eye keeps it in the slice plane, so the brute force converges to that
  *    reference;
  *  - what a sample occupies: its segment from front to back face, as

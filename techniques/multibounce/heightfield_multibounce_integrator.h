@@ -2,7 +2,7 @@
  * (multibounce_integrator.h: Lambertian surfaces of albedo rho
  * under a white dome of radiance 1, L / rho) of the world a screen-space
  * technique sees, the depth buffer as a height field of infinite thickness
- * (raytracer/heightfield_ao_integrator.h). A path's rays are blocked where
+ * (techniques/ao/heightfield_ao_integrator.h). A path's rays are blocked where
  * the height-field AO reference blocks them, and a blocked ray goes on from
  * where it enters the height field's solid (heightfield_first_hit): a
  * pixel's surface (its tangent plane and normals), or the side of a pixel's
@@ -25,7 +25,7 @@
 #ifndef GTLAB_MULTIBOUNCE_HEIGHTFIELD_MULTIBOUNCE_INTEGRATOR_H
 #define GTLAB_MULTIBOUNCE_HEIGHTFIELD_MULTIBOUNCE_INTEGRATOR_H
 
-#include "raytracer/heightfield_ao_integrator.h"
+#include "ao/heightfield_ao_integrator.h"
 #include "multibounce/multibounce_integrator.h"
 
 /* Sets plan's world to the height field of hs (which must outlive the

@@ -1,6 +1,7 @@
 /* The scaling bench (scale_bench.h). */
 #include "scale/scale_bench.h"
 
+#include "ao/ao_quantity.h"
 #include "core/progress.h"
 #include "core/threads.h"
 #include "raytracer/distributed_render.h"

@@ -8,7 +8,7 @@
 #include "core/sampling/hemisphere_sampling.h"
 #include "core/progress.h"
 #include "core/sampling/sobol.h"
-#include "raytracer/ao_integrator.h"
+#include "ao/ao_integrator.h"
 #include "raytracer/gbuffer.h"
 
 /* gtlab renders GTLAB_SPP samples (2 rays each) per pixel, a short but

@@ -4,6 +4,7 @@
  * camera JSON (scene/camera.h), the sample blocks
  * (raytracer/sample_blocks.h), the quantity, and the exact accumulators with
  * their scale exponents and normalised layers (core/statistics/mc_film.h). */
+#include "ao/ao_quantity.h"
 #include "core/files/exr_io.h"
 #include "core/statistics/mc_film.h"
 #include "core/reference_schema.h"

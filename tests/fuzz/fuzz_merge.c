@@ -19,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ao/ao_quantity.h"
 #include "core/reference_schema.h"
 #include "fuzz_target.h"
 #include "raytracer/reference_merge.h"

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "ao/ao_quantity.h"
 #include "core/files/exr_io.h"
 #include "raytracer/reference_merge.h"
 #include "raytracer/reference_render.h"

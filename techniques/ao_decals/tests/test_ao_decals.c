@@ -16,6 +16,7 @@
  *    union does (Monte Carlo): reported by the study, checked here. */
 #include <math.h>
 
+#include "ao/ao_quantity.h"
 #include "ao_decals/ao_decals.h"
 #include "core/reference_schema.h"
 #include "luts/blue_noise.h"

@@ -12,6 +12,7 @@
  *  - the scene table describes the same occluders the meshes hold (bounds). */
 #include <math.h>
 
+#include "ao/ao_quantity.h"
 #include "ao_decals/ao_decals.h"
 #include "core/reference_schema.h"
 #include "raytracer/reference_render.h"

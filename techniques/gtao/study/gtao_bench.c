@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ao/ao_quantity.h"
 #include "core/progress.h"
 #include "raytracer/reference_render.h"
 #include "scene/scene_loaders.h"

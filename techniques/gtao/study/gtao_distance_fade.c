@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "core/reference_schema.h"
-#include "raytracer/ao_quantity.h"
+#include "ao/ao_quantity.h"
 #include "project/scene_list.h"
 #include "scene/scene_loaders.h"
 #include "gtao/gtao_quality.h"

@@ -2,7 +2,7 @@
  * "Minimizing Artifacts": "150 inches of full effect, from 150 to 200
  * soften sample contribution from 1 to 0", "ensure ground truth near
  * occlusion") scored like for like: a 3-D reference whose occluders fade
- * the same way with distance (raytracer/ao_integrator.h, fade_start), with
+ * the same way with distance (techniques/ao/ao_integrator.h, fade_start), with
  * the fade's end D a quarter of the camera's distance to its target and its
  * start 0.75 D (the talk's 150/200), rendered at the AO reference's camera.
  * GTAO (regular slices, no pattern or denoiser, `slices` x `steps` per

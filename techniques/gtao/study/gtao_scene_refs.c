@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "ao/ao_quantity.h"
 #include "core/files/exr_io.h"
 #include "core/reference_schema.h"
 #include "raytracer/reference_render.h"

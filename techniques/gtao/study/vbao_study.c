@@ -6,11 +6,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ao/ao_quantity.h"
 #include "core/files/exr_io.h"
 #include "core/progress.h"
 #include "core/reference_schema.h"
 #include "metrics/noise_corrected.h"
-#include "raytracer/heightfield_ao_integrator.h"
+#include "ao/heightfield_ao_integrator.h"
 #include "raytracer/reference_render.h"
 #include "gtao/vbao.h"
 #include "project/scene_list.h"

@@ -10,7 +10,7 @@
  *    error, metrics/cluster_mean.h);
  *  - VBAO's error split at its thickness T: the estimator's (VBAO medium,
  *    gtlab's choices, against the thickness-T height-field reference this
- *    study renders, raytracer/heightfield_ao_integrator.h) and the screen
+ *    study renders, techniques/ao/heightfield_ao_integrator.h) and the screen
  *    space's (that reference against the 3-D one), each less the
  *    references' noise, beside the infinite height field's;
  *  - the best constant thickness per scene: a golden-section search over

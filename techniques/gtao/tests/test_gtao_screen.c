@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ao/ao_quantity.h"
 #include "gtao/gtao.h"
 #include "gtao/hbao.h"
 #include "gtao/horizon_integrator.h"

@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "ao/ao_quantity.h"
 #include "ao/ao_references.h"
 #include "core/files/exr_io.h"
 #include "gtao/gtao_baselines.h"

@@ -13,9 +13,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ao/ao_quantity.h"
 #include "core/reference_schema.h"
 #include "gtao/vbao.h"
-#include "raytracer/heightfield_ao_integrator.h"
+#include "ao/heightfield_ao_integrator.h"
 #include "raytracer/reference_render.h"
 #include "scene/scene_loaders.h"
 #include "tests/check.h"

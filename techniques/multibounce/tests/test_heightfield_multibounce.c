@@ -19,6 +19,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "ao/ao_quantity.h"
 #include "core/reference_schema.h"
 #include "multibounce/multibounce_quantity.h"
 #include "raytracer/reference_render.h"

@@ -18,6 +18,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "ao/ao_quantity.h"
 #include "core/sampling/hemisphere_sampling.h"
 #include "multibounce/multibounce_quantity.h"
 #include "raytracer/reference_merge.h"

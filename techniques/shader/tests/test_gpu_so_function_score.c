@@ -22,6 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ao/ao_quantity.h"
 #include "core/files/exr_io.h"
 #include "core/reference_schema.h"
 #include "gpu/function_shader.h"

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ao/ao_quantity.h"
 #include "core/files/exr_io.h"
 #include "core/files/path_name.h"
 #include "core/plugin_abi.h"

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ao/ao_quantity.h"
 #include "project/gbuffer_input.h"
 #include "core/files/image_io.h"
 #include "core/statistics/mc_film.h"

@@ -2,6 +2,7 @@
  * every failure (file, line, why) and returns how many there were; the test
  * CHECKs that the count is 0 (tests/check.h counts per translation unit). */
 #define _POSIX_C_SOURCE 200809L
+#include "ao/ao_quantity.h"
 #include "gltf_equivalence.h"
 
 #include <math.h>

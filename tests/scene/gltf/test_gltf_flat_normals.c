@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ao/ao_quantity.h"
 #include "raytracer/reference_render.h"
 #include "scene/builtin_scenes.h"
 #include "scene/gltf/gltf_writer.h"

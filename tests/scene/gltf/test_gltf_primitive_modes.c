@@ -17,6 +17,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "ao/ao_quantity.h"
 #include "raytracer/reference_render.h"
 #include "scene/gltf/gltf_reader.h"
 #include "scene/gltf/primitive_topology.h"

@@ -17,16 +17,16 @@
  * [fade_start, max_distance], each ray takes its own cutoff T from a third
  * Sobol' dimension pair and counts as unoccluded beyond it: an unbiased
  * estimate of the faded visibility that still needs only occlusion rays. */
-#ifndef GTLAB_RAYTRACER_AO_INTEGRATOR_H
-#define GTLAB_RAYTRACER_AO_INTEGRATOR_H
+#ifndef GTLAB_AO_AO_INTEGRATOR_H
+#define GTLAB_AO_AO_INTEGRATOR_H
 
 #include "raytracer/render_loop.h"
-#include "raytracer/slice_horizons.h"
+#include "ao/slice_horizons.h"
 
 typedef struct {
     float max_distance; /* V = 1 beyond it; INFINITY for none */
     /* Per G-buffer pixel, the horizons of the height-field control variate
-     * (raytracer/ao_control_variate.h): ao.V and ao.Vuniform samples become
+     * (techniques/ao/ao_control_variate.h): ao.V and ao.Vuniform samples become
      * V - g + G. NULL: plain sampling. */
     const slice_horizons *control_variate;
     float fade_start; /* occlusion fades from 1 here to 0 at max_distance; 0 or >= max_distance: hard cutoff */

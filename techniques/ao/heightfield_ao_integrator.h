@@ -19,8 +19,8 @@
  * light passes behind thin objects (the occluder model of visibility-bitmask
  * AO, techniques/gtao/vbao.h). T = INFINITY is the height field above, bit
  * for bit. */
-#ifndef GTLAB_RAYTRACER_HEIGHTFIELD_AO_INTEGRATOR_H
-#define GTLAB_RAYTRACER_HEIGHTFIELD_AO_INTEGRATOR_H
+#ifndef GTLAB_AO_HEIGHTFIELD_AO_INTEGRATOR_H
+#define GTLAB_AO_HEIGHTFIELD_AO_INTEGRATOR_H
 
 #include "raytracer/reference_quantity.h"
 #include "raytracer/render_loop.h"

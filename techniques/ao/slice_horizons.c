@@ -1,6 +1,6 @@
 /* The height-field control variate's g and its exact integrals; see
  * slice_horizons.h. */
-#include "raytracer/slice_horizons.h"
+#include "ao/slice_horizons.h"
 
 #include <math.h>
 

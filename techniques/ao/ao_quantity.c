@@ -1,6 +1,6 @@
 /* `gtlab render ao`: ambient occlusion and bent normals traced in the 3-D
- * scene (raytracer/ao_integrator.h). */
-#include "raytracer/ao_quantity.h"
+ * scene (techniques/ao/ao_integrator.h). */
+#include "ao/ao_quantity.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -8,7 +8,7 @@
 
 #include "core/number_parse.h"
 #include "core/reference_schema.h"
-#include "raytracer/ao_integrator.h"
+#include "ao/ao_integrator.h"
 
 _Static_assert(offsetof(ao_render_settings, header) == 0, "the header comes first");
 

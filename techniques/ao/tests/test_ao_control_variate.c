@@ -1,5 +1,5 @@
 /* The AO reference with the height-field control variate
- * (`--control-variate heightfield`, raytracer/ao_control_variate.h):
+ * (`--control-variate heightfield`, techniques/ao/ao_control_variate.h):
  *  - unbiased on every built-in scene: per pixel, the mean over several
  *    seeds equals plain sampling's within standard errors (the image-mean
  *    difference within 4 of its standard errors, no pixel beyond 6 and the
@@ -16,7 +16,7 @@
 
 #include "core/reference_schema.h"
 #include "raytracer/reference_merge.h"
-#include "raytracer/ao_quantity.h"
+#include "ao/ao_quantity.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_loaders.h"
 #include "tests/check.h"

@@ -35,8 +35,8 @@
  * variance (beta here is the coefficient, not beta(psi) above). A pixel
  * whose normal faces away from the eye (a <= 1e-3) gets
  * g = 1, G = 1: its samples are left as they are. */
-#ifndef GTLAB_RAYTRACER_SLICE_HORIZONS_H
-#define GTLAB_RAYTRACER_SLICE_HORIZONS_H
+#ifndef GTLAB_AO_SLICE_HORIZONS_H
+#define GTLAB_AO_SLICE_HORIZONS_H
 
 #include "core/frame.h"
 #include "core/vec3.h"

@@ -1,4 +1,4 @@
-/* The height-field control variate's mathematics (raytracer/slice_horizons.h):
+/* The height-field control variate's mathematics (techniques/ao/slice_horizons.h):
  *  - each half-slice's integrals of g (kinks split in closed form, then
  *    6-point Gauss-Legendre) against an independent adaptive Gauss-Kronrod
  *    double integral of max(n.w, 0) sin(theta) over theta <= h, split where
@@ -13,7 +13,7 @@
 
 #include "core/sampling/hemisphere_sampling.h"
 #include "core/sampling/quadrature.h"
-#include "raytracer/slice_horizons.h"
+#include "ao/slice_horizons.h"
 #include "tests/check.h"
 
 static uint32_t rng_state = 12345u;

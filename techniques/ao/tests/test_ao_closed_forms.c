@@ -11,7 +11,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "raytracer/ao_quantity.h"
+#include "ao/ao_quantity.h"
 #include "core/sampling/hemisphere_sampling.h"
 #include "scene/scene_loaders.h"
 #include "tests/check.h"

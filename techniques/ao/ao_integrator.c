@@ -1,4 +1,4 @@
-#include "raytracer/ao_integrator.h"
+#include "ao/ao_integrator.h"
 
 #include "core/sampling/hemisphere_sampling.h"
 #include "core/reference_schema.h"
@@ -13,7 +13,7 @@ static const mc_quantity ao_cv_quantities[AO_QUANTITY_COUNT] = {
     {CH_AO, 1}, {CH_AO_UNIFORM, 1}, {CH_BENT_X, 0}, {CH_BENT_Y, 0}, {CH_BENT_Z, 0}};
 
 /* V(w) - beta (g(w) - G) for both visibility estimators of a batch
- * (raytracer/slice_horizons.h); the ray directions are the sample's. */
+ * (techniques/ao/slice_horizons.h); the ray directions are the sample's. */
 static void apply_control_variate(const slice_horizons *h, const struct RTCRay *rays, int count, float *values)
 {
     frame f = slice_horizons_frame(h);

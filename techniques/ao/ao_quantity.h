@@ -8,17 +8,23 @@
  *   reference_request req = {.quantity = QUANTITY_AO, ..., .settings = &ao.header};
  *
  * A request without them (settings NULL) renders with the defaults. */
-#ifndef GTLAB_RAYTRACER_AO_QUANTITY_H
-#define GTLAB_RAYTRACER_AO_QUANTITY_H
+#ifndef GTLAB_AO_AO_QUANTITY_H
+#define GTLAB_AO_AO_QUANTITY_H
 
-#include "raytracer/ao_control_variate.h"
+#include "ao/ao_control_variate.h"
 #include "raytracer/reference_render.h"
+
+/* The two AO quantities (ao_quantity.c, heightfield_ao_quantity.c), by name
+ * for callers: `.quantity = QUANTITY_AO`. */
+extern const reference_quantity_descriptor reference_quantity_ao, reference_quantity_heightfield_ao;
+#define QUANTITY_AO (&reference_quantity_ao)
+#define QUANTITY_HEIGHTFIELD_AO (&reference_quantity_heightfield_ao)
 
 typedef struct {
     reference_settings header; /* names reference_quantity_ao */
     float max_distance;        /* rays farther count as unoccluded; INFINITY: none */
     float fade_start;          /* occlusion fades linearly to 0 from here to max_distance
-                                  (raytracer/ao_integrator.h); 0: a hard cutoff */
+                                  (techniques/ao/ao_integrator.h); 0: a hard cutoff */
     ao_control_variate control_variate; /* none (plain sampling) or heightfield */
 } ao_render_settings;
 

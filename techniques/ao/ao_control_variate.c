@@ -1,13 +1,13 @@
 /* The height-field control variate's per-pixel horizons; see
  * ao_control_variate.h. */
-#include "raytracer/ao_control_variate.h"
+#include "ao/ao_control_variate.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "raytracer/ao_integrator.h"
-#include "raytracer/heightfield_ao_integrator.h"
+#include "ao/ao_integrator.h"
+#include "ao/heightfield_ao_integrator.h"
 
 static const char *const mode_names[] = {"none", "heightfield"};
 

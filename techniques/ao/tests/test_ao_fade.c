@@ -1,4 +1,4 @@
-/* The AO reference's distance fade (raytracer/ao_integrator.h, issue 25,
+/* The AO reference's distance fade (techniques/ao/ao_integrator.h, issue 25,
  * item 12) against a closed form: a floor point at distance d from one wall
  * of the closed box [-1, 1]^3, with every other surface farther than the
  * fade's end, sees
@@ -11,7 +11,7 @@
  * bit-identical output to the hard cutoff the renderer had before. */
 #include <math.h>
 
-#include "raytracer/ao_quantity.h"
+#include "ao/ao_quantity.h"
 #include "tests/check.h"
 #include "tests/raytracer/closed_box.h"
 

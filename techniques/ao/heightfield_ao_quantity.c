@@ -1,5 +1,5 @@
 /* `gtlab render heightfield-ao`: AO where only the depth buffer, taken as a
- * height field, blocks rays (raytracer/heightfield_ao_integrator.h). Shares
+ * height field, blocks rays (techniques/ao/heightfield_ao_integrator.h). Shares
  * the parse of --max-distance and the settings header with ao; --thickness T makes each
  * pixel a slab of depth T (the header's settings then end in thickness=T). */
 #include <math.h>
@@ -8,8 +8,8 @@
 
 #include "core/number_parse.h"
 #include "core/reference_schema.h"
-#include "raytracer/ao_quantity.h"
-#include "raytracer/heightfield_ao_integrator.h"
+#include "ao/ao_quantity.h"
+#include "ao/heightfield_ao_integrator.h"
 
 _Static_assert(offsetof(heightfield_ao_options, header) == 0, "the header comes first");
 

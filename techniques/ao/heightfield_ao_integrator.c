@@ -1,6 +1,6 @@
 /* Height-field AO reference after the GTAO talk's screen-space ray marcher
  * (seeds/001, "Methodology"); see heightfield_ao_integrator.h. */
-#include "raytracer/heightfield_ao_integrator.h"
+#include "ao/heightfield_ao_integrator.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -1,5 +1,5 @@
 /* The height-field AO reference with a finite thickness T
- * (raytracer/heightfield_ao_integrator.h, `render heightfield-ao
+ * (techniques/ao/heightfield_ao_integrator.h, `render heightfield-ao
  * --thickness T`):
  *  - closed form: a floor seen from above with a raised band (its top face
  *    at height 1); a ray from the floor towards the band passes under the
@@ -15,8 +15,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ao/ao_quantity.h"
 #include "core/reference_schema.h"
-#include "raytracer/heightfield_ao_integrator.h"
+#include "ao/heightfield_ao_integrator.h"
 #include "raytracer/reference_render.h"
 #include "scene/scene_loaders.h"
 #include "tests/check.h"

@@ -1,17 +1,17 @@
 /* The AO reference's control variate (`gtlab render ao --control-variate`,
  * issue 13 part 3): each pixel's height-field horizons, found once before
  * sampling, turn each AO sample V(w) into V(w) - g(w) + G
- * (raytracer/slice_horizons.h), for ao.V and ao.Vuniform; the bent normal
+ * (techniques/ao/slice_horizons.h), for ao.V and ao.Vuniform; the bent normal
  * stays plain. The corrected samples go through the same exact film, so
  * standard errors come from them and merges stay exact; the mode is
  * recorded in the header (ATTR_CONTROL_VARIATE) and merge refuses to mix
  * modes. */
-#ifndef GTLAB_RAYTRACER_AO_CONTROL_VARIATE_H
-#define GTLAB_RAYTRACER_AO_CONTROL_VARIATE_H
+#ifndef GTLAB_AO_AO_CONTROL_VARIATE_H
+#define GTLAB_AO_AO_CONTROL_VARIATE_H
 
 #include "core/error.h"
 #include "raytracer/gbuffer.h"
-#include "raytracer/slice_horizons.h"
+#include "ao/slice_horizons.h"
 
 typedef enum { AO_CONTROL_VARIATE_NONE, AO_CONTROL_VARIATE_HEIGHTFIELD } ao_control_variate;
 
@@ -41,7 +41,7 @@ enum { AO_CONTROL_VARIATE_PILOT = 32 };
 #define AO_CONTROL_VARIATE_PILOT_SEED 0x5bd1e995u
 
 /* Finds every covered pixel's horizons in the depth buffer of gb (the
- * height field of raytracer/heightfield_ao_integrator.h, occluders within
+ * height field of techniques/ao/heightfield_ao_integrator.h, occluders within
  * max_distance) and its coefficients from its pilot traced in es, with
  * `threads` threads; deterministic for any count. Returns 0, or -1 when
  * out of memory. */
