@@ -5,13 +5,14 @@
 #include <string.h>
 
 #include "core/progress.h"
+#include "environment/environment_quality.h"
 
 enum { CONSTANT_WIDTH = 256 }; /* blocks of 8 x 8 texels: 32 x 16 of them, as fine as a real map's */
 
-env_approx_settings env_approx_default_settings(int production)
+env_approx_settings env_approx_default_settings(study_quality quality)
 {
     env_approx_settings s = {.map_width = 64, .map_reduction = 3, .prefiltered_width = 256, .prefiltered_levels = 6,
-                             .prefiltered_samples = production ? 1024 : 512};
+                             .prefiltered_samples = environment_quality_of(quality)->prefiltered_samples};
     return s;
 }
 

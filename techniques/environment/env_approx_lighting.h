@@ -11,14 +11,15 @@
 #include "core/optics/environment_map.h"
 #include "core/error.h"
 #include "environment/env_approx.h"
+#include "project/study_context.h"
 
 typedef struct {
     int map_width, map_reduction;          /* irradiance map: width x width/2, blocks of 2^reduction texels */
     int prefiltered_width, prefiltered_levels, prefiltered_samples;
 } env_approx_settings;
 
-/* 64, 3; 256, 6, 512 (production: 1024 samples). */
-env_approx_settings env_approx_default_settings(int production);
+/* 64, 3; 256, 6, and the quality's prefiltered_samples (the quality table). */
+env_approx_settings env_approx_default_settings(study_quality quality);
 
 typedef struct {
     sh9_rgb sh;

@@ -14,6 +14,7 @@
 #include "core/progress.h"
 #include "core/roughness_setting.h"
 #include "environment/environment_light.h"
+#include "environment/environment_quality.h"
 #include "environment/environment_quantity.h"
 #include "raytracer/reference_render.h"
 #include "project/scene_list.h"
@@ -63,7 +64,7 @@ static int load_environment(env_state *st, const char *name, const char *file, g
     snprintf(env->spec, sizeof env->spec, "%.*s", (int)sizeof env->spec - 1, file ? file : name);
     snprintf(row->name, sizeof row->name, "%.*s", (int)sizeof row->name - 1, name);
     st->out->environment_count++;
-    env_approx_settings s = env_approx_default_settings(st->ctx->quality == QUALITY_PRODUCTION);
+    env_approx_settings s = env_approx_default_settings(st->ctx->quality);
     if (env_approx_precompute(&env->map, &s, &st->dfg, st->ctx->threads, &env->lighting, e) != 0)
         return -1;
     row->sh_seconds = env->lighting.sh_seconds, row->map_seconds = env->lighting.map_seconds;
@@ -74,9 +75,10 @@ static int load_environment(env_state *st, const char *name, const char *file, g
 static int load_environments(env_state *st, gt_error *e)
 {
     static const char *const builtin[3] = {"white", "sky", "sun"};
-    int production = st->ctx->quality == QUALITY_PRODUCTION;
-    const char *const *blender = production ? blender_all : blender_preview;
-    int count = production ? 8 : 2;
+    int all = environment_quality_of(st->ctx->quality)->all_blender_environments;
+    const char *const *blender = all ? blender_all : blender_preview;
+    int count = all ? (int)(sizeof blender_all / sizeof blender_all[0])
+                    : (int)(sizeof blender_preview / sizeof blender_preview[0]);
     for (int i = 0; i < 3; ++i)
         if (load_environment(st, builtin[i], NULL, e) != 0)
             return -1;
@@ -192,7 +194,7 @@ static int run_scene(env_state *st, const study_scene_entry *entry, gt_error *e)
 
 static int run_scenes(env_state *st, gt_error *e)
 {
-    if (st->ctx->quality != QUALITY_PRODUCTION && !st->ctx->scenes) { /* a project's scenes run at any quality */
+    if (!environment_quality_of(st->ctx->quality)->all_scenes && !st->ctx->scenes) { /* a project's run all */
         for (size_t i = 0; i < sizeof preview_scenes / sizeof preview_scenes[0]; ++i)
             if (run_scene(st, study_scene_find(st->ctx, preview_scenes[i]), e) != 0)
                 return -1;
@@ -240,11 +242,11 @@ static void free_state(env_state *st)
 int env_approx_study(const study_context *ctx, env_study_result *out, gt_error *e)
 {
     double t0 = seconds_now();
-    int preview = ctx->quality != QUALITY_PRODUCTION;
+    const environment_quality *q = environment_quality_of(ctx->quality);
     memset(out, 0, sizeof *out);
     snprintf(out->image_scene, sizeof out->image_scene, "%s",
              ctx->scenes ? study_scene_at(ctx, 0)->label : ENV_IMAGE_SCENE);
-    out->size = preview ? 48 : 128, out->spp = preview ? 512 : 4096, out->bounces = 3;
+    out->size = q->image_size, out->spp = q->reference_spp, out->bounces = 3;
     env_state *st = calloc(1, sizeof *st);
     if (!st)
         return gt_error_set(e, "environment study", "out of memory");

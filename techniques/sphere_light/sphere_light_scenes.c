@@ -17,6 +17,7 @@
 #include "ltc/ltc_sphere.h"
 #include "metrics/flip.h"
 #include "metrics/ssim.h"
+#include "sphere_light/sphere_light_quality.h"
 #include "sphere_light/sphere_light_quantity.h"
 #include "scene/scene_loaders.h"
 #include "sphere_light/sphere_light.h"
@@ -76,7 +77,7 @@ static int render_floor(const study_context *ctx, const light_scene *ls, const c
     reference_request req;
     memset(&req, 0, sizeof req);
     req.quantity = QUANTITY_SPHERE_LIGHT;
-    req.sampling.spp = ctx->quality == QUALITY_PREVIEW ? 64 : 1024;
+    req.sampling.spp = sphere_light_quality_of(ctx->quality)->scene_spp;
     req.sampling.seed = 1;
     req.sampling.threads = ctx->threads;
     req.normals = NORMAL_SHADING;
@@ -175,10 +176,10 @@ static int compare_scene(const study_context *ctx, const char *dir, const light_
                          const decima_sphere_constants *refit, const ltc_table *ltc, sphere_scene_row *row,
                          gt_error *e)
 {
-    const int preview = ctx->quality == QUALITY_PREVIEW;
+    const sphere_light_quality *q = sphere_light_quality_of(ctx->quality);
     /* Half a unit above the floor, looking 6 units ahead: grazing view. */
     camera cam = {v3(0.0f, 0.5f, 6.0f), v3(0.0f, 0.0f, -2.0f), v3(0.0f, 1.0f, 0.0f), (float)(40.0 * M_PI / 180.0),
-                  preview ? 192 : 480, preview ? 112 : 280};
+                  q->floor_width, q->floor_height};
     image ref;
     if (render_floor(ctx, ls, &cam, &ref, e) != 0)
         return -1;
@@ -201,7 +202,7 @@ static int render_sphere_on_plane(const study_context *ctx, const camera *cam, i
     reference_request req;
     memset(&req, 0, sizeof req);
     req.quantity = QUANTITY_SPHERE_LIGHT;
-    req.sampling = (sampling_settings){.spp = ctx->quality == QUALITY_PREVIEW ? 64 : 1024, .seed = 1,
+    req.sampling = (sampling_settings){.spp = sphere_light_quality_of(ctx->quality)->scene_spp, .seed = 1,
                                        .threads = ctx->threads};
     req.normals = NORMAL_SHADING;
     sphere_light_quantity_settings light =
@@ -242,9 +243,9 @@ static int compare_shadows(const char *dir, const image *plain, const image *sha
 /* What none of the approximations models: the same light with --shadows. */
 static int shadow_comparison(const study_context *ctx, const char *dir, sphere_shadow_result *out, gt_error *e)
 {
-    const int preview = ctx->quality == QUALITY_PREVIEW;
+    const sphere_light_quality *q = sphere_light_quality_of(ctx->quality);
     camera cam = {v3(0.0f, 3.0f, 7.0f), v3(0.0f, 0.7f, 0.0f), v3(0.0f, 1.0f, 0.0f), (float)(40.0 * M_PI / 180.0),
-                  preview ? 160 : 400, preview ? 96 : 240};
+                  q->shadows_width, q->shadows_height};
     image plain, shadowed;
     if (render_sphere_on_plane(ctx, &cam, 0, &plain, e) != 0)
         return -1;

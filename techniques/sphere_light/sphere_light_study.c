@@ -18,6 +18,7 @@
 #include "ltc/ltc_fit.h"
 #include "ltc/ltc_sphere.h"
 #include "ltc/ltc_study.h"
+#include "sphere_light/sphere_light_quality.h"
 #include "sphere_light/sphere_light_reference.h"
 #include "sphere_light/sphere_light.h"
 
@@ -370,14 +371,14 @@ void sphere_cost_study(long count, int repeats, sphere_cost *out)
 
 /* ---- The stage ---- */
 
-/* The LTC table (32^2 at preview, 64^2 as shipped), its files
+/* The LTC table (its side from the quality table; 64^2 as shipped), its files
  * <output>/luts/ltc_ggx.{exr,h,hlsl,glsl} and its held-out scores. */
 static int fit_ltc(const study_context *ctx, const sphere_fit_settings *fs, const sphere_fit_outcome *fit,
                    ltc_table *t, sphere_ltc_result *out, gt_error *e)
 {
     sphere_light_sample *test = NULL;
     char luts[4096];
-    out->table_size = ctx->quality == QUALITY_PREVIEW ? 32 : 64;
+    out->table_size = sphere_light_quality_of(ctx->quality)->ltc_table_size;
     if (study_make_dir(ctx, "luts", luts, sizeof luts, e) != 0 ||
         ltc_table_fit_and_write(luts, out->table_size, ctx->threads, t, &out->fit_seconds, e) != 0)
         return -1;
@@ -395,9 +396,9 @@ static int fit_ltc(const study_context *ctx, const sphere_fit_settings *fs, cons
 static int ltc_stage_parts(const study_context *ctx, const char *dir, const ltc_table *ltc, sphere_light_result *out,
                            gt_error *e)
 {
-    const int preview = ctx->quality == QUALITY_PREVIEW;
-    out->map_size = preview ? 16 : 40;
-    out->map_samples = preview ? 256u : 1024u;
+    const sphere_light_quality *q = sphere_light_quality_of(ctx->quality);
+    out->map_size = q->map_size;
+    out->map_samples = (uint32_t)q->map_samples;
     for (int k = 0; k < SPHERE_MAPS; ++k) {
         out->maps[k] = map_definitions[k];
         if (run_map(ctx, dir, &out->maps[k], out->map_size, out->map_samples, &out->fit.fit.constants, ltc, e) != 0)
@@ -408,16 +409,16 @@ static int ltc_stage_parts(const study_context *ctx, const char *dir, const ltc_
 
 int sphere_light_study(const study_context *ctx, sphere_light_result *out, gt_error *e)
 {
-    const int preview = ctx->quality == QUALITY_PREVIEW;
+    const sphere_light_quality *q = sphere_light_quality_of(ctx->quality);
     char dir[4096];
     if (study_make_dir(ctx, SPHERE_LIGHT_DIR, dir, sizeof dir, e) != 0)
         return -1;
-    int steps = preview ? 10 : 16;
+    int steps = q->noh_steps;
     out->sweep = (sphere_noh_sweep){steps, steps, steps, steps, 256};
     if (sphere_noh_study(&out->sweep, dir, &out->noh, e) != 0)
         return -1;
-    out->fit_settings = (sphere_fit_settings){preview ? 1500 : 20000, preview ? 800 : 10000, preview ? 512u : 1024u,
-                                              1u, ctx->threads};
+    out->fit_settings =
+        (sphere_fit_settings){q->fit_train, q->fit_test, (uint32_t)q->fit_mc_samples, 1u, ctx->threads};
     if (sphere_fit_study(&out->fit_settings, &out->fit, e) != 0 || write_profile(dir, &out->fit, e) != 0)
         return -1;
     ltc_table ltc;
@@ -427,11 +428,10 @@ int sphere_light_study(const study_context *ctx, sphere_light_result *out, gt_er
     ltc_table_free(&ltc);
     if (rc != 0)
         return -1;
-    sphere_cost_study(preview ? 1L << 20 : 1L << 22, 3, &out->cost);
-    if (sphere_terminator_study(preview ? 2000 : 20000, preview ? 512u : 1024u, &out->terminator) != 0)
+    sphere_cost_study(q->cost_calls, 3, &out->cost);
+    if (sphere_terminator_study(q->terminator_configurations, (uint32_t)q->terminator_samples, &out->terminator) != 0)
         return gt_error_set(e, "sphere light", "out of memory");
-    if (sphere_sun_study(preview ? 1000 : 10000, preview ? 512u : 2048u, &out->sun) != 0)
+    if (sphere_sun_study(q->sun_configurations, (uint32_t)q->sun_samples, &out->sun) != 0)
         return gt_error_set(e, "sphere light", "out of memory");
-    return sphere_units_study(preview ? 800 : 8000, preview ? 400 : 4000, preview ? 512u : 1024u, ctx->threads,
-                              &out->units, e);
+    return sphere_units_study(q->units_train, q->units_test, (uint32_t)q->units_samples, ctx->threads, &out->units, e);
 }

@@ -17,6 +17,7 @@
 #include "metrics/ssim.h"
 #include "raytracer/reference_render.h"
 #include "specular_occlusion/specular_occlusion_integrator.h"
+#include "specular_occlusion/specular_occlusion_quality.h"
 #include "specular_occlusion/specular_occlusion_quantity.h"
 #include "gtao/gtao.h"
 #include "gtao/gtao_bent_horizons.h"
@@ -173,16 +174,24 @@ static int ship_lut_bc4(so_state *st, const so_lut *src, so_lut *lut, so_lut_row
     return 0;
 }
 
+/* Whether the sweep builds the table of that size in that parametrisation:
+ * the cosines at the sizes below 64^3 (which takes ~10 s on 2 cores), the
+ * angles at the first angles_lut_sizes of 16, 32, 64 (the quality table). */
+static int lut_is_built(const so_state *st, int size_index, so_lut_axes axes)
+{
+    if (axes == SO_AXES_COSINES)
+        return lut_sizes[size_index] < 64;
+    return size_index < specular_occlusion_quality_of(st->ctx->quality)->angles_lut_sizes;
+}
+
 /* Every size in both parametrisations; the angles tables and the 32^3
- * cosines one are kept for the variants. 64^3 takes ~10 s on 2 cores:
- * production only, one parametrisation. */
+ * cosines one are kept for the variants. */
 static int build_luts(so_state *st, gt_error *e)
 {
-    int production = st->ctx->quality == QUALITY_PRODUCTION;
-    st->out->lut_points = production ? 20000 : 2000;
+    st->out->lut_points = specular_occlusion_quality_of(st->ctx->quality)->lut_error_points;
     for (int s = 0; s < LUT_SIZES; ++s)
         for (int axes = 0; axes < SO_AXES_COUNT; ++axes) {
-            if (lut_sizes[s] == 64 && (axes == SO_AXES_COSINES || !production))
+            if (!lut_is_built(st, s, (so_lut_axes)axes))
                 continue;
             so_lut scratch, *lut = axes == SO_AXES_ANGLES ? &st->luts[s] : lut_sizes[s] == 32 ? &st->lut_cosines : &scratch;
             if (build_lut(st, lut, lut_sizes[s], (so_lut_axes)axes, &st->out->luts[st->out->lut_count++], e) != 0)
@@ -408,8 +417,8 @@ static int score(so_state *st, const image *ref, const image *ao, const image gt
 
 void so_study_resolution(const study_context *ctx, int *size, int *spp)
 {
-    int preview = ctx->quality == QUALITY_PREVIEW;
-    *size = preview ? 96 : 256, *spp = preview ? 128 : 1024;
+    const specular_occlusion_quality *q = specular_occlusion_quality_of(ctx->quality);
+    *size = q->image_size, *spp = q->reference_spp;
 }
 
 int so_study_render(const study_context *ctx, const scene *s, const char *spec, const camera *cam, reference_quantity q,
