@@ -21,11 +21,7 @@ import re
 import sys
 
 KNOWN = [
-    "techniques/anti_aliasing/aa_temporal_study.c",
-    "techniques/anti_aliasing/anti_aliasing_study.c",
-    "techniques/ao_decals/ao_decals_study.c",
     "techniques/atmosphere/atmosphere_luts_study.c",
-    "techniques/bloom/bloom_study.c",
     "techniques/environment/env_approx_study.c",
     "techniques/height_fog/aerial_perspective_study.c",
     "techniques/height_fog/height_fog_study.c",
