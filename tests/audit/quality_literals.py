@@ -21,15 +21,10 @@ import re
 import sys
 
 KNOWN = [
-    "techniques/atmosphere/atmosphere_luts_study.c",
     "techniques/environment/env_approx_study.c",
-    "techniques/height_fog/aerial_perspective_study.c",
-    "techniques/height_fog/height_fog_study.c",
     "techniques/specular_occlusion/study/specular_occlusion_study.c",
     "techniques/sphere_light/sphere_light_scenes.c",
     "techniques/sphere_light/sphere_light_study.c",
-    "techniques/throughput/ray_throughput_study.c",
-    "techniques/volumetric_light/volumetric_light_study.c",
 ]
 
 RULES = [
