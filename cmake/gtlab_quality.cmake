@@ -30,6 +30,11 @@ function(gtlab_quality_table_read path)
     if(line MATCHES "^[ \t]*(#.*)?$")
       continue()
     endif()
+    # A row's fields are kept '|'-separated in a CMake list, which ';'
+    # separates: either in a description would cut the row short.
+    if(line MATCHES "[;|]")
+      message(FATAL_ERROR "${path}:${number}: a row cannot hold ';' or '|' (write ',' or 'or')")
+    endif()
     set(value "[-+.0-9eE]+")
     if(NOT line MATCHES "^([a-z][a-z0-9_]*)[ \t]+([a-z][a-z0-9_]*)[ \t]+(${value})[ \t]+(${value})[ \t]+([a-z]+)[ \t]+(.+)$")
       message(FATAL_ERROR "${path}:${number}: expected: technique setting preview production unit what-it-sets")

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "anti_aliasing/anti_aliasing_quality.h"
 #include "anti_aliasing/anti_aliasing_study.h" /* AA_DIR */
 #include "anti_aliasing/checkerboard.h"
 #include "anti_aliasing/frames_render.h"
@@ -32,9 +33,8 @@ const char *const aa_temporal_path_names[AA_T_PATHS] = {"static", "pan"};
 
 aa_temporal_request aa_temporal_default_request(study_quality quality)
 {
-    int production = quality == QUALITY_PRODUCTION;
-    aa_temporal_request rq = {production ? 384 : 160, production ? 288 : 120, production ? 24 : 12,
-                              {"builtin:aa-thin"}, 1, 1919u};
+    const anti_aliasing_quality *q = anti_aliasing_quality_of(quality);
+    aa_temporal_request rq = {q->temporal_width, q->temporal_height, q->temporal_frames, {"builtin:aa-thin"}, 1, 1919u};
     return rq;
 }
 

@@ -85,7 +85,9 @@ typedef struct {
 extern const char *const aa_temporal_technique_names[AA_T_ROWS];
 extern const char *const aa_temporal_path_names[AA_T_PATHS];
 
-/* Preview: 160 x 120, 12 frames; production 384 x 288, 24 frames; builtin:aa-thin. */
+/* The request of `gtlab all` at a quality: its frames' size and count are the
+ * quality table's (anti_aliasing temporal_* rows of techniques/quality_table.txt);
+ * builtin:aa-thin. */
 aa_temporal_request aa_temporal_default_request(study_quality quality);
 
 /* The techniques' state along one camera path (its histories), for

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "anti_aliasing/anti_aliasing_quality.h"
 #include "anti_aliasing/fxaa.h"
 #include "core/files/image_io.h"
 #include "core/optics/srgb.h" /* srgb_to_linear */
@@ -17,8 +18,8 @@ static const char *const technique_names[AA_TECHNIQUES] = {"no AA (1 sample)", "
 
 aa_request aa_default_request(study_quality quality)
 {
-    aa_request rq = {quality == QUALITY_PRODUCTION ? 384 : 160, quality == QUALITY_PRODUCTION ? 288 : 120,
-                     {"builtin:boxes", "builtin:menger", "builtin:cornell"}, 3, 19u,
+    const anti_aliasing_quality *q = anti_aliasing_quality_of(quality);
+    aa_request rq = {q->image_width, q->image_height, {"builtin:boxes", "builtin:menger", "builtin:cornell"}, 3, 19u,
                      aa_temporal_default_request(quality)};
     return rq;
 }

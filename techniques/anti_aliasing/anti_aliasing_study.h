@@ -47,8 +47,9 @@ typedef struct {
     aa_temporal_result temporal;
 } aa_result;
 
-/* Preview: 160 x 120; production 384 x 288; scenes boxes, menger, cornell;
- * the temporal part's aa_temporal_default_request. */
+/* The request of `gtlab all` at a quality: its image size is the quality
+ * table's (anti_aliasing rows of techniques/quality_table.txt); scenes boxes,
+ * menger, cornell; the temporal part's aa_temporal_default_request. */
 aa_request aa_default_request(study_quality quality);
 
 int aa_study(const study_context *ctx, const aa_request *rq, aa_result *out, gt_error *e);

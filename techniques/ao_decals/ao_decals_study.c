@@ -7,6 +7,7 @@
 
 #include "ao/ao_quantity.h"
 #include "ao_decals/ao_decals.h"
+#include "ao_decals/ao_decals_quality.h"
 #include "core/reference_schema.h"
 #include "metrics/ssim.h"
 #include "raytracer/reference_render.h"
@@ -23,8 +24,8 @@ static const ao_decal_volume sphere_volume = {{0.0f, 1.5f, 0.0f}, {1.0f, 1.0f, 1
 
 ao_decals_request ao_decals_default_request(study_quality quality)
 {
-    ao_decals_request rq = {quality == QUALITY_PRODUCTION ? 128 : 48, quality == QUALITY_PRODUCTION ? 1024 : 256, 3,
-                            quality == QUALITY_PRODUCTION ? 256 : 96};
+    const ao_decals_quality *q = ao_decals_quality_of(quality);
+    ao_decals_request rq = {q->view_size, q->reference_spp, 3, q->scene_size};
     return rq;
 }
 

@@ -53,6 +53,9 @@ typedef struct {
     ao_decals_scenes_result scenes; /* the pill, crate, corner and overlap scenes (views freed) */
 } ao_decals_result;
 
+/* The request of `gtlab all` at a quality: the views' size, the references'
+ * samples per pixel and the decal scenes' size are the quality table's
+ * (ao_decals rows of techniques/quality_table.txt); seed 3. */
 ao_decals_request ao_decals_default_request(study_quality quality);
 
 int ao_decals_study(const study_context *ctx, const ao_decals_request *rq, ao_decals_result *out, gt_error *e);

@@ -8,14 +8,19 @@
 #include "core/files/atomic_file.h"
 #include "core/progress.h"
 #include "atmosphere/atmosphere_luts_writers.h"
+#include "atmosphere/atmosphere_quality.h"
 
 enum { GRID_BLENDS = 4 }; /* the talk's t axis: 0, 1/3, 2/3, 1 */
 
 atmosphere_luts_request atmosphere_luts_default_request(study_quality quality)
 {
-    if (quality == QUALITY_PRODUCTION)
-        return (atmosphere_luts_request){192, 3, {1.0 / 6.0, 0.5, 5.0 / 6.0}, 1, 1, 8000, 1};
-    return (atmosphere_luts_request){48, 1, {0.5}, 0, 1, 2000, 0};
+    const atmosphere_quality *q = atmosphere_quality_of(quality);
+    atmosphere_luts_request rq = {.points = q->points, .blend_count = q->blend_count,
+                                  .uniform_refinement = q->uniform_refinement, .seed = 1, .sky_pixels = q->sky_pixels,
+                                  .sky_refinement = q->sky_refinement};
+    for (int k = 0; k < rq.blend_count; ++k)
+        rq.blends[k] = (k + 0.5) / rq.blend_count; /* the centres of blend_count equal parts of t */
+    return rq;
 }
 
 int atmosphere_luts_row_decision(const atmosphere_luts_row *row)

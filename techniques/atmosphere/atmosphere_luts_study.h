@@ -99,9 +99,10 @@ typedef struct {
     atmosphere_luts_file_set file_sets[ATMOSPHERE_FILE_SETS];
 } atmosphere_luts_result;
 
-/* Preview: 48 points at t = 1/2, 2000 sky pixels per regime; production:
- * 192 points and 8000 pixels at t = 1/6, 1/2, 5/6, the uniformly refined
- * in-scatter table and the sky at 4x. */
+/* The request of `gtlab all` at a quality: its points, weather blends (at
+ * t = 1/2 for one, 1/6, 1/2, 5/6 for three), sky pixels and whether the
+ * refined in-scatter table and sky are scored are the quality table's
+ * (atmosphere rows of techniques/quality_table.txt); seed 1. */
 atmosphere_luts_request atmosphere_luts_default_request(study_quality quality);
 
 #define ATMOSPHERE_INTERVAL_Z 1.959963984540054 /* the two-sided 95% normal quantile */

@@ -13,6 +13,7 @@
 #include "core/progress.h"
 #include "best_fit_normals/best_fit_normals.h"
 #include "best_fit_normals/best_fit_normals_cells.h"
+#include "best_fit_normals/best_fit_normals_quality.h"
 #include "best_fit_normals/best_fit_normals_writers.h"
 #include "metrics/ssim.h"
 #include "best_fit_normals/normal_encoding.h"
@@ -28,12 +29,11 @@ static const double roughnesses[NORMALS_ROUGHNESSES] = {0.1, 0.2, 0.3, 0.5};
 
 normals_request normals_default_request(study_quality quality)
 {
-    normals_request rq = {.table_size = BFN_TALK_SIZE, .seed = 2010u};
-    int production = quality == QUALITY_PRODUCTION;
-    rq.directions = production ? 2000000 : 200000;
-    rq.exhaustive_directions = production ? 100000 : 20000;
+    const best_fit_normals_quality *q = best_fit_normals_quality_of(quality);
+    normals_request rq = {.table_size = BFN_TALK_SIZE, .directions = q->directions,
+                          .exhaustive_directions = q->exhaustive_directions, .face_count = q->face_count,
+                          .seed = 2010u};
     static const int faces[] = {512, 1024, 2048, 4096, 8192};
-    rq.face_count = production ? 5 : 3;
     memcpy(rq.faces, faces, sizeof faces);
     return rq;
 }

@@ -59,8 +59,10 @@ typedef struct {
     normals_encoding_result encodings[NORMALS_ENCODINGS];
 } normals_result;
 
-/* Preview: 200 000 directions (20 000 exhaustive), faces 512 to 2048;
- * production: 2 000 000 (100 000), faces to 8192. Both the 512^2 table. */
+/* The request of `gtlab all` at a quality: its directions (and the
+ * exhaustive search's) and how many of the faces 512 to 8192 it samples are
+ * the quality table's (best_fit_normals rows of techniques/quality_table.txt).
+ * Both the 512^2 table. */
 normals_request normals_default_request(study_quality quality);
 
 /* Builds and writes the table of `size` with the talk's metric to <dir>

@@ -7,14 +7,15 @@
 
 #include "bloom/bloom_kernels.h"
 #include "bloom/bloom_pyramid.h"
+#include "bloom/bloom_quality.h"
 #include "core/files/atomic_file.h"
 
 enum { RESPONSE_STEPS = 33, PHASE_STEPS = 16 };
 
 bloom_request bloom_default_request(study_quality quality)
 {
-    int production = quality == QUALITY_PRODUCTION;
-    bloom_request rq = {production ? 960 : 480, production ? 540 : 270, production ? 64 : 16, production ? 5 : 4, 1};
+    const bloom_quality *q = bloom_quality_of(quality);
+    bloom_request rq = {q->render_width, q->render_height, q->render_spp, q->pyramid_levels, 1};
     return rq;
 }
 

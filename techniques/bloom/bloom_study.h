@@ -67,6 +67,9 @@ typedef struct {
     bloom_level_result levels[BLOOM_MAX_LEVELS];
 } bloom_result;
 
+/* The request of `gtlab all` at a quality: the HDR render's size and samples
+ * and the pyramid's levels are the quality table's (bloom rows of
+ * techniques/quality_table.txt); seed 1. */
 bloom_request bloom_default_request(study_quality quality);
 
 /* A target's 6 x 6 weights (bloom_kernels.h) and the Gaussian's sigma. */

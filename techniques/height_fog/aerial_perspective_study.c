@@ -10,15 +10,17 @@
 #include "raytracer/embree_scene.h"
 #include "raytracer/gbuffer.h"
 #include "height_fog/aerial_perspective_parts.h"
+#include "height_fog/height_fog_quality.h"
 
 static const char *const weathers[2] = {"sunny", "dense"};
 
 aerial_perspective_request aerial_perspective_default_request(study_quality quality)
 {
-    aerial_perspective_request rq = {96, 64, 64, AERIAL_SUNS, {5.0, 20.0, 60.0}, 1e-5, ATMOSPHERE_ADAPTIVE,
-                                     atmosphere_lut_sizes_talk(), {{32, 128, 8, 2}, {64, 1, 1, 2}, {64, 1, 1, 2}}};
-    if (quality == QUALITY_PRODUCTION)
-        rq.width = 384, rq.height = 256, rq.fisheye = 192, rq.tolerance = 1e-6, rq.method = ATMOSPHERE_REFERENCE;
+    const height_fog_quality *q = height_fog_quality_of(quality);
+    atmosphere_method method = q->reference_transmittances ? ATMOSPHERE_REFERENCE : ATMOSPHERE_ADAPTIVE;
+    aerial_perspective_request rq = {q->aerial_width, q->aerial_height, q->fisheye_size, AERIAL_SUNS, {5.0, 20.0, 60.0},
+                                     q->reference_tolerance, method, atmosphere_lut_sizes_talk(),
+                                     {{32, 128, 8, 2}, {64, 1, 1, 2}, {64, 1, 1, 2}}};
     return rq;
 }
 

@@ -108,8 +108,11 @@ typedef struct {
     double seconds;            /* the whole study, wall */
 } aerial_perspective_result;
 
-/* Preview: 96x64, fisheye 64, suns 5, 20 and 60 degrees, ADAPTIVE at 1e-5,
- * the talk's LUT sizes, fine (32, 128, 8, 2); production: 384x256, fisheye 192, REFERENCE at 1e-6. */
+/* The request of `gtlab all` at a quality: the view's and fisheye's size and
+ * the reference's tolerance and transmittances (ADAPTIVE or REFERENCE) are the
+ * quality table's (height_fog aerial_*, fisheye_size and reference_* rows of
+ * techniques/quality_table.txt); suns 5, 20 and 60 degrees, the talk's LUT
+ * sizes, fine (32, 128, 8, 2). */
 aerial_perspective_request aerial_perspective_default_request(study_quality quality);
 
 /* The study: writes its files into dir (which exists). 0, or -1 with e. */

@@ -11,6 +11,7 @@
 #include "core/reference_schema.h"
 #include "metrics/ssim.h"
 #include "height_fog/fog_integrator.h"
+#include "height_fog/height_fog_quality.h"
 #include "raytracer/reference_render.h"
 #include "height_fog/height_fog.h"
 
@@ -18,9 +19,9 @@ static const char *const weathers[2] = {"sunny", "dense"};
 
 height_fog_request height_fog_default_request(study_quality quality)
 {
-    height_fog_request rq = {96, 64, 64, {5.0, 20.0, 60.0}, aerial_perspective_default_request(quality)};
-    if (quality == QUALITY_PRODUCTION)
-        rq.width = 384, rq.height = 256, rq.spp = 1024;
+    const height_fog_quality *q = height_fog_quality_of(quality);
+    height_fog_request rq = {q->image_width, q->image_height, q->reference_spp, {5.0, 20.0, 60.0},
+                             aerial_perspective_default_request(quality)};
     return rq;
 }
 

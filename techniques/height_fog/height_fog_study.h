@@ -83,6 +83,10 @@ typedef struct {
     aerial_perspective_result aerial;
 } height_fog_result;
 
+/* The request of `gtlab all` at a quality: the reference renders' size and
+ * samples per pixel are the quality table's (height_fog rows of
+ * techniques/quality_table.txt); suns at 5, 20 and 60 degrees; the aerial
+ * part's aerial_perspective_default_request. */
 height_fog_request height_fog_default_request(study_quality quality);
 int height_fog_study(const study_context *ctx, const height_fog_request *rq, height_fog_result *out, gt_error *e);
 /* The regime table alone (no rendering). */

@@ -4,16 +4,22 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "core/progress.h"
+#include "kulla_conty/kulla_conty_quality.h"
 #include "luts/dfg_lut.h"
 #include "luts/lut_writers.h"
 
+enum { WRITTEN_SIZE = 32 }; /* the table the study writes */
+
 kulla_conty_request kulla_conty_default_request(study_quality quality)
 {
-    if (quality == QUALITY_PRODUCTION)
-        return (kulla_conty_request){32, {4, 8, 16, 32, 64, 128, 256}, 7, 192, 32};
-    return (kulla_conty_request){32, {4, 8, 16, 32, 64}, 5, 48, 8};
+    static const int sizes[] = {4, 8, 16, 32, 64, 128, 256};
+    const kulla_conty_quality *q = kulla_conty_quality_of(quality);
+    kulla_conty_request rq = {WRITTEN_SIZE, {0}, q->size_count, q->roughness_points, q->mu_points};
+    memcpy(rq.sizes, sizes, sizeof sizes[0] * (size_t)q->size_count);
+    return rq;
 }
 
 int kulla_conty_write_table(const char *dir, int size, int threads, double *bound, gt_error *e)

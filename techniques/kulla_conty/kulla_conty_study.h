@@ -41,8 +41,9 @@ typedef struct {
     double seconds;
 } kulla_conty_result;
 
-/* Preview: sizes 4 to 64, 48 roughnesses, 8 cosines; production: to 256,
- * 192 and 32. Both write the 32-entry table. */
+/* The request of `gtlab all` at a quality: how many of the sizes 4 to 256 it
+ * scores, its roughnesses and cosines are the quality table's (kulla_conty
+ * rows of techniques/quality_table.txt). Both write the 32-entry table. */
 kulla_conty_request kulla_conty_default_request(study_quality quality);
 
 /* Builds the size-entry table and writes <dir>/kulla_conty_eavg_<size>.{exr,png,h}

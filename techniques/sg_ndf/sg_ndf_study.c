@@ -10,25 +10,27 @@
 #include "metrics/ssim.h"
 #include "sg_ndf/sg_ndf_images.h"
 #include "sg_ndf/sg_ndf_parts.h"
+#include "sg_ndf/sg_ndf_quality.h"
+
+enum { ALPHA_PAIRS = 5 };
 
 sg_ndf_request sg_ndf_default_request(study_quality quality)
 {
-    static const double preview[][2] = {{0.2, 0.1}, {0.4, 0.2}, {0.5, 0.1}};
-    static const double production[][2] = {{0.1, 0.05}, {0.2, 0.1}, {0.4, 0.2}, {0.5, 0.1}, {0.8, 0.2}};
-    int full = quality == QUALITY_PRODUCTION, pairs = full ? 5 : 3;
+    static const double alphas[ALPHA_PAIRS][2] = {{0.1, 0.05}, {0.2, 0.1}, {0.4, 0.2}, {0.5, 0.1}, {0.8, 0.2}};
+    const sg_ndf_quality *q = sg_ndf_quality_of(quality);
+    int first = (ALPHA_PAIRS - q->material_pairs) / 2; /* the middle material_pairs of the list */
     sg_ndf_request rq = {0};
     for (int kind = 0; kind < 2; ++kind)
-        for (int i = 0; i < pairs; ++i) {
-            const double *p = full ? production[i] : preview[i];
+        for (int i = first; i < first + q->material_pairs; ++i) {
+            const double *p = alphas[i];
             rq.materials[rq.material_count] = (anisotropic_ndf){(ndf_kind)kind, p[0], p[1]};
             rq.imaged[rq.material_count++] = p[0] == 0.4 && p[1] == 0.2; /* one per NDF */
         }
     rq.max_lobes = SG_NDF_STUDY_LOBES;
     rq.fit = sg_fit_default_options();
-    if (!full)
-        rq.fit.theta_count = 32, rq.fit.phi_count = 64;
-    rq.image_size = full ? 128 : 64;
-    rq.image_samples = full ? 4096 : 1024;
+    rq.fit.theta_count = q->fit_theta_count, rq.fit.phi_count = q->fit_phi_count;
+    rq.image_size = q->image_size;
+    rq.image_samples = q->image_samples;
     rq.seed = 2010u;
     rq.l2_target = 0.05;
     return rq;

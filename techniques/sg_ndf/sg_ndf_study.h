@@ -34,8 +34,9 @@ typedef struct {
     double l2_target;             /* "enough lobes": the least k with E below it */
 } sg_ndf_request;
 
-/* Preview: 6 materials on a 32 x 64 grid, 64^2 images at 1024 samples;
- * production: 10 materials on 64 x 128, 128^2 at 4096. */
+/* The request of `gtlab all` at a quality: its (alpha_x, alpha_y) pairs (for
+ * both NDFs), the fit's grid and the images' side and samples are the quality
+ * table's (sg_ndf rows of techniques/quality_table.txt). */
 sg_ndf_request sg_ndf_default_request(study_quality quality);
 
 typedef struct {

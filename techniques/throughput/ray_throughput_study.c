@@ -3,6 +3,10 @@
 
 #include <string.h>
 
+#include "throughput/throughput_quality.h"
+
+enum { STUDY_WIDTH = 256, STUDY_HEIGHT = 256 }; /* the stage's view of builtin:menger */
+
 /* The table's rows: each raw call, gtlab's AO loop, and their ratio. */
 static void fill_rows(const ray_benchmark *b, ray_throughput_row *rows)
 {
@@ -47,6 +51,6 @@ int ray_throughput_measure(const char *spec, int width, int height, int threads,
 
 int ray_throughput_study(const study_context *ctx, ray_throughput_result *out, gt_error *e)
 {
-    return ray_throughput_measure("builtin:menger", 256, 256, ctx->threads, ctx->quality == QUALITY_PREVIEW ? 2 : 5,
-                                  out, e);
+    return ray_throughput_measure("builtin:menger", STUDY_WIDTH, STUDY_HEIGHT, ctx->threads,
+                                  throughput_quality_of(ctx->quality)->repeats, out, e);
 }

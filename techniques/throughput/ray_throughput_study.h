@@ -38,7 +38,8 @@ enum { RAY_THROUGHPUT_GTLAB_ROW = RAW_CALL_COUNT, RAY_THROUGHPUT_RATIO_ROW = RAW
 int ray_throughput_measure(const char *spec, int width, int height, int threads, int repeats,
                            ray_throughput_result *out, gt_error *e);
 
-/* The `throughput` stage: builtin:menger at 256x256, 2 passes (preview) or 5. */
+/* The `throughput` stage: builtin:menger at 256x256, its passes the quality
+ * table's (the throughput row of techniques/quality_table.txt). */
 
 int ray_throughput_study(const study_context *ctx, ray_throughput_result *out, gt_error *e);
 

@@ -14,19 +14,19 @@
 #include "metrics/image_error.h"
 #include "metrics/flip.h"
 #include "metrics/ssim.h"
+#include "volumetric_light/volumetric_light_quality.h"
 #include "volumetric_light/volumetric_light_upsample.h"
 #include "volumetric_light/volumetric_light_shadow_map_render.h"
 #include "volumetric_light/volumetric_light_setup.h"
 
 volumetric_light_request volumetric_light_default_request(study_quality quality)
 {
-    volumetric_light_request rq = {.width = 64, .height = 64, .seeds = 3, .frames = 16, .alpha = 0.1, .shadow_size = 512,
-                         .shadow_bias = 0.01, .spp_count = 12, .spp = {1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 64, 128},
-                         .blue_noise_size = 64, .reference_rel_tol = 1e-4, .cost_width = 512, .cost_height = 512,
+    const volumetric_light_quality *q = volumetric_light_quality_of(quality);
+    volumetric_light_request rq = {.width = q->image_size, .height = q->image_size, .seeds = q->seeds,
+                         .frames = q->frames, .alpha = 0.1, .shadow_size = 512, .shadow_bias = 0.01, .spp_count = 12,
+                         .spp = {1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 64, 128}, .blue_noise_size = q->blue_noise_size,
+                         .reference_rel_tol = 1e-4, .cost_width = q->cost_width, .cost_height = q->cost_height,
                          .cost_reference_rel_tol = 1e-3};
-    if (quality == QUALITY_PRODUCTION)
-        rq.width = rq.height = 192, rq.seeds = 8, rq.frames = 32, rq.blue_noise_size = 128, rq.cost_width = 1920,
-        rq.cost_height = 1080;
     return rq;
 }
 

@@ -111,6 +111,9 @@ typedef struct {
     double cost_flip_gap, cost_flip_gap_se;   /* FLIP(talk) - FLIP(uniform 2), per seed */
 } volumetric_light_result;
 
+/* The request of `gtlab all` at a quality: its image size, seeds, frames,
+ * blue-noise size and equal-cost image are the quality table's
+ * (volumetric_light rows of techniques/quality_table.txt). */
 volumetric_light_request volumetric_light_default_request(study_quality quality);
 /* Runs the study; writes <output>/volumetric/ (reference and image strip
  * PNGs, plot data). Returns 0 or -1 with e. */

@@ -10,30 +10,11 @@ through <name>_quality_of(quality) (cmake/gtlab_quality.cmake). Passing a
 quality along (`study_context ctx = {dir, QUALITY_PRODUCTION, ...}`) is not a
 comparison and is allowed.
 
-Files written before the table are listed in KNOWN while they are converted;
-a listed file that no longer offends (remove it from KNOWN), or one not
-listed that does, fails the audit.
-
   tests/audit/quality_literals.py SOURCE_DIR
 """
 import os
 import re
 import sys
-
-KNOWN = [
-    "techniques/anti_aliasing/aa_temporal_study.c",
-    "techniques/anti_aliasing/anti_aliasing_study.c",
-    "techniques/ao_decals/ao_decals_study.c",
-    "techniques/atmosphere/atmosphere_luts_study.c",
-    "techniques/best_fit_normals/best_fit_normals_study.c",
-    "techniques/bloom/bloom_study.c",
-    "techniques/height_fog/aerial_perspective_study.c",
-    "techniques/height_fog/height_fog_study.c",
-    "techniques/kulla_conty/kulla_conty_study.c",
-    "techniques/sg_ndf/sg_ndf_study.c",
-    "techniques/throughput/ray_throughput_study.c",
-    "techniques/volumetric_light/volumetric_light_study.c",
-]
 
 RULES = [
     ("compares a quality", re.compile(
@@ -84,20 +65,10 @@ def technique_sources(root):
 def main():
     root = sys.argv[1]
     failed = False
-    offending = set()
     for path in technique_sources(root):
-        found = offences(os.path.join(root, path))
-        if not found:
-            continue
-        offending.add(path)
-        if path not in KNOWN:
+        for number, what in offences(os.path.join(root, path)):
             failed = True
-            for number, what in found:
-                print(f"{path}:{number}: {what}: read it from techniques/quality_table.txt instead")
-    for path in KNOWN:
-        if path not in offending:
-            failed = True
-            print(f"{path}: no longer compares a quality or types a sample count: remove it from KNOWN")
+            print(f"{path}:{number}: {what}: read it from techniques/quality_table.txt instead")
     sys.exit(1 if failed else 0)
 
 

@@ -36,4 +36,6 @@ refuse "demo b 1 spp too few columns"   "expected: technique setting preview pro
 refuse "demo b 1.5 2 spp not integers"  "b is counted in spp, so its values must be integers"
 refuse "demo b 1 2 parsecs unknown"     "unknown unit 'parsecs'"
 refuse "demo b 1-2 2 stderr not a number" "b: '1-2' and '2' must be numbers"
-echo "quality table: good table read, 4 bad rows refused"
+refuse "demo b 1 2 spp this; that"      "a row cannot hold ';' or '|'"
+refuse "demo b 1 2 spp this | that"     "a row cannot hold ';' or '|'"
+echo "quality table: good table read, 6 bad rows refused"
