@@ -138,6 +138,7 @@ static void say_cases_to_decide(report_headline *h, double d, double spread)
 
 void headline_from_difference(report_headline *h, double d, double s, const char *over)
 {
+    h->cases_to_decide = h->cases = 0, h->samples_factor_to_decide = 0.0;
     if (isnan(s) || isnan(d)) {
         h->significance = HEADLINE_NOT_COMPUTED;
         snprintf(h->basis, sizeof h->basis, "too few cases for a standard error (%s)", over);
@@ -148,13 +149,27 @@ void headline_from_difference(report_headline *h, double d, double s, const char
     headline_apply_margin(h, d, CLAIM_Z * s);
 }
 
+/* Not decided against a noise floor: the floor falls as 1/sqrt(samples),
+ * so (floor / gap)^2 times the samples bring it down to the gap. */
+static void say_samples_to_decide(report_headline *h, double gap, double floor)
+{
+    if (h->significance != HEADLINE_NOT_SIGNIFICANT || !(gap > 0))
+        return;
+    h->samples_factor_to_decide = (floor / gap) * (floor / gap);
+    size_t k = strlen(h->basis);
+    snprintf(h->basis + k, sizeof h->basis - k, "; about %.3g times the references' samples would decide it",
+             h->samples_factor_to_decide);
+}
+
 void headline_from_noise_floor(report_headline *h, double floor)
 {
     double gap = fabs(h->runner_up_error - h->best_error);
+    h->cases_to_decide = h->cases = 0, h->samples_factor_to_decide = 0.0;
     h->significance = gap > floor ? HEADLINE_ABOVE_NOISE_FLOOR : HEADLINE_NOT_SIGNIFICANT;
     snprintf(h->basis, sizeof h->basis, "gap %.2g %s the references' noise floor %.2g", gap,
              gap > floor ? "above" : "below", floor);
     headline_apply_margin(h, gap, 0.0);
+    say_samples_to_decide(h, gap, floor);
 }
 
 void headline_from_paired_cases(report_headline *h, double d, double s, int cases, const char *over)
@@ -170,6 +185,7 @@ void headline_from_paired_cases(report_headline *h, double d, double s, int case
     size_t k = strlen(h->basis);
     snprintf(h->basis + k, sizeof h->basis - k, "; t(%d) = %.3g", cases - 1, t);
     headline_apply_margin(h, d, t * s);
+    h->cases = cases;
     say_cases_to_decide(h, d, s * sqrt((double)cases));
 }
 
@@ -178,6 +194,62 @@ const char *headline_significance_name(headline_significance s)
     static const char *const names[] = {"not computed", "significant at 95%", "not significant at this quality",
                                         "above the noise floor (no interval)", "no visible difference"};
     return names[s];
+}
+
+/* What would decide an undecided row, appended to out: "X: about 42 paired
+ * cases (it has 6)" or "X: about 24 times the references' samples". */
+static void append_what_decides(const report_headline *h, char *out, size_t size)
+{
+    size_t k = strlen(out);
+    if (h->cases_to_decide > 0)
+        snprintf(out + k, size - k, "%s: about %d paired cases (it has %d)", h->topic, h->cases_to_decide, h->cases);
+    else if (h->cases_to_decide < 0)
+        snprintf(out + k, size - k, "%s: no number of cases (its gap sits at the visible margin)", h->topic);
+    else if (h->samples_factor_to_decide > 0)
+        snprintf(out + k, size - k, "%s: about %.3g times the references' samples", h->topic,
+                 h->samples_factor_to_decide);
+    else
+        snprintf(out + k, size - k, "%s: a measure with an interval", h->topic);
+}
+
+/* How many rows have verdict s. */
+static int count_verdict(const report_headline *rows, int count, headline_significance s)
+{
+    int n = 0;
+    for (int i = 0; i < count; ++i)
+        n += rows[i].significance == s;
+    return n;
+}
+
+void headlines_opening(const report_headline *rows, int count, char *out, size_t size)
+{
+    out[0] = 0;
+    if (count <= 0 || size == 0)
+        return;
+    int decided = count_verdict(rows, count, HEADLINE_SIGNIFICANT);
+    int equal = count_verdict(rows, count, HEADLINE_NO_VISIBLE_DIFFERENCE);
+    int undecided = count_verdict(rows, count, HEADLINE_NOT_SIGNIFICANT);
+    int rest = count - decided - equal - undecided;
+    snprintf(out, size, "Of %d %s, %d %s decided (a significant gap, past its visible margin where it states one), "
+             "%d %s no difference a viewer could see, %d %s undecided at this quality", count,
+             count == 1 ? "ranking" : "rankings", decided, decided == 1 ? "is" : "are", equal,
+             equal == 1 ? "shows" : "show", undecided, undecided == 1 ? "is" : "are");
+    if (rest > 0) {
+        size_t k = strlen(out);
+        snprintf(out + k, size - k, ", and %d %s no interval (above the noise floor, or not computed)", rest,
+                 rest == 1 ? "has" : "have");
+    }
+    const char *lead = "; what would decide them: ";
+    for (int i = 0; i < count; ++i) {
+        if (rows[i].significance != HEADLINE_NOT_SIGNIFICANT)
+            continue;
+        size_t k = strlen(out);
+        snprintf(out + k, size - k, "%s", lead);
+        append_what_decides(&rows[i], out, size);
+        lead = "; ";
+    }
+    size_t k = strlen(out);
+    snprintf(out + k, size - k, ".");
 }
 
 /* A Markdown cell: '|' would end it. */

@@ -23,6 +23,8 @@
 #ifndef GTLAB_REPORT_HEADLINE_H
 #define GTLAB_REPORT_HEADLINE_H
 
+#include <stddef.h>
+
 enum { HEADLINES_MAX = 48, HEADLINE_TEXT = 256 };
 
 typedef enum {
@@ -51,6 +53,11 @@ typedef struct {
      * it at 80% power if the gap and spread stay as observed (-1: none
      * would; 0: not computed). Said in `basis` too. */
     int cases_to_decide;
+    int cases; /* how many paired cases the verdict has (0: not paired) */
+    /* Below a noise floor: by what factor the references' samples would
+     * have to grow for the floor to fall below the gap, if it falls as
+     * 1/sqrt(samples) as Monte Carlo noise does (0: not computed). */
+    double samples_factor_to_decide;
     char anchor[128];            /* the section's (set by report_add_headline) */
 } report_headline;
 
@@ -96,6 +103,12 @@ void headline_apply_margin(report_headline *h, double d, double w);
 /* "significant at 95%", "not significant at this quality", "above the
  * noise floor (no interval)", "not computed". */
 const char *headline_significance_name(headline_significance s);
+
+/* The sentence the summary opens with (issue 46 item 2): how many
+ * rankings are decided (significant and visible), how many are equal to a
+ * viewer, and, for each undecided one, what would decide it (cases_to_decide
+ * or samples_factor_to_decide). Empty for no rows; truncated to size. */
+void headlines_opening(const report_headline *rows, int count, char *out, size_t size);
 
 /* The summary table as Markdown and HTML (malloc'd, NULL-terminated; both
  * NULL when out of memory); an empty string for no rows. */

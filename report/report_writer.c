@@ -10,6 +10,7 @@
 #include "core/files/atomic_file.h"
 #include "report/compare_viewer.h"
 #include "report/figure_resolve.h"
+#include "report/html_text.h"
 
 static void append(char **buf, size_t *len, size_t *cap, int *failed, const char *text)
 {
@@ -471,15 +472,36 @@ static int write_with_sections(const char *path, const char *body, size_t at, co
     return rc;
 }
 
-/* The heads of the "At a glance" section: its title, the summary table and
- * the findings list's opening (malloc'd; NULL when out of memory). */
+/* The summary's opening sentence as a Markdown paragraph and an HTML one
+ * (empty without rows). */
+static void glance_opening(const report *r, char *md, size_t md_size, char *html_text, size_t html_size)
+{
+    char sentence[4 * HEADLINE_TEXT];
+    headlines_opening(r->headlines, r->headline_count, sentence, sizeof sentence);
+    md[0] = html_text[0] = 0;
+    if (!sentence[0])
+        return;
+    snprintf(md, md_size, "%s\n\n", sentence);
+    FILE *f = fmemopen(html_text, html_size, "w");
+    if (!f)
+        return;
+    fputs("<p>", f);
+    html_put_escaped(f, sentence);
+    fputs("</p>\n", f);
+    fclose(f);
+}
+
+/* The heads of the "At a glance" section: its title, the opening sentence,
+ * the summary table and the findings list's opening (malloc'd; NULL when out
+ * of memory). */
 static int glance_heads(const report *r, char **md_head, char **html_head)
 {
-    char *table_md = NULL, *table_html = NULL;
+    char *table_md = NULL, *table_html = NULL, opening_md[8 * HEADLINE_TEXT], opening_html[16 * HEADLINE_TEXT];
     *md_head = *html_head = NULL;
+    glance_opening(r, opening_md, sizeof opening_md, opening_html, sizeof opening_html);
     if (headlines_render(r->headlines, r->headline_count, &table_md, &table_html) == 0 &&
-        (asprintf(md_head, "## At a glance\n\n%s", table_md) < 0 ||
-         asprintf(html_head, "<h2 id=\"at-a-glance\">At a glance</h2>\n%s<ul>\n", table_html) < 0))
+        (asprintf(md_head, "## At a glance\n\n%s%s", opening_md, table_md) < 0 ||
+         asprintf(html_head, "<h2 id=\"at-a-glance\">At a glance</h2>\n%s%s<ul>\n", opening_html, table_html) < 0))
         *md_head = *html_head = NULL; /* asprintf leaves them undefined */
     free(table_md);
     free(table_html);

@@ -53,7 +53,10 @@ json_is quality == "'preview'" "$work/out/summary.json" && pass || fail "--quali
 python3 - "$work/out/summary.json" "$label" "$stages" <<'PY' && pass || fail "summary.json: $(tail -c 400 "$work/stdout")"
 import json, sys
 summary, label, stages = json.load(open(sys.argv[1])), sys.argv[2], sys.argv[3]
-meta = {"gtlab_version", "quality", "project", "claims"}
+meta = {"gtlab_version", "quality", "project", "claims", "stage_seconds"}
+times = summary["stage_seconds"]  # each stage's wall time, by its --stages key, and the total
+assert set(times) == set(stages.split(",")) | {"total"}, times
+assert all(t >= 0 for t in times.values()) and times["total"] >= max(times.values()) - 1e-9, times
 sections = [k for k in summary if k not in meta]
 def strings(v):
     if isinstance(v, dict):

@@ -160,10 +160,51 @@ static void test_headline_verdicts(void)
     CHECK(h.significance == HEADLINE_SIGNIFICANT);
     headline_from_difference(&h, 0.2, NAN, "x");
     CHECK(h.significance == HEADLINE_NOT_COMPUTED);
-    headline_from_noise_floor(&h, 0.2); /* gap 0.1 */
+    headline_from_noise_floor(&h, 0.2); /* gap 0.1: (0.2 / 0.1)^2 = 4 times the samples */
     CHECK(h.significance == HEADLINE_NOT_SIGNIFICANT && strstr(h.basis, "below"));
+    CHECK(fabs(h.samples_factor_to_decide - 4.0) < 1e-12 && strstr(h.basis, "about 4 times the references' samples"));
     headline_from_noise_floor(&h, 0.05);
     CHECK(h.significance == HEADLINE_ABOVE_NOISE_FLOOR && strstr(h.basis, "above"));
+    CHECK(h.samples_factor_to_decide == 0.0 && !strstr(h.basis, "would decide"));
+}
+
+/* The summary's opening sentence counts each verdict and says, for each
+ * undecided row in order, what would decide it; the report opens with it. */
+static void test_headline_opening(void)
+{
+    report_headline rows[5] = {
+        {.topic = "A", .significance = HEADLINE_SIGNIFICANT},
+        {.topic = "B", .significance = HEADLINE_NOT_SIGNIFICANT, .cases_to_decide = 42, .cases = 6},
+        {.topic = "C", .significance = HEADLINE_NOT_SIGNIFICANT, .samples_factor_to_decide = 4.0},
+        {.topic = "D", .significance = HEADLINE_NO_VISIBLE_DIFFERENCE},
+        {.topic = "E", .significance = HEADLINE_NOT_COMPUTED},
+    };
+    char s[2048];
+    headlines_opening(rows, 5, s, sizeof s);
+    CHECK(!strcmp(s, "Of 5 rankings, 1 is decided (a significant gap, past its visible margin where it states one), "
+                     "1 shows no difference a viewer could see, 2 are undecided at this quality, and 1 has no "
+                     "interval (above the noise floor, or not computed); what would decide them: B: about 42 paired "
+                     "cases (it has 6); C: about 4 times the references' samples."));
+    headlines_opening(rows, 0, s, sizeof s);
+    CHECK(s[0] == 0);
+    rows[1].cases_to_decide = -1;
+    headlines_opening(rows, 2, s, sizeof s);
+    CHECK(strstr(s, "B: no number of cases") && strstr(s, "Of 2 rankings, 1 is decided") && !strstr(s, "no interval"));
+
+    report r;
+    report_init(&r, "title");
+    report_findings_here(&r);
+    report_heading(&r, 2, "Stage");
+    rows[1].cases_to_decide = 42;
+    report_add_headline(&r, &rows[1]);
+    char *md, *html;
+    write_and_read(&r, &md, &html);
+    CHECK(occurs_before(md, "## At a glance\n\nOf 1 ranking, 0 are decided", "| technique |"));
+    CHECK(md && occurs_before(md, "what would decide them: B: about 42 paired cases (it has 6).", "| technique |"));
+    CHECK(html && strstr(html, "<p>Of 1 ranking, 0 are decided"));
+    free(md);
+    free(html);
+    report_free(&r);
 }
 
 /* A visible margin m (issue 42): a significant gap whose interval lies in
@@ -239,7 +280,8 @@ static void test_headline_table(void)
     report_add_headline(&r, &h);
     char *md, *html;
     write_and_read(&r, &md, &html);
-    CHECK(occurs_before(md, "## At a glance\n\n| technique |", "| [AO <x>](#stage-one) | RMSE | b1 | 0.125 | r1 | 0.25 | not computed |"));
+    CHECK(occurs_before(md, "## At a glance\n\nOf 2 rankings, 1 is decided", "| technique |"));
+    CHECK(occurs_before(md, "| technique |", "| [AO <x>](#stage-one) | RMSE | b1 | 0.125 | r1 | 0.25 | not computed |"));
     CHECK(occurs_before(md, "| [AO <x>](#stage-one) |", "| [GTAO](#stage-two) | DSSIM | b2 | 1 | r2 | 2 | significant at 95% (difference +1 +- 0.25, paired) |"));
     CHECK(occurs_before(md, "| [GTAO](#stage-two) |", "- **[AO](#stage-one)**: first"));
     CHECK(occurs_before(html, "<table class=\"glance\">", "<td><a href=\"#stage-one\">AO &lt;x&gt;</a></td><td>RMSE</td>"));
@@ -343,6 +385,7 @@ int main(void)
 {
     test_figures_resolved();
     test_headline_verdicts();
+    test_headline_opening();
     test_headline_margin();
     test_headline_paired();
     test_headline_table();
