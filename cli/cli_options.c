@@ -138,6 +138,62 @@ static int check_outputs(const cli_command *cmd, void *const *dest, int n)
     return 0;
 }
 
+/* Levenshtein's distance between a and b (insertions, deletions and
+ * substitutions of one character), over names shorter than 64. */
+static int edit_distance(const char *a, const char *b)
+{
+    int row[64], n = (int)strlen(b);
+    if (n >= 64 || strlen(a) >= 64)
+        return 64;
+    for (int j = 0; j <= n; ++j)
+        row[j] = j;
+    for (const char *p = a; *p; ++p) {
+        int diagonal = row[0];
+        row[0] += 1;
+        for (int j = 1; j <= n; ++j) {
+            int substituted = diagonal + (*p != b[j - 1]);
+            diagonal = row[j];
+            int shortest = row[j] + 1 < row[j - 1] + 1 ? row[j] + 1 : row[j - 1] + 1;
+            row[j] = substituted < shortest ? substituted : shortest;
+        }
+    }
+    return row[n];
+}
+
+/* The option whose name is nearest `name` within a third of its length (at
+ * least 2 edits), or NULL. */
+static const cli_option *nearest_option(const cli_option *o, int n, const char *name)
+{
+    const cli_option *best = NULL;
+    int best_distance = (int)strlen(name) / 3 > 2 ? (int)strlen(name) / 3 : 2;
+    for (int i = 0; i < n; ++i) {
+        int d = edit_distance(name, o[i].name);
+        if (d <= best_distance && (!best || d < best_distance))
+            best = &o[i], best_distance = d;
+    }
+    return best;
+}
+
+/* What getopt_long refused (it returned '?'), in one line: a known option
+ * without its value, or an unknown (or ambiguous) one with the nearest valid
+ * name; argv[optind - 1] is what was typed. */
+static int refuse_option(const cli_command *cmd, int n, char **argv)
+{
+    const char *typed = optind > 0 ? argv[optind - 1] : "";
+    int i = optopt ? index_of_code(cmd->options, n, optopt) : -1;
+    if (i >= 0)
+        return cli_failf(cmd->command, "--%s needs a value (%s; see 'gtlab %s --help')", cmd->options[i].name,
+                         cmd->options[i].value ? cmd->options[i].value : "a value", cmd->command);
+    if (optopt && optopt < 256)
+        return cli_failf(cmd->command, "unknown option '-%c' (see 'gtlab %s --help')", optopt, cmd->command);
+    char name[64];
+    snprintf(name, sizeof name, "%.*s", (int)strcspn(typed + strspn(typed, "-"), "="), typed + strspn(typed, "-"));
+    const cli_option *near = nearest_option(cmd->options, n, name);
+    if (near)
+        return cli_failf(cmd->command, "unknown option '--%s' (did you mean '--%s'?)", name, near->name);
+    return cli_failf(cmd->command, "unknown option '--%s' (see 'gtlab %s --help')", name, cmd->command);
+}
+
 int cli_options_parse(const cli_command *cmd, void *const *dest, int argc, char **argv, int *status)
 {
     struct option longs[MAX_OPTIONS + 2];
@@ -150,6 +206,8 @@ int cli_options_parse(const cli_command *cmd, void *const *dest, int argc, char 
     for (int c; (c = getopt_long(argc, argv, shorts, longs, NULL)) != -1;) {
         if (c == 'h')
             return cli_options_print_help(cmd, dest), *status = EXIT_OK, 1;
+        if (c == '?')
+            return refuse_option(cmd, n, argv), 1;
         int i = index_of_code(cmd->options, n, c);
         if (i < 0)
             return cli_usage_error(cmd->command), 1;

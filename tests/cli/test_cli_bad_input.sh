@@ -80,7 +80,9 @@ expect_error unknown-quantity "unknown quantity 'smoke'" "$out" -- render smoke 
 expect_error bad-control-variate "--control-variate: 'gtao' is not none or heightfield" "$out" -- render ao --scene builtin:plane --control-variate gtao -o "$out"
 expect_error control-variate-not-ao "--control-variate: applies to ao only" "$out" -- render heightfield-ao --scene builtin:plane --control-variate heightfield -o "$out"
 expect_error unknown-verb "frobnicate: unknown verb" "" -- frobnicate
-expect_error unknown-option "render: invalid usage" "$out" -- render ao --scene builtin:plane --colour red -o "$out"
+expect_error unknown-option "render: unknown option '--colour' (see 'gtlab render --help')" "$out" -- render ao --scene builtin:plane --colour red -o "$out"
+expect_error misspelt-option "render: unknown option '--sppp' (did you mean '--spp'?)" "$out" -- render ao --scene builtin:plane --sppp 4 -o "$out"
+expect_error option-without-value "render: --spp needs a value" "$out" -- render ao --scene builtin:plane -o "$out" --spp
 expect_error normal-mode "--normal: 'bumpy'" "$out" -- render ao --scene builtin:plane --normal bumpy -o "$out"
 
 # Camera JSON.

@@ -138,8 +138,13 @@ static void test_bad_values_are_refused_with_one_line(void)
 
 static void test_usage_errors(void)
 {
-    check_refused("--colour-scheme red -o d", "test cmd: invalid usage (see 'gtlab test cmd --help')");
-    check_refused("--size", "test cmd: invalid usage");
+    check_refused("--colour-scheme red -o d", "test cmd: unknown option '--colour-scheme' (see 'gtlab test cmd --help')");
+    check_refused("--sizee 8 -o d", "test cmd: unknown option '--sizee' (did you mean '--size'?)");
+    check_refused("--radus=2 -o d", "test cmd: unknown option '--radus' (did you mean '--radius'?)");
+    check_refused("--bouncez 3 -o d", "test cmd: unknown option '--bouncez' (did you mean '--bounces'?)");
+    check_refused("-x -o d", "test cmd: unknown option '-x' (see 'gtlab test cmd --help')");
+    check_refused("--size", "test cmd: --size needs a value (N; see 'gtlab test cmd --help')");
+    check_refused("-o", "test cmd: --output needs a value (DIR; see 'gtlab test cmd --help')");
     check_refused("-o d extra", "test cmd: unexpected argument 'extra'");
     check_refused("--size 8", "test cmd: -o/--output DIR is required");
 }
