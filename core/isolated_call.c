@@ -63,8 +63,11 @@ static size_t read_all(int fd, void *data, size_t size)
 
 /* The child's setting (isolated_call.h): silent, default crash and stop
  * actions, no core file, no sanitizer death callback. */
-static void child_defaults(void)
+static void child_defaults(int cpu_seconds)
 {
+    if (cpu_seconds > 0) /* SIGXCPU at the soft limit (default action: die), SIGKILL one second later */
+        setrlimit(RLIMIT_CPU, &(struct rlimit){(rlim_t)cpu_seconds, (rlim_t)cpu_seconds + 1});
+    signal(SIGXCPU, SIG_DFL);
     for (size_t k = 0; k < sizeof crash_signals / sizeof crash_signals[0]; ++k)
         signal(crash_signals[k], SIG_DFL);
     for (size_t k = 0; k < sizeof stop_signals / sizeof stop_signals[0]; ++k) {
@@ -84,9 +87,9 @@ static void child_defaults(void)
 }
 
 /* The child: runs fn, sends its answer on fd, ends. */
-static void child_run(isolated_function fn, const void *context, int fd, const sigset_t *mask)
+static void child_run(isolated_function fn, const void *context, int cpu_seconds, int fd, const sigset_t *mask)
 {
-    child_defaults();
+    child_defaults(cpu_seconds);
     pthread_sigmask(SIG_SETMASK, mask, NULL);
     void *bytes = NULL;
     size_t size = 0;
@@ -122,10 +125,13 @@ static int read_answer(int fd, void **bytes, size_t *size, gt_error *e)
     return 0;
 }
 
-/* "signal 11, Segmentation fault" or "exit status 1". */
-static void describe_death(int status, char *text, size_t size)
+/* "signal 11, Segmentation fault", "exit status 1" or, killed by its CPU
+ * limit, "ran over its 60 s CPU limit (signal 24)". */
+static void describe_death(int status, int cpu_seconds, char *text, size_t size)
 {
-    if (WIFSIGNALED(status))
+    if (cpu_seconds > 0 && WIFSIGNALED(status) && (WTERMSIG(status) == SIGXCPU || WTERMSIG(status) == SIGKILL))
+        snprintf(text, size, "ran over its %d s CPU limit (signal %d)", cpu_seconds, WTERMSIG(status));
+    else if (WIFSIGNALED(status))
         snprintf(text, size, "signal %d, %s", WTERMSIG(status), strsignal(WTERMSIG(status)));
     else if (WIFEXITED(status))
         snprintf(text, size, "exit status %d", WEXITSTATUS(status));
@@ -135,7 +141,8 @@ static void describe_death(int status, char *text, size_t size)
 
 /* The child's end: waits for it; ISOLATED_DIED unless it answered and
  * exited with 0 (answered is the answer's result). */
-static int wait_child(pid_t child, int answered, const char *subject, char *death, size_t death_size, gt_error *e)
+static int wait_child(pid_t child, int answered, int cpu_seconds, const char *subject, char *death, size_t death_size,
+                      gt_error *e)
 {
     int status = 0;
     pid_t got;
@@ -146,7 +153,7 @@ static int wait_child(pid_t child, int answered, const char *subject, char *deat
     if (answered != ISOLATED_DIED && WIFEXITED(status) && WEXITSTATUS(status) == 0)
         return answered;
     char how[128];
-    describe_death(status, how, sizeof how);
+    describe_death(status, cpu_seconds, how, sizeof how);
     if (death && death_size > 0)
         snprintf(death, death_size, "%s", how);
     gt_error_set(e, subject, "the child process died (%s)", how);
@@ -165,8 +172,8 @@ static void block_stop_signals(sigset_t *old)
     pthread_sigmask(SIG_BLOCK, &blocked, old);
 }
 
-int isolated_call(isolated_function fn, const void *context, const char *subject, void **bytes, size_t *size,
-                  char *death, size_t death_size, gt_error *e)
+int isolated_call(isolated_function fn, const void *context, const char *subject, int cpu_seconds, void **bytes,
+                  size_t *size, char *death, size_t death_size, gt_error *e)
 {
     gt_error ignored;
     e = e ? e : &ignored;
@@ -181,7 +188,7 @@ int isolated_call(isolated_function fn, const void *context, const char *subject
     pid_t child = fork();
     if (child == 0) {
         close(fds[0]);
-        child_run(fn, context, fds[1], &mask);
+        child_run(fn, context, cpu_seconds, fds[1], &mask);
     }
     int fork_errno = errno;
     pthread_sigmask(SIG_SETMASK, &mask, NULL);
@@ -192,7 +199,7 @@ int isolated_call(isolated_function fn, const void *context, const char *subject
     }
     int answered = read_answer(fds[0], bytes, size, e);
     close(fds[0]);
-    int rc = wait_child(child, answered, subject, death, death_size, e);
+    int rc = wait_child(child, answered, cpu_seconds, subject, death, death_size, e);
     if (rc == ISOLATED_DIED) {
         free(*bytes);
         *bytes = NULL, *size = 0;

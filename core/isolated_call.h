@@ -18,6 +18,9 @@
  *  - only the calling thread exists (fork copies one), so the function
  *    must not start threads through OpenMP (the parent's pool is not
  *    there); it may allocate and read files.
+ *  - with cpu_seconds > 0, at most that much CPU time (RLIMIT_CPU): a
+ *    library that loops on some input is killed by SIGXCPU and reported
+ *    like a crash ("ran over its 60 s CPU limit"), never hangs the caller.
  * The child ends with _exit: no atexit handler, no leak check, no stdio
  * buffer of the parent's flushed twice. */
 #ifndef GTLAB_CORE_ISOLATED_CALL_H
@@ -33,15 +36,17 @@ typedef int (*isolated_function)(const void *context, void **bytes, size_t *size
 
 enum { ISOLATED_DIED = -2 };
 
-/* Runs fn(context, ...) in a child process. Returns 0 with *bytes (malloc'd,
+/* Runs fn(context, ...) in a child process (cpu_seconds: its CPU time
+ * limit, 0 for none). Returns 0 with *bytes (malloc'd,
  * the caller frees it; never NULL on success) and *size; -1 with e = the
  * function's own error, or the caller's `subject` and the problem when no
  * child could be started or its answer read; ISOLATED_DIED when the child
  * died without a whole answer, with `death` (if non-NULL, death_size bytes)
- * saying how: "signal 11, Segmentation fault" or "exit status 1" (a
- * sanitizer that found an error exits so), and e = "<subject>: the child
+ * saying how: "signal 11, Segmentation fault", "exit status 1" (a
+ * sanitizer that found an error exits so) or "ran over its 60 s CPU limit
+ * (signal 24)", and e = "<subject>: the child
  * process died (<how>)" for callers that need no words of their own. */
-int isolated_call(isolated_function fn, const void *context, const char *subject, void **bytes, size_t *size,
-                  char *death, size_t death_size, gt_error *e);
+int isolated_call(isolated_function fn, const void *context, const char *subject, int cpu_seconds, void **bytes,
+                  size_t *size, char *death, size_t death_size, gt_error *e);
 
 #endif

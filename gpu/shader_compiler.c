@@ -143,6 +143,10 @@ static int compile_here(const void *context, void **bytes, size_t *size, gt_erro
     return rc;
 }
 
+/* The compiler's CPU time per source: shaderc compiles a screen shader in
+ * well under a second, so a minute means it is looping. */
+enum { GPU_COMPILE_CPU_SECONDS = 60 };
+
 /* glslang crashes on some malformed source (issue 41: an HLSL function
  * header without its body, followed by a global's name, is a null read in
  * TParseContextBase::growGlobalUniformBlock), so it runs in a child process
@@ -150,11 +154,11 @@ static int compile_here(const void *context, void **bytes, size_t *size, gt_erro
 static int compile_isolated(const compile_job *job, void **bytes, size_t *size, gt_error *e)
 {
     char death[128];
-    int rc = isolated_call(compile_here, job, job->name, bytes, size, death, sizeof death, e);
+    int rc = isolated_call(compile_here, job, job->name, GPU_COMPILE_CPU_SECONDS, bytes, size, death, sizeof death, e);
     if (rc != ISOLATED_DIED)
         return rc;
     return gt_error_set(e, job->name,
-                        "the shader compiler crashed on this source (glslang, %s); check its syntax: a function "
+                        "the shader compiler died on this source (glslang, %s); check its syntax: a function "
                         "header without its { } body is one known cause",
                         death);
 }

@@ -77,15 +77,15 @@ static void test_answers(void)
     void *bytes;
     size_t size;
     gt_error e = {{0}};
-    CHECK(isolated_call(make_big, NULL, "big", &bytes, &size, NULL, 0, &e) == 0 && size == BIG);
+    CHECK(isolated_call(make_big, NULL, "big", 0, &bytes, &size, NULL, 0, &e) == 0 && size == BIG);
     int wrong = 0;
     for (size_t k = 0; bytes && k < size; ++k)
         wrong += ((unsigned char *)bytes)[k] != pattern(k);
     CHECK_MSG(wrong == 0, "%d of %d bytes differ", wrong, BIG);
     free(bytes);
-    CHECK(isolated_call(make_nothing, NULL, "empty", &bytes, &size, NULL, 0, &e) == 0 && size == 0 && bytes);
+    CHECK(isolated_call(make_nothing, NULL, "empty", 0, &bytes, &size, NULL, 0, &e) == 0 && size == 0 && bytes);
     free(bytes);
-    CHECK(isolated_call(fail_in_words, "thing.txt", "x", &bytes, &size, NULL, 0, &e) == -1 && !bytes && size == 0);
+    CHECK(isolated_call(fail_in_words, "thing.txt", "x", 0, &bytes, &size, NULL, 0, &e) == -1 && !bytes && size == 0);
     CHECK_MSG(strcmp(e.message, "thing.txt: no such thing") == 0, "%s", e.message);
 }
 
@@ -101,7 +101,7 @@ static long stderr_bytes_during(isolated_function fn, const void *context, int *
     void *bytes;
     size_t n;
     gt_error e = {{0}};
-    *rc = isolated_call(fn, context, "noisy", &bytes, &n, death, size, &e);
+    *rc = isolated_call(fn, context, "noisy", 0, &bytes, &n, death, size, &e);
     free(bytes);
     dup2(saved, 2);
     close(saved);
@@ -118,7 +118,7 @@ static void test_deaths(void)
     void *bytes;
     size_t size;
     gt_error e = {{0}};
-    int rc = isolated_call(null_read, NULL, "null.hlsl", &bytes, &size, death, sizeof death, &e);
+    int rc = isolated_call(null_read, NULL, "null.hlsl", 0, &bytes, &size, death, sizeof death, &e);
     CHECK(rc == ISOLATED_DIED && !bytes && size == 0);
     CHECK_MSG(strncmp(death, "signal 11, ", 11) == 0, "%s", death);
     CHECK_MSG(strncmp(e.message, "null.hlsl: the child process died (signal 11, ", 46) == 0, "%s", e.message);
@@ -130,8 +130,33 @@ static void test_deaths(void)
         CHECK_MSG(rc == ISOLATED_DIED && strncmp(death, expected, strlen(expected)) == 0, "%d: %s", fatal[k], death);
         CHECK_MSG(written == 0, "signal %d: %ld bytes on our stderr", fatal[k], written);
     }
-    CHECK(isolated_call(exit_early, NULL, "x", &bytes, &size, death, sizeof death, &e) == ISOLATED_DIED);
+    CHECK(isolated_call(exit_early, NULL, "x", 0, &bytes, &size, death, sizeof death, &e) == ISOLATED_DIED);
     CHECK_MSG(strcmp(death, "exit status 1") == 0, "%s", death);
+}
+
+/* A function that never returns (a library looping on its input). */
+static int spin_forever(const void *context, void **bytes, size_t *size, gt_error *e)
+{
+    (void)context, (void)bytes, (void)size, (void)e;
+    for (volatile unsigned long k = 0;; ++k)
+        ;
+    return 0;
+}
+
+/* A child over its CPU limit is killed and said so; the caller goes on, and
+ * a quick function under the same limit answers as without one. */
+static void test_cpu_limit(void)
+{
+    char death[128];
+    void *bytes;
+    size_t size;
+    gt_error e = {{0}};
+    CHECK(isolated_call(spin_forever, NULL, "loop.hlsl", 1, &bytes, &size, death, sizeof death, &e) == ISOLATED_DIED);
+    CHECK_MSG(strncmp(death, "ran over its 1 s CPU limit (signal ", 35) == 0, "%s", death);
+    CHECK_MSG(strstr(e.message, "loop.hlsl: the child process died (ran over its 1 s CPU limit") == e.message, "%s",
+              e.message);
+    CHECK(isolated_call(make_nothing, NULL, "quick", 1, &bytes, &size, NULL, 0, &e) == 0 && size == 0 && bytes);
+    free(bytes);
 }
 
 /* A file committed in an open output set survives a SIGTERM in the child
@@ -147,7 +172,7 @@ static void test_stop_signals(void)
     void *bytes;
     size_t size;
     static const int term = SIGTERM, interrupt = SIGINT;
-    int rc = isolated_call(noisy_death, &term, "x", &bytes, &size, death, sizeof death, &e);
+    int rc = isolated_call(noisy_death, &term, "x", 0, &bytes, &size, death, sizeof death, &e);
     CHECK_MSG(rc == ISOLATED_DIED && strncmp(death, "signal 15, ", 11) == 0, "%s", death);
     CHECK_MSG(access(path, F_OK) == 0, "the child rolled the parent's output set back");
     CHECK(output_set_commit(&e) == 0);
@@ -163,6 +188,7 @@ int main(void)
 {
     test_answers();
     test_deaths();
+    test_cpu_limit();
     test_stop_signals();
     return check_report("test_isolated_call");
 }

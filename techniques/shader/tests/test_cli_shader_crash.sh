@@ -18,7 +18,7 @@ vulkan_preload
 "$gtlab" render gbuffer --scene builtin:boxes --width 16 --height 16 -o "$work/g.exr" >/dev/null 2>&1 || fail "gbuffer"
 "$gtlab" render multibounce --scene builtin:corner --albedo 0.2,0.8 --width 16 --height 16 --spp 4 \
   -o "$work/mb.exr" >/dev/null 2>&1 || fail "render multibounce"
-crashed="the shader compiler crashed on this source (glslang, signal 11"
+crashed="the shader compiler died on this source (glslang, signal 11"
 
 # A screen shader of the contract (docs/shaders.md) around each crashing shape.
 for shape in "$source_dir"/tests/fuzz/regressions/shader/crash-*.hlsl; do
