@@ -180,7 +180,7 @@ void report_init(report *r, const char *title)
     html(r, "</title>\n<style>\n"
             "body{font-family:system-ui,sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;color:#222}\n"
             "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:.3em .6em;"
-            "text-align:right}th{background:#f3f3f3}td:first-child,th:first-child{text-align:left}\n"
+            "text-align:right}th{background:#f3f3f3}td:first-child,th:first-child,td.prose{text-align:left}\n"
             "figure{display:inline-block;margin:.5em;text-align:center}figure img{max-width:256px;"
             "image-rendering:pixelated;border:1px solid #ddd}figcaption{font-size:.85em;color:#555}\n"
             "table.glance td{text-align:left}table.glance tr.sig td:last-child{font-weight:bold}\n"
@@ -284,6 +284,19 @@ static void md_cell(report *r, const char *text)
     }
 }
 
+/* Whether a cell reads as a figure ("0.12", "-3e-4 (2%)", "256x256",
+ * "12 s"), right-aligned, rather than prose, left-aligned. */
+static int cell_is_figure(const char *text)
+{
+    while (*text == ' ')
+        ++text;
+    if (*text == '+' || *text == '-')
+        ++text;
+    if (*text == '.')
+        ++text;
+    return isdigit((unsigned char)*text);
+}
+
 static void table_row(report *r, const char *const *cells, const char *cell_tag)
 {
     md(r, "|");
@@ -294,6 +307,8 @@ static void table_row(report *r, const char *const *cells, const char *cell_tag)
         md(r, " |");
         html(r, "<");
         html(r, cell_tag);
+        if (c > 0 && cell_tag[1] == 'd' && !cell_is_figure(cells[c]))
+            html(r, " class=\"prose\"");
         html(r, ">");
         html_escaped(r, cells[c]);
         html(r, "</");
@@ -310,12 +325,31 @@ void report_table_begin(report *r, int columns, const char *const *headers)
     html(r, "<table>\n");
     table_row(r, headers, "th");
     md(r, "|");
+    r->table_align_at = r->md_len, r->table_aligned = 0;
     for (int c = 0; c < columns; ++c)
-        md(r, c == 0 ? " --- |" : " ---: |");
+        md(r, " :--- |"); /* the first row turns a figure's column into " ---: |" */
     md(r, "\n");
 }
 
-void report_table_row(report *r, const char *const *cells) { table_row(r, cells, "td"); }
+/* The Markdown alignment row, from the table's first row: right for a
+ * column of figures, left for prose and the first column. */
+static void align_markdown_columns(report *r, const char *const *cells)
+{
+    enum { ALIGN_CELL = 7 }; /* strlen(" :--- |") == strlen(" ---: |") */
+    r->table_aligned = 1;
+    if (r->failed || r->table_align_at + (size_t)r->table_columns * ALIGN_CELL > r->md_len)
+        return;
+    for (int c = 1; c < r->table_columns; ++c)
+        if (cell_is_figure(cells[c]))
+            memcpy(r->md + r->table_align_at + (size_t)c * ALIGN_CELL, " ---: |", ALIGN_CELL);
+}
+
+void report_table_row(report *r, const char *const *cells)
+{
+    if (!r->table_aligned)
+        align_markdown_columns(r, cells);
+    table_row(r, cells, "td");
+}
 
 void report_table_end(report *r)
 {

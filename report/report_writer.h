@@ -29,6 +29,11 @@ typedef struct {
     char *md, *html;   /* growing texts */
     size_t md_len, html_len, md_cap, html_cap;
     int table_columns; /* > 0 inside a table */
+    /* Where the Markdown table's alignment row is, and whether its first
+     * row set it yet (report_table_row: a number's column is right-aligned,
+     * prose left). */
+    size_t table_align_at;
+    int table_aligned;
     int failed;        /* out of memory at some point */
     /* The "At a glance" list: gathered while the stages run, written where
      * report_findings_here marked (after the introduction). */

@@ -124,20 +124,24 @@ static void test_anchors(void)
 }
 
 /* A '|' inside a table cell is escaped in Markdown (it would split the
- * cell) and left as it is in HTML. */
+ * cell) and left as it is in HTML; a column of figures is right-aligned, one
+ * of prose left (issue 41: the claims table right-aligned its verdicts). */
 static void test_pipe_in_cell(void)
 {
     report r;
     report_init(&r, "title");
-    const char *headers[2] = {"what", "mean |x|"};
-    const char *cells[2] = {"a", "|e| = 1"};
-    report_table_begin(&r, 2, headers);
+    const char *headers[4] = {"what", "mean |x|", "error", "verdict"};
+    const char *cells[4] = {"a", "|e| = 1", "-0.25 (2%)", "reproduced"};
+    report_table_begin(&r, 4, headers);
     report_table_row(&r, cells);
+    report_table_row(&r, (const char *const[]){"b", "2", "prose now", "0.5"}); /* the first row decides */
     report_table_end(&r);
     char *md, *html;
     write_and_read(&r, &md, &html);
-    CHECK(md && strstr(md, "| a | \\|e\\| = 1 |") && strstr(md, "mean \\|x\\|"));
-    CHECK(html && strstr(html, "<td>|e| = 1</td>"));
+    CHECK(md && strstr(md, "| a | \\|e\\| = 1 | -0.25 (2%) | reproduced |") && strstr(md, "mean \\|x\\|"));
+    CHECK(md && strstr(md, "| verdict |\n| :--- | :--- | ---: | :--- |\n| a |"));
+    CHECK(html && strstr(html, "<td class=\"prose\">|e| = 1</td><td>-0.25 (2%)</td><td class=\"prose\">reproduced</td>"));
+    CHECK(html && strstr(html, "<td>a</td>"));
     free(md);
     free(html);
     report_free(&r);
