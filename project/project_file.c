@@ -11,6 +11,7 @@
 #include "core/files/atomic_file.h"
 #include "core/files/input_file.h"
 #include "core/files/json_check.h"
+#include "core/files/json_unique_keys.h"
 #include "core/files/run_inputs.h"
 #include "scene/builtin_scenes.h"
 #include "core/reference_schema.h"
@@ -63,10 +64,11 @@ static cJSON *parse(const char *path, gt_error *e)
     if (json_check(text, length, json_limits_cjson, path, e) == 0) {
         const size_t bom = json_bom_length(text, length);
         root = cJSON_ParseWithLengthOpts(text + bom, length - bom + 1, NULL, 1);
-        if (!cJSON_IsObject(root)) {
+        if (!cJSON_IsObject(root) || json_check_unique_keys(root, path, e) != 0) {
+            if (!cJSON_IsObject(root))
+                gt_error_set(e, path, "not a JSON object (a gtlab project file expected)");
             cJSON_Delete(root);
             root = NULL;
-            gt_error_set(e, path, "not a JSON object (a gtlab project file expected)");
         }
     }
     free(text);

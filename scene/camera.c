@@ -11,6 +11,7 @@
 #include "core/files/atomic_file.h"
 #include "core/files/input_file.h"
 #include "core/files/json_check.h"
+#include "core/files/json_unique_keys.h"
 #include "core/sampling/hemisphere_sampling.h"
 
 static const float degrees_per_radian = (float)(180.0 / M_PI);
@@ -128,8 +129,9 @@ static int camera_parse_checked(const char *text, size_t length, const char *wha
     const size_t bom = json_bom_length(text, length);
     /* With the NUL in the length, as cJSON wants for require_null_terminated. */
     cJSON *root = cJSON_ParseWithLengthOpts(text + bom, length - bom + 1, NULL, 1);
-    int rc = root && cJSON_IsObject(root) ? camera_from_json(root, what, cam, e)
-                                          : gt_error_set(e, what, "not a JSON object (camera JSON expected)");
+    int rc = !root || !cJSON_IsObject(root) ? gt_error_set(e, what, "not a JSON object (camera JSON expected)")
+             : json_check_unique_keys(root, what, e) != 0 ? -1
+                                                           : camera_from_json(root, what, cam, e);
     cJSON_Delete(root);
     return rc;
 }

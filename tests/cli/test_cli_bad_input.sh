@@ -96,6 +96,10 @@ printf '{"position":[0,1,5],"target":[0,0,0],"yfov_deg":190,"width":64,"height":
 expect_error camera-fov "cam-fov.json: yfov_deg must be in" "$out" -- render ao --scene builtin:plane --camera "$work/cam-fov.json" -o "$out"
 printf '{"position":[0,1,5],"target":[0,0,0],"yfov_deg":45,"width":1e20,"height":64}' >"$work/cam-huge.json"
 expect_error camera-huge 'cam-huge.json: "width" must be a whole number' "$out" -- render ao --scene builtin:plane --camera "$work/cam-huge.json" -o "$out"
+printf '{"position":[0,1,5],"target":[0,0,0],"yfov_deg":45,"width":64,"height":64,"width":8}' >"$work/cam-twice.json"
+expect_error camera-duplicate-key "cam-twice.json: duplicate key 'width' at . (a key may appear once" "$out" -- render ao --scene builtin:plane --camera "$work/cam-twice.json" -o "$out"
+printf '{"quality":"preview","scenes":[{"path":"builtin:plane","path":"builtin:boxes"}]}' >"$work/project-twice.json"
+expect_error project-duplicate-key "project-twice.json: duplicate key 'path' at ..scenes.0. " "$work/project-twice-out/report.md" -- all --project "$work/project-twice.json" --stages ao -o "$work/project-twice-out"
 expect_error camera-missing "no-camera.json: cannot open" "$out" -- render ao --scene builtin:plane --camera "$work/no-camera.json" -o "$out"
 
 # compare and merge.
