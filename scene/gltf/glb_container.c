@@ -42,7 +42,7 @@ static int read_header(const unsigned char *bytes, size_t size, const char *what
     const uint32_t version = read_u32le(bytes + 4);
     *length = read_u32le(bytes + 8);
     if (version != 2)
-        return gt_error_set(e, what, "GLB version %u is not 2 (glTF 2.0)", version);
+        return gt_error_set(e, what, "GLB version %u is not supported: gtlab reads binary glTF 2.0 (GLB version 2)", version);
     if (*length > size)
         return gt_error_set(e, what, "GLB header gives a length of %llu bytes but the file has %zu (truncated?)",
                             (unsigned long long)*length, size);

@@ -280,6 +280,31 @@ int fail_tinygltf(Loader &L, bool binary, const unsigned char *json, size_t json
     return L.fail("%s: %s", binary ? "cannot load binary glTF" : "cannot load glTF", reason.c_str());
 }
 
+/* The asset's glTF version, which the glTF 2.0 specification requires
+ * (asset.version, "2.0"; section 5.3): a glTF 1.0 file (asset.version
+ * "1.0", or without an asset and with its scenes or meshes as objects keyed
+ * by id, 1.0's layout) is refused in those words, not by what tinygltf's
+ * 2.0 reader trips over first. The JSON has passed the gate. */
+int refuse_other_versions(Loader &L, const unsigned char *json, size_t length)
+{
+    const nlohmann::json doc = nlohmann::json::parse(json, json + length, nullptr, false);
+    if (!doc.is_object())
+        return 0;
+    auto asset = doc.find("asset");
+    std::string version;
+    if (asset != doc.end() && asset->is_object() && asset->contains("version") && (*asset)["version"].is_string())
+        version = (*asset)["version"].get<std::string>();
+    bool keyed_by_id = (doc.contains("scenes") && doc["scenes"].is_object()) ||
+                       (doc.contains("meshes") && doc["meshes"].is_object());
+    if (version.empty() && keyed_by_id)
+        version = "1.0";
+    if (version.empty() || version.rfind("2.", 0) == 0)
+        return 0;
+    return L.fail("glTF %s is not supported: gtlab reads glTF 2.0 (convert the file, e.g. by importing it into "
+                  "Blender and exporting glTF 2.0)",
+                  printable(version).c_str());
+}
+
 /* The JSON of the file (all of a .gltf, the JSON chunk of a .glb) must pass
  * the JSON gate (core/files/json_check.h) before tinygltf's recursive parser sees
  * it, and a GLB's chunks must lie inside the file. */
@@ -346,6 +371,7 @@ int parse_bytes(Loader &L, const unsigned char *bytes, size_t size, const std::s
     const unsigned char *json = nullptr;
     size_t json_length = 0;
     if (check_container(L, bytes, size, binary, &json, &json_length) != 0 ||
+        refuse_other_versions(L, json, json_length) != 0 ||
         refuse_required_extensions(L, top_level_strings(json, json_length, "extensionsRequired")) != 0)
         return -1;
     std::vector<unsigned char> prepared;

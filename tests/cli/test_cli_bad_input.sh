@@ -10,6 +10,13 @@ assimp=/usr/share/assimp/models/glTF2
 
 render_gbuffer() { echo render gbuffer --scene "$1" --width 32 --height 32 -o "$out"; }
 
+# glTF 1.0 files (assimp-testmodels keeps a few): refused as what they are.
+gltf1=/usr/share/assimp/models/glTF
+expect_error gltf-1 "BoxTextured.gltf: glTF 1.0 is not supported: gtlab reads glTF 2.0" "$out" -- $(render_gbuffer $gltf1/BoxTextured-glTF/BoxTextured.gltf)
+expect_error glb-1 "BoxTextured.glb: GLB version 1 is not supported" "$out" -- $(render_gbuffer $gltf1/BoxTextured-glTF-Binary/BoxTextured.glb)
+printf '{"scenes":{"s":{"nodes":[]}},"meshes":{}}' >"$work/old-layout.gltf"
+expect_error gltf-1-without-asset "old-layout.gltf: glTF 1.0 is not supported" "$out" -- $(render_gbuffer "$work/old-layout.gltf")
+
 # The deliberately broken files of Debian's assimp-testmodels.
 expect_error infinites "BoxWithInfinites.glb: .*not finite" "$out" -- $(render_gbuffer $assimp/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb)
 expect_error index-out-of-range "IndexOutOfRange.gltf: .*out of range" "$out" -- $(render_gbuffer $assimp/IndexOutOfRange/IndexOutOfRange.gltf)

@@ -74,7 +74,7 @@ static void test_lengths(void)
     unsigned char glb[FILE_LENGTH];
     make_glb(glb);
     put_u32(glb + 4, 1);
-    check_refused(glb, sizeof glb, "GLB version 1 is not 2");
+    check_refused(glb, sizeof glb, "GLB version 1 is not supported: gtlab reads binary glTF 2.0");
     make_glb(glb);
     put_u32(glb + 8, FILE_LENGTH + 1);
     check_refused(glb, sizeof glb, "GLB header gives a length of 65 bytes but the file has 64 (truncated?)");
