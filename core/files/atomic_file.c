@@ -11,6 +11,21 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+/* Why the temporary beside `path` could not be made, in words: a missing
+ * folder is named (issue 41: "No such file or directory" alone left the
+ * user guessing which), as is a path through a file; otherwise errno's. */
+static int refuse_unwritable(const char *path, int dir_len, int err, gt_error *e)
+{
+    char folder[ATOMIC_PATH_MAX];
+    snprintf(folder, sizeof folder, "%.*s", dir_len > 1 ? dir_len - 1 : dir_len, dir_len ? path : ".");
+    struct stat st;
+    if (err == ENOENT && stat(folder, &st) != 0)
+        return gt_error_set(e, path, "cannot write: the folder %s does not exist (gtlab does not create it)", folder);
+    if (err == ENOTDIR)
+        return gt_error_set(e, path, "cannot write: a part of %s is a file, not a folder", folder);
+    return gt_error_set(e, path, "cannot write: %s", strerror(err));
+}
+
 int atomic_file_begin(atomic_file *f, const char *path, gt_error *e)
 {
     if (!path || !*path)
@@ -32,7 +47,7 @@ int atomic_file_begin(atomic_file *f, const char *path, gt_error *e)
     snprintf(f->temp_path, sizeof f->temp_path, "%.*s.%s.tmp-%ld", dir_len, path, path + dir_len, (long)getpid());
     int fd = open(f->temp_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (fd < 0)
-        return gt_error_set(e, path, "cannot write: %s", strerror(errno));
+        return refuse_unwritable(path, dir_len, errno, e);
     close(fd);
     output_set_temporary_created(f->temp_path);
     return 0;

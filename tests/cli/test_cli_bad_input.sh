@@ -79,7 +79,9 @@ fi
 # Options and paths.
 expect_error spp-zero "--spp: 0 is out of range" "$out" -- render ao --scene builtin:plane --spp 0 -o "$out"
 expect_error spp-text "--spp: 'many' is not a whole number" "$out" -- render ao --scene builtin:plane --spp many -o "$out"
-expect_error unwritable "/nonexistent/folder/out.exr: cannot write" "" -- render ao --scene builtin:plane -o /nonexistent/folder/out.exr
+expect_error unwritable "/nonexistent/folder/out.exr: cannot write: the folder /nonexistent/folder does not exist" "" -- render ao --scene builtin:plane -o /nonexistent/folder/out.exr
+printf x >"$work/plain-file"
+expect_error output-under-a-file "plain-file/out.exr: cannot write: a part of .*plain-file is a file, not a folder" "" -- render ao --scene builtin:plane -o "$work/plain-file/out.exr"
 mkdir -p "$work/a-folder"
 expect_error output-is-folder "a-folder: cannot write: is a folder" "" -- render ao --scene builtin:plane -o "$work/a-folder"
 expect_error unknown-builtin "builtin:teapot: unknown built-in scene" "$out" -- render ao --scene builtin:teapot -o "$out"
