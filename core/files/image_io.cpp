@@ -307,7 +307,8 @@ void rgb_channels(const ImageSpec &spec, int index[3])
 
 } // namespace
 
-extern "C" int image_read_rgb_float(const char *path, int *width, int *height, float **rgb, gt_error *e)
+extern "C" int image_read_rgb_float(const char *path, int *width, int *height, float **rgb, int *floating_point,
+                                    gt_error *e)
 {
     *rgb = nullptr;
     int64_t file_size = 0;
@@ -343,5 +344,6 @@ extern "C" int image_read_rgb_float(const char *path, int *width, int *height, f
     *width = spec.width;
     *height = spec.height;
     *rgb = out;
+    *floating_point = spec.format.is_floating_point();
     return 0;
 }

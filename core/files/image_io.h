@@ -64,9 +64,11 @@ int image_write_data16(const char *path, const float *const *planes, int channel
  * (rgb[3 (y width + x) + c], row y = 0 at the top; malloc'd, the caller
  * frees it): channels R, G, B by name, else the first three, and a single
  * channel repeated three times. No colour conversion (the values are taken
- * as stored; HDR formats store linear values). Returns 0, or -1 with e
- * naming the file (missing, unreadable, no channels, more than 2^28 pixels
- * or 2^30 values, out of memory). */
-int image_read_rgb_float(const char *path, int *width, int *height, float **rgb, gt_error *e);
+ * as stored; HDR formats store linear values). *floating_point says whether
+ * the file stores floating-point texels (half, float, double: what HDR
+ * formats hold) rather than 8- or 16-bit integers (display-referred
+ * images). Returns 0, or -1 with e naming the file (missing, unreadable, no
+ * channels, more than 2^28 pixels or 2^30 values, out of memory). */
+int image_read_rgb_float(const char *path, int *width, int *height, float **rgb, int *floating_point, gt_error *e);
 
 #endif

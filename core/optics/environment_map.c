@@ -144,9 +144,16 @@ int environment_map_load(environment_map *env, const char *path, gt_error *e)
 {
     int width = 0, height = 0;
     float *rgb = NULL;
+    int floating_point = 0;
     memset(env, 0, sizeof *env);
-    if (image_read_rgb_float(path, &width, &height, &rgb, e) != 0)
+    if (image_read_rgb_float(path, &width, &height, &rgb, &floating_point, e) != 0)
         return -1;
+    if (!floating_point) { /* issue 41: an 8-bit JPEG was taken as radiance */
+        free(rgb);
+        return gt_error_set(e, path, "stores integer (8- or 16-bit, display-referred) texels, not radiance: an "
+                                     "environment must be an HDR image with floating-point texels (OpenEXR, Radiance "
+                                     ".hdr)");
+    }
     return adopt_texels(env, path, width, height, rgb, e);
 }
 

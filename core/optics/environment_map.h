@@ -78,9 +78,9 @@ typedef struct {
  * -1 with e (one line naming the file or the environment) and nothing
  * allocated. Rotation 0 and intensity 1 until environment_map_transform. */
 
-/* Reads path (any format OIIO reads). Refused: missing or unreadable, not
- * 2:1, non-finite or negative pixels beyond ringing (the first such value is
- * named). */
+/* Reads path (any format OIIO reads). Refused: missing or unreadable, an
+ * image of integer texels (8- or 16-bit: not radiance), not 2:1, non-finite
+ * or negative pixels beyond ringing (the first such value is named). */
 int environment_map_load(environment_map *env, const char *path, gt_error *e);
 
 /* A copy of width x height interleaved RGB texels (row 0 at the zenith),

@@ -21,7 +21,6 @@
 #include "environment/env_approx_lighting.h"
 #include "environment/env_approx_parts.h"
 
-#define BLENDER_WORLD "/usr/share/blender/datafiles/studiolights/world/"
 #define ENV_STUDY_DIR "environment"
 #define ENV_IMAGE_SCENE "cornell"
 
@@ -84,7 +83,7 @@ static int load_environments(env_state *st, gt_error *e)
             return -1;
     for (int i = 0; i < count; ++i) {
         char path[512];
-        snprintf(path, sizeof path, BLENDER_WORLD "%s.exr", blender[i]);
+        snprintf(path, sizeof path, ENVIRONMENT_BLENDER_WORLDS "%s.exr", blender[i]);
         if (load_environment(st, blender[i], path, e) != 0)
             return -1;
     }

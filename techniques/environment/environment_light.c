@@ -3,6 +3,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 
 void environment_render_settings_default(environment_render_settings *s, reference_quantity q)
 {
@@ -11,6 +12,22 @@ void environment_render_settings_default(environment_render_settings *s, referen
     snprintf(s->environment, sizeof s->environment, "white");
     s->intensity = 1.0f;
     s->f0 = -1.0f;
+}
+
+/* Not a built-in and no such file (issue 41: the image library's own words
+ * were passed on): the built-ins, and Blender's world of that name if there
+ * is one. */
+static int refuse_unknown_environment(const char *name, gt_error *e)
+{
+    char blender[512];
+    snprintf(blender, sizeof blender, ENVIRONMENT_BLENDER_WORLDS "%.64s.exr", name);
+    struct stat st;
+    if (strchr(name, '/') == NULL && stat(blender, &st) == 0)
+        return gt_error_set(e, "--environment", "'%s' is not white, sky or sun, nor a file; Blender's world of that "
+                                                "name is %s", name, blender);
+    if (strpbrk(name, "/.")) /* a path: the message names the file */
+        return gt_error_set(e, name, "cannot open: no such file (an environment is white, sky, sun or an HDR image)");
+    return gt_error_set(e, "--environment", "'%s' is not white, sky or sun, nor a file that exists", name);
 }
 
 static int load_named(environment_map *map, const char *name, gt_error *e)
@@ -25,6 +42,9 @@ static int load_named(environment_map *map, const char *name, gt_error *e)
         environment_sun sun = environment_sun_default();
         return environment_map_sun(map, &sun, e);
     }
+    struct stat st;
+    if (stat(name, &st) != 0)
+        return refuse_unknown_environment(name, e);
     return environment_map_load(map, name, e);
 }
 

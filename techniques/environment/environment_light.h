@@ -26,6 +26,10 @@
 #include "multibounce/multibounce_integrator.h"
 #include "raytracer/reference_quantity.h"
 
+/* Blender's CC0 studio-light worlds (Debian's blender-data): what the
+ * environment study renders under, by name, <name>.exr. */
+#define ENVIRONMENT_BLENDER_WORLDS "/usr/share/blender/datafiles/studiolights/world/"
+
 /* The settings of env-diffuse and env-specular, one struct for both
  * (reference_request.settings; the header names the one rendered). */
 typedef struct {

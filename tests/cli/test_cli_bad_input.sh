@@ -94,6 +94,14 @@ expect_error misspelt-option "render: unknown option '--sppp' (did you mean '--s
 expect_error option-without-value "render: --spp needs a value" "$out" -- render ao --scene builtin:plane -o "$out" --spp
 expect_error normal-mode "--normal: 'bumpy'" "$out" -- render ao --scene builtin:plane --normal bumpy -o "$out"
 
+# Environments: a name that is neither a built-in nor a file, and an LDR image.
+env_render() { echo render env-diffuse --scene builtin:plane --albedo 0.5 --spp 1 --width 8 --height 8 --environment "$1" -o "$out"; }
+expect_error environment-unknown "--environment: 'sunset' is not white, sky or sun, nor a file" "$out" -- $(env_render sunset)
+oiiotool --pattern constant:color=0.5,0.5,0.5 64x32 3 -d uint8 -o "$work/ldr.jpg"
+expect_error environment-ldr "ldr.jpg: stores integer (8- or 16-bit, display-referred) texels, not radiance" "$out" -- $(env_render "$work/ldr.jpg")
+oiiotool --pattern constant:color=0.5,0.5,0.5 64x32 3 -d half -o "$work/hdr.exr"
+expect_ok environment-half-float $(env_render "$work/hdr.exr")
+
 # Camera JSON.
 printf '{"position":[0,1,5],"target":[0,0' >"$work/cam-malformed.json"
 expect_error camera-malformed "cam-malformed.json: JSON text ends early" "$out" -- render ao --scene builtin:plane --camera "$work/cam-malformed.json" -o "$out"

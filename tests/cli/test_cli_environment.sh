@@ -34,7 +34,7 @@ ratio = float(m.group(1)) if m else None
 sys.exit(0 if m and (abs(ratio - 0.7) <= 5e-4 or (ratio >= 0.7) == (m.group(2) == "met")) else 1)
 PY
 expect_error other-light "gtlab.settings" "$work/x.exr" -- merge "$work/b1.exr" "$work/hdr.exr" -o "$work/x.exr"
-expect_error missing-file "$work/none.exr: cannot open: No such file or directory" "$work/x.exr" -- render env-diffuse "${common[@]}" --environment "$work/none.exr" --albedo 0.5 -o "$work/x.exr"
+expect_error missing-file "$work/none.exr: cannot open: no such file (an environment is white, sky, sun or an HDR image)" "$work/x.exr" -- render env-diffuse "${common[@]}" --environment "$work/none.exr" --albedo 0.5 -o "$work/x.exr"
 expect_error not-an-hdr "$work/sky.exr" "$work/x.exr" -- render env-diffuse "${common[@]}" --environment "$work/sky.exr" --albedo 0.5 -o "$work/x.exr"
 expect_error rotate-ao "--env-rotate: applies to env-diffuse and env-specular only" "$work/x.exr" -- render ao --scene builtin:corner --env-rotate 10 -o "$work/x.exr"
 expect_error f0-diffuse "--f0: applies to env-specular only" "$work/x.exr" -- render env-diffuse --scene builtin:corner --f0 0.5 --albedo 0.5 -o "$work/x.exr"
