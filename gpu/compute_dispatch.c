@@ -297,15 +297,15 @@ static int submit(gpu_device *g, dispatch_objects *o, const gpu_dispatch *d, dou
     return r == VK_SUCCESS ? 0 : gt_error_set(e, d->what, "the device failed the dispatch (VkResult %d)", (int)r);
 }
 
-long gpu_first_nan(const float *values, size_t count)
+long gpu_first_non_finite(const float *values, size_t count)
 {
     for (size_t i = 0; i < count; ++i)
-        if (isnan(values[i]))
+        if (!isfinite(values[i]))
             return (long)i;
     return -1;
 }
 
-/* Copies the outputs back; the first NaN in any is an error. */
+/* Copies the outputs back; the first NaN or infinity in any is an error. */
 static int read_back(gpu_device *g, dispatch_objects *o, const gpu_dispatch *d, gt_error *e)
 {
     for (int k = 0; k < d->buffer_count; ++k) {
@@ -317,9 +317,10 @@ static int read_back(gpu_device *g, dispatch_objects *o, const gpu_dispatch *d, 
             return gt_error_set(e, d->what, "cannot map output %s", b->name);
         memcpy(b->data, mapped, b->size);
         vkUnmapMemory(g->device, o->memory[k]);
-        long nan = gpu_first_nan(b->data, b->size / sizeof(float));
-        if (nan >= 0)
-            return gt_error_set(e, d->what, "NaN in output %s at element %ld", b->name, nan);
+        long bad = gpu_first_non_finite(b->data, b->size / sizeof(float));
+        if (bad >= 0)
+            return gt_error_set(e, d->what, "%s in output %s at element %ld", isnan(((const float *)b->data)[bad]) ? "NaN" : "infinity",
+                                b->name, bad);
     }
     return 0;
 }

@@ -66,7 +66,8 @@ typedef struct {
  * declares that is not one of d's or not of its kind (gpu/spirv_bindings.h),
  * "<what>: device timeout
  * after <t> s" (the device is then left busy: gpu_device_close only forgets
- * it), "<what>: NaN in output <name> at element <i>" (the outputs are
+ * it), "<what>: NaN in output <name> at element <i>" (or "infinity in
+ * output": issue 41, an Inf reached the scores as DSSIM -nan; the outputs are
  * overwritten all the same: the caller writes nothing), a Vulkan failure.
  * seconds (may be NULL): wall time from submission to the fence. */
 int gpu_dispatch_run(gpu_device *device, const gpu_dispatch *d, double *seconds, gt_error *e);
@@ -84,7 +85,7 @@ int gpu_dispatch_open(gpu_device *device, const gpu_dispatch *d, gpu_dispatch_se
 int gpu_dispatch_frame(gpu_dispatch_session *s, double *seconds, gt_error *e);
 void gpu_dispatch_close(gpu_dispatch_session *s); /* NULL: nothing */
 
-/* The first NaN among count floats, or -1. */
-long gpu_first_nan(const float *values, size_t count);
+/* The first NaN or infinity among count floats, or -1. */
+long gpu_first_non_finite(const float *values, size_t count);
 
 #endif

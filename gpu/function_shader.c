@@ -79,11 +79,13 @@ char *gpu_function_wrap(const gpu_function_contract *c, const char *text, const 
     return source;
 }
 
-/* A NaN found by the dispatch ("... NaN in output outputs at element I") as
- * the sample that gave it: -1 with e rewritten, 0 for any other error. */
+/* A NaN or infinity found by the dispatch ("... NaN in output outputs at
+ * element I", "infinity in output") as the sample that gave it: -1 with e
+ * rewritten, 0 for any other error. */
 static int name_nan(const gpu_function_contract *c, const char *path, const float *in, size_t offset, gt_error *e)
 {
-    const char *at = strstr(e->message, "NaN in output");
+    const char *infinite = strstr(e->message, "infinity in output");
+    const char *at = infinite ? infinite : strstr(e->message, "NaN in output");
     const char *element = at ? strstr(at, "at element ") : NULL;
     if (!element)
         return 0;
@@ -92,7 +94,7 @@ static int name_nan(const gpu_function_contract *c, const char *path, const floa
     for (int k = 0, n = 0; k < c->inputs && k < GPU_FUNCTION_MAX_INPUTS; ++k)
         n += snprintf(args + n, sizeof args - (size_t)n, "%s%.9g", k ? ", " : "",
                       (double)in[(size_t)c->inputs * i + (size_t)k]);
-    return gt_error_set(e, path, "%s(%s) is NaN", c->name, args);
+    return gt_error_set(e, path, "%s(%s) is %s", c->name, args, infinite ? "infinite" : "NaN");
 }
 
 /* A compile error shaderc places past the file's last line is in the

@@ -54,7 +54,8 @@ int gpu_function_load(const gpu_function_contract *c, const char *path, char **t
 /* out[i] = c->name(in[c->inputs i + 0], ...), i < count, in as many
  * dispatches as gpu/sample_map.h allows. Returns 0, or -1 with e: a compile
  * error (shaderc's "<path>:<line>: error: ..."), a device timeout, or
- * "<path>: gtlab_multibounce(<v>, <rho>) is NaN" (the sample's inputs). */
+ * "<path>: gtlab_multibounce(<v>, <rho>) is NaN" (or "is infinite"; the
+ * sample's inputs). */
 int gpu_function_eval(gpu_device *device, const gpu_function_contract *c, const char *text, const char *path,
                       const float *in, float *out, size_t count, double timeout, gt_error *e);
 

@@ -79,12 +79,13 @@ void plugin_close(gtlab_plugin *p)
 
 int plugin_exports(const gtlab_plugin *p, const char *symbol) { return lookup(p->handle, symbol) != NULL; }
 
-/* The plug-in's out kept inside the mask, 0 outside; -1 with e at a NaN inside. */
+/* The plug-in's out kept inside the mask, 0 outside; -1 with e at a NaN or
+ * an infinity inside. */
 static int masked(const char *what, const float *mask, size_t n, float *out, gt_error *e)
 {
     for (size_t i = 0; i < n; ++i) {
-        if (isnan(out[i]) && mask[i] != 0.0f)
-            return gt_error_set(e, what, "the plug-in returned NaN at sample %zu", i);
+        if (!isfinite(out[i]) && mask[i] != 0.0f)
+            return gt_error_set(e, what, "the plug-in returned %s at sample %zu", isnan(out[i]) ? "NaN" : "infinity", i);
         out[i] = mask[i] != 0.0f ? out[i] : 0.0f;
     }
     return 0;

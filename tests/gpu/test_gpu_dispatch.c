@@ -105,6 +105,16 @@ static void test_nan(gpu_device *g)
     CHECK_MSG(strcmp(e.message, "nan.glsl: NaN in output y at element 0") == 0, "%s", e.message);
 }
 
+/* x / 1e-37 overflows a float from x = 35 (3.4e38 is the largest): an
+ * infinity is refused as a NaN is (issue 41). */
+static void test_infinity(gpu_device *g)
+{
+    static float y[COUNT];
+    gt_error e = {{0}};
+    CHECK(run(g, kGlsl, "inf.glsl", NULL, (params){1e-37f, 0.0f, COUNT}, y, 10.0, &e) != 0);
+    CHECK_MSG(strcmp(e.message, "inf.glsl: infinity in output y at element 35") == 0, "%s", e.message);
+}
+
 /* A binding outside the dispatch's, and a storage buffer where it binds a
  * uniform block: one line each, before the driver sees the pipeline. */
 static void test_wrong_binding(gpu_device *g)
@@ -184,6 +194,7 @@ int main(void)
         test_affine(g, kGlsl, "affine.glsl", NULL);
         test_affine(g, kHlsl, "affine.hlsl", "CSMain");
         test_nan(g);
+        test_infinity(g);
         test_wrong_binding(g);
         gpu_device_close(g);
     }
