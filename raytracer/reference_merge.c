@@ -61,13 +61,18 @@ static int check_compatible(const image *first, const image *other, const char *
     const int by_hash = image_get_attribute(first, ATTR_SCENE_HASH) || image_get_attribute(other, ATTR_SCENE_HASH);
     const char *const keys[] = {ATTR_QUANTITY, by_hash ? ATTR_SCENE_HASH : ATTR_SCENE, ATTR_CAMERA, ATTR_SETTINGS,
                                 ATTR_NORMAL};
+    if (image_get_attribute(other, ATTR_CHECKPOINT_OF)) /* issue 41: it was called a gtlab.quantity mismatch */
+        return gt_error_set(e, name, "is the checkpoint of an unfinished render, not a part to merge: finish it "
+                                     "with the same 'gtlab render' command and --resume, then merge its output");
     if (first->width != other->width || first->height != other->height)
         return gt_error_set(e, name, "size %dx%d differs from the first input's %dx%d", other->width, other->height,
                             first->width, first->height);
     for (size_t k = 0; k < sizeof keys / sizeof keys[0]; ++k) {
         const char *a = image_get_attribute(first, keys[k]), *b = image_get_attribute(other, keys[k]);
         if (!a || !b || strcmp(a, b) != 0)
-            return gt_error_set(e, name, "its %s differs from the first input's: not parts of one render", keys[k]);
+            return gt_error_set(e, name, "its %s ('%.80s') differs from the first input's ('%.80s'): not parts of one "
+                                         "render",
+                                keys[k], b ? b : "none", a ? a : "none");
     }
     return check_same_control_variate(first, other, name, e);
 }

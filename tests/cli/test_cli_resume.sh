@@ -29,6 +29,8 @@ stopped_render() {
 # Stopped after 2 blocks, resumed and stopped after 1 more, resumed to the end.
 GTLAB_STOP_AFTER_BLOCKS=2 stopped_render hook-1 143 "${small[@]}"
 GTLAB_STOP_AFTER_BLOCKS=1 stopped_render hook-2 143 "${small[@]}" --resume
+# A checkpoint is not a part to merge: said so (issue 41: it was called a gtlab.quantity mismatch).
+expect_error merge-checkpoint "r.checkpoint.exr: is the checkpoint of an unfinished render, not a part to merge" merged.exr -- merge whole.exr r.checkpoint.exr -o merged.exr
 expect_ok resume render "${small[@]}" --resume -o r.exr
 cmp -s whole.exr r.exr && pass || fail "stopped twice and resumed: not the uninterrupted file"
 [ ! -e r.checkpoint.exr ] && pass || fail "the checkpoint stayed after the render finished"
