@@ -52,6 +52,25 @@ static int check_same_control_variate(const image *first, const image *other, co
     return 0;
 }
 
+/* How two values of an attribute differ (issue 41: the user was not told):
+ * both in full when short, else where they first differ. */
+static void describe_difference(const char *first, const char *other, char *out, size_t size)
+{
+    if (!first || !other) {
+        snprintf(out, size, "%s", first ? "it has none" : "the first has none");
+        return;
+    }
+    if (strlen(first) <= 48 && strlen(other) <= 48) {
+        snprintf(out, size, "'%s' against '%s'", other, first);
+        return;
+    }
+    size_t at = 0;
+    while (first[at] && first[at] == other[at])
+        ++at;
+    snprintf(out, size, "they first differ at character %zu: '%.24s' against '%.24s'", at + 1, other + at,
+             first + at);
+}
+
 /* The attributes that must agree for a merge to make sense. */
 static int check_compatible(const image *first, const image *other, const char *name, gt_error *e)
 {
@@ -69,10 +88,12 @@ static int check_compatible(const image *first, const image *other, const char *
                             first->width, first->height);
     for (size_t k = 0; k < sizeof keys / sizeof keys[0]; ++k) {
         const char *a = image_get_attribute(first, keys[k]), *b = image_get_attribute(other, keys[k]);
-        if (!a || !b || strcmp(a, b) != 0)
-            return gt_error_set(e, name, "its %s ('%.80s') differs from the first input's ('%.80s'): not parts of one "
-                                         "render",
-                                keys[k], b ? b : "none", a ? a : "none");
+        if (!a || !b || strcmp(a, b) != 0) {
+            char how[256];
+            describe_difference(a, b, how, sizeof how);
+            return gt_error_set(e, name, "its %s differs from the first input's (%s): not parts of one render",
+                                keys[k], how);
+        }
     }
     return check_same_control_variate(first, other, name, e);
 }

@@ -131,7 +131,7 @@ expect_error merge-overlap "small.exr: .*counted twice" "$work/merged.exr" -- me
 expect_error merge-different "other.exr: size 24x24 differs" "$work/merged.exr" -- merge "$work/small.exr" "$work/other.exr" -o "$work/merged.exr"
 expect_ok gbuffer-render render gbuffer --scene builtin:plane --width 16 --height 16 -o "$work/g.exr"
 expect_ok other-seed render ao --scene builtin:plane --width 16 --height 16 --spp 4 --max-distance 2 -o "$work/limited.exr"
-expect_error merge-settings "limited.exr: its gtlab.settings ('max_distance=2.*') differs from the first input's ('max_distance=inf.*'): not parts of one render" "$work/merged.exr" -- merge "$work/small.exr" "$work/limited.exr" -o "$work/merged.exr"
+expect_error merge-settings "limited.exr: its gtlab.settings differs from the first input's ('max_distance=2.*' against 'max_distance=inf.*'): not parts of one render" "$work/merged.exr" -- merge "$work/small.exr" "$work/limited.exr" -o "$work/merged.exr"
 expect_error merge-gbuffer "g.exr: no Monte Carlo accumulator" "$work/merged.exr" -- merge "$work/g.exr" "$work/small.exr" -o "$work/merged.exr"
 # lut atmosphere: an axis size out of range is refused before any work.
 expect_error lut-atmosphere-size "--theta-v: 0 is out of range" "$work/atmosphere/atmosphere_luts.h" -- lut atmosphere --theta-v 0 -o "$work/atmosphere"
