@@ -157,7 +157,8 @@ static void say_samples_to_decide(report_headline *h, double gap, double floor)
         return;
     h->samples_factor_to_decide = (floor / gap) * (floor / gap);
     size_t k = strlen(h->basis);
-    snprintf(h->basis + k, sizeof h->basis - k, "; about %.3g times the references' samples would decide it",
+    snprintf(h->basis + k, sizeof h->basis - k, "; about %.3g times the references' samples would decide it, if the floor "
+             "falls as 1/sqrt(samples)",
              h->samples_factor_to_decide);
 }
 
@@ -206,7 +207,8 @@ static void append_what_decides(const report_headline *h, char *out, size_t size
     else if (h->cases_to_decide < 0)
         snprintf(out + k, size - k, "%s: no number of cases (its gap sits at the visible margin)", h->topic);
     else if (h->samples_factor_to_decide > 0)
-        snprintf(out + k, size - k, "%s: about %.3g times the references' samples", h->topic,
+        snprintf(out + k, size - k, "%s: about %.3g times the references' samples (if their noise floor falls as "
+                 "1/sqrt(samples))", h->topic,
                  h->samples_factor_to_decide);
     else
         snprintf(out + k, size - k, "%s: a measure with an interval", h->topic);

@@ -18,8 +18,10 @@ atmosphere_luts_request atmosphere_luts_default_request(study_quality quality)
     atmosphere_luts_request rq = {.points = q->points, .blend_count = q->blend_count,
                                   .uniform_refinement = q->uniform_refinement, .seed = 1, .sky_pixels = q->sky_pixels,
                                   .sky_refinement = q->sky_refinement};
-    for (int k = 0; k < rq.blend_count; ++k)
-        rq.blends[k] = (k + 0.5) / rq.blend_count; /* the centres of blend_count equal parts of t */
+    /* The centres of blend_count equal parts of t; a count past the array is
+     * left for the study's check of the request to refuse. */
+    for (int k = 0; k < rq.blend_count && k < ATMOSPHERE_STUDY_MAX_BLENDS; ++k)
+        rq.blends[k] = (k + 0.5) / rq.blend_count;
     return rq;
 }
 

@@ -17,8 +17,10 @@ kulla_conty_request kulla_conty_default_request(study_quality quality)
 {
     static const int sizes[] = {4, 8, 16, 32, 64, 128, 256};
     const kulla_conty_quality *q = kulla_conty_quality_of(quality);
-    kulla_conty_request rq = {WRITTEN_SIZE, {0}, q->size_count, q->roughness_points, q->mu_points};
-    memcpy(rq.sizes, sizes, sizeof sizes[0] * (size_t)q->size_count);
+    int count = sizeof sizes / sizeof sizes[0]; /* a size_count past the list (a table edit) takes all of it */
+    count = q->size_count < count ? q->size_count : count;
+    kulla_conty_request rq = {WRITTEN_SIZE, {0}, count, q->roughness_points, q->mu_points};
+    memcpy(rq.sizes, sizes, sizeof sizes[0] * (size_t)count);
     return rq;
 }
 

@@ -18,10 +18,11 @@ sg_ndf_request sg_ndf_default_request(study_quality quality)
 {
     static const double alphas[ALPHA_PAIRS][2] = {{0.1, 0.05}, {0.2, 0.1}, {0.4, 0.2}, {0.5, 0.1}, {0.8, 0.2}};
     const sg_ndf_quality *q = sg_ndf_quality_of(quality);
-    int first = (ALPHA_PAIRS - q->material_pairs) / 2; /* the middle material_pairs of the list */
+    int pairs = q->material_pairs < ALPHA_PAIRS ? q->material_pairs : ALPHA_PAIRS; /* past the list: all of it */
+    int first = (ALPHA_PAIRS - pairs) / 2; /* the middle material_pairs of the list */
     sg_ndf_request rq = {0};
     for (int kind = 0; kind < 2; ++kind)
-        for (int i = first; i < first + q->material_pairs; ++i) {
+        for (int i = first; i < first + pairs; ++i) {
             const double *p = alphas[i];
             rq.materials[rq.material_count] = (anisotropic_ndf){(ndf_kind)kind, p[0], p[1]};
             rq.imaged[rq.material_count++] = p[0] == 0.4 && p[1] == 0.2; /* one per NDF */

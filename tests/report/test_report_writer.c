@@ -188,7 +188,8 @@ static void test_headline_opening(void)
     CHECK(!strcmp(s, "Of 5 rankings, 1 is decided (a significant gap, past its visible margin where it states one), "
                      "1 shows no difference a viewer could see, 2 are undecided at this quality, and 1 has no "
                      "interval (above the noise floor, or not computed); what would decide them: B: about 42 paired "
-                     "cases (it has 6); C: about 4 times the references' samples."));
+                     "cases (it has 6); C: about 4 times the references' samples (if their noise floor falls as "
+                     "1/sqrt(samples))."));
     headlines_opening(rows, 0, s, sizeof s);
     CHECK(s[0] == 0);
     rows[1].cases_to_decide = -1;
