@@ -20,6 +20,9 @@ typedef struct {
     const char *noun;  /* "fit problem": what an unknown name is not */
     const cli_subcommand *table;
     size_t count;
+    /* The name now of what went by `former` before, or NULL (told only when it is
+     * one of this verb's subcommands); NULL: none renamed. */
+    const char *(*renamed)(const char *former);
 } cli_subcommand_verb;
 
 /* Runs the subcommand named by argv[1] with argv + 1; with no argument

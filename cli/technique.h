@@ -1,8 +1,8 @@
 /* A technique as the command line sees it: the subcommands it adds to the
  * verbs (`gtlab approx NAME`, `fit`, `lut`, `check`, `bench`) and its
  * sections of `gtlab all`. Each technique defines one `technique` in its
- * folder's command-line face (techniques/<name>/<name>_cli.c, or
- * cli/technique_<name>.c for one not yet moved); techniques/CMakeLists.txt
+ * folder's command-line face (techniques/<name>/<name>_cli.c);
+ * techniques/CMakeLists.txt
  * lists them, one line each, cli/techniques.c is generated from it, and the
  * verbs, their --help and `gtlab all` are built from that list, so adding
  * a technique edits no verb (docs/adding-a-technique.md). The reference
@@ -27,11 +27,18 @@ typedef struct {
     const char *needs;  /* the key of a stage whose `writes` folder this one reads, or NULL */
 } all_stage;
 
+/* A name a stage or subcommand went by before, and the one it has now: a
+ * user's scripts keep the old one, and are told the new one (issue 43). */
 typedef struct {
-    const char *name;
+    const char *former, *name;
+} technique_rename;
+
+typedef struct {
+    const char *name; /* the folder's name in kebab case: techniques/height_fog is "height-fog" */
     /* Per verb, a list ended by an entry with a NULL name; NULL: none. */
     const cli_subcommand *subcommands[VERB_KIND_COUNT];
     const all_stage *stages; /* ended by an entry with a NULL key; NULL: none */
+    const technique_rename *renamed; /* ended by an entry with a NULL former; NULL: none */
 } technique;
 
 /* Defines technique_<id>: a technique that is one section of `gtlab all`
@@ -41,7 +48,9 @@ typedef struct {
     const technique technique_##id = {.name = key, .stages = id##_stages}
 
 /* A technique's tables written in place, the NULL terminator added:
- * .subcommands = {[VERB_LUT] = CLI_SUBCOMMANDS({"name", fn, "help"}, ...)}, .stages = ALL_STAGES({...}). */
+ * .subcommands = {[VERB_LUT] = CLI_SUBCOMMANDS({"name", fn, "help"}, ...)}, .stages = ALL_STAGES({...}),
+ * .renamed = TECHNIQUE_RENAMES({"old", "new"}, ...). */
+#define TECHNIQUE_RENAMES(...) ((const technique_rename[]){__VA_ARGS__, {NULL, NULL}})
 #define CLI_SUBCOMMANDS(...) ((const cli_subcommand[]){__VA_ARGS__, {NULL, NULL, NULL}})
 #define ALL_STAGES(...) ((const all_stage[]){__VA_ARGS__, {NULL, NULL, NULL, NULL, NULL}})
 
@@ -72,6 +81,10 @@ extern const technique *const gtlab_techniques[];
 size_t technique_subcommands(technique_verb verb, cli_subcommand *out, size_t capacity);
 /* Every stage of `gtlab all`, in registry order; returns their number. */
 size_t technique_stages(const all_stage **out, size_t capacity);
+
+/* The name a stage or subcommand has now that went by `former` before, or
+ * NULL when no technique ever named one so. */
+const char *technique_renamed(const char *former);
 
 /* Runs `gtlab <verb> NAME ...` over the registry's subcommands of that verb. */
 int technique_run_verb(technique_verb verb, const char *name, const char *usage, const char *kind, const char *noun,

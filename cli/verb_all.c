@@ -50,6 +50,8 @@ static void describe(char *text, size_t size)
                       stages[i]->needs ? ", reads the output of " : "", stages[i]->needs ? stages[i]->needs : "");
 }
 
+static int stage_index(const char *key);
+
 /* Marks the stages named in the comma-separated list; -1 after an error (printed). */
 static int select_stages(const char *list, int selected[STAGE_MAX])
 {
@@ -61,6 +63,9 @@ static int select_stages(const char *list, int selected[STAGE_MAX])
         for (int i = 0; i < stage_count; ++i)
             if (strcmp(tok, stages[i]->key) == 0)
                 selected[i] = found = 1;
+        const char *now = found ? NULL : technique_renamed(tok);
+        if (now && stage_index(now) >= 0)
+            return cli_failf("--stages", "stage '%s' is now '%s'", tok, now), -1;
         if (!found)
             return cli_failf("--stages", "unknown stage '%s' (see 'gtlab all --help')", tok), -1;
     }
@@ -78,7 +83,13 @@ static int stage_index(const char *key)
     return -1;
 }
 
-static int stage_known(const char *key) { return stage_index(key) >= 0; }
+/* Whether key is a stage; if not, *now is its name today if it was renamed. */
+static int stage_known_or_renamed(const char *key, const char **now)
+{
+    const char *renamed = technique_renamed(key);
+    *now = stage_index(key) < 0 && renamed && stage_index(renamed) >= 0 ? renamed : NULL;
+    return stage_index(key) >= 0;
+}
 
 static study_project project_file; /* --project FILE */
 
@@ -94,7 +105,7 @@ static int parse_options(int argc, char **argv, report_context *ctx, int selecte
     if (cli_options_parse(&command, (void *[]){&s->quality, &s->output_dir, &s->threads, stage_list, project}, argc,
                           argv, status) != 0)
         return 1;
-    if (*project && study_project_read(*project, stage_known, &project_file, &e) != 0)
+    if (*project && study_project_read(*project, stage_known_or_renamed, &project_file, &e) != 0)
         return *status = cli_fail(&e), 1;
     study_project_apply(*project ? &project_file : NULL, s, stage_list);
     return *stage_list && select_stages(*stage_list, selected) != 0 ? (*status = EXIT_USER_ERROR, 1) : 0;

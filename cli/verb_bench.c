@@ -95,6 +95,9 @@ int verb_bench(int argc, char **argv)
         cli_reset_getopt();
         return registered[at].run(argc - 1, argv + 1);
     }
+    const char *now = name.count == 1 ? technique_renamed(name.values[0]) : NULL;
+    if (now && registered_index(registered, count, now) >= 0)
+        return cli_failf("bench", "'%s' is now '%s' (gtlab bench %s)", name.values[0], now, now);
     if (name.count == 0 || strcmp(name.values[0], "rays") != 0)
         return cli_failf("bench", "name a benchmark: rays, specular-occlusion, gtao, multibounce, fit, sphere-light, "
                                   "convergence or env-diffuse (see 'gtlab bench --help')");

@@ -84,6 +84,6 @@ static const cli_subcommand subcommands[] = {{"run", shader_run_command, "a scre
 int verb_shader(int argc, char **argv)
 {
     static const cli_subcommand_verb verb = {"shader", "run|score [options]", "subcommands",
-                                             "shader subcommand", subcommands, 2};
+                                             "shader subcommand", subcommands, 2, NULL};
     return cli_run_subcommand(&verb, argc, argv);
 }

@@ -122,7 +122,7 @@
 #define CH_SPHERE_B "sphere.B"
 #define CH_SPHERE_RGB {CH_SPHERE_R, CH_SPHERE_G, CH_SPHERE_B}
 
-/* ---- Height fog (render fog; techniques/height_fog/fog_integrator.h) --- */
+/* ---- Height fog (render fog; techniques/height_fog/height_fog_integrator.h) --- */
 /* Transmittance of the fog from the camera to the surface (closed form). */
 #define CH_FOG_T_R "fog.T.R"
 #define CH_FOG_T_G "fog.T.G"

@@ -53,7 +53,7 @@
  * G2 / n.v is 0/0; texel centres never reach the clamp for N <= 5000.
  *
  * The table is shared: the environment lighting's split sum
- * (techniques/environment/prefiltered_radiance.h, env_approx.h) and the LTC
+ * (techniques/environment/prefiltered_radiance.h, environment_approx.h) and the LTC
  * fit's magnitude and Fresnel term (techniques/ltc/ltc_fit.c) read it; the DFG technique
  * (techniques/dfg/) writes it in every format and studies its size. */
 #ifndef GTLAB_LUTS_DFG_LUT_H

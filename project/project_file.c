@@ -286,8 +286,10 @@ static int read_strings(const reader *r, const cJSON *root, const char *key, stu
 static int take_stage(const reader *r, const char *at, const char *key, study_project *p)
 {
     gt_quoted q;
-    if (key[0] == '\0' || strchr(key, ',') || (r->known && !r->known(key)))
-        return fail(r, at, "unknown stage '%s' (see 'gtlab all --help')", gt_quote(key, &q));
+    const char *now = NULL;
+    if (key[0] == '\0' || strchr(key, ',') || (r->known && !r->known(key, &now)))
+        return now ? fail(r, at, "stage '%s' is now '%s'", gt_quote(key, &q), now)
+                   : fail(r, at, "unknown stage '%s' (see 'gtlab all --help')", gt_quote(key, &q));
     size_t n = strlen(p->stages);
     if (n + strlen(key) + 2 > sizeof p->stages)
         return fail(r, at, "the stage list is longer than %zu characters", sizeof p->stages - 2);

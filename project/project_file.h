@@ -40,8 +40,10 @@ typedef struct study_project {
     study_screen_shader screen_shaders[PROJECT_MAX_FILES];
 } study_project;
 
-/* Whether `key` names a stage (the caller's registry); NULL: any name. */
-typedef int (*study_project_stage_known)(const char *key);
+/* Whether `key` names a stage (the caller's registry); when it does not
+ * but a stage went by that name before, *now is the stage's name today,
+ * else NULL. NULL: any name. */
+typedef int (*study_project_stage_known)(const char *key, const char **now);
 
 /* Reads and checks the project file: its JSON, every key and value, that
  * each scene file and camera file exists, and that each scene loads with

@@ -1,6 +1,6 @@
 /* The exponential height fog of the Decima talk (Kojima Productions,
  * "Height fog", SIGGRAPH 2017 Advances; issue 16), once, for the reference
- * integrators (techniques/height_fog/fog_integrator.h) and the analytic model
+ * integrators (techniques/height_fog/height_fog_integrator.h) and the analytic model
  * (height_fog/height_fog.h). World up is +Y (glTF), altitudes in metres.
  *
  * Medium. Rayleigh scattering beta_Rs (RGB), Mie scattering beta_Ms and Mie

@@ -5,6 +5,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "anti_aliasing/anti_aliasing_study.h" /* AA_DIR */
+
 #include "report/claim_thresholds.h"
 #include "report/claims_table.h"
 #include "report/report_table.h"
@@ -154,10 +156,10 @@ static void figures(report_context *ctx, const char *path)
     char strips[7][96], errors[6][96];
     const char *sp[7], *ep[6];
     for (int k = 0; k < 7; ++k) {
-        snprintf(strips[k], sizeof strips[k], "aa/temporal_%s_%s_strip.png", path, names[k]);
+        snprintf(strips[k], sizeof strips[k], AA_DIR "/temporal_%s_%s_strip.png", path, names[k]);
         sp[k] = strips[k];
         if (k > 0)
-            snprintf(errors[k - 1], sizeof errors[k - 1], "aa/temporal_%s_%s_error.png", path, names[k]), ep[k - 1] = errors[k - 1];
+            snprintf(errors[k - 1], sizeof errors[k - 1], AA_DIR "/temporal_%s_%s_error.png", path, names[k]), ep[k - 1] = errors[k - 1];
     }
     report_figures(ctx->doc, 7, sp, captions);
     report_figures(ctx->doc, 6, ep, captions + 1);

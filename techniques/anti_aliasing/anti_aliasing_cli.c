@@ -1,6 +1,6 @@
 /* The command-line face of anti-aliasing (Decima, SIGGRAPH 2017; issue 19):
- * `gtlab approx aa` (a technique over frames of a pan), `gtlab render
- * frames` (the frames and their truth), `gtlab bench aa` and the stage aa of
+ * `gtlab approx anti-aliasing` (a technique over frames of a pan), `gtlab render
+ * frames` (the frames and their truth), `gtlab bench anti-aliasing` and the stage anti-aliasing of
  * `gtlab all` (the study, anti_aliasing_study.h, and its section); the
  * command bodies are in aa_commands.h. */
 #include <stdio.h>
@@ -22,7 +22,7 @@ static int approx_aa(int argc, char **argv)
         CLI_CHOICE("technique", "T", aa_technique_short_name, AA_T_TECHNIQUES, "none, fxaa, taa, edge-taa, checkerboard"),
         CLI_STRING("scene", "S", "builtin:NAME or a glTF file"), CLI_INT32("frames", "N", 1, 100000, "frames"),
         CLI_INT32("threads", "T", 1, 1024, "worker threads; the result does not depend on it"), CLI_OUTPUT_DIR, CLI_END};
-    static const cli_command command = {"approx aa", "An AA technique over 384x288 frames of a pan (4 cm, 0.25 deg a "
+    static const cli_command command = {"approx anti-aliasing", "An AA technique over 384x288 frames of a pan (4 cm, 0.25 deg a "
         "frame): DIR/<technique>_NNN.exr, .png\n(display values; anti_aliasing/aa_commands.h).", options, NULL, NULL};
     aa_frames_request rq = {"builtin:aa-thin", 384, 288, 8, {0.04f, 0.0f, 0.0f}, 0.25f, 3, NULL, (int)threads_default(),
                             0, 0};
@@ -66,7 +66,7 @@ static int render_frames(int argc, char **argv)
 static int bench_aa(int argc, char **argv)
 {
     static const cli_option options[] = {CLI_THREADS, CLI_END};
-    static const cli_command command = {"bench aa", "ms per 1920x1080 frame per AA technique, in C.", options, NULL, NULL};
+    static const cli_command command = {"bench anti-aliasing", "ms per 1920x1080 frame per AA technique, in C.", options, NULL, NULL};
     long threads = threads_default();
     int status;
     gt_error e;
@@ -76,9 +76,10 @@ static int bench_aa(int argc, char **argv)
 }
 
 const technique technique_anti_aliasing = {
-    .name = "aa",
-    .subcommands = {[VERB_APPROX] = CLI_SUBCOMMANDS({"aa", approx_aa, "anti-aliasing over frames of a pan"}),
+    .name = "anti-aliasing",
+    .subcommands = {[VERB_APPROX] = CLI_SUBCOMMANDS({"anti-aliasing", approx_aa, "anti-aliasing over frames of a pan"}),
                     [VERB_RENDER] = CLI_SUBCOMMANDS({"frames", render_frames, "shaded frames of a pan with motion, and their truth"}),
-                    [VERB_BENCH] = CLI_SUBCOMMANDS({"aa", bench_aa, "anti-aliasing: ms per 1080p frame"})},
-    .stages = ALL_STAGES({"aa", "anti-aliasing against supersampled truth", all_stage_aa, AA_DIR, NULL}),
+                    [VERB_BENCH] = CLI_SUBCOMMANDS({"anti-aliasing", bench_aa, "anti-aliasing: ms per 1080p frame"})},
+    .stages = ALL_STAGES({"anti-aliasing", "anti-aliasing against supersampled truth", all_stage_aa, AA_DIR, NULL}),
+    .renamed = TECHNIQUE_RENAMES({"aa", "anti-aliasing"}),
 };

@@ -85,7 +85,7 @@ int aa_section(report_context *ctx, const aa_result *r, gt_error *e)
                 r->truth_count);
     report_rows(ctx->doc, cJSON_AddArrayToObject(json, "techniques"), columns, 5, r->rows, sizeof r->rows[0],
                 r->row_count);
-    const char *p[4] = {"aa/truth_blackman_harris.png", "aa/no_aa.png", "aa/fxaa.png", "aa/ssaa4.png"};
+    const char *p[4] = {AA_DIR "/truth_blackman_harris.png", AA_DIR "/no_aa.png", AA_DIR "/fxaa.png", AA_DIR "/ssaa4.png"};
     const char *c[4] = {"truth, 64 spp, Blackman-Harris", "no AA", "FXAA 3.11", "SSAA 2x2"};
     report_figures(ctx->doc, 4, p, c);
     add_headline(ctx->doc, r);

@@ -17,7 +17,7 @@
 #include "core/sampling/pixel_filter.h"
 #include "project/study_context.h"
 
-#define AA_DIR "aa"
+#define AA_DIR "anti_aliasing"
 
 enum { AA_MAX_SCENES = 4, AA_TECHNIQUES = 3 };
 

@@ -1,6 +1,6 @@
 /* The command-line face of best-fit normals: `gtlab lut best-fit-normals`
  * (the scale table at one size, best_fit_normals/best_fit_normals_writers.h)
- * and the stage normals of `gtlab all` (the study,
+ * and the stage best-fit-normals of `gtlab all` (the study,
  * best_fit_normals/best_fit_normals_study.h, and its section). */
 #include <stdio.h>
 #include <stdlib.h>
@@ -48,5 +48,6 @@ const technique technique_best_fit_normals = {
     .name = "best-fit-normals",
     .subcommands = {[VERB_LUT] = CLI_SUBCOMMANDS(
         {"best-fit-normals", lut_best_fit_normals, "best-fit RGB8 G-buffer normals (Kaplanyan 2010): the scale table"})},
-    .stages = ALL_STAGES({"normals", "best-fit normals", all_stage_normals, NORMALS_DIR, NULL}),
+    .stages = ALL_STAGES({"best-fit-normals", "best-fit normals", all_stage_normals, NORMALS_DIR, NULL}),
+    .renamed = TECHNIQUE_RENAMES({"normals", "best-fit-normals"}),
 };

@@ -238,7 +238,7 @@ int normals_section(report_context *ctx, const normals_result *r, gt_error *e)
                      "Kaplanyan 2010 stores a unit normal in RGB8 scaled along its ray to the cell whose centre "
                      "deviates least from it, the scale baked per direction into a %dx%d table (Appendix A's search "
                      "and lookup, transcribed; best_fit_normals/best_fit_normals.h), written here as "
-                     "normals/best_fit_normals_%d."
+                     NORMALS_DIR "/best_fit_normals_%d."
                      "{exr,png,h,hlsl} (built in %.2f s). First the talk's cell counts, each counted exactly by "
                      "enumerating the 256^3 cells under the stated definition:",
                      r->request.table_size, r->request.table_size, r->request.table_size, r->table_seconds);
@@ -260,8 +260,8 @@ int normals_section(report_context *ctx, const normals_result *r, gt_error *e)
                 NORMALS_ENCODINGS);
     const char *cp[1] = {"figures/normals_error_cdf.png"}, *cc[1] = {"Angular error distributions"};
     report_figures(ctx->doc, 1, cp, cc);
-    const char *hp[4] = {"normals/highlight_exact.png", "normals/highlight_naive.png", "normals/highlight_best_fit.png",
-                         "normals/highlight_octahedral10p.png"};
+    const char *hp[4] = {NORMALS_DIR "/highlight_exact.png", NORMALS_DIR "/highlight_naive.png", NORMALS_DIR "/highlight_best_fit.png",
+                         NORMALS_DIR "/highlight_octahedral10p.png"};
     const char *hc[4] = {"exact normals, roughness 0.2", "RGB8 normalised", "RGB8 best fit (point)",
                          "octahedral 2x10 precise"};
     report_figures(ctx->doc, 4, hp, hc);

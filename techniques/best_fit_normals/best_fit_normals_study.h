@@ -18,7 +18,7 @@
 
 #include "project/study_context.h"
 
-#define NORMALS_DIR "normals"
+#define NORMALS_DIR "best_fit_normals"
 
 enum {
     NORMALS_MAX_FACES = 6,

@@ -186,8 +186,8 @@ int color_grading_section(report_context *ctx, const grading_result *r, gt_error
     render_space_finding(ctx, r);
     report_rows(NULL, cJSON_AddArrayToObject(ctx->summary, "color_grading"), columns, COLUMN_COUNT, r->rows,
                 sizeof r->rows[0], r->row_count);
-    const char *p[5] = {"grading/chart.png", "grading/chart_grade1.png", "grading/chart_grade3.png",
-                        "grading/chart_grade5.png", "grading/render.png"};
+    const char *p[5] = {GRADING_DIR "/chart.png", GRADING_DIR "/chart_grade1.png", GRADING_DIR "/chart_grade3.png",
+                        GRADING_DIR "/chart_grade5.png", GRADING_DIR "/render.png"};
     const char *c[5] = {"the chart (display values)", "warm contrast", "bleach bypass", "clipped exposure +1.5",
                         "the render (display values)"};
     report_figures(ctx->doc, 5, p, c);

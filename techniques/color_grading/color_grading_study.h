@@ -23,7 +23,7 @@
 #include "color_grading/color_lut.h"
 #include "project/study_context.h"
 
-#define GRADING_DIR "grading"
+#define GRADING_DIR "color_grading"
 
 enum { GRADING_SIZES = 3, GRADING_VARIANTS = 6, GRADING_IMAGES = 3, GRADING_CHART_W = 192, GRADING_CHART_H = 128 };
 

@@ -8,8 +8,8 @@
 #include "cli/technique.h"
 #include "core/threads.h"
 #include "environment/environment_throughput.h"
-#include "environment/env_approx_section.h"
-#include "environment/env_approx_study.h"
+#include "environment/environment_section.h"
+#include "environment/environment_study.h"
 
 static const cli_option bench_options[] = {
     CLI_STRING("scene", "S", "builtin:NAME or a glTF file (default builtin:cornell)"),
@@ -46,7 +46,7 @@ static int bench_env_diffuse(int argc, char **argv)
     return environment_throughput_bench(stdout, &rq, &e) == 0 ? EXIT_OK : cli_fail(&e);
 }
 
-GTLAB_STUDY_STAGE_NO_REQUEST(all_stage_environment, env_study_result, env_approx_study, env_approx_section)
+GTLAB_STUDY_STAGE_NO_REQUEST(all_stage_environment, environment_study_result, environment_study, environment_section)
 
 const technique technique_environment = {
     .name = "environment",

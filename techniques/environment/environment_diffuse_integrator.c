@@ -37,7 +37,7 @@ int environment_diffuse_plan_init(environment_diffuse_plan *plan, const environm
     plan->normals = normals;
     static const char *const names[3][3] = {CH_ENV_DIFFUSE_RGB, CH_ENV_DIFFUSE_DIRECT_RGB,
                                             CH_ENV_DIFFUSE_UNOCCLUDED_RGB};
-    for (int q = 0; q < ENV_DIFFUSE_QUANTITIES; ++q) {
+    for (int q = 0; q < ENVIRONMENT_DIFFUSE_QUANTITIES; ++q) {
         snprintf(plan->quantities[q].name, IMAGE_NAME_MAX, "%s", names[q / 3][q % 3]);
         plan->quantities[q].scale_exponent = light->scale_exponent;
     }
@@ -52,9 +52,9 @@ typedef struct {
     const environment_light *light;
     int mixed; /* directions from a mixture of cosine and environment sampling */
     float *values;
-} env_wavefront;
+} environment_wavefront;
 
-static void wavefront_start(env_wavefront *wf, const integrator *self, const pixel_context *px,
+static void wavefront_start(environment_wavefront *wf, const integrator *self, const pixel_context *px,
                             uint32_t first_index, int count, float *values)
 {
     const environment_diffuse_plan *plan = self->settings;
@@ -62,18 +62,18 @@ static void wavefront_start(env_wavefront *wf, const integrator *self, const pix
     wf->light = plan->light;
     wf->mixed = plan->light->brdf_fraction < 1.0f;
     wf->values = values;
-    memset(values, 0, sizeof(float) * ENV_DIFFUSE_QUANTITIES * SAMPLE_BATCH);
+    memset(values, 0, sizeof(float) * ENVIRONMENT_DIFFUSE_QUANTITIES * SAMPLE_BATCH);
 }
 
 /* Sample k's weight times L into the three channels starting at `first`. */
-static void add_light(env_wavefront *wf, int first, int k, const float light[3])
+static void add_light(environment_wavefront *wf, int first, int k, const float light[3])
 {
     for (int c = 0; c < 3; ++c)
         wf->values[(first + c) * SAMPLE_BATCH + k] = wf->p.throughput[wf->p.weights == 3 ? c : 0][k] * light[c];
 }
 
 /* Sample k's path escapes from vertex `depth`, bringing radiance `light`. */
-static void path_escapes(env_wavefront *wf, int k, int depth, const float light[3])
+static void path_escapes(environment_wavefront *wf, int k, int depth, const float light[3])
 {
     add_light(wf, TOTAL, k, light);
     if (depth == 0)
@@ -82,7 +82,7 @@ static void path_escapes(env_wavefront *wf, int k, int depth, const float light[
 
 /* Which sampler each live path's direction comes from (1: the
  * environment's), u0 rescaled to [0, 1) for it. */
-static void choose_strategies(const env_wavefront *wf, float *u0, unsigned char *from_env)
+static void choose_strategies(const environment_wavefront *wf, float *u0, unsigned char *from_env)
 {
     const float c = wf->light->brdf_fraction;
     for (int i = 0; i < wf->p.live; ++i) {
@@ -94,7 +94,7 @@ static void choose_strategies(const env_wavefront *wf, float *u0, unsigned char 
 
 /* (max(0, n.w) / pi) / p_mix: the mixture weight of direction w at p,
  * the environment's density there being pdf_env. */
-static float lambert_weight(const env_wavefront *wf, const path_vertex *p, vec3 w, float pdf_env)
+static float lambert_weight(const environment_wavefront *wf, const path_vertex *p, vec3 w, float pdf_env)
 {
     double cos_n = v3_dot(w, p->shading.n);
     if (!(cos_n > 0.0))
@@ -106,7 +106,7 @@ static float lambert_weight(const env_wavefront *wf, const path_vertex *p, vec3 
 /* The directions leaving the live paths: cosine-sampled in each path's
  * shading frame, or drawn from the environment (from_env), all of the
  * latter in one call so that their table lookups overlap. */
-static void directions(const env_wavefront *wf, const vec3 *local, const unsigned char *from_env, const float *u0,
+static void directions(const environment_wavefront *wf, const vec3 *local, const unsigned char *from_env, const float *u0,
                        const float *u1, vec3 *dir)
 {
     float u[SAMPLE_BATCH][2];
@@ -126,7 +126,7 @@ static void directions(const env_wavefront *wf, const vec3 *local, const unsigne
  * there, from one texel lookup each (all at once), for the directions that
  * can carry light: under the mixture, those above the shading horizon
  * (lambert_weight is 0 below it and reads neither). The others get 0. */
-static void arriving_light(const env_wavefront *wf, const vec3 *dir, float (*light)[3], float *pdf_env)
+static void arriving_light(const environment_wavefront *wf, const vec3 *dir, float (*light)[3], float *pdf_env)
 {
     vec3 w[SAMPLE_BATCH];
     int which[SAMPLE_BATCH], m = 0;
@@ -145,7 +145,7 @@ static void arriving_light(const env_wavefront *wf, const vec3 *dir, float (*lig
 
 /* Live path i's mixture weight for direction w, folded into its throughput
  * (mixture sampling only). Returns 0 if the direction carries nothing. */
-static int weigh(env_wavefront *wf, int i, vec3 w, float pdf_env)
+static int weigh(environment_wavefront *wf, int i, vec3 w, float pdf_env)
 {
     if (!wf->mixed)
         return 1;
@@ -161,7 +161,7 @@ static int weigh(env_wavefront *wf, int i, vec3 w, float pdf_env)
  * along it should it escape. At depth 0 every direction adds to the
  * unoccluded channels. A direction below the surface it leaves is blocked
  * and gets no ray. Returns the number of rays. */
-static int leaving_rays(env_wavefront *wf, int depth, struct RTCRayHit *rays, int *owner, float (*light)[3])
+static int leaving_rays(environment_wavefront *wf, int depth, struct RTCRayHit *rays, int *owner, float (*light)[3])
 {
     float u0[SAMPLE_BATCH], u1[SAMPLE_BATCH], arriving[SAMPLE_BATCH][3], pdf_env[SAMPLE_BATCH];
     unsigned char from_env[SAMPLE_BATCH] = {0};
@@ -189,7 +189,7 @@ static int leaving_rays(env_wavefront *wf, int depth, struct RTCRayHit *rays, in
 }
 
 /* The last vertex: only whether each ray escapes matters. */
-static void trace_last(env_wavefront *wf, int depth, const struct RTCRayHit *rays, const int *owner,
+static void trace_last(environment_wavefront *wf, int depth, const struct RTCRayHit *rays, const int *owner,
                        const float (*light)[3], int n)
 {
     _Alignas(16) struct RTCRay shadow[SAMPLE_BATCH];
@@ -204,7 +204,7 @@ static void trace_last(env_wavefront *wf, int depth, const struct RTCRayHit *ray
 
 /* Closest hits: escapes add light, hits become the next vertices of the
  * paths that survive them (compacted in place, in order). */
-static void trace_next(env_wavefront *wf, int depth, struct RTCRayHit *rays, const int *owner,
+static void trace_next(environment_wavefront *wf, int depth, struct RTCRayHit *rays, const int *owner,
                        const float (*light)[3], int n)
 {
     float roulette[SAMPLE_BATCH];
@@ -229,7 +229,7 @@ static void trace_next(env_wavefront *wf, int depth, struct RTCRayHit *rays, con
 static int environment_diffuse_sample_batch(const integrator *self, const pixel_context *px, uint32_t first_index,
                                             int count, float *values)
 {
-    env_wavefront wf;
+    environment_wavefront wf;
     wavefront_start(&wf, self, px, first_index, count, values);
     int rays = 0;
     for (int depth = 0; wf.p.live > 0; ++depth) {
@@ -248,7 +248,7 @@ static int environment_diffuse_sample_batch(const integrator *self, const pixel_
 
 integrator environment_diffuse_integrator(const embree_scene *es, const environment_diffuse_plan *plan)
 {
-    integrator it = {"env-diffuse", ENV_DIFFUSE_QUANTITIES, plan->quantities, NULL, environment_diffuse_sample_batch,
+    integrator it = {"env-diffuse", ENVIRONMENT_DIFFUSE_QUANTITIES, plan->quantities, NULL, environment_diffuse_sample_batch,
                      es, plan, 0};
     return it;
 }

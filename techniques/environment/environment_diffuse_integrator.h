@@ -5,13 +5,13 @@
  * albedo, as the white-dome multibounce reference does
  * (techniques/multibounce/multibounce_integrator.h):
  *
- *   env_diffuse.c            L_c / rho_c, every surface of albedo rho (a grey
+ *   environment_diffuse.c            L_c / rho_c, every surface of albedo rho (a grey
  *                            one, or the glTF base colour per channel), with
  *                            --bounces N inter-reflections (or 'inf', Russian
  *                            roulette as multibounce)
- *   env_diffuse_direct.c     the same, direct light only:
+ *   environment_diffuse_direct.c     the same, direct light only:
  *                            (1/pi) \int V(w) L_c(w) max(0, n.w) dw
- *   env_diffuse_unoccluded.c (1/pi) \int L_c(w) max(0, n.w) dw: visibility off
+ *   environment_diffuse_unoccluded.c (1/pi) \int L_c(w) max(0, n.w) dw: visibility off
  *
  * (n the shading normal; multiply by the albedo for radiance). All three
  * come from the same directions, so direct / unoccluded is an exact ratio
@@ -31,8 +31,8 @@
  *
  * Under a constant environment c = 1: every weight is exactly 1, the
  * directions are multibounce's and L = 1 multiplies exactly, so under the
- * white dome env_diffuse equals multibounce.V (or .R/.G/.B with the scene's
- * albedo) and env_diffuse_direct equals ao.V, bit for bit at the same seed.
+ * white dome environment_diffuse equals multibounce.V (or .R/.G/.B with the scene's
+ * albedo) and environment_diffuse_direct equals ao.V, bit for bit at the same seed.
  *
  * Film scale exponent: the light's (environment_light.h). */
 #ifndef GTLAB_ENVIRONMENT_ENVIRONMENT_DIFFUSE_INTEGRATOR_H
@@ -42,13 +42,13 @@
 #include "multibounce/multibounce_integrator.h"
 #include "raytracer/render_loop.h"
 
-enum { ENV_DIFFUSE_QUANTITIES = 9 };
+enum { ENVIRONMENT_DIFFUSE_QUANTITIES = 9 };
 
 typedef struct {
     const environment_light *light;
     multibounce_settings albedo; /* scene_albedo, or albedo_count = 1; bounces */
     normal_mode normals;
-    mc_quantity quantities[ENV_DIFFUSE_QUANTITIES];
+    mc_quantity quantities[ENVIRONMENT_DIFFUSE_QUANTITIES];
 } environment_diffuse_plan;
 
 /* Validates the albedo settings (one grey albedo or the scene's; errors

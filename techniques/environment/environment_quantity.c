@@ -180,7 +180,7 @@ static void release(void *state)
     free(st);
 }
 
-/* gtlab.environment, gtlab.env_rotate, gtlab.env_intensity. */
+/* gtlab.environment, gtlab.environment_rotate, gtlab.environment_intensity. */
 static int write_environment(const environment_render_settings *s, image *out)
 {
     int rc = image_set_attribute(out, ATTR_ENVIRONMENT, s->environment);

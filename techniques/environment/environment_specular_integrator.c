@@ -22,7 +22,7 @@ int environment_specular_plan_init(environment_specular_plan *plan, const enviro
     plan->f0 = f0;
     plan->camera_position = camera_position;
     static const char *const names[2][3] = {CH_ENV_SPECULAR_RGB, CH_ENV_SPECULAR_UNOCCLUDED_RGB};
-    for (int q = 0; q < ENV_SPECULAR_QUANTITIES; ++q) {
+    for (int q = 0; q < ENVIRONMENT_SPECULAR_QUANTITIES; ++q) {
         snprintf(plan->quantities[q].name, IMAGE_NAME_MAX, "%s", names[q / 3][q % 3]);
         plan->quantities[q].scale_exponent = light->scale_exponent;
     }
@@ -129,7 +129,7 @@ static int environment_specular_sample_batch(const integrator *self, const pixel
 
 integrator environment_specular_integrator(const embree_scene *es, const environment_specular_plan *plan)
 {
-    integrator it = {"env-specular", ENV_SPECULAR_QUANTITIES, plan->quantities, NULL,
+    integrator it = {"env-specular", ENVIRONMENT_SPECULAR_QUANTITIES, plan->quantities, NULL,
                      environment_specular_sample_batch, es, plan, 0};
     return it;
 }

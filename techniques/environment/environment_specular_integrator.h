@@ -1,8 +1,8 @@
 /* GGX specular reflection of an environment (techniques/environment/environment_light.h),
  * with visibility and without, from the same samples (issue 28):
  *
- *   env_specular.c             \int V(l) L_c(l) f_r(v, l) F_c(v.h) (n.l) dl
- *   env_specular_unoccluded.c  \int L_c(l) f_r(v, l) F_c(v.h) (n.l) dl
+ *   environment_specular.c             \int V(l) L_c(l) f_r(v, l) F_c(v.h) (n.l) dl
+ *   environment_specular_unoccluded.c  \int L_c(l) f_r(v, l) F_c(v.h) (n.l) dl
  *
  * f_r core/optics/ggx.h's GGX (height-correlated Smith G2, no Fresnel) with
  * alpha = max(roughness^2, 1e-4) rounded to float (ggx_alpha_phong_cone: a
@@ -28,14 +28,14 @@
 #include "environment/environment_light.h"
 #include "raytracer/render_loop.h"
 
-enum { ENV_SPECULAR_QUANTITIES = 6 };
+enum { ENVIRONMENT_SPECULAR_QUANTITIES = 6 };
 
 typedef struct {
     const environment_light *light;
     float roughness;      /* perceptual, every surface; < 0: the material's */
     float f0;             /* grey, every surface; < 0: the material's */
     vec3 camera_position; /* v points from the surface to here */
-    mc_quantity quantities[ENV_SPECULAR_QUANTITIES];
+    mc_quantity quantities[ENVIRONMENT_SPECULAR_QUANTITIES];
 } environment_specular_plan;
 
 /* Validates (roughness and f0 in [0, 1] or < 0; errors name "env-specular")

@@ -14,7 +14,7 @@ typedef struct {
 } moment_blocks;
 
 /* The largest reduction <= wanted that divides both sizes. */
-static int usable_reduction(const env_approx_equirect *env, int wanted)
+static int usable_reduction(const environment_equirect *env, int wanted)
 {
     int r = wanted < 0 ? 0 : wanted;
     while (r > 0 && ((env->width % (1 << r)) || (env->height % (1 << r))))
@@ -22,7 +22,7 @@ static int usable_reduction(const env_approx_equirect *env, int wanted)
     return r;
 }
 
-static void add_texel(const env_approx_equirect *env, int i, int j, double *lm)
+static void add_texel(const environment_equirect *env, int i, int j, double *lm)
 {
     double m[EQUIRECT_MONOMIALS];
     equirect_texel_moments(env->width, env->height, i, j, m);
@@ -34,7 +34,7 @@ static void add_texel(const env_approx_equirect *env, int i, int j, double *lm)
     }
 }
 
-static int blocks_build(const env_approx_equirect *env, int reduction, moment_blocks *b)
+static int blocks_build(const environment_equirect *env, int reduction, moment_blocks *b)
 {
     int f = 1 << reduction, bw = env->width / f, bh = env->height / f;
     b->count = bw * bh;
@@ -57,7 +57,7 @@ static void blocks_irradiance(const moment_blocks *b, const double n[3], double 
     }
 }
 
-void irradiance_map_quadrature(const env_approx_equirect *env, int reduction, const double n[3], double e[3])
+void irradiance_map_quadrature(const environment_equirect *env, int reduction, const double n[3], double e[3])
 {
     moment_blocks b;
     e[0] = e[1] = e[2] = 0.0;
@@ -67,7 +67,7 @@ void irradiance_map_quadrature(const env_approx_equirect *env, int reduction, co
     free(b.lm);
 }
 
-int irradiance_map_build(irradiance_map *m, const env_approx_equirect *env, int width, int reduction, int threads)
+int irradiance_map_build(irradiance_map *m, const environment_equirect *env, int width, int reduction, int threads)
 {
     m->rgb = NULL;
     if (width < 2 || width % 2 || env->width < 1 || env->height < 1)

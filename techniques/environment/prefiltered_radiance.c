@@ -87,7 +87,7 @@ static int level_build(prefiltered_radiance *p, const equirect_pyramid *src, int
     return 0;
 }
 
-int prefiltered_radiance_build(prefiltered_radiance *p, const env_approx_equirect *env, int width, int levels,
+int prefiltered_radiance_build(prefiltered_radiance *p, const environment_equirect *env, int width, int levels,
                                int samples, int threads)
 {
     memset(p, 0, sizeof *p);

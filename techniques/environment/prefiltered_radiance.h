@@ -12,7 +12,7 @@
  * Hammersley points ((i + 0.5)/N, radical inverse of i), l = reflect(-R, h),
  * weights n.l, P = sum L(l) (n.l) / sum (n.l). Each sample reads a filtered
  * level of the source's solid-angle-weighted pyramid
- * (environment/env_approx_equirect.h) chosen by the ratio of the sample's solid
+ * (environment/environment_equirect.h) chosen by the ratio of the sample's solid
  * angle to a texel's (Colbert and Krivanek 2007, "GPU-Based Importance
  * Sampling", GPU Gems 3 ch. 20, eq. 13):
  *   lod = max(0, 1/2 log2(Omega_s / Omega_p) + 1),  Omega_s = 1 / (N pdf(l)),  pdf(l) = D(h) / 4
@@ -34,7 +34,7 @@
 #define GTLAB_ENVIRONMENT_PREFILTERED_RADIANCE_H
 
 #include "luts/dfg_lut.h"
-#include "environment/env_approx_equirect.h"
+#include "environment/environment_equirect.h"
 
 enum { PREFILTERED_MAX_LEVELS = 12, PREFILTERED_MIN_WIDTH = 8 };
 
@@ -56,7 +56,7 @@ void prefiltered_radiance_filter(const equirect_pyramid *source, const double R[
 /* Builds `levels` (2 .. PREFILTERED_MAX_LEVELS) levels, level 0 width x
  * width/2 (width even, >= PREFILTERED_MIN_WIDTH); OpenMP over `threads`,
  * every texel alone. Returns 0, or -1 when out of memory or a size is invalid. */
-int prefiltered_radiance_build(prefiltered_radiance *p, const env_approx_equirect *env, int width, int levels,
+int prefiltered_radiance_build(prefiltered_radiance *p, const environment_equirect *env, int width, int levels,
                                int samples, int threads);
 void prefiltered_radiance_free(prefiltered_radiance *p);
 

@@ -42,7 +42,7 @@ void sh9_basis(const double w[3], double y[SH9_COEFFICIENTS])
 static int band_of(int k) { return k == 0 ? 0 : k < 4 ? 1 : 2; }
 
 /* One row's contribution (summed alone, then added: the order is fixed). */
-static void project_row(const env_approx_equirect *env, int j, double row[SH9_COEFFICIENTS][3])
+static void project_row(const environment_equirect *env, int j, double row[SH9_COEFFICIENTS][3])
 {
     memset(row, 0, sizeof(double) * SH9_COEFFICIENTS * 3);
     for (int i = 0; i < env->width; ++i) {
@@ -56,7 +56,7 @@ static void project_row(const env_approx_equirect *env, int j, double row[SH9_CO
     }
 }
 
-void sh9_project_equirect(const env_approx_equirect *env, sh9_rgb *out)
+void sh9_project_equirect(const environment_equirect *env, sh9_rgb *out)
 {
     memset(out, 0, sizeof *out);
     for (int j = 0; j < env->height; ++j) {

@@ -14,7 +14,7 @@
  * Projection (eq. 10): L_lm = \int L(w) Y_lm(w) dw, integrated EXACTLY per
  * texel of the equirect environment read as piecewise constant: each Y_lm
  * is a polynomial of degree <= 2 in w and its integral over a texel has a
- * closed form (environment/env_approx_equirect.h, equirect_texel_moments). No
+ * closed form (environment/environment_equirect.h, equirect_texel_moments). No
  * quadrature error beyond the environment's own texels.
  *
  * Irradiance (eqs. 12-13): E(n) = sum_lm A_l L_lm Y_lm(n), with the clamped
@@ -33,7 +33,7 @@
 #ifndef GTLAB_ENVIRONMENT_SH_IRRADIANCE_H
 #define GTLAB_ENVIRONMENT_SH_IRRADIANCE_H
 
-#include "environment/env_approx_equirect.h"
+#include "environment/environment_equirect.h"
 
 enum { SH9_COEFFICIENTS = 9 };
 
@@ -50,7 +50,7 @@ double sh9_cosine_band(int l);
 void sh9_basis(const double w[3], double y[SH9_COEFFICIENTS]);
 
 /* The exact per-texel projection of an environment. */
-void sh9_project_equirect(const env_approx_equirect *env, sh9_rgb *out);
+void sh9_project_equirect(const environment_equirect *env, sh9_rgb *out);
 
 /* E(n) = sum A_l L_lm Y_lm(n) per channel (may be slightly negative where
  * the truncation rings; engines clamp, so does sh9_irradiance_clamped). */

@@ -11,7 +11,7 @@
 
 #include "project/study_context.h"
 
-#define HDR_PRECISION_DIR "hdr"
+#define HDR_PRECISION_DIR "hdr_precision"
 
 typedef struct {
     double talk_median;                 /* 5/11 */

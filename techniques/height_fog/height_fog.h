@@ -43,7 +43,7 @@
  * downwards is infinite) and the sky above arrives through the column
  * above the point: from the direction of vertical cosine mu > 0 with
  * transmittance e^{-a(y) / mu}, a(y) = beta_t H rho(y). With an isotropic
- * phase the source is beta_s L_amb E_2(a) / 2 (techniques/height_fog/fog_single_scatter.h),
+ * phase the source is beta_s L_amb E_2(a) / 2 (techniques/height_fog/height_fog_single_scatter.h),
  * and along the ray a = A - v_y tau_v(s), A = a(y_c), exactly as the sun's
  * optical depth above with mu for mu_s: the sky is a continuum of suns, one
  * per elevation, each entering like the attenuated sun term,

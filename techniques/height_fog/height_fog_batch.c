@@ -20,21 +20,21 @@ __attribute__((__simd__("notinbranch"))) float expf(float);
  * short last group padded with a harmless view), so each pixel goes through
  * the same vector code wherever it falls: no scalar prologue or epilogue,
  * and the same bits for any split of a row into calls. */
-#define FOG_GROUP 64
+#define HEIGHT_FOG_GROUP 64
 
 typedef struct {
-    _Alignas(16) float distance[FOG_GROUP], world_y[FOG_GROUP], sov[FOG_GROUP];
-    _Alignas(16) float inscatter[3][FOG_GROUP], transmittance[3][FOG_GROUP];
-} fog_group;
+    _Alignas(16) float distance[HEIGHT_FOG_GROUP], world_y[HEIGHT_FOG_GROUP], sov[HEIGHT_FOG_GROUP];
+    _Alignas(16) float inscatter[3][HEIGHT_FOG_GROUP], transmittance[3][HEIGHT_FOG_GROUP];
+} height_fog_group;
 
 /* The published model over one whole group; the clamp's select in its own
  * loop (GCC 12 does not if-convert a loop that also calls a vector function). */
-static void fog_group_run(const height_fog_uniforms *restrict u, float camera_y, fog_group *restrict g)
+static void height_fog_group_run(const height_fog_uniforms *restrict u, float camera_y, height_fog_group *restrict g)
 {
-    float clamped[FOG_GROUP];
-    for (int i = 0; i < FOG_GROUP; ++i)
+    float clamped[HEIGHT_FOG_GROUP];
+    for (int i = 0; i < HEIGHT_FOG_GROUP; ++i)
         clamped[i] = height_fog_clamped_t(u, camera_y, g->world_y[i]);
-    for (int i = 0; i < FOG_GROUP; ++i) {
+    for (int i = 0; i < HEIGHT_FOG_GROUP; ++i) {
         float t = height_fog_published_density(u, clamped[i], g->world_y[i]), mu = g->sov[i];
         float pr = height_fog_rayleigh(mu), pm = height_fog_henyey_greenstein(u, mu), x = -g->distance[i] * t;
         for (int c = 0; c < 3; ++c) {
@@ -49,15 +49,15 @@ void height_fog_published_batch(const height_fog_uniforms *u, float camera_y, si
                                 const float *world_y, const float *sov, float *const inscatter[3],
                                 float *const transmittance[3])
 {
-    fog_group g;
-    for (size_t s = 0; s < n; s += FOG_GROUP) {
-        size_t m = n - s < FOG_GROUP ? n - s : FOG_GROUP;
-        for (size_t i = 0; i < FOG_GROUP; ++i) { /* padding: a view one scale height down, no distance */
+    height_fog_group g;
+    for (size_t s = 0; s < n; s += HEIGHT_FOG_GROUP) {
+        size_t m = n - s < HEIGHT_FOG_GROUP ? n - s : HEIGHT_FOG_GROUP;
+        for (size_t i = 0; i < HEIGHT_FOG_GROUP; ++i) { /* padding: a view one scale height down, no distance */
             g.distance[i] = i < m ? distance[s + i] : 0.0f;
             g.world_y[i] = i < m ? world_y[s + i] : camera_y - u->scale_height;
             g.sov[i] = i < m ? sov[s + i] : 0.0f;
         }
-        fog_group_run(u, camera_y, &g);
+        height_fog_group_run(u, camera_y, &g);
         for (int c = 0; c < 3; ++c) {
             memcpy(inscatter[c] + s, g.inscatter[c], m * sizeof(float));
             memcpy(transmittance[c] + s, g.transmittance[c], m * sizeof(float));

@@ -1,8 +1,8 @@
 /* The command-line face of the Decima height fog (Kojima 2017; issue 16):
  * `gtlab approx height-fog` (the analytic fog over a G-buffer), `gtlab bench
- * fog` and the stage fog of `gtlab all` (the study, height_fog_study.h, with
+ * height-fog` and the stage height-fog of `gtlab all` (the study, height_fog_study.h, with
  * the combination images, aerial_perspective_study.h, and their sections).
- * The references are `gtlab render fog` (techniques/height_fog/fog_quantity.c). */
+ * The references are `gtlab render fog` (techniques/height_fog/height_fog_quantity.c). */
 #include <stdio.h>
 
 #include "cli/cli.h"
@@ -48,7 +48,7 @@ static int approx_height_fog(int argc, char **argv)
 static int bench_fog(int argc, char **argv)
 {
     static const cli_option options[] = {CLI_THREADS, CLI_END};
-    static const cli_command command = {"bench fog", "Reference rays per second (path tracing, dense fog, terrain "
+    static const cli_command command = {"bench height-fog", "Reference rays per second (path tracing, dense fog, terrain "
         "128x96) and the analytic\nmodels' nanoseconds per pixel in C (goal < 20).", options, NULL, NULL};
     long threads = threads_default();
     int status;
@@ -65,8 +65,9 @@ static int bench_fog(int argc, char **argv)
 
 GTLAB_STUDY_STAGE(all_stage_fog, height_fog, height_fog_section)
 
-const technique technique_height_fog = {.name = "fog",
+const technique technique_height_fog = {.name = "height-fog",
     .subcommands = {[VERB_APPROX] = (const cli_subcommand[]){{"height-fog", approx_height_fog,
                         "the Decima talk's analytic height fog (published or corrected)"}, {0}},
-                    [VERB_BENCH] = (const cli_subcommand[]){{"fog", bench_fog, "height fog: reference rays/s, analytic ns/pixel"}, {0}}},
-    .stages = (const all_stage[]){{"fog", "height fog", all_stage_fog, HEIGHT_FOG_DIR, NULL}, {0}}};
+                    [VERB_BENCH] = (const cli_subcommand[]){{"height-fog", bench_fog, "height fog: reference rays/s, analytic ns/pixel"}, {0}}},
+    .stages = (const all_stage[]){{"height-fog", "height fog", all_stage_fog, HEIGHT_FOG_DIR, NULL}, {0}},
+    .renamed = TECHNIQUE_RENAMES({"fog", "height-fog"})};

@@ -20,16 +20,16 @@ static const report_column case_columns[] = {
     REPORT_REAL("single scattering L", "single_mean_l", "%.4f", ROW, single_mean_l),
     REPORT_REAL("published vs single, max rel.", "published_max_rel_single", "%.1e", ROW, published_max_rel_single),
     REPORT_REAL("noise floor (RMS stderr)", "reference_noise_rms", "%.4f", ROW, reference_noise_rms),
-    REPORT_REAL("RMSE published", "rmse_l_published", "%.4f", ROW, rmse_l[FOG_MODEL_PUBLISHED]),
-    REPORT_REAL("RMSE clamp fixed", "rmse_l_clamp_fixed", "%.4f", ROW, rmse_l[FOG_MODEL_CLAMP_FIXED]),
-    REPORT_REAL("RMSE sun attenuated", "rmse_l_sun_attenuated", "%.4f", ROW, rmse_l[FOG_MODEL_SUN_ATTENUATED]),
-    REPORT_REAL("RMSE sky attenuated", "rmse_l_sky_attenuated", "%.4f", ROW, rmse_l[FOG_MODEL_SKY_ATTENUATED]),
-    REPORT_REAL("DSSIM published", "dssim_l_published", "%.4f", ROW, dssim_l[FOG_MODEL_PUBLISHED]),
-    REPORT_REAL("DSSIM sun attenuated", "dssim_l_sun_attenuated", "%.4f", ROW, dssim_l[FOG_MODEL_SUN_ATTENUATED]),
-    REPORT_REAL("DSSIM sky attenuated", "dssim_l_sky_attenuated", "%.4f", ROW, dssim_l[FOG_MODEL_SKY_ATTENUATED]),
-    REPORT_REAL(NULL, "dssim_l_clamp_fixed", NULL, ROW, dssim_l[FOG_MODEL_CLAMP_FIXED]),
-    REPORT_REAL(NULL, "rmse_t_published", NULL, ROW, rmse_t[FOG_MODEL_PUBLISHED]),
-    REPORT_REAL(NULL, "rmse_t_corrected", NULL, ROW, rmse_t[FOG_MODEL_SUN_ATTENUATED]),
+    REPORT_REAL("RMSE published", "rmse_l_published", "%.4f", ROW, rmse_l[HEIGHT_FOG_MODEL_PUBLISHED]),
+    REPORT_REAL("RMSE clamp fixed", "rmse_l_clamp_fixed", "%.4f", ROW, rmse_l[HEIGHT_FOG_MODEL_CLAMP_FIXED]),
+    REPORT_REAL("RMSE sun attenuated", "rmse_l_sun_attenuated", "%.4f", ROW, rmse_l[HEIGHT_FOG_MODEL_SUN_ATTENUATED]),
+    REPORT_REAL("RMSE sky attenuated", "rmse_l_sky_attenuated", "%.4f", ROW, rmse_l[HEIGHT_FOG_MODEL_SKY_ATTENUATED]),
+    REPORT_REAL("DSSIM published", "dssim_l_published", "%.4f", ROW, dssim_l[HEIGHT_FOG_MODEL_PUBLISHED]),
+    REPORT_REAL("DSSIM sun attenuated", "dssim_l_sun_attenuated", "%.4f", ROW, dssim_l[HEIGHT_FOG_MODEL_SUN_ATTENUATED]),
+    REPORT_REAL("DSSIM sky attenuated", "dssim_l_sky_attenuated", "%.4f", ROW, dssim_l[HEIGHT_FOG_MODEL_SKY_ATTENUATED]),
+    REPORT_REAL(NULL, "dssim_l_clamp_fixed", NULL, ROW, dssim_l[HEIGHT_FOG_MODEL_CLAMP_FIXED]),
+    REPORT_REAL(NULL, "rmse_t_published", NULL, ROW, rmse_t[HEIGHT_FOG_MODEL_PUBLISHED]),
+    REPORT_REAL(NULL, "rmse_t_corrected", NULL, ROW, rmse_t[HEIGHT_FOG_MODEL_SUN_ATTENUATED]),
     REPORT_INT(NULL, "pixels", ROW, pixels),
     REPORT_REAL(NULL, "reference_rays_per_second", NULL, ROW, reference_rays_per_second),
 };
@@ -44,18 +44,18 @@ static const report_column regime_columns[] = {
 };
 #undef ROW
 
-#define FOG_TALK "de Carpentier & Ishiyama 2017 (Decima)"
-#define FOG_SETTING                                                                                                  \
+#define HEIGHT_FOG_TALK "de Carpentier & Ishiyama 2017 (Decima)"
+#define HEIGHT_FOG_SETTING                                                                                                  \
     "Death Stranding's height fog: a camera on or near the ground (the LUTs are \"optimized for games on the "      \
     "ground or near the ground\"), terrain, mountains and sky seen through fog from sunny to dense; single "       \
     "scattering and a single scale height assumed, the sun and sky light given by the LUTs"
 
 /* The model against its own assumptions on terrain pixels. */
 static const claim_record kAnalytic = {
-    .talk = FOG_TALK, .seed = "000", .section = "Height fog: Combination",
+    .talk = HEIGHT_FOG_TALK, .seed = "000", .section = "Height fog: Combination",
     .quote = "This calculation is an analytic solution of the volume rendering equation with assuming the single "
              "scattering.",
-    .setting = FOG_SETTING, .setting_match = CLAIM_SETTING_INDEPENDENT,
+    .setting = HEIGHT_FOG_SETTING, .setting_match = CLAIM_SETTING_INDEPENDENT,
     .setting_note = "builtin:terrain's pixels (rays from a camera above the terrain going down to it) against "
                     "single-scattering quadrature under the model's own assumptions (one scale height, the sun "
                     "unattenuated, no shadows): a claim about the formula's values, which do not depend on the "
@@ -68,10 +68,10 @@ static const claim_record kAnalytic = {
 
 /* The same for the published code on every ray a camera near the ground sees. */
 static const claim_record kEveryRay = {
-    .talk = FOG_TALK, .seed = "000", .section = "Height fog: Combination",
+    .talk = HEIGHT_FOG_TALK, .seed = "000", .section = "Height fog: Combination",
     .quote = "This calculation is an analytic solution of the volume rendering equation with assuming the single "
              "scattering.",
-    .setting = FOG_SETTING, .setting_match = CLAIM_SETTING_INDEPENDENT,
+    .setting = HEIGHT_FOG_SETTING, .setting_match = CLAIM_SETTING_INDEPENDENT,
     .setting_note = "single rays from a camera 20 m up, inside the fog (down, less than H/100 down, horizontal, "
                     "up, shallow up), H from 10 m to 100 km, clear air to dense fog, 300 m and 3 km: the regime a "
                     "ground camera sees; a claim about values, independent of resolution",
@@ -146,8 +146,8 @@ int height_fog_section(report_context *ctx, const height_fog_result *r, gt_error
                    "ray's optical depth; in dense fog with the sun %.0f degrees up its fog.L is off by RMSE %.3f "
                    "against the full reference (%.3f with the sun attenuated, %.3f with the sky attenuated too).",
                    r->cases[0].published_max_rel_single, 100.0 * r->regimes[4].published_depth_error,
-                   dense->sun_elevation_deg, dense->rmse_l[FOG_MODEL_PUBLISHED],
-                   dense->rmse_l[FOG_MODEL_SUN_ATTENUATED], dense->rmse_l[FOG_MODEL_SKY_ATTENUATED]);
+                   dense->sun_elevation_deg, dense->rmse_l[HEIGHT_FOG_MODEL_PUBLISHED],
+                   dense->rmse_l[HEIGHT_FOG_MODEL_SUN_ATTENUATED], dense->rmse_l[HEIGHT_FOG_MODEL_SKY_ATTENUATED]);
     add_claims(ctx, r);
     aerial_perspective_section(ctx, section, HEIGHT_FOG_DIR, &r->aerial);
     return 0;

@@ -10,7 +10,7 @@
 #include "core/progress.h"
 #include "core/reference_schema.h"
 #include "metrics/ssim.h"
-#include "height_fog/fog_integrator.h"
+#include "height_fog/height_fog_integrator.h"
 #include "height_fog/height_fog_quality.h"
 #include "raytracer/reference_render.h"
 #include "height_fog/height_fog.h"
@@ -29,14 +29,14 @@ height_fog_request height_fog_default_request(study_quality quality)
 
 typedef struct {
     float distance, camera_y, world_y, sov;
-} fog_view;
+} height_fog_view;
 
-static void run_model(const height_fog_param *p, height_fog_model m, const fog_view *v, float in[3], float tr[3])
+static void run_model(const height_fog_param *p, height_fog_model m, const height_fog_view *v, float in[3], float tr[3])
 {
-    if (m == FOG_MODEL_PUBLISHED)
+    if (m == HEIGHT_FOG_MODEL_PUBLISHED)
         height_fog_published(p, v->distance, v->camera_y, v->world_y, v->sov, in, tr);
     else /* the models after the published one are the correction levels in order */
-        height_fog_corrected(p, (height_fog_correction)(m - FOG_MODEL_CLAMP_FIXED), v->distance, v->camera_y,
+        height_fog_corrected(p, (height_fog_correction)(m - HEIGHT_FOG_MODEL_CLAMP_FIXED), v->distance, v->camera_y,
                              v->world_y, v->sov, in, tr);
 }
 
@@ -69,13 +69,13 @@ static void regime_ray(const height_fog_param *p, double camera_y, double dir_y,
 {
     double horizontal = sqrt(1.0 - dir_y * dir_y);
     vec3 o = v3(0.0f, (float)camera_y, 0.0f), w = v3(0.0f, (float)dir_y, (float)horizontal);
-    fog_view v = {(float)distance, (float)camera_y, (float)(camera_y + dir_y * distance), v3_dot(p->sun_direction, w)};
+    height_fog_view v = {(float)distance, (float)camera_y, (float)(camera_y + dir_y * distance), v3_dot(p->sun_direction, w)};
     for (int ext = 0; ext <= 1; ++ext) {
-        fog_lighting l = {p, ext, NULL, 0};
-        fog_ray_estimate q;
-        fog_single_scatter(&l, o, w, distance, 1e-9, &q);
+        height_fog_lighting l = {p, ext, NULL, 0};
+        height_fog_ray_estimate q;
+        height_fog_single_scatter(&l, o, w, distance, 1e-9, &q);
         float in[3], tr[3];
-        run_model(p, ext ? FOG_MODEL_SUN_ATTENUATED : FOG_MODEL_PUBLISHED, &v, in, tr);
+        run_model(p, ext ? HEIGHT_FOG_MODEL_SUN_ATTENUATED : HEIGHT_FOG_MODEL_PUBLISHED, &v, in, tr);
         double depth = rel_error(log(fmax(tr[1], 1e-37f)), log(q.transmittance[1]));
         double l_err = q.inscatter[1] > 1e-9 ? rel_error(in[1], q.inscatter[1]) : 0.0;
         double *d = ext ? &r->corrected_depth_error : &r->published_depth_error;
@@ -111,19 +111,19 @@ void height_fog_regimes(height_fog_regime regimes[HEIGHT_FOG_REGIMES])
 
 /* The bench's view of pixel i: distances 100..4195 m, world points -50..562 m
  * below and above the camera at 30 m, every sun-view cosine. */
-static fog_view bench_view(int i)
+static height_fog_view bench_view(int i)
 {
-    return (fog_view){100.0f + (float)(i % 4096), 30.0f, (float)(i % 613) - 50.0f, (float)((i % 200) - 100) * 0.01f};
+    return (height_fog_view){100.0f + (float)(i % 4096), 30.0f, (float)(i % 613) - 50.0f, (float)((i % 200) - 100) * 0.01f};
 }
 
-/* ns per pixel of the published model over n pixels in rows of FOG_ROW
+/* ns per pixel of the published model over n pixels in rows of HEIGHT_FOG_ROW
  * through height_fog_published_batch (the uniforms set once, per frame). */
 static double time_published_batch(const height_fog_param *p, int n)
 {
-    enum { FOG_ROW = 1024 };
-    static float in[3][FOG_ROW], planes[6][FOG_ROW];
-    for (int i = 0; i < FOG_ROW; ++i) {
-        fog_view v = bench_view(i);
+    enum { HEIGHT_FOG_ROW = 1024 };
+    static float in[3][HEIGHT_FOG_ROW], planes[6][HEIGHT_FOG_ROW];
+    for (int i = 0; i < HEIGHT_FOG_ROW; ++i) {
+        height_fog_view v = bench_view(i);
         in[0][i] = v.distance, in[1][i] = v.world_y, in[2][i] = v.sov;
     }
     float *l[3] = {planes[0], planes[1], planes[2]}, *t[3] = {planes[3], planes[4], planes[5]};
@@ -131,12 +131,12 @@ static double time_published_batch(const height_fog_param *p, int n)
     double start = seconds_now();
     height_fog_uniforms u;
     height_fog_uniforms_init(p, &u);
-    for (int done = 0; done < n; done += FOG_ROW) {
-        height_fog_published_batch(&u, 30.0f, FOG_ROW, in[0], in[1], in[2], l, t);
-        sink += l[0][done % FOG_ROW] + t[2][done % FOG_ROW];
+    for (int done = 0; done < n; done += HEIGHT_FOG_ROW) {
+        height_fog_published_batch(&u, 30.0f, HEIGHT_FOG_ROW, in[0], in[1], in[2], l, t);
+        sink += l[0][done % HEIGHT_FOG_ROW] + t[2][done % HEIGHT_FOG_ROW];
     }
     (void)sink;
-    return (seconds_now() - start) * 1e9 / (double)((n + FOG_ROW - 1) / FOG_ROW * FOG_ROW);
+    return (seconds_now() - start) * 1e9 / (double)((n + HEIGHT_FOG_ROW - 1) / HEIGHT_FOG_ROW * HEIGHT_FOG_ROW);
 }
 
 void height_fog_time_models(int n, height_fog_timing *cost)
@@ -147,7 +147,7 @@ void height_fog_time_models(int n, height_fog_timing *cost)
     for (int m = 0; m < HEIGHT_FOG_MODELS; ++m) {
         double start = seconds_now();
         for (int i = 0; i < n; ++i) {
-            fog_view v = bench_view(i);
+            height_fog_view v = bench_view(i);
             float in[3], tr[3];
             run_model(&p, (height_fog_model)m, &v, in, tr);
             sink += in[0] + tr[2];
@@ -160,7 +160,7 @@ void height_fog_time_models(int n, height_fog_timing *cost)
 
 /* ---- The terrain cases ----------------------------------------------------- */
 
-static int render_fog(const scene *s, const camera *cam, fog_settings *fs, int spp, int threads, image *out,
+static int render_fog(const scene *s, const camera *cam, height_fog_settings *fs, int spp, int threads, image *out,
                       render_stats *stats, gt_error *e)
 {
     reference_request req;
@@ -195,7 +195,7 @@ static void evaluate_models(const height_fog_param *p, const image *ref, vec3 ey
     for (size_t i = 0; i < image_pixel_count(ref); ++i) {
         vec3 to = v3_sub(v3(px[i], py[i], pz[i]), eye);
         float d = v3_length(to);
-        fog_view v = {d, eye.y, py[i], d > 0.0f ? v3_dot(p->sun_direction, v3_scale(to, 1.0f / d)) : 1.0f};
+        height_fog_view v = {d, eye.y, py[i], d > 0.0f ? v3_dot(p->sun_direction, v3_scale(to, 1.0f / d)) : 1.0f};
         for (int m = 0; m < HEIGHT_FOG_MODELS; ++m) {
             float in[3] = {0}, tr[3] = {0};
             if (mask[i] > 0.5f)
@@ -250,7 +250,7 @@ static void reference_figures(const image *ref, const image *single, const model
         ++n, sum += l[i], var += (double)se[i] * se[i], sum_q += q[i];
         if (q[i] > 0.0f)
             out->published_max_rel_single = fmax(out->published_max_rel_single,
-                                                 fabs(mp->l[FOG_MODEL_PUBLISHED][1][i] - q[i]) / q[i]);
+                                                 fabs(mp->l[HEIGHT_FOG_MODEL_PUBLISHED][1][i] - q[i]) / q[i]);
     }
     out->pixels = n;
     out->reference_mean_l = n ? sum / n : 0.0;
@@ -269,8 +269,8 @@ static int add_error_maps(image *ref, const model_planes *mp, gt_error *e)
     float *corrected = image_channel_data(ref, CH_FOG_CORRECTED_ERROR);
     for (size_t i = 0; i < image_pixel_count(ref); ++i) {
         float surface = mask[i] > 0.5f ? 1.0f : 0.0f; /* the models are scored on surfaces */
-        published[i] = surface * (mp->l[FOG_MODEL_PUBLISHED][1][i] - l[i]);
-        corrected[i] = surface * (mp->l[FOG_MODEL_SUN_ATTENUATED][1][i] - l[i]);
+        published[i] = surface * (mp->l[HEIGHT_FOG_MODEL_PUBLISHED][1][i] - l[i]);
+        corrected[i] = surface * (mp->l[HEIGHT_FOG_MODEL_SUN_ATTENUATED][1][i] - l[i]);
     }
     return 0;
 }
@@ -318,8 +318,8 @@ static int score_case(const height_fog_param *p, image *ref, const image *single
 static int run_case(const study_context *ctx, const height_fog_request *rq, const scene *s, const camera *cam,
                     int weather, int sun, height_fog_case *out, gt_error *e)
 {
-    fog_settings fs = {.header = {&reference_quantity_fog}, .sun_elevation_deg = rq->sun_elevations[sun],
-                       .scattering = FOG_MULTIPLE, .max_scatterings = 1024};
+    height_fog_settings fs = {.header = {&reference_quantity_fog}, .sun_elevation_deg = rq->sun_elevations[sun],
+                       .scattering = HEIGHT_FOG_MULTIPLE, .max_scatterings = 1024};
     snprintf(fs.weather, sizeof fs.weather, "%s", weathers[weather]);
     snprintf(out->weather, sizeof out->weather, "%s", weathers[weather]);
     out->sun_elevation_deg = rq->sun_elevations[sun];
@@ -328,8 +328,8 @@ static int run_case(const study_context *ctx, const height_fog_request *rq, cons
     if (render_fog(s, cam, &fs, rq->spp, ctx->threads, &ref, &stats, e) != 0)
         return -1;
     out->reference_rays_per_second = stats.seconds > 0.0 ? (double)stats.rays / stats.seconds : 0.0;
-    fog_settings single_fs = fs;
-    single_fs.scattering = FOG_QUADRATURE, single_fs.no_sun_extinction = 1, single_fs.no_shadows = 1;
+    height_fog_settings single_fs = fs;
+    single_fs.scattering = HEIGHT_FOG_QUADRATURE, single_fs.no_sun_extinction = 1, single_fs.no_shadows = 1;
     if (render_fog(s, cam, &single_fs, 1, ctx->threads, &single, &single_stats, e) != 0) {
         image_free(&ref);
         return -1;
@@ -410,8 +410,8 @@ int height_fog_bench(int threads, double *rays_per_second, height_fog_timing *co
     camera cam;
     if (study_load_view("builtin:terrain", 128, 96, &s, &cam, e) != 0)
         return -1;
-    fog_settings fs = {.header = {&reference_quantity_fog}, .weather = "dense", .sun_elevation_deg = 20.0,
-                       .scattering = FOG_MULTIPLE, .max_scatterings = 1024};
+    height_fog_settings fs = {.header = {&reference_quantity_fog}, .weather = "dense", .sun_elevation_deg = 20.0,
+                       .scattering = HEIGHT_FOG_MULTIPLE, .max_scatterings = 1024};
     image img;
     render_stats stats;
     int rc = render_fog(&s, &cam, &fs, 16, threads, &img, &stats, e);

@@ -1,6 +1,6 @@
 /* The height fog study (issue 16 items 2, 4, 6): the Decima talk's analytic
  * HeightFog() (height_fog/height_fog.h), published and corrected, against the
- * references of `gtlab render fog` (techniques/height_fog/fog_integrator.h) on the
+ * references of `gtlab render fog` (techniques/height_fog/height_fog_integrator.h) on the
  * built-in terrain, per weather (sunny, dense) and sun elevation, and the
  * regime table of single rays against the quadrature.
  *
@@ -29,13 +29,13 @@
 #include "height_fog/aerial_perspective_study.h"
 #include "project/study_context.h"
 
-#define HEIGHT_FOG_DIR "fog"
+#define HEIGHT_FOG_DIR "height_fog"
 enum { HEIGHT_FOG_SUNS = 3, HEIGHT_FOG_CASES = 2 * HEIGHT_FOG_SUNS, HEIGHT_FOG_MODELS = 4, HEIGHT_FOG_REGIMES = 8 };
 typedef enum {
-    FOG_MODEL_PUBLISHED,
-    FOG_MODEL_CLAMP_FIXED,
-    FOG_MODEL_SUN_ATTENUATED,
-    FOG_MODEL_SKY_ATTENUATED /* and the ambient through the fog above (height_fog.h) */
+    HEIGHT_FOG_MODEL_PUBLISHED,
+    HEIGHT_FOG_MODEL_CLAMP_FIXED,
+    HEIGHT_FOG_MODEL_SUN_ATTENUATED,
+    HEIGHT_FOG_MODEL_SKY_ATTENUATED /* and the ambient through the fog above (height_fog.h) */
 } height_fog_model;
 
 typedef struct {

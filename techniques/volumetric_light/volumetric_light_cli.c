@@ -1,7 +1,7 @@
 /* INSIDE's volumetric lights (Gjoel & Svendsen, GDC 2016; issue 29): the
  * ray-march against the single-scattering reference (volumetric_light/volumetric_light_study.h; the
  * reference itself is `gtlab render volumetric-light`): `gtlab approx
- * raymarch`, `gtlab bench raymarch`, stage volumetric. */
+ * volumetric-light`, `gtlab bench volumetric-light`, stage volumetric-light. */
 #include <stdio.h>
 
 #include "cli/cli.h"
@@ -28,7 +28,7 @@ static int approx_raymarch(int argc, char **argv)
         CLI_OUTPUT("F.exr", 1, "vlight.L.R/G/B"),
         CLI_END};
     static const cli_command command = {
-        "approx raymarch",
+        "approx volumetric-light",
         "INSIDE's volumetric-light ray-march (volumetric_light/volumetric_light_raymarch.h) on builtin:cornell with the\n"
         "default spot of `gtlab render volumetric-light`: N uniform steps in the cone, shadow map, start\n"
         "offset by noise, optionally half resolution and accumulated over frames.",
@@ -55,7 +55,7 @@ static int bench_raymarch(int argc, char **argv)
 {
     static const cli_option options[] = {CLI_INT("steps", "N", 1, 4096, "samples per ray (default 32)"), CLI_END};
     static const cli_command command = {
-        "bench raymarch",
+        "bench volumetric-light",
         "The volumetric-light ray-march's cost in C, one thread: nanoseconds per pixel per sample\n"
         "(builtin:cornell 256x256, blue noise, 512^2 shadow map with 2x2 PCF).",
         options, NULL, NULL};
@@ -67,19 +67,20 @@ static int bench_raymarch(int argc, char **argv)
     gt_error e;
     if (volumetric_light_bench(256, 256, (int)steps, &ns, &e) != 0)
         return cli_fail(&e);
-    printf("raymarch: %.2f ns per pixel per sample (%ld steps)\n", ns, steps);
+    printf("volumetric-light: %.2f ns per pixel per sample (%ld steps)\n", ns, steps);
     return EXIT_OK;
 }
 
 GTLAB_STUDY_STAGE(all_stage_volumetric, volumetric_light, volumetric_light_section)
 
 const technique technique_volumetric_light = {
-    .name = "volumetric",
+    .name = "volumetric-light",
     .subcommands = {
         [VERB_APPROX] = CLI_SUBCOMMANDS(
-            {"raymarch", approx_raymarch, "INSIDE's volumetric-light ray-march (noise, steps, half res, frames)"}),
+            {"volumetric-light", approx_raymarch, "INSIDE's volumetric-light ray-march (noise, steps, half res, frames)"}),
         [VERB_BENCH] = CLI_SUBCOMMANDS(
-            {"raymarch", bench_raymarch, "volumetric-light ray-march: ns per pixel per sample"}),
+            {"volumetric-light", bench_raymarch, "volumetric-light ray-march: ns per pixel per sample"}),
     },
-    .stages = ALL_STAGES({"volumetric", "volumetric lights (INSIDE)", all_stage_volumetric, VOLUMETRIC_LIGHT_DIR, NULL}),
+    .stages = ALL_STAGES({"volumetric-light", "volumetric lights (INSIDE)", all_stage_volumetric, VOLUMETRIC_LIGHT_DIR, NULL}),
+    .renamed = TECHNIQUE_RENAMES({"volumetric", "volumetric-light"}, {"raymarch", "volumetric-light"}),
 };

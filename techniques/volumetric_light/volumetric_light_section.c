@@ -353,7 +353,7 @@ int volumetric_light_section(report_context *ctx, const volumetric_light_result 
         rq->width, rq->height, r->pixels, r->reference_mean, r->reference_max_error, r->reference_rays,
         r->reference_seconds, rq->shadow_size, rq->alpha, rq->frames, rq->seeds, r->uniform128.rmse,
         r->uniform128.dssim, r->ns_per_pixel_sample);
-    cJSON *json = cJSON_AddObjectToObject(ctx->summary, "volumetric");
+    cJSON *json = cJSON_AddObjectToObject(ctx->summary, "volumetric_light");
     report_rows(ctx->doc, cJSON_AddArrayToObject(json, "noises"), noise_columns,
                 (int)(sizeof noise_columns / sizeof noise_columns[0]), noise, sizeof noise[0], RAYMARCH_NOISE_COUNT);
     report_paragraph(ctx->doc, "The talk's final configuration: half resolution, blue noise, depth-aware upsample, "

@@ -48,7 +48,7 @@
 #include "volumetric_light/volumetric_light_raymarch.h"
 #include "project/study_context.h"
 
-#define VOLUMETRIC_LIGHT_DIR "volumetric"
+#define VOLUMETRIC_LIGHT_DIR "volumetric_light"
 enum { VOLUMETRIC_LIGHT_MAX_SPP = 16, VOLUMETRIC_LIGHT_MAX_SEEDS = 8, VOLUMETRIC_LIGHT_SHADOW_SIZES = 4, VOLUMETRIC_LIGHT_TALK_SPP = 3 };
 
 typedef struct {

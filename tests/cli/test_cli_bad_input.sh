@@ -147,6 +147,10 @@ ls "$work/atmosphere-yusov" | tr '\n' ' ' | grep -qx "atmosphere_inscatter_yusov
 # gtlab all --stages: unknown or empty lists are refused before any work;
 # one stage gives a report with that section only.
 expect_error all-unknown-stage "--stages: unknown stage 'smoke'" "" -- all --stages ao,smoke -o "$work/all"
+# A stage's former name is refused with its name today (issue 43), in a project too (test_cli_project.sh).
+expect_error all-renamed-stage "--stages: stage 'aa' is now 'anti-aliasing'" "" -- all --stages ao,aa -o "$work/all"
+expect_error approx-renamed "approx raymarch: 'raymarch' is now 'volumetric-light'" "" -- approx raymarch -o "$work/v.exr"
+expect_error bench-renamed "bench: 'fog' is now 'height-fog'" "" -- bench fog
 expect_error all-no-stage "--stages: no stage named in ','" "" -- all --stages , -o "$work/all"
 # A stage whose input another stage makes is refused when that input is absent.
 expect_error all-missing-input "stage gtao reads what stage ao writes" "$work/all_empty/report.md" -- all --stages gtao -o "$work/all_empty"

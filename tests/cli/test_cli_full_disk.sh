@@ -56,7 +56,7 @@ expect_ok "stage" all --quality preview --stages hdr-precision --threads 2 -o "$
 expect_ok "lut" lut blue-noise --size 64 --channels 1 -o "$work/full/lut"
 size() { stat -c %s "$work/full/$1"; }
 kib() { echo $((($1 + 1023) / 1024)); }
-[ "$(size h.png)" -gt 1024 ] && [ "$(size stage/hdr/code_steps.dat)" -lt "$(size stage/figures/hdr_code_steps.png)" ] &&
+[ "$(size h.png)" -gt 1024 ] && [ "$(size stage/hdr_precision/code_steps.dat)" -lt "$(size stage/figures/hdr_code_steps.png)" ] &&
   [ "$(size stage/figures/hdr_code_steps.svg)" -lt "$(size stage/figures/hdr_code_steps.png)" ] && pass ||
   fail "the sizes this test relies on changed: $(ls -lR "$work/full")"
 
@@ -69,15 +69,15 @@ cp "$work/full/h.png" "$work/u/kept.png"
 limited 1 compare "$work/a.exr" "$work/b.exr" --heatmap "$work/u/kept.png"
 cmp -s "$work/full/h.png" "$work/u/kept.png" && pass || fail "ulimit: a heatmap that failed changed the file it replaces"
 rm -f "$work/u/kept.png"
-limited "$(($(size stage/hdr/code_steps.dat) / 1024 - 1))" all --quality preview --stages hdr-precision --threads 2 \
+limited "$(($(size stage/hdr_precision/code_steps.dat) / 1024 - 1))" all --quality preview --stages hdr-precision --threads 2 \
   -o "$work/u/stage"
-expect_write_failure "ulimit: stage plot data" "hdr/code_steps.dat: write failed: File too large" "$work/u" \
-  stage/hdr/code_steps.dat stage/report.md stage/summary.json
-limited "$(kib "$(size stage/hdr/code_steps.dat)")" all --quality preview --stages hdr-precision --threads 2 \
+expect_write_failure "ulimit: stage plot data" "hdr_precision/code_steps.dat: write failed: File too large" "$work/u" \
+  stage/hdr_precision/code_steps.dat stage/report.md stage/summary.json
+limited "$(kib "$(size stage/hdr_precision/code_steps.dat)")" all --quality preview --stages hdr-precision --threads 2 \
   -o "$work/u/stage"
 expect_write_failure "ulimit: stage gnuplot figure" "figures/hdr_code_steps.png: gnuplot could not write the whole PNG" \
   "$work/u" stage/figures/hdr_code_steps.png stage/figures/hdr_code_steps.svg stage/figures/hdr_code_steps.gp \
-  stage/hdr/code_steps.dat stage/report.md stage/summary.json
+  stage/hdr_precision/code_steps.dat stage/report.md stage/summary.json
 limited 2 lut blue-noise --size 64 --channels 1 -o "$work/u/lut"
 expect_write_failure "ulimit: lut" "blue_noise_64.exr: " "$work/u" lut/blue_noise_64.exr lut/blue_noise_64.png
 
@@ -95,11 +95,11 @@ if [ "$(id -u)" -eq 0 ] && mount_tmpfs "$work/t_probe" 16; then
   run compare "$work/a.exr" "$work/b.exr" --heatmap "$work/t_heatmap/h.png"
   expect_write_failure "tmpfs: compare --heatmap" "h.png: write failed: No space left on device" "$work/t_heatmap" h.png
   # The stage: room for its plot data and kept script, not for the figure.
-  room=$(($(pages_kib "$(size stage/hdr/code_steps.dat)") + $(pages_kib "$(size stage/figures/hdr_code_steps.gp)")))
+  room=$(($(pages_kib "$(size stage/hdr_precision/code_steps.dat)") + $(pages_kib "$(size stage/figures/hdr_code_steps.gp)")))
   mount_tmpfs "$work/t_stage" "$room" && mounted+=("$work/t_stage")
   run all --quality preview --stages hdr-precision --threads 2 -o "$work/t_stage/out"
   expect_write_failure "tmpfs: stage gnuplot figure" "figures/hdr_code_steps.png: gnuplot could not write the whole PNG" \
-    "$work/t_stage" out/figures/hdr_code_steps.png out/figures/hdr_code_steps.gp out/hdr/code_steps.dat out/report.md
+    "$work/t_stage" out/figures/hdr_code_steps.png out/figures/hdr_code_steps.gp out/hdr_precision/code_steps.dat out/report.md
   # The LUT: room for its EXR, not its PNG (OpenImageIO's writer).
   mount_tmpfs "$work/t_lut" "$(pages_kib "$(size lut/blue_noise_64.exr)")" && mounted+=("$work/t_lut")
   run lut blue-noise --size 64 --channels 1 -o "$work/t_lut/lut"

@@ -7,7 +7,7 @@
 # (...)" before any work, and the input's bytes stay what they were.
 #
 # Verbs and subcommands that write but read no file (lut *, check sphere-noh,
-# fit sphere-light, fit sg-ndf, approx raymarch, bench convergence, init,
+# fit sphere-light, fit sg-ndf, approx volumetric-light, bench convergence, init,
 # scene write of a built-in scene) have no input to lose; shader score and the
 # other benchmarks write nothing.
 #
@@ -59,7 +59,7 @@ cases=(
   "approx-crytek|gbuffer|g.exr|-|approx crytek --gbuffer @IN@ -o @OUT@"
   "approx-specular-occlusion|exr|ao.exr|-|approx specular-occlusion --gbuffer exr2.exr --ao @IN@ -o @OUT@"
   "approx-height-fog|gbuffer|g.exr|-|approx height-fog --gbuffer @IN@ -o @OUT@"
-  "approx-aa|scene.glb|s.glb|-|approx aa --scene @IN@ -o @OUT@"
+  "approx-aa|scene.glb|s.glb|-|approx anti-aliasing --scene @IN@ -o @OUT@"
   "fit-multibounce|mb|mb.exr|-|fit multibounce --data @IN@ -o @OUT@"
   "fit-multibounce-argument|mb|mb.exr|-|fit multibounce --data exr2.exr @IN@ -o @OUT@"
   "fit-multibounce-header|mb|fit.h|-|fit multibounce --data @IN@ -o fit.json"

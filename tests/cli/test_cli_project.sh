@@ -103,6 +103,7 @@ bad() {  # bad NAME PATTERN JSON
 }
 bad missing-scene "scenes\[0\]\.path: .*missing.glb: No such file" '{"scenes": [{"path": "missing.glb"}]}'
 bad unknown-stage "stages\[1\]: unknown stage 'nope'" '{"stages": ["ao", "nope"]}'
+bad renamed-stage "stages\[1\]: stage 'normals' is now 'best-fit-normals'" '{"stages": ["ao", "normals"]}'
 bad bad-label "scenes\[0\]\.label: label 'a b'" '{"scenes": [{"path": "user.glb", "label": "a b"}]}'
 bad gltf-camera "scenes\[0\]\.cameras\[1\]: .*camera 4 does not exist" '{"scenes": [{"path": "user.glb", "cameras": [{}, {"gltf": 4}]}]}'
 bad camera-name "scenes\[0\]\.cameras\[0\]: .*no camera named 'Top'" '{"scenes": [{"path": "user.glb", "cameras": [{"gltf": "Top"}]}]}'

@@ -1,4 +1,4 @@
-/* `gtlab render frames` and `gtlab approx aa` (anti_aliasing/aa_commands.h) on a
+/* `gtlab render frames` and `gtlab approx anti-aliasing` (anti_aliasing/aa_commands.h) on a
  * tiny pan of builtin:aa-thin: the frames hold the schema's channels, frame
  * 0 has no motion, later frames do, and the jitter of the edge TAA's frames
  * alternates in the header; with a truth, its channels and header are

@@ -3,7 +3,7 @@
  * - under the white dome (constant radiance 1) env-diffuse equals the
  *   multibounce reference bit for bit at the same seed, means and standard
  *   errors: the scene's colours with 4 bounces, and a grey albedo with
- *   Russian roulette; env_diffuse_direct equals ao.V;
+ *   Russian roulette; environment_diffuse_direct equals ao.V;
  * - under a sun-only environment (one bright texel of a 512 x 256 map) the
  *   ratio of occluded to unoccluded direct light is exactly the shadow-ray
  *   visibility of the sun wherever rays to the texel's centre and corners

@@ -57,7 +57,7 @@ static void brute_force(const float *rgb, const double n[3], double e[3])
 static void test_linear(void)
 {
     float *rgb = make_env(0);
-    env_approx_equirect env = {W, H, rgb};
+    environment_equirect env = {W, H, rgb};
     irradiance_map m;
     CHECK(irradiance_map_build(&m, &env, 32, 0, 2) == 0);
     double worst = 0.0;
@@ -78,7 +78,7 @@ static void test_linear(void)
 static void test_sun_against_brute_force(void)
 {
     float *rgb = make_env(1);
-    env_approx_equirect env = {W, H, rgb};
+    environment_equirect env = {W, H, rgb};
     irradiance_map fine, coarse, coarse1;
     CHECK(irradiance_map_build(&fine, &env, 16, 0, 2) == 0);
     CHECK(irradiance_map_build(&coarse, &env, 16, 3, 2) == 0);

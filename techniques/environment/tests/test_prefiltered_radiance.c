@@ -35,7 +35,7 @@ static float *constant_env(float value)
 static void test_constant(void)
 {
     float *rgb = constant_env(0.75f);
-    env_approx_equirect env = {W, H, rgb};
+    environment_equirect env = {W, H, rgb};
     prefiltered_radiance p, p1;
     CHECK(prefiltered_radiance_build(&p, &env, 64, LEVELS, SAMPLES, 2) == 0);
     CHECK(prefiltered_radiance_build(&p1, &env, 64, LEVELS, SAMPLES, 1) == 0);
@@ -95,7 +95,7 @@ static void test_linear(void)
             for (int c = 0; c < 3; ++c)
                 rgb[((size_t)j * W + i) * 3 + c] = (float)v;
         }
-    env_approx_equirect env = {W, H, rgb};
+    environment_equirect env = {W, H, rgb};
     equirect_pyramid src;
     CHECK(equirect_pyramid_build(&src, &env) == 0);
     for (int k = 0; k < LEVELS; ++k) {

@@ -1,5 +1,5 @@
 /* 9-coefficient SH irradiance (environment/sh_irradiance.h) and the equirect
- * texel moments it is built on (environment/env_approx_equirect.h):
+ * texel moments it is built on (environment/environment_equirect.h):
  *  - the closed-form texel moments against a fine midpoint quadrature, and
  *    the texel solid angles summing to 4 pi;
  *  - a constant environment L: E = pi L in every direction (exact);
@@ -89,7 +89,7 @@ static void test_constant_and_polynomials(void)
     double zero[3] = {0, 0, 0}, b[3] = {0.3, -0.5, 0.2};
     float *constant = polynomial_env(1.5, zero, 0.0), *linear = polynomial_env(1.0, b, 0.0),
           *xy = polynomial_env(0.0, zero, 1.0);
-    env_approx_equirect envs[3] = {{W, H, constant}, {W, H, linear}, {W, H, xy}};
+    environment_equirect envs[3] = {{W, H, constant}, {W, H, linear}, {W, H, xy}};
     sh9_rgb sh[3];
     for (int k = 0; k < 3; ++k)
         sh9_project_equirect(&envs[k], &sh[k]);
@@ -128,7 +128,7 @@ static void test_cosine_lobe(void)
             for (int k = 0; k < 3; ++k)
                 rgb[((size_t)j * W + i) * 3 + k] = (float)fmax(0.0, dot3(w, d));
         }
-    env_approx_equirect env = {W, H, rgb};
+    environment_equirect env = {W, H, rgb};
     sh9_rgb sh;
     sh9_project_equirect(&env, &sh);
     double worst = 0.0, worst_g = 0.0;

@@ -1,5 +1,5 @@
 /* The analytic height fog (height_fog/height_fog.h) against single scattering
- * by quadrature (techniques/height_fog/fog_single_scatter.h), in every regime of issue
+ * by quadrature (techniques/height_fog/height_fog_single_scatter.h), in every regime of issue
  * 16: rays down, horizontal and up; the camera inside the fog and far above
  * it; the world point above and below the camera; H from 1 m to 1e6 m; beta
  * from clear air to dense fog.
@@ -18,7 +18,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "height_fog/fog_single_scatter.h"
+#include "height_fog/height_fog_single_scatter.h"
 #include "height_fog/height_fog.h"
 #include "tests/check.h"
 
@@ -52,10 +52,10 @@ static view_ray ray_at(double y_c, double dir_y, double distance, int towards_su
 }
 
 /* The quadrature with the assumptions of correction level `level` (height_fog_correction). */
-static void reference(const height_fog_param *p, int level, const view_ray *r, fog_ray_estimate *q)
+static void reference(const height_fog_param *p, int level, const view_ray *r, height_fog_ray_estimate *q)
 {
-    fog_lighting l = {p, level >= HEIGHT_FOG_ATTENUATE_SUN, NULL, level >= HEIGHT_FOG_ATTENUATE_SKY};
-    fog_single_scatter(&l, r->origin, r->dir, r->distance, 1e-9, q);
+    height_fog_lighting l = {p, level >= HEIGHT_FOG_ATTENUATE_SUN, NULL, level >= HEIGHT_FOG_ATTENUATE_SKY};
+    height_fog_single_scatter(&l, r->origin, r->dir, r->distance, 1e-9, q);
 }
 
 /* |a - b| within rel of the larger plus a floor at float resolution. */
@@ -87,7 +87,7 @@ static void check_regime(double h, double thickness, double y_c, double dir_y, d
     height_fog_param p = medium(h, thickness, 25.0);
     view_ray r = ray_at(y_c, dir_y, distance, towards_sun);
     for (int ext = 0; ext <= 2; ++ext) {
-        fog_ray_estimate q;
+        height_fog_ray_estimate q;
         reference(&p, ext, &r, &q);
         float in[3], tr[3];
         analytic(&p, ext, &r, in, tr);
@@ -132,7 +132,7 @@ static void check_published_departs(void)
     height_fog_param p = medium(100.0, 1000.0, 25.0);
     float in[3], tr[3];
     view_ray horizontal = ray_at(50.0, 0.0, 500.0, 1);
-    fog_ray_estimate q;
+    height_fog_ray_estimate q;
     reference(&p, 0, &horizontal, &q);
     analytic(&p, -1, &horizontal, in, tr);
     double ratio = log(tr[0]) / log(q.transmittance[0]);
@@ -154,7 +154,7 @@ static void check_sun_extinction_matters(void)
     height_fog_param p = medium(100.0, 1000.0, 10.0);
     p.amb_color[0] = p.amb_color[1] = p.amb_color[2] = 0.0;
     view_ray r = ray_at(20.0, -0.02, 600.0, 1);
-    fog_ray_estimate q;
+    height_fog_ray_estimate q;
     reference(&p, 1, &r, &q);
     float in[3], tr[3];
     analytic(&p, -1, &r, in, tr);
@@ -167,7 +167,7 @@ static void check_thin_fog_cancellation(void)
 {
     height_fog_param p = medium(10.0, 1.0, 25.0);
     view_ray r = ray_at(3000.0, -0.9, 3000.0, 1); /* down to 300 m = 30 H: tau ~ 1e-15 .. 1e-9 */
-    fog_ray_estimate q;
+    height_fog_ray_estimate q;
     reference(&p, 0, &r, &q);
     float in[3], tr[3];
     analytic(&p, -1, &r, in, tr);
@@ -200,9 +200,9 @@ static void check_limits(void)
  * hemisphere's half never arrives). */
 static void check_sky_limits(void)
 {
-    CHECK_NEAR(fog_exponential_integral_e2(0.0), 1.0, 1e-12);
-    CHECK_NEAR(fog_exponential_integral_e2(1.0), exp(-1.0) - 0.2193839344, 1e-10);
-    CHECK_NEAR(fog_exponential_integral_e2(5.0), exp(-5.0) - 5.0 * 0.001148295591, 1e-11);
+    CHECK_NEAR(height_fog_exponential_integral_e2(0.0), 1.0, 1e-12);
+    CHECK_NEAR(height_fog_exponential_integral_e2(1.0), exp(-1.0) - 0.2193839344, 1e-10);
+    CHECK_NEAR(height_fog_exponential_integral_e2(5.0), exp(-5.0) - 5.0 * 0.001148295591, 1e-11);
     height_fog_param p = medium(100.0, 1e-3, 25.0);
     p.sun_color[0] = p.sun_color[1] = p.sun_color[2] = 0.0;
     view_ray r = ray_at(3000.0, -0.5, 5000.0, 1);

@@ -24,9 +24,9 @@ enum { PIXELS = 3000 };
 
 typedef struct {
     float distance[PIXELS], world_y[PIXELS], sov[PIXELS];
-} fog_views;
+} height_fog_views;
 
-static void random_views(unsigned long long seed, fog_views *v, float *camera_y)
+static void random_views(unsigned long long seed, height_fog_views *v, float *camera_y)
 {
     *camera_y = (float)(3000.0 * splitmix64_uniform01(&seed) - 500.0);
     for (int i = 0; i < PIXELS; ++i) {
@@ -54,7 +54,7 @@ static void allowed_difference(const height_fog_uniforms *u, int c, float camera
 }
 
 /* Largest |batch - scalar| over the allowed difference, over every output. */
-static double worst_ratio(const height_fog_param *p, const fog_views *v, float camera_y)
+static double worst_ratio(const height_fog_param *p, const height_fog_views *v, float camera_y)
 {
     static float planes[6][PIXELS];
     float *l[3] = {planes[0], planes[1], planes[2]}, *t[3] = {planes[3], planes[4], planes[5]};
@@ -90,7 +90,7 @@ static height_fog_param medium(unsigned long long seed)
 
 static void test_batch_within_expf_error(void)
 {
-    static fog_views v;
+    static height_fog_views v;
     for (unsigned long long k = 1; k <= 12; ++k) {
         height_fog_param p = medium(k * 7919ULL);
         float camera_y;
@@ -103,7 +103,7 @@ static void test_batch_within_expf_error(void)
 /* One call of PIXELS against calls of 1, 7 and 300 pixels: the same bits. */
 static void test_batch_split_invariant(void)
 {
-    static fog_views v;
+    static height_fog_views v;
     static float whole[6][PIXELS], split[6][PIXELS];
     float camera_y;
     random_views(99, &v, &camera_y);

@@ -32,10 +32,10 @@ int main(void)
         for (int m = 0; m < HEIGHT_FOG_MODELS; ++m)
             CHECK(isfinite(c->rmse_l[m]) && c->rmse_l[m] > 0.0 && isfinite(c->dssim_l[m]) && c->rmse_t[m] < 1e-4);
         /* The ambient through the fog is the correction that matters in dense fog (techniques/height_fog/README.md). */
-        CHECK(c->reference_noise_rms > 0.0 && c->reference_noise_rms < c->rmse_l[FOG_MODEL_PUBLISHED]);
+        CHECK(c->reference_noise_rms > 0.0 && c->reference_noise_rms < c->rmse_l[HEIGHT_FOG_MODEL_PUBLISHED]);
         if (i >= HEIGHT_FOG_SUNS)
-            CHECK_MSG(c->rmse_l[FOG_MODEL_SKY_ATTENUATED] < 0.5 * c->rmse_l[FOG_MODEL_SUN_ATTENUATED], "%g vs %g",
-                      c->rmse_l[FOG_MODEL_SKY_ATTENUATED], c->rmse_l[FOG_MODEL_SUN_ATTENUATED]);
+            CHECK_MSG(c->rmse_l[HEIGHT_FOG_MODEL_SKY_ATTENUATED] < 0.5 * c->rmse_l[HEIGHT_FOG_MODEL_SUN_ATTENUATED], "%g vs %g",
+                      c->rmse_l[HEIGHT_FOG_MODEL_SKY_ATTENUATED], c->rmse_l[HEIGHT_FOG_MODEL_SUN_ATTENUATED]);
     }
     for (int g = 0; g < HEIGHT_FOG_REGIMES; ++g) {
         const height_fog_regime *x = &r.regimes[g];

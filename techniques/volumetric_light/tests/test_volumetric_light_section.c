@@ -44,7 +44,7 @@ static void check_volumetric_light(report_context *base)
     r.cost_flip_gap = -0.1, r.cost_flip_gap_se = 0.005;
     r.cost_dssim_gap = -0.05, r.cost_dssim_gap_se = 0.005;
     CHECK(volumetric_light_section(&ctx, &r, &e) == 0);
-    const cJSON *cost = cJSON_GetObjectItem(cJSON_GetObjectItem(ctx.summary, "volumetric"), "equal_cost");
+    const cJSON *cost = cJSON_GetObjectItem(cJSON_GetObjectItem(ctx.summary, "volumetric_light"), "equal_cost");
     CHECK(cJSON_GetObjectItem(cost, "flip_gap")->valuedouble == -0.1);
     CHECK(cJSON_GetObjectItem(cost, "talk_flip")->valuedouble == 0.05);
     CHECK(cJSON_GetObjectItem(cost, "dssim_gap")->valuedouble == -0.05);

@@ -12,7 +12,7 @@
  * normal (so the occlusion part is the combination's own error, not an AO
  * estimator's), the G-buffer's normal, albedo and roughness, F0 = 0.04.
  *
- * Combinations (environment/env_approx.h): diffuse per unit albedo, AO x E(n),
+ * Combinations (environment/environment_approx.h): diffuse per unit albedo, AO x E(n),
  * AO x E(bent), G(AO, rho) x E(n) and x E(bent) (G the GTAO multi-bounce
  * function, the talk's coefficients), E from 9 SH coefficients and from the
  * exact irradiance map; specular, the split sum times each specular-
@@ -34,82 +34,82 @@
  * DSSIM of both images divided by twice the reference's mean (so the
  * reference's mean is 1/2 whatever the environment's brightness), means over
  * the scenes, with the per-scene values kept for paired statistics. */
-#ifndef GTLAB_ENVIRONMENT_ENV_APPROX_STUDY_H
-#define GTLAB_ENVIRONMENT_ENV_APPROX_STUDY_H
+#ifndef GTLAB_ENVIRONMENT_ENVIRONMENT_STUDY_H
+#define GTLAB_ENVIRONMENT_ENVIRONMENT_STUDY_H
 
-#include "environment/env_approx.h"
+#include "environment/environment_approx.h"
 #include "project/study_context.h"
 
 enum {
-    ENV_STUDY_MAX_ENVIRONMENTS = 12,
-    ENV_STUDY_MAX_SCENES = 8,
-    ENV_STUDY_OCCLUDED_KINDS = ENV_DIFFUSE_KINDS - 1, /* ao-n .. multibounce-bent */
-    ENV_STUDY_SO_VARIANTS = 6
+    ENVIRONMENT_STUDY_MAX_ENVIRONMENTS = 12,
+    ENVIRONMENT_STUDY_MAX_SCENES = 8,
+    ENVIRONMENT_STUDY_OCCLUDED_KINDS = ENVIRONMENT_DIFFUSE_KINDS - 1, /* ao-n .. multibounce-bent */
+    ENVIRONMENT_STUDY_SO_VARIANTS = 6
 };
-typedef enum { ENV_PART_LIGHTING, ENV_PART_OCCLUSION, ENV_PART_TOTAL, ENV_PARTS } env_error_part;
-const char *env_error_part_name(env_error_part p); /* "lighting", "occlusion", "total" */
+typedef enum { ENVIRONMENT_PART_LIGHTING, ENVIRONMENT_PART_OCCLUSION, ENVIRONMENT_PART_TOTAL, ENVIRONMENT_PARTS } environment_error_part;
+const char *environment_error_part_name(environment_error_part p); /* "lighting", "occlusion", "total" */
 
 /* The specular-occlusion variants, in this order. */
-const char *env_study_so_label(int variant); /* "ao", "lagarde", "cone-exact:exp2-alpha", "lut", "cone-horizon:exp2-alpha", "sg" */
+const char *environment_study_so_label(int variant); /* "ao", "lagarde", "cone-exact:exp2-alpha", "lut", "cone-horizon:exp2-alpha", "sg" */
 
 typedef struct {
     double rmse, dssim; /* relative RMSE, DSSIM (header) */
-} env_score;
+} environment_score;
 
 /* One environment, every scene. */
 typedef struct {
     char name[64];
     double sh_seconds, map_seconds, prefiltered_seconds; /* its precomputations */
     /* means over the scenes; [source][kind - 1][part] for the occluded kinds */
-    env_score diffuse[ENV_IRRADIANCE_SOURCES][ENV_STUDY_OCCLUDED_KINDS][ENV_PARTS];
-    env_score specular[ENV_STUDY_SO_VARIANTS][ENV_PARTS];
+    environment_score diffuse[ENVIRONMENT_IRRADIANCE_SOURCES][ENVIRONMENT_STUDY_OCCLUDED_KINDS][ENVIRONMENT_PARTS];
+    environment_score specular[ENVIRONMENT_STUDY_SO_VARIANTS][ENVIRONMENT_PARTS];
     /* per scene: the total relative RMSE of the specular variants, of ao-n (map) by part */
-    double specular_case[ENV_STUDY_SO_VARIANTS][ENV_STUDY_MAX_SCENES];
-    double ao_n_case[ENV_PARTS][ENV_STUDY_MAX_SCENES];
+    double specular_case[ENVIRONMENT_STUDY_SO_VARIANTS][ENVIRONMENT_STUDY_MAX_SCENES];
+    double ao_n_case[ENVIRONMENT_PARTS][ENVIRONMENT_STUDY_MAX_SCENES];
     /* the direct diffuse reference's RMS standard error / its mean (green), per scene and its mean */
-    double noise_case[ENV_STUDY_MAX_SCENES], reference_noise;
-} env_study_environment;
+    double noise_case[ENVIRONMENT_STUDY_MAX_SCENES], reference_noise;
+} environment_study_environment;
 
 /* A paired difference over the scenes: mean and standard error of the mean. */
 typedef struct {
     double mean, standard_error;
     int cases;
-} env_paired;
+} environment_paired;
 
 /* The specular-occlusion ranking under one environment against the white
  * dome's: Kendall's tau between the two orders (by mean total relative
  * RMSE), the pairs whose order flips, and of those the ones whose paired
  * difference is significant (|mean| > 2 standard errors) under both. */
 typedef struct {
-    int order[ENV_STUDY_SO_VARIANTS]; /* variants, best first */
+    int order[ENVIRONMENT_STUDY_SO_VARIANTS]; /* variants, best first */
     double kendall_tau;
     int flipped_pairs, significant_flips;
-} env_so_ranking;
+} environment_so_ranking;
 
 typedef struct {
     int size, spp, bounces; /* of every reference */
     int scene_count, environment_count;
-    char scenes[ENV_STUDY_MAX_SCENES][64];
+    char scenes[ENVIRONMENT_STUDY_MAX_SCENES][64];
     char image_scene[64]; /* the scene whose images are written: cornell, or a project's first */
-    env_study_environment environments[ENV_STUDY_MAX_ENVIRONMENTS]; /* [0] is the white dome */
-    env_so_ranking rankings[ENV_STUDY_MAX_ENVIRONMENTS];             /* [0]: the white dome's own order */
+    environment_study_environment environments[ENVIRONMENT_STUDY_MAX_ENVIRONMENTS]; /* [0] is the white dome */
+    environment_so_ranking rankings[ENVIRONMENT_STUDY_MAX_ENVIRONMENTS];             /* [0]: the white dome's own order */
     /* the talk's claim: AO x probe (map, exact AO) occlusion part, relative
      * RMSE with the reference's noise taken out per scene,
      * sqrt(max(0, rmse^2 - noise^2)) (metrics/noise_corrected.h) */
     int claim_environment;       /* the non-white environment with the smallest occlusion-part error */
-    env_paired white_occlusion;  /* under the white dome, over the scenes */
-    env_paired other_occlusion;  /* under claim_environment */
+    environment_paired white_occlusion;  /* under the white dome, over the scenes */
+    environment_paired other_occlusion;  /* under claim_environment */
     double seconds;              /* the whole study */
-} env_study_result;
+} environment_study_result;
 
 /* From the per-scene figures of out (scene_count, environments[]): the
  * ranking of environment env against environments[0], the white dome, and
  * the claim's figures. The study calls them; tests hand them made-up rows. */
-void env_study_rank(env_study_result *out, int env);
-void env_study_claim(env_study_result *out);
+void environment_study_rank(environment_study_result *out, int env);
+void environment_study_claim(environment_study_result *out);
 
 /* Runs the study; writes <output>/environment/ images (reference, approximation,
  * DSSIM map per environment for the first scene). */
-int env_approx_study(const study_context *ctx, env_study_result *out, gt_error *e);
+int environment_study(const study_context *ctx, environment_study_result *out, gt_error *e);
 
 #endif

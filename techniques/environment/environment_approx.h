@@ -22,8 +22,8 @@
  * any other scenario": under a constant environment E(b) = E(n) = pi L and
  * ao-n is L AO, exactly the white-dome AO shading; elsewhere E(n) AO is
  * \int L cos times \int V cos / pi, not \int V L cos. */
-#ifndef GTLAB_ENVIRONMENT_ENV_APPROX_H
-#define GTLAB_ENVIRONMENT_ENV_APPROX_H
+#ifndef GTLAB_ENVIRONMENT_ENVIRONMENT_APPROX_H
+#define GTLAB_ENVIRONMENT_ENVIRONMENT_APPROX_H
 
 #include "luts/dfg_lut.h"
 #include "environment/irradiance_map.h"
@@ -31,19 +31,19 @@
 #include "environment/sh_irradiance.h"
 #include "multibounce/multibounce.h"
 
-typedef enum { ENV_IRRADIANCE_SH9, ENV_IRRADIANCE_MAP, ENV_IRRADIANCE_SOURCES } env_irradiance_source;
+typedef enum { ENVIRONMENT_IRRADIANCE_SH9, ENVIRONMENT_IRRADIANCE_MAP, ENVIRONMENT_IRRADIANCE_SOURCES } environment_irradiance_source;
 
 typedef enum {
-    ENV_DIFFUSE_UNOCCLUDED,
-    ENV_DIFFUSE_AO_N,
-    ENV_DIFFUSE_AO_BENT,
-    ENV_DIFFUSE_MULTIBOUNCE_N,
-    ENV_DIFFUSE_MULTIBOUNCE_BENT,
-    ENV_DIFFUSE_KINDS
-} env_diffuse_kind;
+    ENVIRONMENT_DIFFUSE_UNOCCLUDED,
+    ENVIRONMENT_DIFFUSE_AO_N,
+    ENVIRONMENT_DIFFUSE_AO_BENT,
+    ENVIRONMENT_DIFFUSE_MULTIBOUNCE_N,
+    ENVIRONMENT_DIFFUSE_MULTIBOUNCE_BENT,
+    ENVIRONMENT_DIFFUSE_KINDS
+} environment_diffuse_kind;
 
-const char *env_irradiance_source_name(env_irradiance_source s); /* "sh9", "map" */
-const char *env_diffuse_kind_name(env_diffuse_kind k);           /* "unoccluded", "ao-n", ... */
+const char *environment_irradiance_source_name(environment_irradiance_source s); /* "sh9", "map" */
+const char *environment_diffuse_kind_name(environment_diffuse_kind k);           /* "unoccluded", "ao-n", ... */
 
 /* What the approximations read (not owned; a member may be NULL when no
  * approximation that needs it is asked for). */
@@ -53,21 +53,21 @@ typedef struct {
     const prefiltered_radiance *prefiltered;
     const dfg_lut *dfg;
     const multibounce_model *multibounce;
-} env_approx_lighting;
+} environment_lighting;
 
 /* E(n) from the chosen source (SH clamped at 0, as engines do). */
-void env_approx_irradiance(const env_approx_lighting *l, env_irradiance_source s, const double n[3], double e[3]);
+void environment_irradiance(const environment_lighting *l, environment_irradiance_source s, const double n[3], double e[3]);
 
 /* The unit bent normal from a buffer's bent vector (any length; n where it is zero). */
-void env_approx_unit_bent(const double bent[3], const double n[3], double out[3]);
+void environment_unit_bent(const double bent[3], const double n[3], double out[3]);
 
 /* Diffuse outgoing radiance per unit albedo of one kind; `bent` unit
- * (env_approx_unit_bent); the albedo matters to the multi-bounce kinds only. */
-void env_approx_diffuse(const env_approx_lighting *l, env_irradiance_source s, env_diffuse_kind k,
+ * (environment_unit_bent); the albedo matters to the multi-bounce kinds only. */
+void environment_diffuse(const environment_lighting *l, environment_irradiance_source s, environment_diffuse_kind k,
                         const double n[3], const double bent[3], double ao, const double albedo[3], double out[3]);
 
 /* Specular outgoing radiance: split sum times v_s. */
-void env_approx_specular(const env_approx_lighting *l, const double R[3], double n_dot_v, double roughness,
+void environment_specular(const environment_lighting *l, const double R[3], double n_dot_v, double roughness,
                          const double f0[3], double v_s, double out[3]);
 
 #endif

@@ -5,35 +5,35 @@
  * texels) is first written as a small map of its constant; the rotation is
  * left to the caller (the study renders with none) and the intensity is
  * applied to the texels. */
-#ifndef GTLAB_ENVIRONMENT_ENV_APPROX_LIGHTING_H
-#define GTLAB_ENVIRONMENT_ENV_APPROX_LIGHTING_H
+#ifndef GTLAB_ENVIRONMENT_ENVIRONMENT_LIGHTING_H
+#define GTLAB_ENVIRONMENT_ENVIRONMENT_LIGHTING_H
 
 #include "core/optics/environment_map.h"
 #include "core/error.h"
-#include "environment/env_approx.h"
+#include "environment/environment_approx.h"
 #include "project/study_context.h"
 
 typedef struct {
     int map_width, map_reduction;          /* irradiance map: width x width/2, blocks of 2^reduction texels */
     int prefiltered_width, prefiltered_levels, prefiltered_samples;
-} env_approx_settings;
+} environment_settings;
 
 /* 64, 3; 256, 6, and the quality's prefiltered_samples (the quality table). */
-env_approx_settings env_approx_default_settings(study_quality quality);
+environment_settings environment_default_settings(study_quality quality);
 
 typedef struct {
     sh9_rgb sh;
     irradiance_map map;
     prefiltered_radiance prefiltered;
     multibounce_model multibounce; /* the talk's published coefficients */
-    env_approx_lighting lighting;  /* pointers into the above */
+    environment_lighting lighting;  /* pointers into the above */
     double sh_seconds, map_seconds, prefiltered_seconds;
-} env_approx_precomputed;
+} environment_precomputed;
 
 /* Builds everything for env; dfg is kept as a pointer. Returns 0, or -1
  * with e (out of memory). */
-int env_approx_precompute(const environment_map *env, const env_approx_settings *s, const dfg_lut *dfg, int threads,
-                          env_approx_precomputed *out, gt_error *e);
-void env_approx_precomputed_free(env_approx_precomputed *p);
+int environment_precompute(const environment_map *env, const environment_settings *s, const dfg_lut *dfg, int threads,
+                          environment_precomputed *out, gt_error *e);
+void environment_precomputed_free(environment_precomputed *p);
 
 #endif

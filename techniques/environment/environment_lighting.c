@@ -1,5 +1,5 @@
 /* The lighting precomputations of one environment, timed: see the header. */
-#include "environment/env_approx_lighting.h"
+#include "environment/environment_lighting.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -9,9 +9,9 @@
 
 enum { CONSTANT_WIDTH = 256 }; /* blocks of 8 x 8 texels: 32 x 16 of them, as fine as a real map's */
 
-env_approx_settings env_approx_default_settings(study_quality quality)
+environment_settings environment_default_settings(study_quality quality)
 {
-    env_approx_settings s = {.map_width = 64, .map_reduction = 3, .prefiltered_width = 256, .prefiltered_levels = 6,
+    environment_settings s = {.map_width = 64, .map_reduction = 3, .prefiltered_width = 256, .prefiltered_levels = 6,
                              .prefiltered_samples = environment_quality_of(quality)->prefiltered_samples};
     return s;
 }
@@ -31,8 +31,8 @@ static float *texels_of(const environment_map *env, int *width, int *height)
     return rgb;
 }
 
-static int build_all(const env_approx_equirect *view, const env_approx_settings *s, int threads,
-                     env_approx_precomputed *p)
+static int build_all(const environment_equirect *view, const environment_settings *s, int threads,
+                     environment_precomputed *p)
 {
     double t0 = seconds_now();
     sh9_project_equirect(view, &p->sh);
@@ -48,28 +48,28 @@ static int build_all(const env_approx_equirect *view, const env_approx_settings 
     return 0;
 }
 
-int env_approx_precompute(const environment_map *env, const env_approx_settings *s, const dfg_lut *dfg, int threads,
-                          env_approx_precomputed *out, gt_error *e)
+int environment_precompute(const environment_map *env, const environment_settings *s, const dfg_lut *dfg, int threads,
+                          environment_precomputed *out, gt_error *e)
 {
     memset(out, 0, sizeof *out);
     int width, height;
     float *rgb = texels_of(env, &width, &height);
     if (!rgb)
         return gt_error_set(e, env->name, "out of memory");
-    env_approx_equirect view = {width, height, rgb};
+    environment_equirect view = {width, height, rgb};
     int rc = build_all(&view, s, threads, out);
     free(rgb);
     if (rc != 0) {
-        env_approx_precomputed_free(out);
+        environment_precomputed_free(out);
         return gt_error_set(e, env->name, "out of memory building the lighting approximations");
     }
     out->multibounce = multibounce_model_jimenez2016();
-    env_approx_lighting l = {&out->sh, &out->map, &out->prefiltered, dfg, &out->multibounce};
+    environment_lighting l = {&out->sh, &out->map, &out->prefiltered, dfg, &out->multibounce};
     out->lighting = l;
     return 0;
 }
 
-void env_approx_precomputed_free(env_approx_precomputed *p)
+void environment_precomputed_free(environment_precomputed *p)
 {
     irradiance_map_free(&p->map);
     prefiltered_radiance_free(&p->prefiltered);

@@ -1,7 +1,7 @@
 /* Equirectangular geometry: directions, texel solid angles and moments in
  * closed form, the bilinear lookup and the solid-angle-weighted pyramid. See
  * the header for the convention. */
-#include "environment/env_approx_equirect.h"
+#include "environment/environment_equirect.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -127,7 +127,7 @@ static void pyramid_reduce(const float *src, int width, int height, float *dst)
     }
 }
 
-int equirect_pyramid_build(equirect_pyramid *p, const env_approx_equirect *env)
+int equirect_pyramid_build(equirect_pyramid *p, const environment_equirect *env)
 {
     memset(p, 0, sizeof *p);
     if (env->width < 1 || env->height < 1 || !env->rgb)

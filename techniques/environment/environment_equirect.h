@@ -21,14 +21,14 @@
  * pyramid of the source) use the same convention; a lookup is bilinear with
  * texel centres at ((i + 0.5) / W, (j + 0.5) / H), wrapping in phi and
  * clamped in theta, as a GPU samples a lat-long texture. */
-#ifndef GTLAB_ENVIRONMENT_ENV_APPROX_EQUIRECT_H
-#define GTLAB_ENVIRONMENT_ENV_APPROX_EQUIRECT_H
+#ifndef GTLAB_ENVIRONMENT_ENVIRONMENT_EQUIRECT_H
+#define GTLAB_ENVIRONMENT_ENVIRONMENT_EQUIRECT_H
 
 /* A view of an environment (not owned). */
 typedef struct {
     int width, height;
     const float *rgb; /* width * height * 3 */
-} env_approx_equirect;
+} environment_equirect;
 
 /* The direction at image coordinates (u, v) in [0, 1]^2: phi = 2 pi (u - 1/2), theta = pi v. */
 void equirect_direction(double u, double v, double w[3]);
@@ -60,7 +60,7 @@ typedef struct {
 } equirect_pyramid;
 
 /* Returns 0, or -1 when out of memory or the environment is empty. */
-int equirect_pyramid_build(equirect_pyramid *p, const env_approx_equirect *env);
+int equirect_pyramid_build(equirect_pyramid *p, const environment_equirect *env);
 void equirect_pyramid_free(equirect_pyramid *p);
 /* Trilinear lookup at a fractional level (clamped to the pyramid). */
 void equirect_pyramid_lookup(const equirect_pyramid *p, const double w[3], double level, float out[3]);

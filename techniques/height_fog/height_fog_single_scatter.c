@@ -1,6 +1,6 @@
 /* Single scattering in the height fog by quadrature; see
- * fog_single_scatter.h. */
-#include "height_fog/fog_single_scatter.h"
+ * height_fog_single_scatter.h. */
+#include "height_fog/height_fog_single_scatter.h"
 
 #include <math.h>
 
@@ -9,7 +9,7 @@
 enum { MAX_SPLITS = 12 };
 #define DEPTH_CUT 50.0 /* optical depth beyond which nothing is integrated */
 
-double fog_ray_density(const height_fog_param *p, double y0, double dir_y, double distance)
+double height_fog_ray_density(const height_fog_param *p, double y0, double dir_y, double distance)
 {
     if (isfinite(distance))
         return height_fog_segment_density(p, y0, y0 + dir_y * distance, distance);
@@ -22,7 +22,7 @@ double fog_ray_density(const height_fog_param *p, double y0, double dir_y, doubl
 
 /* What the integrand of one channel needs. */
 typedef struct {
-    const fog_lighting *l;
+    const height_fog_lighting *l;
     vec3 origin, dir;
     double beta_t, amb_term, sun_term; /* beta_t,c; beta_s,c L_amb,c; E_c S_sun,c(mu) */
     int channel;
@@ -46,7 +46,7 @@ static double e2_integrand(double mu, void *ctx)
     return mu > 0.0 ? exp(-*(const double *)ctx / mu) : 0.0;
 }
 
-double fog_exponential_integral_e2(double a)
+double height_fog_exponential_integral_e2(double a)
 {
     return quadrature_gk15(e2_integrand, &a, 0.0, 1.0, 1e-12, NULL);
 }
@@ -59,7 +59,7 @@ static double ambient_source(const channel_integrand *ci, double s)
         return ci->amb_term;
     const height_fog_param *p = ci->l->medium;
     double rho = isfinite(s) ? height_fog_density(p, ci->origin.y + ci->dir.y * s) : 0.0;
-    return ci->amb_term * 0.5 * fog_exponential_integral_e2(ci->beta_t * p->scale_height * rho);
+    return ci->amb_term * 0.5 * height_fog_exponential_integral_e2(ci->beta_t * p->scale_height * rho);
 }
 
 /* e^{-beta_t u} J(s(u)). */
@@ -91,7 +91,7 @@ static int split_points(double beta_t, double end, double *points)
     return n;
 }
 
-static void integrate_channel(channel_integrand *ci, double total, double rel_tol, fog_ray_estimate *out)
+static void integrate_channel(channel_integrand *ci, double total, double rel_tol, height_fog_ray_estimate *out)
 {
     int c = ci->channel;
     double bound = (ci->sun_term + ci->amb_term) / ci->beta_t, end = fmin(total, DEPTH_CUT / ci->beta_t);
@@ -103,15 +103,15 @@ static void integrate_channel(channel_integrand *ci, double total, double rel_to
     out->inscatter[c] = quadrature_gk15_split(integrand, ci, points, n, rel_tol * bound, &out->error[c]);
 }
 
-void fog_single_scatter(const fog_lighting *l, vec3 origin, vec3 dir, double distance, double rel_tol,
-                        fog_ray_estimate *out)
+void height_fog_single_scatter(const height_fog_lighting *l, vec3 origin, vec3 dir, double distance, double rel_tol,
+                        height_fog_ray_estimate *out)
 {
     const height_fog_param *p = l->medium;
     double beta_t[3], beta_s[3], sun[3];
     height_fog_extinction(p, beta_t);
     height_fog_scattering(p, beta_s);
     height_fog_sun_scattering(p, v3_dot(p->sun_direction, dir), sun);
-    double total = fog_ray_density(p, origin.y, dir.y, distance);
+    double total = height_fog_ray_density(p, origin.y, dir.y, distance);
     out->rays = 0;
     for (int c = 0; c < 3; ++c) {
         out->transmittance[c] = beta_t[c] > 0.0 ? exp(-beta_t[c] * total) : 1.0;

@@ -1,5 +1,5 @@
-/* Volumetric path tracing in the height fog; see fog_path_tracer.h. */
-#include "height_fog/fog_path_tracer.h"
+/* Volumetric path tracing in the height fog; see height_fog_path_tracer.h. */
+#include "height_fog/height_fog_path_tracer.h"
 
 #include <math.h>
 
@@ -11,9 +11,9 @@ enum { ROULETTE_AFTER = 8 };
 /* Counter-based random numbers (splitmix64 of a running counter). */
 typedef struct {
     uint64_t state;
-} fog_rng;
+} height_fog_rng;
 
-static double rng_next(fog_rng *r)
+static double rng_next(height_fog_rng *r)
 {
     uint64_t z = (r->state += 0x9E3779B97F4A7C15ull);
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
@@ -32,7 +32,7 @@ typedef struct {
  * distance *t, or 0 when the path leaves the leg; weight[] gets w_c of the
  * header (collision or leaving). A leaving probability of 0 never happens
  * with 0 returned (the draw collides first). */
-static int free_flight(const height_fog_param *p, const double beta_t[3], const path_leg *leg, fog_rng *r,
+static int free_flight(const height_fog_param *p, const double beta_t[3], const path_leg *leg, height_fog_rng *r,
                        double *t, double weight[3])
 {
     int c = (int)(3.0 * rng_next(r));
@@ -40,7 +40,7 @@ static int free_flight(const height_fog_param *p, const double beta_t[3], const 
     double depth = -log1p(-rng_next(r)) / beta_t[c];
     double at = beta_t[c] > 0.0 ? height_fog_distance_at(p, leg->origin.y, leg->dir.y, depth) : INFINITY;
     int collides = at < leg->length;
-    double d_int = collides ? depth : fog_ray_density(p, leg->origin.y, leg->dir.y, leg->length);
+    double d_int = collides ? depth : height_fog_ray_density(p, leg->origin.y, leg->dir.y, leg->length);
     double pdf = 0.0, f[3];
     for (int k = 0; k < 3; ++k) {
         double transmitted = beta_t[k] > 0.0 ? exp(-beta_t[k] * d_int) : 1.0;
@@ -65,10 +65,10 @@ static int free_flight(const height_fog_param *p, const double beta_t[3], const 
  * weight[c] = beta_t,c e^{-beta_t,c u} / q(u): the same estimator as
  * free_flight's with the leaving event integrated out. Returns 0 (no
  * collision) only where the leg holds no medium. */
-static int forced_flight(const height_fog_param *p, const double beta_t[3], const path_leg *leg, fog_rng *r,
+static int forced_flight(const height_fog_param *p, const double beta_t[3], const path_leg *leg, height_fog_rng *r,
                          double *t, double weight[3])
 {
-    double pick = rng_next(r), xi = rng_next(r), total = fog_ray_density(p, leg->origin.y, leg->dir.y, leg->length);
+    double pick = rng_next(r), xi = rng_next(r), total = height_fog_ray_density(p, leg->origin.y, leg->dir.y, leg->length);
     double inside[3], pdf = 0.0;
     int with_medium[3], m = 0;
     for (int k = 0; k < 3; ++k) {
@@ -106,7 +106,7 @@ static double sun_visible(const embree_scene *occluders, vec3 x, vec3 sun, int *
 
 /* Next-event estimation of the sun at collision x, the path travelling
  * along w with throughput[c] (collision weight included). */
-static void add_sun(const fog_path_settings *s, const double beta_t[3], vec3 x, vec3 w, const double throughput[3],
+static void add_sun(const height_fog_path_settings *s, const double beta_t[3], vec3 x, vec3 w, const double throughput[3],
                     double radiance[3], int *rays)
 {
     const height_fog_param *p = s->lighting.medium;
@@ -126,7 +126,7 @@ static void add_sun(const fog_path_settings *s, const double beta_t[3], vec3 x, 
 
 /* A new direction from the Rayleigh/HG mixture; multiplies the throughput
  * by (beta_Rs p_R + beta_Ms p_HG) / (beta_t pdf). */
-static vec3 scatter(const height_fog_param *p, const double beta_t[3], vec3 w, fog_rng *r, double throughput[3])
+static vec3 scatter(const height_fog_param *p, const double beta_t[3], vec3 w, height_fog_rng *r, double throughput[3])
 {
     double mean_rs = (p->beta_rs[0] + p->beta_rs[1] + p->beta_rs[2]) / 3.0;
     double q = p->beta_ms > 0.0 ? p->beta_ms / (p->beta_ms + mean_rs) : 0.0;
@@ -158,7 +158,7 @@ static double scene_distance(const embree_scene *occluders, vec3 x, vec3 d, int 
 }
 
 /* Russian roulette: 0 to stop, else the throughput is rescaled. */
-static int survives(double throughput[3], int scatterings, fog_rng *r)
+static int survives(double throughput[3], int scatterings, height_fog_rng *r)
 {
     if (scatterings < ROULETTE_AFTER)
         return 1;
@@ -172,14 +172,14 @@ static int survives(double throughput[3], int scatterings, fog_rng *r)
     return 1;
 }
 
-int fog_path_sample(const fog_path_settings *s, vec3 o, vec3 w, double distance, uint32_t seed, uint32_t index,
+int height_fog_path_sample(const height_fog_path_settings *s, vec3 o, vec3 w, double distance, uint32_t seed, uint32_t index,
                     double radiance[3])
 {
     const height_fog_param *p = s->lighting.medium;
     double beta_t[3], beta_s[3], throughput[3] = {1.0, 1.0, 1.0};
     height_fog_extinction(p, beta_t);
     height_fog_scattering(p, beta_s);
-    fog_rng r = {((uint64_t)hash_combine(seed, index) << 32) | hash_combine(index, ~seed)};
+    height_fog_rng r = {((uint64_t)hash_combine(seed, index) << 32) | hash_combine(index, ~seed)};
     path_leg leg = {o, w, distance};
     int rays = 0;
     radiance[0] = radiance[1] = radiance[2] = 0.0;

@@ -1,7 +1,7 @@
 /* Light scattered by the height fog towards a camera, by Monte Carlo
  * volumetric path tracing: the multiple-scattering reference of issue 16
  * (and, limited to one scattering, an estimator of the same integral as the
- * quadrature of techniques/height_fog/fog_single_scatter.h, which tests both).
+ * quadrature of techniques/height_fog/height_fog_single_scatter.h, which tests both).
  *
  * Free flights are sampled exactly in the exponential medium: a channel c*
  * is drawn uniformly, an optical depth -ln(1 - u) / beta_t,c* is drawn, and
@@ -38,22 +38,22 @@
  * Random numbers come from a counter-based hash of (seed, sample index,
  * dimension): a sample depends only on them, so renders are bit-identical
  * for any thread count. */
-#ifndef GTLAB_HEIGHT_FOG_FOG_PATH_TRACER_H
-#define GTLAB_HEIGHT_FOG_FOG_PATH_TRACER_H
+#ifndef GTLAB_HEIGHT_FOG_PATH_TRACER_H
+#define GTLAB_HEIGHT_FOG_PATH_TRACER_H
 
 #include <stdint.h>
 
-#include "height_fog/fog_single_scatter.h"
+#include "height_fog/height_fog_single_scatter.h"
 
 typedef struct {
-    fog_lighting lighting; /* medium, sun extinction, occluders (NULL: no scene beyond the camera segment) */
+    height_fog_lighting lighting; /* medium, sun extinction, occluders (NULL: no scene beyond the camera segment) */
     int max_scatterings;   /* 1: single scattering; e.g. 1024: multiple */
-} fog_path_settings;
+} height_fog_path_settings;
 
 /* One sample of the in-scattered radiance along o + s w, s in [0, distance]
  * (distance may be +infinity), drawn from (seed, index). Returns the rays
  * traced (shadow and continuation rays). */
-int fog_path_sample(const fog_path_settings *s, vec3 o, vec3 w, double distance, uint32_t seed, uint32_t index,
+int height_fog_path_sample(const height_fog_path_settings *s, vec3 o, vec3 w, double distance, uint32_t seed, uint32_t index,
                     double radiance[3]);
 
 #endif

@@ -1,5 +1,5 @@
 /* `gtlab render fog`: transmittance and in-scattered radiance of the height
- * fog in front of each surface (techniques/height_fog/fog_integrator.h). */
+ * fog in front of each surface (techniques/height_fog/height_fog_integrator.h). */
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -7,14 +7,14 @@
 
 #include "core/number_parse.h"
 #include "core/reference_schema.h"
-#include "height_fog/fog_integrator.h"
+#include "height_fog/height_fog_integrator.h"
 #include "raytracer/reference_render.h"
 
-_Static_assert(offsetof(fog_settings, header) == 0, "the header comes first");
+_Static_assert(offsetof(height_fog_settings, header) == 0, "the header comes first");
 
-static fog_settings *settings_of(const reference_request *rq)
+static height_fog_settings *settings_of(const reference_request *rq)
 {
-    return (fog_settings *)reference_settings_of(rq, &reference_quantity_fog);
+    return (height_fog_settings *)reference_settings_of(rq, &reference_quantity_fog);
 }
 
 static int parse_weather(reference_request *rq, const char *value, gt_error *e)
@@ -33,7 +33,7 @@ static int parse_elevation(reference_request *rq, const char *value, gt_error *e
 
 static int parse_scattering(reference_request *rq, const char *value, gt_error *e)
 {
-    if (fog_scattering_parse(value, &settings_of(rq)->scattering) != 0)
+    if (height_fog_scattering_parse(value, &settings_of(rq)->scattering) != 0)
         return gt_error_set(e, "--fog-scattering", "'%s' is not quadrature, single or multiple", value);
     return 0;
 }
@@ -74,39 +74,39 @@ static const reference_option no_shadows_option = {
     .parse = parse_no_shadows,
 };
 
-void fog_settings_default(fog_settings *s)
+void height_fog_settings_default(height_fog_settings *s)
 {
-    *s = (fog_settings){.header = {&reference_quantity_fog}, .weather = "sunny", .sun_elevation_deg = 25.0,
-                        .scattering = FOG_MULTIPLE, .max_scatterings = 1024};
+    *s = (height_fog_settings){.header = {&reference_quantity_fog}, .weather = "sunny", .sun_elevation_deg = 25.0,
+                        .scattering = HEIGHT_FOG_MULTIPLE, .max_scatterings = 1024};
 }
 
 static void set_defaults(reference_request *rq)
 {
-    fog_settings_default(settings_of(rq));
+    height_fog_settings_default(settings_of(rq));
 }
 
 static int prepare(const reference_pass *pass, void **state, integrator *it, gt_error *e)
 {
-    fog_plan *plan = malloc(sizeof *plan);
+    height_fog_plan *plan = malloc(sizeof *plan);
     if (!plan)
         return gt_error_set(e, pass->scene_spec, "out of memory");
-    const fog_settings *s = settings_of(pass->req);
-    if (!s || fog_plan_init(plan, s, pass->es, &pass->gb->view, e) != 0) {
+    const height_fog_settings *s = settings_of(pass->req);
+    if (!s || height_fog_plan_init(plan, s, pass->es, &pass->gb->view, e) != 0) {
         free(plan);
         return s ? -1 : gt_error_set(e, "fog", "no settings");
     }
     *state = plan;
-    *it = fog_integrator(pass->es, plan);
+    *it = height_fog_integrator(pass->es, plan);
     return 0;
 }
 
 static int write_settings(const reference_request *rq, image *out)
 {
-    const fog_settings *s = settings_of(rq);
+    const height_fog_settings *s = settings_of(rq);
     return reference_set_attributef(out, ATTR_SETTINGS,
                                     "weather=%s sun_elevation_deg=%.9g scattering=%s sun_extinction=%s shadows=%s "
                                     "max_scatterings=%d target_stderr=%.9g",
-                                    s->weather, s->sun_elevation_deg, fog_scattering_name(s->scattering),
+                                    s->weather, s->sun_elevation_deg, height_fog_scattering_name(s->scattering),
                                     s->no_sun_extinction ? "off" : "on", s->no_shadows ? "off" : "on",
                                     s->max_scatterings, rq->sampling.target_stderr);
 }
@@ -120,7 +120,7 @@ const reference_quantity_descriptor reference_quantity_fog = {
             "also fog_quadrature_error.R/G/B",
     .options = (const reference_option *const[]){&weather_option, &elevation_option, &scattering_option,
                                                  &no_extinction_option, &no_shadows_option, NULL},
-    .settings_size = sizeof(fog_settings),
+    .settings_size = sizeof(height_fog_settings),
     .set_defaults = set_defaults,
     .prepare = prepare,
     .release = free,

@@ -1,5 +1,5 @@
 /* The ambient combinations per pixel: see the header. */
-#include "environment/env_approx_screen.h"
+#include "environment/environment_screen.h"
 
 #include <math.h>
 
@@ -13,7 +13,7 @@ static void store3(float *const out[3], size_t p, const double v[3])
     out[0][p] = (float)v[0], out[1][p] = (float)v[1], out[2][p] = (float)v[2];
 }
 
-void env_approx_screen_diffuse(const env_approx_lighting *l, env_irradiance_source s, env_diffuse_kind k,
+void environment_screen_diffuse(const environment_lighting *l, environment_irradiance_source s, environment_diffuse_kind k,
                                const so_screen_buffers *b, const float *const albedo[3], float *const out[3])
 {
     size_t count = (size_t)b->width * b->height;
@@ -22,8 +22,8 @@ void env_approx_screen_diffuse(const env_approx_lighting *l, env_irradiance_sour
         double n[3], bent[3], unit_bent[3], rho[3], o[3] = {0.0, 0.0, 0.0};
         if (b->mask[p] >= 0.5f) {
             load3(b->normal, p, n), load3(b->bent, p, bent), load3(albedo, p, rho);
-            env_approx_unit_bent(bent, n, unit_bent);
-            env_approx_diffuse(l, s, k, n, unit_bent, b->ao_cosine[p], rho, o);
+            environment_unit_bent(bent, n, unit_bent);
+            environment_diffuse(l, s, k, n, unit_bent, b->ao_cosine[p], rho, o);
         }
         store3(out, p, o);
     }
@@ -42,7 +42,7 @@ static void reflection(const so_screen_buffers *b, vec3 eye, size_t p, double R[
         R[c] = 2.0 * nv * n[c] - v[c];
 }
 
-void env_approx_screen_specular(const env_approx_lighting *l, const so_screen_buffers *b, const so_pixel_inputs *in,
+void environment_screen_specular(const environment_lighting *l, const so_screen_buffers *b, const so_pixel_inputs *in,
                                 vec3 eye, double f0, const so_variant *v, float *const out[3])
 {
     size_t count = (size_t)b->width * b->height;
@@ -53,7 +53,7 @@ void env_approx_screen_specular(const env_approx_lighting *l, const so_screen_bu
         if (in->mask[p] >= 0.5f) {
             reflection(b, eye, p, R);
             double vs = v ? so_approx_pixel(in, v, p) : 1.0;
-            env_approx_specular(l, R, in->n_dot_v[p], in->roughness[p], f, vs, o);
+            environment_specular(l, R, in->n_dot_v[p], in->roughness[p], f, vs, o);
         }
         store3(out, p, o);
     }

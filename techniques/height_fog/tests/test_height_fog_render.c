@@ -1,4 +1,4 @@
-/* `gtlab render fog` wired right (techniques/height_fog/fog_integrator.c): on a
+/* `gtlab render fog` wired right (techniques/height_fog/height_fog_integrator.c): on a
  * built-in scene in dense fog, the Monte Carlo single scattering of every
  * sampled pixel agrees with the quadrature within 4 standard errors, the
  * transmittance channels agree between the modes and lie in (0, 1), the
@@ -13,14 +13,14 @@
 #include <string.h>
 
 #include "core/optics/height_fog_medium.h"
-#include "height_fog/fog_integrator.h"
+#include "height_fog/height_fog_integrator.h"
 #include "raytracer/reference_render.h"
 #include "scene/builtin_scenes.h"
 #include "tests/check.h"
 
-static int render(const scene *s, const camera *cam, fog_scattering mode, int threads, int spp, image *out)
+static int render(const scene *s, const camera *cam, height_fog_scattering_mode mode, int threads, int spp, image *out)
 {
-    fog_settings fs = {.header = {&reference_quantity_fog}, .sun_elevation_deg = 20.0, .scattering = mode,
+    height_fog_settings fs = {.header = {&reference_quantity_fog}, .sun_elevation_deg = 20.0, .scattering = mode,
                        .max_scatterings = 1024};
     snprintf(fs.weather, sizeof fs.weather, "dense");
     reference_request req;
@@ -93,8 +93,8 @@ int main(void)
     scene_bounds(&s, &lo, &hi);
     camera cam = camera_auto_framing(lo, hi, 24, 18);
     image quad, single, multi, multi1;
-    if (render(&s, &cam, FOG_QUADRATURE, 2, 1, &quad) || render(&s, &cam, FOG_SINGLE, 2, 512, &single) ||
-        render(&s, &cam, FOG_MULTIPLE, 2, 512, &multi) || render(&s, &cam, FOG_MULTIPLE, 1, 512, &multi1))
+    if (render(&s, &cam, HEIGHT_FOG_QUADRATURE, 2, 1, &quad) || render(&s, &cam, HEIGHT_FOG_SINGLE, 2, 512, &single) ||
+        render(&s, &cam, HEIGHT_FOG_MULTIPLE, 2, 512, &multi) || render(&s, &cam, HEIGHT_FOG_MULTIPLE, 1, 512, &multi1))
         return 1;
     const float *mask = image_channel_data(&quad, "mask.A"), *lq = image_channel_data(&quad, "fog.L.G");
     const float *ls = image_channel_data(&single, "fog.L.G"), *ses = image_channel_data(&single, "fog.L.G.stderr");
@@ -116,7 +116,7 @@ int main(void)
     camera up = cam;
     up.target.y = up.position.y + 0.3f * (up.position.y - up.target.y);
     image up_quad, up_single;
-    if (render(&s, &up, FOG_QUADRATURE, 2, 1, &up_quad) || render(&s, &up, FOG_SINGLE, 2, 256, &up_single))
+    if (render(&s, &up, HEIGHT_FOG_QUADRATURE, 2, 1, &up_quad) || render(&s, &up, HEIGHT_FOG_SINGLE, 2, 256, &up_single))
         return 1;
     check_background(&up, &up_quad, &up_single, NULL, &rising);
     CHECK_MSG(background > 20 && rising > 20, "%d background pixels looking down, %d rising looking up", background,
@@ -127,5 +127,5 @@ int main(void)
         CHECK(same_bits(&multi, &multi1, channels[k]));
     image_free(&quad), image_free(&single), image_free(&multi), image_free(&multi1);
     scene_free(&s);
-    return check_report("test_fog_render");
+    return check_report("test_height_fog_render");
 }

@@ -1,5 +1,5 @@
-/* The height-fog references (techniques/height_fog/fog_single_scatter.h,
- * techniques/height_fog/fog_path_tracer.h) against closed forms and each other:
+/* The height-fog references (techniques/height_fog/height_fog_single_scatter.h,
+ * techniques/height_fog/height_fog_path_tracer.h) against closed forms and each other:
  *
  *   - homogeneous medium (H = 1e12 m): T = exp(-beta_t d) and single
  *     scattering (E S_sun(mu) + beta_s L_amb) / beta_t (1 - T), by quadrature
@@ -18,19 +18,19 @@
 #include <string.h>
 
 #include "core/optics/phase_function.h"
-#include "height_fog/fog_path_tracer.h"
+#include "height_fog/height_fog_path_tracer.h"
 #include "tests/check.h"
 
 typedef struct {
     double mean[3], stderr_[3];
 } mc_result;
 
-static mc_result estimate(const fog_path_settings *s, vec3 o, vec3 w, double distance, int n, uint32_t seed)
+static mc_result estimate(const height_fog_path_settings *s, vec3 o, vec3 w, double distance, int n, uint32_t seed)
 {
     double sum[3] = {0}, sum2[3] = {0};
     for (int i = 0; i < n; ++i) {
         double l[3];
-        fog_path_sample(s, o, w, distance, seed, (uint32_t)i, l);
+        height_fog_path_sample(s, o, w, distance, seed, (uint32_t)i, l);
         for (int c = 0; c < 3; ++c)
             sum[c] += l[c], sum2[c] += l[c] * l[c];
     }
@@ -64,9 +64,9 @@ static void check_homogeneous(void)
     height_fog_extinction(&p, beta_t);
     height_fog_scattering(&p, beta_s);
     height_fog_sun_scattering(&p, v3_dot(p.sun_direction, w), sun);
-    fog_path_settings s = {{&p, 0, NULL, 0}, 1};
-    fog_ray_estimate q;
-    fog_single_scatter(&s.lighting, o, w, d, 1e-10, &q);
+    height_fog_path_settings s = {{&p, 0, NULL, 0}, 1};
+    height_fog_ray_estimate q;
+    height_fog_single_scatter(&s.lighting, o, w, d, 1e-10, &q);
     mc_result m = estimate(&s, o, w, d, 20000, 11u);
     for (int c = 0; c < 3; ++c) {
         double t = exp(-beta_t[c] * d);
@@ -87,9 +87,9 @@ static void check_downward(void)
     double beta_t[3], beta_s[3];
     height_fog_extinction(&p, beta_t);
     height_fog_scattering(&p, beta_s);
-    fog_lighting l = {&p, 1, NULL, 0};
-    fog_ray_estimate q;
-    fog_single_scatter(&l, o, w, d, 1e-10, &q);
+    height_fog_lighting l = {&p, 1, NULL, 0};
+    height_fog_ray_estimate q;
+    height_fog_single_scatter(&l, o, w, d, 1e-10, &q);
     for (int c = 0; c < 3; ++c) {
         double t = exp(-beta_t[c] * by_hand);
         CHECK_NEAR(q.transmittance[c], t, 1e-6 * t);
@@ -102,9 +102,9 @@ static void check_single_agree(double vy, double elevation)
 {
     height_fog_param p = medium(150.0, 3e-3, elevation);
     vec3 o = v3(0.0f, 60.0f, 0.0f), w = v3_normalize(v3(0.2f, (float)vy, 1.0f));
-    fog_path_settings s = {{&p, 1, NULL, 0}, 1};
-    fog_ray_estimate q;
-    fog_single_scatter(&s.lighting, o, w, 1500.0, 1e-9, &q);
+    height_fog_path_settings s = {{&p, 1, NULL, 0}, 1};
+    height_fog_ray_estimate q;
+    height_fog_single_scatter(&s.lighting, o, w, 1500.0, 1e-9, &q);
     mc_result m = estimate(&s, o, w, 1500.0, 20000, 23u);
     for (int c = 0; c < 3; ++c) {
         CHECK(q.error[c] < 1e-6 * (q.inscatter[c] + 1e-3));
@@ -123,11 +123,11 @@ static void check_energy(double vy)
     p.amb_color[0] = p.amb_color[1] = p.amb_color[2] = 1.0;
     p.floor_y = 0.0;
     vec3 o = v3(0.0f, 40.0f, 0.0f), w = v3_normalize(v3(0.0f, (float)vy, 1.0f));
-    fog_path_settings s = {{&p, 1, NULL, 0}, 4096};
+    height_fog_path_settings s = {{&p, 1, NULL, 0}, 4096};
     mc_result m = estimate(&s, o, w, INFINITY, 20000, 5u);
     double beta_t[3];
     height_fog_extinction(&p, beta_t);
-    double d_int = fog_ray_density(&p, o.y, w.y, INFINITY);
+    double d_int = height_fog_ray_density(&p, o.y, w.y, INFINITY);
     for (int c = 0; c < 3; ++c) {
         double t = exp(-beta_t[c] * d_int);
         CHECK_MSG(fabs(m.mean[c] + t - 1.0) <= 4.0 * m.stderr_[c] && m.stderr_[c] < 0.01,
@@ -141,10 +141,10 @@ static void check_symmetry(void)
     vec3 a = v3(3.0f, 10.0f, -4.0f), b = v3(250.0f, 330.0f, 400.0f);
     vec3 ab = v3_sub(b, a);
     double d = v3_length(ab);
-    fog_lighting l = {&p, 1, NULL, 0};
-    fog_ray_estimate qa, qb;
-    fog_single_scatter(&l, a, v3_scale(ab, (float)(1.0 / d)), d, 1e-6, &qa);
-    fog_single_scatter(&l, b, v3_scale(ab, (float)(-1.0 / d)), d, 1e-6, &qb);
+    height_fog_lighting l = {&p, 1, NULL, 0};
+    height_fog_ray_estimate qa, qb;
+    height_fog_single_scatter(&l, a, v3_scale(ab, (float)(1.0 / d)), d, 1e-6, &qa);
+    height_fog_single_scatter(&l, b, v3_scale(ab, (float)(-1.0 / d)), d, 1e-6, &qb);
     for (int c = 0; c < 3; ++c)
         CHECK_NEAR(qa.transmittance[c], qb.transmittance[c], 1e-6 * qa.transmittance[c]);
     CHECK(height_fog_segment_density(&p, 10.0, 330.0, d) == height_fog_segment_density(&p, 330.0, 10.0, d));
@@ -161,5 +161,5 @@ int main(void)
         check_energy(dirs[i]);
     }
     check_symmetry();
-    return check_report("test_fog_reference");
+    return check_report("test_height_fog_reference");
 }

@@ -1,8 +1,8 @@
 /* The environment study: the environments and their lighting
  * precomputations, the references of every scene under each, the cases
- * scored (environment/env_approx_scores.c), the means, the specular-occlusion
+ * scored (environment/environment_scores.c), the means, the specular-occlusion
  * rankings against the white dome's and the talk's claim. */
-#include "environment/env_approx_study.h"
+#include "environment/environment_study.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -18,11 +18,11 @@
 #include "environment/environment_quantity.h"
 #include "raytracer/reference_render.h"
 #include "project/scene_list.h"
-#include "environment/env_approx_lighting.h"
-#include "environment/env_approx_parts.h"
+#include "environment/environment_lighting.h"
+#include "environment/environment_parts.h"
 
-#define ENV_STUDY_DIR "environment"
-#define ENV_IMAGE_SCENE "cornell"
+#define ENVIRONMENT_STUDY_DIR "environment"
+#define ENVIRONMENT_IMAGE_SCENE "cornell"
 
 static const char *const blender_preview[] = {"sunset", "interior"};
 static const char *const blender_all[] = {"city",   "courtyard", "forest", "interior",
@@ -32,25 +32,25 @@ static const char *const preview_scenes[] = {"sphere-on-plane", "boxes", "cornel
 typedef struct {
     char spec[ENVIRONMENT_NAME_MAX]; /* what the references are given: "white", "sky", "sun" or the file */
     environment_map map;
-    env_approx_precomputed lighting;
+    environment_precomputed lighting;
 } study_environment;
 
 typedef struct {
     const study_context *ctx;
-    env_study_result *out;
+    environment_study_result *out;
     char dir[2048];
     dfg_lut dfg;
     so_lut lut;
-    so_variant variants[ENV_STUDY_SO_VARIANTS];
-    study_environment envs[ENV_STUDY_MAX_ENVIRONMENTS];
-    env_case_scores sums[ENV_STUDY_MAX_ENVIRONMENTS];
+    so_variant variants[ENVIRONMENT_STUDY_SO_VARIANTS];
+    study_environment envs[ENVIRONMENT_STUDY_MAX_ENVIRONMENTS];
+    environment_case_scores sums[ENVIRONMENT_STUDY_MAX_ENVIRONMENTS];
 } env_state;
 
 /* ---- the environments ------------------------------------------------------------ */
 
 static int load_environment(env_state *st, const char *name, const char *file, gt_error *e)
 {
-    env_study_environment *row = &st->out->environments[st->out->environment_count];
+    environment_study_environment *row = &st->out->environments[st->out->environment_count];
     study_environment *env = &st->envs[st->out->environment_count];
     static const float white[3] = {1.0f, 1.0f, 1.0f};
     environment_sun sun = environment_sun_default();
@@ -63,8 +63,8 @@ static int load_environment(env_state *st, const char *name, const char *file, g
     snprintf(env->spec, sizeof env->spec, "%.*s", (int)sizeof env->spec - 1, file ? file : name);
     snprintf(row->name, sizeof row->name, "%.*s", (int)sizeof row->name - 1, name);
     st->out->environment_count++;
-    env_approx_settings s = env_approx_default_settings(st->ctx->quality);
-    if (env_approx_precompute(&env->map, &s, &st->dfg, st->ctx->threads, &env->lighting, e) != 0)
+    environment_settings s = environment_default_settings(st->ctx->quality);
+    if (environment_precompute(&env->map, &s, &st->dfg, st->ctx->threads, &env->lighting, e) != 0)
         return -1;
     row->sh_seconds = env->lighting.sh_seconds, row->map_seconds = env->lighting.map_seconds;
     row->prefiltered_seconds = env->lighting.prefiltered_seconds;
@@ -96,8 +96,8 @@ static int shared_tables(env_state *st, gt_error *e)
     if (dfg_lut_build(&st->dfg, 64, st->ctx->threads) != 0 ||
         so_lut_build(&st->lut, 32, SO_LOBE_GGX, SO_AXES_ANGLES, st->ctx->threads) != 0)
         return gt_error_set(e, "environment study", "out of memory building the DFG and GTSO tables");
-    for (int v = 0; v < ENV_STUDY_SO_VARIANTS; ++v) {
-        so_variant_parse(env_study_so_label(v), &st->variants[v]);
+    for (int v = 0; v < ENVIRONMENT_STUDY_SO_VARIANTS; ++v) {
+        so_variant_parse(environment_study_so_label(v), &st->variants[v]);
         st->variants[v].lut = &st->lut;
     }
     return 0;
@@ -122,25 +122,25 @@ static int render(const env_state *st, const scene *s, const char *spec, const c
 }
 
 /* Adds a case's scores to the environment's sums and per-scene arrays. */
-static void accumulate(env_state *st, int env, int scene, const env_case_scores *c)
+static void accumulate(env_state *st, int env, int scene, const environment_case_scores *c)
 {
-    env_case_scores *sum = &st->sums[env];
-    env_study_environment *row = &st->out->environments[env];
-    for (int s = 0; s < ENV_IRRADIANCE_SOURCES; ++s)
-        for (int k = 0; k < ENV_STUDY_OCCLUDED_KINDS; ++k)
-            for (int p = 0; p < ENV_PARTS; ++p) {
+    environment_case_scores *sum = &st->sums[env];
+    environment_study_environment *row = &st->out->environments[env];
+    for (int s = 0; s < ENVIRONMENT_IRRADIANCE_SOURCES; ++s)
+        for (int k = 0; k < ENVIRONMENT_STUDY_OCCLUDED_KINDS; ++k)
+            for (int p = 0; p < ENVIRONMENT_PARTS; ++p) {
                 sum->diffuse[s][k][p].rmse += c->diffuse[s][k][p].rmse;
                 sum->diffuse[s][k][p].dssim += c->diffuse[s][k][p].dssim;
             }
-    for (int v = 0; v < ENV_STUDY_SO_VARIANTS; ++v) {
-        for (int p = 0; p < ENV_PARTS; ++p) {
+    for (int v = 0; v < ENVIRONMENT_STUDY_SO_VARIANTS; ++v) {
+        for (int p = 0; p < ENVIRONMENT_PARTS; ++p) {
             sum->specular[v][p].rmse += c->specular[v][p].rmse;
             sum->specular[v][p].dssim += c->specular[v][p].dssim;
         }
-        row->specular_case[v][scene] = c->specular[v][ENV_PART_TOTAL].rmse;
+        row->specular_case[v][scene] = c->specular[v][ENVIRONMENT_PART_TOTAL].rmse;
     }
-    for (int p = 0; p < ENV_PARTS; ++p)
-        row->ao_n_case[p][scene] = c->diffuse[ENV_IRRADIANCE_MAP][ENV_DIFFUSE_AO_N - 1][p].rmse;
+    for (int p = 0; p < ENVIRONMENT_PARTS; ++p)
+        row->ao_n_case[p][scene] = c->diffuse[ENVIRONMENT_IRRADIANCE_MAP][ENVIRONMENT_DIFFUSE_AO_N - 1][p].rmse;
     sum->reference_noise += c->reference_noise;
     row->noise_case[scene] = c->reference_noise;
 }
@@ -155,17 +155,17 @@ static int run_case(env_state *st, int env, int scene_index, const scene *s, con
     int rc = render(st, s, spec, cam, &reference_quantity_env_diffuse, st->envs[env].spec, &diffuse, e);
     if (rc == 0)
         rc = render(st, s, spec, cam, &reference_quantity_env_specular, st->envs[env].spec, &specular, e);
-    env_case c = {ao, &diffuse, &specular, &st->envs[env].lighting.lighting, st->variants, what};
-    env_case_scores scores;
+    environment_case c = {ao, &diffuse, &specular, &st->envs[env].lighting.lighting, st->variants, what};
+    environment_case_scores scores;
     memset(&scores, 0, sizeof scores);
     if (rc == 0)
-        rc = env_case_score(&c, &scores, e);
+        rc = environment_case_score(&c, &scores, e);
     if (rc == 0)
         accumulate(st, env, scene_index, &scores);
     if (rc == 0 && strcmp(scene_name, st->out->image_scene) == 0) {
         char stem[128];
         snprintf(stem, sizeof stem, "%s_%s", st->out->environments[env].name, scene_name);
-        rc = env_case_images(&c, st->dir, stem, e);
+        rc = environment_case_images(&c, st->dir, stem, e);
     }
     image_free(&diffuse);
     image_free(&specular);
@@ -199,7 +199,7 @@ static int run_scenes(env_state *st, gt_error *e)
                 return -1;
         return 0;
     }
-    for (int i = 0; i < study_scene_count(st->ctx) && i < ENV_STUDY_MAX_SCENES; ++i)
+    for (int i = 0; i < study_scene_count(st->ctx) && i < ENVIRONMENT_STUDY_MAX_SCENES; ++i)
         if (run_scene(st, study_scene_at(st->ctx, i), e) != 0)
             return -1;
     return 0;
@@ -211,16 +211,16 @@ static void average(env_state *st)
 {
     double n = st->out->scene_count;
     for (int env = 0; env < st->out->environment_count; ++env) {
-        env_study_environment *row = &st->out->environments[env];
-        const env_case_scores *sum = &st->sums[env];
-        for (int s = 0; s < ENV_IRRADIANCE_SOURCES; ++s)
-            for (int k = 0; k < ENV_STUDY_OCCLUDED_KINDS; ++k)
-                for (int p = 0; p < ENV_PARTS; ++p) {
+        environment_study_environment *row = &st->out->environments[env];
+        const environment_case_scores *sum = &st->sums[env];
+        for (int s = 0; s < ENVIRONMENT_IRRADIANCE_SOURCES; ++s)
+            for (int k = 0; k < ENVIRONMENT_STUDY_OCCLUDED_KINDS; ++k)
+                for (int p = 0; p < ENVIRONMENT_PARTS; ++p) {
                     row->diffuse[s][k][p].rmse = sum->diffuse[s][k][p].rmse / n;
                     row->diffuse[s][k][p].dssim = sum->diffuse[s][k][p].dssim / n;
                 }
-        for (int v = 0; v < ENV_STUDY_SO_VARIANTS; ++v)
-            for (int p = 0; p < ENV_PARTS; ++p) {
+        for (int v = 0; v < ENVIRONMENT_STUDY_SO_VARIANTS; ++v)
+            for (int p = 0; p < ENVIRONMENT_PARTS; ++p) {
                 row->specular[v][p].rmse = sum->specular[v][p].rmse / n;
                 row->specular[v][p].dssim = sum->specular[v][p].dssim / n;
             }
@@ -230,27 +230,27 @@ static void average(env_state *st)
 
 static void free_state(env_state *st)
 {
-    for (int env = 0; env < ENV_STUDY_MAX_ENVIRONMENTS; ++env) {
-        env_approx_precomputed_free(&st->envs[env].lighting);
+    for (int env = 0; env < ENVIRONMENT_STUDY_MAX_ENVIRONMENTS; ++env) {
+        environment_precomputed_free(&st->envs[env].lighting);
         environment_map_free(&st->envs[env].map);
     }
     dfg_lut_free(&st->dfg);
     so_lut_free(&st->lut);
 }
 
-int env_approx_study(const study_context *ctx, env_study_result *out, gt_error *e)
+int environment_study(const study_context *ctx, environment_study_result *out, gt_error *e)
 {
     double t0 = seconds_now();
     const environment_quality *q = environment_quality_of(ctx->quality);
     memset(out, 0, sizeof *out);
     snprintf(out->image_scene, sizeof out->image_scene, "%s",
-             ctx->scenes ? study_scene_at(ctx, 0)->label : ENV_IMAGE_SCENE);
+             ctx->scenes ? study_scene_at(ctx, 0)->label : ENVIRONMENT_IMAGE_SCENE);
     out->size = q->image_size, out->spp = q->reference_spp, out->bounces = 3;
     env_state *st = calloc(1, sizeof *st);
     if (!st)
         return gt_error_set(e, "environment study", "out of memory");
     st->ctx = ctx, st->out = out;
-    int rc = study_make_dir(ctx, ENV_STUDY_DIR, st->dir, sizeof st->dir, e);
+    int rc = study_make_dir(ctx, ENVIRONMENT_STUDY_DIR, st->dir, sizeof st->dir, e);
     if (rc == 0)
         rc = shared_tables(st, e);
     if (rc == 0)
@@ -260,8 +260,8 @@ int env_approx_study(const study_context *ctx, env_study_result *out, gt_error *
     if (rc == 0) {
         average(st);
         for (int env = 0; env < out->environment_count; ++env)
-            env_study_rank(out, env);
-        env_study_claim(out);
+            environment_study_rank(out, env);
+        environment_study_claim(out);
     }
     free_state(st);
     free(st);

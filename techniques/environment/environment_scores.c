@@ -1,6 +1,6 @@
 /* One case of the environment study: every combination's image, its error
- * split into the lighting's, the occlusion's and the total (env_approx.h), and the side-by-side images. */
-#include "environment/env_approx_parts.h"
+ * split into the lighting's, the occlusion's and the total (environment_approx.h), and the side-by-side images. */
+#include "environment/environment_parts.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -52,7 +52,7 @@ static double masked_mean(const float *v, const float *mask, size_t n)
 }
 
 /* Relative RMSE and DSSIM of approx against truth (luminance planes); approx is rescaled in place. */
-static int score_luminance(const case_planes *p, float *truth, float *approx, const char *what, env_score *s,
+static int score_luminance(const case_planes *p, float *truth, float *approx, const char *what, environment_score *s,
                            gt_error *e)
 {
     double mean = masked_mean(truth, p->mask, p->n);
@@ -74,7 +74,7 @@ static int score_luminance(const case_planes *p, float *truth, float *approx, co
 }
 
 static int score_rgb(const case_planes *p, const float *const truth[3], const float *const approx[3], const char *what,
-                     env_score *s, gt_error *e)
+                     environment_score *s, gt_error *e)
 {
     luminance(truth, p->n, p->lum_a);
     luminance(approx, p->n, p->lum_b);
@@ -83,15 +83,15 @@ static int score_rgb(const case_planes *p, const float *const truth[3], const fl
 
 /* The three parts from p->occ and p->unocc against the references. */
 static int score_parts(case_planes *p, const float *const ref_occ[3], const float *const ref_unocc[3],
-                       const char *what, env_score parts[ENV_PARTS], gt_error *e)
+                       const char *what, environment_score parts[ENVIRONMENT_PARTS], gt_error *e)
 {
     for (int c = 0; c < 3; ++c)
         for (size_t i = 0; i < p->n; ++i)
             p->mix[c][i] = p->unocc[c][i] > 0.0f ? ref_unocc[c][i] * (p->occ[c][i] / p->unocc[c][i]) : 0.0f;
-    if (score_rgb(p, ref_unocc, (const float *const *)p->unocc, what, &parts[ENV_PART_LIGHTING], e) != 0 ||
-        score_rgb(p, ref_occ, (const float *const *)p->mix, what, &parts[ENV_PART_OCCLUSION], e) != 0)
+    if (score_rgb(p, ref_unocc, (const float *const *)p->unocc, what, &parts[ENVIRONMENT_PART_LIGHTING], e) != 0 ||
+        score_rgb(p, ref_occ, (const float *const *)p->mix, what, &parts[ENVIRONMENT_PART_OCCLUSION], e) != 0)
         return -1;
-    return score_rgb(p, ref_occ, (const float *const *)p->occ, what, &parts[ENV_PART_TOTAL], e);
+    return score_rgb(p, ref_occ, (const float *const *)p->occ, what, &parts[ENVIRONMENT_PART_TOTAL], e);
 }
 
 /* The RGB planes of a reference quantity (names from the schema). */
@@ -107,7 +107,7 @@ typedef struct {
     const float *direct[3], *bounces[3], *unoccluded[3], *specular[3], *specular_unoccluded[3], *albedo[3];
 } case_references;
 
-static int references(const env_case *c, case_references *r, gt_error *e)
+static int references(const environment_case *c, case_references *r, gt_error *e)
 {
     static const char *const direct[3] = CH_ENV_DIFFUSE_DIRECT_RGB, *const bounces[3] = CH_ENV_DIFFUSE_RGB,
                              *const unocc[3] = CH_ENV_DIFFUSE_UNOCCLUDED_RGB, *const spec[3] = CH_ENV_SPECULAR_RGB,
@@ -121,15 +121,15 @@ static int references(const env_case *c, case_references *r, gt_error *e)
     return rgb_planes(c->ao, albedo, c->what, r->albedo, e);
 }
 
-static int score_diffuse(const env_case *c, const so_screen_buffers *b, const case_references *r, case_planes *p,
-                         env_case_scores *out, gt_error *e)
+static int score_diffuse(const environment_case *c, const so_screen_buffers *b, const case_references *r, case_planes *p,
+                         environment_case_scores *out, gt_error *e)
 {
-    for (int s = 0; s < ENV_IRRADIANCE_SOURCES; ++s) {
-        env_approx_screen_diffuse(c->lighting, (env_irradiance_source)s, ENV_DIFFUSE_UNOCCLUDED, b, r->albedo,
+    for (int s = 0; s < ENVIRONMENT_IRRADIANCE_SOURCES; ++s) {
+        environment_screen_diffuse(c->lighting, (environment_irradiance_source)s, ENVIRONMENT_DIFFUSE_UNOCCLUDED, b, r->albedo,
                                   p->unocc);
-        for (int k = 1; k < ENV_DIFFUSE_KINDS; ++k) {
-            int multibounce = k == ENV_DIFFUSE_MULTIBOUNCE_N || k == ENV_DIFFUSE_MULTIBOUNCE_BENT;
-            env_approx_screen_diffuse(c->lighting, (env_irradiance_source)s, (env_diffuse_kind)k, b, r->albedo,
+        for (int k = 1; k < ENVIRONMENT_DIFFUSE_KINDS; ++k) {
+            int multibounce = k == ENVIRONMENT_DIFFUSE_MULTIBOUNCE_N || k == ENVIRONMENT_DIFFUSE_MULTIBOUNCE_BENT;
+            environment_screen_diffuse(c->lighting, (environment_irradiance_source)s, (environment_diffuse_kind)k, b, r->albedo,
                                       p->occ);
             if (score_parts(p, multibounce ? r->bounces : r->direct, r->unoccluded, c->what,
                             out->diffuse[s][k - 1], e) != 0)
@@ -139,17 +139,17 @@ static int score_diffuse(const env_case *c, const so_screen_buffers *b, const ca
     return 0;
 }
 
-static int score_specular(const env_case *c, const so_screen_buffers *b, vec3 eye, const case_references *r,
-                          case_planes *p, env_case_scores *out, gt_error *e)
+static int score_specular(const environment_case *c, const so_screen_buffers *b, vec3 eye, const case_references *r,
+                          case_planes *p, environment_case_scores *out, gt_error *e)
 {
     so_pixel_inputs in;
     if (so_inputs_from_images(c->ao, c->what, c->ao, c->what, -1.0, &in, e) != 0)
         return -1;
     double value, f0 = schema_get_real(c->specular, ATTR_F0, NULL, &value, NULL) == 1 ? value : 0.04;
-    env_approx_screen_specular(c->lighting, b, &in, eye, f0, NULL, p->unocc);
+    environment_screen_specular(c->lighting, b, &in, eye, f0, NULL, p->unocc);
     int rc = 0;
-    for (int v = 0; v < ENV_STUDY_SO_VARIANTS && rc == 0; ++v) {
-        env_approx_screen_specular(c->lighting, b, &in, eye, f0, &c->variants[v], p->occ);
+    for (int v = 0; v < ENVIRONMENT_STUDY_SO_VARIANTS && rc == 0; ++v) {
+        environment_screen_specular(c->lighting, b, &in, eye, f0, &c->variants[v], p->occ);
         rc = score_parts(p, r->specular, r->specular_unoccluded, c->what, out->specular[v], e);
     }
     so_inputs_free(&in);
@@ -157,7 +157,7 @@ static int score_specular(const env_case *c, const so_screen_buffers *b, vec3 ey
 }
 
 /* The direct diffuse reference's RMS standard error over its mean (green). */
-static double reference_noise(const env_case *c, const case_references *r, const float *mask)
+static double reference_noise(const environment_case *c, const case_references *r, const float *mask)
 {
     static const char *const direct[3] = CH_ENV_DIFFUSE_DIRECT_RGB;
     const float *se = schema_stderr_data(c->diffuse, direct[1]);
@@ -166,7 +166,7 @@ static double reference_noise(const env_case *c, const case_references *r, const
     return se && mean > 0.0 ? sqrt(noise_mean_variance(se, mask, n)) / mean : NAN;
 }
 
-int env_case_score(const env_case *c, env_case_scores *out, gt_error *e)
+int environment_case_score(const environment_case *c, environment_case_scores *out, gt_error *e)
 {
     so_screen_buffers b;
     vec3 eye;
@@ -210,7 +210,7 @@ static int write_dssim_map(const char *dir, const char *stem, case_planes *p, co
     return rc;
 }
 
-int env_case_images(const env_case *c, const char *dir, const char *stem, gt_error *e)
+int environment_case_images(const environment_case *c, const char *dir, const char *stem, gt_error *e)
 {
     so_screen_buffers b;
     vec3 eye;
@@ -220,7 +220,7 @@ int env_case_images(const env_case *c, const char *dir, const char *stem, gt_err
         return -1;
     if (planes_init(&p, b.width, b.height, b.mask) != 0)
         return gt_error_set(e, c->what, "out of memory");
-    env_approx_screen_diffuse(c->lighting, ENV_IRRADIANCE_MAP, ENV_DIFFUSE_AO_N, &b, r.albedo, p.occ);
+    environment_screen_diffuse(c->lighting, ENVIRONMENT_IRRADIANCE_MAP, ENVIRONMENT_DIFFUSE_AO_N, &b, r.albedo, p.occ);
     luminance(r.direct, p.n, p.lum_a);
     luminance((const float *const *)p.occ, p.n, p.lum_b);
     double mean = masked_mean(p.lum_a, p.mask, p.n);

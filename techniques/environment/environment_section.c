@@ -1,6 +1,6 @@
 /* The environment section: tables from one column description each, the
  * images, the claims rows and a finding (see the header). */
-#include "environment/env_approx_section.h"
+#include "environment/environment_section.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -57,53 +57,53 @@ static const report_column ranking_columns[] = {
 };
 #define COLUMNS(c) (int)(sizeof c / sizeof c[0])
 
-static void diffuse_table(report_context *ctx, const env_study_result *r, cJSON *json)
+static void diffuse_table(report_context *ctx, const environment_study_result *r, cJSON *json)
 {
-    diffuse_row rows[ENV_STUDY_MAX_ENVIRONMENTS * ENV_STUDY_OCCLUDED_KINDS];
+    diffuse_row rows[ENVIRONMENT_STUDY_MAX_ENVIRONMENTS * ENVIRONMENT_STUDY_OCCLUDED_KINDS];
     int n = 0;
     for (int env = 0; env < r->environment_count; ++env)
-        for (int k = 0; k < ENV_STUDY_OCCLUDED_KINDS; ++k) {
-            const env_study_environment *x = &r->environments[env];
-            const env_score *map = x->diffuse[ENV_IRRADIANCE_MAP][k], *sh = x->diffuse[ENV_IRRADIANCE_SH9][k];
+        for (int k = 0; k < ENVIRONMENT_STUDY_OCCLUDED_KINDS; ++k) {
+            const environment_study_environment *x = &r->environments[env];
+            const environment_score *map = x->diffuse[ENVIRONMENT_IRRADIANCE_MAP][k], *sh = x->diffuse[ENVIRONMENT_IRRADIANCE_SH9][k];
             diffuse_row *row = &rows[n++];
             snprintf(row->environment, sizeof row->environment, "%s", x->name);
-            row->kind = env_diffuse_kind_name((env_diffuse_kind)(k + 1));
-            row->lighting_map = map[ENV_PART_LIGHTING].rmse, row->lighting_sh = sh[ENV_PART_LIGHTING].rmse;
-            row->occlusion = map[ENV_PART_OCCLUSION].rmse, row->total_map = map[ENV_PART_TOTAL].rmse;
-            row->total_sh = sh[ENV_PART_TOTAL].rmse, row->dssim_map = map[ENV_PART_TOTAL].dssim;
+            row->kind = environment_diffuse_kind_name((environment_diffuse_kind)(k + 1));
+            row->lighting_map = map[ENVIRONMENT_PART_LIGHTING].rmse, row->lighting_sh = sh[ENVIRONMENT_PART_LIGHTING].rmse;
+            row->occlusion = map[ENVIRONMENT_PART_OCCLUSION].rmse, row->total_map = map[ENVIRONMENT_PART_TOTAL].rmse;
+            row->total_sh = sh[ENVIRONMENT_PART_TOTAL].rmse, row->dssim_map = map[ENVIRONMENT_PART_TOTAL].dssim;
         }
     report_rows(ctx->doc, cJSON_AddArrayToObject(json, "diffuse"), diffuse_columns, COLUMNS(diffuse_columns), rows,
                 sizeof rows[0], n);
 }
 
-static void specular_table(report_context *ctx, const env_study_result *r, cJSON *json)
+static void specular_table(report_context *ctx, const environment_study_result *r, cJSON *json)
 {
-    specular_row rows[ENV_STUDY_MAX_ENVIRONMENTS * ENV_STUDY_SO_VARIANTS];
+    specular_row rows[ENVIRONMENT_STUDY_MAX_ENVIRONMENTS * ENVIRONMENT_STUDY_SO_VARIANTS];
     int n = 0;
     for (int env = 0; env < r->environment_count; ++env)
-        for (int v = 0; v < ENV_STUDY_SO_VARIANTS; ++v) {
-            const env_score *s = r->environments[env].specular[v];
+        for (int v = 0; v < ENVIRONMENT_STUDY_SO_VARIANTS; ++v) {
+            const environment_score *s = r->environments[env].specular[v];
             specular_row *row = &rows[n++];
             snprintf(row->environment, sizeof row->environment, "%s", r->environments[env].name);
-            row->variant = env_study_so_label(v);
-            row->lighting = s[ENV_PART_LIGHTING].rmse, row->occlusion = s[ENV_PART_OCCLUSION].rmse;
-            row->total = s[ENV_PART_TOTAL].rmse, row->dssim = s[ENV_PART_TOTAL].dssim;
+            row->variant = environment_study_so_label(v);
+            row->lighting = s[ENVIRONMENT_PART_LIGHTING].rmse, row->occlusion = s[ENVIRONMENT_PART_OCCLUSION].rmse;
+            row->total = s[ENVIRONMENT_PART_TOTAL].rmse, row->dssim = s[ENVIRONMENT_PART_TOTAL].dssim;
         }
     report_rows(ctx->doc, cJSON_AddArrayToObject(json, "specular"), specular_columns, COLUMNS(specular_columns), rows,
                 sizeof rows[0], n);
 }
 
-static void ranking_table(report_context *ctx, const env_study_result *r, cJSON *json)
+static void ranking_table(report_context *ctx, const environment_study_result *r, cJSON *json)
 {
-    ranking_row rows[ENV_STUDY_MAX_ENVIRONMENTS];
+    ranking_row rows[ENVIRONMENT_STUDY_MAX_ENVIRONMENTS];
     for (int env = 0; env < r->environment_count; ++env) {
-        const env_so_ranking *k = &r->rankings[env];
+        const environment_so_ranking *k = &r->rankings[env];
         ranking_row *row = &rows[env];
         snprintf(row->environment, sizeof row->environment, "%s", r->environments[env].name);
         row->order[0] = '\0';
-        for (int i = 0; i < ENV_STUDY_SO_VARIANTS; ++i) {
-            strncat(row->order, env_study_so_label(k->order[i]), sizeof row->order - strlen(row->order) - 1);
-            if (i + 1 < ENV_STUDY_SO_VARIANTS)
+        for (int i = 0; i < ENVIRONMENT_STUDY_SO_VARIANTS; ++i) {
+            strncat(row->order, environment_study_so_label(k->order[i]), sizeof row->order - strlen(row->order) - 1);
+            if (i + 1 < ENVIRONMENT_STUDY_SO_VARIANTS)
                 strncat(row->order, " < ", sizeof row->order - strlen(row->order) - 1);
         }
         row->kendall_tau = k->kendall_tau, row->flipped = k->flipped_pairs, row->significant = k->significant_flips;
@@ -112,10 +112,10 @@ static void ranking_table(report_context *ctx, const env_study_result *r, cJSON 
                 sizeof rows[0], r->environment_count);
 }
 
-static void images(report_context *ctx, const env_study_result *r)
+static void images(report_context *ctx, const environment_study_result *r)
 {
-    static char paths[ENV_STUDY_MAX_ENVIRONMENTS * 3][160], captions[ENV_STUDY_MAX_ENVIRONMENTS * 3][160];
-    const char *p[ENV_STUDY_MAX_ENVIRONMENTS * 3], *c[ENV_STUDY_MAX_ENVIRONMENTS * 3];
+    static char paths[ENVIRONMENT_STUDY_MAX_ENVIRONMENTS * 3][160], captions[ENVIRONMENT_STUDY_MAX_ENVIRONMENTS * 3][160];
+    const char *p[ENVIRONMENT_STUDY_MAX_ENVIRONMENTS * 3], *c[ENVIRONMENT_STUDY_MAX_ENVIRONMENTS * 3];
     static const char *const parts[3] = {"ref", "approx", "dssim"};
     static const char *const what[3] = {"reference (direct diffuse)", "AO x E(n), irradiance map", "DSSIM map (0-0.5)"};
     int n = 0;
@@ -134,22 +134,22 @@ static void images(report_context *ctx, const env_study_result *r)
  * figure is the occlusion's part of the error (exact AO, exact unoccluded
  * lighting) of the one-bounce combination against the direct diffuse
  * reference: the talk's Lambertian, single-bounce setting. */
-#define ENV_TALK "Jimenez et al. 2016 (GTAO)"
-#define ENV_SECTION "How We Use Ambient Occlusion"
-#define ENV_QUOTE                                                                                                     \
+#define ENVIRONMENT_TALK "Jimenez et al. 2016 (GTAO)"
+#define ENVIRONMENT_SECTION "How We Use Ambient Occlusion"
+#define ENVIRONMENT_QUOTE                                                                                                     \
     "The typical approach to account for this is to just multiply the ambient occlusion by the pre-convolved "      \
     "probe, which will still be accurate for the case of a white dome, but not for any other scenario."
-#define ENV_SETTING                                                                                                   \
+#define ENVIRONMENT_SETTING                                                                                                   \
     "L_o = rho_d V_d times the pre-convolved probe, for real scenes whose lighting is not uniform white; AO is "   \
     "the ground truth for a Lambertian surface, a white dome and a single bounce of light"
-#define ENV_SETTING_NOTE                                                                                              \
+#define ENVIRONMENT_SETTING_NOTE                                                                                              \
     "gtlab's built-in scenes at 48x48 (preview) or 128x128 pixels, exact AO and exact unoccluded irradiance, "     \
     "scored against the direct (one-bounce) diffuse reference; the error is per pixel, so it does not depend on " \
     "the image size"
 
 static const claim_record kWhiteDome = {
-    .talk = ENV_TALK, .seed = "001", .section = ENV_SECTION, .quote = ENV_QUOTE, .setting = ENV_SETTING,
-    .setting_match = CLAIM_SETTING_INDEPENDENT, .setting_note = ENV_SETTING_NOTE,
+    .talk = ENVIRONMENT_TALK, .seed = "001", .section = ENVIRONMENT_SECTION, .quote = ENVIRONMENT_QUOTE, .setting = ENVIRONMENT_SETTING,
+    .setting_match = CLAIM_SETTING_INDEPENDENT, .setting_note = ENVIRONMENT_SETTING_NOTE,
     .reading = "Under a white dome, exact AO times the exact irradiance E(n) reproduces the one-bounce diffuse "
                "reference to within a just-visible luminance change.",
     .form = CLAIM_RANGE, .low = -INFINITY, .high = CLAIM_WEBER_FRACTION,
@@ -158,8 +158,8 @@ static const claim_record kWhiteDome = {
                  "CLAIM_WEBER_FRACTION)"};
 
 static const claim_record kOtherScenario = {
-    .talk = ENV_TALK, .seed = "001", .section = ENV_SECTION, .quote = ENV_QUOTE, .setting = ENV_SETTING,
-    .setting_match = CLAIM_SETTING_INDEPENDENT, .setting_note = ENV_SETTING_NOTE,
+    .talk = ENVIRONMENT_TALK, .seed = "001", .section = ENVIRONMENT_SECTION, .quote = ENVIRONMENT_QUOTE, .setting = ENVIRONMENT_SETTING,
+    .setting_match = CLAIM_SETTING_INDEPENDENT, .setting_note = ENVIRONMENT_SETTING_NOTE,
     .reading = "Under any non-uniform environment, even the one where it does best, exact AO times E(n) misses the "
                "one-bounce diffuse reference by more than a just-visible luminance change.",
     .form = CLAIM_RANGE, .low = CLAIM_WEBER_FRACTION, .high = INFINITY,
@@ -167,7 +167,7 @@ static const claim_record kOtherScenario = {
     .tolerance = "not accurate: relative RMSE above the Weber fraction of luminance discrimination (1%, "
                  "CLAIM_WEBER_FRACTION)"};
 
-static void claims(report_context *ctx, const env_study_result *r)
+static void claims(report_context *ctx, const environment_study_result *r)
 {
     claims_table_add(ctx->claims, &kWhiteDome, r->white_occlusion.mean, r->white_occlusion.standard_error,
                      "relative RMSE of exact AO x E(n) against the direct diffuse reference, exact unoccluded "
@@ -182,27 +182,27 @@ static void claims(report_context *ctx, const env_study_result *r)
                      r->environments[r->claim_environment].name, r->scene_count);
 }
 
-static void findings(report_context *ctx, const env_study_result *r)
+static void findings(report_context *ctx, const environment_study_result *r)
 {
     if (r->claim_environment < 0)
         return;
     int worst = 1;
     for (int env = 1; env < r->environment_count; ++env)
-        if (r->environments[env].diffuse[ENV_IRRADIANCE_MAP][0][ENV_PART_OCCLUSION].rmse >
-            r->environments[worst].diffuse[ENV_IRRADIANCE_MAP][0][ENV_PART_OCCLUSION].rmse)
+        if (r->environments[env].diffuse[ENVIRONMENT_IRRADIANCE_MAP][0][ENVIRONMENT_PART_OCCLUSION].rmse >
+            r->environments[worst].diffuse[ENVIRONMENT_IRRADIANCE_MAP][0][ENVIRONMENT_PART_OCCLUSION].rmse)
             worst = env;
     report_finding(ctx->doc, "Environment lighting",
                    "AO x E(n) with exact AO: the occlusion's part of the error is %.3f (relative RMSE) under the "
                    "white dome and from %.3f (%s) to %.3f (%s) under the other environments; the irradiance "
                    "itself (map) contributes %.3f under %s.",
                    r->white_occlusion.mean, r->other_occlusion.mean, r->environments[r->claim_environment].name,
-                   r->environments[worst].diffuse[ENV_IRRADIANCE_MAP][0][ENV_PART_OCCLUSION].rmse,
+                   r->environments[worst].diffuse[ENVIRONMENT_IRRADIANCE_MAP][0][ENVIRONMENT_PART_OCCLUSION].rmse,
                    r->environments[worst].name,
-                   r->environments[worst].diffuse[ENV_IRRADIANCE_MAP][0][ENV_PART_LIGHTING].rmse,
+                   r->environments[worst].diffuse[ENVIRONMENT_IRRADIANCE_MAP][0][ENVIRONMENT_PART_LIGHTING].rmse,
                    r->environments[worst].name);
 }
 
-int env_approx_section(report_context *ctx, const env_study_result *r, gt_error *e)
+int environment_section(report_context *ctx, const environment_study_result *r, gt_error *e)
 {
     (void)e;
     report_heading(ctx->doc, 2, "Beyond the white dome: ambient terms under real environments");

@@ -32,10 +32,10 @@
  *                   \int_0^1 e^{-a / mu} dmu); else the model's: an isotropic
  *                   sky of radiance L_amb reaching every point from the
  *                   whole sphere, unattenuated and unshadowed.
- * The multiple-scattering reference (techniques/height_fog/fog_path_tracer.h) drops
+ * The multiple-scattering reference (techniques/height_fog/height_fog_path_tracer.h) drops
  * every one of these assumptions. */
-#ifndef GTLAB_HEIGHT_FOG_FOG_SINGLE_SCATTER_H
-#define GTLAB_HEIGHT_FOG_FOG_SINGLE_SCATTER_H
+#ifndef GTLAB_HEIGHT_FOG_SINGLE_SCATTER_H
+#define GTLAB_HEIGHT_FOG_SINGLE_SCATTER_H
 
 #include "core/optics/height_fog_medium.h"
 #include "raytracer/embree_scene.h"
@@ -45,25 +45,25 @@ typedef struct {
     int sun_extinction;             /* 1: the fog attenuates the sun before it scatters */
     const embree_scene *occluders;  /* the scene shadows the fog; NULL: nothing does */
     int sky_extinction;             /* 1: the ambient is the upper hemisphere's sky seen through the fog */
-} fog_lighting;
+} height_fog_lighting;
 
 /* E_2(a) = \int_0^1 e^{-a / mu} dmu (a >= 0; E_2(0) = 1), by quadrature to about 1e-12. */
-double fog_exponential_integral_e2(double a);
+double height_fog_exponential_integral_e2(double a);
 
 typedef struct {
     double transmittance[3];
     double inscatter[3];
     double error[3]; /* the quadrature's error estimate of inscatter */
     long rays;       /* shadow rays traced */
-} fog_ray_estimate;
+} height_fog_ray_estimate;
 
 /* The integral of rho from o along the unit direction w over [0, distance];
  * distance may be +infinity (the whole column upwards, or infinity). */
-double fog_ray_density(const height_fog_param *p, double y0, double dir_y, double distance);
+double height_fog_ray_density(const height_fog_param *p, double y0, double dir_y, double distance);
 
 /* T and the single-scattered L above, L within about rel_tol of its
  * unattenuated bound (J_max / beta_t). */
-void fog_single_scatter(const fog_lighting *l, vec3 origin, vec3 dir, double distance, double rel_tol,
-                        fog_ray_estimate *out);
+void height_fog_single_scatter(const height_fog_lighting *l, vec3 origin, vec3 dir, double distance, double rel_tol,
+                        height_fog_ray_estimate *out);
 
 #endif
