@@ -35,7 +35,8 @@ int multibounce_score_section(report_context *ctx, const function_score_result *
     report_paragraph(ctx->doc,
                      "The project's function files (`shaders`, the per-sample contract of docs/shaders.md, run on "
                      "Vulkan%s%s) and C plug-ins (`plugins`, core/plugin_abi.h), scored on the multi-bounce "
-                     "references as the multi-bounce validation scores gtlab's own: every variant takes V_d of the "
+                     "references (the multi-bounce stage's, on gtlab's built-in scenes, not the project's) as the "
+                     "multi-bounce validation scores gtlab's own: every variant takes V_d of the "
                      "even-sample half and is compared with V'_d of the odd-sample half, over %d reference and "
                      "albedo pairs; the means below, beside V_d alone and the talk's GTAOMultiBounce. A variant "
                      "within the noise floor is as good as these references can tell.",

@@ -11,4 +11,13 @@
  * writes could not be made. */
 int gtao_section(report_context *ctx, const gtao_validation_result *r, gt_error *e);
 
+/* One scene's paragraph on brute-force GTAO (the reference preset's exact
+ * horizons) against the height-field reference: within the reference's
+ * noise, or above it by less than one 8-bit code value (equal for a viewer),
+ * and so the converged presets' gap is their horizon search's steps; or
+ * above it by more, a difference the tests do not explain. Its figures and
+ * standing appended to list (summary.json's gtao_exact_horizons). Nothing
+ * when the scene has no such run. */
+void gtao_exact_horizons_statement(report *doc, cJSON *list, const gtao_validation_scene *s);
+
 #endif

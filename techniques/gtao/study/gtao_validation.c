@@ -36,6 +36,7 @@ typedef struct {
     const ss_gbuffer *g;
     const float *hf, *ref3d, *mask;
     float vo_radius; /* VO needs a finite sphere: a quarter of the camera's distance to its target */
+    int brute_force_slices; /* the reference preset's slices (the quality table's) */
 } scene_data;
 
 /* DSSIM and RMSE of ao against a reference over the mask, and its mean
@@ -74,14 +75,16 @@ static gtao_params study_params(int preset, const scene_data *d, int frames)
     p.falloff = 0.0f;
     p.max_radius_px = (float)d->g->width;
     p.frames = p.pattern ? frames : 1;
+    if (preset == GTAO_PRESET_REFERENCE)
+        p.slices = d->brute_force_slices;
     return p;
 }
 
-static void variant_label(ao_variant_row *x)
+static void variant_label(ao_variant_row *x, int brute_force_slices)
 {
     const char *plural = x->frames > 1 ? "s" : "";
     if (x->technique == AO_TECHNIQUE_GTAO && x->preset == GTAO_PRESET_REFERENCE)
-        snprintf(x->label, sizeof x->label, "GTAO reference");
+        snprintf(x->label, sizeof x->label, "GTAO exact horizons, %d slices", brute_force_slices);
     else if (x->technique == AO_TECHNIQUE_GTAO)
         snprintf(x->label, sizeof x->label, "GTAO %s, %d frame%s", gtao_preset_names[x->preset], x->frames, plural);
     else if (x->technique == AO_TECHNIQUE_HBAO)
@@ -90,15 +93,17 @@ static void variant_label(ao_variant_row *x)
         snprintf(x->label, sizeof x->label, "VO 4 samples, %d frame%s", x->frames, plural);
 }
 
-static void add_variant(gtao_validation_scene *s, ao_technique_kind technique, int preset, int converged, int frames)
+static void add_variant(gtao_validation_scene *s, ao_technique_kind technique, int preset, int converged,
+                        const gtao_quality *q)
 {
+    int frames = q->converged_frames;
     ao_variant_row *x = &s->variants[s->variant_count++];
     memcpy(x->scene, s->scene, sizeof x->scene);
     x->technique = technique;
     x->preset = preset;
     x->converged = converged;
     x->frames = converged ? frames : 1;
-    variant_label(x);
+    variant_label(x, q->brute_force_slices);
 }
 
 /* The variants of one scene in the report's order: each GTAO preset for one
@@ -111,11 +116,11 @@ static void plan_variants(gtao_validation_scene *s, const gtao_quality *q)
     for (int preset = 0; preset < GTAO_PRESET_COUNT; ++preset) {
         int runs = preset == GTAO_PRESET_REFERENCE ? q->brute_force_runs : 2;
         for (int converged = 0; converged < runs; ++converged)
-            add_variant(s, AO_TECHNIQUE_GTAO, preset, converged, q->converged_frames);
+            add_variant(s, AO_TECHNIQUE_GTAO, preset, converged, q);
     }
     for (int converged = 0; converged < q->baseline_runs; ++converged) {
-        add_variant(s, AO_TECHNIQUE_HBAO, -1, converged, q->converged_frames);
-        add_variant(s, AO_TECHNIQUE_VO, -1, converged, q->converged_frames);
+        add_variant(s, AO_TECHNIQUE_HBAO, -1, converged, q);
+        add_variant(s, AO_TECHNIQUE_VO, -1, converged, q);
     }
 }
 
@@ -175,6 +180,12 @@ static void split_error(gtao_validation_scene *s)
     x->sampling_rmse = noise_corrected_rmse(medium->rmse_hf, s->hf_mean_variance);
     x->model_rmse = noise_corrected_rmse(s->hf_vs_3d_rmse, s->hf_mean_variance + s->ref3d_mean_variance);
     x->converged_sampling_rmse = noise_corrected_rmse(ultra->rmse_hf, s->hf_mean_variance);
+    const ao_variant_row *exact = gtao_validation_find(s, AO_TECHNIQUE_GTAO, GTAO_PRESET_REFERENCE, 0);
+    x->hf_noise_rmse = sqrt(s->hf_mean_variance);
+    if ((x->exact_valid = exact != NULL)) {
+        x->exact_rmse_hf = exact->rmse_hf;
+        x->exact_sampling_rmse = noise_corrected_rmse(exact->rmse_hf, s->hf_mean_variance);
+    }
     double sampling = x->sampling_rmse * x->sampling_rmse, model = x->model_rmse * x->model_rmse;
     x->sampling_percent = sampling + model > 0 ? 100.0 * sampling / (sampling + model) : 0.0;
     x->model_percent = sampling + model > 0 ? 100.0 * model / (sampling + model) : 0.0;
@@ -284,11 +295,11 @@ static int study_scene(const study_context *ctx, const char *refs_dir, const cha
     image hf;
     if (scene_references(ctx, refs_dir, dir, s->scene, r->heightfield_spp, &in, &hf, e) != 0)
         return -1;
+    const gtao_quality *q = gtao_quality_of(ctx->quality);
     scene_data d = {&in.g, image_channel_data(&hf, CH_AO), image_channel_data(&in.img, CH_AO), in.g.mask,
-                    0.25f * v3_length(v3_sub(in.cam.target, in.cam.position))};
+                    0.25f * v3_length(v3_sub(in.cam.target, in.cam.position)), q->brute_force_slices};
     s->ref3d_mean_variance = noise_mean_variance(image_channel_data(&in.img, CH_AO_STDERR), d.mask,
                                                  image_pixel_count(&in.img));
-    const gtao_quality *q = gtao_quality_of(ctx->quality);
     plan_variants(s, q);
     int rc = score_scene(&d, &hf, figures, s, e);
     gtao_shortcut_scene view = {s->scene, d.g, d.hf, d.ref3d, s->hf_mean_variance, s->ref3d_mean_variance,
@@ -356,7 +367,8 @@ static int convergence(const char *refs_dir, const char *dir, gtao_validation_re
         approx_input_free(&in);
         return -1;
     }
-    scene_data d = {&in.g, image_channel_data(&hf, CH_AO), image_channel_data(&in.img, CH_AO), in.g.mask, 1.0f};
+    scene_data d = {&in.g, image_channel_data(&hf, CH_AO), image_channel_data(&in.img, CH_AO), in.g.mask, 1.0f,
+                    0 /* each convergence row sets its slices */};
     float *ao = malloc(sizeof *ao * image_pixel_count(&hf));
     int rc = ao ? convergence_rows(&d, ao, r, e) : gt_error_set(e, r->convergence_scene, "out of memory");
     if (rc == 0)

@@ -74,6 +74,10 @@ typedef struct {
     double sampling_rmse;           /* GTAO medium, one frame (the talk's configuration) vs height field,
                                        less its noise */
     double converged_sampling_rmse; /* GTAO ultra, converged, vs height field, less its noise */
+    int exact_valid;                /* brute-force GTAO (exact horizons) was run */
+    double exact_rmse_hf;           /* its RMSE against the height field, noise included */
+    double exact_sampling_rmse;     /* the same less the reference's noise (0: within it) */
+    double hf_noise_rmse;           /* the height-field reference's noise, sqrt(mean stderr^2) */
     double sampling_percent, model_percent; /* shares of sampling^2 + model^2 */
 } ao_error_split;
 

@@ -182,14 +182,29 @@ static cJSON *add_summary(report_context *ctx, const multibounce_study_result *r
 
 /* ---- Sections ------------------------------------------------------------------------------- */
 
+/* "the 5 built-in scenes (sphere-on-plane, corner, ...)", and that they are
+ * not a project's when there is one: the stage keeps gtlab's own scenes. */
+static void scenes_text(const report_context *ctx, const multibounce_study_result *r, char *text, size_t size)
+{
+    int n = snprintf(text, size, "%d built-in scenes (", MULTIBOUNCE_STUDY_SCENES);
+    for (int k = 0; k < MULTIBOUNCE_STUDY_SCENES && n > 0 && (size_t)n < size; ++k)
+        n += snprintf(text + n, size - (size_t)n, "%s%s", k ? ", " : "", r->renders[k].scene);
+    if (n > 0 && (size_t)n < size)
+        snprintf(text + n, size - (size_t)n, ")%s",
+                 ctx->study.project ? ", gtlab's own and not the project's: this stage does not take a project's scenes"
+                                    : "");
+}
+
 static void intro(report_context *ctx, const multibounce_study_result *r)
 {
+    char scenes[512];
+    scenes_text(ctx, r, scenes, sizeof scenes);
     report_heading(ctx->doc, 2, "Multi-bounce AO: references and the GTAO refit");
     report_paragraph(ctx->doc,
                      "Jimenez et al. 2016 ('Multiple Bounces'): V'_d = L / rho of a Lambertian surface of albedo rho "
                      "under a white dome, every surface of albedo rho, %d bounces (inter-reflections after the first "
                      "hit, the talk's 4), against the single-bounce V_d of the same paths. One pass per scene serves "
-                     "all %d albedos (0.1 to 0.9; the talk does not list its seven). %d scenes at %dx%d, %d samples "
+                     "all %d albedos (0.1 to 0.9; the talk does not list its seven). The %s, at %dx%d, %d samples "
                      "per pixel: %.3g paths and %.3g rays in %.1f s. Fit (gtlab fit multibounce; "
                      "fits/multibounce.json, .h, .hlsl): per albedo V'_d = ((a V_d + b) V_d + c) V_d, and jointly "
                      "a, b, c linear in rho fitted to all samples at once through Ceres, each scene and albedo "
@@ -197,7 +212,7 @@ static void intro(report_context *ctx, const multibounce_study_result *r)
                      "more telling, the jackknife over scenes. At preview quality V_d itself carries Monte Carlo noise "
                      "(errors in the variable the fit takes as exact), which flattens fitted curves slightly; "
                      "production renders 2048 paths per pixel.",
-                     r->bounces, MULTIBOUNCE_STUDY_ALBEDOS, MULTIBOUNCE_STUDY_SCENES, r->width, r->height, r->spp,
+                     r->bounces, MULTIBOUNCE_STUDY_ALBEDOS, scenes, r->width, r->height, r->spp,
                      r->total_paths, r->total_rays, r->total_seconds);
 }
 
