@@ -6,6 +6,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "ao/ao_quality.h"
 #include "report/report_context.h"
 #include "report/report_frame.h"
 #include "report/scene_list_section.h"
@@ -108,6 +109,8 @@ static int parse_options(int argc, char **argv, report_context *ctx, int selecte
     if (*project && study_project_read(*project, stage_known_or_renamed, &project_file, &e) != 0)
         return *status = cli_fail(&e), 1;
     study_project_apply(*project ? &project_file : NULL, s, stage_list);
+    /* The built-in scene set is every study's: the AO references stage renders it first. */
+    s->study_scenes = ao_quality_of(s->quality)->study_scenes;
     return *stage_list && select_stages(*stage_list, selected) != 0 ? (*status = EXIT_USER_ERROR, 1) : 0;
 }
 
@@ -201,7 +204,7 @@ int verb_all(int argc, char **argv)
 {
     stage_count = (int)technique_stages(stages, STAGE_MAX);
     static claims_table claims;
-    report_context ctx = {{NULL, (study_quality)-1, threads_default(), NULL, NULL}, NULL, NULL, &claims};
+    report_context ctx = {{NULL, (study_quality)-1, threads_default(), NULL, NULL, 0}, NULL, NULL, &claims};
     int selected[STAGE_MAX];
     for (int i = 0; i < STAGE_MAX; ++i)
         selected[i] = 1;

@@ -2,43 +2,64 @@
 
 #include <stdio.h>
 #include <string.h>
+#include <threads.h>
 
+#include "scene/builtin_scene_family.h"
 #include "scene/builtin_scenes.h"
 #include "scene/gltf/gltf_reader.h"
 #include "scene/scene_loaders.h"
 
-const study_scene_list *study_scenes_builtin(void)
+static study_scene_list builtin_set;
+
+static void add_builtin(const char *name)
 {
-    static study_scene_list list;
-    if (list.count == 0)
-        for (int i = 0; i < builtin_study_scene_count() && list.count < STUDY_SCENES_MAX; ++i, ++list.count) {
-            study_scene_entry *x = &list.scenes[list.count];
-            snprintf(x->spec, sizeof x->spec, "builtin:%s", builtin_study_scene_at(i)->name);
-            snprintf(x->label, sizeof x->label, "%s", builtin_study_scene_at(i)->name);
-            x->gltf_camera = -1;
-        }
-    return &list;
+    study_scene_entry *x = &builtin_set.scenes[builtin_set.count++];
+    snprintf(x->spec, sizeof x->spec, "builtin:%s", name);
+    snprintf(x->label, sizeof x->label, "%s", name);
+    x->gltf_camera = -1;
 }
 
-const study_scene_list *study_scenes_of(const study_context *ctx)
+/* The built-in study scenes, then the family's members, STUDY_SCENES_MAX in all. */
+static void fill_builtin_set(void)
 {
-    return ctx && ctx->scenes ? ctx->scenes : study_scenes_builtin();
+    for (int i = 0; i < builtin_study_scene_count() && builtin_set.count < STUDY_SCENES_MAX; ++i)
+        add_builtin(builtin_study_scene_at(i)->name);
+    for (int i = 0; builtin_set.count < STUDY_SCENES_MAX; ++i) {
+        char name[STUDY_SCENE_LABEL_MAX];
+        family_member_name(i, name, sizeof name);
+        add_builtin(name);
+    }
 }
 
-int study_scene_count(const study_context *ctx) { return study_scenes_of(ctx)->count; }
+static const study_scene_list *scenes_of(const study_context *ctx)
+{
+    static once_flag filled = ONCE_FLAG_INIT;
+    if (ctx && ctx->scenes)
+        return ctx->scenes;
+    call_once(&filled, fill_builtin_set);
+    return &builtin_set;
+}
+
+int study_scenes_from_project(const study_context *ctx) { return ctx && ctx->scenes; }
+
+int study_scene_count(const study_context *ctx)
+{
+    if (study_scenes_from_project(ctx))
+        return ctx->scenes->count;
+    int builtins = builtin_study_scene_count(), wanted = ctx ? ctx->study_scenes : 0;
+    return wanted < builtins ? builtins : wanted > STUDY_SCENES_MAX ? STUDY_SCENES_MAX : wanted;
+}
 
 const study_scene_entry *study_scene_at(const study_context *ctx, int index)
 {
-    const study_scene_list *list = study_scenes_of(ctx);
-    return index >= 0 && index < list->count ? &list->scenes[index] : NULL;
+    return index >= 0 && index < study_scene_count(ctx) ? &scenes_of(ctx)->scenes[index] : NULL;
 }
 
 const study_scene_entry *study_scene_find(const study_context *ctx, const char *label)
 {
-    const study_scene_list *list = study_scenes_of(ctx);
-    for (int i = 0; i < list->count; ++i)
-        if (strcmp(list->scenes[i].label, label) == 0)
-            return &list->scenes[i];
+    for (int i = 0; i < study_scene_count(ctx); ++i)
+        if (strcmp(study_scene_at(ctx, i)->label, label) == 0)
+            return study_scene_at(ctx, i);
     return NULL;
 }
 

@@ -1,9 +1,13 @@
 /* The scenes a study runs over: each entry a scene spec (builtin:NAME or a
  * glTF file), a label that names the study's rows and files, and the camera
- * to render it from. `gtlab all` runs on the built-in study scenes
- * (builtin_study_scene_at, each at its own camera) unless a project file
- * (project/project_file.h) lists the user's scenes; the studies take their
- * scenes from study_context.scenes through these functions only. */
+ * to render it from. Unless a project file (project/project_file.h) lists the
+ * user's scenes, `gtlab all` runs on the built-in set: the built-in study
+ * scenes (builtin_study_scene_at), then members of the procedural family
+ * (scene/builtin_scene_family.h, family_member_name's order: room-0,
+ * railing-0, ..., terrain-0, room-1, ...), study_context.study_scenes in all
+ * (the quality table's `ao study_scenes`), each at its own camera and
+ * labelled by its name. The studies take their scenes from the context
+ * through these functions only. */
 #ifndef GTLAB_PROJECT_SCENE_LIST_H
 #define GTLAB_PROJECT_SCENE_LIST_H
 
@@ -12,7 +16,7 @@
 #include "scene/scene.h"
 #include "project/study_context.h"
 
-enum { STUDY_SCENES_MAX = 16, STUDY_SCENE_LABEL_MAX = 48, STUDY_SCENE_PATH_MAX = 1024 };
+enum { STUDY_SCENES_MAX = 32, STUDY_SCENE_LABEL_MAX = 48, STUDY_SCENE_PATH_MAX = 1024 };
 
 typedef struct {
     char spec[STUDY_SCENE_PATH_MAX];        /* builtin:NAME or a .gltf/.glb path */
@@ -27,12 +31,14 @@ struct study_scene_list {
     study_scene_entry scenes[STUDY_SCENES_MAX];
 };
 
-/* The built-in study scenes, labelled by their names, at their own cameras. */
-const study_scene_list *study_scenes_builtin(void);
-/* ctx->scenes, or the built-in list when it is NULL. */
-const study_scene_list *study_scenes_of(const study_context *ctx);
+/* How many scenes the studies run over: ctx->scenes' count, else
+ * ctx->study_scenes (at least the built-in study scenes, at most
+ * STUDY_SCENES_MAX); a NULL ctx is the built-in study scenes. */
 int study_scene_count(const study_context *ctx);
+/* The index-th of them, or NULL past the last. */
 const study_scene_entry *study_scene_at(const study_context *ctx, int index);
+/* Whether the scenes are a project's (the user's) rather than the built-in set. */
+int study_scenes_from_project(const study_context *ctx);
 /* The entry labelled `label`, or NULL. */
 const study_scene_entry *study_scene_find(const study_context *ctx, const char *label);
 /* The scene spec of the entry labelled `label` (the label itself if none is:

@@ -29,6 +29,9 @@ typedef struct {
     int threads;            /* results do not depend on it */
     const study_scene_list *scenes; /* the scenes the studies run over; NULL: the built-in ones */
     const study_project *project;   /* the project file (its shaders and plug-ins); NULL: none */
+    int study_scenes; /* without a project's scenes: how many the studies run over, the built-in study
+                         scenes first, then the procedural family's members in order (room-0,
+                         railing-0, ...; project/scene_list.h); 0: the built-in study scenes only */
 } study_context;
 
 /* "<output_dir>/<sub>" with the folder created. */

@@ -20,6 +20,7 @@ int ss_gbuffer_from_image(const image *img, const char *what, ss_camera camera, 
         g->normal[a] = planes[1 + a];
     g->mask = planes[4];
     g->camera = camera;
+    g->depth_lo = g->depth_hi = NULL;
     return 0;
 }
 
@@ -32,6 +33,37 @@ vec3 ss_view_position(const ss_gbuffer *g, int x, int y)
     return v3(sx * d, sy * d, -d);
 }
 
+void ss_depth_bounds(const ss_gbuffer *g, int x, int y, float *lo, float *hi)
+{
+    const float centre = g->depth[(long)y * g->width + x];
+    const float pz = -centre; /* as ss_view_position's z */
+    float l = centre, h = centre;
+    for (int k = 0; k < 9; ++k) {
+        int ox = k % 3 - 1, oy = k / 3 - 1;
+        float d;
+        if (ss_covered(g, x + ox, y + oy))
+            d = g->depth[(long)(y + oy) * g->width + x + ox];
+        else if (ss_covered(g, x - ox, y - oy)) /* the missing side mirrored */
+            d = -2.0f * pz - g->depth[(long)(y - oy) * g->width + x - ox];
+        else
+            continue;
+        l = ss_minf(l, d);
+        h = ss_maxf(h, d);
+    }
+    *lo = l;
+    *hi = h;
+}
+
+void ss_depth_bounds_planes(const ss_gbuffer *g, float *lo, float *hi)
+{
+#pragma omp parallel for schedule(static)
+    for (int y = 0; y < g->height; ++y)
+        for (int x = 0; x < g->width; ++x) {
+            long i = (long)y * g->width + x;
+            ss_depth_bounds(g, x, y, &lo[i], &hi[i]);
+        }
+}
+
 vec3 ss_sample_position(const ss_gbuffer *g, float fx, float fy)
 {
     const ss_camera *c = &g->camera;
@@ -42,19 +74,12 @@ vec3 ss_sample_position(const ss_gbuffer *g, float fx, float fy)
     float nw = v3_dot(n, w), depth = v3_dot(n, p) / nw;
     if (!(fabsf(nw) >= HEIGHTFIELD_MIN_FACING * v3_length(w) && depth > 0.0f))
         depth = -p.z;
-    float lo = -p.z, hi = -p.z;
-    for (int k = 0; k < 9; ++k) {
-        int ox = k % 3 - 1, oy = k / 3 - 1;
-        float d;
-        if (ss_covered(g, x + ox, y + oy))
-            d = g->depth[(long)(y + oy) * g->width + x + ox];
-        else if (ss_covered(g, x - ox, y - oy)) /* the missing side mirrored */
-            d = -2.0f * p.z - g->depth[(long)(y - oy) * g->width + x - ox];
-        else
-            continue;
-        lo = ss_minf(lo, d);
-        hi = ss_maxf(hi, d);
-    }
+    float lo, hi;
+    if (g->depth_lo) {
+        long i = (long)y * g->width + x;
+        lo = g->depth_lo[i], hi = g->depth_hi[i];
+    } else
+        ss_depth_bounds(g, x, y, &lo, &hi);
     return v3_scale(w, ss_clampf(depth, lo, hi));
 }
 

@@ -30,6 +30,9 @@ typedef struct {
     const float *normal[3]; /* N.X, N.Y, N.Z: world-space unit normals */
     const float *mask;      /* mask.A: 1 where a surface was hit */
     ss_camera camera;
+    /* Optional: every pixel's ss_depth_bounds (ss_depth_bounds_planes); NULL:
+     * ss_sample_position works them out per sample, to the same bits. */
+    const float *depth_lo, *depth_hi;
 } ss_gbuffer;
 
 /* Points g at the channels of img (depth.Z, N.X, N.Y, N.Z, mask.A) with the
@@ -60,6 +63,14 @@ vec3 ss_view_position(const ss_gbuffer *g, int x, int y);
  * samples to pixel centres moves them off the slice and raises a plane's
  * horizons above its tangent. */
 vec3 ss_sample_position(const ss_gbuffer *g, float fx, float fy);
+/* The depths a sample in pixel (x, y) is clamped to: the lowest and highest
+ * of the pixel's and its 8 neighbours' depths, a neighbour off the surface
+ * replaced by its opposite mirrored through the pixel (2 d - d_opposite),
+ * skipped if that is off too (core/optics/heightfield_model.h). */
+void ss_depth_bounds(const ss_gbuffer *g, int x, int y, float *lo, float *hi);
+/* Fills lo and hi (width x height each) with every pixel's ss_depth_bounds,
+ * for g's depth_lo and depth_hi: the horizon searches read them per sample. */
+void ss_depth_bounds_planes(const ss_gbuffer *g, float *lo, float *hi);
 /* The pixel's normal rotated into view space. */
 vec3 ss_view_normal(const ss_gbuffer *g, int x, int y);
 /* A view-space direction rotated back into world space. */

@@ -145,7 +145,7 @@ void headline_from_difference(report_headline *h, double d, double s, const char
         return;
     }
     h->significance = fabs(d) > CLAIM_Z * s ? HEADLINE_SIGNIFICANT : HEADLINE_NOT_SIGNIFICANT;
-    snprintf(h->basis, sizeof h->basis, "difference %+.4g +- %.2g, %s", d, s, over);
+    snprintf(h->basis, sizeof h->basis, "difference %+.4g +- %.2g s.e., %s", d, s, over);
     headline_apply_margin(h, d, CLAIM_Z * s);
 }
 
@@ -184,7 +184,7 @@ void headline_from_paired_cases(report_headline *h, double d, double s, int case
     double t = student_t_975(cases - 1);
     h->significance = fabs(d) > t * s ? HEADLINE_SIGNIFICANT : HEADLINE_NOT_SIGNIFICANT;
     size_t k = strlen(h->basis);
-    snprintf(h->basis + k, sizeof h->basis - k, "; t(%d) = %.3g", cases - 1, t);
+    snprintf(h->basis + k, sizeof h->basis - k, "; critical t(%d) = %.3g", cases - 1, t);
     headline_apply_margin(h, d, t * s);
     h->cases = cases;
     say_cases_to_decide(h, d, s * sqrt((double)cases));

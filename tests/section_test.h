@@ -24,7 +24,7 @@ static inline void section_test_begin(section_test *t, const char *name, claims_
     snprintf(t->dir, sizeof t->dir, "%s/%s", check_tmp_dir(), name);
     mkdir(t->dir, 0755);
     report_init(&t->doc, "test");
-    t->ctx = (report_context){{t->dir, QUALITY_PREVIEW, 1, NULL, NULL}, &t->doc, cJSON_CreateObject(), claims};
+    t->ctx = (report_context){{t->dir, QUALITY_PREVIEW, 1, NULL, NULL, 0}, &t->doc, cJSON_CreateObject(), claims};
 }
 
 static inline void section_test_end(section_test *t)

@@ -14,11 +14,12 @@
 #include <stdint.h>
 
 #include "project/study_context.h"
+#include "project/scene_list.h"
 
 /* The folder below the output folder that holds the references. */
 #define AO_REFERENCES_DIR "ao"
 
-enum { AO_REFERENCES_MAX_SCENES = 16 };
+enum { AO_REFERENCES_MAX_SCENES = STUDY_SCENES_MAX };
 
 typedef struct {
     char scene[64];

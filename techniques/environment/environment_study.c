@@ -193,7 +193,7 @@ static int run_scene(env_state *st, const study_scene_entry *entry, gt_error *e)
 
 static int run_scenes(env_state *st, gt_error *e)
 {
-    if (!environment_quality_of(st->ctx->quality)->all_scenes && !st->ctx->scenes) { /* a project's run all */
+    if (!environment_quality_of(st->ctx->quality)->all_scenes && !study_scenes_from_project(st->ctx)) { /* a project's run all */
         for (size_t i = 0; i < sizeof preview_scenes / sizeof preview_scenes[0]; ++i)
             if (run_scene(st, study_scene_find(st->ctx, preview_scenes[i]), e) != 0)
                 return -1;
@@ -244,7 +244,7 @@ int environment_study(const study_context *ctx, environment_study_result *out, g
     const environment_quality *q = environment_quality_of(ctx->quality);
     memset(out, 0, sizeof *out);
     snprintf(out->image_scene, sizeof out->image_scene, "%s",
-             ctx->scenes ? study_scene_at(ctx, 0)->label : ENVIRONMENT_IMAGE_SCENE);
+             study_scenes_from_project(ctx) ? study_scene_at(ctx, 0)->label : ENVIRONMENT_IMAGE_SCENE);
     out->size = q->image_size, out->spp = q->reference_spp, out->bounces = 3;
     env_state *st = calloc(1, sizeof *st);
     if (!st)

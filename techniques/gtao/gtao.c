@@ -317,7 +317,8 @@ static void pixel_gtao(const ss_gbuffer *g, const void *params, int frame, int x
                            : ss_world_direction(g, ss_view_normal(g, x, y));
 }
 
-void ss_pixel_frame(const ss_gbuffer *g, ss_pixel_fn fn, const void *params, int frame, float *ao, float *const *bent)
+static void pixel_frame(const ss_gbuffer *g, ss_pixel_fn fn, const void *params, int frame, float *ao,
+                        float *const *bent)
 {
 #pragma omp parallel for schedule(dynamic, 4)
     for (int y = 0; y < g->height; ++y)
@@ -334,6 +335,22 @@ void ss_pixel_frame(const ss_gbuffer *g, ss_pixel_fn fn, const void *params, int
                 bent[2][i] = b.z;
             }
         }
+}
+
+/* The depth bounds of every pixel are worked out once per frame, not per
+ * sample (ss_depth_bounds_planes; the same bits either way); without memory
+ * for them, per sample. */
+void ss_pixel_frame(const ss_gbuffer *g, ss_pixel_fn fn, const void *params, int frame, float *ao, float *const *bent)
+{
+    size_t n = (size_t)g->width * g->height;
+    float *bounds = g->depth_lo ? NULL : malloc(2 * n * sizeof *bounds);
+    ss_gbuffer with_bounds = *g;
+    if (bounds) {
+        ss_depth_bounds_planes(g, bounds, bounds + n);
+        with_bounds.depth_lo = bounds, with_bounds.depth_hi = bounds + n;
+    }
+    pixel_frame(&with_bounds, fn, params, frame, ao, bent);
+    free(bounds);
 }
 
 typedef struct {

@@ -179,7 +179,7 @@ int ss_half_resolution(const ss_gbuffer *full, ss_half_gbuffer *half)
                 normal[(size_t)a * n + i] = full->normal[a][j];
             mask[i] = 1.0f;
         }
-    half->g = (ss_gbuffer){w, h, depth, {normal, normal + n, normal + 2 * n}, mask, full->camera};
+    half->g = (ss_gbuffer){w, h, depth, {normal, normal + n, normal + 2 * n}, mask, full->camera, NULL, NULL};
     return 0;
 }
 

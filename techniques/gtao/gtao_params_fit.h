@@ -20,7 +20,7 @@
 #include "realtime/screen_space.h"
 
 typedef enum { GTAO_FIT_DSSIM, GTAO_FIT_RMSE } gtao_fit_objective;
-enum { GTAO_FIT_PARAMS = 3, GTAO_FIT_MAX_SCENES = 16 };
+enum { GTAO_FIT_PARAMS = 3, GTAO_FIT_MAX_SCENES = 32 }; /* as many as a study runs over (STUDY_SCENES_MAX) */
 /* radius_over_camera_distance, falloff, thickness: the order of the values */
 extern const char *const gtao_fit_param_names[GTAO_FIT_PARAMS];
 extern const char *const gtao_fit_objective_names[2]; /* "dssim", "rmse" */

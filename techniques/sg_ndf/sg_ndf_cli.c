@@ -44,7 +44,7 @@ static int fit_sg_ndf(int argc, char **argv)
     rq.materials[0] = (anisotropic_ndf){(ndf_kind)kind, ax, ay};
     rq.imaged[0] = 0;
     rq.max_lobes = (int)lobes;
-    study_context ctx = {dir, QUALITY_PRODUCTION, (int)threads, NULL, NULL};
+    study_context ctx = {dir, QUALITY_PRODUCTION, (int)threads, NULL, NULL, 0};
     static sg_ndf_result r;
     gt_error e;
     if (sg_ndf_study(&ctx, &rq, &r, &e) != 0)

@@ -20,8 +20,9 @@
 #include "metrics/cluster_mean.h"
 #include "project/study_context.h"
 #include "project/project_file.h"
+#include "project/scene_list.h"
 
-enum { SCREEN_SCORE_MAX_VARIANTS = 1 + PROJECT_MAX_FILES, SCREEN_SCORE_MAX_SCENES = 16, SCREEN_SCORE_NAME = 128 };
+enum { SCREEN_SCORE_MAX_VARIANTS = 1 + PROJECT_MAX_FILES, SCREEN_SCORE_MAX_SCENES = STUDY_SCENES_MAX, SCREEN_SCORE_NAME = 128 };
 
 typedef struct {
     char name[SCREEN_SCORE_NAME]; /* "GTAO (C)" or the file's name */

@@ -158,7 +158,7 @@ expect_ok all-one-stage all --stages throughput -o "$work/all"
 python3 - "$work/all" <<'PY' && pass || fail "all --stages throughput: report or summary.json holds other stages"
 import json, sys
 summary = json.load(open(sys.argv[1] + "/summary.json"))
-assert set(summary) == {"gtlab_version", "quality", "ray_throughput", "stage_seconds"}, set(summary)
+assert set(summary) == {"gtlab_version", "quality", "study_scenes", "ray_throughput", "stage_seconds"}, set(summary)
 assert set(summary["stage_seconds"]) == {"throughput", "total"}, summary["stage_seconds"]
 sections = [l for l in open(sys.argv[1] + "/report.md") if l.startswith("## ")]
 assert sections == ["## At a glance\n", "## Contents\n", "## Ray throughput\n"], sections

@@ -234,6 +234,8 @@ static void test_errors(void)
 
 /* Noise in [0, 1] (it does not compress: every file below is larger than
  * the limit). */
+#define WRITE_FAILURES_CHILD "--write-failures-child"
+
 static void fill_noise(float *v, size_t n)
 {
     unsigned state = 12345u;
@@ -244,39 +246,48 @@ static void fill_noise(float *v, size_t n)
 /* Every writer under a file size limit of 4 KiB with SIGXFSZ ignored (a
  * write past it fails with EFBIG, as on a full disk): -1, one line naming
  * the file and the system's reason, nothing under the name. In a child
- * process, which the limit would otherwise outlive the test in. */
+ * process, which the limit would otherwise outlive the test in; the child
+ * runs this program afresh (exec), since a forked copy of a process whose
+ * OpenImageIO thread pool has started can spin forever in that pool's
+ * bookkeeping (its workers are not copied by fork). */
+static int write_failures_child(void)
+{
+    enum { SIDE = 64 };
+    static float v[SIDE * SIDE];
+    fill_noise(v, SIDE * SIDE);
+    const float *planes[3] = {v, v, v};
+    gt_error e;
+    const char *p;
+    p = in_test_dir("limit_preview.png");
+    check_error(image_write_preview(p, planes, 3, SIDE, SIDE, 1.0f, &e), &e, p, "preview past the limit");
+    CHECK_MSG(strstr(e.message, "File too large") != NULL, "%s", e.message);
+    p = in_test_dir("limit_heatmap.png");
+    check_error(image_write_heatmap(p, v, NULL, SIDE, SIDE, 1.0f, "inferno", &e), &e, p, "heatmap past the limit");
+    p = in_test_dir("limit_bar.png");
+    check_error(image_write_heatmap_with_bar(p, v, NULL, SIDE, SIDE, 1.0f, "turbo", &e), &e, p,
+                "heatmap with bar past the limit");
+    p = in_test_dir("limit_data8.png");
+    check_error(image_write_data8(p, v, SIDE, SIDE, "noise", &e), &e, p, "8-bit data past the limit");
+    p = in_test_dir("limit_data16.tif");
+    check_error(image_write_data16(p, planes, 2, SIDE, SIDE, "noise", &e), &e, p, "16-bit data past the limit");
+    fflush(stdout);
+    return check_failures == 0 ? 0 : 1;
+}
+
 static void test_write_failures(void)
 {
     printf("write failures\n");
     fflush(stdout);
+    static const char *const names[] = {"limit_preview.png", "limit_heatmap.png", "limit_bar.png",
+                                        "limit_data8.png", "limit_data16.tif"};
+    for (size_t k = 0; k < sizeof names / sizeof names[0]; ++k)
+        remove(in_test_dir(names[k])); /* an earlier run's */
     pid_t child = fork();
     if (child == 0) {
-        enum { SIDE = 64 };
-        static float v[SIDE * SIDE];
-        fill_noise(v, SIDE * SIDE);
-        const float *planes[3] = {v, v, v};
-        static const char *const names[] = {"limit_preview.png", "limit_heatmap.png", "limit_bar.png",
-                                            "limit_data8.png", "limit_data16.tif"};
-        for (size_t k = 0; k < sizeof names / sizeof names[0]; ++k)
-            remove(in_test_dir(names[k])); /* an earlier run's */
-        signal(SIGXFSZ, SIG_IGN);
+        signal(SIGXFSZ, SIG_IGN); /* kept across exec */
         setrlimit(RLIMIT_FSIZE, &(struct rlimit){4096, 4096});
-        gt_error e;
-        const char *p;
-        p = in_test_dir("limit_preview.png");
-        check_error(image_write_preview(p, planes, 3, SIDE, SIDE, 1.0f, &e), &e, p, "preview past the limit");
-        CHECK_MSG(strstr(e.message, "File too large") != NULL, "%s", e.message);
-        p = in_test_dir("limit_heatmap.png");
-        check_error(image_write_heatmap(p, v, NULL, SIDE, SIDE, 1.0f, "inferno", &e), &e, p, "heatmap past the limit");
-        p = in_test_dir("limit_bar.png");
-        check_error(image_write_heatmap_with_bar(p, v, NULL, SIDE, SIDE, 1.0f, "turbo", &e), &e, p,
-                    "heatmap with bar past the limit");
-        p = in_test_dir("limit_data8.png");
-        check_error(image_write_data8(p, v, SIDE, SIDE, "noise", &e), &e, p, "8-bit data past the limit");
-        p = in_test_dir("limit_data16.tif");
-        check_error(image_write_data16(p, planes, 2, SIDE, SIDE, "noise", &e), &e, p, "16-bit data past the limit");
-        fflush(stdout);
-        _exit(check_failures == 0 ? 0 : 1);
+        execl("/proc/self/exe", "test_image_io", WRITE_FAILURES_CHILD, (char *)NULL);
+        _exit(127);
     }
     int status = 1;
     CHECK(child > 0 && waitpid(child, &status, 0) == child);
@@ -288,10 +299,12 @@ static void test_write_failures(void)
     check_error(image_write_data8(p, v, 2, 2, NULL, &e), &e, p, "a format that cannot be written to memory");
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
     snprintf(test_dir, sizeof test_dir, "%s/image_io", check_tmp_dir());
     mkdir(test_dir, 0755);
+    if (argc == 2 && strcmp(argv[1], WRITE_FAILURES_CHILD) == 0)
+        return write_failures_child();
 
     test_grey_preview();
     test_rgb_preview();

@@ -1,7 +1,8 @@
 /* project/scene_list: the scene list the studies run over. With no
  * project it is the built-in study list, in its order, each labelled by its
  * name and loaded at its own camera exactly as scene_load and
- * scene_choose_camera give it (so the studies' numbers cannot change);
+ * scene_choose_camera give it (so the studies' numbers cannot change), then
+ * as many of the procedural family's members as the context asks for;
  * labels that are not safe file names, and a label used twice, are refused;
  * a glTF camera chosen by index or by name is the one its node places (two
  * cameras at known translations), and an unknown, unplaced or orthographic
@@ -9,6 +10,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "scene/builtin_scene_family.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_loaders.h"
 #include "project/scene_list.h"
@@ -21,6 +23,19 @@ static int same_camera(const camera *a, const camera *b)
            a->height == b->height;
 }
 
+/* The entry loads as scene_load(spec) and scene_choose_camera give it at width. */
+static void check_loads_as(const study_scene_entry *x, const char *spec, int width)
+{
+    scene a, b;
+    camera ca, cb;
+    gt_error e;
+    CHECK_MSG(study_scene_view(x, width, 0, &a, &ca, &e) == 0, "%s", e.message);
+    CHECK(scene_load(spec, &b, &e) == 0 && scene_choose_camera(&b, NULL, width, 0, &cb, &e) == 0);
+    CHECK(same_camera(&ca, &cb) && scene_triangle_count(&a) == scene_triangle_count(&b));
+    scene_free(&a);
+    scene_free(&b);
+}
+
 static void test_builtin_list(void)
 {
     CHECK(study_scene_count(NULL) == builtin_study_scene_count());
@@ -31,16 +46,44 @@ static void test_builtin_list(void)
         CHECK(strcmp(x->label, builtin_study_scene_at(i)->name) == 0 && strcmp(x->spec, spec) == 0);
         CHECK(x->camera_json[0] == '\0' && x->gltf_camera == -1 && x->gltf_camera_name[0] == '\0');
         CHECK(study_scene_find(NULL, x->label) == x && strcmp(study_scene_spec(NULL, x->label), spec) == 0);
-        scene a, b;
-        camera ca, cb;
-        gt_error e;
-        CHECK_MSG(study_scene_view(x, 96, 0, &a, &ca, &e) == 0, "%s", e.message);
-        CHECK(scene_load(spec, &b, &e) == 0 && scene_choose_camera(&b, NULL, 96, 0, &cb, &e) == 0);
-        CHECK(same_camera(&ca, &cb) && scene_triangle_count(&a) == scene_triangle_count(&b));
-        scene_free(&a);
-        scene_free(&b);
+        check_loads_as(x, spec, 96);
     }
     CHECK(study_scene_at(NULL, study_scene_count(NULL)) == NULL && study_scene_find(NULL, "no-such") == NULL);
+}
+
+/* Without a project, study_scenes extends the built-in study scenes with the
+ * procedural family in family_member_name's order, each entry the member as
+ * scene_load builds it; the count is at least the built-ins and at most
+ * STUDY_SCENES_MAX, and a project's scenes are never extended. */
+static void test_builtin_set(void)
+{
+    const int builtins = builtin_study_scene_count();
+    study_context ctx = {check_tmp_dir(), QUALITY_PREVIEW, 1, NULL, NULL, builtins + 3};
+    CHECK(study_scene_count(&ctx) == builtins + 3 && !study_scenes_from_project(&ctx));
+    for (int i = 0; i < builtins; ++i)
+        CHECK(study_scene_at(&ctx, i) == study_scene_at(NULL, i));
+    for (int k = 0; k < 3; ++k) {
+        char name[64], spec[80];
+        family_member_name(k, name, sizeof name);
+        snprintf(spec, sizeof spec, "builtin:%s", name);
+        const study_scene_entry *x = study_scene_at(&ctx, builtins + k);
+        CHECK_MSG(x && strcmp(x->label, name) == 0 && strcmp(x->spec, spec) == 0, "entry %d", builtins + k);
+        CHECK(study_scene_find(&ctx, name) == x && study_scene_find(NULL, name) == NULL);
+        check_loads_as(x, spec, 64);
+    }
+    CHECK(strcmp(study_scene_at(&ctx, builtins)->label, "room-0") == 0 &&
+          strcmp(study_scene_at(&ctx, builtins + 1)->label, "railing-0") == 0);
+    CHECK(study_scene_at(&ctx, builtins + 3) == NULL);
+    ctx.study_scenes = 1;
+    CHECK(study_scene_count(&ctx) == builtins);
+    ctx.study_scenes = 1000;
+    CHECK(study_scene_count(&ctx) == STUDY_SCENES_MAX && study_scene_at(&ctx, STUDY_SCENES_MAX - 1));
+    static study_scene_list project;
+    study_scene_entry one = {.spec = "builtin:plane", .label = "mine", .gltf_camera = -1};
+    gt_error e;
+    CHECK(study_scene_list_add(&project, &one, "t", &e) == 0);
+    ctx.scenes = &project;
+    CHECK(study_scene_count(&ctx) == 1 && study_scenes_from_project(&ctx) && study_scene_find(&ctx, "room-0") == NULL);
 }
 
 static void test_labels(void)
@@ -63,7 +106,7 @@ static void test_labels(void)
     }
     snprintf(x.label, sizeof x.label, "one-more");
     CHECK(study_scene_list_add(&list, &x, "t", &e) != 0 && list.count == STUDY_SCENES_MAX);
-    study_context ctx = {check_tmp_dir(), QUALITY_PREVIEW, 1, &list, NULL};
+    study_context ctx = {check_tmp_dir(), QUALITY_PREVIEW, 1, &list, NULL, 0};
     CHECK(study_scene_count(&ctx) == STUDY_SCENES_MAX && study_scene_find(&ctx, "p3") == &list.scenes[3]);
 }
 
@@ -138,6 +181,7 @@ static void test_orthographic(void)
 int main(void)
 {
     test_builtin_list();
+    test_builtin_set();
     test_labels();
     test_gltf_cameras();
     test_orthographic();

@@ -259,7 +259,7 @@ static void test_headline_paired(void)
               "%d: %s", h.cases_to_decide, h.basis);
     double far[12] = {1, 2, 3, NAN, 2, 2.5, 3.5, 9, 10.5, 12.6, 14.9, 40};
     CHECK(headline_rank_paired(&h, 3, labels, far, 4, "x") == 0 && !strcmp(h.runner_up, "b"));
-    CHECK(h.significance == HEADLINE_NOT_SIGNIFICANT && strstr(h.basis, "t(2) = 4.3"));
+    CHECK(h.significance == HEADLINE_NOT_SIGNIFICANT && strstr(h.basis, "; critical t(2) = 4.3"));
     far[5] = 2.6, far[6] = 3.55;
     CHECK(headline_rank_paired(&h, 3, labels, far, 4, "x") == 0 && h.significance == HEADLINE_SIGNIFICANT);
     double one[4] = {1, NAN, NAN, NAN};
@@ -287,7 +287,7 @@ static void test_headline_table(void)
     write_and_read(&r, &md, &html);
     CHECK(occurs_before(md, "## At a glance\n\nOf 2 rankings, 1 is decided", "| technique |"));
     CHECK(occurs_before(md, "| technique |", "| [AO <x>](#stage-one) | RMSE | b1 | 0.125 | r1 | 0.25 | not computed |"));
-    CHECK(occurs_before(md, "| [AO <x>](#stage-one) |", "| [GTAO](#stage-two) | DSSIM | b2 | 1 | r2 | 2 | significant at 95% (difference +1 +- 0.25, paired) |"));
+    CHECK(occurs_before(md, "| [AO <x>](#stage-one) |", "| [GTAO](#stage-two) | DSSIM | b2 | 1 | r2 | 2 | significant at 95% (difference +1 +- 0.25 s.e., paired) |"));
     CHECK(occurs_before(md, "| [GTAO](#stage-two) |", "- **[AO](#stage-one)**: first"));
     CHECK(occurs_before(html, "<table class=\"glance\">", "<td><a href=\"#stage-one\">AO &lt;x&gt;</a></td><td>RMSE</td>"));
     CHECK(occurs_before(html, "<tr class=\"sig\"><td><a href=\"#stage-two\">GTAO</a>", "<ul>\n<li><b><a href=\"#stage-one\">AO</a>"));

@@ -43,7 +43,7 @@ int main(void)
     static claims_table claims;
     report doc;
     report_init(&doc, "test");
-    report_context ctx = {{check_tmp_dir(), QUALITY_PREVIEW, 1, NULL, NULL}, &doc, cJSON_CreateObject(), &claims};
+    report_context ctx = {{check_tmp_dir(), QUALITY_PREVIEW, 1, NULL, NULL, 0}, &doc, cJSON_CreateObject(), &claims};
     aa_temporal_result aa = made_up_aa();
     aa_temporal_section(&ctx, ctx.summary, &aa);
     gt_error e;

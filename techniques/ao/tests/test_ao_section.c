@@ -89,7 +89,7 @@ int main(void)
     ao_references_result r = made_up_result();
     report doc;
     report_init(&doc, "test");
-    report_context ctx = {{dir, QUALITY_PREVIEW, 1, NULL, NULL}, &doc, cJSON_CreateObject(), NULL};
+    report_context ctx = {{dir, QUALITY_PREVIEW, 1, NULL, NULL, 0}, &doc, cJSON_CreateObject(), NULL};
     gt_error e;
     CHECK(ao_references_section(&ctx, &r, &e) == 0);
     test_summary_carries_the_fields(&r, ctx.summary);

@@ -31,9 +31,9 @@ int main(void)
 {
     char dir[2048], path[4096];
     gt_error e;
-    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL};
+    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL, 0};
     CHECK(study_make_dir(&top, "ao_decals_scenes", dir, sizeof dir, &e) == 0);
-    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL, NULL};
+    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL, NULL, 0};
     static ao_decals_scenes_result r;
     CHECK_MSG(ao_decals_scenes_study(&ctx, 32, 256, 3, &r, &e) == 0, "%s", e.message);
     const ao_decal_scene_row *box = row_of(&r, "box-on-plane", "exact");

@@ -12,7 +12,7 @@
 
 static void check_ao_decals(const char *dir)
 {
-    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL, NULL};
+    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL, NULL, 0};
     ao_decals_request rq = {24, 128, 3, 24};
     static ao_decals_result r;
     gt_error e;
@@ -33,7 +33,7 @@ int main(void)
 {
     char dir[2048];
     gt_error e;
-    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL};
+    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL, 0};
     CHECK(study_make_dir(&top, "ao_decals_study", dir, sizeof dir, &e) == 0);
     check_ao_decals(dir);
     return check_report("test_ao_decals_study");

@@ -75,7 +75,7 @@ int main(void)
     report doc;
     claims_table claims = {0};
     report_init(&doc, "test");
-    report_context ctx = {{dir, QUALITY_PREVIEW, 1, NULL, NULL}, &doc, cJSON_CreateObject(), &claims};
+    report_context ctx = {{dir, QUALITY_PREVIEW, 1, NULL, NULL, 0}, &doc, cJSON_CreateObject(), &claims};
     CHECK(atmosphere_section(&ctx, &r, &e) == 0);
     const cJSON *rows = cJSON_GetObjectItem(cJSON_GetObjectItem(ctx.summary, "atmosphere_luts"), "sizes");
     CHECK(cJSON_GetArraySize(rows) == 3);

@@ -13,7 +13,7 @@
 
 static void check_bloom(const char *dir, bloom_result *r, int threads)
 {
-    study_context ctx = {dir, QUALITY_PREVIEW, threads, NULL, NULL};
+    study_context ctx = {dir, QUALITY_PREVIEW, threads, NULL, NULL, 0};
     bloom_request rq = {96, 54, 2, 3, 1};
     gt_error e;
     char path[4096];
@@ -38,7 +38,7 @@ int main(void)
 {
     char dir[2048];
     gt_error e;
-    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL};
+    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL, 0};
     CHECK(study_make_dir(&top, "bloom_study", dir, sizeof dir, &e) == 0);
     static bloom_result one, two;
     check_bloom(dir, &two, 2);

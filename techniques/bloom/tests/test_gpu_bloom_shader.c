@@ -82,7 +82,7 @@ int main(void)
     char dir[4096], path[4200];
     snprintf(dir, sizeof dir, "%s/test_gpu_bloom_shader_files", check_tmp_dir());
     mkdir(dir, 0755); /* may exist */
-    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL, NULL};
+    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL, NULL, 0};
     bloom_request rq = {96, 54, 2, 3, 1};
     static bloom_result r;
     gpu_device *g = NULL;

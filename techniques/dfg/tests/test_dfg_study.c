@@ -12,9 +12,9 @@ static void test_small_study(void)
 {
     char dir[2048], path[4096];
     gt_error e;
-    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL};
+    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL, 0};
     CHECK(study_make_dir(&top, "dfg_study", dir, sizeof dir, &e) == 0);
-    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL, NULL};
+    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL, NULL, 0};
     dfg_request rq = {32, {16, 32}, 2, 256, 1};
     static dfg_result r;
     CHECK_MSG(dfg_study(&ctx, &rq, &r, &e) == 0, "%s", e.message);
@@ -37,7 +37,7 @@ static void test_small_study(void)
 static void test_bad_requests(void)
 {
     gt_error e;
-    study_context ctx = {check_tmp_dir(), QUALITY_PREVIEW, 1, NULL, NULL};
+    study_context ctx = {check_tmp_dir(), QUALITY_PREVIEW, 1, NULL, NULL, 0};
     static dfg_result r;
     dfg_request none = {32, {0}, 0, 16, 1}, too_small = {8, {16}, 1, 16, 1};
     CHECK(dfg_study(&ctx, &none, &r, &e) != 0);

@@ -23,7 +23,7 @@ static const dither_row *row_of(const dither_image_result *im, const char *label
 
 static void check_dither(const char *dir)
 {
-    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL, NULL};
+    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL, NULL, 0};
     dither_request rq = {512, 64, 48, 32, 4, 16, 1};
     static dither_result r;
     gt_error e;
@@ -65,7 +65,7 @@ int main(void)
 {
     char dir[2048];
     gt_error e;
-    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL};
+    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL, 0};
     CHECK(study_make_dir(&top, "dither_study", dir, sizeof dir, &e) == 0);
     check_dither(dir);
     return check_report("test_dither_study");

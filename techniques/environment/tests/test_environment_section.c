@@ -81,7 +81,7 @@ static void test_section(void)
     report_init(&doc, "test");
     claims_table claims;
     memset(&claims, 0, sizeof claims);
-    report_context ctx = {{dir, QUALITY_PREVIEW, 1, NULL, NULL}, &doc, cJSON_CreateObject(), &claims};
+    report_context ctx = {{dir, QUALITY_PREVIEW, 1, NULL, NULL, 0}, &doc, cJSON_CreateObject(), &claims};
     gt_error e;
     CHECK(environment_section(&ctx, &r, &e) == 0);
     CHECK(claims.count == 2);

@@ -33,7 +33,7 @@ static void check_white_dome(const environment_study_environment *w)
 
 int main(void)
 {
-    study_context ctx = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL};
+    study_context ctx = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL, 0};
     static environment_study_result r;
     gt_error e;
     CHECK_MSG(environment_study(&ctx, &r, &e) == 0, "%s", e.message);

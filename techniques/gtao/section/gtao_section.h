@@ -11,6 +11,12 @@
  * writes could not be made. */
 int gtao_section(report_context *ctx, const gtao_validation_result *r, gt_error *e);
 
+/* The At-a-glance row (report_headline.h): the real-time variants ranked by
+ * their mean RMSE against the 3-D reference, paired over the scenes;
+ * brute-force GTAO (exact horizons, seconds a frame) is the bound they
+ * approach, not a contender, so it is left out of the ranking. */
+void gtao_headline(report *doc, const gtao_validation_result *r);
+
 /* One scene's paragraph on brute-force GTAO (the reference preset's exact
  * horizons) against the height-field reference: within the reference's
  * noise, or above it by less than one 8-bit code value (equal for a viewer),

@@ -17,6 +17,7 @@
 #include "gtao/gtao_fast_math.h"
 #include "metrics/cluster_mean.h"
 #include "project/study_context.h"
+#include "project/scene_list.h"
 
 typedef enum {
     BASELINE_GTAO,
@@ -29,7 +30,7 @@ typedef enum {
 } baseline_technique;
 extern const char *const baseline_names[BASELINE_COUNT];
 
-enum { BASELINES_MAX_SCENES = 16 };
+enum { BASELINES_MAX_SCENES = STUDY_SCENES_MAX };
 
 typedef struct {
     char scene[64];

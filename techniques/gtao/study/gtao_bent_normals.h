@@ -21,11 +21,12 @@
 
 #include "gtao/gtao_fast_math.h"
 #include "metrics/cluster_mean.h"
+#include "project/scene_list.h"
 
 typedef enum { BENT_HORIZON_VECTORS, BENT_HALFWAY_ANGLES, BENT_ARC_MEAN, BENT_ESTIMATORS } bent_estimator;
 extern const char *const bent_estimator_names[BENT_ESTIMATORS];
 
-enum { BENT_MAX_SCENES = 16 };
+enum { BENT_MAX_SCENES = STUDY_SCENES_MAX };
 
 typedef struct {
     char scene[64];

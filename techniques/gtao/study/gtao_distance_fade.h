@@ -23,8 +23,9 @@
 
 #include "gtao/gtao_fast_math.h"
 #include "metrics/cluster_mean.h"
+#include "project/scene_list.h"
 
-enum { FADE_MAX_SCENES = 16 };
+enum { FADE_MAX_SCENES = STUDY_SCENES_MAX };
 
 typedef struct {
     char scene[64];

@@ -29,6 +29,7 @@
 #include "gtao/gtao_fast_acos.h"
 #include "metrics/cluster_mean.h"
 #include "project/study_context.h"
+#include "project/scene_list.h"
 
 typedef enum {
     FAST_ACOS_EXACT,
@@ -41,7 +42,7 @@ typedef enum {
 } fast_acos_variant;
 extern const char *const fast_acos_variant_names[FAST_ACOS_VARIANTS];
 
-enum { FAST_MATH_MAX_SCENES = 16, FAST_MATH_TALK_SCENES = 4 };
+enum { FAST_MATH_MAX_SCENES = STUDY_SCENES_MAX, FAST_MATH_TALK_SCENES = 4 };
 
 typedef struct {
     char scene[64];

@@ -24,8 +24,9 @@
 #include "gtao/gtao_spatial_filter.h"
 #include "metrics/block_mean.h"
 #include "metrics/shift_fit.h"
+#include "project/scene_list.h"
 
-enum { GTAO_SHORTCUT_MAX_SCENES = 16 };
+enum { GTAO_SHORTCUT_MAX_SCENES = STUDY_SCENES_MAX };
 
 /* One scene as the gtao stage holds it. */
 typedef struct {

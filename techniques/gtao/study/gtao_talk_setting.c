@@ -14,7 +14,7 @@ enum { BUILTIN_SCENES = sizeof builtin_scenes / sizeof builtin_scenes[0] };
 int gtao_talk_scene(const study_context *ctx, const char *label)
 {
     const gtao_quality *q = gtao_quality_of(ctx->quality);
-    if (ctx->scenes) {
+    if (study_scenes_from_project(ctx)) {
         for (int i = 0; i < q->talk_project_scenes && i < study_scene_count(ctx); ++i)
             if (strcmp(study_scene_at(ctx, i)->label, label) == 0)
                 return 1;

@@ -15,8 +15,9 @@
 
 #include "gtao/gtao_fast_math.h"
 #include "metrics/cluster_mean.h"
+#include "project/scene_list.h"
 
-enum { THICKNESS_VALUES = 4, THICKNESS_MAX_SCENES = 16 };
+enum { THICKNESS_VALUES = 4, THICKNESS_MAX_SCENES = STUDY_SCENES_MAX };
 extern const float gtao_thickness_values[THICKNESS_VALUES]; /* 0.05, 0.1, 0.25, 0.5 */
 
 typedef struct {

@@ -21,6 +21,7 @@
 #include "gtao/volumetric_obscurance.h"
 #include "project/scene_list.h"
 #include "project/gbuffer_input.h"
+#include "scene/builtin_scenes.h"
 #include "gtao/gtao_quality.h"
 #include "gtao/gtao_scene_refs.h"
 #include "gtao/gtao_talk_setting.h"
@@ -379,20 +380,31 @@ static int convergence(const char *refs_dir, const char *dir, gtao_validation_re
     return rc;
 }
 
-/* The GTAO fit's split: the talk's on the built-in scenes; on a project's
- * scenes the first half (rounded up) trains and the rest is held out, and a
- * single scene is both (the held-out score is then in-sample). */
+/* Appends label to the comma-separated list. */
+static void list_append(char *list, size_t size, const char *label)
+{
+    size_t used = strlen(list);
+    snprintf(list + used, size - used, "%s%s", used ? "," : "", label);
+}
+
+/* The GTAO fit's split: on the built-in set the talk's, with the
+ * procedural family's members held out too; on a project's scenes the
+ * first half (rounded up) trains and the rest is held out, and a single
+ * scene is both (the held-out score is then in-sample). */
 static void fit_split(const study_context *ctx, gtao_validation_result *out)
 {
-    int n = study_scene_count(ctx), train = n > 1 ? (n + 1) / 2 : n;
-    snprintf(out->fit_train, sizeof out->fit_train, "%s", ctx->scenes ? "" : GTAO_FIT_DEFAULT_TRAIN);
-    snprintf(out->fit_test, sizeof out->fit_test, "%s", ctx->scenes ? "" : GTAO_FIT_DEFAULT_TEST);
-    for (int i = 0; ctx->scenes && i < n; ++i) {
-        char *list = i < train ? out->fit_train : out->fit_test;
-        size_t used = strlen(list), size = i < train ? sizeof out->fit_train : sizeof out->fit_test;
-        snprintf(list + used, size - used, "%s%s", used ? "," : "", study_scene_at(ctx, i)->label);
+    const int project = study_scenes_from_project(ctx), n = study_scene_count(ctx);
+    const int train = !project ? 0 : n > 1 ? (n + 1) / 2 : n;
+    snprintf(out->fit_train, sizeof out->fit_train, "%s", project ? "" : GTAO_FIT_DEFAULT_TRAIN);
+    snprintf(out->fit_test, sizeof out->fit_test, "%s", project ? "" : GTAO_FIT_DEFAULT_TEST);
+    for (int i = project ? 0 : builtin_study_scene_count(); i < n; ++i) {
+        const char *label = study_scene_at(ctx, i)->label;
+        if (i < train)
+            list_append(out->fit_train, sizeof out->fit_train, label);
+        else
+            list_append(out->fit_test, sizeof out->fit_test, label);
     }
-    if (n == 1 && ctx->scenes)
+    if (n == 1 && project)
         snprintf(out->fit_test, sizeof out->fit_test, "%s", out->fit_train);
 }
 
@@ -405,7 +417,7 @@ int gtao_validation_study(const study_context *ctx, const gtao_validation_reques
         return -1;
     memset(out, 0, sizeof *out);
     snprintf(out->convergence_scene, sizeof out->convergence_scene, "%s",
-             ctx->scenes ? study_scene_at(ctx, 0)->label : GTAO_CONVERGENCE_SCENE);
+             study_scenes_from_project(ctx) ? study_scene_at(ctx, 0)->label : GTAO_CONVERGENCE_SCENE);
     out->heightfield_spp = gtao_quality_of(ctx->quality)->heightfield_spp;
     out->converged_frames = gtao_quality_of(ctx->quality)->converged_frames;
     for (int i = 0; i < study_scene_count(ctx); ++i) {

@@ -30,6 +30,7 @@
 #include "gtao/gtao_params_fit.h"
 #include "gtao/gtao_shortcuts.h"
 #include "project/study_context.h"
+#include "project/scene_list.h"
 
 /* The folder below the output folder that holds the study's files. */
 #define GTAO_VALIDATION_DIR "gtao"
@@ -41,7 +42,7 @@
 #define GTAO_CONVERGENCE_SCENE "boxes"
 
 enum {
-    GTAO_VALIDATION_MAX_SCENES = 16,
+    GTAO_VALIDATION_MAX_SCENES = STUDY_SCENES_MAX,
     GTAO_VALIDATION_MAX_VARIANTS = 16, /* 13 at production quality */
     GTAO_CONVERGENCE_STEPS = 4,
     GTAO_CONVERGENCE_SLICES = 5

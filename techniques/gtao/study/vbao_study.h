@@ -24,9 +24,10 @@
 #include "gtao/ao_image_score.h"
 #include "gtao/gtao_fast_math.h"
 #include "metrics/cluster_mean.h"
+#include "project/scene_list.h"
 
 #define VBAO_THICKNESS_FRACTION 0.05
-enum { VBAO_MAX_SCENES = 16 };
+enum { VBAO_MAX_SCENES = STUDY_SCENES_MAX };
 
 typedef enum {
     VBAO_ROW_GTAO_MEDIUM,

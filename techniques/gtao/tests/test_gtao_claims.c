@@ -169,7 +169,7 @@ int main(void)
     static claims_table claims;
     report doc;
     report_init(&doc, "test");
-    report_context ctx = {{dir, QUALITY_PREVIEW, 1, NULL, NULL}, &doc, cJSON_CreateObject(), &claims};
+    report_context ctx = {{dir, QUALITY_PREVIEW, 1, NULL, NULL, 0}, &doc, cJSON_CreateObject(), &claims};
     test_checks(&ctx);
     test_shortcuts(&ctx);
     report_free(&doc);

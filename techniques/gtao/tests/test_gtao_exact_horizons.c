@@ -6,7 +6,9 @@
  * the same conclusion, or none when the converged presets have no gap
  * either; one above it by more says the tests do not explain it
  * and does not blame the steps; summary.json gets the figures and the
- * standing each time; a scene without the run gets neither. */
+ * standing each time; a scene without the run gets neither. The
+ * At-a-glance row ranks the real-time variants only: brute-force GTAO,
+ * closest on every scene, is never its best row. */
 #include <math.h>
 #include <string.h>
 
@@ -46,8 +48,36 @@ static void check_statement(double rmse, double noise_rmse, double converged, co
     section_test_end(&t);
 }
 
+/* Three scenes where brute force is closest, HBAO next, GTAO medium last. */
+static void test_headline_ranks_real_time(void)
+{
+    static gtao_validation_result r;
+    r.scene_count = 3;
+    for (int i = 0; i < 3; ++i) {
+        gtao_validation_scene *s = &r.scenes[i];
+        snprintf(s->scene, sizeof s->scene, "scene%d", i);
+        s->variant_count = 3;
+        s->variants[0] = (ao_variant_row){.technique = AO_TECHNIQUE_GTAO, .preset = GTAO_PRESET_REFERENCE,
+                                          .label = "GTAO exact horizons, 8 slices", .rmse_3d = 0.01 + 0.001 * i};
+        s->variants[1] = (ao_variant_row){.technique = AO_TECHNIQUE_HBAO, .preset = -1,
+                                          .label = "HBAO 8x8, 1 frame", .rmse_3d = 0.05 + 0.002 * i};
+        s->variants[2] = (ao_variant_row){.technique = AO_TECHNIQUE_GTAO, .preset = GTAO_PRESET_MEDIUM,
+                                          .label = "GTAO medium, 1 frame", .rmse_3d = 0.08 + 0.001 * i};
+    }
+    section_test t;
+    section_test_begin(&t, "gtao_headline", NULL);
+    gtao_headline(&t.doc, &r);
+    CHECK(t.doc.headline_count == 1);
+    const report_headline *h = &t.doc.headlines[0];
+    CHECK_MSG(strcmp(h->best, "HBAO 8x8, 1 frame") == 0 && strcmp(h->runner_up, "GTAO medium, 1 frame") == 0,
+              "best %s, runner-up %s", h->best, h->runner_up);
+    CHECK(fabs(h->best_error - 0.052) < 1e-12 && strstr(h->measure, "real-time variants"));
+    section_test_end(&t);
+}
+
 int main(void)
 {
+    test_headline_ranks_real_time();
     const char *within = "within the noise", *invisible = "below one 8-bit code value", *unexplained = "unexplained";
     check_statement(0.03, 0.05, 0.1, "within the reference's own noise (RMSE 0.0500)", "do not explain", within);
     check_statement(0.03, 0.05, 0.1, "their horizon search's steps, not a difference", "do not explain", within);

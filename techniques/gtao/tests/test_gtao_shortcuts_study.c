@@ -240,9 +240,9 @@ int main(void)
 {
     char dir[4096], refs[4096], gtao[4096];
     gt_error e;
-    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL};
+    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL, 0};
     CHECK(study_make_dir(&top, "gtao_shortcuts", dir, sizeof dir, &e) == 0);
-    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL, NULL};
+    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL, NULL, 0};
     int rc = make_references(&ctx, refs, gtao, &e);
     CHECK_MSG(rc == 0, "%s", e.message);
     if (rc == 0) {

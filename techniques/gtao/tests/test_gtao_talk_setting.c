@@ -14,8 +14,8 @@
 
 static void test_scenes(void)
 {
-    study_context preview = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL};
-    study_context production = {check_tmp_dir(), QUALITY_PRODUCTION, 2, NULL, NULL};
+    study_context preview = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL, 0};
+    study_context production = {check_tmp_dir(), QUALITY_PRODUCTION, 2, NULL, NULL, 0};
     CHECK(gtao_talk_scene(&preview, "boxes") && gtao_talk_scene(&preview, "cornell"));
     CHECK(!gtao_talk_scene(&preview, "menger") && !gtao_talk_scene(&preview, "plane"));
     CHECK(gtao_talk_scene(&production, "menger") && gtao_talk_scene(&production, "corner"));
@@ -37,7 +37,7 @@ static float block_min_depth(const ss_gbuffer *full, int x, int y)
 
 static void test_frame(void)
 {
-    study_context ctx = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL};
+    study_context ctx = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL, 0};
     camera reference = {{27, 22, 35}, {0, 0, 0}, {0, 1, 0}, 0.785398f, 256, 256};
     gtao_talk_frame f;
     gt_error e;

@@ -35,7 +35,7 @@ static void check_section(double worst_median)
     report doc;
     claims_table claims = {0};
     report_init(&doc, "test");
-    report_context ctx = {{check_tmp_dir(), QUALITY_PREVIEW, 1, NULL, NULL}, &doc, cJSON_CreateObject(), &claims};
+    report_context ctx = {{check_tmp_dir(), QUALITY_PREVIEW, 1, NULL, NULL, 0}, &doc, cJSON_CreateObject(), &claims};
     aerial_perspective_section(&ctx, ctx.summary, "fog", &r);
     const cJSON *a = cJSON_GetObjectItem(ctx.summary, "aerial_perspective");
     CHECK(cJSON_GetArraySize(cJSON_GetObjectItem(a, "views")) == 2);

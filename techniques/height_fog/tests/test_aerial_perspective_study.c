@@ -34,7 +34,7 @@ static int run(int threads, const char *sub, aerial_perspective_result *r)
     aerial_perspective_request rq = aerial_perspective_default_request(QUALITY_PREVIEW);
     rq.width = 24, rq.height = 16, rq.fisheye = 16, rq.sun_count = 1, rq.sun_elevations[0] = 20.0;
     rq.sizes.inscatter[3] = rq.sizes.sun[3] = rq.sizes.sky[3] = 2; /* two precomputations: t = 0, 1 */
-    study_context ctx = {check_tmp_dir(), QUALITY_PREVIEW, threads, NULL, NULL};
+    study_context ctx = {check_tmp_dir(), QUALITY_PREVIEW, threads, NULL, NULL, 0};
     char dir[4096];
     gt_error e;
     int rc = study_make_dir(&ctx, sub, dir, sizeof dir, &e);

@@ -20,7 +20,7 @@ int main(void)
     rq.width = 32, rq.height = 24, rq.spp = 16;
     rq.aerial.width = 24, rq.aerial.height = 16, rq.aerial.fisheye = 16, rq.aerial.sun_count = 1;
     rq.aerial.sizes.inscatter[3] = rq.aerial.sizes.sun[3] = rq.aerial.sizes.sky[3] = 2; /* t = 0, 1 */
-    study_context ctx = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL};
+    study_context ctx = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL, 0};
     static height_fog_result r;
     gt_error e;
     CHECK_MSG(height_fog_study(&ctx, &rq, &r, &e) == 0, "%s", e.message);

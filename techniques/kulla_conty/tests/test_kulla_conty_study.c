@@ -14,7 +14,7 @@ int main(void)
     char dir[512], path[700];
     snprintf(dir, sizeof dir, "%s/kulla_conty_study", check_tmp_dir());
     mkdir(dir, 0755);
-    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL, NULL};
+    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL, NULL, 0};
     kulla_conty_request rq = {8, {4, 8, 16}, 3, 12, 4};
     static kulla_conty_result r;
     gt_error e = {{0}};

@@ -45,7 +45,7 @@ int main(void)
     static claims_table claims;
     report doc;
     report_init(&doc, "test");
-    report_context ctx = {{dir, QUALITY_PREVIEW, 1, NULL, NULL}, &doc, cJSON_CreateObject(), &claims};
+    report_context ctx = {{dir, QUALITY_PREVIEW, 1, NULL, NULL, 0}, &doc, cJSON_CreateObject(), &claims};
     gt_error e;
     CHECK(multibounce_section(&ctx, &r, &e) == 0);
     CHECK(claims.count == 5 && claims.refused == 0);

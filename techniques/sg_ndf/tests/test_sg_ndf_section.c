@@ -22,7 +22,7 @@ static void sg_rows(void)
     memset(&t, 0, sizeof t);
     report doc;
     report_init(&doc, "test");
-    report_context ctx = {{check_tmp_dir(), QUALITY_PREVIEW, 1, NULL, NULL}, &doc, NULL, &t};
+    report_context ctx = {{check_tmp_dir(), QUALITY_PREVIEW, 1, NULL, NULL, 0}, &doc, NULL, &t};
     sg_ndf_claim_rows(&ctx, &r);
     CHECK_MSG(t.refused == 0, "refused: %s", t.first_refusal);
     CHECK_MSG(t.count == 1, "%d rows", t.count);

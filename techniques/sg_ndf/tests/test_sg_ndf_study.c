@@ -31,7 +31,7 @@ int main(void)
     char dir[512], path[600];
     snprintf(dir, sizeof dir, "%s/sg_ndf_study", check_tmp_dir());
     mkdir(dir, 0755);
-    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL, NULL};
+    study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL, NULL, 0};
     sg_ndf_request rq = sg_ndf_default_request(QUALITY_PREVIEW);
     rq.material_count = 1;
     rq.materials[0] = (anisotropic_ndf){NDF_WARD, 0.3, 0.1};

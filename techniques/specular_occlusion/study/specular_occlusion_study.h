@@ -40,10 +40,11 @@
 #include "specular_occlusion/specular_occlusion_lut.h"
 #include "specular_occlusion/specular_occlusion_screen.h"
 #include "project/study_context.h"
+#include "project/scene_list.h"
 
 enum {
     SO_STUDY_ROUGHNESSES = 3,
-    SO_STUDY_MAX_SCENES = 16,
+    SO_STUDY_MAX_SCENES = STUDY_SCENES_MAX,
     SO_STUDY_MAX_VARIANTS = 28,
     SO_STUDY_MAX_LUTS = 8,
     SO_STUDY_DEFINITIONS = 3, /* the reference definitions the aperture is fitted to */

@@ -49,7 +49,7 @@ int main(void)
     static claims_table claims;
     report doc;
     report_init(&doc, "test");
-    report_context ctx = {{check_tmp_dir(), QUALITY_PREVIEW, 1, NULL, NULL}, &doc, cJSON_CreateObject(), &claims};
+    report_context ctx = {{check_tmp_dir(), QUALITY_PREVIEW, 1, NULL, NULL, 0}, &doc, cJSON_CreateObject(), &claims};
     so_rankings_section(&ctx, &r, ctx.summary);
     so_cone_view_section(&ctx, &r, ctx.summary);
     CHECK_MSG(claims.count == ROWS && claims.refused == 0, "%d rows, %d refused: %s", claims.count, claims.refused,

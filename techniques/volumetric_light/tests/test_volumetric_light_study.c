@@ -63,9 +63,9 @@ int main(void)
 {
     char dir[2048], path[4096];
     gt_error e;
-    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL};
+    study_context top = {check_tmp_dir(), QUALITY_PREVIEW, 2, NULL, NULL, 0};
     CHECK(study_make_dir(&top, "volumetric_light_study", dir, sizeof dir, &e) == 0);
-    study_context two = {dir, QUALITY_PREVIEW, 2, NULL, NULL}, one = {dir, QUALITY_PREVIEW, 1, NULL, NULL};
+    study_context two = {dir, QUALITY_PREVIEW, 2, NULL, NULL, 0}, one = {dir, QUALITY_PREVIEW, 1, NULL, NULL, 0};
     volumetric_light_request rq = small_request();
     static volumetric_light_result r2, r1;
     CHECK_MSG(volumetric_light_study(&two, &rq, &r2, &e) == 0, "%s", e.message);
