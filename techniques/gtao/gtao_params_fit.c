@@ -17,6 +17,11 @@ const char *const gtao_fit_param_names[GTAO_FIT_PARAMS] = {"radius_over_camera_d
 const char *const gtao_fit_objective_names[2] = {"dssim", "rmse"};
 
 static const double lower[PARAM_COUNT] = {0.01, 0.0, 0.0}, upper[PARAM_COUNT] = {2.0, 1.0, 0.95};
+
+int gtao_fit_at_bound(const gtao_fit_result *r, int k)
+{
+    return r->value[k] <= lower[k] ? -1 : r->value[k] >= upper[k] ? 1 : 0;
+}
 /* Finite-difference steps: GTAO renders in float, so Ceres' relative step
  * (1e-6) moves its output by less than its rounding and the derivatives come
  * out 0; steps of a percent of each parameter's range see the real slope. */

@@ -62,4 +62,7 @@ typedef struct {
  * a scene with no residual, the solver). */
 int gtao_params_fit(const gtao_fit_problem *problem, gtao_fit_result *out, gt_error *e);
 
+/* Whether fitted value k ended on a bound: -1 the lower, 1 the upper, 0 inside. */
+int gtao_fit_at_bound(const gtao_fit_result *r, int k);
+
 #endif

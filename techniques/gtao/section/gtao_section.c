@@ -3,9 +3,11 @@
  * rendered into the report: per scene the variants' table, where the error
  * of the talk's configuration comes from and the heatmaps; the convergence
  * plot; GTAO's parameters tuned to the 3-D references. */
+#include <ctype.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "gtao/gtao_section.h"
 
@@ -235,17 +237,46 @@ static int write_fit(report_context *ctx, const gtao_validation_result *r, gt_er
     return rc;
 }
 
+void gtao_fit_bound_explanation(const gtao_fit_result *r, char *text, size_t size)
+{
+    static const char *const names[GTAO_FIT_PARAMS] = {"the radius", "the falloff", "the thickness"};
+    char which[128] = "";
+    int count = 0;
+    for (int k = 0; k < GTAO_FIT_PARAMS; ++k)
+        if (gtao_fit_at_bound(r, k) != 0) {
+            size_t used = strlen(which);
+            snprintf(which + used, sizeof which - used, "%s%s", count ? " and " : "", names[k]);
+            ++count;
+        }
+    static const char *const heuristics[4] = {
+        "", " (a falloff of 0 is no fade: on these scenes the fit wants none)",
+        " (a thickness of 0 is no thickness heuristic: on these scenes the fit wants none)",
+        " (a falloff of 0 is no fade, a thickness of 0 no thickness heuristic: on these scenes the fit wants "
+        "neither)"};
+    const int off = (gtao_fit_at_bound(r, 1) < 0) | (gtao_fit_at_bound(r, 2) < 0) << 1;
+    text[0] = '\0';
+    if (count)
+        snprintf(text, size,
+                 " %c%s end%s on the edge of the fit's range: the objective still falls towards the edge, so the "
+                 "data want %s past what the range allows%s, and the standard error there is only the local "
+                 "curvature, not an interval.",
+                 toupper((unsigned char)which[0]), which + 1, count == 1 ? "s" : "", count == 1 ? "it" : "them",
+                 heuristics[off]);
+}
+
 static void render_fit(report *doc, const gtao_fit_request *rq, const gtao_fit_result *r)
 {
+    char bounds[512];
+    gtao_fit_bound_explanation(r, bounds, sizeof bounds);
     report_heading(doc, 3, "Parameters tuned to the 3-D references");
     report_paragraph(doc,
                      "'gtlab fit gtao-params --refs ao' (Ceres, DSSIM objective, %s preset, %d iterations%s): radius "
                      "%.3f +- %.3f of the camera's distance to its target (start %.2f), falloff %.3f +- %.3f (start "
                      "%.2f), thickness %.3f +- %.3f (start %.2f); standard errors treat pixels as independent and "
-                     "are optimistic. Fitted on %s; held out: %s.",
+                     "are optimistic.%s Fitted on %s; held out: %s.",
                      rq->preset, r->iterations, r->converged ? "" : ", not converged", r->value[0], r->se[0],
-                     r->start[0], r->value[1], r->se[1], r->start[1], r->value[2], r->se[2], r->start[2], rq->train,
-                     rq->test);
+                     r->start[0], r->value[1], r->se[1], r->start[1], r->value[2], r->se[2], r->start[2], bounds,
+                     rq->train, rq->test);
     report_rows(doc, NULL, fit_score_columns, COUNT(fit_score_columns), r->scores, sizeof r->scores[0],
                 r->score_count);
     int better = 0, held_out = 0;
@@ -256,9 +287,9 @@ static void render_fit(report *doc, const gtao_fit_request *rq, const gtao_fit_r
     }
     report_finding(doc, "GTAO auto-tune",
                    "Tuning GTAO's radius, falloff and thickness by DSSIM on %d scene%s lowers DSSIM on %d of the %d "
-                   "held-out scenes (radius %.2f of the camera distance, falloff %.2f, thickness %.2f).",
+                   "held-out scenes (radius %.2f of the camera distance, falloff %.2f, thickness %.2f%s).",
                    r->score_count - held_out, r->score_count - held_out == 1 ? "" : "s", better, held_out,
-                   r->value[0], r->value[1], r->value[2]);
+                   r->value[0], r->value[1], r->value[2], bounds[0] ? "; see the section on the range's edge" : "");
 }
 
 /* Whether x runs in real time: every variant but brute-force GTAO (exact
@@ -292,7 +323,8 @@ void gtao_headline(report *doc, const gtao_validation_result *r)
     report_headline h = {.topic = "GTAO, HBAO, VO", .significance = HEADLINE_NOT_COMPUTED,
                          .margin = CLAIM_ONE_CODE_VALUE_8BIT}; /* RMSE of an 8-bit AO target */
     char over[64];
-    snprintf(h.measure, sizeof h.measure, "mean RMSE vs the 3-D reference (%d scenes; real-time variants)", scenes);
+    snprintf(h.measure, sizeof h.measure, "mean RMSE vs the 3-D reference (%d scenes; real-time variants, no radius limit, "
+             "as the references)", scenes);
     snprintf(over, sizeof over, "paired over %d scenes", scenes);
     if (scenes > 0 && headline_rank_paired(&h, ranked, labels, rmse, scenes, over) == 0)
         report_add_headline(doc, &h);

@@ -17,6 +17,11 @@ int gtao_section(report_context *ctx, const gtao_validation_result *r, gt_error 
  * approach, not a contender, so it is left out of the ranking. */
 void gtao_headline(report *doc, const gtao_validation_result *r);
 
+/* The fit paragraph's explanation when fitted values end on the edge of
+ * their range (gtao_fit_at_bound): which, what that means, and that their
+ * standard errors are no interval there; "" when none does. */
+void gtao_fit_bound_explanation(const gtao_fit_result *r, char *text, size_t size);
+
 /* One scene's paragraph on brute-force GTAO (the reference preset's exact
  * horizons) against the height-field reference: within the reference's
  * noise, or above it by less than one 8-bit code value (equal for a viewer),

@@ -8,7 +8,8 @@
  * and does not blame the steps; summary.json gets the figures and the
  * standing each time; a scene without the run gets neither. The
  * At-a-glance row ranks the real-time variants only: brute-force GTAO,
- * closest on every scene, is never its best row. */
+ * closest on every scene, is never its best row. A fit whose values end on
+ * their range's edge says which and what it means; one inside says nothing. */
 #include <math.h>
 #include <string.h>
 
@@ -75,9 +76,31 @@ static void test_headline_ranks_real_time(void)
     section_test_end(&t);
 }
 
+static void test_fit_bounds(void)
+{
+    char text[512];
+    gtao_fit_result r = {.value = {0.66, 0.0, 0.0}};
+    gtao_fit_bound_explanation(&r, text, sizeof text);
+    CHECK_MSG(strstr(text, " The falloff and the thickness end on the edge of the fit's range") == text &&
+                  strstr(text, "no thickness heuristic") && strstr(text, "not an interval"),
+              "%s", text);
+    r.value[1] = 0.3;
+    gtao_fit_bound_explanation(&r, text, sizeof text);
+    CHECK_MSG(strstr(text, " The thickness ends on the edge") == text && strstr(text, "no thickness heuristic") &&
+                  !strstr(text, "fade"),
+              "%s", text);
+    r.value[2] = 0.1;
+    gtao_fit_bound_explanation(&r, text, sizeof text);
+    CHECK_MSG(text[0] == '\0', "%s", text);
+    r.value[0] = 2.0;
+    gtao_fit_bound_explanation(&r, text, sizeof text);
+    CHECK_MSG(strstr(text, " The radius ends on the edge") == text && !strstr(text, "heuristic"), "%s", text);
+}
+
 int main(void)
 {
     test_headline_ranks_real_time();
+    test_fit_bounds();
     const char *within = "within the noise", *invisible = "below one 8-bit code value", *unexplained = "unexplained";
     check_statement(0.03, 0.05, 0.1, "within the reference's own noise (RMSE 0.0500)", "do not explain", within);
     check_statement(0.03, 0.05, 0.1, "their horizon search's steps, not a difference", "do not explain", within);
