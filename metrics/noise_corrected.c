@@ -21,3 +21,17 @@ double noise_corrected_rmse(double rmse, double mean_variance)
 {
     return sqrt(fmax(rmse * rmse - mean_variance, 0.0));
 }
+
+double noise_budget_for_rmse(double figure, double margin)
+{
+    if (!(margin > 0.0))
+        return 0.0;
+    double f = fmax(figure, 0.0), quarter = 0.25 * margin;
+    return sqrt((f + quarter) * (f + quarter) - f * f);
+}
+
+double noise_inflation_of_rmse(double figure, double noise_rmse)
+{
+    double f = fmax(figure, 0.0);
+    return sqrt(f * f + noise_rmse * noise_rmse) - f;
+}

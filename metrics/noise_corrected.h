@@ -23,4 +23,19 @@ double noise_mean_variance(const float *stderr_plane, const float *mask, size_t 
  * within the noise. */
 double noise_corrected_rmse(double rmse, double mean_variance);
 
+/* The noise budget of an RMSE figure (docs/claims-protocol.md, "Noise
+ * budgets"): by the identity above, a reference whose noise RMSE is n shows
+ * an error of true RMSE f as sqrt(f^2 + n^2), inflated by
+ * sqrt(f^2 + n^2) - f. The largest n that inflates f by at most a quarter of
+ * the visible margin m is
+ *     n_max = sqrt((f + m/4)^2 - f^2) = sqrt(f m / 2 + m^2 / 16),
+ * the most noise a reference may have for a figure f to be read to within
+ * m/4. (A paired difference of squared errors against one reference is not
+ * biased at all: both sides gain the same mean variance.) 0 for m <= 0. */
+double noise_budget_for_rmse(double figure, double margin);
+
+/* How much a reference of noise RMSE n inflates a figure of true RMSE f:
+ * sqrt(f^2 + n^2) - f. */
+double noise_inflation_of_rmse(double figure, double noise_rmse);
+
 #endif

@@ -9,6 +9,7 @@
 
 #include "core/statistics/paired_power.h"
 #include "core/statistics/sample_mean.h"
+#include "metrics/noise_corrected.h"
 #include "report/claims_table.h"
 #include "report/html_text.h"
 
@@ -190,6 +191,58 @@ void headline_from_paired_cases(report_headline *h, double d, double s, int case
     say_cases_to_decide(h, d, s * sqrt((double)cases));
 }
 
+void noise_budget_phrase(double noise, double figure, double margin, char *out, size_t size)
+{
+    double truth = noise_corrected_rmse(figure, noise * noise), budget = noise_budget_for_rmse(truth, margin);
+    if (noise <= budget)
+        snprintf(out, size, "noise RMSE %.2g, within its budget %.2g", noise, budget);
+    else
+        snprintf(out, size, "noise RMSE %.2g, over its budget %.2g: figures near %.2g read up to %.2g high", noise,
+                 budget, figure, figure - truth);
+}
+
+/* The best figure is measured against the noisy references: its true RMSE
+ * is estimated with their noise taken out, and the budget is that
+ * figure's (noise_budget_for_rmse). */
+void headline_state_reference_noise(report_headline *h, double noise)
+{
+    if (!(noise >= 0) || !(h->margin > 0))
+        return;
+    h->reference_noise = noise;
+    h->noise_budget = noise_budget_for_rmse(noise_corrected_rmse(h->best_error, noise * noise), h->margin);
+    char phrase[HEADLINE_TEXT];
+    noise_budget_phrase(noise, h->best_error, h->margin, phrase, sizeof phrase);
+    size_t k = strlen(h->basis);
+    snprintf(h->basis + k, sizeof h->basis - k, "; references' %s", phrase);
+}
+
+int headline_missed_noise_budget(const report_headline *h)
+{
+    return h->noise_budget > 0 && h->reference_noise > h->noise_budget;
+}
+
+/* The rows whose references missed their noise budget, appended to out. */
+static void append_missed_budgets(const report_headline *rows, int count, char *out, size_t size)
+{
+    const char *lead = " The references of ";
+    int missed = 0;
+    for (int i = 0; i < count; ++i) {
+        if (!headline_missed_noise_budget(&rows[i]))
+            continue;
+        size_t k = strlen(out);
+        snprintf(out + k, size - k, "%s%s (noise RMSE %.2g, budget %.2g)", lead, rows[i].topic,
+                 rows[i].reference_noise, rows[i].noise_budget);
+        lead = ", ", ++missed;
+    }
+    if (missed > 0) {
+        size_t k = strlen(out);
+        snprintf(out + k, size - k, " missed their noise budget at this quality: %s figures read high and %s gaps "
+                 "low (the noise adds the same variance to both sides of a gap, so it cannot reverse a ranking, only "
+                 "hide a visible gap).",
+                 missed == 1 ? "its" : "their", missed == 1 ? "its" : "their");
+    }
+}
+
 const char *headline_significance_name(headline_significance s)
 {
     static const char *const names[] = {"not computed", "significant at 95%", "not significant at this quality",
@@ -252,6 +305,7 @@ void headlines_opening(const report_headline *rows, int count, char *out, size_t
     }
     size_t k = strlen(out);
     snprintf(out + k, size - k, ".");
+    append_missed_budgets(rows, count, out, size);
 }
 
 /* A Markdown cell: '|' would end it. */

@@ -25,7 +25,7 @@
 
 #include <stddef.h>
 
-enum { HEADLINES_MAX = 48, HEADLINE_TEXT = 256 };
+enum { HEADLINES_MAX = 48, HEADLINE_TEXT = 384 };
 
 typedef enum {
     HEADLINE_NOT_COMPUTED,
@@ -58,6 +58,13 @@ typedef struct {
      * have to grow for the floor to fall below the gap, if it falls as
      * 1/sqrt(samples) as Monte Carlo noise does (0: not computed). */
     double samples_factor_to_decide;
+    /* The noise of the references the errors are measured against, as an
+     * RMSE in the measure's units, and its budget: the most noise under
+     * which the best figure reads within a quarter of the margin
+     * (metrics/noise_corrected.h, noise_budget_for_rmse). Both 0: not
+     * stated (a measure that is not an RMSE against a Monte Carlo
+     * reference). Set by headline_state_reference_noise. */
+    double reference_noise, noise_budget;
     char anchor[128];            /* the section's (set by report_add_headline) */
 } report_headline;
 
@@ -100,6 +107,23 @@ void headline_from_noise_floor(report_headline *h, double floor);
  * nothing when h->margin is 0. */
 void headline_apply_margin(report_headline *h, double d, double w);
 
+/* For a row whose errors are RMSEs against Monte Carlo references of
+ * noise RMSE `noise` (sqrt of the mean squared standard error over their
+ * pixels and cases), after its ranking and margin: sets reference_noise and
+ * noise_budget and appends to the basis whether the references met it, and
+ * if not by how much they inflate the best figure. The verdict stands
+ * either way: the noise adds the same mean variance to both sides' squared
+ * errors, so sqrt(a^2 + n^2) - sqrt(b^2 + n^2) keeps the sign of a - b and
+ * shrinks it; it can hide a visible gap, never reverse a ranking. */
+void headline_state_reference_noise(report_headline *h, double noise);
+/* "noise RMSE 0.012, within its budget 0.015" or "noise RMSE 0.06, over
+ * its budget 0.015: figures near 0.12 read up to 0.014 high": a reference
+ * of noise RMSE `noise` against the budget of a measured RMSE `figure`
+ * (its noise taken out first) with visible margin `margin`. */
+void noise_budget_phrase(double noise, double figure, double margin, char *out, size_t size);
+/* Whether h's references are stated and missed their noise budget. */
+int headline_missed_noise_budget(const report_headline *h);
+
 /* "significant at 95%", "not significant at this quality", "above the
  * noise floor (no interval)", "not computed". */
 const char *headline_significance_name(headline_significance s);
@@ -107,7 +131,8 @@ const char *headline_significance_name(headline_significance s);
 /* The sentence the summary opens with (issue 46 item 2): how many
  * rankings are decided (significant and visible), how many are equal to a
  * viewer, and, for each undecided one, what would decide it (cases_to_decide
- * or samples_factor_to_decide). Empty for no rows; truncated to size. */
+ * or samples_factor_to_decide), then which rows' references missed their
+ * noise budget. Empty for no rows; truncated to size. */
 void headlines_opening(const report_headline *rows, int count, char *out, size_t size);
 
 /* The summary table as Markdown and HTML (malloc'd, NULL-terminated; both

@@ -9,6 +9,7 @@
 #include "core/files/exr_io.h"
 #include "core/files/image_io.h"
 #include "core/reference_schema.h"
+#include "metrics/noise_corrected.h"
 #include "metrics/ssim.h"
 #include "raytracer/reference_render.h"
 #include "project/scene_list.h"
@@ -36,6 +37,7 @@ static void measure(const image *img, const render_stats *stats, ao_reference_ro
     r->mean_spp = covered ? samples / covered : 0.0;
     r->mean_stderr = covered ? sum_err / covered : 0.0;
     r->max_stderr = max_err;
+    r->noise_rmse = sqrt(noise_mean_variance(err, mask, image_pixel_count(img)));
 }
 
 /* The bent normal shown as 0.5 + 0.5 n (black off the surfaces). */
@@ -122,7 +124,7 @@ static int study_scene(const study_scene_entry *b, const reference_request *req,
 ao_references_request ao_references_default_request(study_quality quality)
 {
     const ao_quality *q = ao_quality_of(quality);
-    ao_references_request rq = {q->image_width, q->reference_spp, q->target_stderr, 1, 0};
+    ao_references_request rq = {q->image_width, q->reference_spp, q->noise_budget, 1, 0};
     return rq;
 }
 

@@ -27,13 +27,14 @@ typedef struct {
     int width, height, covered_pixels;
     double seconds, rays_per_second, mean_spp;
     double mean_stderr, max_stderr; /* of ao.V over the covered pixels */
+    double noise_rmse;              /* sqrt(mean stderr^2): the noise a figure against it carries */
     double noise_floor_dssim;       /* even vs odd samples */
 } ao_reference_row;
 
 typedef struct {
     int size;             /* image width (the height follows the scene's camera) */
     int spp;              /* samples per pixel (the most with a target) */
-    double target_stderr; /* 0: every pixel takes spp samples */
+    double target_stderr; /* the noise budget a pixel stops at; 0: every pixel takes spp samples */
     uint32_t seed;
     int scene_count;      /* the first scene_count built-in scenes; 0: all */
 } ao_references_request;

@@ -31,6 +31,7 @@ static const report_column columns[] = {
     REPORT_REAL(NULL, "rays_per_second", NULL, ao_reference_row, rays_per_second),
     REPORT_REAL("mean stderr", "mean_stderr_ao", "%.2e", ao_reference_row, mean_stderr),
     REPORT_REAL("max stderr", "max_stderr_ao", "%.2e", ao_reference_row, max_stderr),
+    REPORT_REAL("noise RMSE", "noise_rmse_ao", "%.2e", ao_reference_row, noise_rmse),
     REPORT_REAL("noise floor (DSSIM)", "noise_floor_dssim_ao", "%.2e", ao_reference_row, noise_floor_dssim),
 };
 
@@ -55,14 +56,17 @@ int ao_references_section(report_context *ctx, const ao_references_result *r, gt
     char stop[96] = "";
     const ao_references_request *rq = &r->request;
     if (rq->target_stderr > 0)
-        snprintf(stop, sizeof stop, ", stopping at a standard error of %g", rq->target_stderr);
+        snprintf(stop, sizeof stop, ", a pixel stopping at its noise budget, a standard error of %g", rq->target_stderr);
     report_heading(ctx->doc, 2, "Ambient occlusion and bent-normal references");
     report_paragraph(ctx->doc,
                      "Cosine-weighted AO V_d = (1/pi) integral of V(w) (n.w) over the hemisphere, uniform AO and "
                      "the bent normal, at the surface seen through each pixel centre, rendered with Embree from "
                      "Owen-scrambled Sobol' samples (%d per pixel at most%s; seed %u). Standard errors are per "
                      "pixel, from the samples themselves. The noise floor is the DSSIM between the AO of the even "
-                     "and of the odd samples: no approximation can be scored more finely than that.",
+                     "and of the odd samples: no approximation can be scored more finely than that. The noise RMSE, "
+                     "sqrt(mean stderr^2), is what an RMSE against the reference carries: an error of true RMSE f "
+                     "reads sqrt(f^2 + noise^2); where it is ranked the report checks it against the figures' "
+                     "budget (At a glance, GTAO).",
                      rq->spp, stop, (unsigned)rq->seed);
     report_rows(ctx->doc, cJSON_AddArrayToObject(ctx->summary, "ao_references"), columns,
                 (int)(sizeof columns / sizeof columns[0]), r->rows, sizeof r->rows[0], r->count);

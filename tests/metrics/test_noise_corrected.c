@@ -62,9 +62,45 @@ static void test_corrected_rmse(void)
     CHECK_NEAR(noise_corrected_rmse(0.5, 0.09), 0.4, 1e-15);
 }
 
+/* The budget against its definition: a reference with exactly the budget's
+ * noise, put through the measured-RMSE identity above (an image whose true
+ * RMSE is f against a reference with noise RMSE n, check_recovers_offset),
+ * shows f + m/4; half the budget's variance shows less. */
+static void check_budget(double figure, double margin)
+{
+    double n = noise_budget_for_rmse(figure, margin);
+    float truth[N], ref[N], approx[N];
+    for (int i = 0; i < N; ++i) {
+        truth[i] = 0.5f;
+        ref[i] = (float)(truth[i] + (i % 2 ? n : -n));
+        approx[i] = (float)(truth[i] + figure);
+    }
+    image_error_stats st;
+    gt_error e;
+    CHECK(image_error_compute(approx, ref, NULL, W, H, "t", &st, &e) == 0);
+    CHECK_NEAR(st.rmse, figure + 0.25 * margin, 1e-6);
+    CHECK_NEAR(noise_inflation_of_rmse(figure, n), 0.25 * margin, 1e-12);
+    CHECK(noise_inflation_of_rmse(figure, n / sqrt(2.0)) < 0.25 * margin);
+}
+
+static void test_budget(void)
+{
+    check_budget(0.125, 1.0 / 255.0);
+    check_budget(0.0, 0.01); /* a perfect figure: the budget is m/4 itself */
+    CHECK_NEAR(noise_budget_for_rmse(0.0, 0.01), 0.0025, 1e-15);
+    check_budget(0.5, 0.25);
+    /* Closed form, worked by hand: f = 0.12, m = 0.004: sqrt(0.00024 + 1e-6). */
+    CHECK_NEAR(noise_budget_for_rmse(0.12, 0.004), sqrt(0.000241), 1e-15);
+    CHECK(noise_budget_for_rmse(0.1, 0.0) == 0.0);
+    CHECK(noise_budget_for_rmse(0.1, NAN) == 0.0);
+    /* A larger figure tolerates more noise: the inflation is second order in n. */
+    CHECK(noise_budget_for_rmse(0.2, 0.004) > noise_budget_for_rmse(0.1, 0.004));
+}
+
 int main(void)
 {
     test_mean_variance();
     test_corrected_rmse();
+    test_budget();
     return check_report("metrics_noise_corrected");
 }

@@ -212,6 +212,34 @@ static void test_headline_opening(void)
     report_free(&r);
 }
 
+/* The references' noise against a row's budget (issue 46 item 1): the
+ * budget is the closed form of metrics/noise_corrected.h at the best figure
+ * with the noise taken out; a row that misses it says by how much its
+ * figures read high, keeps its verdict, and the opening names it. */
+static void test_headline_noise_budget(void)
+{
+    /* Best 0.13 measured against references of noise 0.05: truth
+     * sqrt(0.0169 - 0.0025) = 0.12, budget sqrt(0.12 * 0.004 / 2 + 0.004^2 / 16) = 0.0155. */
+    report_headline h = {.topic = "N", .best_error = 0.13, .margin = 0.004, .significance = HEADLINE_SIGNIFICANT};
+    headline_state_reference_noise(&h, 0.05);
+    double budget = sqrt(0.12 * 0.004 / 2 + 0.004 * 0.004 / 16);
+    CHECK_NEAR(h.noise_budget, budget, 1e-12);
+    CHECK(h.reference_noise == 0.05 && headline_missed_noise_budget(&h) && h.significance == HEADLINE_SIGNIFICANT);
+    CHECK(strstr(h.basis, "references' noise RMSE 0.05, over its budget 0.016: figures near 0.13 read up to 0.01 high"));
+    report_headline quiet = {.topic = "Q", .best_error = 0.13, .margin = 0.004};
+    headline_state_reference_noise(&quiet, 0.01);
+    CHECK(!headline_missed_noise_budget(&quiet) && strstr(quiet.basis, "noise RMSE 0.01, within its budget"));
+    report_headline unstated = {.topic = "U", .best_error = 0.13};
+    headline_state_reference_noise(&unstated, 0.05); /* no margin: no budget */
+    CHECK(!headline_missed_noise_budget(&unstated) && unstated.basis[0] == 0);
+    report_headline rows[3] = {h, quiet, unstated};
+    char s[2048];
+    headlines_opening(rows, 3, s, sizeof s);
+    CHECK(strstr(s, " The references of N (noise RMSE 0.05, budget 0.016) missed their noise budget at this quality: "
+                    "its figures read high and its gaps low"));
+    CHECK(!strstr(s, "of Q") && !strstr(s, "of U"));
+}
+
 /* A visible margin m (issue 42): a significant gap whose interval lies in
  * [-m, m] is no visible difference; a significant gap below m is not
  * called significant; one past m stays significant; with Student's t the
@@ -392,6 +420,7 @@ int main(void)
     test_headline_verdicts();
     test_headline_opening();
     test_headline_margin();
+    test_headline_noise_budget();
     test_headline_paired();
     test_headline_table();
     test_conclusions_first_and_folding();

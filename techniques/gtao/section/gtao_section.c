@@ -11,7 +11,9 @@
 
 #include "gtao/gtao_section.h"
 
+#include "metrics/noise_corrected.h"
 #include "report/claim_thresholds.h"
+#include "report/report_headline.h"
 #include "gtao/gtao_shortcuts_section.h"
 #include "gtao/gtao_params_json.h"
 #include "report/gnuplot_plot.h"
@@ -48,20 +50,24 @@ static const report_column fit_score_columns[] = {
 
 static void render_introduction(report *doc, const gtao_validation_result *r)
 {
+    char budget[96] = "";
+    if (r->heightfield_noise_budget > 0)
+        snprintf(budget, sizeof budget, " at most, a pixel stopping at its noise budget, a standard error of %g",
+                 r->heightfield_noise_budget);
     report_heading(doc, 2, "GTAO, HBAO and volumetric obscurance against two references");
     report_paragraph(doc,
                      "Each technique runs on the G-buffer of the AO references (same camera, same pixels) with no "
                      "radius limit (the references have none; the screen radius is the image width, no falloff), "
                      "VO with a sphere of a quarter of the camera's distance to its target. Scores are against (a) the height-field Monte Carlo reference (rays "
                      "blocked only by the depth buffer taken as a height field of infinite thickness; %d samples "
-                     "per pixel), which GTAO computes exactly given enough slices and samples (tested), so the "
+                     "per pixel%s), which GTAO computes exactly given enough slices and samples (tested), so the "
                      "distance to it is sampling and denoising error; and (b) the 3-D ray-traced reference, which "
                      "adds the height-field assumption's error. 'N frames' is the temporal accumulation over N frames "
                      "of the talk's pattern with a static camera (24 is its full cycle; the preview stops at 6); ms "
                      "are per frame on this machine, shared with other work. Brute-force GTAO (the reference "
                      "preset's exact horizons, one frame) runs at every quality, with fewer slices at preview; the "
                      "baselines' converged runs at production quality only.",
-                     r->heightfield_spp);
+                     r->heightfield_spp, budget);
 }
 
 /* A noise-corrected RMSE, or the plain fact that it is within the noise. */
@@ -186,11 +192,60 @@ static void render_heatmaps(report *doc, const char *scene)
     report_comparison(doc, 6, p, what, 3, caption);
 }
 
-static void render_scene(report *doc, cJSON *list, cJSON *exact, const gtao_validation_scene *s)
+/* Whether x runs in real time: every variant but brute-force GTAO (exact
+ * horizons through every pixel cell, seconds a frame), which is the bound
+ * the real-time variants approach, not one of them. */
+static int real_time_variant(const ao_variant_row *x)
+{
+    return !(x->technique == AO_TECHNIQUE_GTAO && x->preset == GTAO_PRESET_REFERENCE);
+}
+
+/* The lowest RMSE of a real-time variant on scene s, against the 3-D
+ * reference (against_3d) or the height field. */
+static double best_real_time_rmse(const gtao_validation_scene *s, int against_3d)
+{
+    double best = NAN;
+    for (int v = 0; v < s->variant_count; ++v) {
+        const ao_variant_row *x = &s->variants[v];
+        double rmse = against_3d ? x->rmse_3d : x->rmse_hf;
+        if (real_time_variant(x) && (isnan(best) || rmse < best))
+            best = rmse;
+    }
+    return best;
+}
+
+/* Each reference's noise beside the figures it supports, against the
+ * budget of the scene's best real-time figure (issue 46 item 1); into
+ * summary.json's gtao_reference_noise too. */
+static void render_reference_noise(report *doc, cJSON *list, const gtao_validation_scene *s)
+{
+    double noise_3d = sqrt(s->ref3d_mean_variance), noise_hf = sqrt(s->hf_mean_variance);
+    double best_3d = best_real_time_rmse(s, 1), best_hf = best_real_time_rmse(s, 0);
+    char text_3d[HEADLINE_TEXT], text_hf[HEADLINE_TEXT];
+    noise_budget_phrase(noise_3d, best_3d, CLAIM_ONE_CODE_VALUE_8BIT, text_3d, sizeof text_3d);
+    noise_budget_phrase(noise_hf, best_hf, CLAIM_ONE_CODE_VALUE_8BIT, text_hf, sizeof text_hf);
+    report_paragraph(doc, "The references' noise on %s: the 3-D reference's %s (its best real-time RMSE %.4f); the "
+                          "height field's %s (%.4f). A budget is the most noise under which a figure reads within a "
+                          "quarter of one 8-bit code value.",
+                     s->scene, text_3d, best_3d, text_hf, best_hf);
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddStringToObject(o, "scene", s->scene);
+    cJSON_AddNumberToObject(o, "noise_rmse_3d", noise_3d);
+    cJSON_AddNumberToObject(o, "budget_3d", noise_budget_for_rmse(noise_corrected_rmse(best_3d, s->ref3d_mean_variance),
+                                                                  CLAIM_ONE_CODE_VALUE_8BIT));
+    cJSON_AddNumberToObject(o, "noise_rmse_heightfield", noise_hf);
+    cJSON_AddNumberToObject(o, "budget_heightfield",
+                            noise_budget_for_rmse(noise_corrected_rmse(best_hf, s->hf_mean_variance),
+                                                  CLAIM_ONE_CODE_VALUE_8BIT));
+    cJSON_AddItemToArray(list, o);
+}
+
+static void render_scene(report *doc, cJSON *list, cJSON *exact, cJSON *noise, const gtao_validation_scene *s)
 {
     report_heading(doc, 3, s->scene);
     report_rows(doc, list, variant_columns, COUNT(variant_columns), s->variants, sizeof s->variants[0],
                 s->variant_count);
+    render_reference_noise(doc, noise, s);
     render_statement(doc, s);
     gtao_exact_horizons_statement(doc, exact, s);
     render_heatmaps(doc, s->scene);
@@ -292,13 +347,6 @@ static void render_fit(report *doc, const gtao_fit_request *rq, const gtao_fit_r
                    r->value[0], r->value[1], r->value[2], bounds[0] ? "; see the section on the range's edge" : "");
 }
 
-/* Whether x runs in real time: every variant but brute-force GTAO (exact
- * horizons through every pixel cell, seconds a frame), which is the bound
- * the real-time variants approach, not one of them. */
-static int real_time_variant(const ao_variant_row *x)
-{
-    return !(x->technique == AO_TECHNIQUE_GTAO && x->preset == GTAO_PRESET_REFERENCE);
-}
 
 /* The summary table's row: the real-time variants (by label, as run on the
  * first scene) ranked by their mean RMSE against the 3-D reference over
@@ -326,8 +374,13 @@ void gtao_headline(report *doc, const gtao_validation_result *r)
     snprintf(h.measure, sizeof h.measure, "mean RMSE vs the 3-D reference (%d scenes; real-time variants, no radius limit, "
              "as the references)", scenes);
     snprintf(over, sizeof over, "paired over %d scenes", scenes);
-    if (scenes > 0 && headline_rank_paired(&h, ranked, labels, rmse, scenes, over) == 0)
+    double variance = 0.0;
+    for (int i = 0; i < scenes; ++i)
+        variance += r->scenes[i].ref3d_mean_variance / scenes;
+    if (scenes > 0 && headline_rank_paired(&h, ranked, labels, rmse, scenes, over) == 0) {
+        headline_state_reference_noise(&h, sqrt(variance));
         report_add_headline(doc, &h);
+    }
 }
 
 int gtao_section(report_context *ctx, const gtao_validation_result *r, gt_error *e)
@@ -335,8 +388,9 @@ int gtao_section(report_context *ctx, const gtao_validation_result *r, gt_error 
     render_introduction(ctx->doc, r);
     cJSON *list = cJSON_AddArrayToObject(ctx->summary, "gtao");
     cJSON *exact = cJSON_AddArrayToObject(ctx->summary, "gtao_exact_horizons");
+    cJSON *noise = cJSON_AddArrayToObject(ctx->summary, "gtao_reference_noise");
     for (int i = 0; i < r->scene_count; ++i)
-        render_scene(ctx->doc, list, exact, &r->scenes[i]);
+        render_scene(ctx->doc, list, exact, noise, &r->scenes[i]);
     if (render_convergence(ctx, r->convergence_scene, e) != 0 || write_fit(ctx, r, e) != 0)
         return -1;
     render_fit(ctx->doc, &r->fit_request, &r->fit);

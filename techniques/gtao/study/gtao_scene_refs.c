@@ -90,13 +90,13 @@ gtao_params gtao_scene_params(const gtao_scene_refs *s, int preset)
 }
 
 int gtao_render_heightfield(const study_context *ctx, const char *spec, const camera *cam, int spp,
-                            const char *path, image *hf, gt_error *e)
+                            double noise_budget, const char *path, image *hf, gt_error *e)
 {
     scene s;
     if (scene_load(spec, &s, e) != 0)
         return -1;
     reference_request req = {.quantity = QUANTITY_HEIGHTFIELD_AO,
-                             .sampling = {.spp = spp, .seed = 1, .threads = ctx->threads},
+                             .sampling = {.spp = spp, .seed = 1, .target_stderr = noise_budget, .threads = ctx->threads},
                              .normals = NORMAL_SHADING};
     render_stats stats;
     int rc = reference_render(&s, spec, cam, &req, hf, &stats, e);

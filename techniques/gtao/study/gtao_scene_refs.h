@@ -40,11 +40,13 @@ void gtao_scene_refs_free(gtao_scene_refs *s);
 gtao_params gtao_scene_params(const gtao_scene_refs *s, int preset);
 
 /* The height-field reference of scene `spec` at camera `cam` (shading
- * normals, no distance limit, seed 1, spp samples per pixel) into hf,
+ * normals, no distance limit, seed 1, at most spp samples per pixel, a
+ * pixel stopping at the standard error noise_budget; 0: every pixel takes
+ * spp) into hf,
  * written to path (the gtao stage's <scene>_heightfield.exr, the
  * multi-bounce study's "agnostic" source). Returns 0, or -1 with e (hf
  * empty then). */
 int gtao_render_heightfield(const study_context *ctx, const char *spec, const camera *cam, int spp,
-                            const char *path, image *hf, gt_error *e);
+                            double noise_budget, const char *path, image *hf, gt_error *e);
 
 #endif

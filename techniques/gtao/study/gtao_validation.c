@@ -232,7 +232,7 @@ static int write_heatmaps(const char *figures, const char *name, const scene_dat
 /* The two references of one scene: the 3-D one loaded with its G-buffer,
  * the height-field one rendered (and written to dir). */
 static int scene_references(const study_context *ctx, const char *refs_dir, const char *dir, const char *name,
-                            int spp, approx_input *in, image *hf, gt_error *e)
+                            const gtao_validation_result *r, approx_input *in, image *hf, gt_error *e)
 {
     char ref_path[4096], hf_path[4096];
     snprintf(ref_path, sizeof ref_path, "%s/%s.exr", refs_dir, name);
@@ -240,7 +240,8 @@ static int scene_references(const study_context *ctx, const char *refs_dir, cons
     const char *spec = study_scene_spec(ctx, name);
     if (approx_load(ref_path, NULL, in, e) != 0)
         return -1;
-    if (gtao_render_heightfield(ctx, spec, &in->cam, spp, hf_path, hf, e) != 0) {
+    if (gtao_render_heightfield(ctx, spec, &in->cam, r->heightfield_spp, r->heightfield_noise_budget, hf_path, hf,
+                                e) != 0) {
         approx_input_free(in);
         return -1;
     }
@@ -294,7 +295,7 @@ static int study_scene(const study_context *ctx, const char *refs_dir, const cha
 {
     approx_input in;
     image hf;
-    if (scene_references(ctx, refs_dir, dir, s->scene, r->heightfield_spp, &in, &hf, e) != 0)
+    if (scene_references(ctx, refs_dir, dir, s->scene, r, &in, &hf, e) != 0)
         return -1;
     const gtao_quality *q = gtao_quality_of(ctx->quality);
     scene_data d = {&in.g, image_channel_data(&hf, CH_AO), image_channel_data(&in.img, CH_AO), in.g.mask,
@@ -419,6 +420,7 @@ int gtao_validation_study(const study_context *ctx, const gtao_validation_reques
     snprintf(out->convergence_scene, sizeof out->convergence_scene, "%s",
              study_scenes_from_project(ctx) ? study_scene_at(ctx, 0)->label : GTAO_CONVERGENCE_SCENE);
     out->heightfield_spp = gtao_quality_of(ctx->quality)->heightfield_spp;
+    out->heightfield_noise_budget = gtao_quality_of(ctx->quality)->heightfield_noise_budget;
     out->converged_frames = gtao_quality_of(ctx->quality)->converged_frames;
     for (int i = 0; i < study_scene_count(ctx); ++i) {
         if (i == GTAO_VALIDATION_MAX_SCENES)

@@ -98,7 +98,8 @@ typedef struct {
 } gtao_convergence_row;
 
 typedef struct {
-    int heightfield_spp;  /* samples per pixel of the height-field references */
+    int heightfield_spp;  /* samples per pixel of the height-field references (the most, with a budget) */
+    double heightfield_noise_budget; /* the standard error their pixels stop at (0: every pixel takes all) */
     int converged_frames; /* 24 (the talk's full cycle) or 6 at preview quality */
     int scene_count;
     gtao_validation_scene scenes[GTAO_VALIDATION_MAX_SCENES]; /* study_scene_at order */
