@@ -88,6 +88,7 @@ static void add_headline(report *doc, const ao_decals_result *r)
     snprintf(over, sizeof over, "per-scene RMSE paired over %d held-out scenes", r->held_out_scenes);
     headline_pair_cases(&h, AO_DECAL_COMPARED, labels, &r->held_out_scene_rmse[0][0],
                         (int)(sizeof r->held_out_scene_rmse[0] / sizeof(double)), r->held_out_scenes, over);
+    headline_state_reference_noise(&h, r->held_out_noise_rmse);
     report_add_headline(doc, &h);
 }
 
@@ -174,6 +175,7 @@ int ao_decals_section(report_context *ctx, const ao_decals_result *r, gt_error *
                      r->fit_sphere.params[AO_DECAL_WRAP], r->fit_sphere.at_bound, r->fit_pill.params[AO_DECAL_SHAPE],
                      r->fit_pill.standard_errors[AO_DECAL_SHAPE], r->fit_pill.params[AO_DECAL_WRAP], r->fit_pill.at_bound);
     cJSON *json = cJSON_AddObjectToObject(ctx->summary, "ao_decals");
+    cJSON_AddNumberToObject(json, "held_out_noise_rmse", r->held_out_noise_rmse);
     report_rows(ctx->doc, cJSON_AddArrayToObject(json, "rows"), columns, (int)(sizeof columns / sizeof columns[0]),
                 r->rows, sizeof r->rows[0], AO_DECAL_VARIANTS);
     report_paragraph(ctx->doc,

@@ -157,6 +157,7 @@ static double squared_error(const ao_decal_samples *s, const double *params)
 static void compare_fits(ao_decals_result *out, const decal_view *a)
 {
     double params[AO_DECAL_COMPARED][AO_DECAL_PARAMS], fitted[AO_DECAL_COMPARED] = {0}, held[AO_DECAL_COMPARED] = {0};
+    double noise = 0.0; /* the held-out references' squared standard errors */
     ao_decal_published_params(params[AO_DECAL_PUBLISHED]);
     memcpy(params[AO_DECAL_REFIT_K2], out->fit_k2.params, sizeof params[0]);
     memcpy(params[AO_DECAL_REFIT_FREE], out->fit.params, sizeof params[0]);
@@ -174,7 +175,10 @@ static void compare_fits(ao_decals_result *out, const decal_view *a)
                 out->held_out_scene_rmse[m][j] = s.count ? sqrt(sq / (double)s.count) : NAN;
         }
         out->held_out_scenes += !fit_here;
+        for (size_t i = 0; !fit_here && i < s.count; ++i)
+            noise += (double)out->scenes.views[k].stderr_[i] * out->scenes.views[k].stderr_[i];
     }
+    out->held_out_noise_rmse = out->held_out_count ? sqrt(noise / (double)out->held_out_count) : 0.0;
     for (int m = 0; m < AO_DECAL_COMPARED; ++m) {
         out->fitted_rmse[m] = sqrt(fitted[m] / (double)out->fitted_count);
         out->held_out_rmse[m] = sqrt(held[m] / (double)out->held_out_count);

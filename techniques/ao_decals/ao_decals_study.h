@@ -47,6 +47,7 @@ typedef struct {
     /* each held-out scene's own RMSE, [model][scene], for the gap's paired interval */
     double held_out_scene_rmse[AO_DECAL_COMPARED][AO_DECAL_SCENE_VIEWS_MAX];
     int held_out_scenes;
+    double held_out_noise_rmse; /* the held-out references' noise: sqrt(mean stderr^2) over their receivers */
     size_t floor_pixels[AO_DECAL_VIEWS];
     /* the largest |Quilez - exact| visibility over each view's floor pixels (the two closed forms, no reference) */
     double quilez_exact_worst[AO_DECAL_VIEWS];

@@ -3,6 +3,7 @@
  * (equal to Quilez's there), the refit better than the light's sign, which
  * is better than the published sign; the refit inside its bounds, with
  * standard errors, better than the published decal on held-out scenes. */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -27,6 +28,10 @@ static void check_ao_decals(const char *dir)
     /* the refit is identified (inside its bounds, with standard errors) and beats the published decal held out */
     CHECK(r.fit.at_bound == 0 && r.fit.has_covariance && r.held_out_count > 500);
     CHECK(r.held_out_rmse[AO_DECAL_REFIT_FREE] < r.held_out_rmse[AO_DECAL_PUBLISHED]);
+    /* The held-out references' noise, which the At-a-glance row states: some receivers are
+     * occluded, and a cosine-sampled V_d is a 0/1 sample of variance at most 1/4, so with 128
+     * samples (sample variance over n - 1) no pixel's standard error exceeds 0.5 / sqrt(127). */
+    CHECK(r.held_out_noise_rmse > 0.0 && r.held_out_noise_rmse <= 0.5 / sqrt(127.0));
 }
 
 int main(void)
