@@ -66,7 +66,7 @@ static ao_decal_region region_of(const ao_decal_scene_view *view, size_t i)
 
 /* ---- Views ------------------------------------------------------------------------------------ */
 
-static int render(const ao_decal_scene *d, int size, int spp, unsigned seed, int threads, image *img, gt_error *e)
+static int render(const ao_decal_scene *d, int size, const sampling_settings *sampling, image *img, gt_error *e)
 {
     char spec[96];
     snprintf(spec, sizeof spec, "builtin:%s", d->name);
@@ -74,8 +74,7 @@ static int render(const ao_decal_scene *d, int size, int spp, unsigned seed, int
     camera cam;
     if (study_load_view(spec, size, size, &s, &cam, e) != 0)
         return -1;
-    reference_request req = {.quantity = QUANTITY_AO, .sampling = {.spp = spp, .seed = seed, .threads = threads},
-                             .normals = NORMAL_SHADING};
+    reference_request req = {.quantity = QUANTITY_AO, .sampling = *sampling, .normals = NORMAL_SHADING};
     render_stats stats;
     int rc = reference_render(&s, spec, &cam, &req, img, &stats, e);
     scene_free(&s);
@@ -92,8 +91,11 @@ static int alloc_view(ao_decal_scene_view *v, size_t n)
 {
     v->pixel = malloc(n * sizeof *v->pixel), v->p = malloc(n * sizeof *v->p), v->n = malloc(n * sizeof *v->n);
     v->v = malloc(n * sizeof *v->v), v->stderr_ = malloc(n * sizeof *v->stderr_), v->walls = malloc(n * sizeof *v->walls);
+    v->sample_counts = malloc(n * sizeof *v->sample_counts);
     v->region = malloc(n), v->receiver_mask = calloc(n, sizeof *v->receiver_mask);
-    return v->pixel && v->p && v->n && v->v && v->stderr_ && v->walls && v->region && v->receiver_mask ? 0 : -1;
+    return v->pixel && v->p && v->n && v->v && v->stderr_ && v->walls && v->sample_counts && v->region && v->receiver_mask
+               ? 0
+               : -1;
 }
 
 static int gather(ao_decal_scene_view *v, gt_error *e)
@@ -101,7 +103,7 @@ static int gather(ao_decal_scene_view *v, gt_error *e)
     const image *img = &v->img;
     size_t n = image_pixel_count(img);
     const float *mask = image_channel_data(img, CH_MASK), *ao = image_channel_data(img, CH_AO);
-    const float *se = image_channel_data(img, CH_AO_STDERR);
+    const float *se = image_channel_data(img, CH_AO_STDERR), *count = image_channel_data(img, CH_SPP);
     const float *p[3] = {image_channel_data(img, CH_P_X), image_channel_data(img, CH_P_Y), image_channel_data(img, CH_P_Z)};
     const float *nn[3] = {image_channel_data(img, CH_N_X), image_channel_data(img, CH_N_Y), image_channel_data(img, CH_N_Z)};
     if (alloc_view(v, n) != 0)
@@ -113,6 +115,7 @@ static int gather(ao_decal_scene_view *v, gt_error *e)
             continue;
         size_t k = v->count++;
         v->receiver_mask[i] = 1.0f, v->pixel[k] = i, v->p[k] = pi, v->n[k] = ni, v->v[k] = ao[i], v->stderr_[k] = se[i];
+        v->sample_counts[k] = count[i];
         v->walls[k] = v->scene->corner ? (float)(1.0 - corner_walls(pi, ni)) : 1.0f;
         v->region[k] = (unsigned char)region_of(v, k);
     }
@@ -124,7 +127,7 @@ static int gather(ao_decal_scene_view *v, gt_error *e)
 static void free_view(ao_decal_scene_view *v)
 {
     image_free(&v->img);
-    free(v->pixel), free(v->p), free(v->n), free(v->v), free(v->stderr_), free(v->walls), free(v->region);
+    free(v->pixel), free(v->p), free(v->n), free(v->v), free(v->stderr_), free(v->walls), free(v->sample_counts), free(v->region);
     free(v->receiver_mask);
     memset(v, 0, sizeof *v);
 }
@@ -158,7 +161,7 @@ static int write_dssim_map(const char *figures, const ao_decal_scene_view *view,
 }
 
 /* Accumulates the errors of the decal's image a (reference elsewhere) into row. */
-static void accumulate(ao_decal_scene_row *row, const ao_decal_scene_view *view, const double *d, int spp)
+static void accumulate(ao_decal_scene_row *row, const ao_decal_scene_view *view, const double *d)
 {
     double sum = 0.0, bias = 0.0, region_sum[AO_DECAL_REGIONS] = {0};
     size_t outliers = 0;
@@ -167,7 +170,7 @@ static void accumulate(ao_decal_scene_row *row, const ao_decal_scene_view *view,
         ++row->region_pixels[view->region[k]];
         row->worst = fmax(row->worst, fabs(d[k]));
         /* the larger of the sample s.e. and the binomial one under the decal's value (ao_decals_study.c) */
-        double m = view->v[k] + d[k], binomial = sqrt(fmax(m * (1.0 - m), 0.0) / spp);
+        double m = view->v[k] + d[k], binomial = sqrt(fmax(m * (1.0 - m), 0.0) / view->sample_counts[k]);
         outliers += fabs(d[k]) > 4.0 * fmax(fmax(view->stderr_[k], binomial), 1e-6);
     }
     row->pixels = view->count;
@@ -178,7 +181,7 @@ static void accumulate(ao_decal_scene_row *row, const ao_decal_scene_view *view,
 }
 
 int ao_decals_scenes_score(ao_decals_scenes_result *r, const ao_decal_scene_view *view, const char *decal,
-                           const char *key, ao_decal_visibility_fn visibility, const void *user, int spp,
+                           const char *key, ao_decal_visibility_fn visibility, const void *user,
                            const char *figures, gt_error *e)
 {
     if (r->row_count == AO_DECAL_SCENE_ROWS_MAX)
@@ -199,7 +202,7 @@ int ao_decals_scenes_score(ao_decals_scenes_result *r, const ao_decal_scene_view
     ao_decal_scene_row *row = &r->rows[r->row_count++];
     memset(row, 0, sizeof *row);
     row->scene = view->scene->name, row->decal = decal;
-    accumulate(row, view, d, spp);
+    accumulate(row, view, d);
     ssim_result s;
     int rc = ssim_compute(a, ref, view->receiver_mask, view->img.width, view->img.height, "ao decals", map, &s, e);
     row->dssim = rc == 0 ? s.dssim : 0.0;
@@ -234,8 +237,7 @@ static double decal_visibility(const ao_decal_scene_view *view, size_t i, const 
 
 /* The decals that apply to the scene: exact forms only where every occluder has one; the engine's
  * only where it differs (a sphere); the baseline only in the corner. */
-static int score_scene(ao_decals_scenes_result *r, const ao_decal_scene_view *view, int spp, const char *figures,
-                       gt_error *e)
+static int score_scene(ao_decals_scenes_result *r, const ao_decal_scene_view *view, const char *figures, gt_error *e)
 {
     static const decal_kind kinds[] = {DECAL_EXACT, DECAL_ENGINE, DECAL_POINT_TALK, DECAL_POINT_LIGHT, DECAL_WALLS_ONLY};
     static const char *const names[] = {"exact forms", "engine forms (Quilez sphere, exact box)",
@@ -249,13 +251,13 @@ static int score_scene(ao_decals_scenes_result *r, const ao_decal_scene_view *vi
         if ((kinds[k] == DECAL_EXACT && !exact) || (kinds[k] == DECAL_ENGINE && !spheres) ||
             (kinds[k] == DECAL_WALLS_ONLY && !d->corner))
             continue;
-        rc = ao_decals_scenes_score(r, view, names[k], keys[k], decal_visibility, &kinds[k], spp, figures, e);
+        rc = ao_decals_scenes_score(r, view, names[k], keys[k], decal_visibility, &kinds[k], figures, e);
     }
     return rc;
 }
 
-int ao_decals_scenes_study(const study_context *ctx, int size, int spp, unsigned seed, ao_decals_scenes_result *out,
-                           gt_error *e)
+int ao_decals_scenes_study(const study_context *ctx, int size, int spp, double noise_budget, unsigned seed,
+                           ao_decals_scenes_result *out, gt_error *e)
 {
     memset(out, 0, sizeof *out);
     char figures[4096];
@@ -265,9 +267,11 @@ int ao_decals_scenes_study(const study_context *ctx, int size, int spp, unsigned
     for (int s = 0; s < ao_decal_scene_count() && rc == 0; ++s) {
         ao_decal_scene_view *v = &out->views[out->view_count++];
         v->scene = ao_decal_scene_at(s);
-        rc = render(v->scene, size, spp, seed + 10u + (unsigned)s, ctx->threads, &v->img, e);
+        sampling_settings sampling = {.spp = spp, .seed = seed + 10u + (unsigned)s, .target_stderr = noise_budget,
+                                      .threads = ctx->threads};
+        rc = render(v->scene, size, &sampling, &v->img, e);
         rc = rc == 0 ? gather(v, e) : rc;
-        rc = rc == 0 ? score_scene(out, v, spp, figures, e) : rc;
+        rc = rc == 0 ? score_scene(out, v, figures, e) : rc;
     }
     if (rc != 0)
         ao_decals_scenes_free(out);

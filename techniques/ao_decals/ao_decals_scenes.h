@@ -57,6 +57,7 @@ typedef struct {
     size_t *pixel;           /* their image index */
     vec3 *p, *n;
     float *v, *stderr_, *walls; /* the reference's V_d and s.e.; V_walls */
+    float *sample_counts;       /* the reference's samples at each receiver (a pixel stops at its noise budget) */
     unsigned char *region;
     float *receiver_mask;    /* per image pixel */
     ao_decal_volume volumes[AO_DECAL_SCENE_MAX_OCCLUDERS];
@@ -69,16 +70,17 @@ typedef struct {
     ao_decal_scene_view views[AO_DECAL_SCENE_VIEWS_MAX];
 } ao_decals_scenes_result;
 
-/* Renders every decal scene at size^2 pixels and spp samples (seed), scores the decals and writes
- * the DSSIM maps. Keeps the views (free with ao_decals_scenes_free). */
-int ao_decals_scenes_study(const study_context *ctx, int size, int spp, unsigned seed, ao_decals_scenes_result *out,
-                           gt_error *e);
+/* Renders every decal scene at size^2 pixels, at most spp samples a pixel, stopping at the
+ * standard error noise_budget (0: every pixel takes spp; seed), scores the decals and writes the
+ * DSSIM maps. Keeps the views (free with ao_decals_scenes_free). */
+int ao_decals_scenes_study(const study_context *ctx, int size, int spp, double noise_budget, unsigned seed,
+                           ao_decals_scenes_result *out, gt_error *e);
 
 /* Scores one decal (visibility(view, i) for receiver i) on a view: appends a row, writes its DSSIM map
  * when figures is non-NULL. */
 typedef double (*ao_decal_visibility_fn)(const ao_decal_scene_view *view, size_t i, const void *user);
 int ao_decals_scenes_score(ao_decals_scenes_result *r, const ao_decal_scene_view *view, const char *decal,
-                           const char *key, ao_decal_visibility_fn visibility, const void *user, int spp,
+                           const char *key, ao_decal_visibility_fn visibility, const void *user,
                            const char *figures, gt_error *e);
 
 void ao_decals_scenes_free(ao_decals_scenes_result *r);

@@ -140,11 +140,13 @@ int ao_decals_section(report_context *ctx, const ao_decals_result *r, gt_error *
     const ao_decal_fit_result *f = &r->fit, *k2 = &r->fit_k2;
     report_heading(ctx->doc, 2, "AO decals (INSIDE)");
     report_paragraph(ctx->doc,
-                     "INSIDE's multiplicative AO decals against gtlab's cosine AO reference (%dx%d, %d spp) of "
+                     "INSIDE's multiplicative AO decals against gtlab's cosine AO reference (%dx%d, at most %d spp, a "
+                     "pixel stopping at a standard error of %g, its noise budget) of "
                      "builtin:sphere-on-plane, floor pixels only (%zu in view A, %zu in view B). The point decal "
                      "is drawn at radius 3 around the sphere's centre with the talk's sign (pos = p - centre) and "
                      "with a light's (pos = centre - p). View B holds other floor points of the same configuration.",
-                     r->request.size, r->request.size, r->request.spp, r->floor_pixels[0], r->floor_pixels[1]);
+                     r->request.size, r->request.size, r->request.spp, r->request.noise_budget, r->floor_pixels[0],
+                     r->floor_pixels[1]);
     report_paragraph(ctx->doc,
                      "Refit (Ceres, ao_decals/ao_decals_fit.h) on view A and builtin:pill-on-plane (the talk's setting: "
                      "a decal stretched over a pill) together, %zu samples; held out: box-on-plane, box-in-corner and "

@@ -25,14 +25,14 @@ static const ao_decal_volume sphere_volume = {{0.0f, 1.5f, 0.0f}, {1.0f, 1.0f, 1
 ao_decals_request ao_decals_default_request(study_quality quality)
 {
     const ao_decals_quality *q = ao_decals_quality_of(quality);
-    ao_decals_request rq = {q->view_size, q->reference_spp, 3, q->scene_size};
+    ao_decals_request rq = {q->view_size, q->reference_spp, 3, q->scene_size, q->noise_budget};
     return rq;
 }
 
 typedef struct {
     image img;
     vec3 *p, *n;
-    float *v, *stderr_, *floor_mask;
+    float *v, *stderr_, *sample_counts, *floor_mask; /* the reference's samples at each floor pixel */
     size_t count; /* floor pixels */
     ao_decal_samples samples;
 } decal_view;
@@ -45,7 +45,7 @@ static int render_view(const study_context *ctx, const ao_decals_request *rq, in
     if (scene_load("builtin:sphere-on-plane", &s, e) != 0)
         return -1;
     reference_request req = {.quantity = QUANTITY_AO, .sampling = {.spp = rq->spp, .seed = rq->seed + view,
-                             .threads = ctx->threads}, .normals = NORMAL_SHADING};
+                             .target_stderr = rq->noise_budget, .threads = ctx->threads}, .normals = NORMAL_SHADING};
     render_stats stats;
     int rc = reference_render(&s, "builtin:sphere-on-plane", &cam, &req, &dv->img, &stats, e);
     scene_free(&s);
@@ -59,9 +59,11 @@ static int gather_floor(decal_view *dv, gt_error *e)
     const float *mask = image_channel_data(&dv->img, CH_MASK), *px = image_channel_data(&dv->img, CH_P_X);
     const float *py = image_channel_data(&dv->img, CH_P_Y), *pz = image_channel_data(&dv->img, CH_P_Z);
     const float *v = image_channel_data(&dv->img, CH_AO), *se = image_channel_data(&dv->img, CH_AO_STDERR);
+    const float *count = image_channel_data(&dv->img, CH_SPP);
     dv->p = malloc(n * sizeof(vec3)), dv->n = malloc(n * sizeof(vec3));
     dv->v = malloc(n * sizeof(float)), dv->stderr_ = malloc(n * sizeof(float)), dv->floor_mask = malloc(n * sizeof(float));
-    if (!dv->p || !dv->n || !dv->v || !dv->stderr_ || !dv->floor_mask)
+    dv->sample_counts = malloc(n * sizeof(float));
+    if (!dv->p || !dv->n || !dv->v || !dv->stderr_ || !dv->sample_counts || !dv->floor_mask)
         return gt_error_set(e, "ao decals", "out of memory");
     dv->count = 0;
     for (size_t i = 0; i < n; ++i) {
@@ -69,7 +71,7 @@ static int gather_floor(decal_view *dv, gt_error *e)
         if (dv->floor_mask[i] == 0.0f)
             continue;
         dv->p[dv->count] = v3(px[i], 0.0f, pz[i]), dv->n[dv->count] = v3(0, 1, 0);
-        dv->v[dv->count] = v[i], dv->stderr_[dv->count++] = se[i];
+        dv->v[dv->count] = v[i], dv->sample_counts[dv->count] = count[i], dv->stderr_[dv->count++] = se[i];
     }
     dv->samples = (ao_decal_samples){dv->p, dv->n, dv->v, NULL, dv->count, &sphere_volume, 1};
     return dv->count > 0 ? 0 : gt_error_set(e, "ao decals", "no floor pixel in view");
@@ -109,7 +111,7 @@ static int score(int variant, int view, const decal_view *dv, ao_decals_result *
                 fmax(r->quilez_exact_worst[view], fabs(variant_visibility(1, dv, k, r) - variant_visibility(0, dv, k, r)));
         /* a pixel whose samples all agree has a sample s.e. of 0 but no exact mean: the larger of the
          * sample s.e. and the binomial one under the decal's value (tests/raytracer/test_ao_closed_forms.c) */
-        double m = dv->v[k] + d, binomial = sqrt(fmax(m * (1.0 - m), 0.0) / r->request.spp);
+        double m = dv->v[k] + d, binomial = sqrt(fmax(m * (1.0 - m), 0.0) / dv->sample_counts[k]);
         outliers += fabs(d) > 4.0 * fmax(fmax(dv->stderr_[k], binomial), 1e-6);
         ++k;
     }
@@ -125,7 +127,7 @@ static int score(int variant, int view, const decal_view *dv, ao_decals_result *
 static void free_view(decal_view *dv)
 {
     image_free(&dv->img);
-    free(dv->p), free(dv->n), free(dv->v), free(dv->stderr_), free(dv->floor_mask);
+    free(dv->p), free(dv->n), free(dv->v), free(dv->stderr_), free(dv->sample_counts), free(dv->floor_mask);
 }
 
 /* ---- The refit on sphere view A and the pill, held out on the other scenes ----------------------- */
@@ -185,8 +187,7 @@ static void compare_fits(ao_decals_result *out, const decal_view *a)
     }
 }
 
-static int refit(const study_context *ctx, const ao_decals_request *rq, const decal_view *a, ao_decals_result *out,
-                 gt_error *e)
+static int refit(const study_context *ctx, const decal_view *a, ao_decals_result *out, gt_error *e)
 {
     ao_decal_samples sets[AO_DECAL_FIT_SETS_MAX];
     int count = 0, rc = 0;
@@ -202,10 +203,10 @@ static int refit(const study_context *ctx, const ao_decals_request *rq, const de
     for (int k = 0; k < out->scenes.view_count && rc == 0; ++k) {
         const ao_decal_scene_view *v = &out->scenes.views[k];
         const char *name = is_fitted_scene(v) ? "point decal, refit (fitted here)" : "point decal, refit (held out)";
-        rc = ao_decals_scenes_score(&out->scenes, v, name, "refit", refit_visibility, out->fit.params, rq->spp,
-                                    figures, e) ||
+        rc = ao_decals_scenes_score(&out->scenes, v, name, "refit", refit_visibility, out->fit.params, figures,
+                                    e) ||
              ao_decals_scenes_score(&out->scenes, v, "point decal, refit k = 2", "refit_k2", refit_visibility,
-                                    out->fit_k2.params, rq->spp, figures, e);
+                                    out->fit_k2.params, figures, e);
     }
     if (rc == 0)
         compare_fits(out, a);
@@ -223,9 +224,10 @@ int ao_decals_study(const study_context *ctx, const ao_decals_request *rq, ao_de
         rc = render_view(ctx, rq, v, &views[v], e) || gather_floor(&views[v], e);
         out->floor_pixels[v] = views[v].count;
     }
-    rc = rc == 0 ? ao_decals_scenes_study(ctx, rq->scene_size ? rq->scene_size : rq->size, rq->spp, rq->seed,
-                                          &out->scenes, e) : rc;
-    rc = rc == 0 ? refit(ctx, rq, &views[0], out, e) : rc;
+    rc = rc == 0 ? ao_decals_scenes_study(ctx, rq->scene_size ? rq->scene_size : rq->size, rq->spp,
+                                          rq->noise_budget, rq->seed, &out->scenes, e)
+                   : rc;
+    rc = rc == 0 ? refit(ctx, &views[0], out, e) : rc;
     for (int k = 0; k < AO_DECAL_VARIANTS && rc == 0; ++k) {
         out->rows[k].variant = variant_names[k];
         for (int v = 0; v < AO_DECAL_VIEWS && rc == 0; ++v)

@@ -28,6 +28,7 @@ typedef struct {
     int size, spp;
     unsigned seed;
     int scene_size; /* the decal scenes' image side; 0: size */
+    double noise_budget; /* the standard error a reference pixel stops at (spp the most); 0: every pixel takes spp */
 } ao_decals_request;
 
 typedef struct {

@@ -35,7 +35,7 @@ int main(void)
     CHECK(study_make_dir(&top, "ao_decals_scenes", dir, sizeof dir, &e) == 0);
     study_context ctx = {dir, QUALITY_PREVIEW, 2, NULL, NULL, 0};
     static ao_decals_scenes_result r;
-    CHECK_MSG(ao_decals_scenes_study(&ctx, 32, 256, 3, &r, &e) == 0, "%s", e.message);
+    CHECK_MSG(ao_decals_scenes_study(&ctx, 32, 256, 0.0, 3, &r, &e) == 0, "%s", e.message);
     const ao_decal_scene_row *box = row_of(&r, "box-on-plane", "exact");
     CHECK(box && box->pixels > 500 && box->outlier_share <= 0.01 && box->rmse < 0.01);
     const ao_decal_scene_row *overlap = row_of(&r, "overlap-on-plane", "exact");
