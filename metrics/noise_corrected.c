@@ -30,6 +30,11 @@ double noise_budget_for_rmse(double figure, double margin)
     return sqrt((f + quarter) * (f + quarter) - f * f);
 }
 
+double noise_budget_for_measured_rmse(double measured, double noise_rmse, double margin)
+{
+    return noise_budget_for_rmse(noise_corrected_rmse(measured, noise_rmse * noise_rmse), margin);
+}
+
 double noise_inflation_of_rmse(double figure, double noise_rmse)
 {
     double f = fmax(figure, 0.0);

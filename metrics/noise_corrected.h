@@ -34,6 +34,11 @@ double noise_corrected_rmse(double rmse, double mean_variance);
  * biased at all: both sides gain the same mean variance.) 0 for m <= 0. */
 double noise_budget_for_rmse(double figure, double margin);
 
+/* The budget of a figure measured against the noisy reference itself: its
+ * true RMSE estimated first (noise_corrected_rmse with noise_rmse^2), then
+ * noise_budget_for_rmse of that. */
+double noise_budget_for_measured_rmse(double measured, double noise_rmse, double margin);
+
 /* How much a reference of noise RMSE n inflates a figure of true RMSE f:
  * sqrt(f^2 + n^2) - f. */
 double noise_inflation_of_rmse(double figure, double noise_rmse);

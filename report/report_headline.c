@@ -193,7 +193,8 @@ void headline_from_paired_cases(report_headline *h, double d, double s, int case
 
 void noise_budget_phrase(double noise, double figure, double margin, char *out, size_t size)
 {
-    double truth = noise_corrected_rmse(figure, noise * noise), budget = noise_budget_for_rmse(truth, margin);
+    double truth = noise_corrected_rmse(figure, noise * noise);
+    double budget = noise_budget_for_measured_rmse(figure, noise, margin);
     if (noise <= budget)
         snprintf(out, size, "noise RMSE %.2g, within its budget %.2g", noise, budget);
     else
@@ -209,7 +210,7 @@ void headline_state_reference_noise(report_headline *h, double noise)
     if (!(noise >= 0) || !(h->margin > 0))
         return;
     h->reference_noise = noise;
-    h->noise_budget = noise_budget_for_rmse(noise_corrected_rmse(h->best_error, noise * noise), h->margin);
+    h->noise_budget = noise_budget_for_measured_rmse(h->best_error, noise, h->margin);
     char phrase[HEADLINE_TEXT];
     noise_budget_phrase(noise, h->best_error, h->margin, phrase, sizeof phrase);
     size_t k = strlen(h->basis);

@@ -95,6 +95,8 @@ static void test_budget(void)
     CHECK(noise_budget_for_rmse(0.1, NAN) == 0.0);
     /* A larger figure tolerates more noise: the inflation is second order in n. */
     CHECK(noise_budget_for_rmse(0.2, 0.004) > noise_budget_for_rmse(0.1, 0.004));
+    /* Measured against the reference itself: 0.13 under noise 0.05 is a true 0.12. */
+    CHECK_NEAR(noise_budget_for_measured_rmse(0.13, 0.05, 0.004), noise_budget_for_rmse(0.12, 0.004), 1e-12);
 }
 
 int main(void)

@@ -231,12 +231,10 @@ static void render_reference_noise(report *doc, cJSON *list, const gtao_validati
     cJSON *o = cJSON_CreateObject();
     cJSON_AddStringToObject(o, "scene", s->scene);
     cJSON_AddNumberToObject(o, "noise_rmse_3d", noise_3d);
-    cJSON_AddNumberToObject(o, "budget_3d", noise_budget_for_rmse(noise_corrected_rmse(best_3d, s->ref3d_mean_variance),
-                                                                  CLAIM_ONE_CODE_VALUE_8BIT));
+    cJSON_AddNumberToObject(o, "budget_3d", noise_budget_for_measured_rmse(best_3d, noise_3d, CLAIM_ONE_CODE_VALUE_8BIT));
     cJSON_AddNumberToObject(o, "noise_rmse_heightfield", noise_hf);
     cJSON_AddNumberToObject(o, "budget_heightfield",
-                            noise_budget_for_rmse(noise_corrected_rmse(best_hf, s->hf_mean_variance),
-                                                  CLAIM_ONE_CODE_VALUE_8BIT));
+                            noise_budget_for_measured_rmse(best_hf, noise_hf, CLAIM_ONE_CODE_VALUE_8BIT));
     cJSON_AddItemToArray(list, o);
 }
 
