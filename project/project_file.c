@@ -10,8 +10,7 @@
 
 #include "core/files/atomic_file.h"
 #include "core/files/input_file.h"
-#include "core/files/json_check.h"
-#include "core/files/json_unique_keys.h"
+#include "core/files/json_file.h"
 #include "core/files/run_inputs.h"
 #include "scene/builtin_scenes.h"
 #include "core/reference_schema.h"
@@ -45,34 +44,10 @@ static int fail_again(const reader *r, const char *where)
     return fail(r, where, "%s", problem);
 }
 
-/* The whole file, NUL-terminated (free()); NULL with e set. */
-static char *read_text(const char *path, size_t *length, gt_error *e)
-{
-    char *text;
-    return input_file_read(path, PROJECT_FILE_MAX, "project file larger than 1 MiB", &text, length, e) == 0 ? text
-                                                                                                          : NULL;
-}
-
 /* The JSON gate, then cJSON; the root must be an object. */
 static cJSON *parse(const char *path, gt_error *e)
 {
-    size_t length;
-    char *text = read_text(path, &length, e);
-    if (!text)
-        return NULL;
-    cJSON *root = NULL;
-    if (json_check(text, length, json_limits_cjson, path, e) == 0) {
-        const size_t bom = json_bom_length(text, length);
-        root = cJSON_ParseWithLengthOpts(text + bom, length - bom + 1, NULL, 1);
-        if (!cJSON_IsObject(root) || json_check_unique_keys(root, path, e) != 0) {
-            if (!cJSON_IsObject(root))
-                gt_error_set(e, path, "not a JSON object (a gtlab project file expected)");
-            cJSON_Delete(root);
-            root = NULL;
-        }
-    }
-    free(text);
-    return root;
+    return json_file_read_object(path, PROJECT_FILE_MAX, "project file larger than 1 MiB", "a gtlab project file", e);
 }
 
 /* Every key of o is in `allowed` (NULL-ended) or starts with '_' (a comment). */

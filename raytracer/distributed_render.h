@@ -40,6 +40,13 @@ typedef struct {
 int distributed_begin(gt_error *e);
 /* This process's place: its rank in the joined job, else rank 0 of 1. */
 render_share distributed_share(void);
+/* The job's own place, rank and ranks, whatever distributed_share says. */
+render_share distributed_job(void);
+/* From now on every rank renders alone: distributed_share() is rank 0 of 1
+ * and films are not reduced, while distributed_job() and distributed_all
+ * still see the job. For ranks that run different work (`mpirun gtlab all`:
+ * each rank its stages, cli/all_plan.h). */
+void distributed_render_alone(void);
 /* Whether this process writes the outputs: rank 0. */
 int distributed_is_writer(void);
 /* On rank 0 the film becomes the sum of every rank's (same size and
@@ -47,7 +54,8 @@ int distributed_is_writer(void);
  * summed, seconds the longest rank's); other ranks send theirs and keep
  * them. Alone: nothing. Returns 0, or -1 with e. */
 int distributed_reduce_film(mc_film *film, render_stats *stats, gt_error *e);
-/* Whether ok is non-zero on every rank (all ranks must call it); alone: ok. */
+/* Whether ok is non-zero on every rank of the job (all ranks must call it;
+ * a barrier); outside a job: ok. */
 int distributed_all(int ok);
 
 /* The block of the samples [ss->sample_offset, + ss->spp) rank r of n

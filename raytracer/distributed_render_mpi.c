@@ -11,6 +11,7 @@ enum { FILM_TAG = 20, PLANES = 5 };
 #define CHUNK_BYTES ((size_t)1 << 30)
 
 static int joined; /* distributed_begin initialised MPI */
+static int alone;  /* distributed_render_alone: each rank renders by itself */
 
 /* The launchers set these in every process they start: Open MPI's mpirun,
  * PMI (MPICH, srun --mpi=pmi2) and PMIx (srun --mpi=pmix). */
@@ -27,6 +28,8 @@ static void finalize_at_exit(void)
         MPI_Finalize();
 }
 
+void distributed_render_alone(void) { alone = 1; }
+
 int distributed_begin(gt_error *e)
 {
     if (joined || !started_by_launcher())
@@ -39,7 +42,7 @@ int distributed_begin(gt_error *e)
     return 0;
 }
 
-render_share distributed_share(void)
+render_share distributed_job(void)
 {
     render_share s = {0, 1};
     if (joined) {
@@ -48,6 +51,8 @@ render_share distributed_share(void)
     }
     return s;
 }
+
+render_share distributed_share(void) { return alone ? (render_share){0, 1} : distributed_job(); }
 
 typedef struct {
     void *data;
@@ -128,7 +133,7 @@ int distributed_reduce_film(mc_film *film, render_stats *stats, gt_error *e)
 int distributed_all(int ok)
 {
     int all = ok != 0;
-    if (distributed_share().ranks > 1)
+    if (distributed_job().ranks > 1)
         MPI_Allreduce(MPI_IN_PLACE, &all, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
     return all;
 }

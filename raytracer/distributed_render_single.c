@@ -20,6 +20,8 @@ int distributed_begin(gt_error *e)
 }
 
 render_share distributed_share(void) { return (render_share){0, 1}; }
+render_share distributed_job(void) { return (render_share){0, 1}; }
+void distributed_render_alone(void) {}
 
 int distributed_reduce_film(mc_film *film, render_stats *stats, gt_error *e)
 {

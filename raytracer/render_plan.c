@@ -2,17 +2,14 @@
 #define _POSIX_C_SOURCE 200809L
 #include "raytracer/render_plan.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
-#include "core/files/atomic_file.h"
+#include "core/files/batch_script.h"
 #include "core/number_parse.h"
 
-enum { PLAN_PATH_MAX = 4096, MAX_ARGS = 1024 };
+enum { MAX_ARGS = 1024 };
 
 /* The render as planned: its own arguments minus those the plan sets per
  * job (--spp, --sample-offset, --seed, -o/--output), and their values. */
@@ -22,13 +19,6 @@ typedef struct {
     long spp, offset, seed;
     const char *output;
 } planned_render;
-
-/* Where everything lives: the folder, the working folder and gtlab. */
-typedef struct {
-    int jobs;
-    const char *folder;
-    char cwd[PLAN_PATH_MAX], gtlab[PLAN_PATH_MAX];
-} plan_places;
 
 static int read_value(planned_render *r, const char *option, const char *text, gt_error *e)
 {
@@ -87,15 +77,6 @@ static int read_render(int jobs, int argc, char *const *argv, planned_render *r,
     return 0;
 }
 
-/* The argument in single quotes, each ' written '\'' : the shell reads it back as is. */
-static void put_quoted(FILE *out, const char *arg)
-{
-    fputc('\'', out);
-    for (const char *p = arg; *p; ++p)
-        *p == '\'' ? fputs("'\\''", out) : fputc(*p, out);
-    fputc('\'', out);
-}
-
 /* Job j's samples: [first, first + count). */
 static void job_block(const planned_render *r, int jobs, int j, long *first, long *count)
 {
@@ -104,131 +85,66 @@ static void job_block(const planned_render *r, int jobs, int j, long *first, lon
     *count = end - begin;
 }
 
-static void put_part_path(FILE *out, const plan_places *p, int j)
+static void put_part_path(FILE *out, const batch_places *p, int j)
 {
-    char path[PLAN_PATH_MAX];
+    char path[BATCH_PATH_MAX + 32];
     snprintf(path, sizeof path, "%s/part-%d.exr", p->folder, j);
-    put_quoted(out, path);
+    batch_put_quoted(out, path);
 }
 
-/* "gtlab render ... --spp n --sample-offset k --seed s -o DIR/part-j.exr":
- * gtlab by its path, or as "$GTLAB" in a script. */
-static void put_job(FILE *out, const planned_render *r, const plan_places *p, int j, int in_script)
+/* Job j's arguments: "render ... --spp n --sample-offset k --seed s -o DIR/part-j.exr". */
+static void put_job(FILE *out, const void *plan, const batch_places *p, int j)
 {
+    const planned_render *r = plan;
     long first, count;
     job_block(r, p->jobs, j, &first, &count);
-    if (in_script)
-        fputs("\"$GTLAB\"", out);
-    else
-        put_quoted(out, p->gtlab);
     for (int i = 0; i < r->kept_count; ++i)
-        fputc(' ', out), put_quoted(out, r->kept[i]);
+        fputc(' ', out), batch_put_quoted(out, r->kept[i]);
     fprintf(out, " --spp %ld --sample-offset %ld --seed %ld -o ", count, first, r->seed);
     put_part_path(out, p, j);
 }
 
-static void put_jobs_txt(FILE *out, const planned_render *r, const plan_places *p)
+static void put_jobs_txt(FILE *out, const void *plan, const batch_places *p)
 {
-    for (int j = 0; j < p->jobs; ++j) {
-        fputs("cd ", out);
-        put_quoted(out, p->cwd);
-        fputs(" && ", out);
-        put_job(out, r, p, j, 0);
-        fputc('\n', out);
-    }
+    batch_put_jobs_txt(out, p, put_job, plan);
 }
 
-/* The script's common start: bash, strict, in the working folder, $GTLAB. */
-static void put_script_start(FILE *out, const plan_places *p, const char *sbatch_lines)
+static void put_job_sh(FILE *out, const void *plan, const batch_places *p)
 {
-    fprintf(out, "#!/bin/bash\n%sset -euo pipefail\ncd ", sbatch_lines);
-    put_quoted(out, p->cwd);
-    fputs("\nGTLAB=${GTLAB:-", out);
-    put_quoted(out, p->gtlab);
-    fputs("}\n", out);
+    batch_put_job_sh(out, p, "gtlab-render", put_job, plan);
 }
 
-static void put_job_sh(FILE *out, const planned_render *r, const plan_places *p)
+static void put_merge_sh(FILE *out, const void *plan, const batch_places *p)
 {
-    char lines[2 * PLAN_PATH_MAX + 256];
-    snprintf(lines, sizeof lines,
-             "#SBATCH --job-name=gtlab-render\n#SBATCH --array=0-%d\n#SBATCH --output=%s%s%s/job-%%a.log\n"
-             "# Job index: $SLURM_ARRAY_TASK_ID, or the first argument (other schedulers).\n",
-             p->jobs - 1, p->folder[0] == '/' ? "" : p->cwd, p->folder[0] == '/' ? "" : "/", p->folder);
-    put_script_start(out, p, lines);
-    fputs("task=${1:-${SLURM_ARRAY_TASK_ID:?give the job index (0..N-1)}}\ncase \"$task\" in\n", out);
-    for (int j = 0; j < p->jobs; ++j) {
-        fprintf(out, "  %d) exec ", j);
-        put_job(out, r, p, j, 1);
-        fputs(" ;;\n", out);
-    }
-    fprintf(out, "  *) echo \"job.sh: no job '$task' (0..%d)\" >&2; exit 1 ;;\nesac\n", p->jobs - 1);
-}
-
-static void put_merge_sh(FILE *out, const planned_render *r, const plan_places *p)
-{
-    put_script_start(out, p, "#SBATCH --job-name=gtlab-merge\n");
+    const planned_render *r = plan;
+    batch_put_script_start(out, p, "#SBATCH --job-name=gtlab-merge\n");
     fputs("exec \"$GTLAB\" merge", out);
     for (int j = 0; j < p->jobs; ++j)
         fputc(' ', out), put_part_path(out, p, j);
     fprintf(out, " --expect-blocks '%ld:%ld+%ld' -o ", r->seed, r->offset, r->spp);
-    put_quoted(out, r->output);
+    batch_put_quoted(out, r->output);
     fputc('\n', out);
 }
 
-static void put_submit_sh(FILE *out, const planned_render *r, const plan_places *p)
+static void put_submit_sh(FILE *out, const void *plan, const batch_places *p)
 {
-    (void)r, (void)p;
-    fputs("#!/bin/bash\n# The job array, then the merge once every job has succeeded.\nset -euo pipefail\n"
-          "here=$(dirname \"$0\")\narray=$(sbatch --parsable \"$here/job.sh\")\n"
-          "sbatch --dependency=afterok:\"${array%%;*}\" \"$here/merge.sh\"\n",
-          out);
-}
-
-typedef void (*plan_writer)(FILE *, const planned_render *, const plan_places *);
-
-/* Writes one file of the plan (atomically) from its writer. */
-static int write_plan_file(const plan_places *p, const char *name, plan_writer writer, const planned_render *r,
-                           gt_error *e)
-{
-    char path[PLAN_PATH_MAX], *text = NULL;
-    size_t size = 0;
-    snprintf(path, sizeof path, "%s/%s", p->folder, name);
-    FILE *out = open_memstream(&text, &size);
-    if (!out)
-        return gt_error_set(e, path, "out of memory");
-    writer(out, r, p);
-    int rc = fclose(out) != 0 ? gt_error_set(e, path, "out of memory") : atomic_write_text(path, text, e);
-    free(text);
-    return rc;
-}
-
-static int find_places(int jobs, const char *folder, plan_places *p, gt_error *e)
-{
-    p->jobs = jobs;
-    p->folder = folder;
-    ssize_t n = readlink("/proc/self/exe", p->gtlab, sizeof p->gtlab - 1);
-    if (!getcwd(p->cwd, sizeof p->cwd) || n <= 0)
-        return gt_error_set(e, "plan", "cannot resolve the working folder or gtlab's own path");
-    p->gtlab[n] = '\0';
-    if (mkdir(folder, 0777) != 0 && errno != EEXIST)
-        return gt_error_set(e, folder, "cannot create the folder: %s", strerror(errno));
-    return 0;
+    (void)plan, (void)p;
+    batch_put_submit_sh(out, "merge.sh", "merge");
 }
 
 int render_plan_write(int jobs, const char *folder, int argc, char *const *argv, gt_error *e)
 {
     static const char *const names[] = {"jobs.txt", "job.sh", "merge.sh", "submit.sh"};
-    static const plan_writer writers[] = {put_jobs_txt, put_job_sh, put_merge_sh, put_submit_sh};
+    static const batch_file_writer writers[] = {put_jobs_txt, put_job_sh, put_merge_sh, put_submit_sh};
     planned_render *r = malloc(sizeof *r);
-    plan_places *p = malloc(sizeof *p);
+    batch_places *p = malloc(sizeof *p);
     int rc = r && p ? 0 : gt_error_set(e, "plan", "out of memory");
     if (rc == 0)
         rc = read_render(jobs, argc, argv, r, e);
     if (rc == 0)
-        rc = find_places(jobs, folder, p, e);
+        rc = batch_places_find(jobs, folder, p, e);
     for (int i = 0; i < 4 && rc == 0; ++i)
-        rc = write_plan_file(p, names[i], writers[i], r, e);
+        rc = batch_write_file(p, names[i], writers[i], r, e);
     free(r);
     free(p);
     return rc;

@@ -5,23 +5,13 @@
  * sums are exact (core/statistics/mc_film.h), so merging the parts gives the bits of
  * the render in one process. The plan splits [K, K + S) into N blocks,
  * job j taking [K + floor(j S / N), K + floor((j + 1) S / N)), and writes
- * into its folder:
+ * into its folder the files of core/files/batch_script.h: jobs.txt and job.sh
+ * (job j: "gtlab render ... -o DIR/part-j.exr"), merge.sh (`gtlab merge` of
+ * the parts with --expect-blocks: a part of another render, other samples or
+ * seed, or a missing part is refused, raytracer/reference_merge.h; the other
+ * checks are merge's own: scene hash, camera, settings, overlap) and
+ * submit.sh (the array, then merge.sh).
  *
- *   jobs.txt   one shell line a job ("cd CWD && gtlab render ... -o
- *              DIR/part-j.exr"): for any scheduler or `parallel`;
- *   job.sh     a Slurm array script (#SBATCH --array=0-(N-1)); it runs job
- *              $SLURM_ARRAY_TASK_ID, or the index given as its argument
- *              (PBS_ARRAY_INDEX, LSB_JOBINDEX - 1, SGE_TASK_ID - 1, ...);
- *   merge.sh   `gtlab merge` of the parts with --expect-blocks: a part of
- *              another render (other samples or seed) or a missing part is
- *              refused (raytracer/reference_merge.h), the other checks are
- *              merge's own (scene hash, camera, settings, overlap);
- *   submit.sh  `sbatch --parsable job.sh`, then merge.sh with
- *              --dependency=afterok on the array.
- *
- * Relative paths in the render command stay relative to the folder the plan
- * was made in: every job changes to it first. The jobs run the gtlab that
- * made the plan (by its absolute path; $GTLAB overrides it in the scripts).
  * Adaptive renders (--target-stderr, --target-rel-stderr) are refused: each
  * pixel stops by its own samples, so their parts merge to no single render. */
 #ifndef GTLAB_RAYTRACER_RENDER_PLAN_H

@@ -2,11 +2,13 @@
 #include "report/claims_table.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/files/json_file.h"
 #include "report/report_table.h"
 
 static int text_given(const char *s) { return s && s[0] != '\0'; }
@@ -409,4 +411,38 @@ char *claims_table_markdown(const claims_table *t)
     if (fclose(out) != 0)
         return free(text), NULL;
     return text;
+}
+
+/* A row's fields for its JSON form: its record's, then its own. */
+#define RECORD_TEXT(f) {#f, offsetof(claim, record.f), JSON_FIELD_TEXT_POINTER, 0}
+#define RECORD_NUMBER(f, kind) {#f, offsetof(claim, record.f), kind, 0}
+static const json_field claim_fields[] = {
+    RECORD_TEXT(talk),    RECORD_TEXT(seed),         RECORD_TEXT(section),
+    RECORD_TEXT(quote),   RECORD_TEXT(setting),      RECORD_TEXT(setting_note),
+    RECORD_TEXT(reading), RECORD_TEXT(stronger_reading), RECORD_TEXT(tolerance),
+    RECORD_NUMBER(low, JSON_FIELD_DOUBLE), RECORD_NUMBER(high, JSON_FIELD_DOUBLE),
+    RECORD_NUMBER(margin, JSON_FIELD_DOUBLE), RECORD_NUMBER(setting_match, JSON_FIELD_INT),
+    RECORD_NUMBER(form, JSON_FIELD_INT), RECORD_NUMBER(tolerance_source, JSON_FIELD_INT),
+    {"quantity", offsetof(claim, quantity), JSON_FIELD_TEXT_ARRAY, CLAIM_TEXT},
+    {"figure", offsetof(claim, figure), JSON_FIELD_DOUBLE, 0},
+    {"standard_error", offsetof(claim, standard_error), JSON_FIELD_DOUBLE, 0}};
+_Static_assert(sizeof(claim_setting) == sizeof(int) && sizeof(claim_form) == sizeof(int) &&
+                   sizeof(claim_tolerance_source) == sizeof(int),
+               "a record's enums kept as ints");
+
+cJSON *claim_to_json(const claim *c)
+{
+    cJSON *o = cJSON_CreateObject();
+    json_fields_add(o, c, claim_fields, sizeof claim_fields / sizeof claim_fields[0]);
+    return o;
+}
+
+int claims_table_add_json(claims_table *t, const cJSON *o)
+{
+    claim *c = calloc(1, sizeof *c); /* its record's texts point into o */
+    int rc = !c || json_fields_read(o, c, claim_fields, sizeof claim_fields / sizeof claim_fields[0]) != 0
+                 ? -1
+                 : claims_table_add(t, &c->record, c->figure, c->standard_error, "%s", c->quantity);
+    free(c);
+    return rc;
 }

@@ -157,6 +157,15 @@ void claims_table_render(const claims_table *t, report *doc, cJSON *summary);
 /* claims.md: one paragraph per claim, from the records alone. Returns a
  * malloc'd text (NULL if out of memory). */
 char *claims_table_markdown(const claims_table *t);
+/* A row as JSON (a stage's part, report/report_part.h): its record's
+ * fields, quantity, figure and standard error (doubles exact,
+ * core/files/json_file.h). */
+cJSON *claim_to_json(const claim *c);
+/* claims_table_add of a row claim_to_json wrote. The record's texts point
+ * into o, which must outlive the table. 0, or -1 (nothing added) when o is
+ * not such a row. */
+int claims_table_add_json(claims_table *t, const cJSON *o);
+
 /* -1 with e when any record was refused (gtlab all fails with it). */
 int claims_table_check(const claims_table *t, gt_error *e);
 

@@ -6,7 +6,7 @@
 
 #include "core/files/atomic_file.h"
 
-void report_introduce(report_context *ctx, const char *stage_list, const char *project)
+void report_introduce(report_context *ctx, const char *stage_list, const char *project, const char *earlier)
 {
     const char *quality = study_quality_name(ctx->study.quality);
     cJSON_AddStringToObject(ctx->summary, "gtlab_version", GTLAB_VERSION);
@@ -20,6 +20,12 @@ void report_introduce(report_context *ctx, const char *stage_list, const char *p
                      "rerunning the command reproduces the images bit for bit (timings vary with the machine). "
                      "Machine-readable figures: summary.json.",
                      GTLAB_VERSION, quality, stage_option);
+    if (earlier && earlier[0])
+        report_paragraph(ctx->doc,
+                         "The sections of the stages %s come from earlier runs into this folder, at the same quality "
+                         "and for the same project: each stage's part of the report is kept in parts/ and the "
+                         "report is assembled from them, so rerunning some stages keeps the others' sections.",
+                         earlier);
     report_findings_here(ctx->doc);
 }
 

@@ -7,8 +7,10 @@
 #include "report/report_context.h"
 
 /* The version and quality into summary.json, and the paragraph naming the
- * command that made the report (stage_list and project: NULL when not given). */
-void report_introduce(report_context *ctx, const char *stage_list, const char *project);
+ * command that made the report (stage_list and project: NULL when not given)
+ * and the stages whose sections came from earlier runs into the folder
+ * (earlier: their keys, comma-separated; NULL or "" for none). */
+void report_introduce(report_context *ctx, const char *stage_list, const char *project, const char *earlier);
 
 /* <output>/summary.json, written atomically. */
 int report_write_summary(const report_context *ctx, gt_error *e);

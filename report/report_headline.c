@@ -3,10 +3,14 @@
 #include "report/report_headline.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include <cjson/cJSON.h>
+
+#include "core/files/json_file.h"
 #include "core/statistics/paired_power.h"
 #include "core/statistics/sample_mean.h"
 #include "metrics/noise_corrected.h"
@@ -398,4 +402,29 @@ int headlines_render(const report_headline *rows, int count, char **md, char **h
         return -1;
     }
     return 0;
+}
+
+/* The row's fields for its JSON form (the anchor is report_add_headline's). */
+#define TEXT_FIELD(f) {#f, offsetof(report_headline, f), JSON_FIELD_TEXT_ARRAY, HEADLINE_TEXT}
+#define DOUBLE_FIELD(f) {#f, offsetof(report_headline, f), JSON_FIELD_DOUBLE, 0}
+#define INT_FIELD(f) {#f, offsetof(report_headline, f), JSON_FIELD_INT, 0}
+static const json_field headline_fields[] = {
+    TEXT_FIELD(topic),       TEXT_FIELD(measure),         TEXT_FIELD(best),
+    TEXT_FIELD(runner_up),   TEXT_FIELD(basis),           DOUBLE_FIELD(best_error),
+    DOUBLE_FIELD(runner_up_error), DOUBLE_FIELD(margin),  DOUBLE_FIELD(samples_factor_to_decide),
+    DOUBLE_FIELD(reference_noise), DOUBLE_FIELD(noise_budget), INT_FIELD(significance),
+    INT_FIELD(cases_to_decide),    INT_FIELD(cases)};
+_Static_assert(sizeof(headline_significance) == sizeof(int), "significance kept as an int");
+
+cJSON *headline_to_json(const report_headline *h)
+{
+    cJSON *o = cJSON_CreateObject();
+    json_fields_add(o, h, headline_fields, sizeof headline_fields / sizeof headline_fields[0]);
+    return o;
+}
+
+int headline_from_json(const cJSON *o, report_headline *h)
+{
+    memset(h, 0, sizeof *h);
+    return json_fields_read(o, h, headline_fields, sizeof headline_fields / sizeof headline_fields[0]);
 }

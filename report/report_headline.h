@@ -124,6 +124,13 @@ void noise_budget_phrase(double noise, double figure, double margin, char *out, 
 /* Whether h's references are stated and missed their noise budget. */
 int headline_missed_noise_budget(const report_headline *h);
 
+/* A row as a JSON object of its fields (a stage's part, report/report_part.h;
+ * its doubles exact, core/files/json_file.h), and back: 0, or -1 when o
+ * lacks a field or holds a wrong type. The anchor is not kept:
+ * report_add_headline sets it. */
+struct cJSON *headline_to_json(const report_headline *h);
+int headline_from_json(const struct cJSON *o, report_headline *h);
+
 /* "significant at 95%", "not significant at this quality", "above the
  * noise floor (no interval)", "not computed". */
 const char *headline_significance_name(headline_significance s);

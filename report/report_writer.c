@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <cjson/cJSON.h>
+
 #include "core/files/atomic_file.h"
 #include "report/compare_viewer.h"
 #include "report/figure_resolve.h"
@@ -169,6 +171,44 @@ static void add_contents_entry(report *r, const char *text, const char *anchor)
     contents_html(r, "</a></li>\n", 0);
 }
 
+/* A journal entry [name] appended to r->journal (NULL: none kept). */
+static cJSON *journal_entry(report *r, const char *name)
+{
+    if (!r->journal)
+        return NULL;
+    cJSON *entry = cJSON_CreateArray();
+    if (!entry || !cJSON_AddItemToArray(entry, cJSON_CreateString(name)) ||
+        !cJSON_AddItemToArray(r->journal, entry)) {
+        cJSON_Delete(entry);
+        r->failed = 1;
+        return NULL;
+    }
+    return entry;
+}
+
+static void journal_add(report *r, cJSON *entry, cJSON *item)
+{
+    if (entry && !cJSON_AddItemToArray(entry, item))
+        r->failed = 1;
+}
+
+static void journal_text(report *r, cJSON *entry, const char *text)
+{
+    if (entry)
+        journal_add(r, entry, cJSON_CreateString(text ? text : ""));
+}
+
+static void journal_texts(report *r, cJSON *entry, int count, const char *const *texts)
+{
+    if (!entry)
+        return;
+    cJSON *a = cJSON_CreateArray();
+    for (int i = 0; a && i < count; ++i)
+        if (!cJSON_AddItemToArray(a, cJSON_CreateString(texts[i] ? texts[i] : "")))
+            r->failed = 1;
+    journal_add(r, entry, a);
+}
+
 void report_init(report *r, const char *title)
 {
     memset(r, 0, sizeof *r);
@@ -201,6 +241,9 @@ void report_init(report *r, const char *title)
 
 void report_heading(report *r, int level, const char *text)
 {
+    cJSON *entry = journal_entry(r, "heading");
+    if (entry)
+        journal_add(r, entry, cJSON_CreateNumber(level)), journal_text(r, entry, text);
     char tag[8], anchor[128];
     heading_anchor(r, text, anchor, sizeof anchor);
     if (level == 2) {
@@ -262,6 +305,7 @@ void report_paragraph(report *r, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
+    journal_text(r, journal_entry(r, "paragraph"), text);
     md(r, text);
     md(r, "\n\n");
     if (strlen(text) > REPORT_FOLD_CHARACTERS)
@@ -321,6 +365,7 @@ static void table_row(report *r, const char *const *cells, const char *cell_tag)
 
 void report_table_begin(report *r, int columns, const char *const *headers)
 {
+    journal_texts(r, journal_entry(r, "table_begin"), columns, headers);
     r->table_columns = columns;
     html(r, "<table>\n");
     table_row(r, headers, "th");
@@ -346,6 +391,7 @@ static void align_markdown_columns(report *r, const char *const *cells)
 
 void report_table_row(report *r, const char *const *cells)
 {
+    journal_texts(r, journal_entry(r, "table_row"), r->table_columns, cells);
     if (!r->table_aligned)
         align_markdown_columns(r, cells);
     table_row(r, cells, "td");
@@ -353,6 +399,7 @@ void report_table_row(report *r, const char *const *cells)
 
 void report_table_end(report *r)
 {
+    journal_entry(r, "table_end");
     r->table_columns = 0;
     md(r, "\n");
     html(r, "</table>\n");
@@ -402,6 +449,9 @@ static void html_figure(report *r, int in_view, const char *path, const char *ca
 
 void report_figures(report *r, int count, const char *const *paths, const char *const *captions)
 {
+    cJSON *entry = journal_entry(r, "figures");
+    journal_texts(r, entry, count, paths);
+    journal_texts(r, entry, count, captions);
     md_figures(r, count, paths, captions);
     html(r, "<div>\n");
     for (int i = 0; i < count; ++i)
@@ -412,6 +462,11 @@ void report_figures(report *r, int count, const char *const *paths, const char *
 void report_comparison(report *r, int count, const char *const *paths, const char *const *labels, int exposed,
                        const char *caption)
 {
+    cJSON *entry = journal_entry(r, "comparison");
+    journal_texts(r, entry, count, paths);
+    journal_texts(r, entry, count, labels);
+    if (entry)
+        journal_add(r, entry, cJSON_CreateNumber(exposed)), journal_text(r, entry, caption);
     char attribute[64];
     md(r, caption);
     md(r, ":\n\n");
@@ -429,6 +484,7 @@ void report_comparison(report *r, int count, const char *const *paths, const cha
 
 void report_findings_here(report *r)
 {
+    journal_entry(r, "findings_here");
     r->findings_md_at = r->md_len;
     r->findings_html_at = r->html_len;
 }
@@ -466,6 +522,9 @@ void report_finding(report *r, const char *topic, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
+    cJSON *entry = journal_entry(r, "finding");
+    journal_text(r, entry, topic);
+    journal_text(r, entry, text);
     const char *anchor = r->section_anchor[0] ? r->section_anchor : NULL;
     finding_item(r, finding_md, finding_html, anchor, topic, text);
     if (anchor) /* the section's own conclusions */
@@ -474,6 +533,9 @@ void report_finding(report *r, const char *topic, const char *fmt, ...)
 
 void report_add_headline(report *r, const report_headline *h)
 {
+    cJSON *entry = journal_entry(r, "headline");
+    if (entry)
+        journal_add(r, entry, headline_to_json(h));
     if (r->headline_count >= HEADLINES_MAX)
         return;
     report_headline *row = &r->headlines[r->headline_count++];

@@ -51,6 +51,11 @@ typedef struct {
     size_t section_md_len, section_html_len, section_md_cap, section_html_cap, section_md_at, section_html_at;
     int headline_count;
     report_headline headlines[HEADLINES_MAX];
+    /* When set, every call below (but init, write and free) is also
+     * appended to it as [name, its arguments...], text already formatted:
+     * a `gtlab all` stage's part, replayed into the report by
+     * report/report_part.h. */
+    struct cJSON *journal;
 } report;
 
 void report_init(report *r, const char *title);
