@@ -269,6 +269,53 @@ static void known_seconds(const report_context *ctx, const char *project, double
     }
 }
 
+/* Where a run of the marked stages is: each stage's place among them and
+ * its seconds in an earlier run (NaN: not known). */
+typedef struct {
+    int place[STAGE_MAX], count;
+    double last_seconds[STAGE_MAX];
+} run_progress;
+
+/* The seconds the stages from i on took last time, or NaN if one is unknown. */
+static double seconds_left(const int run[STAGE_MAX], const run_progress *rp, int i)
+{
+    double left = 0;
+    for (int j = i; j < stage_count; ++j)
+        if (run[j])
+            left += rp->last_seconds[j];
+    return left;
+}
+
+/* The stage's line ("gtlab all: [3/23] GTAO validation (223 s last time;
+ * about 5 min left in all)"), its bar's prefix, and what an interruption
+ * says: the stages kept and the command that runs the rest. */
+static void announce_stage(const report_context *ctx, const int run[STAGE_MAX], const run_progress *rp, int i,
+                           const char *project)
+{
+    char prefix[128], last[160] = "", took[32], left[32], note[1024];
+    snprintf(prefix, sizeof prefix, "[%d/%d %s]", rp->place[i], rp->count, stages[i]->key);
+    progress_set_stage(prefix);
+    if (!isnan(rp->last_seconds[i])) {
+        progress_duration_text(rp->last_seconds[i], took, sizeof took);
+        double rest = seconds_left(run, rp, i);
+        progress_duration_text(rest, left, sizeof left);
+        snprintf(last, sizeof last, " (%s last time%s%s%s)", took, isnan(rest) ? "" : "; about ",
+                 isnan(rest) ? "" : left, isnan(rest) ? "" : " left in all");
+    }
+    fprintf(stderr, "gtlab all: [%d/%d] %s%s\n", rp->place[i], rp->count, stages[i]->title, last);
+    int n = snprintf(note, sizeof note, "gtlab all: interrupted in stage %s; the %d stage(s) before it are kept "
+                     "with their parts (%s/%s/), and 'gtlab all --quality %s%s%s --stages ", stages[i]->key,
+                     rp->place[i] - 1, ctx->study.output_dir, REPORT_PARTS_DIR, study_quality_name(ctx->study.quality),
+                     project ? " --project " : "", project ? project : "");
+    for (int j = i, first = 1; j < stage_count && n < (int)sizeof note; ++j)
+        if (run[j])
+            n += snprintf(note + n, sizeof note - (size_t)n, "%s%s", first ? "" : ",", stages[j]->key), first = 0;
+    if (n < (int)sizeof note)
+        snprintf(note + n, sizeof note - (size_t)n, " -o %s' runs the rest into the same report\n",
+                 ctx->study.output_dir);
+    output_set_interrupt_note(note);
+}
+
 /* Runs stage i with its part recorded, then writes the part (DIR/parts)
  * and keeps the stage's files, whatever happens later. */
 static int run_stage(const report_context *ctx, int i, const char *project, gt_error *e)
@@ -277,7 +324,6 @@ static int run_stage(const report_context *ctx, int i, const char *project, gt_e
     report_context stage;
     if (report_part_begin(&rec, ctx, &stage, e) != 0)
         return -1;
-    fprintf(stderr, "gtlab all: %s\n", stages[i]->title);
     double t0 = seconds_now();
     if (stages[i]->run(&stage, e) != 0)
         return report_part_discard(&rec), -1;
@@ -289,6 +335,8 @@ static int run_stage(const report_context *ctx, int i, const char *project, gt_e
     if (output_set_commit(&kept) != 0)
         gt_warn("gtlab all", "%s", kept.message);
     output_set_begin();
+    output_set_interrupt_note(NULL);
+    progress_set_stage(NULL);
     fprintf(stderr, "gtlab all: %s done in %.1f s\n", stages[i]->title, seconds);
     return 0;
 }
@@ -370,9 +418,17 @@ static int assemble_and_print(report_context *ctx, const int selected[STAGE_MAX]
 static int run_marked(const report_context *ctx, const int run[STAGE_MAX], const char *project, int *status)
 {
     gt_error e;
+    run_progress rp = {.count = 0};
+    known_seconds(ctx, project, rp.last_seconds);
     for (int i = 0; i < stage_count; ++i)
-        if (run[i] && run_stage(ctx, i, project, &e) != 0)
+        rp.place[i] = run[i] ? ++rp.count : 0;
+    for (int i = 0; i < stage_count; ++i) {
+        if (!run[i])
+            continue;
+        announce_stage(ctx, run, &rp, i, project);
+        if (run_stage(ctx, i, project, &e) != 0)
             return *status = cli_fail(&e), -1;
+    }
     return 0;
 }
 

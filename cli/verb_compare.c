@@ -24,6 +24,10 @@ static const cli_option options[] = {
                "the error inside the mask, and is printed"),
     CLI_CHOICE("heatmap-metric", "M", metric_name, 2, "abs: |A-B| per pixel (default); dssim: (1 - SSIM) / 2\n"
                "of the window centred on each pixel"),
+    CLI_DOUBLE("scale", "V", 1e-9, 1e9, "the heatmap's full scale, fixed (0.25: the report's AO error maps),\n"
+               "instead of the percentile, so maps of several runs compare"),
+    CLI_SWITCH("colour-bar", "the heatmap's colour bar below it, 0 (left) to the full scale\n"
+               "(right) (default on)"),
     CLI_FLAG("json", "print one JSON object instead of the table"), CLI_END};
 static const cli_command command = {
     "compare",
@@ -34,6 +38,8 @@ static const cli_command command = {
     "            the mean over the window centres inside the mask whose window\n"
     "            lies inside the image (so 5-pixel borders are never centres)\n"
     "  DSSIM     (1 - SSIM) / 2\n"
+    "  FLIP      NVIDIA's FLIP (Andersson et al. 2020) of B against A: LDR-FLIP\n"
+    "            when A's values are at most 1, else HDR-FLIP (metrics/flip.h)\n"
     "  RMSE, mean |A-B|, max |A-B| (and where), means of A and B",
     options, "A.exr B.exr",
     "example: gtlab compare ao_ref.exr ao_gtao.exr --noise-floor --heatmap err.png\n"
@@ -45,11 +51,14 @@ static int parse_options(int argc, char **argv, image_comparison_request *o, int
 {
     int metric = -1;
     cli_arguments files;
-    if (cli_options_parse(&command, (void *[]){&o->channel, &o->noise_floor, &o->heatmap, &metric, json, &files},
-                          argc, argv, status) != 0)
+    o->colour_bar = -1;
+    void *values[] = {&o->channel, &o->noise_floor, &o->heatmap, &metric, &o->scale, &o->colour_bar, json, &files};
+    if (cli_options_parse(&command, values, argc, argv, status) != 0)
         return 1;
-    if (metric >= 0 && !o->heatmap)
-        gt_warn("--heatmap-metric", "ignored without --heatmap");
+    if (!o->heatmap && (metric >= 0 || o->scale > 0 || o->colour_bar >= 0))
+        return *status = cli_failf(metric >= 0 ? "--heatmap-metric" : o->scale > 0 ? "--scale" : "--colour-bar",
+                                   "sets the heatmap: add --heatmap F.png"), 1;
+    o->colour_bar = o->colour_bar != 0;
     o->heatmap_dssim = metric == 1;
     if (files.count != 2)
         return *status = cli_failf("compare", "give exactly two EXR files, A and B (see 'gtlab compare --help')"), 1;

@@ -25,10 +25,10 @@ static int write_heatmap(const image_comparison_request *rq, const metrics_pair 
     metrics_heatmap h;
     if (metrics_pair_heatmap(pair, ssim_map, IMAGE_COMPARISON_HEATMAP_PERCENTILE, rq->heatmap, &h, e) != 0)
         return -1;
-    r->heatmap_vmax = h.vmax;
-    r->heatmap_vmax_rule = scale_rule(h.scale);
-    int status = image_write_heatmap(rq->heatmap, h.values, h.mask, pair->width, pair->height, h.vmax,
-                                     IMAGE_COMPARISON_COLOUR_MAP, e);
+    r->heatmap_vmax = rq->scale > 0 ? (float)rq->scale : h.vmax;
+    r->heatmap_vmax_rule = rq->scale > 0 ? "fixed by --scale" : scale_rule(h.scale);
+    int status = (rq->colour_bar ? image_write_heatmap_with_bar : image_write_heatmap)(
+        rq->heatmap, h.values, h.mask, pair->width, pair->height, r->heatmap_vmax, IMAGE_COMPARISON_COLOUR_MAP, e);
     metrics_heatmap_free(&h);
     return status;
 }
@@ -91,6 +91,7 @@ void image_comparison_print(FILE *f, const image_comparison_request *rq, const i
             r->height, x->error.pixels, x->ssim.centres);
     fprintf(f, "  SSIM          %.6f\n", x->ssim.ssim);
     fprintf(f, "  DSSIM         %.6g\n", x->ssim.dssim);
+    fprintf(f, "  FLIP          %.6g (%s of B against A)\n", x->flip.mean, x->flip.hdr ? "HDR-FLIP" : "LDR-FLIP");
     fprintf(f, "  RMSE          %.6g\n", x->error.rmse);
     fprintf(f, "  mean |A-B|    %.6g\n", x->error.mean_abs);
     fprintf(f, "  max |A-B|     %.6g at pixel (%d, %d)\n", x->error.max_abs, x->error.max_x, x->error.max_y);
@@ -101,8 +102,9 @@ void image_comparison_print(FILE *f, const image_comparison_request *rq, const i
     if (x->has_floor_b)
         fprintf(f, "                DSSIM %.6g between the even and odd samples of B\n", x->floor_b.dssim);
     if (rq->heatmap)
-        fprintf(f, "\nheatmap %s: %s, colour map %s, full scale %.6g (%s); black outside the mask\n", rq->heatmap,
-                heatmap_metric_name(rq), IMAGE_COMPARISON_COLOUR_MAP, r->heatmap_vmax, r->heatmap_vmax_rule);
+        fprintf(f, "\nheatmap %s: %s, colour map %s, full scale %.6g (%s); black outside the mask%s\n", rq->heatmap,
+                heatmap_metric_name(rq), IMAGE_COMPARISON_COLOUR_MAP, r->heatmap_vmax, r->heatmap_vmax_rule,
+                rq->colour_bar ? "; the colour bar below it runs from 0 (left) to the full scale (right)" : "");
 }
 
 static void add_heatmap(cJSON *root, const image_comparison_request *rq, const image_comparison *r)
@@ -113,6 +115,7 @@ static void add_heatmap(cJSON *root, const image_comparison_request *rq, const i
     cJSON_AddStringToObject(h, "colour_map", IMAGE_COMPARISON_COLOUR_MAP);
     cJSON_AddNumberToObject(h, "vmax", r->heatmap_vmax);
     cJSON_AddStringToObject(h, "vmax_is", r->heatmap_vmax_rule);
+    cJSON_AddBoolToObject(h, "colour_bar", rq->colour_bar);
 }
 
 char *image_comparison_json(const image_comparison_request *rq, const image_comparison *r)
@@ -130,6 +133,8 @@ char *image_comparison_json(const image_comparison_request *rq, const image_comp
     cJSON_AddNumberToObject(root, "ssim_window_centres", (double)x->ssim.centres);
     cJSON_AddNumberToObject(root, "ssim", x->ssim.ssim);
     cJSON_AddNumberToObject(root, "dssim", x->ssim.dssim);
+    cJSON_AddNumberToObject(root, "flip", x->flip.mean);
+    cJSON_AddBoolToObject(root, "flip_hdr", x->flip.hdr);
     cJSON_AddNumberToObject(root, "rmse", x->error.rmse);
     cJSON_AddNumberToObject(root, "mean_abs", x->error.mean_abs);
     cJSON_AddNumberToObject(root, "max_abs", x->error.max_abs);

@@ -2,7 +2,8 @@
  * pixels inside both masks (metrics/image_pair.h: SSIM, DSSIM, RMSE, mean
  * and max |A-B|, the references' noise floors), an optional error heatmap
  * written as a PNG (OIIO colour map "inferno", full scale the 99th
- * percentile of the error inside the mask), and the result rendered as a
+ * percentile of the error inside the mask or a fixed one, with its colour
+ * bar below it when asked), and the result rendered as a
  * table or a JSON object. Whatever runs a comparison (the command, a
  * shader run scored against a reference) goes through here. */
 #ifndef GTLAB_METRICS_IMAGE_COMPARISON_H
@@ -22,6 +23,8 @@ typedef struct {
     const char *heatmap;  /* a PNG path, or NULL */
     int heatmap_dssim;    /* the heatmap shows per-window DSSIM, else |A-B| */
     int noise_floor;      /* also the DSSIM between each reference's even- and odd-sample means */
+    double scale;         /* the heatmap's full scale, fixed (the report's error maps: 0.25); 0: the percentile */
+    int colour_bar;       /* the heatmap has its colour bar below it (image_write_heatmap_with_bar) */
 } image_comparison_request;
 
 typedef struct {

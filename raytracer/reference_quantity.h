@@ -96,6 +96,11 @@ typedef struct reference_quantity_descriptor {
     /* gtlab.settings (for people) and the typed attributes of its settings;
      * NULL: none. Returns 0, or -1 when out of memory. */
     int (*write_settings)(const struct reference_request *rq, image *out);
+    /* After a render (in the process that writes it): a warning on stderr
+     * when the image says the setting is likely not what was meant (the AO
+     * quantity: nearly every ray blocked, a camera inside geometry); NULL:
+     * none. */
+    void (*warn_about)(const image *out, const char *scene_spec, const camera *cam);
 } reference_quantity_descriptor;
 
 typedef const reference_quantity_descriptor *reference_quantity;

@@ -7,8 +7,10 @@
 #include <string.h>
 
 #include "core/number_parse.h"
+#include "core/progress.h"
 #include "core/reference_schema.h"
 #include "core/roughness_setting.h"
+#include "raytracer/distributed_render.h"
 #include "raytracer/render_checkpoint.h"
 #include "scene/scene_hash.h"
 
@@ -142,10 +144,21 @@ static int render_quantity(const reference_pass *pass, image *out, render_stats 
     return rc;
 }
 
+/* The scene's name on the progress bar: builtin:boxes as "boxes", a file
+ * by its name. */
+static const char *scene_short_name(const char *scene_spec)
+{
+    const char *slash = strrchr(scene_spec, '/');
+    if (slash)
+        return slash + 1;
+    return strncmp(scene_spec, "builtin:", 8) == 0 ? scene_spec + 8 : scene_spec;
+}
+
 int reference_render(const scene *s, const char *scene_spec, const camera *cam, const reference_request *req,
                      image *out, render_stats *stats, gt_error *e)
 {
     memset(stats, 0, sizeof *stats);
+    progress_set_subject(scene_short_name(scene_spec));
     if (camera_validate(cam, scene_spec, e) != 0)
         return -1;
     if (image_init(out, cam->width, cam->height) != 0)
@@ -164,8 +177,11 @@ int reference_render(const scene *s, const char *scene_spec, const camera *cam, 
         rc = render_quantity(&pass, out, stats, e);
     if (rc == 0 && write_header(s, scene_spec, cam, req, out) != 0)
         rc = gt_error_set(e, scene_spec, "out of memory for the header");
+    if (rc == 0 && quantity_of(req)->warn_about && distributed_is_writer())
+        quantity_of(req)->warn_about(out, scene_spec, cam);
     gbuffer_free(&gb);
     embree_scene_release(&es);
+    progress_set_subject(NULL);
     if (rc != 0)
         image_free(out);
     return rc;

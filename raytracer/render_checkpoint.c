@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "core/files/exr_io.h"
+#include "core/files/output_set.h"
 #include "core/progress.h"
 #include "core/reference_schema.h"
 #include "raytracer/distributed_render.h"
@@ -120,6 +121,47 @@ static int checkpoint_rows(const image *img, const render_checkpoint *cp, block_
     return 0;
 }
 
+/* The value of `key` in an identity's "key=value" lines (its length in *n), or NULL. */
+static const char *identity_value(const char *identity, const char *key, size_t key_length, int *n)
+{
+    for (const char *line = identity; *line;) {
+        const char *end = strchr(line, '\n');
+        size_t length = end ? (size_t)(end - line) : strlen(line);
+        if (length > key_length && strncmp(line, key, key_length) == 0 && line[key_length] == '=') {
+            *n = (int)(length - key_length - 1);
+            return line + key_length + 1;
+        }
+        line += length + (end ? 1 : 0);
+    }
+    return NULL;
+}
+
+/* What differs between a checkpoint's identity and this render's: the first
+ * header attribute of this render whose value there differs ("gtlab.spp is
+ * 1024 there, 2048 here"), values cut at 60 characters. */
+static void identity_difference(const char *theirs, const char *ours, char *out, size_t size)
+{
+    snprintf(out, size, "its %s differs", ATTR_CHECKPOINT_OF);
+    for (const char *line = ours; *line;) {
+        const char *end = strchr(line, '\n'), *equals = strchr(line, '=');
+        size_t length = end ? (size_t)(end - line) : strlen(line);
+        if (equals && (size_t)(equals - line) < length) {
+            size_t key_length = (size_t)(equals - line);
+            int n = 0, ours_n = (int)(length - key_length - 1);
+            const char *value = identity_value(theirs, line, key_length, &n);
+            if (!value || n != ours_n || strncmp(value, equals + 1, (size_t)n) != 0) {
+                char there[80], here[80];
+                snprintf(there, sizeof there, value ? "%.*s%s" : "absent%.*s%s", value ? (n < 60 ? n : 60) : 0,
+                         value ? value : "", value && n > 60 ? "..." : "");
+                snprintf(here, sizeof here, "%.*s%s", ours_n < 60 ? ours_n : 60, equals + 1, ours_n > 60 ? "..." : "");
+                snprintf(out, size, "its %.*s is %s there, %s here", (int)key_length, line, there, here);
+                return;
+            }
+        }
+        line += length + (end ? 1 : 0);
+    }
+}
+
 /* The samples the checkpoint holds: one block of this render's seed from
  * its offset, at most its spp (adaptive: all of them, and the rows done). */
 static int checkpoint_done(const image *img, const render_checkpoint *cp, const sampling_settings *ss,
@@ -129,10 +171,13 @@ static int checkpoint_done(const image *img, const render_checkpoint *cp, const 
     const char *its_rank = image_get_attribute(img, ATTR_CHECKPOINT_RANK);
     char rank[32];
     rank_text(rank, sizeof rank);
-    if (!of || strcmp(of, cp->identity) != 0)
-        return gt_error_set(e, cp->path, "a checkpoint of another render (its %s differs): remove it, or render "
-                                         "without --resume",
-                            ATTR_CHECKPOINT_OF);
+    if (!of || strcmp(of, cp->identity) != 0) {
+        char what[512];
+        identity_difference(of ? of : "", cp->identity, what, sizeof what);
+        return gt_error_set(e, cp->path, "a checkpoint of another render (%s): remove it, or render without "
+                                         "--resume",
+                            what);
+    }
     if (strcmp(its_rank ? its_rank : "", rank) != 0)
         return gt_error_set(e, cp->path, "a checkpoint of another process (its %s is '%s', this one's '%s')",
                             ATTR_CHECKPOINT_RANK, its_rank ? its_rank : "", rank);
@@ -207,6 +252,18 @@ static int render_block(const gbuffer *gb, const integrator *it, const sampling_
     return rc;
 }
 
+/* What an interrupted render says as it exits (core/files/output_set.h):
+ * where its samples are kept and how to go on. */
+static void note_checkpoint_kept(const render_checkpoint *cp, block_units u, uint32_t done)
+{
+    char line[1024];
+    snprintf(line, sizeof line,
+             "gtlab: interrupted: %s keeps the %u of %u %s done; the same command with --resume continues from "
+             "there\n",
+             cp->path, done, u.total, u.by_rows ? "rows" : "samples per pixel");
+    output_set_interrupt_note(line);
+}
+
 /* Renders the blocks after `done`, writing the checkpoint every interval
  * and when stopped. */
 static int render_blocks(const gbuffer *gb, const integrator *it, const sampling_settings *ss,
@@ -218,7 +275,9 @@ static int render_blocks(const gbuffer *gb, const integrator *it, const sampling
     double last = seconds_now();
     uint32_t written = done;
     int rc = 0;
+    progress_span_begin(u.total); /* one bar for all the blocks */
     for (int blocks = 1; rc == 0 && done < u.total && !stop_signal; ++blocks) {
+        progress_span_part(done, block_size(u, done));
         if ((rc = render_block(gb, it, ss, u, done, film, stats, cp->path, e)) != 0)
             break;
         done += block_size(u, done);
@@ -229,8 +288,11 @@ static int render_blocks(const gbuffer *gb, const integrator *it, const sampling
             last = seconds_now(), written = done;
         }
     }
+    progress_span_end();
     if (rc >= 0 && stop_signal && done > written)
-        return write_checkpoint(cp, ss, u, done, film, e);
+        rc = write_checkpoint(cp, ss, u, done, film, e);
+    if (rc >= 0 && stop_signal && done > 0)
+        note_checkpoint_kept(cp, u, done);
     return rc < 0 ? -1 : 0;
 }
 

@@ -130,7 +130,8 @@ static void render_rows(const gbuffer *gb, const integrator *it, const work_shar
         for (int x = 0; x < gb->width && !(stop && *stop); ++x)
             if (gb->mask[y * gb->width + x] || it->covers_background)
                 rays += render_pixel(gb, it, &w->samples, film, x, y, &samples);
-        progress_advance(&bar, 1);
+        if (!(stop && *stop)) /* a stopped render's bar stays where it stopped */
+            progress_advance(&bar, 1);
     }
     progress_end(&bar);
     stats->rays += rays;

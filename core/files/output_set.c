@@ -201,8 +201,27 @@ void output_set_abort(void)
     pthread_mutex_unlock(&entries_lock);
 }
 
+/* The note the handler writes: two buffers, the one published in use. */
+static char notes[2][1024];
+static atomic_int note_in_use = -1;
+
+void output_set_interrupt_note(const char *line)
+{
+    if (!line) {
+        atomic_store(&note_in_use, -1);
+        return;
+    }
+    int next = atomic_load(&note_in_use) == 0 ? 1 : 0;
+    snprintf(notes[next], sizeof notes[next], "%s", line);
+    atomic_store(&note_in_use, next);
+}
+
 static void on_signal(int signal_number)
 {
+    const int note = atomic_load(&note_in_use);
+    if (note >= 0 && write(STDERR_FILENO, notes[note], strlen(notes[note])) < 0) {
+        /* nothing more to say where stderr is gone */
+    }
     for (int i = 0; i < TEMPORARY_SLOTS; ++i) {
         char *p = atomic_load(&temporaries[i]);
         if (p)

@@ -40,6 +40,10 @@ void output_set_abort(void);
 int output_set_is_open(void);
 
 void output_set_install_signal_handlers(void);
+/* The line the handler writes to stderr before it exits (what was kept and
+ * how to continue: "gtlab: interrupted: F.checkpoint.exr keeps ..."); NULL:
+ * none. Copied (at most 1023 bytes); set from the main thread. */
+void output_set_interrupt_note(const char *line);
 
 /* For core/files/atomic_file.c. A temporary exists / no longer exists (the signal
  * handler removes those that exist). */

@@ -163,4 +163,17 @@ assert set(summary["stage_seconds"]) == {"throughput", "total"}, summary["stage_
 sections = [l for l in open(sys.argv[1] + "/report.md") if l.startswith("## ")]
 assert sections == ["## At a glance\n", "## Contents\n", "## Ray throughput\n"], sections
 PY
+# A camera inside geometry (inside box (0, 0) of builtin:boxes): the render is
+# written, with a warning naming the mean AO and the camera (issue 41); the
+# scene's own view gives none.
+printf '{"position":[-10.5,1,-11],"target":[0,1,0],"up":[0,1,0],"yfov_deg":60,"width":32,"height":24}' >"$work/inside.json"
+run render ao --scene builtin:boxes --camera "$work/inside.json" --spp 16 -o "$work/inside.exr"
+if [ "$status" -eq 0 ] && [ -s "$work/inside.exr" ] &&
+  grep -q "^gtlab: warning: builtin:boxes: mean AO 0.0000 .*is the camera (at -10.5, 1, -11) inside geometry" "$work/stderr"; then
+  pass
+else
+  fail "camera inside a box: status $status, stderr: $(cat "$work/stderr")"
+fi
+run render ao --scene builtin:boxes --width 32 --height 24 --spp 16 -o "$work/outside.exr"
+grep -q "inside geometry" "$work/stderr" && fail "the scene's own view warned: $(cat "$work/stderr")" || pass
 finish

@@ -82,5 +82,23 @@ run compare "$work/t1.exr" "$work/t1.exr" --json --noise-floor --heatmap "$work/
 json_is ssim == 1 "$work/stdout" && pass || fail "self-compare SSIM is not 1: $(cat "$work/stdout")"
 json_is noise_floor_dssim '>' 0 "$work/stdout" && pass || fail "noise floor is not positive"
 [ -s "$work/heat.png" ] && pass || fail "no heatmap written"
+json_is flip == 0 "$work/stdout" && pass || fail "self-compare FLIP is not 0: $(grep flip "$work/stdout")"
+# compare prints FLIP beside DSSIM; --scale fixes the heatmap's full scale;
+# its colour bar (default on) adds 2 max(4, h / 16) rows (issue 41).
+"$gtlab" render ao --scene builtin:cornell --width 40 --height 30 --spp 4 --seed 7 -o "$work/t7.exr" >/dev/null 2>&1
+run compare "$work/t1.exr" "$work/t7.exr" --heatmap "$work/bar.png" --scale 0.25
+grep -q "^  FLIP          [0-9.e-]* (LDR-FLIP of B against A)" "$work/stdout" && pass || fail "no FLIP line: $(cat "$work/stdout")"
+grep -q "full scale 0.25 (fixed by --scale).*colour bar below it" "$work/stdout" && pass || fail "scale: $(tail -1 "$work/stdout")"
+python3 - "$work/bar.png" "$work/t7.exr" <<'PY' && pass || fail "the heatmap with its bar has the wrong size"
+import subprocess, sys
+size = lambda f: subprocess.run(["oiiotool", "--info", f], capture_output=True, text=True).stdout.split(":")[1].split(",")[0].split("x")
+w, h = map(int, size(sys.argv[1])); W, H = map(int, size(sys.argv[2]))
+assert w == W and h == H + 2 * max(4, H // 16), (w, h, W, H)
+PY
+run compare "$work/t1.exr" "$work/t7.exr" --json --heatmap "$work/nobar.png" --colour-bar off --scale 0.25
+json_is flip '>' 0 "$work/stdout" && pass || fail "FLIP of two renders is 0"
+python3 -c 'import json,sys; h=json.load(open(sys.argv[1]))["heatmap"]; sys.exit(0 if h["vmax"] == 0.25 and h["colour_bar"] is False else 1)' \
+  "$work/stdout" && pass || fail "--scale/--colour-bar off in the JSON: $(cat "$work/stdout")"
+expect_error scale-alone "--scale: sets the heatmap: add --heatmap F.png" "" -- compare "$work/t1.exr" "$work/t7.exr" --scale 0.25
 no_leftovers "$work"
 finish
