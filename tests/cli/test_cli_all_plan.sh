@@ -68,7 +68,10 @@ expect_error plan-alone "--plan: needs --jobs N" "" -- all --quality preview --p
 expect_error modes "exclude each other" "" -- all --quality preview --plan --jobs 2 --assemble -o x
 
 if [ -n "$mpirun" ]; then
-  if "$mpirun" -x ASAN_OPTIONS --allow-run-as-root --oversubscribe --mca pml ob1 --mca btl self,vader -n 2 \
+  # Open MPI's plug-ins keep allocations until exit and are unloaded before
+  # LeakSanitizer reports ("<unknown module>"): the mpirun run goes without leak
+  # detection, as in test_cli_mpi.sh (the stages' own code is leak-checked above).
+  if ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" "$mpirun" -x ASAN_OPTIONS --allow-run-as-root --oversubscribe --mca pml ob1 --mca btl self,vader -n 2 \
     "$gtlab" all --quality preview --stages "$stages" -o mpi >"$work/mpi.log" 2>&1; then
     pass
     same one mpi "mpirun -n 2 gtlab all"
