@@ -51,29 +51,29 @@ MB_FN mb_color mb_multibounce(mb_color a, mb_color b, mb_color c, mb_real x)
     return mb_max(mb_cubic(a, b, c, x), x);
 }
 
-// a, b, c linear in the albedo (the talk's form); weighted RMSE 0.034 on the data.
+// a, b, c linear in the albedo (the talk's form); weighted RMSE 0.0327 on the data.
 float3 GTAOMultiBounce(float visibility, float3 albedo)
 {
-    float3 a = mb_rho_linear(-0.410513016f, 2.36858912f, albedo);
-    float3 b = mb_rho_linear(0.756992766f, -5.29491468f, albedo);
-    float3 c = mb_rho_linear(0.649464399f, 2.93320111f, albedo);
+    float3 a = mb_rho_linear(-0.408535167f, 2.35962356f, albedo);
+    float3 b = mb_rho_linear(0.754530377f, -5.28282176f, albedo);
+    float3 c = mb_rho_linear(0.650220594f, 2.92940149f, albedo);
     return mb_multibounce(a, b, c, visibility);
 }
 
-// a, b, c quadratic in the albedo; weighted RMSE 0.0322 on the data.
+// a, b, c quadratic in the albedo; weighted RMSE 0.0308 on the data.
 float3 GTAOMultiBounceQuadratic(float visibility, float3 albedo)
 {
-    float3 a = mb_rho_quadratic(0.117251075f, -0.581667886f, 2.94672862f, albedo);
-    float3 b = mb_rho_quadratic(-0.201081133f, 0.0608192633f, -5.34932851f, albedo);
-    float3 c = mb_rho_quadratic(1.08477673f, 0.499759551f, 2.43053107f, albedo);
+    float3 a = mb_rho_quadratic(0.116908795f, -0.577663668f, 2.93377434f, albedo);
+    float3 b = mb_rho_quadratic(-0.200708922f, 0.0570664531f, -5.33350172f, albedo);
+    float3 c = mb_rho_quadratic(1.08467847f, 0.500736434f, 2.42576028f, albedo);
     return mb_multibounce(a, b, c, visibility);
 }
 
-// anchored: V_d + V_d (1 - V_d) (albedo (p1 + q1 V_d) + albedo^2 (p2 + q2 V_d)), exact at albedo 0 and V_d = 0, 1; weighted RMSE 0.0323 on the data. Preferred by the leave-one-scene-out test.
+// anchored: V_d + V_d (1 - V_d) (albedo (p1 + q1 V_d) + albedo^2 (p2 + q2 V_d)), exact at albedo 0 and V_d = 0, 1; weighted RMSE 0.0309 on the data. Preferred by the leave-one-scene-out test.
 float3 GTAOMultiBounceAnchored(float visibility, float3 albedo)
 {
-    float3 a = mb_rho_quadratic(0.0f, 0.0743838878f, 2.29022924f, albedo);
-    float3 b = mb_rho_quadratic(0.0f, -0.991383175f, -4.32792689f, albedo);
-    float3 c = mb_rho_quadratic(1.0f, 0.916999287f, 2.03769765f, albedo);
+    float3 a = mb_rho_quadratic(0.0f, 0.064675288f, 2.2986303f, albedo);
+    float3 b = mb_rho_quadratic(0.0f, -0.977670176f, -4.33928974f, albedo);
+    float3 c = mb_rho_quadratic(1.0f, 0.912994888f, 2.04065944f, albedo);
     return mb_multibounce(a, b, c, visibility);
 }

@@ -87,13 +87,13 @@ void multibounce_bounces_section(report_context *ctx, const multibounce_study_re
     report_heading(ctx->doc, 3, "The bounce count");
     report_paragraph(
         ctx->doc,
-        "The talk fitted its a, b, c to 4-bounce references. The same scenes, cameras and %d samples per pixel "
+        "The talk fitted its a, b, c to 4-bounce references. The same scenes and cameras, %d samples per pixel, "
         "rendered at 1, 2 and unlimited bounces ('inf': Russian roulette with survival probability the albedo, "
         "unbiased but for paths cut after %d bounces), each refitted jointly (a, b, c linear in rho, every scene "
         "and albedo weighted equally; ± the jackknife standard error over scenes). 'talk - refit' is the RMS "
         "over V_d in [0, 1] and rho in [%.1f, %.1f] of the talk's curve minus the refit's, both with the max, "
         "± its jackknife standard error.",
-        r->spp, b->path_limit, MULTIBOUNCE_DISTANCE_ALBEDO_MIN, MULTIBOUNCE_DISTANCE_ALBEDO_MAX);
+        r->substudy_spp, b->path_limit, MULTIBOUNCE_DISTANCE_ALBEDO_MIN, MULTIBOUNCE_DISTANCE_ALBEDO_MAX);
     report_rows(ctx->doc, NULL, bounce_columns, COLUMNS(bounce_columns), b->rows, sizeof b->rows[0],
                 MULTIBOUNCE_BOUNCE_COUNTS);
     report_paragraph(ctx->doc,

@@ -64,7 +64,7 @@ static const claim_record kAgnostic = {
     .setting_match = CLAIM_SETTING_GTLAB,
     .setting_note = MB_SETTING_NOTE "; the two ground truths are the 3-D references and the height-field ones (the "
                     "depth buffer as a height field of infinite thickness, the world screen-space and line-sweep AO "
-                    "see, path-traced with the same albedos, bounces and samples), each V_d scored against the "
+                    "see, path-traced with the same albedos and bounces, at the sub-studies' fixed samples), each V_d scored against the "
                     "multi-bounce truth of its own world",
     .reading = "Fed either ground truth, the 3-D reference's V_d or the height-field reference's (the ground truth of "
                "screen-space and line-sweep AO), the talk's f adds the light of the bounces, f(V_d) - V_d, as "
@@ -84,7 +84,7 @@ static void agnostic_section(report_context *ctx, const multibounce_study_result
         "height-field ones (`gtlab render heightfield-multibounce`: the depth buffer as a height field of "
         "infinite thickness, the world screen-space and line-sweep AO see, where a blocked ray goes on from the "
         "pixel surface or the side of the pixel column it enters; rendered at the reference's camera with the "
-        "same albedos, 4 bounces and %d samples per pixel). Each source's even-sample half feeds f and its odd "
+        "same albedos and 4 bounces, %d samples per pixel). Each source's even-sample half feeds f and its odd "
         "half is its truth. What f claims is the light the bounces add, so each source is scored on its own "
         "change: f(V_d) - V_d against its world's V'_d - V_d, RMS over every scene and albedo, each weighted "
         "equally. RMSE of that change: %.4f in the 3-D world, %.4f in the height field's, a difference of "

@@ -132,6 +132,8 @@ static const report_column render_columns[] = {
     REPORT_REAL(NULL, "seconds", NULL, multibounce_render_row, seconds),
     REPORT_COUNT(NULL, "paths", multibounce_render_row, paths),
     REPORT_COUNT(NULL, "rays", multibounce_render_row, rays),
+    REPORT_REAL(NULL, "mean_spp", NULL, multibounce_render_row, mean_spp),
+    REPORT_REAL(NULL, "noise_rmse", NULL, multibounce_render_row, noise_rmse),
 };
 
 /* summary.json's "multibounce" object: figures of the whole study. */
@@ -195,25 +197,44 @@ static void scenes_text(const report_context *ctx, const multibounce_study_resul
                                     : "");
 }
 
+/* "each pixel's paths stopping at its noise budget, a standard error of ...
+ * (at most N paths; M on average)", or "N paths per pixel" without a budget:
+ * how the references were sampled. */
+static void sampling_text(const multibounce_study_result *r, char *text, size_t size)
+{
+    if (r->noise_budget > 0)
+        snprintf(text, size,
+                 "each pixel's paths stopping at its noise budget, a standard error of %g in V'_d at albedo %.1f "
+                 "(at most %d paths; %.0f on average)",
+                 r->noise_budget, (double)r->albedo_values[0], r->spp, r->mean_spp);
+    else
+        snprintf(text, size, "%d paths per pixel", r->spp);
+}
+
 static void intro(report_context *ctx, const multibounce_study_result *r)
 {
-    char scenes[512];
+    char scenes[512], sampling[256], noise[256];
     scenes_text(ctx, r, scenes, sizeof scenes);
+    sampling_text(r, sampling, sizeof sampling);
+    noise_budget_phrase(r->noise_rmse, fmin(r->fit.heldout_mean_rmse_linear, r->fit.heldout_mean_rmse_talk),
+                        CLAIM_ONE_CODE_VALUE_8BIT, noise, sizeof noise);
     report_heading(ctx->doc, 2, "Multi-bounce AO: references and the GTAO refit");
     report_paragraph(ctx->doc,
                      "Jimenez et al. 2016 ('Multiple Bounces'): V'_d = L / rho of a Lambertian surface of albedo rho "
                      "under a white dome, every surface of albedo rho, %d bounces (inter-reflections after the first "
                      "hit, the talk's 4), against the single-bounce V_d of the same paths. One pass per scene serves "
-                     "all %d albedos (0.1 to 0.9; the talk does not list its seven). The %s, at %dx%d, %d samples "
-                     "per pixel: %.3g paths and %.3g rays in %.1f s. Fit (gtlab fit multibounce; "
+                     "all %d albedos (0.1 to 0.9; the talk does not list its seven). The %s, at %dx%d, %s: "
+                     "%.3g paths and %.3g rays in %.1f s. Fit (gtlab fit multibounce; "
                      "fits/multibounce.json, .h, .hlsl): per albedo V'_d = ((a V_d + b) V_d + c) V_d, and jointly "
                      "a, b, c linear in rho fitted to all samples at once through Ceres, each scene and albedo "
                      "weighted equally; standard errors from Ceres' covariance (pixels taken as independent) and, "
-                     "more telling, the jackknife over scenes. At preview quality V_d itself carries Monte Carlo noise "
-                     "(errors in the variable the fit takes as exact), which flattens fitted curves slightly; "
-                     "production renders 2048 paths per pixel.",
-                     r->bounces, MULTIBOUNCE_STUDY_ALBEDOS, scenes, r->width, r->height, r->spp,
-                     r->total_paths, r->total_rays, r->total_seconds);
+                     "more telling, the jackknife over scenes. V_d itself carries Monte Carlo noise (errors in the "
+                     "variable the fit takes as exact), which flattens fitted curves slightly, and V'_d's noise "
+                     "inflates every RMSE against it: for the held-out figures the references (V'_d, every albedo "
+                     "weighted as the fit weighs them) have %s (V_d of the same paths shares part of that noise, "
+                     "so the residual may carry less).",
+                     r->bounces, MULTIBOUNCE_STUDY_ALBEDOS, scenes, r->width, r->height, sampling, r->total_paths,
+                     r->total_rays, r->total_seconds, noise);
 }
 
 static void fit_tables(report_context *ctx, const multibounce_study_result *r)
@@ -244,6 +265,7 @@ static void add_headline(report *doc, const multibounce_study_result *r)
     h.significance = sigmas > CLAIM_Z ? HEADLINE_SIGNIFICANT : HEADLINE_NOT_SIGNIFICANT;
     snprintf(h.basis, sizeof h.basis, "the talk's coefficients at most %.1f jackknife s.e. from the refit's", sigmas);
     headline_apply_margin(&h, errors[1] - errors[0], 0.0);
+    headline_state_reference_noise(&h, r->noise_rmse);
     report_add_headline(doc, &h);
 }
 

@@ -21,8 +21,8 @@
     "output in engine"
 #define MB_SETTING_NOTE                                                                                               \
     "gtlab's five built-in scenes (sphere-on-plane, corner, menger, boxes, cornell), not the talk's head and "     \
-    "dataset, at 128x128 pixels and 128 paths (preview) or 384x384 and 2048 (production), albedos 0.1, 0.2, 0.3, " \
-    "0.4, 0.5, 0.7, 0.9"
+    "dataset, at the quality table's image size, each pixel's paths stopping at its noise budget (the section "   \
+    "states both), albedos 0.1, 0.2, 0.3, 0.4, 0.5, 0.7, 0.9"
 
 /* The shader's clamp (item 4; multibounce_clamp_section.c). */
 void multibounce_clamp_section(report_context *ctx, const multibounce_study_result *r, cJSON *summary);

@@ -136,7 +136,7 @@ static int same_channels(const multibounce_state *st, const image halves[2])
 }
 
 /* The height-field multi-bounce reference of scene k at its camera (the 3-D
- * reference's albedos, bounces and samples: req), written and accumulated
+ * reference's albedos and bounces; the sub-studies' samples: req), written and accumulated
  * into sums. */
 static int run_heightfield(const study_context *ctx, const reference_request *req, const multibounce_state *st,
                            int k, const char *name, const camera *cam, agnostic_sums *sums, gt_error *e)
@@ -296,7 +296,7 @@ int multibounce_study_gtao(const study_context *ctx, const reference_request *re
         return gt_error_set(e, "multibounce", "out of memory");
     }
     memset(out, 0, sizeof *out);
-    const int spp = req->sampling.spp; /* the 3-D reference's */
+    const int spp = req->sampling.spp; /* the height-field references' */
     int rc = 0;
     for (int k = 0; k < MULTIBOUNCE_STUDY_SCENES && rc == 0; ++k)
         rc = run_scene(ctx, req, st, k, scenes[k], sums, sources, e);

@@ -6,6 +6,9 @@
 #include <string.h>
 
 #include "core/files/exr_io.h"
+#include "core/reference_schema.h"
+#include "metrics/image_error.h"
+#include "metrics/noise_corrected.h"
 #include "metrics/reference_halves.h"
 #include "multibounce/multibounce_parts.h"
 #include "multibounce/multibounce_quality.h"
@@ -25,13 +28,40 @@ static const float kAlbedos[MULTIBOUNCE_STUDY_ALBEDOS] = {0.1f, 0.2f, 0.3f, 0.4f
 /* The study's request, its settings in *mb. */
 static reference_request request(const study_context *ctx, multibounce_render_settings *mb)
 {
+    const multibounce_quality *q = multibounce_quality_of(ctx->quality);
     *mb = (multibounce_render_settings){{QUANTITY_MULTIBOUNCE},
                                         {.albedo_count = MULTIBOUNCE_STUDY_ALBEDOS, .bounces = 4}};
     memcpy(mb->multibounce.albedos, kAlbedos, sizeof kAlbedos);
     return (reference_request){.quantity = QUANTITY_MULTIBOUNCE,
-                               .sampling = {.spp = multibounce_quality_of(ctx->quality)->reference_spp, .seed = 1, .threads = ctx->threads},
+                               .sampling = {.spp = q->reference_spp, .seed = 1, .target_stderr = q->noise_budget,
+                                            .threads = ctx->threads},
                                .normals = NORMAL_SHADING,
                                .settings = &mb->header};
+}
+
+int multibounce_reference_noise_variance(const image *ref, const multibounce_plan *plan, double *variance,
+                                         size_t *covered, gt_error *e)
+{
+    const float *mask = image_channel_data(ref, CH_MASK);
+    double sum = 0.0;
+    int channels = 0;
+    for (int q = 0; q < plan->quantity_count; ++q) {
+        const char *name = plan->quantities[q].name;
+        if (strcmp(name, CH_AO) == 0)
+            continue; /* V_d: the fit's input, not what it is scored against */
+        const float *stderr_plane = schema_stderr_data(ref, name);
+        if (!stderr_plane)
+            return gt_error_set(e, name, "the multi-bounce reference has no standard error of this channel");
+        sum += noise_mean_variance(stderr_plane, mask, image_pixel_count(ref));
+        ++channels;
+    }
+    *variance = channels ? sum / channels : 0.0;
+    if (covered) {
+        *covered = 0;
+        for (size_t i = 0; i < image_pixel_count(ref); ++i)
+            *covered += (size_t)metrics_in_mask(mask, i);
+    }
+    return 0;
 }
 
 /* Scene k rendered at its default camera into st->refs[k]. */
@@ -65,6 +95,12 @@ static int study_reference(const study_context *ctx, const reference_request *re
     row->seconds = stats.seconds;
     row->paths = stats.samples;
     row->rays = stats.rays;
+    double variance;
+    size_t covered;
+    if (multibounce_reference_noise_variance(&st->refs[k], &st->plan, &variance, &covered, e) != 0)
+        return -1;
+    row->noise_rmse = sqrt(variance);
+    row->mean_spp = covered ? (double)stats.samples / (double)covered : 0.0;
     snprintf(path, sizeof path, "%s/%s.exr", dir, kScenes[k]);
     if (exr_write(path, &st->refs[k], e) != 0)
         return -1;
@@ -88,7 +124,10 @@ static int study_references(const study_context *ctx, const reference_request *r
         out->total_seconds += r->seconds;
         out->total_paths += (double)r->paths;
         out->total_rays += (double)r->rays;
+        out->mean_spp += r->mean_spp / MULTIBOUNCE_STUDY_SCENES;
+        out->noise_rmse += r->noise_rmse * r->noise_rmse / MULTIBOUNCE_STUDY_SCENES;
     }
+    out->noise_rmse = sqrt(out->noise_rmse);
     out->width = st->refs[0].width;
     out->height = st->refs[0].height;
     return 0;
@@ -168,10 +207,22 @@ static void free_state(multibounce_state *st)
     free(st);
 }
 
+/* The sub-studies' request: the references', at the quality table's fixed
+ * substudy_spp without a noise budget. */
+static reference_request substudy_request(const study_context *ctx, const reference_request *req)
+{
+    reference_request sub = *req;
+    sub.sampling.spp = multibounce_quality_of(ctx->quality)->substudy_spp;
+    sub.sampling.target_stderr = 0.0;
+    return sub;
+}
+
 /* Everything after the references: fit, rows, plot data, validation, performance. */
 static int study_fit(const study_context *ctx, const reference_request *req, multibounce_state *st,
                      multibounce_study_result *out, gt_error *e)
 {
+    const reference_request sub = substudy_request(ctx, req);
+    out->substudy_spp = sub.sampling.spp;
     char figures[2048];
     if (run_fit(ctx, st, e) != 0)
         return -1;
@@ -180,10 +231,10 @@ static int study_fit(const study_context *ctx, const reference_request *req, mul
         multibounce_write_plot_data(&st->data, st->analysis, figures, e) != 0 ||
         multibounce_validate(st, kScenes, kAlbedos, out, e) != 0 ||
         multibounce_study_clamp(&st->data, st->analysis, &out->clamp, e) != 0 ||
-        multibounce_study_bounces(ctx, req, st, kScenes, &out->bounce_counts, e) != 0 ||
-        multibounce_study_gtao(ctx, req, st, kScenes, &out->gtao_input, e) != 0 ||
-        multibounce_study_contrast(ctx, req, st, kScenes, kAlbedos, &out->contrast, e) != 0 ||
-        multibounce_study_colour(ctx, req, &out->colour, e) != 0)
+        multibounce_study_bounces(ctx, &sub, st, kScenes, &out->bounce_counts, e) != 0 ||
+        multibounce_study_gtao(ctx, &sub, st, kScenes, &out->gtao_input, e) != 0 ||
+        multibounce_study_contrast(ctx, &sub, st, kScenes, kAlbedos, &out->contrast, e) != 0 ||
+        multibounce_study_colour(ctx, &sub, &out->colour, e) != 0)
         return -1;
     return measure_performance(ctx, req, st, &out->performance, e);
 }
@@ -201,6 +252,7 @@ int multibounce_study(const study_context *ctx, multibounce_study_result *out, g
     const reference_request req = request(ctx, &mb);
     out->bounces = mb.multibounce.bounces;
     out->spp = req.sampling.spp;
+    out->noise_budget = req.sampling.target_stderr;
     memcpy(out->albedo_values, kAlbedos, sizeof kAlbedos);
     int rc = multibounce_plan_init(&st->plan, &mb.multibounce, req.normals, e);
     if (rc == 0)

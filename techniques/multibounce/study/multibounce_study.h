@@ -25,6 +25,7 @@
 
 #include "multibounce/multibounce_fit.h"
 #include "multibounce/multibounce_fit_constrained.h"
+#include "multibounce/multibounce_integrator.h"
 #include "project/study_context.h"
 
 #define MULTIBOUNCE_STUDY_DIR "multibounce" /* the references, below the output folder */
@@ -49,6 +50,8 @@ typedef struct {
     char scene[MULTIBOUNCE_STUDY_NAME]; /* built-in scene name */
     double seconds;
     uint64_t paths, rays;
+    double mean_spp;   /* paths / covered pixels: where the noise budget stopped them */
+    double noise_rmse; /* sqrt of the mean over albedos of V'_d's mean squared standard error (mask) */
 } multibounce_render_row;
 
 /* One coefficient of the joint linear model against the talk's. */
@@ -282,8 +285,12 @@ typedef struct {
 
 typedef struct {
     /* the references */
-    int bounces, spp, width, height;
+    int bounces, spp, width, height; /* spp: the most a pixel takes */
+    int substudy_spp;                /* every pixel's paths in the sub-studies' references (no budget) */
+    double noise_budget;             /* the standard error a pixel stops at (quantity 0); 0: none */
     double total_seconds, total_paths, total_rays;
+    double mean_spp;                 /* over the scenes' covered pixels */
+    double noise_rmse;               /* sqrt of the mean of the scenes' noise_rmse^2: the held-out figures' */
     multibounce_render_row renders[MULTIBOUNCE_STUDY_SCENES];
     float albedo_values[MULTIBOUNCE_STUDY_ALBEDOS];
     /* the fit */
@@ -307,6 +314,15 @@ typedef struct {
 } multibounce_study_result;
 
 int multibounce_study(const study_context *ctx, multibounce_study_result *out, gt_error *e);
+
+/* A multi-bounce reference's noise in RMSE^2 units: the mean over the
+ * plan's V'_d channels (every albedo, each weighted equally as the fit
+ * weighs them) of their mean squared standard error over the covered
+ * pixels (metrics/noise_corrected.h, noise_mean_variance); *covered, when
+ * not NULL, gets the covered pixel count. -1 with e when a channel has no
+ * standard error. */
+int multibounce_reference_noise_variance(const image *ref, const multibounce_plan *plan, double *variance,
+                                         size_t *covered, gt_error *e);
 
 /* The fit's rows and findings from an analysis of `d` (multibounce_analyse):
  * fit, coefficients, albedos, heldout and findings of out; the rest untouched. */
