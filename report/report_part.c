@@ -195,9 +195,12 @@ static int replay_paragraph(report *r, const cJSON *entry)
     return text ? (report_paragraph(r, "%s", text), 0) : -1;
 }
 
+enum { TABLE_BEGIN, TABLE_ROW, TABLE_BEST_ROW };
+
 /* A table call: its cells (for a row, as many as the open table's columns). */
-static int replay_table(report *r, const cJSON *entry, int begin)
+static int replay_table(report *r, const cJSON *entry, int call)
 {
+    int begin = call == TABLE_BEGIN;
     const char **cells;
     int count;
     if (entry_texts(entry, 1, &cells, &count) != 0)
@@ -205,14 +208,17 @@ static int replay_table(report *r, const cJSON *entry, int begin)
     int ok = begin ? count > 0 : r->table_columns > 0 && count == r->table_columns;
     if (ok && begin)
         report_table_begin(r, count, cells);
+    else if (ok && call == TABLE_BEST_ROW)
+        report_table_best_row(r, cells);
     else if (ok)
         report_table_row(r, cells);
     free(cells);
     return ok ? 0 : -1;
 }
 
-static int replay_table_begin(report *r, const cJSON *entry) { return replay_table(r, entry, 1); }
-static int replay_table_row(report *r, const cJSON *entry) { return replay_table(r, entry, 0); }
+static int replay_table_begin(report *r, const cJSON *entry) { return replay_table(r, entry, TABLE_BEGIN); }
+static int replay_table_row(report *r, const cJSON *entry) { return replay_table(r, entry, TABLE_ROW); }
+static int replay_table_best_row(report *r, const cJSON *entry) { return replay_table(r, entry, TABLE_BEST_ROW); }
 
 static int replay_table_end(report *r, const cJSON *entry)
 {
@@ -265,6 +271,7 @@ static int replay_entry(report *r, const cJSON *entry)
         int (*replay)(report *, const cJSON *);
     } calls[] = {{"heading", replay_heading},         {"paragraph", replay_paragraph},
                  {"table_begin", replay_table_begin}, {"table_row", replay_table_row},
+                 {"table_best_row", replay_table_best_row},
                  {"table_end", replay_table_end},     {"figures", replay_row_of_figures},
                  {"comparison", replay_comparison},   {"findings_here", replay_findings_here},
                  {"finding", replay_finding},         {"headline", replay_headline}};

@@ -1,5 +1,6 @@
 #include "report/report_table.h"
 
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 
@@ -33,7 +34,7 @@ static void add_member(cJSON *o, const report_column *c, const void *row)
     }
 }
 
-static void table_row(report *doc, const report_column *columns, int column_count, const void *row)
+static void table_row(report *doc, const report_column *columns, int column_count, const void *row, int best)
 {
     char cells[COLUMNS_MAX][CELL_MAX];
     const char *row_cells[COLUMNS_MAX];
@@ -44,7 +45,37 @@ static void table_row(report *doc, const report_column *columns, int column_coun
             row_cells[n] = cells[n];
             ++n;
         }
-    report_table_row(doc, row_cells);
+    if (best)
+        report_table_best_row(doc, row_cells);
+    else
+        report_table_row(doc, row_cells);
+}
+
+/* The column the table ranks by: its first ranked real, or NULL. */
+static const report_column *ranking_column(const report_column *columns, int column_count)
+{
+    for (int i = 0; i < column_count; ++i)
+        if (columns[i].kind == REPORT_COLUMN_REAL && columns[i].rank != REPORT_UNRANKED)
+            return &columns[i];
+    return NULL;
+}
+
+/* The index of the best of `count` rows by the ranking column, or -1 (no
+ * such column, fewer than two rows, or no row with a number). */
+static int best_row(const report_column *columns, int column_count, const void *rows, size_t row_size, int count)
+{
+    const report_column *c = ranking_column(columns, column_count);
+    if (!c || count < 2)
+        return -1;
+    int best = -1;
+    double best_value = 0.0;
+    for (int r = 0; r < count; ++r) {
+        double v = *(const double *)field((const char *)rows + (size_t)r * row_size, c);
+        int better = c->rank == REPORT_LOWEST_BEST ? v < best_value : v > best_value;
+        if (!isnan(v) && (best < 0 || better))
+            best = r, best_value = v;
+    }
+    return best;
 }
 
 static cJSON *json_row(const report_column *columns, int column_count, const void *row)
@@ -77,12 +108,13 @@ static void table_begin(report *doc, const report_column *columns, int column_co
 void report_rows(report *doc, cJSON *json_list, const report_column *columns, int column_count, const void *rows,
                  size_t row_size, int count)
 {
+    int best = doc ? best_row(columns, column_count, rows, row_size, count) : -1;
     if (doc)
         table_begin(doc, columns, column_count);
     for (int r = 0; r < count; ++r) {
         const void *row = (const char *)rows + (size_t)r * row_size;
         if (doc)
-            table_row(doc, columns, column_count, row);
+            table_row(doc, columns, column_count, row, r == best);
         if (json_list)
             cJSON_AddItemToArray(json_list, json_row(columns, column_count, row));
     }

@@ -28,6 +28,13 @@ typedef enum {
     REPORT_COLUMN_CELL    /* table only: drawn by `cell` */
 } report_column_kind;
 
+/* Which value of a REPORT_COLUMN_REAL column is its table's best: the row
+ * holding it is drawn bold (report_table_best_row). A table ranks by its
+ * first ranked column (one with neither header nor key ranks a table whose
+ * cell shows the figure another way, e.g. with its standard error); NaN
+ * never ranks, and a table of one row marks none. */
+typedef enum { REPORT_UNRANKED, REPORT_LOWEST_BEST, REPORT_HIGHEST_BEST } report_rank;
+
 typedef struct {
     const char *header; /* table heading, or NULL: JSON only */
     const char *key;    /* summary.json member, or NULL: table only */
@@ -35,15 +42,19 @@ typedef struct {
     size_t offset;      /* of the field in the row struct */
     const char *format; /* of the table cell (REPORT_COLUMN_REAL; default "%g") */
     void (*cell)(const void *row, char *text, size_t size); /* REPORT_COLUMN_CELL */
+    report_rank rank;   /* REPORT_COLUMN_REAL: whether the table's best row is its lowest or highest */
 } report_column;
 
-#define REPORT_TEXT(header, key, type, field) {header, key, REPORT_COLUMN_TEXT, offsetof(type, field), NULL, NULL}
-#define REPORT_STRING(header, key, type, field) {header, key, REPORT_COLUMN_STRING, offsetof(type, field), NULL, NULL}
-#define REPORT_INT(header, key, type, field) {header, key, REPORT_COLUMN_INT, offsetof(type, field), NULL, NULL}
-#define REPORT_COUNT(header, key, type, field) {header, key, REPORT_COLUMN_COUNT, offsetof(type, field), NULL, NULL}
+#define REPORT_TEXT(header, key, type, field) {header, key, REPORT_COLUMN_TEXT, offsetof(type, field), NULL, NULL, REPORT_UNRANKED}
+#define REPORT_STRING(header, key, type, field) {header, key, REPORT_COLUMN_STRING, offsetof(type, field), NULL, NULL, REPORT_UNRANKED}
+#define REPORT_INT(header, key, type, field) {header, key, REPORT_COLUMN_INT, offsetof(type, field), NULL, NULL, REPORT_UNRANKED}
+#define REPORT_COUNT(header, key, type, field) {header, key, REPORT_COLUMN_COUNT, offsetof(type, field), NULL, NULL, REPORT_UNRANKED}
 #define REPORT_REAL(header, key, format, type, field) \
-    {header, key, REPORT_COLUMN_REAL, offsetof(type, field), format, NULL}
-#define REPORT_CELL(header, function) {header, NULL, REPORT_COLUMN_CELL, 0, NULL, function}
+    {header, key, REPORT_COLUMN_REAL, offsetof(type, field), format, NULL, REPORT_UNRANKED}
+#define REPORT_CELL(header, function) {header, NULL, REPORT_COLUMN_CELL, 0, NULL, function, REPORT_UNRANKED}
+/* A real the table ranks its rows by (rank: REPORT_LOWEST_BEST for an error). */
+#define REPORT_RANKED(header, key, format, type, field, rank) \
+    {header, key, REPORT_COLUMN_REAL, offsetof(type, field), format, NULL, rank}
 
 /* The table of `count` rows (each `row_size` bytes from `rows`) in the
  * report, and one object per row appended to json_list (either may be NULL). */

@@ -224,6 +224,7 @@ void report_init(report *r, const char *title)
             "figure{display:inline-block;margin:.5em;text-align:center}figure img{max-width:256px;"
             "image-rendering:pixelated;border:1px solid #ddd}figcaption{font-size:.85em;color:#555}\n"
             "table.glance td{text-align:left}table.glance tr.sig td:last-child{font-weight:bold}\n"
+            "tr.best td{font-weight:bold;background:#eef7ee}\n"
             "ul.conclusions{background:#f6f8fa;border-left:4px solid #4a7;padding:.5em 1em .5em 2em}\n"
             "details{margin:.6em 0}details>summary{cursor:pointer;color:#444}"
             "details[open]>summary .lead{display:none}\n"
@@ -341,14 +342,16 @@ static int cell_is_figure(const char *text)
     return isdigit((unsigned char)*text);
 }
 
-static void table_row(report *r, const char *const *cells, const char *cell_tag)
+/* A row of the open table; best: drawn bold (its table's best, report_table_best_row). */
+static void table_row(report *r, const char *const *cells, const char *cell_tag, int best)
 {
     md(r, "|");
-    html(r, "<tr>");
+    html(r, best ? "<tr class=\"best\">" : "<tr>");
     for (int c = 0; c < r->table_columns; ++c) {
-        md(r, " ");
+        int bold = best && cells[c][0];
+        md(r, bold ? " **" : " ");
         md_cell(r, cells[c]);
-        md(r, " |");
+        md(r, bold ? "** |" : " |");
         html(r, "<");
         html(r, cell_tag);
         if (c > 0 && cell_tag[1] == 'd' && !cell_is_figure(cells[c]))
@@ -368,7 +371,7 @@ void report_table_begin(report *r, int columns, const char *const *headers)
     journal_texts(r, journal_entry(r, "table_begin"), columns, headers);
     r->table_columns = columns;
     html(r, "<table>\n");
-    table_row(r, headers, "th");
+    table_row(r, headers, "th", 0);
     md(r, "|");
     r->table_align_at = r->md_len, r->table_aligned = 0;
     for (int c = 0; c < columns; ++c)
@@ -389,13 +392,18 @@ static void align_markdown_columns(report *r, const char *const *cells)
             memcpy(r->md + r->table_align_at + (size_t)c * ALIGN_CELL, " ---: |", ALIGN_CELL);
 }
 
-void report_table_row(report *r, const char *const *cells)
+/* A body row, journalled as `name`. */
+static void body_row(report *r, const char *name, const char *const *cells, int best)
 {
-    journal_texts(r, journal_entry(r, "table_row"), r->table_columns, cells);
+    journal_texts(r, journal_entry(r, name), r->table_columns, cells);
     if (!r->table_aligned)
         align_markdown_columns(r, cells);
-    table_row(r, cells, "td");
+    table_row(r, cells, "td", best);
 }
+
+void report_table_row(report *r, const char *const *cells) { body_row(r, "table_row", cells, 0); }
+
+void report_table_best_row(report *r, const char *const *cells) { body_row(r, "table_best_row", cells, 1); }
 
 void report_table_end(report *r)
 {

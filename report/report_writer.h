@@ -64,6 +64,9 @@ void report_heading(report *r, int level, const char *text);
 void report_paragraph(report *r, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 void report_table_begin(report *r, int columns, const char *const *headers);
 void report_table_row(report *r, const char *const *cells);
+/* A row drawn bold (Markdown **cell**, HTML tr.best): the best of its table
+ * by the column report_table.h ranks it by. */
+void report_table_best_row(report *r, const char *const *cells);
 void report_table_end(report *r);
 /* A row of figures: image paths relative to the report, with captions. In
  * report.html a gnuplot plot is shown as its SVG at full width, and a

@@ -14,7 +14,7 @@ static const report_column columns[] = {
     REPORT_REAL("worst, A", "worst_a", "%.4f", ROW, worst[0]),
     REPORT_REAL("DSSIM, A", "dssim_a", "%.2e", ROW, dssim[0]),
     REPORT_REAL("beyond 4 s.e., A", "outlier_share_a", "%.3f", ROW, outlier_share[0]),
-    REPORT_REAL("RMSE, view B (held out)", "rmse_b", "%.4f", ROW, rmse[1]),
+    REPORT_RANKED("RMSE, view B (held out)", "rmse_b", "%.4f", ROW, rmse[1], REPORT_LOWEST_BEST),
     REPORT_REAL("worst, B", "worst_b", "%.4f", ROW, worst[1]),
     REPORT_REAL("DSSIM, B", "dssim_b", "%.2e", ROW, dssim[1]),
     REPORT_REAL("beyond 4 s.e., B", "outlier_share_b", "%.3f", ROW, outlier_share[1]),

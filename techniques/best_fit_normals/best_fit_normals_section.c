@@ -47,7 +47,7 @@ static const report_column sampled_columns[] = {
 static const report_column error_columns[] = {
     REPORT_STRING("encoding", "encoding", ROW, name),
     REPORT_INT("bits", "bits", ROW, bits),
-    REPORT_REAL("mean error, deg", "mean_deg", "%.4f", ROW, mean_deg),
+    REPORT_RANKED("mean error, deg", "mean_deg", "%.4f", ROW, mean_deg, REPORT_LOWEST_BEST),
     REPORT_REAL("99th pct, deg", "p99_deg", "%.4f", ROW, p99_deg),
     REPORT_REAL("max, deg", "max_deg", "%.4f", ROW, max_deg),
     REPORT_REAL("DSSIM r=0.1", "highlight_dssim_r01", "%.2e", ROW, highlight_dssim[0]),

@@ -10,7 +10,7 @@
 static const report_column variant_columns[] = {
     REPORT_TEXT("variant", "name", function_score_variant, name),
     REPORT_STRING("from", "kind", function_score_variant, kind),
-    REPORT_REAL("mean DSSIM", "dssim", "%.3e", function_score_variant, dssim),
+    REPORT_RANKED("mean DSSIM", "dssim", "%.3e", function_score_variant, dssim, REPORT_LOWEST_BEST),
     REPORT_REAL("DSSIM floor", "noise_floor_dssim", "%.3e", function_score_variant, dssim_floor),
     REPORT_REAL("mean RMSE", "rmse", "%.5f", function_score_variant, rmse),
     REPORT_REAL("RMSE floor", "noise_floor_rmse", "%.5f", function_score_variant, rmse_floor),

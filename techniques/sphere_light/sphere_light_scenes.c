@@ -104,8 +104,8 @@ static sphere_light_gbuffer gbuffer_of(const image *ref)
     return g;
 }
 
-/* The FLIP map of approx against the reference `want` (magma, 0 to 1, with
- * a colour bar); its mean into *flip. */
+/* The FLIP map of approx against the reference `want` (magma, 0 to 1; the
+ * report draws its labelled colour bar beside it); its mean into *flip. */
 static int flip_map(const char *dir, const light_scene *ls, const image *ref, int m, const float *want,
                     const float *approx, const float *mask, float *map, double *flip, gt_error *e)
 {
@@ -115,7 +115,7 @@ static int flip_map(const char *dir, const light_scene *ls, const image *ref, in
     if (flip_grey(want, approx, mask, ref->width, ref->height, path, map, &f, e) != 0)
         return -1;
     *flip = f.mean;
-    return image_write_heatmap_with_bar(path, map, mask, ref->width, ref->height, 1.0f, "magma", e);
+    return image_write_heatmap(path, map, mask, ref->width, ref->height, 1.0f, "magma", e);
 }
 
 /* Approximation m of the scene: its DSSIM and FLIP, preview, heatmap and FLIP map. */

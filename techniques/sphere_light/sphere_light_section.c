@@ -119,6 +119,7 @@ static const report_column held_out_table[] = {
     REPORT_STRING("held-out", NULL, sphere_fit_errors_row, method),
     REPORT_CELL("mean abs error", mean_abs_cell),
     REPORT_CELL("RMS error", rms_cell),
+    REPORT_RANKED(NULL, NULL, NULL, sphere_fit_errors_row, errors.mean_abs, REPORT_LOWEST_BEST),
 };
 static const report_column errors_json[] = {
     REPORT_REAL(NULL, "mean_abs_log_error", NULL, sphere_light_errors, mean_abs),

@@ -37,7 +37,7 @@ static const report_column noise_columns[] = {
     REPORT_REAL("spp to match, accumulated", "spp_needed_accumulated", "%.1f", ROW, needed_accumulated),
     REPORT_REAL("rel. RMSE at 3 spp", "rmse_3spp", "%.3f", ROW, rmse3),
     REPORT_REAL("s.e.", "rmse_3spp_se", "%.3f", ROW, rmse3_se),
-    REPORT_REAL("accumulated", "rmse_3spp_accumulated", "%.4f", ROW, rmse3_acc),
+    REPORT_RANKED("accumulated", "rmse_3spp_accumulated", "%.4f", ROW, rmse3_acc, REPORT_LOWEST_BEST),
     REPORT_REAL("s.e.", "rmse_3spp_accumulated_se", "%.4f", ROW, rmse3_acc_se),
     REPORT_REAL("blurred rel. RMSE at 3 spp", "blurred_rmse_3spp", "%.4f", ROW, blurred3),
     REPORT_REAL("s.e.", "blurred_rmse_3spp_se", "%.4f", ROW, blurred3_se),

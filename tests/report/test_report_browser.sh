@@ -30,7 +30,7 @@ check() {
   grep -a 'INFO:CONSOLE' "$work/log" >"$work/console" || true
 }
 
-expect_ok all all --stages ao,hdr-precision --quality preview --threads 2 -o "$out"
+expect_ok all all --stages ao,hdr-precision,best-fit-normals --quality preview --threads 2 -o "$out"
 check report.html
 strays=$(grep -v 'GTLAB-CHECK' "$work/console")
 [ -z "$strays" ] && pass || fail "report.html logged to the console: $strays"
@@ -39,8 +39,9 @@ summary=$(grep -o 'GTLAB-CHECK: PASS[^"]*' "$work/console")
 echo "$summary"
 # What was checked is there: the AO previews and standard-error heatmaps
 # with their colour bars, their comparison views, the HDR section's plot as
-# SVG, the contents' and the summary's links.
-for what in 'images=[1-9][0-9]' 'svg=[1-9]' 'bars=[1-9]' 'views=[1-9]' 'anchors=[1-9]'; do
+# SVG, the contents' and the summary's links, the best-fit normals' ranked
+# table's best row.
+for what in 'images=[1-9][0-9]' 'svg=[1-9]' 'bars=[1-9]' 'views=[1-9]' 'anchors=[1-9]' 'best=[1-9]'; do
   echo "$summary" | grep -q "$what" && pass || fail "expected $what in: $summary"
 done
 

@@ -29,6 +29,7 @@ static void first_stage(report_context *ctx)
     const char *headers[] = {"variant", "RMSE"}, *row[] = {"a | b", "0.1"};
     report_table_begin(ctx->doc, 2, headers);
     report_table_row(ctx->doc, row);
+    report_table_best_row(ctx->doc, (const char *const[]){"c", "0.05"});
     report_table_end(ctx->doc);
     const char *paths[] = {"figures/a.png", "figures/b.png"}, *captions[] = {"a", "b"};
     report_figures(ctx->doc, 2, paths, captions);

@@ -8,6 +8,7 @@
  * heatmap with its colour bar and range, and a comparison view holds its
  * images (report/figure_resolve.c, report/compare_viewer.c); HTML special
  * characters are escaped; a report without findings has no such section. */
+#include "report/report_table.h"
 #include "report/report_writer.h"
 #include "core/files/image_io.h"
 #include "tests/check.h"
@@ -145,6 +146,58 @@ static void test_pipe_in_cell(void)
     free(md);
     free(html);
     report_free(&r);
+}
+
+typedef struct {
+    const char *name;
+    double error;
+} ranked_row;
+
+/* The rows of a ranked table through report_rows, into md and html. */
+static void ranked_table(const ranked_row *rows, int count, report_rank rank, char **md, char **html)
+{
+    const report_column columns[] = {REPORT_STRING("variant", "name", ranked_row, name),
+                                     REPORT_RANKED("error", "error", "%.2f", ranked_row, error, rank)};
+    report r;
+    report_init(&r, "title");
+    report_rows(&r, NULL, columns, 2, rows, sizeof rows[0], count);
+    write_and_read(&r, md, html);
+    report_free(&r);
+}
+
+static int occurrences(const char *text, const char *what)
+{
+    int n = 0;
+    for (const char *p = text; p && (p = strstr(p, what)) != NULL; p += strlen(what))
+        ++n;
+    return n;
+}
+
+/* A ranked table draws its best row bold, once (issue 41: "the best row is
+ * bold"): the lowest or the highest by its ranked column, NaN left out; a
+ * table of one row, or with no number, marks none. */
+static void test_best_row(void)
+{
+    const ranked_row rows[4] = {{"a", 0.3}, {"b", NAN}, {"c", 0.1}, {"d", 0.2}};
+    char *md, *html;
+    ranked_table(rows, 4, REPORT_LOWEST_BEST, &md, &html);
+    CHECK(md && strstr(md, "| **c** | **0.10** |\n") && occurrences(md, "**") == 4);
+    CHECK(html && strstr(html, "<tr class=\"best\"><td>c</td>") && occurrences(html, "class=\"best\"") == 1);
+    free(md);
+    free(html);
+    ranked_table(rows, 4, REPORT_HIGHEST_BEST, &md, &html);
+    CHECK(md && strstr(md, "| **a** | **0.30** |\n") && occurrences(md, "**") == 4);
+    free(md);
+    free(html);
+    ranked_table(rows, 1, REPORT_LOWEST_BEST, &md, &html);
+    CHECK(md && occurrences(md, "**") == 0 && html && !strstr(html, "class=\"best\""));
+    free(md);
+    free(html);
+    const ranked_row none[2] = {{"x", NAN}, {"y", NAN}};
+    ranked_table(none, 2, REPORT_LOWEST_BEST, &md, &html);
+    CHECK(md && occurrences(md, "**") == 0);
+    free(md);
+    free(html);
 }
 
 /* Ranking leaves NaNs out and keeps the two lowest; the verdicts follow
@@ -425,6 +478,7 @@ int main(void)
     test_headline_table();
     test_conclusions_first_and_folding();
     test_pipe_in_cell();
+    test_best_row();
     test_findings_after_introduction();
     test_no_findings_no_section();
     test_anchors();

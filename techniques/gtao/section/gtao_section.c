@@ -27,7 +27,7 @@ static const report_column variant_columns[] = {
     REPORT_REAL("DSSIM vs height field", "dssim_heightfield", "%.4f", ao_variant_row, dssim_hf),
     REPORT_REAL("RMSE vs height field", "rmse_heightfield", "%.4f", ao_variant_row, rmse_hf),
     REPORT_REAL("DSSIM vs 3-D", "dssim_3d", "%.4f", ao_variant_row, dssim_3d),
-    REPORT_REAL("RMSE vs 3-D", "rmse_3d", "%.4f", ao_variant_row, rmse_3d),
+    REPORT_RANKED("RMSE vs 3-D", "rmse_3d", "%.4f", ao_variant_row, rmse_3d, REPORT_LOWEST_BEST),
     REPORT_REAL("FLIP vs 3-D", "flip_3d", "%.4f", ao_variant_row, flip_3d),
     REPORT_REAL("ms per frame", "ms_per_frame", "%.2f", ao_variant_row, ms_per_frame),
 };

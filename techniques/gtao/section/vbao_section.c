@@ -42,7 +42,7 @@ typedef struct {
 
 static const report_column pooled_columns[] = {
     REPORT_TEXT("technique", "technique", pooled_row, technique),
-    REPORT_REAL("RMSE vs 3-D", "rmse_3d", "%.4f", pooled_row, rmse_3d),
+    REPORT_RANKED("RMSE vs 3-D", "rmse_3d", "%.4f", pooled_row, rmse_3d, REPORT_LOWEST_BEST),
     REPORT_REAL("MSE - MSE(GTAO medium)", "paired_mse", "%+.2e", pooled_row, paired),
     REPORT_REAL("s.e.", "paired_mse_se", "%.1e", pooled_row, paired_se),
     REPORT_TEXT("against GTAO medium", "verdict", pooled_row, verdict),

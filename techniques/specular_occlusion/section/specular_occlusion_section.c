@@ -46,10 +46,12 @@ static void report_luts(report_context *ctx, const so_study_result *r, cJSON *js
 /* ---- the variants -------------------------------------------------------------- */
 
 /* A line of the scores table: a variant, or (variant NULL) the references'
- * noise floor, which has DSSIM cells only. */
+ * noise floor, which has DSSIM cells only; mean_dssim ranks the variants
+ * (NaN on the floor's line, which ranks nothing). */
 typedef struct {
     const so_variant_row *variant;
     const double *noise_floor;
+    double mean_dssim;
 } score_line;
 
 static void dssim_cell(const score_line *l, int k, char *text, size_t size)
@@ -105,6 +107,7 @@ static const report_column score_columns[] = {
     REPORT_CELL("mean DSSIM", mean_cell),       REPORT_CELL("mean FLIP", flip_cell),
     REPORT_CELL("RMSE r=0.25", rmse_cell_0),    REPORT_CELL("RMSE r=0.5", rmse_cell_1),
     REPORT_CELL("RMSE r=0.8", rmse_cell_2),
+    REPORT_RANKED(NULL, NULL, NULL, score_line, mean_dssim, REPORT_LOWEST_BEST),
 };
 
 /* summary.json's variants: the scalars from columns, the per-roughness means as arrays. */
@@ -147,8 +150,8 @@ static void report_scores(report_context *ctx, const so_study_result *r, cJSON *
                      "references' own noise floor.", r->spp, r->size, r->size);
     score_line lines[SO_STUDY_MAX_VARIANTS + 1];
     for (int v = 0; v < r->variant_count; ++v)
-        lines[v] = (score_line){&r->variants[v], NULL};
-    lines[r->variant_count] = (score_line){NULL, r->noise_floor_dssim};
+        lines[v] = (score_line){&r->variants[v], NULL, r->variants[v].mean_dssim};
+    lines[r->variant_count] = (score_line){NULL, r->noise_floor_dssim, NAN};
     report_rows(ctx->doc, NULL, score_columns, (int)(sizeof score_columns / sizeof score_columns[0]), lines,
                 sizeof lines[0], r->variant_count + 1);
     variants_json(r, json);

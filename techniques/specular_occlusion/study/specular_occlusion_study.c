@@ -268,7 +268,7 @@ static int write_heatmaps(const so_state *st, const image *ref, const so_pixel_i
         flip_result f;
         rc = rc == 0 ? flip_grey(vs, approx, in->mask, ref->width, ref->height, name, err, &f, e) : rc;
         snprintf(path, sizeof path, "%s/specocc_flip_%s_%d.png", st->figures, name, k);
-        rc = rc == 0 ? image_write_heatmap_with_bar(path, err, in->mask, ref->width, ref->height, 1.0f, "magma", e)
+        rc = rc == 0 ? image_write_heatmap(path, err, in->mask, ref->width, ref->height, 1.0f, "magma", e)
                      : rc;
     }
     free(approx);

@@ -30,7 +30,7 @@
  * Writes <output>/figures/specocc_ref_<scene>.png (V_s at r = 0.5) and
  * specocc_err_<scene>_<k>.png, |error| heatmaps (0 to 0.5) at r = 0.5 of the
  * rows so_study_heatmap_rows names, k = 0..3, and specocc_flip_<scene>_<k>.png,
- * their FLIP maps (magma, 0 to 1, colour bar below). */
+ * their FLIP maps (magma, 0 to 1; the report draws the labelled colour bar). */
 #ifndef GTLAB_SPECULAR_OCCLUSION_SPECULAR_OCCLUSION_STUDY_H
 #define GTLAB_SPECULAR_OCCLUSION_SPECULAR_OCCLUSION_STUDY_H
 
