@@ -86,14 +86,6 @@ claim_verdict claim_verdict_of(const claim_record *r, double figure, double stan
     return text_given(r->stronger_reading) ? CLAIM_FAILS_STRONGER_READING : CLAIM_REFUTED;
 }
 
-const char *claim_verdict_name(claim_verdict v)
-{
-    static const char *const names[CLAIM_VERDICT_COUNT] = {
-        "reproduced",          "refuted",         "fails a stronger reading", "fails under gtlab's setting",
-        "no visible difference", "limitation measured", "not significant",     "not testable here"};
-    return (unsigned)v < CLAIM_VERDICT_COUNT ? names[v] : "?";
-}
-
 /* The boundary of the record's region nearest the figure (NaN: none). */
 static double nearest_boundary(const claim_record *r, double x)
 {

@@ -57,6 +57,7 @@
 #include <cjson/cJSON.h>
 
 #include "core/error.h"
+#include "report/claim_verdict.h"
 #include "report/report_writer.h"
 
 #define CLAIM_Z 1.959963984540054 /* the two-sided 95% normal quantile */
@@ -86,18 +87,6 @@ typedef enum {
     CLAIM_SETTING_INDEPENDENT, /* differs only where the claim does not depend on it (setting_note says why) */
     CLAIM_SETTING_GTLAB        /* the talk's setting is not reproduced (setting_note says what differs) */
 } claim_setting;
-
-typedef enum {
-    CLAIM_REPRODUCED,
-    CLAIM_REFUTED,
-    CLAIM_FAILS_STRONGER_READING,
-    CLAIM_FAILS_GTLAB_SETTING,
-    CLAIM_NO_VISIBLE_DIFFERENCE,
-    CLAIM_LIMITATION_MEASURED,
-    CLAIM_NOT_SIGNIFICANT,
-    CLAIM_NOT_TESTABLE,
-    CLAIM_VERDICT_COUNT
-} claim_verdict;
 
 /* What the talk says and how gtlab reads it: static text. */
 typedef struct {
@@ -139,8 +128,6 @@ typedef struct {
  * setting and stronger-reading qualifiers (claim_verdict_of applies them). */
 claim_verdict claim_judge(const claim_record *r, double figure, double standard_error);
 claim_verdict claim_verdict_of(const claim_record *r, double figure, double standard_error);
-/* "reproduced", "refuted", "fails a stronger reading", ... */
-const char *claim_verdict_name(claim_verdict v);
 /* Whether a record meets the protocol; -1 with e naming what it lacks. */
 int claim_record_check(const claim_record *r, gt_error *e);
 

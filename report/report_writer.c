@@ -10,6 +10,7 @@
 #include <cjson/cJSON.h>
 
 #include "core/files/atomic_file.h"
+#include "report/claim_verdict.h"
 #include "report/compare_viewer.h"
 #include "report/figure_resolve.h"
 #include "report/html_text.h"
@@ -225,6 +226,8 @@ void report_init(report *r, const char *title)
             "image-rendering:pixelated;border:1px solid #ddd}figcaption{font-size:.85em;color:#555}\n"
             "table.glance td{text-align:left}table.glance tr.sig td:last-child{font-weight:bold}\n"
             "tr.best td{font-weight:bold;background:#eef7ee}\n"
+            "td.v-holds{color:#1a7f37}td.v-fails{color:#b42318;font-weight:bold}td.v-measured{color:#1f4e99}"
+            "td.v-open{color:#8a6d00}\n"
             "ul.conclusions{background:#f6f8fa;border-left:4px solid #4a7;padding:.5em 1em .5em 2em}\n"
             "details{margin:.6em 0}details>summary{cursor:pointer;color:#444}"
             "details[open]>summary .lead{display:none}\n"
@@ -342,6 +345,18 @@ static int cell_is_figure(const char *text)
     return isdigit((unsigned char)*text);
 }
 
+/* The class of a prose cell: "prose", and a claim verdict's tone when the
+ * cell is exactly a verdict's name (report/claim_verdict.h). */
+static const char *verdict_class(const char *text)
+{
+    static const char *const tones[] = {[CLAIM_TONE_HOLDS] = " class=\"prose v-holds\"",
+                                        [CLAIM_TONE_FAILS] = " class=\"prose v-fails\"",
+                                        [CLAIM_TONE_MEASURED] = " class=\"prose v-measured\"",
+                                        [CLAIM_TONE_OPEN] = " class=\"prose v-open\""};
+    int v = claim_verdict_from_name(text);
+    return v < 0 ? " class=\"prose\"" : tones[claim_verdict_tone((claim_verdict)v)];
+}
+
 /* A row of the open table; best: drawn bold (its table's best, report_table_best_row). */
 static void table_row(report *r, const char *const *cells, const char *cell_tag, int best)
 {
@@ -355,7 +370,7 @@ static void table_row(report *r, const char *const *cells, const char *cell_tag,
         html(r, "<");
         html(r, cell_tag);
         if (c > 0 && cell_tag[1] == 'd' && !cell_is_figure(cells[c]))
-            html(r, " class=\"prose\"");
+            html(r, verdict_class(cells[c]));
         html(r, ">");
         html_escaped(r, cells[c]);
         html(r, "</");

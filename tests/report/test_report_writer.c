@@ -126,7 +126,9 @@ static void test_anchors(void)
 
 /* A '|' inside a table cell is escaped in Markdown (it would split the
  * cell) and left as it is in HTML; a column of figures is right-aligned, one
- * of prose left (issue 41: the claims table right-aligned its verdicts). */
+ * of prose left (issue 41: the claims table right-aligned its verdicts); a
+ * cell that is exactly a verdict's name takes its tone's class, and only
+ * then (issue 41: the claims table did not colour its verdicts). */
 static void test_pipe_in_cell(void)
 {
     report r;
@@ -136,12 +138,15 @@ static void test_pipe_in_cell(void)
     report_table_begin(&r, 4, headers);
     report_table_row(&r, cells);
     report_table_row(&r, (const char *const[]){"b", "2", "prose now", "0.5"}); /* the first row decides */
+    report_table_row(&r, (const char *const[]){"c", "refuted", "not significant", "reproduced here"});
     report_table_end(&r);
     char *md, *html;
     write_and_read(&r, &md, &html);
     CHECK(md && strstr(md, "| a | \\|e\\| = 1 | -0.25 (2%) | reproduced |") && strstr(md, "mean \\|x\\|"));
     CHECK(md && strstr(md, "| verdict |\n| :--- | :--- | ---: | :--- |\n| a |"));
-    CHECK(html && strstr(html, "<td class=\"prose\">|e| = 1</td><td>-0.25 (2%)</td><td class=\"prose\">reproduced</td>"));
+    CHECK(html && strstr(html, "<td class=\"prose\">|e| = 1</td><td>-0.25 (2%)</td><td class=\"prose v-holds\">reproduced</td>"));
+    CHECK(html && strstr(html, "<td class=\"prose v-fails\">refuted</td><td class=\"prose v-open\">not significant</td>"
+                               "<td class=\"prose\">reproduced here</td>"));
     CHECK(html && strstr(html, "<td>a</td>"));
     free(md);
     free(html);
