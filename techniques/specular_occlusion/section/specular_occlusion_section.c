@@ -139,15 +139,23 @@ static void variants_json(const so_study_result *r, cJSON *json)
 
 static void report_scores(report_context *ctx, const so_study_result *r, cJSON *json)
 {
+    char sampling[256];
+    if (r->noise_budget > 0)
+        snprintf(sampling, sizeof sampling,
+                 "each pixel stopping at its noise budget, a standard error of %g in the integral of V f_r cos (in "
+                 "AO for the AO reference), at most %d samples per pixel",
+                 r->noise_budget, r->spp);
+    else
+        snprintf(sampling, sizeof sampling, "%d samples per pixel", r->spp);
     report_paragraph(ctx->doc,
                      "References: V_s = integral of V f_r cos / integral of f_r cos (GGX, no Fresnel, white dome, view "
-                     "from the camera), VNDF-sampled, %d samples per pixel, %dx%d pixels, at perceptual roughness "
+                     "from the camera), VNDF-sampled, %s, %dx%d pixels, at perceptual roughness "
                      "0.25, 0.5 and 0.8 on every built-in scene. Variants run on the AO reference's cosine AO and bent "
                      "normal, so their error is their own; the rows 'on GTAO' run the main variants on GTAO's AO and "
                      "bent normal instead (high preset, one frame, no radius limit, on the same G-buffer), which is "
                      "what a renderer ships. Columns average DSSIM, mean FLIP (LDR-FLIP at 67 pixels per degree, V_s "
                      "the reference; metrics/flip.h) and RMSE over the scenes; the last row is the "
-                     "references' own noise floor.", r->spp, r->size, r->size);
+                     "references' own noise floor.", sampling, r->size, r->size);
     score_line lines[SO_STUDY_MAX_VARIANTS + 1];
     for (int v = 0; v < r->variant_count; ++v)
         lines[v] = (score_line){&r->variants[v], NULL, r->variants[v].mean_dssim};

@@ -427,7 +427,10 @@ int so_study_render(const study_context *ctx, const scene *s, const char *spec, 
     int size, spp;
     so_study_resolution(ctx, &size, &spp);
     specular_occlusion_render_settings so = specular_occlusion_render_settings_make(roughness, ENVIRONMENT_SKY);
-    reference_request req = {.quantity = q, .sampling = {.spp = spp, .seed = 1, .threads = ctx->threads},
+    reference_request req = {.quantity = q,
+                             .sampling = {.spp = spp, .seed = 1,
+                                          .target_stderr = specular_occlusion_quality_of(ctx->quality)->noise_budget,
+                                          .threads = ctx->threads},
                              .normals = NORMAL_SHADING,
                              .settings = q == QUANTITY_SPECULAR_OCCLUSION ? &so.header : NULL};
     return reference_render(s, spec, cam, &req, out, stats, e);
@@ -617,6 +620,7 @@ static void init_result(const study_context *ctx, so_study_result *out)
 {
     memset(out, 0, sizeof *out);
     so_study_resolution(ctx, &out->size, &out->spp);
+    out->noise_budget = specular_occlusion_quality_of(ctx->quality)->noise_budget;
     for (int k = 0; k < SO_STUDY_ROUGHNESSES; ++k)
         out->roughness[k] = so_study_roughness_values[k];
 }

@@ -173,7 +173,8 @@ typedef struct {
 } so_cone_view_result;
 
 typedef struct {
-    int size, spp;  /* of every reference (square images) */
+    int size, spp;  /* of every reference (square images); spp the most a pixel takes */
+    double noise_budget; /* the standard error of quantity 0 a pixel stops at; 0: every pixel takes spp */
     int lut_points; /* random points of the interpolation error */
     int scene_count;
     char scenes[SO_STUDY_MAX_SCENES][64]; /* study_scene_at order */
