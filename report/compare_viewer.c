@@ -15,11 +15,11 @@ static const char kHead[] =
     /* side by side: a grid of equal columns, so a pane that wraps keeps the others' size */
     ".cmp-bar button.on{background:#4a7;color:#fff}"
     ".cmp-panes{display:grid;grid-template-columns:repeat(auto-fit,minmax(140px,1fr));gap:.4em}\n"
-    ".cmp-pane{min-width:0;max-width:512px;margin:0}.cmp.flip .cmp-panes{display:block}"
+    ".cmp-pane{width:auto;min-width:0;max-width:512px;margin:0}.cmp.flip .cmp-panes{display:block}"
     ".cmp.flip .cmp-pane{display:none}\n"
     ".cmp.flip .cmp-pane.on{display:block;max-width:768px}\n"
     ".cmp-clip{overflow:hidden;cursor:grab;background:#111;touch-action:none}\n"
-    ".cmp-clip img{display:block;width:100%;max-width:none;border:0;transform-origin:0 0;image-rendering:pixelated;"
+    ".cmp-clip img{display:block;width:100%;max-width:none;min-width:0;border:0;transform-origin:0 0;image-rendering:pixelated;"
     "user-select:none}\n"
     ".cmp-pane figcaption,.cmp-cap{font-size:.85em;color:#555}\n"
     "</style>\n"

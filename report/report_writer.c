@@ -222,8 +222,10 @@ void report_init(report *r, const char *title)
             "body{font-family:system-ui,sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;color:#222}\n"
             "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:.3em .6em;"
             "text-align:right}th{background:#f3f3f3}td:first-child,th:first-child,td.prose{text-align:left}\n"
-            "figure{display:inline-block;margin:.5em;text-align:center}figure img{max-width:256px;"
-            "image-rendering:pixelated;border:1px solid #ddd}figcaption{font-size:.85em;color:#555}\n"
+            /* a figure as wide as its image (its caption wraps there): rows of maps line up */
+            "figure{display:inline-block;vertical-align:top;width:min-content;margin:.5em;text-align:center}"
+            "figure img{max-width:256px;min-width:160px;image-rendering:pixelated;border:1px solid #ddd}"
+            "figcaption{font-size:.85em;color:#555}\n"
             "table.glance td{text-align:left}table.glance tr.sig td:last-child{font-weight:bold}\n"
             "tr.best td{font-weight:bold;background:#eef7ee}\n"
             "td.v-holds{color:#1a7f37}td.v-fails{color:#b42318;font-weight:bold}td.v-measured{color:#1f4e99}"
@@ -231,9 +233,9 @@ void report_init(report *r, const char *title)
             "ul.conclusions{background:#f6f8fa;border-left:4px solid #4a7;padding:.5em 1em .5em 2em}\n"
             "details{margin:.6em 0}details>summary{cursor:pointer;color:#444}"
             "details[open]>summary .lead{display:none}\n"
-            "figure:has(img[src$=\".svg\"]){display:block}figure img[src$=\".svg\"]{max-width:100%;width:100%;"
+            "figure:has(img[src$=\".svg\"]){display:block;width:auto}figure img[src$=\".svg\"]{max-width:100%;width:100%;"
             "image-rendering:auto;border:0}\n"
-            ".cbar{display:flex;align-items:center;gap:.3em;font-size:.8em;max-width:256px;margin:2px auto}"
+            ".cbar{display:flex;align-items:center;gap:.3em;font-size:.8em;width:100%;max-width:256px;margin:2px auto}"
             ".cbar-ramp{flex:1;height:10px;border:1px solid #999}\n"
             "</style>\n");
     html(r, compare_viewer_head());
