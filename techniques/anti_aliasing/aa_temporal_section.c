@@ -236,8 +236,10 @@ void aa_temporal_section(report_context *ctx, cJSON *json, const aa_temporal_res
                 r->truth_count);
     report_rows(ctx->doc, cJSON_AddArrayToObject(t, "techniques"), columns, (int)(sizeof columns / sizeof columns[0]),
                 r->rows, sizeof r->rows[0], r->row_count);
-    report_paragraph(ctx->doc, "The last 4 frames of the pan, then each technique's error on the last frame "
-                               "(|error| summed over RGB x 4/3):");
+    report_paragraph(ctx->doc,
+                     "The last 4 frames of the pan, then each technique's error on the last frame (the mean over RGB "
+                     "of |error|, inferno, 0 to %g):",
+                     (double)AA_T_ERROR_MAP_MAX);
     figures(ctx, "pan");
     stability_paragraph(ctx->doc, r);
     add_claims(ctx, r);

@@ -388,7 +388,8 @@ static void strip_put(const work *w, const float *rgb, int slot, float *strip)
 }
 
 /* A display image (decoded to linear: the writer encodes sRGB), or with
- * error = truth, |rgb - truth| x 4 in grey. */
+ * error = truth, a heatmap of the mean over RGB of |rgb - truth|, 0 to
+ * AA_T_ERROR_MAP_MAX (the report draws its colour bar). */
 static int write_png(const char *dir, const char *name, const float *rgb, const float *truth, int width, int height,
                      gt_error *e)
 {
@@ -397,15 +398,15 @@ static int write_png(const char *dir, const char *name, const float *rgb, const 
     int rc = planes[0] && planes[1] && planes[2] ? 0 : gt_error_set(e, dir, "out of memory");
     for (size_t k = 0; k < px && rc == 0; ++k)
         for (int c = 0; c < 3; ++c)
-            planes[c][k] = truth ? (float)srgb_to_linear(fminf(4.0f / 3.0f * (fabsf(rgb[3 * k] - truth[3 * k]) +
-                                                                          fabsf(rgb[3 * k + 1] - truth[3 * k + 1]) +
-                                                                          fabsf(rgb[3 * k + 2] - truth[3 * k + 2])),
-                                                               1.0f))
+            planes[c][k] = truth ? (fabsf(rgb[3 * k] - truth[3 * k]) + fabsf(rgb[3 * k + 1] - truth[3 * k + 1]) +
+                                    fabsf(rgb[3 * k + 2] - truth[3 * k + 2])) / 3.0f
                                  : (float)srgb_to_linear(rgb[3 * k + c]);
     char path[4096 + 128];
     if (rc == 0 && snprintf(path, sizeof path, "%s/%s.png", dir, name) >= (int)sizeof path)
         rc = gt_error_set(e, dir, "path too long");
-    if (rc == 0)
+    if (rc == 0 && truth)
+        rc = image_write_heatmap(path, planes[0], NULL, width, height, AA_T_ERROR_MAP_MAX, "inferno", e);
+    else if (rc == 0)
         rc = image_write_preview(path, (const float *const *)planes, 3, width, height, 1.0f, e);
     free(planes[0]), free(planes[1]), free(planes[2]);
     return rc;

@@ -41,6 +41,8 @@
 #include "project/study_context.h"
 
 enum { AA_T_TECHNIQUES = 5, AA_T_PATHS = 2, AA_T_MAX_SCENES = 2, AA_T_MAX_FRAMES = 64, AA_T_WARMUP = 4 };
+/* The error maps' scale: the mean over RGB of |rgb - truth|, inferno from 0 to this. */
+#define AA_T_ERROR_MAP_MAX 0.25f
 /* The study's rows per path: the techniques, then the checkerboard at 2x. */
 enum { AA_T_CHECKER_2X = AA_T_TECHNIQUES, AA_T_ROWS = AA_T_TECHNIQUES + 1 };
 
