@@ -4,6 +4,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -11,6 +12,7 @@
 #include <string.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 /* The sanitizers' hook (libFuzzer sets it to write its crash artifact); a
@@ -45,12 +47,43 @@ static int write_all(int fd, const void *data, size_t size)
     return 0;
 }
 
-/* Reads up to size bytes; returns how many arrived before end of file. */
-static size_t read_all(int fd, void *data, size_t size)
+/* Seconds on the monotonic clock. */
+static double monotonic_seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* Waits until fd can be read or the deadline (monotonic seconds; 0 for
+ * none) has passed; returns 0 when it can be read, -1 at the deadline. */
+static int wait_readable(int fd, double deadline)
+{
+    for (;;) {
+        int timeout_ms = -1;
+        if (deadline > 0) {
+            double left = deadline - monotonic_seconds();
+            if (left <= 0)
+                return -1;
+            timeout_ms = (int)(left * 1000.0) + 1;
+        }
+        int n = poll(&(struct pollfd){.fd = fd, .events = POLLIN}, 1, timeout_ms);
+        if (n > 0)
+            return 0;
+        if (n < 0 && errno != EINTR)
+            return 0; /* the read that follows says what is wrong */
+    }
+}
+
+/* Reads up to size bytes before the deadline (0 for none); returns how many
+ * arrived before end of file or the deadline. */
+static size_t read_all(int fd, void *data, size_t size, double deadline)
 {
     char *at = data;
     size_t got = 0;
     while (got < size) {
+        if (wait_readable(fd, deadline) != 0)
+            break;
         ssize_t n = read(fd, at + got, size - got);
         if (n < 0 && errno == EINTR)
             continue;
@@ -102,15 +135,15 @@ static void child_run(isolated_function fn, const void *context, int cpu_seconds
 
 /* The answer on fd: 0 (the function succeeded: *bytes, *size), -1 (it
  * failed: e holds its message) or ISOLATED_DIED (no whole answer). */
-static int read_answer(int fd, void **bytes, size_t *size, gt_error *e)
+static int read_answer(int fd, double deadline, void **bytes, size_t *size, gt_error *e)
 {
     answer_header h;
-    if (read_all(fd, &h, sizeof h) != sizeof h || h.size > ISOLATED_MAX_BYTES || (h.status != 0 && h.status != -1))
+    if (read_all(fd, &h, sizeof h, deadline) != sizeof h || h.size > ISOLATED_MAX_BYTES || (h.status != 0 && h.status != -1))
         return ISOLATED_DIED;
     char *data = malloc(h.size + 1);
     if (!data)
         return ISOLATED_DIED;
-    if (read_all(fd, data, h.size) != h.size) {
+    if (read_all(fd, data, h.size, deadline) != h.size) {
         free(data);
         return ISOLATED_DIED;
     }
@@ -126,10 +159,13 @@ static int read_answer(int fd, void **bytes, size_t *size, gt_error *e)
 }
 
 /* "signal 11, Segmentation fault", "exit status 1" or, killed by its CPU
- * limit, "ran over its 60 s CPU limit (signal 24)". */
-static void describe_death(int status, int cpu_seconds, char *text, size_t size)
+ * limit, "ran over its 60 s CPU limit (signal 24)"; killed at its
+ * wall-clock deadline (late), "did not answer within 122 s (killed)". */
+static void describe_death(int status, int cpu_seconds, int late, char *text, size_t size)
 {
-    if (cpu_seconds > 0 && WIFSIGNALED(status) && (WTERMSIG(status) == SIGXCPU || WTERMSIG(status) == SIGKILL))
+    if (late)
+        snprintf(text, size, "did not answer within %d s (killed)", isolated_wall_seconds(cpu_seconds));
+    else if (cpu_seconds > 0 && WIFSIGNALED(status) && (WTERMSIG(status) == SIGXCPU || WTERMSIG(status) == SIGKILL))
         snprintf(text, size, "ran over its %d s CPU limit (signal %d)", cpu_seconds, WTERMSIG(status));
     else if (WIFSIGNALED(status))
         snprintf(text, size, "signal %d, %s", WTERMSIG(status), strsignal(WTERMSIG(status)));
@@ -139,11 +175,14 @@ static void describe_death(int status, int cpu_seconds, char *text, size_t size)
         snprintf(text, size, "wait status %d", status);
 }
 
-/* The child's end: waits for it; ISOLATED_DIED unless it answered and
- * exited with 0 (answered is the answer's result). */
-static int wait_child(pid_t child, int answered, int cpu_seconds, const char *subject, char *death, size_t death_size,
-                      gt_error *e)
+/* The child's end: kills it if it is late (no whole answer by its
+ * deadline), waits for it; ISOLATED_DIED unless it answered and exited
+ * with 0 (answered is the answer's result). */
+static int wait_child(pid_t child, int answered, int cpu_seconds, int late, const char *subject, char *death,
+                      size_t death_size, gt_error *e)
 {
+    if (late)
+        kill(child, SIGKILL);
     int status = 0;
     pid_t got;
     while ((got = waitpid(child, &status, 0)) < 0 && errno == EINTR)
@@ -153,7 +192,7 @@ static int wait_child(pid_t child, int answered, int cpu_seconds, const char *su
     if (answered != ISOLATED_DIED && WIFEXITED(status) && WEXITSTATUS(status) == 0)
         return answered;
     char how[128];
-    describe_death(status, cpu_seconds, how, sizeof how);
+    describe_death(status, cpu_seconds, late, how, sizeof how);
     if (death && death_size > 0)
         snprintf(death, death_size, "%s", how);
     gt_error_set(e, subject, "the child process died (%s)", how);
@@ -197,9 +236,11 @@ int isolated_call(isolated_function fn, const void *context, const char *subject
         close(fds[0]);
         return gt_error_set(e, subject, "cannot start a child process: %s", strerror(fork_errno));
     }
-    int answered = read_answer(fds[0], bytes, size, e);
+    const double deadline = cpu_seconds > 0 ? monotonic_seconds() + isolated_wall_seconds(cpu_seconds) : 0;
+    int answered = read_answer(fds[0], deadline, bytes, size, e);
     close(fds[0]);
-    int rc = wait_child(child, answered, cpu_seconds, subject, death, death_size, e);
+    const int late = answered == ISOLATED_DIED && deadline > 0 && monotonic_seconds() >= deadline;
+    int rc = wait_child(child, answered, cpu_seconds, late, subject, death, death_size, e);
     if (rc == ISOLATED_DIED) {
         free(*bytes);
         *bytes = NULL, *size = 0;

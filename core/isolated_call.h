@@ -20,7 +20,13 @@
  *    there); it may allocate and read files.
  *  - with cpu_seconds > 0, at most that much CPU time (RLIMIT_CPU): a
  *    library that loops on some input is killed by SIGXCPU and reported
- *    like a crash ("ran over its 60 s CPU limit"), never hangs the caller.
+ *    like a crash ("ran over its 60 s CPU limit"), never hangs the caller;
+ *    and at most isolated_wall_seconds(cpu_seconds) of wall-clock time: a
+ *    child that waits for ever uses no CPU (a lock some other thread of
+ *    the parent held at the fork, which no thread of the child will
+ *    release: glibc's malloc is safe across fork, a sanitizer runtime's
+ *    allocator is not), and is killed at that deadline ("did not answer
+ *    within 122 s (killed)").
  * The child ends with _exit: no atexit handler, no leak check, no stdio
  * buffer of the parent's flushed twice. */
 #ifndef GTLAB_CORE_ISOLATED_CALL_H
@@ -36,6 +42,11 @@ typedef int (*isolated_function)(const void *context, void **bytes, size_t *size
 
 enum { ISOLATED_DIED = -2 };
 
+/* The wall-clock time a child with a CPU limit of cpu_seconds is given:
+ * twice its CPU time and 2 s, room enough for a machine loaded by other
+ * work. */
+static inline int isolated_wall_seconds(int cpu_seconds) { return 2 * cpu_seconds + 2; }
+
 /* Runs fn(context, ...) in a child process (cpu_seconds: its CPU time
  * limit, 0 for none). Returns 0 with *bytes (malloc'd,
  * the caller frees it; never NULL on success) and *size; -1 with e = the
@@ -43,8 +54,8 @@ enum { ISOLATED_DIED = -2 };
  * child could be started or its answer read; ISOLATED_DIED when the child
  * died without a whole answer, with `death` (if non-NULL, death_size bytes)
  * saying how: "signal 11, Segmentation fault", "exit status 1" (a
- * sanitizer that found an error exits so) or "ran over its 60 s CPU limit
- * (signal 24)", and e = "<subject>: the child
+ * sanitizer that found an error exits so), "ran over its 60 s CPU limit
+ * (signal 24)" or "did not answer within 122 s (killed)", and e = "<subject>: the child
  * process died (<how>)" for callers that need no words of their own. */
 int isolated_call(isolated_function fn, const void *context, const char *subject, int cpu_seconds, void **bytes,
                   size_t *size, char *death, size_t death_size, gt_error *e);

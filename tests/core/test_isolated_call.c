@@ -3,8 +3,10 @@
  * or exits is reported and the test process lives on; the child's stderr
  * never reaches ours; the output set's stop handler is not the child's (a
  * SIGTERM there kills the child, it does not roll our files back), and a
- * signal we ignore stays ignored in it. */
+ * signal we ignore stays ignored in it; a child that waits for ever is
+ * killed at its wall-clock deadline. */
 #define _GNU_SOURCE
+#include <pthread.h>
 #include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -159,6 +161,36 @@ static void test_cpu_limit(void)
     free(bytes);
 }
 
+/* Locks the mutex *context: in the child, one the parent held at the fork
+ * (as a sanitizer's allocator lock another thread held), which no thread
+ * of the child will ever release. */
+static int lock_held_mutex(const void *context, void **bytes, size_t *size, gt_error *e)
+{
+    (void)bytes, (void)size, (void)e;
+    pthread_mutex_lock((pthread_mutex_t *)context);
+    return 0;
+}
+
+/* A child that waits for ever, using no CPU, is killed at its wall-clock
+ * deadline and said so; the caller goes on. */
+static void test_wall_deadline(void)
+{
+    static pthread_mutex_t held = PTHREAD_MUTEX_INITIALIZER;
+    char death[128];
+    void *bytes;
+    size_t size;
+    gt_error e = {{0}};
+    pthread_mutex_lock(&held);
+    CHECK(isolated_call(lock_held_mutex, &held, "locked.hlsl", 1, &bytes, &size, death, sizeof death, &e) ==
+          ISOLATED_DIED);
+    pthread_mutex_unlock(&held);
+    CHECK(isolated_wall_seconds(1) == 4);
+    CHECK_MSG(strcmp(death, "did not answer within 4 s (killed)") == 0, "%s", death);
+    CHECK_MSG(strcmp(e.message, "locked.hlsl: the child process died (did not answer within 4 s (killed))") == 0, "%s",
+              e.message);
+    CHECK(!bytes && size == 0);
+}
+
 /* A file committed in an open output set survives a SIGTERM in the child
  * (which dies by it); an ignored SIGINT stays ignored there. */
 static void test_stop_signals(void)
@@ -189,6 +221,7 @@ int main(void)
     test_answers();
     test_deaths();
     test_cpu_limit();
+    test_wall_deadline();
     test_stop_signals();
     return check_report("test_isolated_call");
 }
