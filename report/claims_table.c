@@ -240,8 +240,11 @@ static void reading_cell(const void *row, char *text, size_t size)
 {
     const claim *c = row;
     const char *stronger = c->record.stronger_reading;
+    const size_t n = strlen(c->record.reading);
+    const int ends_sentence = n > 0 && c->record.reading[n - 1] == '.';
     snprintf(text, size, "%s%s%s", c->record.reading,
-             text_given(stronger) ? " Stronger reading tested: " : "", or_blank(stronger));
+             !text_given(stronger) ? "" : ends_sentence ? " Stronger reading tested: " : ". Stronger reading tested: ",
+             or_blank(stronger));
 }
 
 static void figure_cell(const void *row, char *text, size_t size) { figure_text(row, text, size); }

@@ -221,7 +221,7 @@ void report_init(report *r, const char *title)
     html(r, "</title>\n<style>\n"
             "body{font-family:system-ui,sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;color:#222}\n"
             "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:.3em .6em;"
-            "text-align:right}th{background:#f3f3f3}td:first-child,th:first-child,td.prose{text-align:left}\n"
+            "text-align:right}th{background:#f3f3f3}td:first-child,th:first-child,td.prose,th.l{text-align:left}td.long{min-width:14em}\n"
             /* a figure as wide as its image (its caption wraps there): rows of maps line up */
             "figure{display:inline-block;vertical-align:top;width:min-content;margin:.5em;text-align:center}"
             "figure img{max-width:256px;min-width:160px;image-rendering:pixelated;border:1px solid #ddd}"
@@ -347,10 +347,18 @@ static int cell_is_figure(const char *text)
     return isdigit((unsigned char)*text);
 }
 
-/* The class of a prose cell: "prose", and a claim verdict's tone when the
- * cell is exactly a verdict's name (report/claim_verdict.h). */
+/* A prose cell at least this long is a paragraph ("prose long"): its column
+ * is given a paragraph's width, so that it does not wrap to a word a line
+ * beside shorter columns (issue 41: the claims table's readings). */
+enum { PARAGRAPH_CELL_CHARS = 120 };
+
+/* The class of a prose cell: "prose", "prose long" for a paragraph, and a
+ * claim verdict's tone when the cell is exactly a verdict's name
+ * (report/claim_verdict.h). */
 static const char *verdict_class(const char *text)
 {
+    if (strlen(text) >= PARAGRAPH_CELL_CHARS)
+        return " class=\"prose long\"";
     static const char *const tones[] = {[CLAIM_TONE_HOLDS] = " class=\"prose v-holds\"",
                                         [CLAIM_TONE_FAILS] = " class=\"prose v-fails\"",
                                         [CLAIM_TONE_MEASURED] = " class=\"prose v-measured\"",
@@ -358,6 +366,12 @@ static const char *verdict_class(const char *text)
     int v = claim_verdict_from_name(text);
     return v < 0 ? " class=\"prose\"" : tones[claim_verdict_tone((claim_verdict)v)];
 }
+
+/* A header cell's alignment class, left over prose, right over figures; of
+ * one length, so that the first body row can turn one into the other in
+ * place (align_html_headers). */
+#define HEAD_PROSE " class=\"l\""
+#define HEAD_FIGURE " class=\"r\""
 
 /* A row of the open table; best: drawn bold (its table's best, report_table_best_row). */
 static void table_row(report *r, const char *const *cells, const char *cell_tag, int best)
@@ -373,6 +387,8 @@ static void table_row(report *r, const char *const *cells, const char *cell_tag,
         html(r, cell_tag);
         if (c > 0 && cell_tag[1] == 'd' && !cell_is_figure(cells[c]))
             html(r, verdict_class(cells[c]));
+        else if (c > 0 && cell_tag[1] == 'h')
+            html(r, HEAD_PROSE); /* turned into HEAD_FIGURE over a column of figures */
         html(r, ">");
         html_escaped(r, cells[c]);
         html(r, "</");
@@ -388,6 +404,7 @@ void report_table_begin(report *r, int columns, const char *const *headers)
     journal_texts(r, journal_entry(r, "table_begin"), columns, headers);
     r->table_columns = columns;
     html(r, "<table>\n");
+    r->table_head_at = r->html_len;
     table_row(r, headers, "th", 0);
     md(r, "|");
     r->table_align_at = r->md_len, r->table_aligned = 0;
@@ -409,12 +426,28 @@ static void align_markdown_columns(report *r, const char *const *cells)
             memcpy(r->md + r->table_align_at + (size_t)c * ALIGN_CELL, " ---: |", ALIGN_CELL);
 }
 
+/* The HTML header row's alignment, from the table's first row: each
+ * header over a column of figures right-aligned like its column. */
+static void align_html_headers(report *r, const char *const *cells)
+{
+    if (r->failed || r->table_head_at > r->html_len)
+        return;
+    char *at = r->html + r->table_head_at;
+    for (int c = 1; c < r->table_columns && at; ++c) {
+        at = strstr(at + 1, "<th" HEAD_PROSE ">");
+        if (at && cell_is_figure(cells[c]))
+            memcpy(at + 3, HEAD_FIGURE, sizeof HEAD_FIGURE - 1);
+    }
+}
+
 /* A body row, journalled as `name`. */
 static void body_row(report *r, const char *name, const char *const *cells, int best)
 {
     journal_texts(r, journal_entry(r, name), r->table_columns, cells);
-    if (!r->table_aligned)
+    if (!r->table_aligned) {
         align_markdown_columns(r, cells);
+        align_html_headers(r, cells);
+    }
     table_row(r, cells, "td", best);
 }
 

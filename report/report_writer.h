@@ -33,6 +33,7 @@ typedef struct {
      * row set it yet (report_table_row: a number's column is right-aligned,
      * prose left). */
     size_t table_align_at;
+    size_t table_head_at; /* html offset of the open table's header row */
     int table_aligned;
     int failed;        /* out of memory at some point */
     /* The "At a glance" list: gathered while the stages run, written where

@@ -4,7 +4,8 @@
 # console (the report's script logs nothing, so any line is an error or a
 # stray message), load every image (naturalWidth > 0: the plots' SVGs, the
 # heatmaps, the previews), resolve every #anchor link, and run its
-# comparison views' script; a screenshot is kept beside it. The checker
+# comparison views' script; screenshots of its top, of a technique's
+# section and of the claims table are kept beside it. The checker
 # (report_check.html) reports from a frame, which file:// allows with
 # --allow-file-access-from-files; a copy of the report with a missing image,
 # a dangling anchor and a console error must fail it (the check can fail).
@@ -53,9 +54,27 @@ grep -q 'GTLAB-CHECK: image not loaded: figures/no_such.png' "$work/console" && 
 grep -q 'GTLAB-CHECK: anchor does not resolve: #no-such-anchor' "$work/console" && pass || fail "dangling anchor not caught"
 grep -v 'GTLAB-CHECK' "$work/console" | grep -q '"broken"' && pass || fail "console error not caught"
 
+# Screenshots of the report's top, of one technique's section and of the
+# claims table (issue 41), each shown alone by section_only.js in a copy of
+# the report; each must show something (not one colour: a hidden or
+# unrendered page is blank).
+shown() {
+  local stddev
+  stddev=$(oiiotool --stats "$1" 2>/dev/null | sed -n 's/.*Stats StdDev: *\([0-9.]*\).*/\1/p' | head -1)
+  [ -n "$stddev" ] && awk -v s="$stddev" 'BEGIN { exit !(s > 1) }'
+}
 browser --screenshot="$out/report_screenshot.png" --window-size=1280,2400 "file://$out/report.html" >/dev/null 2>&1
-[ -s "$out/report_screenshot.png" ] && pass || fail "no screenshot"
+shown "$out/report_screenshot.png" && pass || fail "blank or no screenshot of the report's top"
 echo "screenshot: $out/report_screenshot.png"
+sed "s|</body>|<script src=\"$(dirname "$checker")/section_only.js\"></script></body>|" "$out/report.html" >"$out/section.html"
+for section in best-fit-normals-in-an-rgb8-g-buffer-cryengine-3 claims-of-the-talks; do
+  grep -q "id=\"$section\"" "$out/report.html" || fail "no section $section in the report"
+  rm -rf "$work/profile"
+  browser --virtual-time-budget=10000 --screenshot="$out/screenshot_$section.png" --window-size=1280,1600 \
+    "file://$out/section.html?$section" >/dev/null 2>&1
+  shown "$out/screenshot_$section.png" && pass || fail "blank or no screenshot of the section $section"
+  echo "screenshot: $out/screenshot_$section.png"
+done
 # The same for a report made from a project file on a user's glTF: its
 # scene's previews load, and its label is in the report.
 out=$work/project

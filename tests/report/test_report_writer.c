@@ -126,7 +126,8 @@ static void test_anchors(void)
 
 /* A '|' inside a table cell is escaped in Markdown (it would split the
  * cell) and left as it is in HTML; a column of figures is right-aligned, one
- * of prose left (issue 41: the claims table right-aligned its verdicts); a
+ * of prose left, and its HTML header with it (issue 41: the claims table
+ * right-aligned its verdicts and the headers of its prose); a
  * cell that is exactly a verdict's name takes its tone's class, and only
  * then (issue 41: the claims table did not colour its verdicts). */
 static void test_pipe_in_cell(void)
@@ -148,6 +149,10 @@ static void test_pipe_in_cell(void)
     CHECK(html && strstr(html, "<td class=\"prose v-fails\">refuted</td><td class=\"prose v-open\">not significant</td>"
                                "<td class=\"prose\">reproduced here</td>"));
     CHECK(html && strstr(html, "<td>a</td>"));
+    /* each header aligned as its column: prose left, figures right */
+    CHECK_MSG(html && strstr(html, "<tr><th>what</th><th class=\"l\">mean |x|</th><th class=\"r\">error</th>"
+                                   "<th class=\"l\">verdict</th></tr>"),
+              "%s", html ? strstr(html, "<tr><th>") : "");
     free(md);
     free(html);
     report_free(&r);
