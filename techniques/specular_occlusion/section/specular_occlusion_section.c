@@ -278,18 +278,11 @@ static const so_variant_row *row_of(const so_study_result *r, so_variant_kind ki
     return &r->variants[so_study_find(r, kind, mapping, lut_size, SO_AXES_ANGLES, on_gtao)];
 }
 
-/* The closest and the next closest on the reference's inputs (which
- * technique to ship: judged on the same inputs for all). */
+/* The closest and the next closest on the reference's inputs. */
 static void rank(const so_study_result *r, so_named_rows *n)
 {
-    int best = 0;
-    for (int v = 0; v < r->variant_count; ++v)
-        if (!r->variants[v].on_gtao && r->variants[v].mean_dssim < r->variants[best].mean_dssim)
-            best = v;
-    int runner_up = best == 0 ? 1 : 0;
-    for (int v = 0; v < r->variant_count; ++v)
-        if (!r->variants[v].on_gtao && v != best && r->variants[v].mean_dssim < r->variants[runner_up].mean_dssim)
-            runner_up = v;
+    int best, runner_up;
+    so_study_best_variants(r, &best, &runner_up);
     n->best = &r->variants[best], n->runner_up = &r->variants[runner_up];
 }
 
@@ -517,28 +510,66 @@ static void conclude(report_context *ctx, const so_study_result *r, cJSON *json)
 
 /* ---- figures ------------------------------------------------------------------- */
 
-static void add_figures(report_context *ctx, const so_study_result *r)
+/* The captions of the maps ("<metric> of <variant><scale>"), in the order
+ * of so_study_heatmap_rows, then the closest variant's when it has maps of
+ * its own (so_study_result.best_maps); the closest variant's marked.
+ * Returns how many maps a scene has. */
+static int map_captions(const so_study_result *r, const char *metric, const char *scale,
+                        char captions[SO_STUDY_HEATMAPS + 1][192])
 {
-    /* in the order of so_study_heatmap_rows */
     static const char *const shown[SO_STUDY_HEATMAPS] = {"AO as V_s", "Lagarde 2014", "cone/cone exact, exp2(-3.32 alpha^2)",
                                                          "cone/lobe LUT 32^3"};
+    int rows[SO_STUDY_HEATMAPS], best, runner_up;
+    so_study_heatmap_rows(r, rows);
+    so_study_best_variants(r, &best, &runner_up);
+    for (int k = 0; k < SO_STUDY_HEATMAPS; ++k)
+        snprintf(captions[k], 192, "%s of %s%s%s", metric, shown[k], rows[k] == best ? ", the closest variant" : "",
+                 scale);
+    if (r->best_maps)
+        snprintf(captions[SO_STUDY_HEATMAPS], 192, "%s of %s, the closest variant%s", metric, r->variants[best].label,
+                 scale);
+    return SO_STUDY_HEATMAPS + (r->best_maps ? 1 : 0);
+}
+
+/* The map file of map k of a scene: figures/specocc_<kind>_<scene>_<k>.png,
+ * "best" for the closest variant's own. */
+static void map_path(const so_study_result *r, const char *kind, int scene, int k, char path[256])
+{
+    if (k < SO_STUDY_HEATMAPS)
+        snprintf(path, 256, "figures/specocc_%s_%s_%d.png", kind, r->scenes[scene], k);
+    else
+        snprintf(path, 256, "figures/specocc_%s_%s_best.png", kind, r->scenes[scene]);
+}
+
+/* Per scene: the reference V_s at r = 0.5 beside the |error| maps (0 to
+ * 0.5), then the FLIP maps (magma, 0 to 1). */
+static void add_maps(report_context *ctx, const so_study_result *r)
+{
+    enum { MAPS = SO_STUDY_HEATMAPS + 1 };
+    char err_captions[MAPS][192], flip_captions[MAPS][192], ref_caption[128], paths[MAPS + 1][256];
+    int maps = map_captions(r, "|error|", " (0 to 0.5)", err_captions);
+    map_captions(r, "FLIP", " (magma, 0 to 1)", flip_captions);
     for (int i = 0; i < r->scene_count; ++i) {
-        char paths[5][256], captions[5][128];
+        const char *p[MAPS + 1], *err[MAPS + 1], *flip[MAPS];
         snprintf(paths[0], 256, "figures/specocc_ref_%s.png", r->scenes[i]);
-        snprintf(captions[0], 128, "%s: reference V_s, r = 0.5", r->scenes[i]);
-        for (int k = 0; k < SO_STUDY_HEATMAPS; ++k) {
-            snprintf(paths[1 + k], 256, "figures/specocc_err_%s_%d.png", r->scenes[i], k);
-            snprintf(captions[1 + k], 128, "|error| of %s (0 to 0.5)", shown[k]);
+        snprintf(ref_caption, sizeof ref_caption, "%s: reference V_s, r = 0.5", r->scenes[i]);
+        p[0] = paths[0], err[0] = ref_caption;
+        for (int k = 0; k < maps; ++k) {
+            map_path(r, "err", i, k, paths[k + 1]);
+            p[k + 1] = paths[k + 1], err[k + 1] = err_captions[k];
         }
-        const char *p[5] = {paths[0], paths[1], paths[2], paths[3], paths[4]};
-        const char *c[5] = {captions[0], captions[1], captions[2], captions[3], captions[4]};
-        report_figures(ctx->doc, 5, p, c);
-        for (int k = 0; k < SO_STUDY_HEATMAPS; ++k) {
-            snprintf(paths[1 + k], 256, "figures/specocc_flip_%s_%d.png", r->scenes[i], k);
-            snprintf(captions[1 + k], 128, "FLIP of %s (magma, 0 to 1)", shown[k]);
+        report_figures(ctx->doc, maps + 1, p, err);
+        for (int k = 0; k < maps; ++k) {
+            map_path(r, "flip", i, k, paths[k + 1]);
+            flip[k] = flip_captions[k];
         }
-        report_figures(ctx->doc, SO_STUDY_HEATMAPS, p + 1, c + 1);
+        report_figures(ctx->doc, maps, p + 1, flip);
     }
+}
+
+static void add_figures(report_context *ctx, const so_study_result *r)
+{
+    add_maps(ctx, r);
     const char *p[3] = {"figures/aperture_fit_gtso.png", "figures/aperture_fit_d_only.png", "figures/aperture_fit_phong.png"};
     const char *c[3] = {"gloss-to-aperture fits against GTSO's V_s (GGX f_r): the talk's cone and the cone of "
                         "reflected directions",

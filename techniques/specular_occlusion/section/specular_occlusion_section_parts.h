@@ -21,8 +21,9 @@
     "and cone/lobe comparisons with Phong ('as the previous work used Phong for gloss to aperture calculations'), " \
     "the final formulation with GGX; V_s baked into a 32x32x32 BC4 table of (alpha_v, beta, r)"
 #define SO_SETTING_NOTE                                                                                               \
-    "gtlab's built-in study scenes, not the talk's face, at 96x96 pixels and 128 samples (preview) or 256x256 and " \
-    "1024 (production), under the analytic sky, the three roughnesses 0.25, 0.5 and 0.8"
+    "gtlab's built-in study scenes, not the talk's face, at the quality table's image size, each pixel's samples " \
+    "stopping at its noise budget (the section states both), under the analytic sky, the three roughnesses 0.25, " \
+    "0.5 and 0.8"
 
 /* The talk's rankings and the gloss bands (items 2 and 3;
  * specular_occlusion_rankings_section.c). */

@@ -91,6 +91,18 @@ void so_study_heatmap_rows(const so_study_result *r, int rows[SO_STUDY_HEATMAPS]
     rows[3] = so_study_find(r, SO_VARIANT_LUT, 0, 32, SO_AXES_ANGLES, 0);
 }
 
+void so_study_best_variants(const so_study_result *r, int *best, int *runner_up)
+{
+    *best = 0;
+    for (int v = 0; v < r->variant_count; ++v)
+        if (!r->variants[v].on_gtao && r->variants[v].mean_dssim < r->variants[*best].mean_dssim)
+            *best = v;
+    *runner_up = *best == 0 ? 1 : 0;
+    for (int v = 0; v < r->variant_count; ++v)
+        if (!r->variants[v].on_gtao && v != *best && r->variants[v].mean_dssim < r->variants[*runner_up].mean_dssim)
+            *runner_up = v;
+}
+
 /* A variant from its text (so_variant_parse), with its table and input. */
 static void add_variant(so_state *st, const char *text, const so_lut *lut, int on_gtao)
 {
@@ -247,32 +259,63 @@ int so_study_ratio_noise_floor(const image *ref, const char *what, const char *c
     return rc;
 }
 
-/* The reference V_s, and the |error| heatmaps and FLIP maps (magma, 0 to
- * 1, with a colour bar) of the heatmap rows. */
+/* The |error| heatmap (inferno, 0 to 0.5) and FLIP map (magma, 0 to 1, with
+ * a colour bar) of one variant against the reference V_s (vs),
+ * figures/specocc_{err,flip}_<name>_<suffix>.png. */
+static int write_variant_maps(const so_state *st, const float *vs, const so_pixel_inputs *in, const char *name,
+                              int variant, const char *suffix, gt_error *e)
+{
+    char path[4096];
+    size_t n = (size_t)in->width * (size_t)in->height;
+    float *approx = malloc(sizeof(float) * n), *err = malloc(sizeof(float) * n);
+    int rc = approx && err ? 0 : gt_error_set(e, name, "out of memory");
+    if (rc == 0) {
+        so_approx_evaluate(in, &st->variants[variant], approx);
+        for (size_t i = 0; i < n; ++i)
+            err[i] = fabsf(approx[i] - vs[i]);
+        snprintf(path, sizeof path, "%s/specocc_err_%s_%s.png", st->figures, name, suffix);
+        rc = image_write_heatmap(path, err, in->mask, in->width, in->height, 0.5f, "inferno", e);
+    }
+    flip_result f;
+    rc = rc == 0 ? flip_grey(vs, approx, in->mask, in->width, in->height, name, err, &f, e) : rc;
+    snprintf(path, sizeof path, "%s/specocc_flip_%s_%s.png", st->figures, name, suffix);
+    rc = rc == 0 ? image_write_heatmap(path, err, in->mask, in->width, in->height, 1.0f, "magma", e) : rc;
+    free(approx);
+    free(err);
+    return rc;
+}
+
+/* The reference V_s, and the maps of the heatmap rows (write_variant_maps). */
 static int write_heatmaps(const so_state *st, const image *ref, const so_pixel_inputs *in, const char *name, gt_error *e)
 {
     char path[4096];
     const float *vs = image_channel_data(ref, CH_SPECOCC);
     snprintf(path, sizeof path, "%s/specocc_ref_%s.png", st->figures, name);
-    if (image_write_preview(path, &vs, 1, ref->width, ref->height, 1.0f, e) != 0)
-        return -1;
-    size_t n = image_pixel_count(ref);
-    float *approx = malloc(sizeof(float) * n), *err = malloc(sizeof(float) * n);
-    int rc = approx && err ? 0 : gt_error_set(e, name, "out of memory");
+    int rc = image_write_preview(path, &vs, 1, ref->width, ref->height, 1.0f, e);
     for (int k = 0; k < SO_STUDY_HEATMAPS && rc == 0; ++k) {
-        so_approx_evaluate(in, &st->variants[st->heatmaps[k]], approx);
-        for (size_t i = 0; i < n; ++i)
-            err[i] = fabsf(approx[i] - vs[i]);
-        snprintf(path, sizeof path, "%s/specocc_err_%s_%d.png", st->figures, name, k);
-        rc = image_write_heatmap(path, err, in->mask, ref->width, ref->height, 0.5f, "inferno", e);
-        flip_result f;
-        rc = rc == 0 ? flip_grey(vs, approx, in->mask, ref->width, ref->height, name, err, &f, e) : rc;
-        snprintf(path, sizeof path, "%s/specocc_flip_%s_%d.png", st->figures, name, k);
-        rc = rc == 0 ? image_write_heatmap(path, err, in->mask, ref->width, ref->height, 1.0f, "magma", e)
-                     : rc;
+        char suffix[16];
+        snprintf(suffix, sizeof suffix, "%d", k);
+        rc = write_variant_maps(st, vs, in, name, st->heatmaps[k], suffix, e);
     }
-    free(approx);
-    free(err);
+    return rc;
+}
+
+/* The maps of the closest variant, when it is not a heatmap row: known only
+ * once every scene is scored, they are drawn from the kept cases of the
+ * maps' roughness (one case per reference, scene by scene). */
+static int write_best_maps(so_state *st, gt_error *e)
+{
+    int best, runner_up;
+    so_study_best_variants(st->out, &best, &runner_up);
+    for (int k = 0; k < SO_STUDY_HEATMAPS; ++k)
+        if (st->heatmaps[k] == best)
+            return 0;
+    int rc = 0;
+    for (int i = 0; i < st->out->scene_count && rc == 0; ++i) {
+        const aperture_case *c = &st->cases[DEFINITION_GTSO][i * SO_STUDY_ROUGHNESSES + SO_STUDY_MAP_ROUGHNESS];
+        rc = write_variant_maps(st, c->reference, &c->inputs, st->out->scenes[i], best, "best", e);
+    }
+    st->out->best_maps = rc == 0;
     return rc;
 }
 
@@ -408,7 +451,7 @@ static int score(so_state *st, const image *ref, const image *ao, const image gt
     st->floor_dssim[ri] += floor;
     if (rc == 0)
         rc = score_splits(st, ref, what, ri, e);
-    if (rc == 0 && ri == 1)
+    if (rc == 0 && ri == SO_STUDY_MAP_ROUGHNESS)
         rc = write_heatmaps(st, ref, &c->inputs, name, e);
     return rc;
 }
@@ -638,7 +681,9 @@ static int run(so_state *st, gt_error *e)
     }
     if (rc == 0) {
         average(st, st->out);
-        rc = fit_apertures(st, e);
+        rc = write_best_maps(st, e);
+        if (rc == 0)
+            rc = fit_apertures(st, e);
     }
     st->out->caps_max_difference = spherical_caps_compare_derivations(97, &st->out->caps_configurations);
     return rc;

@@ -48,7 +48,8 @@ enum {
     SO_STUDY_MAX_VARIANTS = 28,
     SO_STUDY_MAX_LUTS = 8,
     SO_STUDY_DEFINITIONS = 3, /* the reference definitions the aperture is fitted to */
-    SO_STUDY_HEATMAPS = 4
+    SO_STUDY_HEATMAPS = 4,
+    SO_STUDY_MAP_ROUGHNESS = 1 /* the maps' roughness: so_study_roughness_values[1], r = 0.5 */
 };
 
 /* GTAO's inputs by the bent-normal estimator (issue 25, item 10, downstream):
@@ -178,6 +179,10 @@ typedef struct {
     int lut_points; /* random points of the interpolation error */
     int scene_count;
     char scenes[SO_STUDY_MAX_SCENES][64]; /* study_scene_at order */
+    /* Whether the closest variant (so_study_best_variants), not one of the
+     * heatmap rows, has maps of its own: figures/specocc_err_<scene>_best.png
+     * and specocc_flip_<scene>_best.png. */
+    int best_maps;
     double roughness[SO_STUDY_ROUGHNESSES];
     int lut_count;
     so_lut_row luts[SO_STUDY_MAX_LUTS];
@@ -236,5 +241,10 @@ int so_study_find_bc4(const so_study_result *r, int lut_size);
 /* The rows of the heatmaps k = 0..3: AO, Lagarde, cone/cone exact with
  * exp2(-3.32 alpha^2), the LUT 32^3 (angles), all on the reference's inputs. */
 void so_study_heatmap_rows(const so_study_result *r, int rows[SO_STUDY_HEATMAPS]);
+
+/* The closest and the next closest variant to the Monte Carlo reference,
+ * by mean DSSIM, among those on the reference's inputs (which technique to
+ * ship is judged on the same inputs for all). */
+void so_study_best_variants(const so_study_result *r, int *best, int *runner_up);
 
 #endif
