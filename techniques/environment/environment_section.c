@@ -143,7 +143,8 @@ static void images(report_context *ctx, const environment_study_result *r)
     "L_o = rho_d V_d times the pre-convolved probe, for real scenes whose lighting is not uniform white; AO is "   \
     "the ground truth for a Lambertian surface, a white dome and a single bounce of light"
 #define ENVIRONMENT_SETTING_NOTE                                                                                              \
-    "gtlab's built-in scenes at 48x48 (preview) or 128x128 pixels, exact AO and exact unoccluded irradiance, "     \
+    "gtlab's built-in scenes at the quality table's image size (the section states it), exact AO and exact "     \
+    "unoccluded irradiance, "                                                                                      \
     "scored against the direct (one-bounce) diffuse reference; the error is per pixel, so it does not depend on " \
     "the image size"
 

@@ -5,7 +5,8 @@ in techniques/quality_table.txt.
 A technique's study and section (the STUDY and SECTION parts its
 CMakeLists.txt names) never compare a quality
 (`quality == QUALITY_PREVIEW`, `ctx->quality ? ... : ...`) and never types a
-samples-per-pixel count (`.spp = 64`): it reads its settings from the table
+samples-per-pixel count (`.spp = 64`), nor a quality's value in prose
+("128 samples (preview)"): it reads its settings from the table
 through <name>_quality_of(quality) (cmake/gtlab_quality.cmake). Passing a
 quality along (`study_context ctx = {dir, QUALITY_PRODUCTION, ...}`) is not a
 comparison and is allowed.
@@ -21,6 +22,9 @@ RULES = [
         r"[!=]=\s*QUALITY_(PREVIEW|PRODUCTION)|QUALITY_(PREVIEW|PRODUCTION)\s*[!=]="
         r"|\bquality\s*(\?|[!=]=|[<>])|!\s*[\w>.-]*quality\b")),
     ("types a sample count", re.compile(r"\bspp\s*=\s*[0-9]")),
+    # prose that says a quality's value ("128 samples (preview)", "48x48
+    # (preview)"): it goes stale when the table changes (issue 46 item 1)
+    ("types a quality's value in prose", re.compile(r"[0-9]+[^\"()]{0,40}\((preview|production)\)")),
 ]
 
 
