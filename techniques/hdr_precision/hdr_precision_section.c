@@ -52,7 +52,10 @@ static const claim_record kEqualPrecision = {
     .reading = "one 8-bit code step of linear storage is smaller than one of gamma-2.2 storage exactly above "
                "linear x = 5/11 = 0.45 ~ 116/255; the figure is that point (2.2 g^1.2 = 1 at g = x^(1/2.2)), "
                "which lies at 0.236 in linear and 0.518 = 132/255 in gamma space, so neither space gives 116/255 "
-               "(5/11 solves 2.2 x = 1, the derivative without its power).",
+               "(5/11 solves 2.2 x = 1, the derivative without its power). Of the sentence's two halves the "
+               "first holds (linear is the finer storage above 116/255, as everywhere above 0.236) and the second "
+               "fails from 0.236 to 116/255, where linear is the finer too: the point that the rule of thumb "
+               "counts texels above is about twice too high in linear terms.",
     .form = CLAIM_RANGE, .low = 0.445, .high = 116.5 / 255.0, .tolerance_source = CLAIM_TOLERANCE_CLAIM_NUMBER,
     .tolerance = "the talk's 0.45 ~ 116/255 at its printed precision: 0.445 to 116.5/255"};
 
