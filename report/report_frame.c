@@ -17,7 +17,8 @@ void report_introduce(report_context *ctx, const char *stage_list, const char *p
                  stage_list ? stage_list : "", project ? " --project " : "", project ? project : "");
     report_paragraph(ctx->doc,
                      "Made by gtlab %s with 'gtlab all --quality %s%s'. Every figure below comes from that run; "
-                     "rerunning the command reproduces the images bit for bit (timings vary with the machine). "
+                     "rerunning the command on the same machine reproduces the images bit for bit (timings vary; another CPU "
+                     "model changes last digits, docs/decisions.md). "
                      "Machine-readable figures: summary.json. In a table that ranks what it lists, the best row is bold.",
                      GTLAB_VERSION, quality, stage_option);
     if (earlier && earlier[0])

@@ -93,10 +93,38 @@ static void section_html(report *r, const char *text, int escaped)
     put_html(r, &r->section_html, &r->section_html_len, &r->section_html_cap, text, escaped);
 }
 
+/* Moves text[at, end) back to `to` (to <= at), the text between moving on:
+ * its length is unchanged. */
+static void move_back(report *r, char *text, size_t to, size_t at, size_t end)
+{
+    size_t n = end - at;
+    char *piece = r->failed || to > at || at > end ? NULL : malloc(n ? n : 1);
+    if (!piece) {
+        r->failed |= to <= at && at <= end; /* out of memory; a bad range is left as it is */
+        return;
+    }
+    memcpy(piece, text + at, n);
+    memmove(text + to + n, text + to, at - to);
+    memcpy(text + to, piece, n);
+    free(piece);
+}
+
+/* The section's lead figure (its first row of figures) moved up to just
+ * after its heading, where its conclusions will precede it. */
+static void lead_figure_up(report *r)
+{
+    if (!r->lead_found)
+        return;
+    r->lead_found = 0;
+    move_back(r, r->md, r->section_md_at, r->lead_md_at, r->lead_md_end);
+    move_back(r, r->html, r->section_html_at, r->lead_html_at, r->lead_html_end);
+}
+
 /* The current level-2 section's findings, as its conclusions, inserted just
- * after its heading; the section is closed. */
+ * after its heading, above its lead figure; the section is closed. */
 static void close_section(report *r)
 {
+    lead_figure_up(r);
     if (r->section_md_len > 0) {
         insert(&r->section_md, &r->section_md_len, &r->section_md_cap, &r->failed, 0, "Conclusions:\n\n");
         section_md(r, "\n");
@@ -254,6 +282,7 @@ void report_heading(report *r, int level, const char *text)
     heading_anchor(r, text, anchor, sizeof anchor);
     if (level == 2) {
         close_section(r);
+        r->lead_taken = 0;
         snprintf(r->section_anchor, sizeof r->section_anchor, "%s", anchor);
         add_contents_entry(r, text, anchor);
     }
@@ -275,6 +304,7 @@ void report_heading(report *r, int level, const char *text)
     if (level == 2) {
         r->section_md_at = r->md_len;
         r->section_html_at = r->html_len;
+        r->in_section = 1;
     }
 }
 
@@ -510,11 +540,16 @@ void report_figures(report *r, int count, const char *const *paths, const char *
     cJSON *entry = journal_entry(r, "figures");
     journal_texts(r, entry, count, paths);
     journal_texts(r, entry, count, captions);
+    const int lead = r->in_section && !r->lead_taken;
+    if (lead)
+        r->lead_md_at = r->md_len, r->lead_html_at = r->html_len;
     md_figures(r, count, paths, captions);
     html(r, "<div>\n");
     for (int i = 0; i < count; ++i)
         html_figure(r, 0, paths[i], captions[i]);
     html(r, "</div>\n");
+    if (lead)
+        r->lead_md_end = r->md_len, r->lead_html_end = r->html_len, r->lead_found = r->lead_taken = 1;
 }
 
 void report_comparison(report *r, int count, const char *const *paths, const char *const *labels, int exposed,

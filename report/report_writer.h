@@ -50,6 +50,12 @@ typedef struct {
      * its heading), inserted when the next one starts or at report_write. */
     char *section_md, *section_html;
     size_t section_md_len, section_html_len, section_md_cap, section_html_cap, section_md_at, section_html_at;
+    /* The current level-2 section's lead figure: its first row of figures
+     * (md and html ranges), moved up under its conclusions when the
+     * section closes, so that a section opens with its verdict and one
+     * figure (issue 41). */
+    size_t lead_md_at, lead_md_end, lead_html_at, lead_html_end;
+    int in_section, lead_taken, lead_found;
     int headline_count;
     report_headline headlines[HEADLINES_MAX];
     /* When set, every call below (but init, write and free) is also

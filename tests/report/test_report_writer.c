@@ -3,7 +3,8 @@
  * after the introduction, before every stage's section, after the summary
  * table of the sections' headline rows (report/report_headline.c: best and
  * runner-up ranked from the figures, the verdict from a paired difference or
- * a noise floor); each section opens with its own findings; a long paragraph
+ * a noise floor); each section opens with its own findings and its first
+ * row of figures; a long paragraph
  * is folded in HTML, whole; in HTML a plot is shown as its SVG twin, a
  * heatmap with its colour bar and range, and a comparison view holds its
  * images (report/figure_resolve.c, report/compare_viewer.c); HTML special
@@ -420,6 +421,48 @@ static void test_conclusions_first_and_folding(void)
     report_free(&r);
 }
 
+/* A section opens with its conclusions and its lead figure, its first row
+ * of figures, moved up from where the stage wrote it; its other rows stay;
+ * a section without findings opens with its lead figure; a row before the
+ * first section is no section's (issue 41: "every section opens with its
+ * verdict and one figure"). */
+static void test_lead_figure(void)
+{
+    report r;
+    report_init(&r, "title");
+    report_findings_here(&r);
+    const char *first[2] = {"figures/a.png", "figures/b.png"}, *captions[2] = {"A", "B"};
+    const char *second[1] = {"figures/c.png"}, *third[1] = {"figures/d.png"}, *before[1] = {"figures/e.png"};
+    report_figures(&r, 1, before, captions);
+    report_heading(&r, 2, "Stage one");
+    report_paragraph(&r, "body");
+    report_table_begin(&r, 1, (const char *const[]){"x"});
+    report_table_row(&r, (const char *const[]){"1"});
+    report_table_end(&r);
+    report_figures(&r, 2, first, captions);
+    report_paragraph(&r, "after");
+    report_figures(&r, 1, second, captions);
+    report_finding(&r, "AO", "error %.2f", 0.25);
+    report_heading(&r, 2, "Stage two");
+    report_paragraph(&r, "second body");
+    report_figures(&r, 1, third, captions);
+    char *md, *html;
+    write_and_read(&r, &md, &html);
+    CHECK_MSG(md && strstr(md, "## Stage one\n\nConclusions:\n\n- **AO**: error 0.25\n\n"
+                               "![A](figures/a.png) ![B](figures/b.png) \n\nbody\n\n| x |"),
+              "%s", md ? strstr(md, "## Stage one") : "");
+    CHECK(occurs_before(md, "| 1 |", "after\n\n![A](figures/c.png)"));
+    CHECK(md && strstr(md, "## Stage two\n\n![A](figures/d.png) \n\nsecond body"));
+    CHECK(occurs_before(md, "![A](figures/e.png)", "## Stage one"));
+    CHECK(occurs_before(html, "<li><b>AO</b>: error 0.25</li>\n</ul>\n<div>\n<figure><a href=\"figures/a.png\">",
+                        "<p>body</p>"));
+    CHECK(occurs_before(html, "<p>body</p>", "<p>after</p>\n<div>\n<figure><a href=\"figures/c.png\">"));
+    CHECK(html && strstr(html, "<h2 id=\"stage-two\">Stage two</h2>\n<div>\n<figure><a href=\"figures/d.png\">"));
+    free(md);
+    free(html);
+    report_free(&r);
+}
+
 static int count_of(const char *text, const char *what)
 {
     int n = 0;
@@ -487,6 +530,7 @@ int main(void)
     test_headline_paired();
     test_headline_table();
     test_conclusions_first_and_folding();
+    test_lead_figure();
     test_pipe_in_cell();
     test_best_row();
     test_findings_after_introduction();
