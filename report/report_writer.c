@@ -432,7 +432,8 @@ static void table_row(report *r, const char *const *cells, const char *cell_tag,
 void report_table_begin(report *r, int columns, const char *const *headers)
 {
     journal_texts(r, journal_entry(r, "table_begin"), columns, headers);
-    r->table_columns = columns;
+    r->table_columns = columns, r->table_rows = 0;
+    r->table_at = r->html_len;
     html(r, "<table>\n");
     r->table_head_at = r->html_len;
     table_row(r, headers, "th", 0);
@@ -478,6 +479,7 @@ static void body_row(report *r, const char *name, const char *const *cells, int 
         align_markdown_columns(r, cells);
         align_html_headers(r, cells);
     }
+    r->table_rows++;
     table_row(r, cells, "td", best);
 }
 
@@ -485,12 +487,26 @@ void report_table_row(report *r, const char *const *cells) { body_row(r, "table_
 
 void report_table_best_row(report *r, const char *const *cells) { body_row(r, "table_best_row", cells, 1); }
 
+/* A long table (more than REPORT_FOLD_ROWS rows) folded in HTML, its
+ * summary the row count: "<details class="rows"><summary>24 rows (show)". */
+static void fold_long_table(report *r)
+{
+    if (r->table_rows <= REPORT_FOLD_ROWS || r->failed || r->table_at > r->html_len)
+        return;
+    char summary[128];
+    snprintf(summary, sizeof summary, "<details class=\"rows\"><summary>a table of %d rows <i>(show)</i></summary>\n",
+             r->table_rows);
+    insert(&r->html, &r->html_len, &r->html_cap, &r->failed, r->table_at, summary);
+    html(r, "</details>\n");
+}
+
 void report_table_end(report *r)
 {
     journal_entry(r, "table_end");
     r->table_columns = 0;
     md(r, "\n");
     html(r, "</table>\n");
+    fold_long_table(r);
 }
 
 /* An image's source and its colour bar's place, marked for

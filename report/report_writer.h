@@ -24,6 +24,9 @@
 #include "report/report_headline.h"
 
 enum { REPORT_FOLD_CHARACTERS = 320 };
+/* A table of more body rows than this is folded in report.html: the
+ * reader opens it (issue 41: "the long tables fold below"). */
+enum { REPORT_FOLD_ROWS = 12 };
 
 typedef struct {
     char *md, *html;   /* growing texts */
@@ -34,6 +37,8 @@ typedef struct {
      * prose left). */
     size_t table_align_at;
     size_t table_head_at; /* html offset of the open table's header row */
+    size_t table_at;      /* html offset of the open table */
+    int table_rows;       /* its body rows so far */
     int table_aligned;
     int failed;        /* out of memory at some point */
     /* The "At a glance" list: gathered while the stages run, written where

@@ -4,7 +4,7 @@
  * table of the sections' headline rows (report/report_headline.c: best and
  * runner-up ranked from the figures, the verdict from a paired difference or
  * a noise floor); each section opens with its own findings and its first
- * row of figures; a long paragraph
+ * row of figures; a long table is folded in HTML; a long paragraph
  * is folded in HTML, whole; in HTML a plot is shown as its SVG twin, a
  * heatmap with its colour bar and range, and a comparison view holds its
  * images (report/figure_resolve.c, report/compare_viewer.c); HTML special
@@ -463,6 +463,34 @@ static void test_lead_figure(void)
     report_free(&r);
 }
 
+/* A table of more than REPORT_FOLD_ROWS rows is folded in HTML (issue 41:
+ * "the long tables fold below"), whole, its summary its row count; one of
+ * REPORT_FOLD_ROWS is not; Markdown folds nothing. */
+static void test_long_table_folded(void)
+{
+    report r;
+    report_init(&r, "title");
+    report_heading(&r, 2, "Stage");
+    for (int rows = REPORT_FOLD_ROWS; rows <= REPORT_FOLD_ROWS + 1; ++rows) {
+        report_table_begin(&r, 1, (const char *const[]){rows > REPORT_FOLD_ROWS ? "long" : "short"});
+        for (int k = 0; k < rows; ++k)
+            report_table_row(&r, (const char *const[]){"1"});
+        report_table_end(&r);
+    }
+    char *md, *html, expected[256];
+    write_and_read(&r, &md, &html);
+    snprintf(expected, sizeof expected,
+             "<details class=\"rows\"><summary>a table of %d rows <i>(show)</i></summary>\n<table>\n<tr><th>long</th>",
+             REPORT_FOLD_ROWS + 1);
+    CHECK_MSG(html && strstr(html, expected), "%s", html ? strstr(html, "<h2") : "");
+    CHECK(occurs_before(html, "<th>long</th>", "</table>\n</details>\n"));
+    CHECK(html && strstr(html, "</h2>\n<table>\n<tr><th>short</th>"));
+    CHECK(md && !strstr(md, "<details"));
+    free(md);
+    free(html);
+    report_free(&r);
+}
+
 static int count_of(const char *text, const char *what)
 {
     int n = 0;
@@ -531,6 +559,7 @@ int main(void)
     test_headline_table();
     test_conclusions_first_and_folding();
     test_lead_figure();
+    test_long_table_folded();
     test_pipe_in_cell();
     test_best_row();
     test_findings_after_introduction();
