@@ -44,7 +44,8 @@ static const claim_record kEqualPrecision = {
     .talk = "Kaplanyan 2010 (CryENGINE 3)", .seed = "004", .section = "Gamma vs linear space for color textures",
     .quote = "This point is in the **linear space**. This means that the linear space has better precision above "
              "the value 116/255. And the gamma space is more precise below it.",
-    .setting = "8-bit colour textures stored either linearly or in gamma space (a power function, gamma 2.2), "
+    .setting = "8-bit colour textures stored either linearly or in gamma space (a power function; the talk names "
+               "no exponent here, gamma 2.2 is the usual one), "
                "the two compared by the derivatives of their transformations in linear space; the point chooses "
                "a texture's storage from its histogram",
     .setting_match = CLAIM_SETTING_INDEPENDENT,
@@ -52,7 +53,9 @@ static const claim_record kEqualPrecision = {
     .reading = "one 8-bit code step of linear storage is smaller than one of gamma-2.2 storage exactly above "
                "linear x = 5/11 = 0.45 ~ 116/255; the figure is that point (2.2 g^1.2 = 1 at g = x^(1/2.2)), "
                "which lies at 0.236 in linear and 0.518 = 132/255 in gamma space, so neither space gives 116/255 "
-               "(5/11 solves 2.2 x = 1, the derivative without its power). Of the sentence's two halves the "
+               "(5/11 solves 2.2 x = 1, the derivative without its power). No other exponent gives it either: "
+               "for a power g the point is g^(-g/(g-1)), below its limit 1/e = 0.368 (g -> 1) for every g > 1. "
+               "Of the sentence's two halves the "
                "first holds (linear is the finer storage above 116/255, as everywhere above 0.236) and the second "
                "fails from 0.236 to 116/255, where linear is the finer too: the point that the rule of thumb "
                "counts texels above is about twice too high in linear terms.",

@@ -2,7 +2,8 @@
  * scenes against the textbook mean and standard error computed here by two
  * passes, NaN cases left out, region scores read with their stride; and the
  * scoring of one case, where a reference made by a variant itself scores
- * DSSIM 0 and signed error 0 exactly. */
+ * DSSIM 0 and signed error 0 exactly; the closest variant and the
+ * runner-up. */
 #include <math.h>
 #include <stdlib.h>
 
@@ -85,9 +86,30 @@ static void check_case(void)
     so_lut_free(&lut);
 }
 
+/* The closest variant and the runner-up (so_study_best_variants, the
+ * At-a-glance row's and the best maps'): the lowest mean DSSIM among the
+ * variants on the reference's inputs; a variant on GTAO's inputs, lower
+ * still, is neither; with the lowest first, the runner-up is the next. */
+static void check_best_variants(void)
+{
+    static so_study_result r;
+    const double dssim[5] = {0.30, 0.12, 0.05, 0.20, 0.11};
+    r.variant_count = 5;
+    for (int v = 0; v < 5; ++v)
+        r.variants[v].mean_dssim = dssim[v];
+    r.variants[2].on_gtao = SO_GTAO_ARC_MEAN;
+    int best, runner_up;
+    so_study_best_variants(&r, &best, &runner_up);
+    CHECK_MSG(best == 4 && runner_up == 1, "best %d, runner-up %d", best, runner_up);
+    r.variants[0].mean_dssim = 0.01;
+    so_study_best_variants(&r, &best, &runner_up);
+    CHECK_MSG(best == 0 && runner_up == 4, "best %d, runner-up %d", best, runner_up);
+}
+
 int main(void)
 {
     check_paired();
     check_case();
+    check_best_variants();
     return check_report("studies_so_rankings");
 }
